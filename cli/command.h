@@ -1,0 +1,28 @@
+// Shared pieces of the contactcert subcommands: options every command takes, and registration.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace contactcert::cli {
+
+/// Options every subcommand takes (SPEC section 6).
+struct CommonOptions {
+  bool json = false;                ///< machine output: one JSON object on stdout
+  std::string arith = "verified";   ///< exact | float | verified
+};
+
+/// A subcommand's work, run after parsing; returns the exit code.
+using Action = std::function<int()>;
+
+/// Adds --json and --arith to a subcommand.
+void add_common_options(CLI::App& sub, CommonOptions& opts);
+
+// One registration function per subcommand; each stores its work in `action` when selected.
+void register_demo(CLI::App& app, Action& action);
+
+}  // namespace contactcert::cli

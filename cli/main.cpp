@@ -1,0 +1,69 @@
+// contactcert: exact answers for planar rigid bodies in frictional contact.
+// Exit codes (SPEC section 6): 0 success, 1 internal error, 2 bad input or usage, 3 budget exceeded.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "cli/command.h"
+#include "exact/input_error.h"
+
+#ifndef CONTACTCERT_VERSION
+#define CONTACTCERT_VERSION "unknown"
+#endif
+
+namespace contactcert::cli {
+
+void add_common_options(CLI::App& sub, CommonOptions& opts) {
+  sub.add_flag("--json", opts.json, "Machine output: one JSON object on stdout");
+  sub.add_option("--arith", opts.arith,
+                 "exact: rationals only; float: doubles only, unchecked; verified: float checked and "
+                 "if need be redone exactly")
+      ->check(CLI::IsMember({"exact", "float", "verified"}))
+      ->default_str("verified");
+}
+
+}  // namespace contactcert::cli
+
+int main(int argc, char** argv) {
+  using namespace contactcert;
+  CLI::App app{
+      "contactcert " CONTACTCERT_VERSION
+      ": exact answers for planar rigid bodies in frictional contact.\n"
+      "Quasistatic contact problems (Pang, Trinkle, Lo 1994) solved or proven jammed; wrench cones, strong\n"
+      "stability and sensorless insertion (Balkcom, Trinkle 2002) computed in rational arithmetic.",
+      "contactcert"};
+  app.set_version_flag("--version", "contactcert " CONTACTCERT_VERSION);
+  app.require_subcommand(1);
+  cli::Action action;
+  cli::register_demo(app, action);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const exact::InputError& e) {
+    std::cerr << "contactcert: " << e.what() << "\n";
+    return 2;
+  }
+  try {
+    return action ? action() : 0;
+  } catch (const exact::InputError& e) {
+    std::cerr << "contactcert: " << e.what() << "\n";
+    return 2;
+  } catch (const exact::BudgetExceeded& e) {
+    std::cerr << "contactcert: budget exceeded: " << e.what() << " (covered: " << e.covered << ")\n";
+    return 3;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "contactcert: out of memory\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "contactcert: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

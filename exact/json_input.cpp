@@ -1,0 +1,231 @@
+#include "exact/json_input.h"
+
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "exact/rational_text.h"
+
+namespace contactcert::exact {
+namespace {
+
+using json = nlohmann::json;
+
+// A SAX handler that builds the DOM but stores every number as its literal text (JSON numbers
+// become strings tagged by a leading '\x01' so that numbers and strings stay distinguishable).
+// Also enforces the depth limit and rejects duplicate keys.
+constexpr char kNumberTag = '\x01';
+
+class LiteralNumberBuilder {
+ public:
+  explicit LiteralNumberBuilder(json& root) : root_(root) {}
+
+  bool null() { return put(json(nullptr)); }
+  bool boolean(bool b) { return put(json(b)); }
+  bool number_integer(json::number_integer_t v) { return put(json(kNumberTag + std::to_string(v))); }
+  bool number_unsigned(json::number_unsigned_t v) { return put(json(kNumberTag + std::to_string(v))); }
+  bool number_float(json::number_float_t, const std::string& s) { return put(json(kNumberTag + s)); }
+  bool string(std::string& s) {
+    if (!s.empty() && s.front() == kNumberTag) return fail("a string may not start with a control character");
+    return put(json(s));
+  }
+  bool binary(json::binary_t&) { return fail("binary values are not JSON text"); }
+  bool start_object(std::size_t) { return open(json::object()); }
+  bool end_object() { return close(); }
+  bool start_array(std::size_t) { return open(json::array()); }
+  bool end_array() { return close(); }
+  bool key(std::string& k) {
+    if (stack_.back()->contains(k)) return fail("duplicate key \"" + k + "\"");
+    key_ = k;
+    return true;
+  }
+  bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
+    std::string what = e.what();
+    auto cut = what.find("syntax error");
+    return fail("malformed JSON at byte " + std::to_string(pos) + ": " +
+                (cut == std::string::npos ? what : what.substr(cut)));
+  }
+
+  const std::string& error() const { return error_; }
+
+ private:
+  bool fail(std::string why) {
+    if (error_.empty()) error_ = std::move(why);
+    return false;
+  }
+  json* place(json v) {
+    if (stack_.empty()) {
+      root_ = std::move(v);
+      return &root_;
+    }
+    json& top = *stack_.back();
+    if (top.is_array()) {
+      top.push_back(std::move(v));
+      return &top.back();
+    }
+    top[key_] = std::move(v);
+    return &top[key_];
+  }
+  bool put(json v) {
+    place(std::move(v));
+    return true;
+  }
+  bool open(json v) {
+    if (stack_.size() >= kMaxJsonDepth)
+      return fail("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    stack_.push_back(place(std::move(v)));
+    return true;
+  }
+  bool close() {
+    stack_.pop_back();
+    return true;
+  }
+
+  json& root_;
+  std::vector<json*> stack_;
+  std::string key_;
+  std::string error_;
+};
+
+bool is_number_text(const json& j) {
+  return j.is_string() && !j.get_ref<const std::string&>().empty() &&
+         j.get_ref<const std::string&>().front() == kNumberTag;
+}
+
+}  // namespace
+
+JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
+  auto root = std::make_shared<json>();
+  LiteralNumberBuilder builder(*root);
+  bool ok = json::sax_parse(text, &builder, json::input_format_t::json, /*strict=*/true);
+  auto f = std::make_shared<const std::string>(file);
+  if (!ok) throw InputError(file, "", builder.error().empty() ? "malformed JSON" : builder.error());
+  return JsonInput(root, root.get(), f, "$");
+}
+
+JsonInput JsonInput::load(const std::string& path) {
+  std::string text;
+  if (path == "-") {
+    text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+  } else {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "", "cannot open the file for reading");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    text = ss.str();
+  }
+  return parse(text, path);
+}
+
+bool JsonInput::is_object() const { return node_->is_object(); }
+bool JsonInput::is_array() const { return node_->is_array(); }
+bool JsonInput::is_null() const { return node_->is_null(); }
+bool JsonInput::is_string_or_number() const { return node_->is_string(); }
+
+std::string JsonInput::kind() const {
+  if (is_number_text(*node_)) return "a number";
+  if (node_->is_string()) return "a string";
+  return std::string(node_->type_name() == std::string("object") ? "an " : "a ") + node_->type_name();
+}
+
+void JsonInput::fail(const std::string& expected) const { throw InputError(*file_, path_, expected); }
+
+std::size_t JsonInput::size() const {
+  if (!node_->is_array()) fail("expected an array, found " + kind());
+  return node_->size();
+}
+
+JsonInput JsonInput::at(std::string_view key) const {
+  auto j = find(key);
+  if (!j) JsonInput(root_, node_, file_, path_ + "." + std::string(key)).fail("required field is missing");
+  return *j;
+}
+
+std::optional<JsonInput> JsonInput::find(std::string_view key) const {
+  if (!node_->is_object()) fail("expected an object, found " + kind());
+  auto it = node_->find(std::string(key));
+  if (it == node_->end() || it->is_null()) return std::nullopt;
+  return JsonInput(root_, &*it, file_, path_ + "." + std::string(key));
+}
+
+JsonInput JsonInput::at(std::size_t i) const {
+  if (i >= size()) fail("expected at least " + std::to_string(i + 1) + " elements");
+  return JsonInput(root_, &(*node_)[i], file_, path_ + "[" + std::to_string(i) + "]");
+}
+
+std::vector<JsonInput> JsonInput::elements() const {
+  std::vector<JsonInput> out;
+  for (std::size_t i = 0, n = size(); i < n; ++i) out.push_back(at(i));
+  return out;
+}
+
+void JsonInput::expect_keys(std::initializer_list<std::string_view> allowed) const {
+  if (!node_->is_object()) fail("expected an object, found " + kind());
+  for (auto it = node_->begin(); it != node_->end(); ++it) {
+    bool known = false;
+    for (auto a : allowed) known = known || a == it.key();
+    if (!known) {
+      std::string list;
+      for (auto a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+      JsonInput(root_, &*it, file_, path_ + "." + it.key()).fail("unknown field (allowed: " + list + ")");
+    }
+  }
+}
+
+Q JsonInput::rational() const {
+  if (!node_->is_string()) fail("expected a number or a numeric string, found " + kind());
+  std::string s = node_->get<std::string>();
+  if (is_number_text(*node_)) s.erase(0, 1);
+  try {
+    return parse_rational(s);
+  } catch (const NumberSyntaxError& e) {
+    fail(e.what());
+  }
+}
+
+long JsonInput::integer(long lo, long hi) const {
+  Q q = rational();
+  if (q.get_den() != 1 || q < lo || q > hi)
+    fail("expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " +
+         to_string(q));
+  return q.get_num().get_si();
+}
+
+std::string JsonInput::string() const {
+  if (!node_->is_string() || is_number_text(*node_)) fail("expected a string, found " + kind());
+  return node_->get<std::string>();
+}
+
+bool JsonInput::boolean() const {
+  if (!node_->is_boolean()) fail("expected true or false, found " + kind());
+  return node_->get<bool>();
+}
+
+Vec<Q> JsonInput::rational_vector(std::optional<std::size_t> n) const {
+  std::size_t m = size();
+  if (n && m != *n) fail("expected an array of " + std::to_string(*n) + " numbers, found " + std::to_string(m));
+  Vec<Q> v(static_cast<Eigen::Index>(m));
+  for (std::size_t i = 0; i < m; ++i) v(static_cast<Eigen::Index>(i)) = at(i).rational();
+  return v;
+}
+
+Mat<Q> JsonInput::rational_matrix(std::optional<std::size_t> rows, std::optional<std::size_t> cols) const {
+  std::size_t r = size();
+  if (rows && r != *rows) fail("expected " + std::to_string(*rows) + " rows, found " + std::to_string(r));
+  std::optional<std::size_t> c = cols;
+  if (!c && r > 0) c = at(0).size();
+  Mat<Q> A(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c.value_or(0)));
+  for (std::size_t i = 0; i < r; ++i) {
+    JsonInput row = at(i);
+    if (row.size() != *c)
+      row.fail("expected a row of " + std::to_string(*c) + " numbers, found " + std::to_string(row.size()));
+    for (std::size_t j = 0; j < *c; ++j)
+      A(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = row.at(j).rational();
+  }
+  return A;
+}
+
+}  // namespace contactcert::exact

@@ -1,0 +1,70 @@
+// Reading input files: JSON whose numbers keep their literal text, so that "0.966" and 0.966 both
+// parse to 966/1000 (SPEC section 1). Every accessor knows its JSON path and throws InputError
+// naming the file, the path and what was expected.
+#pragma once
+
+#include <cstddef>
+#include <initializer_list>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "exact/input_error.h"
+#include "exact/number.h"
+
+namespace contactcert::exact {
+
+/// Deepest nesting accepted; deeper input is rejected rather than recursed into.
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+/// One node of a parsed input file, with its JSON path for error messages.
+class JsonInput {
+ public:
+  /// Parses text; `file` is only used in messages. Numbers are kept as their literal text.
+  static JsonInput parse(const std::string& text, const std::string& file);
+  /// Reads and parses a file ("-" reads standard input).
+  static JsonInput load(const std::string& path);
+
+  const std::string& file() const { return *file_; }
+  const std::string& path() const { return path_; }
+
+  bool is_object() const;
+  bool is_array() const;
+  bool is_null() const;
+  bool is_string_or_number() const;
+  std::size_t size() const;  ///< elements of an array (error otherwise)
+
+  JsonInput at(std::string_view key) const;                 ///< required member of an object
+  std::optional<JsonInput> find(std::string_view key) const;  ///< optional member (absent or null -> nullopt)
+  JsonInput at(std::size_t i) const;                        ///< element of an array
+  std::vector<JsonInput> elements() const;                  ///< elements of an array
+  /// Fails on any key not in `allowed` (catches typos such as "mu_S").
+  void expect_keys(std::initializer_list<std::string_view> allowed) const;
+
+  Q rational() const;                                    ///< a number or numeric string, exactly
+  long integer(long lo, long hi) const;                  ///< an integer in [lo, hi]
+  std::string string() const;                            ///< a JSON string
+  bool boolean() const;
+  Vec<Q> rational_vector(std::optional<std::size_t> n = std::nullopt) const;
+  Mat<Q> rational_matrix(std::optional<std::size_t> rows = std::nullopt,
+                         std::optional<std::size_t> cols = std::nullopt) const;
+
+  /// Throws InputError for this field: "<file>: <path>: <expected>".
+  [[noreturn]] void fail(const std::string& expected) const;
+
+ private:
+  JsonInput(std::shared_ptr<const nlohmann::json> root, const nlohmann::json* node,
+            std::shared_ptr<const std::string> file, std::string path)
+      : root_(std::move(root)), node_(node), file_(std::move(file)), path_(std::move(path)) {}
+  std::string kind() const;
+  std::shared_ptr<const nlohmann::json> root_;
+  const nlohmann::json* node_;
+  std::shared_ptr<const std::string> file_;
+  std::string path_;
+};
+
+}  // namespace contactcert::exact

@@ -1,0 +1,95 @@
+#include "exact/linalg.h"
+
+namespace contactcert::exact {
+
+template <class T>
+Rref<T> rref(const Mat<T>& A) {
+  Rref<T> out{A, {}};
+  Mat<T>& R = out.R;
+  const Eigen::Index m = R.rows(), n = R.cols();
+  Eigen::Index row = 0;
+  for (Eigen::Index col = 0; col < n && row < m; ++col) {
+    Eigen::Index p = -1;
+    for (Eigen::Index i = row; i < m; ++i)
+      if (!is_zero(R(i, col)) && (p < 0 || NumberTraits<T>::better_pivot(R(i, col), R(p, col)))) p = i;
+    if (p < 0) {
+      for (Eigen::Index i = row; i < m; ++i) R(i, col) = T(0);  // below tolerance: treat as zero
+      continue;
+    }
+    R.row(p).swap(R.row(row));
+    const T inv = T(1) / R(row, col);
+    for (Eigen::Index j = col; j < n; ++j) R(row, j) *= inv;
+    R(row, col) = T(1);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      if (i == row || is_zero(R(i, col))) continue;
+      const T f = R(i, col);
+      for (Eigen::Index j = col; j < n; ++j) R(i, j) -= f * R(row, j);
+      R(i, col) = T(0);
+    }
+    out.pivots.push_back(col);
+    ++row;
+  }
+  return out;
+}
+
+template <class T>
+Eigen::Index rank(const Mat<T>& A) {
+  return rref(A).rank();
+}
+
+template <class T>
+Mat<T> null_space(const Mat<T>& A) {
+  const Rref<T> E = rref(A);
+  const Eigen::Index n = A.cols();
+  std::vector<bool> is_pivot(static_cast<size_t>(n), false);
+  for (auto p : E.pivots) is_pivot[static_cast<size_t>(p)] = true;
+  Mat<T> N = Mat<T>::Zero(n, n - E.rank());
+  Eigen::Index k = 0;
+  // One basis vector per free column f: x_f = 1, x_pivot(r) = -R(r, f).
+  for (Eigen::Index f = 0; f < n; ++f) {
+    if (is_pivot[static_cast<size_t>(f)]) continue;
+    N(f, k) = T(1);
+    for (Eigen::Index r = 0; r < E.rank(); ++r) N(E.pivots[static_cast<size_t>(r)], k) = -E.R(r, f);
+    ++k;
+  }
+  return N;
+}
+
+template <class T>
+Mat<T> left_null_space(const Mat<T>& A) {
+  return null_space<T>(A.transpose()).transpose();
+}
+
+template <class T>
+std::optional<Vec<T>> solve(const Mat<T>& A, const Vec<T>& b) {
+  Mat<T> Ab(A.rows(), A.cols() + 1);
+  Ab << A, b;
+  const Rref<T> E = rref(Ab);
+  if (E.rank() > 0 && E.pivots.back() == A.cols()) return std::nullopt;  // 0 = 1 row
+  Vec<T> x = Vec<T>::Zero(A.cols());
+  for (Eigen::Index r = 0; r < E.rank(); ++r) x(E.pivots[static_cast<size_t>(r)]) = E.R(r, A.cols());
+  return x;
+}
+
+template <class T>
+std::optional<Mat<T>> inverse(const Mat<T>& A) {
+  const Eigen::Index n = A.rows();
+  if (A.cols() != n) return std::nullopt;
+  Mat<T> AI(n, 2 * n);
+  AI << A, Mat<T>::Identity(n, n);
+  const Rref<T> E = rref(AI);
+  if (E.rank() < n || E.pivots[static_cast<size_t>(n - 1)] != n - 1) return std::nullopt;
+  return Mat<T>(E.R.rightCols(n));
+}
+
+#define CONTACTCERT_LINALG_INSTANTIATE(T)                                   \
+  template Rref<T> rref<T>(const Mat<T>&);                                  \
+  template Eigen::Index rank<T>(const Mat<T>&);                             \
+  template Mat<T> null_space<T>(const Mat<T>&);                             \
+  template Mat<T> left_null_space<T>(const Mat<T>&);                        \
+  template std::optional<Vec<T>> solve<T>(const Mat<T>&, const Vec<T>&);    \
+  template std::optional<Mat<T>> inverse<T>(const Mat<T>&);
+CONTACTCERT_LINALG_INSTANTIATE(double)
+CONTACTCERT_LINALG_INSTANTIATE(Q)
+
+}  // namespace contactcert::exact

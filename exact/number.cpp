@@ -1,0 +1,25 @@
+#include "exact/number.h"
+
+#include <CGAL/Exact_rational.h>
+
+#include <type_traits>
+
+namespace contactcert::exact {
+
+static_assert(std::is_same_v<Q, CGAL::Exact_rational>,
+              "contactcert's Q must be CGAL::Exact_rational (see exact/number.h)");
+
+Mat<double> to_double(const Mat<Q>& A) {
+  Mat<double> D(A.rows(), A.cols());
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
+    for (Eigen::Index j = 0; j < A.cols(); ++j) D(i, j) = A(i, j).get_d();
+  return D;
+}
+
+Vec<double> to_double(const Vec<Q>& v) {
+  Vec<double> d(v.size());
+  for (Eigen::Index i = 0; i < v.size(); ++i) d(i) = v(i).get_d();
+  return d;
+}
+
+}  // namespace contactcert::exact

@@ -1,0 +1,69 @@
+#include "exact/rational_text.h"
+
+#include <gtest/gtest.h>
+
+namespace contactcert::exact {
+namespace {
+
+Q q(long n, long d = 1) { return Q(n) / Q(d); }
+
+TEST(ParseRational, EveryFormOfSpecSection1) {
+  EXPECT_EQ(parse_rational("0.966"), q(966, 1000));
+  EXPECT_EQ(parse_rational("0.966"), q(483, 500));
+  EXPECT_EQ(parse_rational("1/5"), q(1, 5));
+  EXPECT_EQ(parse_rational("-2.5e-3"), q(-1, 400));
+  EXPECT_EQ(parse_rational("3"), q(3));
+  EXPECT_EQ(parse_rational("-7/20"), q(-7, 20));
+  EXPECT_EQ(parse_rational("+4"), q(4));
+  EXPECT_EQ(parse_rational(".5"), q(1, 2));
+  EXPECT_EQ(parse_rational("5."), q(5));
+  EXPECT_EQ(parse_rational("1E2"), q(100));
+  EXPECT_EQ(parse_rational("1e+2"), q(100));
+  EXPECT_EQ(parse_rational("6/4"), q(3, 2));  // canonicalised
+  EXPECT_EQ(parse_rational("3/-4"), q(-3, 4));
+  EXPECT_EQ(parse_rational("-0"), q(0));
+  EXPECT_EQ(parse_rational("0.1") * 10, q(1));  // no binary rounding
+}
+
+TEST(ParseRational, LongDigitStringsStayExact) {
+  Q x = parse_rational("0.1000000000000000000000000000000000001");
+  EXPECT_NE(x, q(1, 10));
+  EXPECT_EQ(x - q(1, 10), Q(1) / Q(Z("10000000000000000000000000000000000000", 10)));
+  EXPECT_EQ(parse_rational("123456789012345678901234567890"), Q(Z("123456789012345678901234567890", 10)));
+}
+
+TEST(ParseRational, RejectsMalformedNumbersWithAReason) {
+  for (const char* bad : {"", "abc", "1/0", "nan", "NaN", "inf", "-inf", "1e", "1e+", "--1", "1.2.3", "1/2/3",
+                          "0x10", "1,5", " 1", "1 ", ".", "-", "e5", "1/2.5", "1e99999", "1e-99999",
+                          "1e1234567890123"}) {
+    EXPECT_THROW(parse_rational(bad), NumberSyntaxError) << "input: '" << bad << "'";
+  }
+  try {
+    parse_rational("1/0");
+  } catch (const NumberSyntaxError& e) {
+    EXPECT_NE(std::string(e.what()).find("zero denominator"), std::string::npos);
+  }
+}
+
+TEST(ToString, LowestTerms) {
+  EXPECT_EQ(to_string(q(-7, 20)), "-7/20");
+  EXPECT_EQ(to_string(q(6, 2)), "3");
+  EXPECT_EQ(to_string(q(0)), "0");
+  EXPECT_EQ(to_string(q(14, -40)), "-7/20");
+  EXPECT_EQ(parse_rational(to_string(q(-355, 113))), q(-355, 113));
+}
+
+TEST(Primitive, IntegerVectorWithGcdOne) {
+  auto v = primitive(std::vector<Q>{q(1, 2), q(-3, 4), q(0)});
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_EQ(v[0], 2);
+  EXPECT_EQ(v[1], -3);
+  EXPECT_EQ(v[2], 0);
+  auto w = primitive(std::vector<Q>{q(6), q(9), q(-12)});
+  EXPECT_EQ(w, (std::vector<Z>{2, 3, -4}));
+  auto z = primitive(std::vector<Q>{q(0), q(0)});
+  EXPECT_EQ(z, (std::vector<Z>{0, 0}));
+}
+
+}  // namespace
+}  // namespace contactcert::exact
