@@ -24,5 +24,10 @@ void add_common_options(CLI::App& sub, CommonOptions& opts);
 
 // One registration function per subcommand; each stores its work in `action` when selected.
 void register_demo(CLI::App& app, Action& action);
+void register_ucp(CLI::App& app, Action& action);
+void register_check(CLI::App& app, Action& action);
+void register_stability(CLI::App& app, Action& action);
+void register_cone(CLI::App& app, Action& action);
+void register_convert(CLI::App& app, Action& action);
 
 }  // namespace contactcert::cli

@@ -36,6 +36,11 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   cli::Action action;
   cli::register_demo(app, action);
+  cli::register_ucp(app, action);
+  cli::register_check(app, action);
+  cli::register_stability(app, action);
+  cli::register_cone(app, action);
+  cli::register_convert(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

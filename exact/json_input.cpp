@@ -106,7 +106,9 @@ JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   return JsonInput(root, root.get(), f, "$");
 }
 
-JsonInput JsonInput::load(const std::string& path) {
+JsonInput JsonInput::load(const std::string& path) { return parse(read_text(path), path); }
+
+std::string JsonInput::read_text(const std::string& path) {
   std::string text;
   if (path == "-") {
     text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
@@ -117,7 +119,7 @@ JsonInput JsonInput::load(const std::string& path) {
     ss << in.rdbuf();
     text = ss.str();
   }
-  return parse(text, path);
+  return text;
 }
 
 bool JsonInput::is_object() const { return node_->is_object(); }

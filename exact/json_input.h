@@ -28,6 +28,8 @@ class JsonInput {
   static JsonInput parse(const std::string& text, const std::string& file);
   /// Reads and parses a file ("-" reads standard input).
   static JsonInput load(const std::string& path);
+  /// The whole text of a file ("-" = standard input); InputError if it cannot be read.
+  static std::string read_text(const std::string& path);
 
   const std::string& file() const { return *file_; }
   const std::string& path() const { return path_; }

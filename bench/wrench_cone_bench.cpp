@@ -1,0 +1,130 @@
+// The wrench cone paper's Table 4: time per cone for 1 to 6 fixels on a disk (paper: 0.00003 s to
+// 0.219 s on an 800 MHz Pentium III), in one run: our exact and float paths on both routes, the
+// paper's route with cddlib (GMP) doing K^F, and our K^F alone for comparison; then the projection
+// route up to 20 fixels to show its growth.
+//   ./wrench_cone_bench --benchmark_counters_tabular=true
+// Modes: 'n...n' (every fixel rolls: K is 2n x 2n) and 'm...m' (maintain contact: K is n x 2n, the
+// hardest conversion since pos(K) has 2n generators in n dimensions).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <string>
+
+#include "geometry/double_description.h"
+#include "geometry/scene_json.h"
+#include "reference/cdd_cone.h"
+#include "solvers/wrench_cone/wrench_cone.h"
+
+namespace {
+
+using namespace contactcert;
+using exact::Mat;
+using exact::Q;
+
+/// A unit disk (M = diag(1, 1, 1/2)) touching n fixels at rational points of the circle spread
+/// around it: ((1 - t^2)/(1 + t^2), 2t/(1 + t^2)) with t = tan(theta/2) rounded to sixteenths.
+geometry::PlanarScene disk_scene(int n) {
+  geometry::PlanarScene s;
+  const geometry::DiskShape disk{{Q(0), Q(0)}, Q(1)};
+  s.workpiece = {disk, {Q(0), Q(0)}, Q(1, 2)};
+  for (int i = 0; i < n; ++i) {
+    const double theta = -M_PI / 2 + 2 * M_PI * (i + 0.37 * (i % 2)) / n;
+    Q t(static_cast<long>(std::lround(std::tan(theta / 2) * 16)), 16);
+    t.canonicalize();
+    const Q d = 1 + t * t;
+    const geometry::Point2 p{Q((1 - t * t) / d), Q(2 * t / d)};
+    geometry::Fixel f;
+    f.frame = geometry::frame_from_position(disk, p).frame;
+    f.mu_s = Q(1, 2);
+    f.mu_k = Q(2, 5);
+    f.position = p;
+    s.fixels.push_back(f);
+  }
+  return s;
+}
+
+solvers::ModeString mode(int n, char letter) {
+  solvers::ModeString m;
+  m.letters.assign(static_cast<std::size_t>(n), static_cast<solvers::Interaction>(letter));
+  return m;
+}
+
+char letter_of(int64_t code) { return code == 0 ? 'n' : 'm'; }
+
+template <class T, solvers::Route route>
+void BM_WrenchCone(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const geometry::PlanarScene scene = disk_scene(n);
+  const solvers::ModeString m = mode(n, letter_of(state.range(1)));
+  Eigen::Index rows = 0;
+  for (auto _ : state) {
+    const solvers::ContactModel<T> model = solvers::contact_model<T>(scene);
+    const geometry::FaceCone<T> f = solvers::wrench_cone_face(scene, model, m, route);
+    rows = f.inequalities.rows() + f.strict.rows();
+    benchmark::DoNotOptimize(rows);
+  }
+  state.counters["fixels"] = n;
+  state.counters["facets"] = static_cast<double>(rows);
+  state.SetLabel(std::string(exact::NumberTraits<T>::name) + (route == solvers::Route::kPaper ? " paper " : " project ") +
+                 std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
+}
+
+/// The paper's route with K^F by cddlib (GMP): F = K^F P, not reduced (the raw eq. 18).
+void BM_PaperRouteCddKF(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const geometry::PlanarScene scene = disk_scene(n);
+  const solvers::ModeString m = mode(n, letter_of(state.range(1)));
+  Eigen::Index rows = 0;
+  for (auto _ : state) {
+    const solvers::ContactModel<Q> model = solvers::contact_model<Q>(scene);
+    const solvers::ConeForm<Q> form = solvers::cone_form(scene, model, m);
+    const geometry::FaceCone<Q> KF = reference::cdd_to_face(geometry::SpanCone<Q>::from_columns(form.K));
+    const Mat<Q> F = KF.inequalities * form.P;  // eq. (18)
+    rows = F.rows();
+    benchmark::DoNotOptimize(rows);
+  }
+  state.counters["fixels"] = n;
+  state.counters["KF_rows"] = static_cast<double>(rows);
+  state.SetLabel("cddlib-gmp K^F " + std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
+}
+
+/// The same raw eq. (18) with our own exact conversion for K^F (what cddlib's column competes with).
+void BM_PaperRouteOwnKF(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const geometry::PlanarScene scene = disk_scene(n);
+  const solvers::ModeString m = mode(n, letter_of(state.range(1)));
+  Eigen::Index rows = 0;
+  for (auto _ : state) {
+    const solvers::ContactModel<Q> model = solvers::contact_model<Q>(scene);
+    const solvers::ConeForm<Q> form = solvers::cone_form(scene, model, m);
+    const geometry::FaceCone<Q> KF = geometry::to_face(geometry::SpanCone<Q>::from_columns(form.K));
+    const Mat<Q> F = KF.inequalities * form.P;  // eq. (18)
+    rows = F.rows();
+    benchmark::DoNotOptimize(rows);
+  }
+  state.counters["fixels"] = n;
+  state.counters["KF_rows"] = static_cast<double>(rows);
+  state.SetLabel("own exact K^F " + std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
+}
+
+void table4(benchmark::internal::Benchmark* b) {
+  for (int letter = 0; letter < 2; ++letter)
+    for (int n = 1; n <= 6; ++n) b->Args({n, letter});
+}
+
+void growth(benchmark::internal::Benchmark* b) {
+  for (int letter = 0; letter < 2; ++letter)
+    for (int n : {8, 10, 12, 16, 20}) b->Args({n, letter});
+}
+
+BENCHMARK(BM_WrenchCone<Q, solvers::Route::kPaper>)->Apply(table4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WrenchCone<Q, solvers::Route::kProject>)->Apply(table4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WrenchCone<double, solvers::Route::kPaper>)->Apply(table4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WrenchCone<double, solvers::Route::kProject>)->Apply(table4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PaperRouteCddKF)->Apply(table4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PaperRouteOwnKF)->Apply(table4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WrenchCone<Q, solvers::Route::kProject>)->Apply(growth)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,74 @@
+// `contactcert check FILE`: independent verification of a certificate. The certificate's top-level "kind"
+// selects its checker; each checker re-derives everything from the embedded problem and trusts nothing else.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "cli/command.h"
+#include "exact/json_input.h"
+#include "solvers/stability/stability_certificate.h"
+#include "solvers/ucp/certificate.h"
+
+namespace contactcert::cli {
+namespace {
+
+struct CheckOptions {
+  CommonOptions common;
+  std::string file;
+};
+
+/// A checker's answer in the common shape of all certificate kinds.
+struct CheckOutcome {
+  bool valid = false;
+  std::string kind, reason;
+  nlohmann::ordered_json details = nlohmann::ordered_json::object();
+};
+
+CheckOutcome check_any(const exact::JsonInput& cert) {
+  const std::string kind = cert.at("kind").string();
+  CheckOutcome out;
+  out.kind = kind;
+  if (solvers::ucp::is_ucp_certificate_kind(kind)) {
+    const auto c = solvers::ucp::check_ucp_certificate(cert);
+    out.valid = c.verdict == solvers::ucp::CertificateVerdict::kValid;
+    out.reason = c.reason;
+    if (kind == "ucp_jammed") out.details = {{"nodes", c.nodes}, {"leaves", c.leaves}};
+    return out;
+  }
+  if (kind == "stability") {
+    const auto c = solvers::check_stability_certificate(cert);
+    out.valid = c.valid;
+    out.reason = c.reason;
+    return out;
+  }
+  cert.at("kind").fail("expected a certificate kind: ucp_jammed, ucp_solvable or stability, found \"" + kind + "\"");
+}
+
+int run_check(const CheckOptions& o) {
+  const CheckOutcome c = check_any(exact::JsonInput::load(o.file));
+  if (o.common.json) {
+    nlohmann::ordered_json j;
+    j["valid"] = c.valid;
+    j["kind"] = c.kind;
+    j["reason"] = c.reason;
+    for (auto it = c.details.begin(); it != c.details.end(); ++it) j[it.key()] = it.value();
+    std::cout << j.dump() << "\n";
+  } else {
+    std::cout << "check " << o.file << ": " << c.kind << " certificate is " << (c.valid ? "VALID" : "INVALID")
+              << "\n  " << c.reason << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_check(CLI::App& app, Action& action) {
+  auto o = std::make_shared<CheckOptions>();
+  CLI::App* sub = app.add_subcommand("check", "Verify a certificate written by ucp (or stability) independently");
+  add_common_options(*sub, o->common);
+  sub->add_option("file", o->file, "Certificate file")->required();
+  sub->callback([o, &action] { action = [o] { return run_check(*o); }; });
+}
+
+}  // namespace contactcert::cli

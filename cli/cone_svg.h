@@ -1,0 +1,18 @@
+// SVG pictures of wrench cones in the style of the wrench cone paper's Figures 3 and 4: the
+// workpiece, the fixels (filled when touching), their friction cones, and the cone's generators as
+// directed lines of force (pure moments as arcs about the centre of mass). Hand-written SVG.
+#pragma once
+
+#include <string>
+
+#include "exact/number.h"
+#include "geometry/planar_scene.h"
+
+namespace contactcert::cli {
+
+/// A complete <svg> element. `rays` and `lines` are the cone's generators as rows (x, y, torque);
+/// lines are drawn in both directions. `title` is printed in the picture.
+std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat<exact::Q>& rays,
+                            const exact::Mat<exact::Q>& lines, const std::string& title);
+
+}  // namespace contactcert::cli

@@ -1,0 +1,86 @@
+#include "cli/json_out.h"
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "exact/input_error.h"
+#include "exact/rational_text.h"
+
+namespace contactcert::cli {
+
+using exact::Q;
+
+json exact_json(const Q& x) { return exact::to_string(x); }
+
+json exact_json(const exact::Vec<Q>& v) {
+  json a = json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(exact::to_string(v(i)));
+  return a;
+}
+
+json exact_json(const exact::Mat<Q>& M) {
+  json rows = json::array();
+  for (Eigen::Index r = 0; r < M.rows(); ++r) {
+    json row = json::array();
+    for (Eigen::Index c = 0; c < M.cols(); ++c) row.push_back(exact::to_string(M(r, c)));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+json approx_json(const exact::Vec<Q>& v) { return approx_json(exact::to_double(v)); }
+
+json approx_json(const exact::Vec<double>& v) {
+  json a = json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v(i));
+  return a;
+}
+
+json approx_json(const exact::Mat<double>& M) {
+  json rows = json::array();
+  for (Eigen::Index r = 0; r < M.rows(); ++r) {
+    json row = json::array();
+    for (Eigen::Index c = 0; c < M.cols(); ++c) row.push_back(M(r, c));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+json primitive_json(const exact::Vec<Q>& v) {
+  json a = json::array();
+  for (const exact::Z& z : exact::primitive(v)) a.push_back(z.get_str());
+  return a;
+}
+
+exact::Vec<Q> parse_number_list(const std::string& text, const std::string& option, long expected_size) {
+  std::vector<Q> values;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    try {
+      values.push_back(exact::parse_rational(item));
+    } catch (const exact::NumberSyntaxError& e) {
+      throw exact::InputError("command line", option, e.what());
+    }
+  }
+  if (static_cast<long>(values.size()) != expected_size || (!text.empty() && text.back() == ','))
+    throw exact::InputError("command line", option,
+                            "expected " + std::to_string(expected_size) + " comma-separated numbers, found \"" +
+                                text + "\"");
+  exact::Vec<Q> v(expected_size);
+  for (long i = 0; i < expected_size; ++i) v(i) = values[static_cast<size_t>(i)];
+  return v;
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  if (path == "-") {
+    std::cout << text;
+    return;
+  }
+  std::ofstream f(path);
+  if (!f) throw exact::InputError(path, "", "cannot open the file for writing");
+  f << text;
+}
+
+}  // namespace contactcert::cli

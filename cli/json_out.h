@@ -1,0 +1,30 @@
+// JSON output helpers shared by the subcommands (SPEC section 1): exact numbers as strings in lowest
+// terms, float views beside them under `_approx` keys, and writing a result file.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "exact/number.h"
+
+namespace contactcert::cli {
+
+using json = nlohmann::ordered_json;
+
+/// "-7/20"-style strings.
+json exact_json(const exact::Q& x);
+json exact_json(const exact::Vec<exact::Q>& v);
+json exact_json(const exact::Mat<exact::Q>& M);  ///< array of rows
+/// Plain doubles (the float view of an exact value, or a float-path result).
+json approx_json(const exact::Vec<exact::Q>& v);
+json approx_json(const exact::Vec<double>& v);
+json approx_json(const exact::Mat<double>& M);
+/// A primitive integer direction vector (SPEC section 1) as strings.
+json primitive_json(const exact::Vec<exact::Q>& v);
+/// Reads "a,b,c" (each an exact number, SPEC section 1) for option `option`; InputError names the option.
+exact::Vec<exact::Q> parse_number_list(const std::string& text, const std::string& option, long expected_size);
+/// Writes text to path ("-" = stdout); InputError if the file cannot be written.
+void write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace contactcert::cli

@@ -1,0 +1,214 @@
+// `contactcert ucp FILE`: does the quasistatic contact problem (Pang, Trinkle, Lo) have a solution?
+// `contactcert ucp --generate random|reduction`: writes problem files (section 5 generator, Proposition 2).
+#include <CLI/CLI.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "cli/command.h"
+#include "exact/arith.h"
+#include "exact/input_error.h"
+#include "exact/rational_text.h"
+#include "solvers/ucp/certificate.h"
+#include "solvers/ucp/generate.h"
+#include "solvers/ucp/solve.h"
+
+namespace contactcert::cli {
+namespace {
+
+namespace ucp = solvers::ucp;
+using json = nlohmann::ordered_json;
+using exact::Q;
+using exact::Vec;
+
+struct UcpCliOptions {
+  CommonOptions common;
+  std::string file;
+  std::string method = "complete";
+  std::uint64_t seed = 1;
+  std::string certificate;
+  long max_nodes = 200000;
+  long max_bases = 100000;
+  // --generate
+  std::string generate;
+  std::string out = "-";
+  int nc = 3;
+  std::string mu_max = "1";
+  int abar = 0;
+  int rows = 2, cols = 6;
+  bool planted = false;
+};
+
+json strings(const Vec<Q>& v) {
+  json a = json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(exact::to_string(v(i)));
+  return a;
+}
+json doubles(const exact::Vec<double>& v) {
+  json a = json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v(i));
+  return a;
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  if (path == "-") {
+    std::cout << text;
+    return;
+  }
+  std::ofstream f(path);
+  if (!f) throw exact::InputError(path, "", "cannot open the file for writing");
+  f << text;
+}
+
+int run_generate(const UcpCliOptions& o) {
+  std::mt19937_64 rng(o.seed);
+  ucp::UcpProblem p;
+  if (o.generate == "random") {
+    ucp::RandomProblemOptions r;
+    r.nc = o.nc;
+    r.abar_size = o.abar;
+    try {
+      r.mu_max = exact::parse_rational(o.mu_max);
+    } catch (const exact::NumberSyntaxError& e) {
+      throw exact::InputError("command line", "--mu-max", e.what());
+    }
+    if (o.nc < 1 || o.abar < 0 || o.abar > 2 * o.nc || sgn(r.mu_max) <= 0)
+      throw exact::InputError("command line", "--nc/--abar/--mu-max", "expected nc >= 1, 0 <= abar <= 2nc, mu-max > 0");
+    p = ucp::generate_random_problem(r, rng);
+  } else {
+    if (o.rows < 1 || o.cols < 1 || o.cols > 60)
+      throw exact::InputError("command line", "--rows/--cols", "expected rows >= 1 and 1 <= cols <= 60");
+    const ucp::ZeroOneProblem zo = ucp::random_zero_one(o.rows, o.cols, o.planted, rng);
+    p = ucp::reduction_problem(zo);
+    if (o.cols <= 20) p.source += ucp::zero_one_feasible(zo) ? " (0-1 feasible: solvable)" : " (0-1 infeasible: jammed)";
+  }
+  p.source += ", seed " + std::to_string(o.seed);
+  write_text(o.out, ucp::to_json_text(p));
+  return 0;
+}
+
+int run_ucp(const UcpCliOptions& o) {
+  if (!o.generate.empty()) return run_generate(o);
+  if (o.file.empty()) throw exact::InputError("command line", "FILE", "expected a problem file (or --generate)");
+  const ucp::UcpProblem problem = ucp::load_ucp_problem(o.file);
+  ucp::UcpOptions opts;
+  opts.method = ucp::parse_method(o.method);
+  opts.arith = exact::parse_arith(o.common.arith);
+  opts.seed = o.seed;
+  opts.max_nodes = o.max_nodes;
+  opts.max_bases = o.max_bases;
+  if (!o.certificate.empty() && opts.arith == exact::Arith::kFloat)
+    throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
+  const ucp::UcpReport r = ucp::solve_ucp(problem, opts);
+
+  std::string cert_text;
+  if (!o.certificate.empty()) {
+    if (r.status == ucp::UcpStatus::kJammed && r.proof)
+      cert_text = ucp::jammed_certificate(problem, *r.proof);
+    else if (r.status == ucp::UcpStatus::kSolvable && r.x)
+      cert_text = ucp::solvable_certificate(problem, *r.x, *r.y);
+    if (!cert_text.empty()) write_text(o.certificate, cert_text);
+  }
+
+  json j;
+  j["status"] = ucp::status_name(r.status);
+  j["reason"] = r.reason;
+  j["method"] = ucp::method_name(r.method);
+  j["arith"] = exact::arith_name(r.arith);
+  if (r.x) {
+    j["x"] = strings(*r.x);
+    j["y"] = strings(*r.y);
+    j["xTy"] = exact::to_string(Q(r.x->dot(*r.y)));
+  } else if (r.x_approx.size() > 0) {
+    j["x_approx"] = doubles(r.x_approx);
+    j["y_approx"] = doubles(r.y_approx);
+  }
+  if (r.best_xTy) j["best_xTy"] = exact::to_string(*r.best_xTy);
+  else if (r.arith == exact::Arith::kFloat) j["best_xTy_approx"] = r.best_xTy_approx;
+  if (r.physical) {
+    const ucp::PhysicalSolution& s = *r.physical;
+    j["physical"] = {{"c_n", strings(s.c_n)},   {"c_t", strings(s.c_t)},
+                     {"v_n", strings(s.v_n)},   {"v_t", strings(s.v_t)},
+                     {"q_dot", strings(s.q_dot)}, {"theta_dot", strings(s.theta_dot)},
+                     {"tau", strings(s.tau)}};
+    j["physical"]["tau_is"] = "tau - g_man (joint efforts net of gravity loads), all joints";
+  }
+  if (r.conditions) {
+    j["conditions_2_to_10"] = {{"satisfied", r.conditions->status == ucp::ConditionsStatus::kSatisfied},
+                               {"violations", r.conditions->violations}};
+  }
+  j["pairs"] = r.pairs;
+  j["lps"] = r.lps;
+  if (r.incomplete_adjacencies > 0) j["incomplete_adjacencies"] = r.incomplete_adjacencies;
+  if (r.method == ucp::Method::kComplete) {
+    j["nodes"] = r.nodes;
+    j["learned_prunes"] = r.learned_prunes;
+  }
+  if (r.solutions >= 0) {
+    j["solutions"] = r.solutions;
+    j["solution_modes"] = r.solution_modes;
+  }
+  if (!cert_text.empty()) j["certificate"] = o.certificate;
+  j["seconds"] = r.seconds;
+
+  if (o.common.json) {
+    std::cout << j.dump() << "\n";
+  } else {
+    std::cout << "ucp " << o.file << ": " << j["status"].get<std::string>() << " (" << r.reason << ")\n";
+    std::cout << "  method " << j["method"].get<std::string>() << ", arith " << j["arith"].get<std::string>()
+              << ", pairs " << r.pairs << ", LPs " << r.lps;
+    if (r.method == ucp::Method::kComplete) std::cout << ", nodes " << r.nodes;
+    std::cout << ", " << r.seconds << " s\n";
+    if (r.best_xTy && !r.x) std::cout << "  best x^T y = " << exact::to_string(*r.best_xTy) << "\n";
+    for (const char* k : {"x", "y"})
+      if (j.contains(k)) {
+        std::cout << "  " << k << " =";
+        for (const auto& e : j[k]) std::cout << " " << e.get<std::string>();
+        std::cout << "\n";
+      }
+    if (j.contains("physical"))
+      for (const char* k : {"c_n", "c_t", "v_n", "v_t", "q_dot", "theta_dot", "tau"}) {
+        std::cout << "  " << k << " =";
+        for (const auto& e : j["physical"][k]) std::cout << " " << e.get<std::string>();
+        std::cout << "\n";
+      }
+    if (r.conditions)
+      std::cout << "  conditions (2)-(10): "
+                << (r.conditions->status == ucp::ConditionsStatus::kSatisfied ? "satisfied exactly" : "VIOLATED") << "\n";
+    if (r.solutions >= 0) std::cout << "  solution modes: " << r.solutions << "\n";
+    if (!cert_text.empty()) std::cout << "  certificate written to " << o.certificate << "\n";
+  }
+  return r.status == ucp::UcpStatus::kUnknown ? 3 : 0;
+}
+
+}  // namespace
+
+void register_ucp(CLI::App& app, Action& action) {
+  auto o = std::make_shared<UcpCliOptions>();
+  CLI::App* sub = app.add_subcommand("ucp", "Solve the quasistatic contact problem (Pang, Trinkle, Lo) or prove it jammed");
+  add_common_options(*sub, o->common);
+  sub->add_option("file", o->file, "Problem file (SPEC section 2, or \"kind\": \"ucp\")");
+  sub->add_option("--method", o->method, "paper | modified | complete | enumerate")
+      ->check(CLI::IsMember({"paper", "modified", "complete", "enumerate"}))
+      ->capture_default_str();
+  sub->add_option("--seed", o->seed, "Seed of the random choices (Step 3) and of generators")->capture_default_str();
+  sub->add_option("--certificate", o->certificate, "Write the certificate of the verdict to this file");
+  sub->add_option("--max-nodes", o->max_nodes, "Node budget of the complete search")->check(CLI::PositiveNumber)->capture_default_str();
+  sub->add_option("--max-bases", o->max_bases, "Step 3: bases explored per degenerate vertex")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  sub->add_option("--generate", o->generate, "Write a problem instead: random (section 5) | reduction (Proposition 2)")
+      ->check(CLI::IsMember({"random", "reduction"}));
+  sub->add_option("--out", o->out, "Generated problem file (- = stdout)")->capture_default_str();
+  sub->add_option("--nc", o->nc, "random: number of contacts")->capture_default_str();
+  sub->add_option("--mu-max", o->mu_max, "random: friction coefficients in (0, mu-max)")->capture_default_str();
+  sub->add_option("--abar", o->abar, "random: |abar|, effort-controlled joints")->capture_default_str();
+  sub->add_option("--rows", o->rows, "reduction: rows of the 0-1 problem")->capture_default_str();
+  sub->add_option("--cols", o->cols, "reduction: columns of the 0-1 problem")->capture_default_str();
+  sub->add_flag("--planted", o->planted, "reduction: plant a 0-1 solution (solvable)");
+  sub->callback([o, &action] { action = [o] { return run_ucp(*o); }; });
+}
+
+}  // namespace contactcert::cli

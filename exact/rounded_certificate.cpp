@@ -1,0 +1,200 @@
+#include "exact/rounded_certificate.h"
+
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+
+namespace contactcert::exact {
+
+namespace {
+
+using Index = Eigen::Index;
+using i64 = std::int64_t;
+__extension__ typedef __int128 i128;
+
+/// Largest denominator tried when rounding a double to a fraction.
+constexpr i64 kMaxDenominator = i64(1) << 30;
+
+struct Fraction {
+  i64 num, den;
+};
+
+/// The first continued-fraction convergent p/q of v with |v - p/q| <= 1e-9 max(1, |v|), q <= kMaxDenominator.
+std::optional<Fraction> round_to_fraction(double v) {
+  if (!std::isfinite(v) || std::abs(v) > 1e15) return std::nullopt;
+  const double tol = 1e-9 * std::max(1.0, std::abs(v));
+  i64 h0 = 0, h1 = 1, k0 = 1, k1 = 0;
+  double x = v;
+  for (int it = 0; it < 64; ++it) {
+    const double a = std::floor(x);
+    if (std::abs(a) > 1e15) return std::nullopt;
+    const i64 ai = static_cast<i64>(a);
+    i64 h2, k2, t;
+    if (__builtin_mul_overflow(ai, h1, &t) || __builtin_add_overflow(t, h0, &h2)) return std::nullopt;
+    if (__builtin_mul_overflow(ai, k1, &t) || __builtin_add_overflow(t, k0, &k2)) return std::nullopt;
+    if (k2 > kMaxDenominator) return std::nullopt;
+    h0 = h1, h1 = h2, k0 = k1, k1 = k2;
+    if (std::abs(v - static_cast<double>(h1) / static_cast<double>(k1)) <= tol) return Fraction{h1, k1};
+    const double frac = x - a;
+    if (frac <= 0) return std::nullopt;
+    x = 1 / frac;
+  }
+  return std::nullopt;
+}
+
+bool to_i64(mpz_srcptr z, i64& out) {
+  if (!mpz_fits_slong_p(z)) return false;
+  out = mpz_get_si(z);
+  return true;
+}
+
+bool lcm_into(i64& acc, i64 d) {
+  const i64 g = std::gcd(acc, d);
+  return !__builtin_mul_overflow(acc / g, d, &acc);
+}
+
+/// Scales the rationals q(0..count-1) by the lcm of their denominators into integers: q = out / scale.
+template <class Get>
+bool integer_scale(Index count, Get q, i64* out, i64& scale) {
+  scale = 1;
+  for (Index i = 0; i < count; ++i) {
+    mpz_srcptr den = mpq_denref(q(i).get_mpq_t());
+    if (mpz_cmp_ui(den, 1) == 0) continue;
+    i64 d;
+    if (!to_i64(den, d) || !lcm_into(scale, d)) return false;
+  }
+  for (Index i = 0; i < count; ++i) {
+    i64 num, den;
+    if (!to_i64(mpq_numref(q(i).get_mpq_t()), num) || !to_i64(mpq_denref(q(i).get_mpq_t()), den)) return false;
+    if (__builtin_mul_overflow(num, scale / den, &out[i])) return false;
+  }
+  return true;
+}
+
+/// Rounds each entry of v to a fraction; returns integers with v ~ out / scale.
+bool round_vector(const std::vector<double>& v, std::vector<i64>& out, i64& scale) {
+  std::vector<Fraction> f;
+  f.reserve(v.size());
+  scale = 1;
+  for (double x : v) {
+    const std::optional<Fraction> r = round_to_fraction(x);
+    if (!r || !lcm_into(scale, r->den)) return false;
+    f.push_back(*r);
+  }
+  out.resize(v.size());
+  for (size_t i = 0; i < v.size(); ++i)
+    if (__builtin_mul_overflow(f[i].num, scale / f[i].den, &out[i])) return false;
+  return true;
+}
+
+bool fma128(i128& acc, i64 a, i64 b) {
+  return !__builtin_add_overflow(acc, static_cast<i128>(a) * static_cast<i128>(b), &acc);
+}
+
+Q make_q(i64 num, i64 den) {
+  Q q(mpz_class(static_cast<long>(num)), mpz_class(static_cast<long>(den)));
+  q.canonicalize();
+  return q;
+}
+
+}  // namespace
+
+LpProblem<double> IntegerLp::to_double(const std::vector<bool>& is_free) const {
+  LpProblem<double> p;
+  p.A = Mat<double>(m, n);
+  p.b = Vec<double>(m);
+  p.c = Vec<double>(n);
+  for (Index i = 0; i < m; ++i) {
+    for (Index j = 0; j < n; ++j) p.A(i, j) = static_cast<double>(A[static_cast<size_t>(i * n + j)]);
+    p.b(i) = static_cast<double>(b[static_cast<size_t>(i)]);
+  }
+  for (Index j = 0; j < n; ++j) p.c(j) = static_cast<double>(c[static_cast<size_t>(j)]);
+  p.is_free = is_free;
+  return p;
+}
+
+std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem) {
+  IntegerLp out;
+  const Index m = problem.rows(), n = problem.cols();
+  out.m = m;
+  out.n = n;
+  out.A.resize(static_cast<size_t>(m * n));
+  out.b.resize(static_cast<size_t>(m));
+  out.c.assign(static_cast<size_t>(n), 0);
+  out.row_scale.resize(static_cast<size_t>(m));
+  std::vector<i64> row(static_cast<size_t>(n + 1));
+  for (Index i = 0; i < m; ++i) {
+    auto get = [&](Index j) -> const Q& { return j < n ? problem.A(i, j) : problem.b(i); };
+    if (!integer_scale(n + 1, get, row.data(), out.row_scale[static_cast<size_t>(i)])) return std::nullopt;
+    std::copy(row.begin(), row.begin() + n, out.A.begin() + i * n);
+    out.b[static_cast<size_t>(i)] = row[static_cast<size_t>(n)];
+  }
+  if (problem.c.size() > 0 &&
+      !integer_scale(n, [&](Index j) -> const Q& { return problem.c(j); }, out.c.data(), out.objective_scale))
+    return std::nullopt;
+  return out;
+}
+
+std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& problem, const IntegerLp& ilp,
+                                                          const std::vector<Index>& basis, const Vec<double>& x_approx,
+                                                          const Vec<double>& y_approx) {
+  const Index m = problem.rows(), n = problem.cols();
+  const size_t k = basis.size();
+  if (x_approx.size() != n || y_approx.size() != m || ilp.m != m || ilp.n != n) return std::nullopt;
+  const std::vector<i64>& Aint = ilp.A;
+  const std::vector<i64>& bint = ilp.b;
+  const std::vector<i64>& cint = ilp.c;
+
+  // x_B ~ X / D.
+  std::vector<double> xb(k);
+  for (size_t t = 0; t < k; ++t) {
+    if (basis[t] < 0 || basis[t] >= n) return std::nullopt;
+    xb[t] = x_approx(basis[t]);
+  }
+  std::vector<i64> X;
+  i64 D;
+  if (!round_vector(xb, X, D)) return std::nullopt;
+  for (size_t t = 0; t < k; ++t)
+    if (X[t] < 0 && !problem.free(basis[t])) return std::nullopt;
+  // A_B X = D b, row by row in the integer rows.
+  for (Index i = 0; i < m; ++i) {
+    i128 acc = 0;
+    for (size_t t = 0; t < k; ++t)
+      if (!fma128(acc, Aint[static_cast<size_t>(i * n + basis[t])], X[t])) return std::nullopt;
+    if (acc != static_cast<i128>(D) * bint[static_cast<size_t>(i)]) return std::nullopt;
+  }
+
+  // Duals of the integer LP ~ Y / E; those of the problem are y_i = row_scale_i Y_i / (E objective_scale).
+  std::vector<double> yhat(y_approx.data(), y_approx.data() + m);
+  std::vector<i64> Y;
+  i64 E;
+  if (!round_vector(yhat, Y, E)) return std::nullopt;
+  // (Aint^T Y)_j <= E cint_j; equality on basic and free columns.
+  std::vector<bool> in_basis(static_cast<size_t>(n), false);
+  for (Index j : basis) in_basis[static_cast<size_t>(j)] = true;
+  std::vector<i128> t(static_cast<size_t>(n), 0);
+  for (Index i = 0; i < m; ++i) {
+    const i64 yi = Y[static_cast<size_t>(i)];
+    if (yi == 0) continue;
+    for (Index j = 0; j < n; ++j)
+      if (!fma128(t[static_cast<size_t>(j)], Aint[static_cast<size_t>(i * n + j)], yi)) return std::nullopt;
+  }
+  for (Index j = 0; j < n; ++j) {
+    const i128 lhs = t[static_cast<size_t>(j)];
+    const i128 rhs = static_cast<i128>(E) * cint[static_cast<size_t>(j)];
+    const bool tight = in_basis[static_cast<size_t>(j)] || problem.free(j);
+    if (tight ? lhs != rhs : lhs > rhs) return std::nullopt;
+  }
+
+  OptimalCertificate cert;
+  cert.x = Vec<Q>::Zero(n);
+  for (size_t s = 0; s < k; ++s) cert.x(basis[s]) = make_q(X[s], D);
+  cert.y = Vec<Q>(m);
+  for (Index i = 0; i < m; ++i) cert.y(i) = make_q(Y[static_cast<size_t>(i)], E) * make_q(ilp.row_scale[static_cast<size_t>(i)], ilp.objective_scale);
+  cert.value = 0;
+  const Vec<Q> c = problem.objective();
+  for (Index j : basis) cert.value += c(j) * cert.x(j);
+  return cert;
+}
+
+}  // namespace contactcert::exact

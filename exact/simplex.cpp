@@ -1,0 +1,234 @@
+#include "exact/simplex.h"
+
+#include <string>
+
+#include "exact/input_error.h"
+#include "exact/linalg.h"
+
+namespace contactcert::exact {
+
+LpProblem<double> to_double(const LpProblem<Q>& problem) {
+  return {to_double(problem.A), to_double(problem.b), to_double(problem.c), problem.is_free};
+}
+
+namespace {
+
+using Index = Eigen::Index;
+
+/// After this many consecutive degenerate pivots, Dantzig's rule gives way to Bland's rule until the
+/// objective moves again (Bland's rule cannot cycle, so every degenerate run ends).
+constexpr long kDegenerateRunBeforeBland = 50;
+
+enum class LoopEnd { kOptimal, kUnbounded };
+
+struct LoopOutcome {
+  LoopEnd end = LoopEnd::kOptimal;
+  Index column = -1;  // entering column of the unbounded edge
+  int direction = 1;  // +1: the column increases along the ray, -1: a free column decreases
+};
+
+bool column_is_free(const std::vector<bool>& is_free, Index j) {
+  return !is_free.empty() && is_free[static_cast<size_t>(j)];
+}
+
+bool row_is_free(const std::vector<bool>& is_free, Index basic, Index n) {
+  return basic < n && column_is_free(is_free, basic);
+}
+
+/// The primal simplex loop on the tableau's current objective: pivots until no column prices out
+/// (optimal) or an improving column has no blocking row (unbounded). Free basic variables never leave.
+template <class T>
+LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_free, PivotRule rule,
+                         long max_pivots, long& pivots) {
+  const Index n = tab.cols();
+  long degenerate_run = 0;
+  for (;;) {
+    const bool bland = rule == PivotRule::kBland || degenerate_run >= kDegenerateRunBeforeBland;
+    Index s = -1;
+    T best_score = T(0);
+    for (Index j = 0; j < n; ++j) {
+      if (tab.is_basic(j)) continue;
+      const T& dj = tab.reduced_cost(j);
+      const int sg = sign(dj);
+      if (sg == 0 || (sg > 0 && !column_is_free(is_free, j))) continue;
+      if (bland) {
+        s = j;
+        break;
+      }
+      const T score = sg > 0 ? dj : T(-dj);
+      if (s < 0 || score > best_score) {
+        s = j;
+        best_score = score;
+      }
+    }
+    if (s < 0) return {LoopEnd::kOptimal, -1, 1};
+    const int direction = sign(tab.reduced_cost(s)) > 0 ? -1 : 1;
+
+    Index r = -1;
+    T best_ratio = T(0), best_entry = T(0);
+    for (Index i = 0; i < tab.rows(); ++i) {
+      const Index v = tab.basis()[static_cast<size_t>(i)];
+      if (row_is_free(is_free, v, n)) continue;
+      const T a = direction > 0 ? tab.entry(i, s) : T(-tab.entry(i, s));
+      if (!is_positive(a)) continue;
+      const T ratio = tab.rhs(i) / a;
+      bool take = r < 0;
+      if (!take) {
+        const int cmp = sign(T(ratio - best_ratio));
+        take = cmp < 0 || (cmp == 0 && (bland ? v < tab.basis()[static_cast<size_t>(r)]
+                                              : NumberTraits<T>::better_pivot(a, best_entry)));
+      }
+      if (take) {
+        r = i;
+        best_ratio = ratio;
+        best_entry = a;
+      }
+    }
+    if (r < 0) return {LoopEnd::kUnbounded, s, direction};
+    const bool degenerate = is_zero(tab.rhs(r));
+    tab.pivot(r, s);
+    if (++pivots > max_pivots)
+      throw BudgetExceeded("simplex pivot budget exceeded", std::to_string(max_pivots) + " pivots");
+    degenerate_run = degenerate ? degenerate_run + 1 : 0;
+  }
+}
+
+/// Some y with B^T y = c_B for the basis columns of [A | S] (S = diag(sign b), artificial i = index n + i).
+template <class T>
+Vec<T> basis_duals(const Mat<T>& A, const Vec<T>& b, const std::vector<Index>& basis, const Vec<T>& cB) {
+  const Index m = A.rows(), n = A.cols(), k = static_cast<Index>(basis.size());
+  Mat<T> Bt = Mat<T>::Zero(k, m);
+  for (Index r = 0; r < k; ++r) {
+    const Index v = basis[static_cast<size_t>(r)];
+    if (v < n)
+      Bt.row(r) = A.col(v).transpose();
+    else
+      Bt(r, v - n) = sign(b(v - n)) < 0 ? T(-1) : T(1);
+  }
+  std::optional<Vec<T>> y = solve<T>(Bt, cB);
+  return y ? *y : Vec<T>(Vec<T>::Zero(m));
+}
+
+template <class T>
+LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out,
+                   long pivots) {
+  LpResult<T> res;
+  res.decided_by = NumberTraits<T>::is_exact ? DecidedBy::kExact : DecidedBy::kFloat;
+  res.pivots = pivots;
+  res.basis = tab.basis();
+  res.x = tab.primal();
+  const Vec<T> c = problem.objective();
+  if (out.end == LoopEnd::kUnbounded) {
+    res.status = LpStatus::kUnbounded;
+    res.unbounded_column = out.column;
+    res.ray = Vec<T>::Zero(problem.cols());
+    res.ray(out.column) = T(out.direction);
+    for (Index r = 0; r < tab.rows(); ++r)
+      res.ray(tab.basis()[static_cast<size_t>(r)]) = T(-out.direction) * tab.entry(r, out.column);
+    res.value = tab.objective_value();
+    return res;
+  }
+  res.status = LpStatus::kOptimal;
+  res.value = tab.objective_value();
+  Vec<T> cB(tab.rows());
+  for (Index r = 0; r < tab.rows(); ++r) cB(r) = c(tab.basis()[static_cast<size_t>(r)]);
+  res.duals = basis_duals(problem.A, problem.b, res.basis, cB);
+  return res;
+}
+
+}  // namespace
+
+template <class T>
+LpResult<T> solve_lp_from_tableau(const LpProblem<T>& problem, SimplexTableau<T> tab, const LpOptions& options) {
+  long pivots = 0;
+  tab.set_objective(problem.objective());
+  const LoopOutcome out = simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
+  return finish(problem, tab, out, pivots);
+}
+
+template <class T>
+LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options) {
+  const Index n = problem.cols();
+  if (options.warm_basis) {
+    std::optional<SimplexTableau<T>> tab = SimplexTableau<T>::from_basis(problem.A, problem.b, *options.warm_basis);
+    bool feasible = tab.has_value();
+    for (Index r = 0; feasible && r < tab->rows(); ++r)
+      feasible = !is_negative(tab->rhs(r)) || problem.free(tab->basis()[static_cast<size_t>(r)]);
+    if (feasible) return solve_lp_from_tableau(problem, std::move(*tab), options);
+  }
+
+  // Phase 1: min sum of artificials of A x + S a = b from the artificial basis.
+  SimplexTableau<T> tab = SimplexTableau<T>::artificial_start(problem.A, problem.b);
+  tab.set_objective(Vec<T>::Zero(n), T(1));
+  long pivots = 0;
+  simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
+  if (is_positive(tab.objective_value())) {
+    LpResult<T> res;
+    res.status = LpStatus::kInfeasible;
+    res.decided_by = NumberTraits<T>::is_exact ? DecidedBy::kExact : DecidedBy::kFloat;
+    res.pivots = pivots;
+    res.basis = tab.basis();
+    Vec<T> cB(tab.rows());
+    for (Index r = 0; r < tab.rows(); ++r) cB(r) = tab.basis()[static_cast<size_t>(r)] >= n ? T(1) : T(0);
+    res.farkas = -basis_duals(problem.A, problem.b, res.basis, cB);
+    return res;
+  }
+  // Drive the artificials (all at level 0) out of the basis; rows where that is impossible are redundant.
+  for (Index r = tab.rows() - 1; r >= 0; --r) {
+    if (tab.basis()[static_cast<size_t>(r)] < n) continue;
+    Index s = -1;
+    for (Index j = 0; j < n && s < 0; ++j)
+      if (!tab.is_basic(j) && !is_zero(tab.entry(r, j))) s = j;
+    if (s >= 0) {
+      tab.pivot(r, s);
+      ++pivots;
+    } else {
+      tab.remove_row(r);
+    }
+  }
+  // Phase 2.
+  tab.set_objective(problem.objective());
+  const LoopOutcome out = simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
+  return finish(problem, tab, out, pivots);
+}
+
+bool verify_farkas(const LpProblem<Q>& problem, const Vec<Q>& y) {
+  if (y.size() != problem.rows()) return false;
+  const Vec<Q> yA = problem.A.transpose() * y;
+  for (Index j = 0; j < problem.cols(); ++j) {
+    const int s = sgn(yA(j));
+    if (problem.free(j) ? s != 0 : s < 0) return false;
+  }
+  return sgn(Q(problem.b.dot(y))) < 0;
+}
+
+bool verify_ray(const LpProblem<Q>& problem, const Vec<Q>& d) {
+  if (d.size() != problem.cols()) return false;
+  const Vec<Q> Ad = problem.A * d;
+  for (Index i = 0; i < problem.rows(); ++i)
+    if (sgn(Ad(i)) != 0) return false;
+  for (Index j = 0; j < problem.cols(); ++j)
+    if (!problem.free(j) && sgn(d(j)) < 0) return false;
+  return sgn(Q(problem.objective().dot(d))) < 0;
+}
+
+bool verify_optimal(const LpProblem<Q>& problem, const Vec<Q>& x, const Vec<Q>& y) {
+  if (x.size() != problem.cols() || y.size() != problem.rows()) return false;
+  const Vec<Q> Ax = problem.A * x;
+  for (Index i = 0; i < problem.rows(); ++i)
+    if (Ax(i) != problem.b(i)) return false;
+  const Vec<Q> c = problem.objective();
+  const Vec<Q> yA = problem.A.transpose() * y;
+  for (Index j = 0; j < problem.cols(); ++j) {
+    if (problem.free(j) ? yA(j) != c(j) : (sgn(x(j)) < 0 || yA(j) > c(j))) return false;
+  }
+  return Q(c.dot(x)) == Q(problem.b.dot(y));
+}
+
+template LpResult<double> solve_lp<double>(const LpProblem<double>&, const LpOptions&);
+template LpResult<Q> solve_lp<Q>(const LpProblem<Q>&, const LpOptions&);
+template LpResult<double> solve_lp_from_tableau<double>(const LpProblem<double>&, SimplexTableau<double>,
+                                                        const LpOptions&);
+template LpResult<Q> solve_lp_from_tableau<Q>(const LpProblem<Q>&, SimplexTableau<Q>, const LpOptions&);
+
+}  // namespace contactcert::exact

@@ -1,0 +1,36 @@
+// Two-phase primal simplex for  min c^T x  s.t.  A x = b, x >= 0 (free variables allowed), written once over
+// T (double or Q). Anti-cycling by Bland's rule (after a run of degenerate pivots, or always), so it
+// terminates on degenerate problems. Returns the optimal basis, duals and a certificate (Farkas vector or ray).
+#pragma once
+
+#include "exact/input_error.h"
+#include "exact/lp_problem.h"
+#include "exact/simplex_tableau.h"
+
+namespace contactcert::exact {
+
+/// Solves the LP by the two-phase simplex in T; see LpResult for the meaning and sign conventions of the
+/// result. decided_by = kFloat for double, kExact for Q. Throws BudgetExceeded after options.max_pivots.
+template <class T>
+LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options = {});
+
+/// Phase 2 of the simplex from a primal feasible tableau of problem.A x = problem.b (for example
+/// SimplexTableau<T>::from_basis of a feasible basis): a warm start. The pivots done are counted in the result.
+template <class T>
+LpResult<T> solve_lp_from_tableau(const LpProblem<T>& problem, SimplexTableau<T> tableau,
+                                  const LpOptions& options = {});
+
+/// Exact check of a Farkas certificate: (y^T A)_j >= 0 on non-free columns, == 0 on free ones, y^T b < 0.
+bool verify_farkas(const LpProblem<Q>& problem, const Vec<Q>& y);
+/// Exact check of an unbounded ray: A d = 0, d_j >= 0 on non-free columns, c^T d < 0.
+bool verify_ray(const LpProblem<Q>& problem, const Vec<Q>& d);
+/// Exact check of optimality: x primal feasible, y dual feasible (A^T y <= c, == on free), c^T x = b^T y.
+bool verify_optimal(const LpProblem<Q>& problem, const Vec<Q>& x, const Vec<Q>& y);
+
+extern template LpResult<double> solve_lp<double>(const LpProblem<double>&, const LpOptions&);
+extern template LpResult<Q> solve_lp<Q>(const LpProblem<Q>&, const LpOptions&);
+extern template LpResult<double> solve_lp_from_tableau<double>(const LpProblem<double>&, SimplexTableau<double>,
+                                                               const LpOptions&);
+extern template LpResult<Q> solve_lp_from_tableau<Q>(const LpProblem<Q>&, SimplexTableau<Q>, const LpOptions&);
+
+}  // namespace contactcert::exact

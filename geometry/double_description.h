@@ -1,0 +1,38 @@
+// Conversion between span and face forms by the double description method (Motzkin et al.; the
+// Fukuda-Prodon variant with the combinatorial adjacency test). One algorithm for both directions:
+// the facets of C are the extreme rays of its polar {f : f . g <= 0 for all g in C}.
+// Exact path (T = Q): the iteration runs on primitive integer rows (fraction-free); float path
+// (T = double): the same code on doubles with the tolerance sign test of NumberTraits<double>.
+#pragma once
+
+#include <cstddef>
+
+#include "geometry/face_cone.h"
+#include "geometry/span_cone.h"
+
+namespace contactcert::geometry {
+
+/// Work limit of one conversion: the largest number of intermediate rays. Exceeding it throws
+/// exact::BudgetExceeded.
+struct DdBudget {
+  std::size_t max_rays = 2'000'000;
+};
+
+/// F^F of the paper's notation: a minimal face form of pos(rays) + span(lines). Each inequality row is
+/// a facet normal (f . g <= 0 on the cone, eq. 10); equalities span the orthogonal complement of the
+/// cone's linear hull. No strict rows. Not canonical: apply canonical() for that (exact path).
+template <class T>
+FaceCone<T> to_face(const SpanCone<T>& cone, const DdBudget& budget = {});
+
+/// A minimal span form of { F g <= 0, E g = 0 }: extreme rays (modulo the lineality space) and a
+/// basis of the lineality space. Strict rows are read as non-strict, so the result is the closure
+/// of the cone when the cone is not empty (see nnc_cone.h for strict cones).
+template <class T>
+SpanCone<T> to_span(const FaceCone<T>& cone, const DdBudget& budget = {});
+
+extern template FaceCone<double> to_face<double>(const SpanCone<double>&, const DdBudget&);
+extern template FaceCone<Q> to_face<Q>(const SpanCone<Q>&, const DdBudget&);
+extern template SpanCone<double> to_span<double>(const FaceCone<double>&, const DdBudget&);
+extern template SpanCone<Q> to_span<Q>(const FaceCone<Q>&, const DdBudget&);
+
+}  // namespace contactcert::geometry

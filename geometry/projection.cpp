@@ -1,0 +1,230 @@
+#include "geometry/projection.h"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+#include "exact/linalg.h"
+#include "exact/simplex.h"
+#include "exact/verified_lp.h"
+#include "geometry/canonical.h"
+
+namespace contactcert::geometry {
+namespace {
+
+using Index = Eigen::Index;
+using exact::is_zero;
+using exact::LpProblem;
+using exact::LpResult;
+using exact::LpStatus;
+using exact::sign;
+
+template <class T>
+LpResult<T> solve(const LpProblem<T>& lp) {
+  if constexpr (std::is_same_v<T, Q>) {
+    return exact::solve_lp_verified(lp);
+  } else {
+    return exact::solve_lp<double>(lp);
+  }
+}
+
+template <class T>
+Mat<T> stack_rows(const std::vector<Vec<T>>& rows, Index dim) {
+  Mat<T> M(static_cast<Index>(rows.size()), dim);
+  for (Index i = 0; i < M.rows(); ++i) M.row(i) = rows[static_cast<size_t>(i)].transpose();
+  return M;
+}
+
+bool any_strict(const std::vector<bool>& s) { return std::find(s.begin(), s.end(), true) != s.end(); }
+
+// max f . g over { g : K z = P g, z >= 0, sum z <= 1 }: x = (z, g, slack); returns the optimal g.
+template <class T>
+LpResult<T> maximise_direction(const Mat<T>& K, const Mat<T>& P, const Vec<T>& f) {
+  const Index m = K.rows(), n = K.cols(), d = P.cols();
+  LpProblem<T> lp;
+  lp.A = Mat<T>::Zero(m + 1, n + d + 1);
+  lp.A.block(0, 0, m, n) = K;
+  lp.A.block(0, n, m, d) = -P;
+  for (Index j = 0; j < n; ++j) lp.A(m, j) = T(1);
+  lp.A(m, n + d) = T(1);
+  lp.b = Vec<T>::Zero(m + 1);
+  lp.b(m) = T(1);
+  lp.c = Vec<T>::Zero(n + d + 1);
+  for (Index j = 0; j < d; ++j) lp.c(n + j) = -f(j);
+  lp.is_free.assign(static_cast<size_t>(n + d + 1), false);
+  for (Index j = 0; j < d; ++j) lp.is_free[static_cast<size_t>(n + j)] = true;
+  return solve(lp);
+}
+
+// Is P w = K z solvable with z >= 0 and z_i > 0 on the strict components? max t s.t. K z = P w,
+// z_i - t - u_i = 0 (i strict), t + v = 1, all >= 0; strictly feasible iff t* > 0.
+template <class T>
+bool strictly_feasible(const Mat<T>& K, const Mat<T>& P, const std::vector<bool>& strict, const Vec<T>& w) {
+  const Index m = K.rows(), n = K.cols();
+  std::vector<Index> I;
+  for (Index i = 0; i < n; ++i)
+    if (strict[static_cast<size_t>(i)]) I.push_back(i);
+  const Index s = static_cast<Index>(I.size());
+  const Index cols = n + 1 + s + 1;  // z, t, u, v
+  LpProblem<T> lp;
+  lp.A = Mat<T>::Zero(m + s + 1, cols);
+  lp.A.block(0, 0, m, n) = K;
+  lp.b = Vec<T>::Zero(m + s + 1);
+  lp.b.head(m) = P * w;
+  for (Index k = 0; k < s; ++k) {
+    lp.A(m + k, I[static_cast<size_t>(k)]) = T(1);
+    lp.A(m + k, n) = T(-1);
+    lp.A(m + k, n + 1 + k) = T(-1);
+  }
+  lp.A(m + s, n) = T(1);
+  lp.A(m + s, cols - 1) = T(1);
+  lp.b(m + s) = T(1);
+  lp.c = Vec<T>::Zero(cols);
+  lp.c(n) = T(-1);
+  const LpResult<T> r = solve(lp);
+  return r.status == LpStatus::kOptimal && sign(T(-r.value)) > 0;
+}
+
+template <class T>
+FaceCone<T> whole_space(Index d) {
+  return FaceCone<T>::from_rows(d, Mat<T>(0, d), Mat<T>(0, d), Mat<T>(0, d));
+}
+
+}  // namespace
+
+template <class T>
+FaceCone<T> project_by_polar(const ProjectionProblem<T>& problem, const DdBudget& budget) {
+  const Mat<T>& K = problem.K;
+  const Mat<T>& P = problem.P;
+  const Index d = P.cols();
+  const std::vector<bool> strict = problem.strict.empty() ? std::vector<bool>(static_cast<size_t>(K.cols()), false) : problem.strict;
+  if (K.rows() == 0) return nnc_form(whole_space<T>(d), budget).face;
+  // K^F: pos(K) = { y : K^F y <= 0, E_K y = 0 } (section 3).
+  const FaceCone<T> KF = to_face(SpanCone<T>::from_columns(K), budget);
+  // A facet of pos(K) is open iff it misses a column k_i with z_i > 0: the relative interiors of the
+  // faces of pos(K) that contain every such column make up { K z : z >= 0, z_i > 0 on strict }.
+  std::vector<Vec<T>> closed, open;
+  for (Index f = 0; f < KF.inequalities.rows(); ++f) {
+    bool is_open = false;
+    for (Index i = 0; i < K.cols() && !is_open; ++i)
+      is_open = strict[static_cast<size_t>(i)] && sign(T(KF.inequalities.row(f).dot(K.col(i)))) < 0;
+    const Vec<T> row = (KF.inequalities.row(f) * P).transpose();  // eq. (18): F = K^F P
+    (is_open ? open : closed).push_back(row);
+  }
+  const Mat<T> E = KF.equalities * P;
+  return nnc_form(FaceCone<T>::from_rows(d, stack_rows<T>(closed, d), E, stack_rows<T>(open, d)), budget).face;
+}
+
+template <class T>
+FaceCone<T> project_by_lp(const ProjectionProblem<T>& problem, const DdBudget& budget) {
+  const Mat<T>& K = problem.K;
+  const Mat<T>& P = problem.P;
+  const Index d = P.cols();
+  const std::vector<bool> strict = problem.strict.empty() ? std::vector<bool>(static_cast<size_t>(K.cols()), false) : problem.strict;
+  if (K.rows() == 0) return nnc_form(whole_space<T>(d), budget).face;
+  // Convex hull method: grow an inner cone pos(rays) + span(ker P) until every facet (and both sides
+  // of every equality) of it is confirmed valid by an LP; each LP confirms a row or finds a new ray.
+  const Mat<T> lines = exact::null_space<T>(P).transpose();
+  std::vector<Vec<T>> rays;
+  std::set<std::vector<T>> confirmed;
+  FaceCone<T> inner;
+  for (;;) {
+    inner = canonical(to_face(SpanCone<T>::from_rows(d, stack_rows<T>(rays, d), lines), budget));
+    std::vector<Vec<T>> candidates;
+    for (Index f = 0; f < inner.inequalities.rows(); ++f) candidates.push_back(inner.inequalities.row(f).transpose());
+    for (Index e = 0; e < inner.equalities.rows(); ++e) {
+      candidates.push_back(inner.equalities.row(e).transpose());
+      candidates.push_back(-inner.equalities.row(e).transpose());
+    }
+    bool grown = false;
+    for (const Vec<T>& f : candidates) {
+      const std::vector<T> key(f.data(), f.data() + d);
+      if (confirmed.count(key)) continue;
+      const LpResult<T> r = maximise_direction<T>(K, P, f);
+      // Feasible (z = 0, g = 0) and bounded (f is orthogonal to ker P, sum z <= 1).
+      if (r.status != LpStatus::kOptimal) throw std::logic_error("project_by_lp: direction LP not optimal");
+      if (sign(T(-r.value)) > 0) {
+        rays.push_back(r.x.segment(K.cols(), d));
+        grown = true;
+      } else {
+        confirmed.insert(key);
+      }
+    }
+    if (!grown) break;
+  }
+  if (!any_strict(strict)) return nnc_form(inner, budget).face;
+
+  // Open faces: test the relative interior of each face of the closed cone (largest first) by one
+  // strict-feasibility LP, skipping faces inside a face already known to be missing.
+  const SpanCone<T> span = canonical(to_span(inner, budget));
+  const Mat<T>& R = span.rays;
+  const Index nr = R.rows();
+  std::vector<std::vector<bool>> facet_sets;
+  for (Index f = 0; f < inner.inequalities.rows(); ++f) {
+    std::vector<bool> z(static_cast<size_t>(nr));
+    for (Index r = 0; r < nr; ++r) z[static_cast<size_t>(r)] = is_zero(T(inner.inequalities.row(f).dot(R.row(r))));
+    facet_sets.push_back(z);
+  }
+  std::set<std::vector<bool>> faces{std::vector<bool>(static_cast<size_t>(nr), true)};
+  for (const auto& fs : facet_sets) {
+    std::vector<std::vector<bool>> add;
+    for (const auto& g : faces) {
+      std::vector<bool> h(static_cast<size_t>(nr));
+      for (size_t r = 0; r < h.size(); ++r) h[r] = g[r] && fs[r];
+      add.push_back(h);
+    }
+    faces.insert(add.begin(), add.end());
+  }
+  std::vector<std::vector<bool>> order(faces.begin(), faces.end());
+  auto size = [](const std::vector<bool>& v) { return std::count(v.begin(), v.end(), true); };
+  std::stable_sort(order.begin(), order.end(), [&](const auto& a, const auto& b) { return size(a) > size(b); });
+  auto subset = [](const std::vector<bool>& a, const std::vector<bool>& b) {
+    for (size_t i = 0; i < a.size(); ++i)
+      if (a[i] && !b[i]) return false;
+    return true;
+  };
+  std::vector<std::vector<bool>> missing;  // maximal missing faces
+  for (const auto& g : order) {
+    bool below = false;
+    for (const auto& mset : missing) below = below || subset(g, mset);
+    if (below) continue;
+    Vec<T> w = Vec<T>::Zero(d);
+    for (Index r = 0; r < nr; ++r)
+      if (g[static_cast<size_t>(r)]) w += R.row(r).transpose();
+    if (!strictly_feasible<T>(K, P, strict, w)) missing.push_back(g);
+  }
+  // One strict row per maximal missing face: the sum of the normals of the facets through it.
+  std::vector<Vec<T>> strict_rows;
+  for (const auto& g : missing) {
+    Vec<T> s = Vec<T>::Zero(d);
+    for (size_t f = 0; f < facet_sets.size(); ++f)
+      if (subset(g, facet_sets[f])) s += inner.inequalities.row(static_cast<Index>(f)).transpose();
+    strict_rows.push_back(s);
+  }
+  return nnc_form(FaceCone<T>::from_rows(d, inner.inequalities, inner.equalities, stack_rows<T>(strict_rows, d)), budget)
+      .face;
+}
+
+template <class T>
+AffineFace<T> theorem1(const Mat<T>& K, const Mat<T>& P, const Vec<T>& k, const DdBudget& budget) {
+  // Theorem 1: K z = P g, z >= k  <=>  K^F P g <= K^F K k.
+  const FaceCone<T> KF = to_face(SpanCone<T>::from_columns(K), budget);
+  AffineFace<T> out;
+  out.A = KF.inequalities * P;
+  out.b = KF.inequalities * (K * k);
+  out.C = KF.equalities * P;
+  out.c = KF.equalities * (K * k);
+  return out;
+}
+
+#define CONTACTCERT_PROJECTION_INSTANTIATE(T)                                                  \
+  template FaceCone<T> project_by_polar<T>(const ProjectionProblem<T>&, const DdBudget&);       \
+  template FaceCone<T> project_by_lp<T>(const ProjectionProblem<T>&, const DdBudget&);          \
+  template AffineFace<T> theorem1<T>(const Mat<T>&, const Mat<T>&, const Vec<T>&, const DdBudget&);
+CONTACTCERT_PROJECTION_INSTANTIATE(double)
+CONTACTCERT_PROJECTION_INSTANTIATE(Q)
+#undef CONTACTCERT_PROJECTION_INSTANTIATE
+
+}  // namespace contactcert::geometry

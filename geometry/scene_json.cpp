@@ -1,0 +1,110 @@
+#include "geometry/scene_json.h"
+
+namespace contactcert::geometry {
+namespace {
+
+using exact::JsonInput;
+
+Point2 read_point(const JsonInput& node) {
+  const exact::Vec<Q> v = node.rational_vector(2);
+  return {v(0), v(1)};
+}
+
+Q read_positive(const JsonInput& node) {
+  Q x = node.rational();
+  if (sgn(x) <= 0) node.fail("a positive number");
+  return x;
+}
+
+Q read_nonnegative(const JsonInput& node) {
+  Q x = node.rational();
+  if (sgn(x) < 0) node.fail("a number >= 0");
+  return x;
+}
+
+Shape read_shape(const JsonInput& node) {
+  const std::string type = node.at("type").string();
+  if (type == "polygon") {
+    node.expect_keys({"type", "vertices"});
+    const JsonInput vs = node.at("vertices");
+    PolygonShape poly;
+    for (const JsonInput& v : vs.elements()) poly.vertices.push_back(read_point(v));
+    const PolygonCheck check = check_polygon(poly.vertices);
+    if (check.defect != PolygonDefect::kNone) vs.fail(check.message());
+    return poly;
+  }
+  if (type == "disk") {
+    node.expect_keys({"type", "center", "radius"});
+    return DiskShape{read_point(node.at("center")), read_positive(node.at("radius"))};
+  }
+  node.at("type").fail("\"polygon\" or \"disk\"");
+}
+
+Workpiece read_workpiece(const JsonInput& node) {
+  node.expect_keys({"shape", "com", "mass", "inertia"});
+  Workpiece w;
+  w.shape = read_shape(node.at("shape"));
+  const auto com = node.find("com");
+  w.com = com ? read_point(*com) : centroid(w.shape);
+  const auto mass = node.find("mass");
+  const auto inertia = node.find("inertia");
+  if (inertia) {
+    if (!mass) node.fail("a \"mass\" beside \"inertia\" (only I/m matters)");
+    w.inertia_per_mass = read_positive(*inertia) / read_positive(*mass);
+  } else {
+    if (mass) read_positive(*mass);
+    w.inertia_per_mass = inertia_per_mass(w.shape, w.com);
+  }
+  return w;
+}
+
+}  // namespace
+
+PlanarScene read_planar_scene(const JsonInput& root) {
+  root.expect_keys({"kind", "name", "description", "workpiece", "fixels", "mu_s", "mu_k"});
+  if (root.at("kind").string() != "planar") root.at("kind").fail("\"planar\" (a planar fixture scene)");
+  PlanarScene scene;
+  scene.workpiece = read_workpiece(root.at("workpiece"));
+  const auto mu_s = root.find("mu_s");
+  const auto mu_k = root.find("mu_k");
+  const std::optional<Q> global_s = mu_s ? std::optional<Q>(read_nonnegative(*mu_s)) : std::nullopt;
+  const std::optional<Q> global_k = mu_k ? std::optional<Q>(read_nonnegative(*mu_k)) : std::nullopt;
+  const JsonInput fixels = root.at("fixels");
+  for (const JsonInput& f : fixels.elements()) {
+    f.expect_keys({"name", "position", "point", "normal", "gap", "mu_s", "mu_k"});
+    Fixel fixel;
+    FrameResult frame;
+    if (const auto pos = f.find("position")) {
+      if (f.find("point") || f.find("normal") || f.find("gap"))
+        f.fail("either \"position\" or an explicit contact {point, normal, gap}, not both");
+      fixel.position = read_point(*pos);
+      frame = frame_from_position(scene.workpiece.shape, *fixel.position);
+      if (frame.status != FrameStatus::kOk) pos->fail(frame.message);
+    } else {
+      const Point2 point = read_point(f.at("point"));
+      const Point2 normal = read_point(f.at("normal"));
+      const auto gap_node = f.find("gap");
+      const Q gap = gap_node ? read_nonnegative(*gap_node) : Q(0);
+      frame = frame_from_contact(scene.workpiece.shape, point, normal, gap);
+      if (frame.status != FrameStatus::kOk) f.fail(frame.message);
+    }
+    fixel.frame = frame.frame;
+    const auto s = f.find("mu_s");
+    const auto k = f.find("mu_k");
+    if (s) {
+      fixel.mu_s = read_nonnegative(*s);
+    } else if (global_s) {
+      fixel.mu_s = *global_s;
+    } else {
+      f.fail("a friction coefficient \"mu_s\", here or at the top level");
+    }
+    fixel.mu_k = k ? read_nonnegative(*k) : (global_k ? *global_k : fixel.mu_s);
+    scene.fixels.push_back(fixel);
+  }
+  if (scene.fixels.empty()) fixels.fail("at least one fixel");
+  return scene;
+}
+
+PlanarScene load_planar_scene(const std::string& path) { return read_planar_scene(JsonInput::load(path)); }
+
+}  // namespace contactcert::geometry

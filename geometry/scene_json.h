@@ -1,0 +1,21 @@
+// Reading planar fixture scenes (SPEC section 3, "kind": "planar") exactly, with InputError naming
+// the file, the JSON path and what was expected.
+#pragma once
+
+#include <string>
+
+#include "exact/json_input.h"
+#include "geometry/planar_scene.h"
+
+namespace contactcert::geometry {
+
+/// Parses a planar scene from its JSON root. Throws exact::InputError on any invalid field: a
+/// degenerate or clockwise polygon, a non-positive radius, mass or inertia, a fixel inside the
+/// workpiece, a fixel whose closest point or normal is not unique, a disk fixel at irrational
+/// distance from the centre, negative friction, a negative gap, unknown keys.
+PlanarScene read_planar_scene(const exact::JsonInput& root);
+
+/// Loads and parses a planar scene file.
+PlanarScene load_planar_scene(const std::string& path);
+
+}  // namespace contactcert::geometry

@@ -1,0 +1,49 @@
+// The rigid-body model of the wrench cone paper from rest (eqs. 3-6, Table 2), written directly in the
+// workpiece acceleration vdot and the contact forces c, for one contact mode of the touching fixels:
+//     M vdot - J c = g                         (eq. 4: vdot = M^-1 (J c + g))
+//     a = J^T vdot with Table 2's signs         (s: a_n > 0; l: a_n = 0, a_t > 0; r: a_n = 0, a_t < 0; n: a = 0)
+//     c by Table 2                              (s: c = 0; l/r: c_t = -/+ mu_k c_n; n: |c_t| <= mu_s c_n)
+// Answering "is g consistent with this mode?" is one strict-feasibility LP on this system, with no cone
+// conversion (ARCHITECTURE principle 4); the cone of the mode is the projection of the same set on g.
+#pragma once
+
+#include <vector>
+
+#include "exact/strict_feasibility.h"
+#include "geometry/planar_scene.h"
+#include "solvers/wrench_cone/mode.h"
+
+namespace contactcert::solvers {
+
+using exact::Mat;
+using exact::Q;
+using exact::Vec;
+
+/// The linear system of one mode: columns vdot (3, free), then per fixel its forces and slacks; rows:
+/// kinematic rows first (they do not involve g), then friction rows, then the 3 dynamics rows.
+template <class T>
+struct MotionSystem {
+  exact::StrictSystem<T> system;  ///< b is zero except on the dynamics rows (set by with_wrench)
+  Eigen::Index kinematic_rows = 0;                    ///< rows [0, kinematic_rows) constrain vdot only
+  std::vector<Eigen::Index> c_n_column, c_t_column;   ///< per fixel: column of c_n / c_t (-1 if none)
+  std::vector<T> c_t_per_c_n;                         ///< per fixel: c_t = this * c_n when sliding (else 0)
+  /// The system for wrench g (the last 3 entries of b).
+  exact::StrictSystem<T> with_wrench(const Vec<T>& g) const;
+  /// The kinematic rows alone (with all columns): feasible iff the mode is kinematically feasible.
+  exact::StrictSystem<T> kinematic() const;
+  /// Contact forces (c_1n..c_kn, c_1t..c_kt) and vdot read off a point of the system.
+  Vec<T> forces(const Vec<T>& x) const;
+  Vec<T> acceleration(const Vec<T>& x) const { return x.head(3); }
+};
+
+/// The system of `mode` (letters s l r n, one per fixel; every fixel must touch) for the scene.
+/// With `zero_acceleration`, vdot is fixed to 0 and the kinematic rows are dropped: then the system
+/// says J c + g = 0 with every force in its static friction cone (the weakly stable test).
+template <class T>
+MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeString& mode,
+                              bool zero_acceleration = false);
+
+extern template MotionSystem<double> motion_system<double>(const geometry::PlanarScene&, const ModeString&, bool);
+extern template MotionSystem<Q> motion_system<Q>(const geometry::PlanarScene&, const ModeString&, bool);
+
+}  // namespace contactcert::solvers

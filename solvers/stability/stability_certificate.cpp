@@ -1,0 +1,78 @@
+#include "solvers/stability/stability_certificate.h"
+
+#include <nlohmann/json.hpp>
+
+#include "exact/rational_text.h"
+#include "geometry/scene_json.h"
+
+namespace contactcert::solvers {
+namespace {
+
+using json = nlohmann::ordered_json;
+using Index = Eigen::Index;
+
+json strings(const Vec<Q>& v) {
+  json a = json::array();
+  for (Index i = 0; i < v.size(); ++i) a.push_back(exact::to_string(v(i)));
+  return a;
+}
+
+ModeString read_mode(const exact::JsonInput& j, std::size_t k) {
+  const ModeParse p = parse_mode(j.string(), std::vector<bool>(k, true));
+  if (p.status != ModeStatus::kValid) j.fail(p.message);
+  return p.mode;
+}
+
+}  // namespace
+
+std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g, const StabilityResult<Q>& r) {
+  json j;
+  j["kind"] = "stability";
+  j["verdict"] = verdict_name(r.verdict);
+  j["wrench"] = strings(g);
+  j["scene"] = scene_text;
+  if (r.has_resting) j["resting"] = {{"forces", strings(r.resting_forces)}};
+  else j["resting"] = {{"motzkin", strings(r.resting_farkas)}};
+  if (r.has_moving)
+    j["moving"] = {{"mode", r.moving.mode.text()},
+                   {"forces", strings(r.moving.forces)},
+                   {"acceleration", strings(r.moving.acceleration)}};
+  json proofs = json::array();
+  for (const auto& p : r.proofs)
+    proofs.push_back({{"mode", p.mode.text()}, {"kinematic", p.kinematic}, {"motzkin", strings(p.motzkin)}});
+  j["proofs"] = proofs;
+  return j.dump(1) + "\n";
+}
+
+StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& c) {
+  c.expect_keys({"kind", "verdict", "wrench", "scene", "resting", "moving", "proofs"});
+  const geometry::PlanarScene scene =
+      geometry::read_planar_scene(exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)"));
+  const std::size_t k = touching_scene(scene).fixels.size();
+  StabilityResult<Q> claim;
+  const std::string verdict = c.at("verdict").string();
+  if (verdict == "strongly_stable") claim.verdict = StabilityVerdict::kStronglyStable;
+  else if (verdict == "weakly_stable") claim.verdict = StabilityVerdict::kWeaklyStable;
+  else if (verdict == "unstable") claim.verdict = StabilityVerdict::kUnstable;
+  else c.at("verdict").fail("expected strongly_stable, weakly_stable or unstable");
+  const Vec<Q> g = c.at("wrench").rational_vector(3);
+  const exact::JsonInput resting = c.at("resting");
+  if (auto f = resting.find("forces")) {
+    claim.has_resting = true;
+    claim.resting_forces = f->rational_vector(2 * k);
+  } else {
+    claim.resting_farkas = resting.at("motzkin").rational_vector();
+  }
+  if (auto m = c.find("moving")) {
+    claim.has_moving = true;
+    claim.moving = {read_mode(m->at("mode"), k), m->at("forces").rational_vector(2 * k),
+                    m->at("acceleration").rational_vector(3)};
+  }
+  if (auto ps = c.find("proofs"))
+    for (const auto& p : ps->elements())
+      claim.proofs.push_back({read_mode(p.at("mode"), k), p.at("kinematic").boolean(), p.at("motzkin").rational_vector()});
+  const std::string why = check_stability(scene, g, claim);
+  return {why.empty(), why.empty() ? std::string("every vector of the evidence verifies exactly: ") + verdict : why};
+}
+
+}  // namespace contactcert::solvers

@@ -1,0 +1,28 @@
+// The "stability" certificate of `contactcert stability --certificate FILE` and its independent checker.
+// One JSON object: "kind": "stability", "scene" (the scene file's text, embedded verbatim so the checker
+// re-reads the problem itself), "wrench" [fx, fy, tz], "verdict", and the evidence (exact strings):
+//   "resting": {"forces": [c_1n..c_kn, c_1t..c_kt]}  or  {"motzkin": [...]}   (J c + g = 0 in the cones, or not)
+//   "moving":  {"mode", "forces", "acceleration"}                               (a solution with vdot != 0)
+//   "proofs":  [{"mode", "kinematic", "motzkin": [...]}, ...]                  (strongly stable: one per mode)
+// The checker rebuilds every system from the scene (motion_system.h) and verifies each vector exactly.
+#pragma once
+
+#include <string>
+
+#include "exact/json_input.h"
+#include "solvers/stability/strong_stability.h"
+
+namespace contactcert::solvers {
+
+/// The certificate as JSON text.
+std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g, const StabilityResult<Q>& result);
+
+struct StabilityCertificateCheck {
+  bool valid = false;
+  std::string reason;
+};
+
+/// Verifies a "stability" certificate; malformed certificates throw InputError naming the field.
+StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& certificate);
+
+}  // namespace contactcert::solvers

@@ -1,0 +1,271 @@
+#include "solvers/ucp/certificate.h"
+
+#include <nlohmann/json.hpp>
+
+#include "exact/linalg.h"
+#include "exact/rational_text.h"
+
+namespace contactcert::solvers::ucp {
+
+namespace {
+using Index = Eigen::Index;
+using exact::InputError;
+using exact::JsonInput;
+using json = nlohmann::ordered_json;
+
+json integers(const std::vector<exact::Z>& v) {
+  json a = json::array();
+  for (const auto& z : v) a.push_back(z.get_str());
+  return a;
+}
+
+json rationals(const Vec<Q>& v) {
+  json a = json::array();
+  for (Index i = 0; i < v.size(); ++i) a.push_back(exact::to_string(v(i)));
+  return a;
+}
+
+json header(const std::string& kind, const UcpProblem& problem) {
+  json j;
+  j["kind"] = kind;
+  j["format"] = 1;
+  j["problem"] = json::parse(to_json_text(problem));
+  return j;
+}
+
+/// The data a checker needs, derived from the problem file by the checker itself (not by build_X / build_C).
+struct CheckData {
+  bool quasistatic = false;
+  Index n = 0;
+  // Generic form, or Y of a quasistatic problem: {z >= 0 : A z = b}.
+  Mat<Q> AX, AY;
+  Vec<Q> bX, bY;
+  // Quasistatic X: B x + h in the column space of P.
+  Mat<Q> P;
+  Vec<Q> h;
+};
+
+CheckData derive(const UcpProblem& u) {
+  CheckData c;
+  if (!u.quasistatic) {
+    c.n = u.ucp.n();
+    c.AX = u.ucp.X.A, c.bX = u.ucp.X.b, c.AY = u.ucp.Y.A, c.bY = u.ucp.Y.b;
+    return c;
+  }
+  const QuasistaticProblem& p = *u.quasistatic;
+  const Index nc = p.nc, nq = p.nq, na = static_cast<Index>(p.abar.size());
+  c.quasistatic = true;
+  c.n = 3 * nc;
+  c.P = p.P;
+  c.h = Vec<Q>::Zero(2 * nc);
+  for (int j : p.alpha)
+    for (Index i = 0; i < nc; ++i) {
+      c.h(i) += p.Jn(i, j) * p.theta_dot(j);
+      c.h(nc + i) += p.Jt(i, j) * p.theta_dot(j);
+    }
+  // Y = {(c_n, s+, s-) >= 0 : 2U c_n - s+ - s- = 0, (W_n - W_t U) c_n + W_t s+ = -g_obj,
+  //      ((J_n^T)_abar - (J_t^T)_abar U) c_n + (J_t^T)_abar s+ = (tau - g_man)_abar}.
+  c.AY = Mat<Q>::Zero(nc + nq + na, 3 * nc);
+  for (Index i = 0; i < nc; ++i) {
+    c.AY(i, i) = 2 * p.mu(i);
+    c.AY(i, nc + i) = -1;
+    c.AY(i, 2 * nc + i) = -1;
+    for (Index k = 0; k < nq; ++k) {
+      const Q wn = p.P(i, k), wt = p.P(nc + i, k);
+      c.AY(nc + k, i) = wn - wt * p.mu(i);
+      c.AY(nc + k, nc + i) = wt;
+    }
+    for (Index a = 0; a < na; ++a) {
+      const int j = p.abar[static_cast<std::size_t>(a)];
+      c.AY(nc + nq + a, i) = p.Jn(i, j) - p.Jt(i, j) * p.mu(i);
+      c.AY(nc + nq + a, nc + i) = p.Jt(i, j);
+    }
+  }
+  c.bY = -p.d;
+  return c;
+}
+
+/// Checks that `u` proves {z >= 0 : A z = b, z_j = 0 for zero[j]} empty; returns "" or why not.
+std::string check_farkas(const Mat<Q>& A, const Vec<Q>& b, const std::vector<bool>& zero, const Vec<Q>& u) {
+  if (u.size() != A.rows()) return "Farkas vector has " + std::to_string(u.size()) + " entries, expected " + std::to_string(A.rows());
+  const Vec<Q> g = A.transpose() * u;
+  for (Index j = 0; j < g.size(); ++j)
+    if (!zero[static_cast<std::size_t>(j)] && sgn(g(j)) < 0)
+      return "u^T A_" + std::to_string(j) + " < 0 on a column that is not fixed to zero";
+  const Q ub = u.dot(b);
+  if (sgn(ub) >= 0) return "u^T b >= 0";
+  return "";
+}
+
+/// Quasistatic X side: w^T P = 0, (w_n, w_t, -w_t) >= 0 on free columns, w^T h > 0.
+std::string check_velocity_farkas(const CheckData& c, const std::vector<bool>& zero, const Vec<Q>& w) {
+  const Index nc = c.n / 3;
+  if (w.size() != 2 * nc) return "Farkas vector has " + std::to_string(w.size()) + " entries, expected 2nc = " + std::to_string(2 * nc);
+  const Vec<Q> wP = c.P.transpose() * w;
+  for (Index k = 0; k < wP.size(); ++k)
+    if (sgn(wP(k)) != 0) return "w^T P is not zero in column " + std::to_string(k);
+  for (Index j = 0; j < c.n; ++j) {
+    if (zero[static_cast<std::size_t>(j)]) continue;
+    const Q g = j < 2 * nc ? w(j) : Q(-w(j - nc));
+    if (sgn(g) < 0) return "w^T B_" + std::to_string(j) + " < 0 on a column that is not fixed to zero";
+  }
+  if (sgn(Q(w.dot(c.h))) <= 0) return "w^T J_alpha theta_dot_alpha <= 0";
+  return "";
+}
+
+Vec<Q> read_vector(const JsonInput& in) { return in.rational_vector(); }
+
+CertificateCheck check_jammed(const JsonInput& cert, const CheckData& c) {
+  CertificateCheck out;
+  out.kind = "ucp_jammed";
+  const JsonInput nodes = cert.at("nodes");
+  const std::size_t count = nodes.size();
+  if (count == 0) {
+    out.reason = "the tree has no nodes";
+    return out;
+  }
+  std::vector<bool> seen(count, false);
+  struct Item {
+    std::size_t id;
+    std::vector<bool> zx, zy;
+  };
+  std::vector<Item> stack{{0, std::vector<bool>(static_cast<std::size_t>(c.n), false),
+                           std::vector<bool>(static_cast<std::size_t>(c.n), false)}};
+  while (!stack.empty()) {
+    Item it = std::move(stack.back());
+    stack.pop_back();
+    const std::string where = "node " + std::to_string(it.id) + ": ";
+    if (seen[it.id]) {
+      out.reason = where + "reached twice (the nodes must form a tree)";
+      return out;
+    }
+    seen[it.id] = true;
+    ++out.nodes;
+    const JsonInput node = nodes.at(it.id);
+    if (node.find("branch")) {
+      node.expect_keys({"branch", "x_zero", "y_zero"});
+      const auto i = static_cast<std::size_t>(node.at("branch").integer(0, static_cast<long>(c.n) - 1));
+      const long limit = static_cast<long>(count) - 1;
+      const auto a = static_cast<std::size_t>(node.at("x_zero").integer(0, limit));
+      const auto b = static_cast<std::size_t>(node.at("y_zero").integer(0, limit));
+      Item ca{a, it.zx, it.zy}, cb{b, it.zx, it.zy};
+      ca.zx[i] = true;  // x_i = 0
+      cb.zy[i] = true;  // y_i = 0
+      stack.push_back(std::move(ca));
+      stack.push_back(std::move(cb));
+      continue;
+    }
+    node.expect_keys({"empty", "farkas"});
+    ++out.leaves;
+    const std::string side = node.at("empty").string();
+    const Vec<Q> u = read_vector(node.at("farkas"));
+    std::string why;
+    if (side == "X")
+      why = c.quasistatic ? check_velocity_farkas(c, it.zx, u) : check_farkas(c.AX, c.bX, it.zx, u);
+    else if (side == "Y")
+      why = check_farkas(c.AY, c.bY, it.zy, u);
+    else
+      node.at("empty").fail("expected \"X\" or \"Y\"");
+    if (!why.empty()) {
+      out.reason = where + "the Farkas vector for " + side + " fails: " + why;
+      return out;
+    }
+  }
+  for (std::size_t k = 0; k < count; ++k)
+    if (!seen[k]) {
+      out.reason = "node " + std::to_string(k) + " is not reachable from the root";
+      return out;
+    }
+  out.verdict = CertificateVerdict::kValid;
+  out.reason = "every one of the " + std::to_string(out.leaves) +
+               " leaves proves its face of X or Y empty, and the branches cover every complementary pair";
+  return out;
+}
+
+CertificateCheck check_solvable(const JsonInput& cert, const CheckData& c) {
+  CertificateCheck out;
+  out.kind = "ucp_solvable";
+  const Vec<Q> x = cert.at("x").rational_vector(static_cast<std::size_t>(c.n));
+  const Vec<Q> y = cert.at("y").rational_vector(static_cast<std::size_t>(c.n));
+  for (Index j = 0; j < c.n; ++j)
+    if (sgn(x(j)) < 0 || sgn(y(j)) < 0) {
+      out.reason = "x or y has a negative entry at " + std::to_string(j);
+      return out;
+    }
+  if (sgn(Q(x.dot(y))) != 0) {
+    out.reason = "x^T y = " + exact::to_string(x.dot(y)) + " is not zero";
+    return out;
+  }
+  if (c.AY * y != c.bY) {
+    out.reason = "y is not in Y";
+    return out;
+  }
+  bool x_in = false;
+  if (c.quasistatic) {
+    const Index nc = c.n / 3;
+    Vec<Q> v(2 * nc);
+    v << x.head(nc), Vec<Q>(x.segment(nc, nc) - x.tail(nc));
+    x_in = exact::solve<Q>(c.P, Vec<Q>(v + c.h)).has_value();
+  } else {
+    x_in = c.AX * x == c.bX;
+  }
+  if (!x_in) {
+    out.reason = "x is not in X";
+    return out;
+  }
+  out.verdict = CertificateVerdict::kValid;
+  out.reason = "x in X, y in Y, both non-negative, and x^T y = 0 exactly";
+  return out;
+}
+
+}  // namespace
+
+std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>& result) {
+  json j = header("ucp_jammed", problem);
+  j["reason"] = result.reason;
+  Mat<Q> ZT;
+  if (problem.quasistatic) ZT = exact::left_null_space<Q>(problem.quasistatic->P).transpose();
+  json nodes = json::array();
+  for (const SearchNode<Q>& node : result.tree) {
+    json n;
+    if (!node.is_leaf()) {
+      n["branch"] = node.branch;
+      n["x_zero"] = node.child_x_zero;
+      n["y_zero"] = node.child_y_zero;
+    } else {
+      n["empty"] = node.side == Side::kX ? "X" : "Y";
+      // Quasistatic X: state the certificate as w = Z^T u, independent of the choice of Z.
+      const Vec<Q> u = problem.quasistatic && node.side == Side::kX ? Vec<Q>(ZT * node.farkas) : node.farkas;
+      n["farkas"] = integers(exact::primitive(u));
+    }
+    nodes.push_back(n);
+  }
+  j["nodes"] = nodes;
+  return j.dump() + "\n";
+}
+
+std::string solvable_certificate(const UcpProblem& problem, const Vec<Q>& x, const Vec<Q>& y) {
+  json j = header("ucp_solvable", problem);
+  j["x"] = rationals(x);
+  j["y"] = rationals(y);
+  return j.dump(1) + "\n";
+}
+
+bool is_ucp_certificate_kind(const std::string& kind) { return kind == "ucp_jammed" || kind == "ucp_solvable"; }
+
+CertificateCheck check_ucp_certificate(const JsonInput& cert) {
+  const std::string kind = cert.at("kind").string();
+  CertificateCheck out;
+  out.kind = kind;
+  try {
+    const CheckData c = derive(read_ucp_problem(cert.at("problem")));
+    if (kind == "ucp_jammed") return check_jammed(cert, c);
+    if (kind == "ucp_solvable") return check_solvable(cert, c);
+    cert.at("kind").fail("expected \"ucp_jammed\" or \"ucp_solvable\"");
+  } catch (const InputError& e) {
+    out.reason = std::string("malformed certificate: ") + e.what();
+  }
+  return out;
+}
+
+}  // namespace contactcert::solvers::ucp

@@ -1,0 +1,47 @@
+// Certificates of the UCP verdicts and their independent checker (`contactcert check`).
+//
+// A certificate is one JSON object with a top-level "kind" (other kinds, e.g. a stability certificate, can be
+// added beside these): "ucp_jammed" or "ucp_solvable". Both embed the problem (SPEC section 2 form, exact
+// strings) under "problem", so the file is self-contained.
+//
+// "ucp_jammed": "nodes" is a flat array (node 0 is the root, which fixes nothing). An internal node is
+// {"branch": i, "x_zero": a, "y_zero": b}: child a adds x_i = 0, child b adds y_i = 0; every complementary
+// pair satisfies one of the two, so the leaves cover all cases. A leaf is {"empty": "X" | "Y", "farkas":
+// [integers]} proving that the leaf's face of X or Y is empty:
+//   - generic UCP, or side Y: u over the rows of A (Y: of C) with u^T A_j >= 0 for every column j not fixed
+//     to 0 on that side and u^T b < 0 (Y: u^T d > 0, since C y = -d);
+//   - quasistatic side X: w in R^{2nc} with w^T P = 0 (so w = Z^T u for the Z of section 2), (w_n, w_t, -w_t)_j
+//     >= 0 for every free column j of (v_n, v_t^+, v_t^-), and w^T J_alpha theta_dot_alpha > 0.
+// "ucp_solvable": "x" and "y" (exact strings) with x in X, y in Y, x^T y = 0.
+#pragma once
+
+#include <string>
+
+#include "exact/json_input.h"
+#include "solvers/ucp/search.h"
+
+namespace contactcert::solvers::ucp {
+
+/// The "ucp_jammed" certificate of a jammed search result (T = Q) as JSON text.
+std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>& result);
+/// The "ucp_solvable" certificate of a complementary pair as JSON text.
+std::string solvable_certificate(const UcpProblem& problem, const Vec<Q>& x, const Vec<Q>& y);
+
+enum class CertificateVerdict { kValid, kInvalid };
+
+/// The checker's answer, with why.
+struct CertificateCheck {
+  CertificateVerdict verdict = CertificateVerdict::kInvalid;
+  std::string kind;
+  std::string reason;
+  long nodes = 0, leaves = 0;
+};
+
+/// True if `kind` names a UCP certificate.
+bool is_ucp_certificate_kind(const std::string& kind);
+
+/// Checks a UCP certificate without trusting the solver: re-derives X and Y from the embedded problem,
+/// recomputes every node's fixings from the tree, and checks every leaf's Farkas vector exactly.
+CertificateCheck check_ucp_certificate(const exact::JsonInput& certificate);
+
+}  // namespace contactcert::solvers::ucp

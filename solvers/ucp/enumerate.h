@@ -1,0 +1,29 @@
+// The enumerative baseline (the kind of algorithm the paper compares against, its reference [11]): every
+// assignment of a contact mode to every contact -- separate, roll, slide +, slide - -- tested by one LP.
+// It finds every solution mode for small nc.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "solvers/ucp/face_lp.h"
+#include "solvers/ucp/search.h"
+
+namespace contactcert::solvers::ucp {
+
+struct EnumerateResult {
+  UcpStatus status = UcpStatus::kUnknown;  ///< kUnknown if the LP budget was too small for all modes
+  long lps = 0;                            ///< modes tested (one LP each)
+  long solutions = 0;                      ///< modes with a complementary pair
+  std::vector<std::string> solution_modes; ///< per solution, one letter per contact: s r + -
+  Vec<Q> x, y;                             ///< the pair of the first solution mode
+};
+
+/// Tests all 4^nc contact-mode assignments of a quasistatic problem (per contact i: separate c_i = 0; roll
+/// v_i = 0; slide + v_n = v_t^- = s_t^+ = 0; slide - v_n = v_t^+ = s_t^- = 0), one LP over X x Y each. For a
+/// generic UCP it tests the 2^n choices of x_i = 0 or y_i = 0 (letters x y). Exact (or verified) LPs.
+/// Every complementary pair of a quasistatic problem lies in some mode: v_t^+ and v_t^- can be lowered by
+/// their minimum, keeping (x, y) in X and complementary.
+EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max_lps);
+
+}  // namespace contactcert::solvers::ucp

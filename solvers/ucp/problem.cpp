@@ -1,0 +1,244 @@
+#include "solvers/ucp/problem.h"
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+
+#include "exact/linalg.h"
+#include "exact/rational_text.h"
+
+namespace contactcert::solvers::ucp {
+
+using exact::InputError;
+using exact::JsonInput;
+
+namespace {
+
+using Index = Eigen::Index;
+
+Mat<Q> J_stacked(const QuasistaticProblem& p) {
+  Mat<Q> J(2 * p.nc, p.ntheta);
+  J << p.Jn, p.Jt;
+  return J;
+}
+
+QuasistaticProblem read_quasistatic(const JsonInput& in) {
+  in.expect_keys({"kind", "nc", "nq", "ntheta", "P", "Jn", "Jt", "theta_dot", "alpha", "d", "mu", "source", "note"});
+  QuasistaticProblem p;
+  p.nc = static_cast<int>(in.at("nc").integer(1, 100000));
+  p.nq = static_cast<int>(in.at("nq").integer(1, 100000));
+  p.ntheta = static_cast<int>(in.at("ntheta").integer(0, 100000));
+  const auto nc = static_cast<std::size_t>(p.nc), ntheta = static_cast<std::size_t>(p.ntheta);
+  // alpha: 0-based joints with given velocity; default all joints.
+  std::vector<bool> in_alpha(ntheta, false);
+  if (auto a = in.find("alpha")) {
+    for (const JsonInput& e : a->elements()) {
+      const long j = e.integer(0, static_cast<long>(p.ntheta) - 1);
+      if (in_alpha[static_cast<std::size_t>(j)]) e.fail("joint " + std::to_string(j) + " is listed twice in alpha");
+      in_alpha[static_cast<std::size_t>(j)] = true;
+    }
+  } else {
+    std::fill(in_alpha.begin(), in_alpha.end(), true);
+  }
+  for (int j = 0; j < p.ntheta; ++j) (in_alpha[static_cast<std::size_t>(j)] ? p.alpha : p.abar).push_back(j);
+  const std::size_t m = static_cast<std::size_t>(p.nq) + p.abar.size();
+  p.Jn = in.at("Jn").rational_matrix(nc, ntheta);
+  p.Jt = in.at("Jt").rational_matrix(nc, ntheta);
+  p.P = in.at("P").rational_matrix(2 * nc, m);
+  // theta_dot: entries outside alpha are ignored and may be null.
+  JsonInput td = in.at("theta_dot");
+  if (td.size() != ntheta)
+    td.fail("expected an array of " + std::to_string(ntheta) + " entries (ntheta), found " + std::to_string(td.size()));
+  p.theta_dot = Vec<Q>::Zero(p.ntheta);
+  for (int j : p.alpha) p.theta_dot(j) = td.at(static_cast<std::size_t>(j)).rational();
+  for (int j : p.abar)
+    if (!td.at(static_cast<std::size_t>(j)).is_null()) (void)td.at(static_cast<std::size_t>(j)).rational();
+  p.d = in.at("d").rational_vector(nc + m);
+  p.mu = in.at("mu").rational_vector(nc);
+  for (std::size_t i = 0; i < nc; ++i)
+    if (sgn(p.mu(static_cast<Index>(i))) < 0) in.at("mu").at(i).fail("expected a friction coefficient >= 0");
+  for (std::size_t i = 0; i < nc; ++i)
+    if (sgn(p.d(static_cast<Index>(i))) != 0)
+      in.at("d").at(i).fail("expected 0: the first nc entries of d are the zero block of the friction rows");
+  validate(p, in.file());
+  return p;
+}
+
+StandardPolyhedron<Q> read_polyhedron(const JsonInput& in, std::size_t n) {
+  in.expect_keys({"A", "b"});
+  StandardPolyhedron<Q> P;
+  JsonInput A = in.at("A");
+  P.A = A.rational_matrix(A.size(), n);
+  P.b = in.at("b").rational_vector(A.size());
+  return P;
+}
+
+nlohmann::json to_json(const Mat<Q>& A) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (Index i = 0; i < A.rows(); ++i) {
+    nlohmann::json r = nlohmann::json::array();
+    for (Index j = 0; j < A.cols(); ++j) r.push_back(exact::to_string(A(i, j)));
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+nlohmann::json to_json(const Vec<Q>& v) {
+  nlohmann::json r = nlohmann::json::array();
+  for (Index i = 0; i < v.size(); ++i) r.push_back(exact::to_string(v(i)));
+  return r;
+}
+
+}  // namespace
+
+Mat<Q> QuasistaticProblem::Wn() const { return P.block(0, 0, nc, nq).transpose(); }
+Mat<Q> QuasistaticProblem::Wt() const { return P.block(nc, 0, nc, nq).transpose(); }
+Vec<Q> QuasistaticProblem::g_obj() const { return d.segment(nc, nq); }
+
+Vec<Q> QuasistaticProblem::J_alpha_theta_alpha() const {
+  const Mat<Q> J = J_stacked(*this);
+  Vec<Q> h = Vec<Q>::Zero(2 * nc);
+  for (int j : alpha)
+    if (sgn(theta_dot(j)) != 0) h += J.col(j) * theta_dot(j);
+  return h;
+}
+
+void validate(const QuasistaticProblem& p, const std::string& file) {
+  auto fail = [&](const std::string& path, const std::string& what) { throw InputError(file, path, what); };
+  const Index m = p.nq + static_cast<Index>(p.abar.size());
+  if (p.P.rows() != 2 * p.nc || p.P.cols() != m)
+    fail(".P", "expected a 2nc x (nq + |abar|) matrix");
+  if (p.Jn.rows() != p.nc || p.Jn.cols() != p.ntheta) fail(".Jn", "expected an nc x ntheta matrix");
+  if (p.Jt.rows() != p.nc || p.Jt.cols() != p.ntheta) fail(".Jt", "expected an nc x ntheta matrix");
+  if (p.mu.size() != p.nc) fail(".mu", "expected nc entries");
+  if (p.d.size() != p.nc + m) fail(".d", "expected nc + nq + |abar| entries");
+  const Mat<Q> J = J_stacked(p);
+  for (std::size_t k = 0; k < p.abar.size(); ++k) {
+    const Index col = p.nq + static_cast<Index>(k);
+    if (p.P.col(col) != J.col(p.abar[k]))
+      fail(".P", "column " + std::to_string(col) + " (J_abar) must equal column " + std::to_string(p.abar[k]) +
+                     " of [Jn; Jt] (joint " + std::to_string(p.abar[k]) + " is not in alpha)");
+  }
+  for (Index i = 0; i < p.nc; ++i)
+    if (sgn(p.mu(i)) < 0) fail(".mu[" + std::to_string(i) + "]", "expected a friction coefficient >= 0");
+}
+
+UcpProblem read_ucp_problem(const JsonInput& in) {
+  UcpProblem out;
+  const std::string kind = in.at("kind").string();
+  if (kind == "quasistatic") {
+    out.quasistatic = read_quasistatic(in);
+    out.ucp = build_ucp(*out.quasistatic);
+  } else if (kind == "ucp") {
+    in.expect_keys({"kind", "n", "X", "Y", "source", "note"});
+    const auto n = static_cast<std::size_t>(in.at("n").integer(1, 100000));
+    out.ucp.X = read_polyhedron(in.at("X"), n);
+    out.ucp.Y = read_polyhedron(in.at("Y"), n);
+  } else {
+    in.at("kind").fail("expected \"quasistatic\" or \"ucp\", found \"" + kind + "\"");
+  }
+  if (auto s = in.find("source")) out.source = s->string();
+  return out;
+}
+
+UcpProblem load_ucp_problem(const std::string& path) { return read_ucp_problem(JsonInput::load(path)); }
+
+StandardPolyhedron<Q> build_X(const QuasistaticProblem& p) {
+  const Index nc = p.nc;
+  // B x = [v_n; v_t^+ - v_t^-] for x = (v_n, v_t^+, v_t^-).
+  Mat<Q> B = Mat<Q>::Zero(2 * nc, 3 * nc);
+  for (Index i = 0; i < nc; ++i) {
+    B(i, i) = 1;
+    B(nc + i, nc + i) = 1;
+    B(nc + i, 2 * nc + i) = -1;
+  }
+  // Section 2: Z a = 0 iff a = P b for some b, so Z spans the left null space of P.
+  const Mat<Q> Z = exact::left_null_space<Q>(p.P);
+  StandardPolyhedron<Q> X;
+  X.A = Z * B;
+  X.b = -(Z * p.J_alpha_theta_alpha());
+  return X;
+}
+
+Mat<Q> build_C(const QuasistaticProblem& p) {
+  const Index nc = p.nc, nq = p.nq, na = static_cast<Index>(p.abar.size());
+  const Mat<Q> Wn = p.Wn(), Wt = p.Wt();
+  Mat<Q> U = Mat<Q>::Zero(nc, nc);
+  for (Index i = 0; i < nc; ++i) U(i, i) = p.mu(i);
+  Mat<Q> JnT(na, nc), JtT(na, nc);  // (J_n^T)_abar, (J_t^T)_abar
+  for (Index k = 0; k < na; ++k) {
+    JnT.row(k) = p.Jn.col(p.abar[static_cast<std::size_t>(k)]).transpose();
+    JtT.row(k) = p.Jt.col(p.abar[static_cast<std::size_t>(k)]).transpose();
+  }
+  const Mat<Q> I = Mat<Q>::Identity(nc, nc);
+  Mat<Q> C = Mat<Q>::Zero(nc + nq + na, 3 * nc);
+  C.block(0, 0, nc, nc) = 2 * U;
+  C.block(0, nc, nc, nc) = -I;
+  C.block(0, 2 * nc, nc, nc) = -I;
+  C.block(nc, 0, nq, nc) = Wn - Wt * U;
+  C.block(nc, nc, nq, nc) = Wt;
+  if (na > 0) {
+    C.block(nc + nq, 0, na, nc) = JnT - JtT * U;
+    C.block(nc + nq, nc, na, nc) = JtT;
+  }
+  return C;
+}
+
+StandardPolyhedron<Q> build_Y(const QuasistaticProblem& p) {
+  StandardPolyhedron<Q> Y;
+  Y.A = build_C(p);
+  Y.b = -p.d;  // 0 = C y + d
+  return Y;
+}
+
+UcpInstance<Q> build_ucp(const QuasistaticProblem& p) { return {build_X(p), build_Y(p)}; }
+
+std::string to_json_text(const UcpProblem& u) {
+  nlohmann::ordered_json j;
+  if (u.quasistatic) {
+    const QuasistaticProblem& p = *u.quasistatic;
+    j["kind"] = "quasistatic";
+    j["nc"] = p.nc;
+    j["nq"] = p.nq;
+    j["ntheta"] = p.ntheta;
+    j["P"] = to_json(p.P);
+    j["Jn"] = to_json(p.Jn);
+    j["Jt"] = to_json(p.Jt);
+    nlohmann::json td = nlohmann::json::array();
+    std::vector<bool> in_alpha(static_cast<std::size_t>(p.ntheta), false);
+    for (int a : p.alpha) in_alpha[static_cast<std::size_t>(a)] = true;
+    for (int k = 0; k < p.ntheta; ++k)
+      td.push_back(in_alpha[static_cast<std::size_t>(k)] ? nlohmann::json(exact::to_string(p.theta_dot(k)))
+                                                         : nlohmann::json(nullptr));
+    j["theta_dot"] = td;
+    j["alpha"] = p.alpha;
+    j["d"] = to_json(p.d);
+    j["mu"] = to_json(p.mu);
+  } else {
+    j["kind"] = "ucp";
+    j["n"] = u.ucp.n();
+    j["X"] = {{"A", to_json(u.ucp.X.A)}, {"b", to_json(u.ucp.X.b)}};
+    j["Y"] = {{"A", to_json(u.ucp.Y.A)}, {"b", to_json(u.ucp.Y.b)}};
+  }
+  if (!u.source.empty()) j["source"] = u.source;
+  return j.dump(1) + "\n";
+}
+
+template <class T>
+UcpInstance<T> convert(const UcpInstance<Q>& u) {
+  auto conv = [](const StandardPolyhedron<Q>& P) {
+    StandardPolyhedron<T> R;
+    if constexpr (std::is_same_v<T, Q>) {
+      R = P;
+    } else {
+      R.A = exact::to_double(P.A);
+      R.b = exact::to_double(P.b);
+    }
+    return R;
+  };
+  return {conv(u.X), conv(u.Y)};
+}
+template UcpInstance<double> convert<double>(const UcpInstance<Q>&);
+template UcpInstance<Q> convert<Q>(const UcpInstance<Q>&);
+
+}  // namespace contactcert::solvers::ucp

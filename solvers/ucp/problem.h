@@ -1,0 +1,86 @@
+// The quasistatic multi-rigid-body contact problem of Pang, Trinkle, Lo (1994) as input data (SPEC
+// section 2), and its uncoupled complementarity problem (UCP): find (x, y) in X x Y with x^T y = 0.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exact/json_input.h"
+#include "exact/number.h"
+
+namespace contactcert::solvers::ucp {
+
+using exact::Mat;
+using exact::Q;
+using exact::Vec;
+
+/// A polyhedron in standard form {x >= 0 : A x = b}, the form the LP layer solves over.
+template <class T>
+struct StandardPolyhedron {
+  Mat<T> A;
+  Vec<T> b;
+};
+
+/// An uncoupled complementarity problem (section 3): polyhedra X and Y in R^n_+.
+template <class T>
+struct UcpInstance {
+  StandardPolyhedron<T> X, Y;
+  Eigen::Index n() const { return X.A.cols(); }
+};
+
+/// The quasistatic contact problem (section 2), exactly as read from a `"kind": "quasistatic"` file.
+struct QuasistaticProblem {
+  int nc = 0, nq = 0, ntheta = 0;
+  Mat<Q> P;              ///< 2nc x (nq + |abar|): [W^T  J_abar]
+  Mat<Q> Jn, Jt;         ///< nc x ntheta
+  Vec<Q> theta_dot;      ///< ntheta; entries of joints in abar are 0 (unknown)
+  std::vector<int> alpha;  ///< joints with given velocity, ascending
+  std::vector<int> abar;   ///< joints with given effort, ascending (the columns of J_abar in P)
+  Vec<Q> d;              ///< [0 (nc); g_obj (nq); (g_man - tau)_abar]
+  Vec<Q> mu;             ///< nc friction coefficients, >= 0
+
+  Mat<Q> Wn() const;  ///< nq x nc normal wrench matrix (from P's first nq columns)
+  Mat<Q> Wt() const;  ///< nq x nc tangential wrench matrix
+  Vec<Q> g_obj() const;
+  /// J_alpha theta_dot_alpha (2nc): the velocity the position-controlled joints impose at the contacts.
+  Vec<Q> J_alpha_theta_alpha() const;
+};
+
+/// A UCP problem file: either a quasistatic problem (with its X and Y built as in section 2) or a
+/// generic UCP (`"kind": "ucp"`, e.g. from the Proposition 2 reduction).
+struct UcpProblem {
+  std::optional<QuasistaticProblem> quasistatic;
+  UcpInstance<Q> ucp;
+  std::string source;  ///< free text carried by generated files ("reduction: ...")
+};
+
+/// Reads and validates a problem (SPEC section 2, or the generic `"kind": "ucp"` form); throws
+/// exact::InputError naming the field.
+UcpProblem read_ucp_problem(const exact::JsonInput& in);
+/// Loads a problem file.
+UcpProblem load_ucp_problem(const std::string& path);
+
+/// Validates a quasistatic problem built in memory (generators); throws exact::InputError.
+void validate(const QuasistaticProblem& p, const std::string& file = "");
+
+/// X = {(v_n, v_t^+, v_t^-) >= 0 : Z_n v_n + Z_t (v_t^+ - v_t^-) + Z J_alpha theta_dot_alpha = 0} with
+/// Z spanning the left null space of P, computed exactly (section 2).
+StandardPolyhedron<Q> build_X(const QuasistaticProblem& p);
+/// Y = {(c_n, s_t^+, s_t^-) >= 0 : C y + d = 0} (section 2).
+StandardPolyhedron<Q> build_Y(const QuasistaticProblem& p);
+/// The matrix C of section 2.
+Mat<Q> build_C(const QuasistaticProblem& p);
+/// Both polyhedra.
+UcpInstance<Q> build_ucp(const QuasistaticProblem& p);
+
+/// The problem as a JSON text in SPEC section 2 form (exact numbers as strings in lowest terms).
+std::string to_json_text(const UcpProblem& p);
+
+/// Converts an exact instance to another number type (double for the float path).
+template <class T>
+UcpInstance<T> convert(const UcpInstance<Q>& u);
+extern template UcpInstance<double> convert<double>(const UcpInstance<Q>&);
+extern template UcpInstance<Q> convert<Q>(const UcpInstance<Q>&);
+
+}  // namespace contactcert::solvers::ucp

@@ -1,0 +1,168 @@
+#include "solvers/ucp/search.h"
+
+#include <optional>
+
+namespace contactcert::solvers::ucp {
+
+namespace {
+using Index = Eigen::Index;
+
+/// A Farkas vector learned at a dead node, with the columns where farkas^T A_j < 0: it proves every face
+/// that fixes all of those columns to zero empty (the node's own fixings contain them).
+template <class T>
+struct Learned {
+  std::vector<Index> negative;
+  Vec<T> farkas;
+};
+
+struct NodeBudgetExhausted {};
+
+template <class T>
+class Search {
+ public:
+  Search(const UcpInstance<T>& ucp, const SearchOptions& opts, SearchResult<T>& out)
+      : ucp_(ucp), opts_(opts), out_(out), n_(ucp.n()) {}
+
+  /// Explores the node with fixings (zx, zy); x (y) is a vertex of the X (Y) face if that face is unchanged
+  /// from the parent. Returns true when a complementary pair was found.
+  bool visit(long id, std::vector<bool>& zx, std::vector<bool>& zy, std::optional<FaceVertex<T>> x,
+             std::optional<FaceVertex<T>> y) {
+    const Face<T> FX = make_face(ucp_.X, zx), FY = make_face(ucp_.Y, zy);
+    if (!x && !(x = settle(id, Side::kX, FX, zx, y ? y->x : Vec<T>(Vec<T>::Zero(n_))))) return false;
+    if (!y && !(y = settle(id, Side::kY, FY, zy, x->x))) return false;
+    alternate_lps(FX, FY, *x, *y, opts_.heuristic.arith, opts_.node_rounds, out_.counters);
+    Index branch = -1;
+    T best = T(0), xTy = T(0);
+    for (Index i = 0; i < n_; ++i) {
+      if (exact::is_zero(x->x(i)) || exact::is_zero(y->x(i))) continue;
+      const T p = x->x(i) * y->x(i);
+      xTy += p;
+      if (branch < 0 || exact::sign(T(p - best)) > 0) branch = i, best = p;
+    }
+    if (!have_best || exact::sign(T(xTy - out_.xTy)) < 0) out_.xTy = xTy, have_best = true;
+    if (branch < 0) {  // x^T y = 0 exactly
+      out_.x = x->x, out_.y = y->x, out_.xTy = T(0);
+      return true;
+    }
+    const long cx = new_node(), cy = new_node();
+    out_.tree[static_cast<std::size_t>(id)].branch = branch;
+    out_.tree[static_cast<std::size_t>(id)].child_x_zero = cx;
+    out_.tree[static_cast<std::size_t>(id)].child_y_zero = cy;
+    const auto b = static_cast<std::size_t>(branch);
+    zx[b] = true;
+    const bool found = visit(cx, zx, zy, std::nullopt, y);
+    zx[b] = false;
+    if (found) return true;
+    zy[b] = true;
+    const bool found_y = visit(cy, zx, zy, x, std::nullopt);
+    zy[b] = false;
+    return found_y;
+  }
+
+  bool have_best = false;  ///< out.xTy holds a pair's value
+
+  long new_node() {
+    if (static_cast<long>(out_.tree.size()) >= opts_.max_nodes) throw NodeBudgetExhausted{};
+    out_.tree.emplace_back();
+    return static_cast<long>(out_.tree.size()) - 1;
+  }
+
+ private:
+  /// Makes node `id` a dead leaf for `side` if an earlier Farkas vector or the face LP proves the face
+  /// empty; otherwise returns an optimal vertex of min c^T x over the face.
+  std::optional<FaceVertex<T>> settle(long id, Side side, const Face<T>& F, const std::vector<bool>& zero,
+                                      const Vec<T>& c) {
+    auto& learned = learned_[side == Side::kX ? 0 : 1];
+    SearchNode<T>& node = out_.tree[static_cast<std::size_t>(id)];
+    for (const Learned<T>& l : learned) {
+      bool covers = true;
+      for (Index j : l.negative) covers = covers && zero[static_cast<std::size_t>(j)];
+      if (covers) {
+        node.side = side;
+        node.farkas = l.farkas;
+        ++out_.learned_prunes;
+        return std::nullopt;
+      }
+    }
+    FaceLpResult<T> r = minimize_on_face(F, c, opts_.heuristic.arith, out_.counters);
+    if (r.status == FaceLpStatus::kOptimal) return r.vertex;
+    const StandardPolyhedron<T>& P = side == Side::kX ? ucp_.X : ucp_.Y;
+    Learned<T> l;
+    l.farkas = r.farkas;
+    const Vec<T> g = P.A.transpose() * r.farkas;
+    for (Index j = 0; j < n_; ++j)
+      if (exact::is_negative(g(j))) l.negative.push_back(j);
+    out_.tree[static_cast<std::size_t>(id)].side = side;
+    out_.tree[static_cast<std::size_t>(id)].farkas = r.farkas;
+    learned.push_back(std::move(l));
+    return std::nullopt;
+  }
+
+  const UcpInstance<T>& ucp_;
+  const SearchOptions& opts_;
+  SearchResult<T>& out_;
+  Index n_;
+  std::vector<Learned<T>> learned_[2];
+};
+
+}  // namespace
+
+template <class T>
+SearchResult<T> complete_search(const UcpInstance<T>& ucp, const SearchOptions& opts, std::mt19937_64& rng) {
+  SearchResult<T> out;
+  const Face<T> FX = make_face(ucp.X, {}), FY = make_face(ucp.Y, {});
+  std::optional<FaceVertex<T>> x0, y0;
+  Search<T> search(ucp, opts, out);
+  out.tree.clear();
+  search.new_node();
+  if (opts.bilinear_first) {
+    BilinearResult<T> b = bilinear(FX, FY, opts.heuristic, rng);
+    out.counters = b.counters;
+    out.pairs = b.pairs;
+    if (b.status == BilinearStatus::kXEmpty || b.status == BilinearStatus::kYEmpty) {
+      out.status = UcpStatus::kJammed;
+      out.reason = b.status == BilinearStatus::kXEmpty ? "X is empty" : "Y is empty";
+      out.tree[0].side = b.status == BilinearStatus::kXEmpty ? Side::kX : Side::kY;
+      out.tree[0].farkas = b.farkas;
+      out.nodes = 1;
+      return out;
+    }
+    out.xTy = b.xTy;
+    if (b.status == BilinearStatus::kComplementary) {
+      out.status = UcpStatus::kSolvable;
+      out.reason = "bilinear algorithm";
+      out.x = b.x.x, out.y = b.y.x;
+      out.nodes = 1;
+      out.tree.clear();
+      return out;
+    }
+    x0 = b.x, y0 = b.y;
+    search.have_best = true;
+  }
+  std::vector<bool> zx(static_cast<std::size_t>(ucp.n()), false), zy = zx;
+  try {
+    const bool found = search.visit(0, zx, zy, x0, y0);
+    out.nodes = static_cast<long>(out.tree.size());
+    if (found) {
+      out.status = UcpStatus::kSolvable;
+      out.reason = "complete search";
+      out.tree.clear();
+    } else {
+      out.status = UcpStatus::kJammed;
+      out.reason = out.tree.size() == 1 ? (out.tree[0].side == Side::kX ? "X is empty" : "Y is empty")
+                                        : "search tree";
+    }
+  } catch (const NodeBudgetExhausted&) {
+    out.nodes = static_cast<long>(out.tree.size());
+    out.status = UcpStatus::kUnknown;
+    out.reason = "node budget of " + std::to_string(opts.max_nodes) + " exhausted";
+    out.tree.clear();
+  }
+  return out;
+}
+
+template SearchResult<double> complete_search<double>(const UcpInstance<double>&, const SearchOptions&,
+                                                      std::mt19937_64&);
+template SearchResult<Q> complete_search<Q>(const UcpInstance<Q>&, const SearchOptions&, std::mt19937_64&);
+
+}  // namespace contactcert::solvers::ucp

@@ -1,0 +1,59 @@
+// One entry point for `contactcert ucp` and the benchmarks: runs a chosen method on a problem and
+// gathers the verdict with its evidence (pair, recovered physics and conditions (2)-(10), counts, proof).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solvers/ucp/recovery.h"
+#include "solvers/ucp/search.h"
+
+namespace contactcert::solvers::ucp {
+
+/// paper / modified: the bilinear algorithm of section 4 with the paper's or the modified Step 3 (it can
+/// prove "jammed" only when X or Y is empty); complete: bilinear first, then the exact search (SPEC default);
+/// enumerate: the contact-mode baseline.
+enum class Method { kPaper, kModified, kComplete, kEnumerate };
+
+/// "paper" | "modified" | "complete" | "enumerate" (throws std::invalid_argument otherwise).
+Method parse_method(const std::string& name);
+const char* method_name(Method m);
+const char* status_name(UcpStatus s);
+
+struct UcpOptions {
+  Method method = Method::kComplete;
+  Arith arith = Arith::kVerified;
+  std::uint64_t seed = 1;
+  long max_nodes = 200000;            ///< complete search node budget
+  long max_enumerate_lps = 1L << 22;  ///< enumerate: refuse (unknown) above this many modes
+  int max_random_moves = 20;          ///< bilinear: Step 3 random moves before giving up
+  long max_bases = 100000;            ///< bilinear Step 3: bases explored per degenerate vertex
+};
+
+/// The verdict with its evidence. On the exact and verified paths every number is exact; on the float
+/// path only the `_approx` members are filled and nothing is proven.
+struct UcpReport {
+  UcpStatus status = UcpStatus::kUnknown;
+  std::string reason;
+  Method method = Method::kComplete;
+  Arith arith = Arith::kVerified;
+  std::optional<Vec<Q>> x, y;                 ///< the complementary pair (exact paths, kSolvable)
+  std::optional<Q> best_xTy;                  ///< smallest x^T y seen (exact paths)
+  Vec<double> x_approx, y_approx;             ///< float path
+  double best_xTy_approx = 0;
+  std::optional<PhysicalSolution> physical;   ///< quasistatic problems, kSolvable
+  std::optional<ConditionsCheck> conditions;  ///< (2)-(10) checked exactly on `physical`
+  long pairs = 0, lps = 0, nodes = 0, learned_prunes = 0;
+  long incomplete_adjacencies = 0;            ///< Step 3 enumerations cut short by max_bases
+  long solutions = -1;                        ///< enumerate: solution modes (-1 = not counted)
+  std::vector<std::string> solution_modes;
+  std::optional<SearchResult<Q>> proof;       ///< kJammed on an exact path: the tree for the certificate
+  double seconds = 0;
+};
+
+/// Runs the method; never throws for budgets (status kUnknown says so).
+UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts);
+
+}  // namespace contactcert::solvers::ucp

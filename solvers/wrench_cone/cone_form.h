@@ -1,0 +1,50 @@
+// Section 5 of the wrench cone paper: from eq. (7), C y = B g, and the constraints of a mode
+// (Table 2) to K z = P g, z >= 0 (eqs. 13-17), through the matrices E, N, R, S, V.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/planar_scene.h"
+#include "solvers/wrench_cone/contact_model.h"
+#include "solvers/wrench_cone/mode.h"
+
+namespace contactcert::solvers {
+
+/// The paper's five matrices for one mode (sections 5.1-5.5), literally.
+template <class T>
+struct ModeMatrices {
+  Mat<T> E;  ///< row selection: drops the equations of unconstrained accelerations (5.1)
+  Mat<T> N;  ///< 4n x 4n diagonal sign change of negative variables (5.2)
+  Mat<T> R;  ///< 4n x 4n rolling friction substitution (5.3)
+  Mat<T> S;  ///< 4n x 4n sliding friction substitution (5.4), signs of Table 2 (friction opposes sliding)
+  Mat<T> V;  ///< column selection: drops zero, sliding c_t and unconstrained variables (5.5)
+};
+
+/// K z = P g, z >= 0 with z_i > 0 where strict (eqs. 13-17).
+template <class T>
+struct ConeForm {
+  Mat<T> K;                        ///< K = E C N R S V (eq. 15)
+  Mat<T> P;                        ///< P = E B (eq. 17)
+  std::vector<bool> strict;        ///< per z: the strict rows of Table 2 (a, l, r, and s when touching)
+  std::vector<bool> acceleration;  ///< per z: an acceleration (true) or a contact force (false)
+  std::vector<std::string> names;  ///< per z, e.g. "-a2n", "c1n-", "c1n+" (1-based fixel numbers)
+};
+
+/// E, N, R, S, V of sections 5.1-5.5 for a valid mode of the scene (validate with parse_mode first).
+template <class T>
+ModeMatrices<T> mode_matrices(const geometry::PlanarScene& scene, const ModeString& mode);
+
+/// K and P of eqs. (15) and (17), computed by the column operations that E C N R S V and E B stand
+/// for (equal to the literal products, without the 4n x 4n products).
+template <class T>
+ConeForm<T> cone_form(const geometry::PlanarScene& scene, const ContactModel<T>& model, const ModeString& mode);
+
+#define CONTACTCERT_CONE_FORM_EXTERN(T)                                                                \
+  extern template ModeMatrices<T> mode_matrices<T>(const geometry::PlanarScene&, const ModeString&);   \
+  extern template ConeForm<T> cone_form<T>(const geometry::PlanarScene&, const ContactModel<T>&, const ModeString&);
+CONTACTCERT_CONE_FORM_EXTERN(double)
+CONTACTCERT_CONE_FORM_EXTERN(Q)
+#undef CONTACTCERT_CONE_FORM_EXTERN
+
+}  // namespace contactcert::solvers

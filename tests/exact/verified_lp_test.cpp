@@ -1,0 +1,146 @@
+#include "exact/verified_lp.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "exact/rounded_certificate.h"
+#include "exact/simplex.h"
+#include "tests/exact/random_lp.h"
+#include "tests/reference/cdd_lp.h"
+
+namespace contactcert::exact {
+namespace {
+
+void expect_same(const LpProblem<Q>& p, const LpResult<Q>& v, const LpResult<Q>& e, int t) {
+  ASSERT_EQ(v.status, e.status) << "case " << t;
+  switch (v.status) {
+    case LpStatus::kOptimal:
+      ASSERT_EQ(v.value, e.value) << "case " << t;
+      ASSERT_TRUE(verify_optimal(p, v.x, v.duals)) << "case " << t;
+      break;
+    case LpStatus::kInfeasible:
+      ASSERT_TRUE(verify_farkas(p, v.farkas)) << "case " << t;
+      break;
+    case LpStatus::kUnbounded:
+      ASSERT_TRUE(verify_ray(p, v.ray)) << "case " << t;
+      ASSERT_EQ(p.A * v.x, p.b) << "case " << t;
+      break;
+  }
+}
+
+// The verified path equals the exact simplex (status, value, valid certificates) on the random LPs of
+// simplex_test, and the float basis usually checks out without exact pivots.
+TEST(VerifiedLp, EqualsExactOnRandomLps) {
+  std::mt19937_64 rng(20261123);
+  int checked = 0;
+  for (int t = 0; t < 1500; ++t) {
+    const LpProblem<Q> p = testing::random_lp(rng);
+    const LpResult<Q> e = solve_lp<Q>(p);
+    const LpResult<Q> v = solve_lp_verified(p);
+    expect_same(p, v, e, t);
+    if (v.decided_by == DecidedBy::kFloatBasisCheckedExactly) {
+      ++checked;
+      EXPECT_EQ(v.pivots, 0);
+    }
+  }
+  EXPECT_GT(checked, 1200);
+}
+
+// min x1 + (1 - 10^-20) x2 s.t. x1 + x2 = 1: the costs are equal in double (and too big to scale to 64-bit
+// integers), so the float simplex stops at x1 = 1; the exact check rejects that basis and the exact simplex
+// moves to x2 = 1.
+TEST(VerifiedLp, FloatPicksTheWrongBasisAndExactContinues) {
+  LpProblem<Q> p;
+  p.A = Mat<Q>(1, 2);
+  p.A << 1, 1;
+  p.b = Vec<Q>(1);
+  p.b << 1;
+  p.c = Vec<Q>(2);
+  const Q eps = Q(1) / Q(mpz_class("100000000000000000000"));
+  p.c << 1, Q(1 - eps);
+  const LpResult<double> f = solve_lp<double>(to_double(p));
+  ASSERT_EQ(f.status, LpStatus::kOptimal);
+  EXPECT_EQ(f.x(0), 1.0);  // the float answer is wrong
+  const LpResult<Q> v = solve_lp_verified(p);
+  ASSERT_EQ(v.status, LpStatus::kOptimal);
+  EXPECT_EQ(v.value, Q(1 - eps));
+  EXPECT_EQ(v.x(1), 1);
+  EXPECT_EQ(v.decided_by, DecidedBy::kExactContinuedFromFloatBasis);
+  EXPECT_TRUE(verify_optimal(p, v.x, v.duals));
+}
+
+// x1 + x2 = 1 and x1 + x2 = 1 + 10^-20: equal in double, inconsistent in Q.
+TEST(VerifiedLp, FloatMissesInfeasibility) {
+  LpProblem<Q> p;
+  p.A = Mat<Q>(2, 2);
+  p.A << 1, 1, 1, 1;
+  p.b = Vec<Q>(2);
+  p.b << 1, Q(1 + Q(1) / Q(mpz_class("100000000000000000000")));
+  p.c = Vec<Q>::Zero(2);
+  EXPECT_EQ(solve_lp<double>(to_double(p)).status, LpStatus::kOptimal);
+  const LpResult<Q> v = solve_lp_verified(p);
+  ASSERT_EQ(v.status, LpStatus::kInfeasible);
+  EXPECT_TRUE(verify_farkas(p, v.farkas));
+  EXPECT_EQ(v.decided_by, DecidedBy::kExact);
+}
+
+// Ill-conditioned random LPs: entries k + j * 10^-13 (distinct in Q, nearly equal in double). Verified equals
+// exact on every one, and cddlib agrees; some need exact pivots after the float basis.
+TEST(VerifiedLp, IllConditionedLpsEqualExact) {
+  std::mt19937_64 rng(99);
+  std::uniform_int_distribution<int> small(-3, 3), pct(0, 99);
+  const Q eps = Q(1) / Q(mpz_class("10000000000000"));
+  int not_checked = 0;
+  for (int t = 0; t < 300; ++t) {
+    LpProblem<Q> p = testing::random_lp(rng);
+    for (Eigen::Index i = 0; i < p.A.rows(); ++i)
+      for (Eigen::Index j = 0; j < p.A.cols(); ++j)
+        if (pct(rng) < 40) p.A(i, j) += eps * small(rng);
+    for (Eigen::Index j = 0; j < p.c.size(); ++j)
+      if (pct(rng) < 50) p.c(j) += eps * small(rng);
+    for (Eigen::Index i = 0; i < p.b.size(); ++i)
+      if (pct(rng) < 30) p.b(i) += eps * small(rng);
+    const LpResult<Q> e = solve_lp<Q>(p);
+    const LpResult<Q> v = solve_lp_verified(p);
+    expect_same(p, v, e, t);
+    const reference::CddLpResult ref = reference::cdd_solve_lp(p);
+    ASSERT_EQ(v.status, ref.status) << "case " << t;
+    if (v.status == LpStatus::kOptimal) {
+      ASSERT_EQ(v.value, ref.value) << "case " << t;
+    }
+    if (v.decided_by != DecidedBy::kFloatBasisCheckedExactly) ++not_checked;
+  }
+  EXPECT_GT(not_checked, 5);
+}
+
+// The rounded certificate accepts the float optimum of a rational LP (rows scaled to integers) and rejects it
+// once the float solution is perturbed or the basis is wrong.
+TEST(VerifiedLp, RoundedCertificateAcceptsOnlyAnExactOptimum) {
+  LpProblem<Q> p;
+  p.A = Mat<Q>(2, 4);
+  p.A << Q(1, 2), 1, 1, 0, 3, Q(1, 3), 0, 1;
+  p.b = Vec<Q>(2);
+  p.b << 2, Q(7, 3);
+  p.c = Vec<Q>(4);
+  p.c << -1, Q(-1, 5), 0, 0;
+  const std::optional<IntegerLp> ilp = integer_lp(p);
+  ASSERT_TRUE(ilp);
+  EXPECT_EQ(ilp->row_scale, (std::vector<std::int64_t>{2, 3}));
+  const LpResult<double> f = solve_lp<double>(ilp->to_double(p.is_free));
+  ASSERT_EQ(f.status, LpStatus::kOptimal);
+  const std::optional<OptimalCertificate> cert = round_and_check_optimal(p, *ilp, f.basis, f.x, f.duals);
+  ASSERT_TRUE(cert);
+  EXPECT_TRUE(verify_optimal(p, cert->x, cert->y));
+  EXPECT_EQ(cert->value, solve_lp<Q>(p).value);
+  Vec<double> x = f.x;
+  x(f.basis[0]) += 1e-3;
+  EXPECT_FALSE(round_and_check_optimal(p, *ilp, f.basis, x, f.duals));
+  Vec<double> y = f.duals;
+  y(0) += 1e-3;
+  EXPECT_FALSE(round_and_check_optimal(p, *ilp, f.basis, f.x, y));
+  EXPECT_FALSE(round_and_check_optimal(p, *ilp, {2, 3}, f.x, f.duals));
+}
+
+}  // namespace
+}  // namespace contactcert::exact

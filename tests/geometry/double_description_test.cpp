@@ -1,0 +1,176 @@
+// Span <-> face conversion: round trips, degenerate cones, and cddlib (GMP) as the reference.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "exact/input_error.h"
+#include "exact/linalg.h"
+#include "geometry/canonical.h"
+#include "geometry/double_description.h"
+#include "tests/geometry/random_cones.h"
+#include "tests/reference/cdd_cone.h"
+
+namespace contactcert::geometry {
+namespace {
+
+using testing::random_face;
+using testing::random_span;
+
+// Every generator satisfies every row, and every facet is tight on dim - 1 - (#equalities) independent rays.
+void expect_valid_pair(const SpanCone<Q>& S, const FaceCone<Q>& F) {
+  for (Eigen::Index f = 0; f < F.inequalities.rows(); ++f) {
+    Mat<Q> tight(0, S.dim);
+    for (Eigen::Index r = 0; r < S.rays.rows(); ++r) {
+      const Q v = F.inequalities.row(f).dot(S.rays.row(r));
+      ASSERT_LE(v, 0);
+      if (v == 0) {
+        tight.conservativeResize(tight.rows() + 1, S.dim);
+        tight.row(tight.rows() - 1) = S.rays.row(r);
+      }
+    }
+    for (Eigen::Index l = 0; l < S.lines.rows(); ++l) ASSERT_EQ(F.inequalities.row(f).dot(S.lines.row(l)), 0);
+    Mat<Q> all(tight.rows() + S.lines.rows(), S.dim);
+    all << tight, S.lines;
+    // A facet of a cone of dimension d contains a (d-1)-dimensional face.
+    const Eigen::Index d = S.dim - F.equalities.rows();
+    EXPECT_EQ(exact::rank<Q>(all), d - 1);
+  }
+  for (Eigen::Index e = 0; e < F.equalities.rows(); ++e) {
+    for (Eigen::Index r = 0; r < S.rays.rows(); ++r) ASSERT_EQ(F.equalities.row(e).dot(S.rays.row(r)), 0);
+    for (Eigen::Index l = 0; l < S.lines.rows(); ++l) ASSERT_EQ(F.equalities.row(e).dot(S.lines.row(l)), 0);
+  }
+}
+
+void check_span_cone(const SpanCone<Q>& C) {
+  const FaceCone<Q> F = canonical(to_face(C));
+  const FaceCone<Q> F_cdd = canonical(reference::cdd_to_face(C));
+  ASSERT_TRUE(identical(F, F_cdd)) << "dim " << C.dim << " rays\n" << C.rays << "\nlines\n" << C.lines
+                                   << "\nours\n" << F.inequalities << "\ncdd\n" << F_cdd.inequalities;
+  const SpanCone<Q> S = canonical(to_span(F));
+  const SpanCone<Q> S_cdd = canonical(reference::cdd_to_span(F));
+  ASSERT_TRUE(identical(S, S_cdd)) << "ours\n" << S.rays << "\ncdd\n" << S_cdd.rays;
+  expect_valid_pair(S, F);
+  // Round trip: the minimal span form converts back to the same face form.
+  ASSERT_TRUE(identical(canonical(to_face(S)), F));
+  // Every input generator lies in the cone.
+  for (Eigen::Index r = 0; r < C.rays.rows(); ++r)
+    for (Eigen::Index f = 0; f < F.inequalities.rows(); ++f) ASSERT_LE(F.inequalities.row(f).dot(C.rays.row(r)), 0);
+  // Float path: same number of facets on these small integer inputs.
+  SpanCone<double> Cd = SpanCone<double>::from_rows(C.dim, exact::to_double(C.rays), exact::to_double(C.lines));
+  const FaceCone<double> Fd = to_face(Cd);
+  EXPECT_EQ(Fd.inequalities.rows(), F.inequalities.rows());
+  EXPECT_EQ(Fd.equalities.rows(), F.equalities.rows());
+}
+
+TEST(DoubleDescription, RandomConesAgainstCddlib) {
+  std::mt19937_64 rng(20261123);
+  int count = 0;
+  for (Eigen::Index dim = 3; dim <= 8; ++dim)
+    for (int rep = 0; rep < 60; ++rep) {
+      std::uniform_int_distribution<int> n(1, static_cast<int>(dim + 5));
+      SpanCone<Q> C = random_span(rng, dim, n(rng), 0);
+      // Half of them pointed (a cone over a polytope), where facets are many.
+      if (rep % 2 == 0)
+        for (Eigen::Index r = 0; r < C.rays.rows(); ++r) C.rays(r, 0) = abs(C.rays(r, 0)) + 1;
+      check_span_cone(C);
+      ++count;
+    }
+  EXPECT_GE(count, 300);
+}
+
+TEST(DoubleDescription, DegenerateConesAgainstCddlib) {
+  std::mt19937_64 rng(7);
+  int count = 0;
+  for (Eigen::Index dim = 3; dim <= 8; ++dim)
+    for (int rep = 0; rep < 20; ++rep) {
+      // Many generators on one facet.
+      check_span_cone(random_span(rng, dim, dim + 4, 0, dim + 1));
+      // Lineality.
+      check_span_cone(random_span(rng, dim, dim, 1 + rep % (dim - 1)));
+      count += 2;
+    }
+  EXPECT_GE(count, 200);
+}
+
+TEST(DoubleDescription, RandomFaceConesAgainstCddlib) {
+  std::mt19937_64 rng(99);
+  for (Eigen::Index dim = 3; dim <= 7; ++dim)
+    for (int rep = 0; rep < 20; ++rep) {
+      const FaceCone<Q> F = random_face(rng, dim, dim + rep % 6, rep % 3 == 0 ? 1 : 0, 0);
+      const SpanCone<Q> S = canonical(to_span(F));
+      const SpanCone<Q> S_cdd = canonical(reference::cdd_to_span(F));
+      ASSERT_TRUE(identical(S, S_cdd)) << "ours\n" << S.rays << "\ncdd\n" << S_cdd.rays;
+    }
+}
+
+Mat<Q> rows(std::initializer_list<std::initializer_list<long>> r) {
+  Mat<Q> M(static_cast<Eigen::Index>(r.size()), static_cast<Eigen::Index>(r.begin()->size()));
+  Eigen::Index i = 0;
+  for (auto& row : r) {
+    Eigen::Index j = 0;
+    for (long v : row) M(i, j++) = v;
+    ++i;
+  }
+  return M;
+}
+
+TEST(DoubleDescription, SpecialCones) {
+  // The origin: no rays -> equalities span everything.
+  const FaceCone<Q> origin = canonical(to_face(SpanCone<Q>::from_rows(3, Mat<Q>(0, 3), Mat<Q>(0, 3))));
+  EXPECT_EQ(origin.inequalities.rows(), 0);
+  EXPECT_EQ(origin.equalities, rows({{0, 0, 1}, {0, 1, 0}, {1, 0, 0}}));  // sorted lexicographically
+  // The whole space from lines: no rows at all.
+  const FaceCone<Q> whole = canonical(to_face(SpanCone<Q>::from_rows(3, Mat<Q>(0, 3), rows({{1, 2, 0}, {0, 1, 1}, {1, 0, 0}}))));
+  EXPECT_EQ(whole.inequalities.rows(), 0);
+  EXPECT_EQ(whole.equalities.rows(), 0);
+  // The whole space from rays (positively spanning).
+  const FaceCone<Q> whole2 =
+      canonical(to_face(SpanCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, -1, -1}}), Mat<Q>(0, 3))));
+  EXPECT_EQ(whole2.inequalities.rows() + whole2.equalities.rows(), 0);
+  // A half-space: z <= 0 is { (0,0,1) . g <= 0 }.
+  const FaceCone<Q> half = canonical(to_face(SpanCone<Q>::from_rows(3, rows({{0, 0, -1}}), rows({{1, 0, 0}, {0, 1, 0}}))));
+  EXPECT_EQ(half.inequalities, rows({{0, 0, 1}}));
+  EXPECT_EQ(half.equalities.rows(), 0);
+  // A line: two equalities.
+  const FaceCone<Q> line = canonical(to_face(SpanCone<Q>::from_rows(3, Mat<Q>(0, 3), rows({{2, 4, 6}}))));
+  EXPECT_EQ(line.inequalities.rows(), 0);
+  EXPECT_EQ(line.equalities.rows(), 2);
+  const SpanCone<Q> line_back = canonical(to_span(line));
+  EXPECT_EQ(line_back.lines, rows({{1, 2, 3}}));
+  EXPECT_EQ(line_back.rays.rows(), 0);
+  // A ray: face form has 2 equalities and 1 inequality.
+  const FaceCone<Q> ray = canonical(to_face(SpanCone<Q>::from_rows(3, rows({{0, 0, 3}}), Mat<Q>(0, 3))));
+  EXPECT_EQ(ray.inequalities, rows({{0, 0, -1}}));
+  EXPECT_EQ(ray.equalities, rows({{0, 1, 0}, {1, 0, 0}}));
+  // The paper's section 4 cone G (mu_s = 1/5, scaled by 5): three generators, three facets.
+  const SpanCone<Q> G = SpanCone<Q>::from_rows(3, rows({{5, 0, -5}, {-1, -5, -1}, {1, -5, 1}}), Mat<Q>(0, 3));
+  const FaceCone<Q> GF = canonical(to_face(G));
+  EXPECT_EQ(GF.inequalities.rows(), 3);
+  EXPECT_TRUE(identical(GF, canonical(reference::cdd_to_face(G))));
+  for (const auto& c : {origin, whole, whole2, half, line, ray})
+    EXPECT_TRUE(identical(canonical(to_face(canonical(to_span(c)))), c));
+}
+
+TEST(DoubleDescription, CanonicalFormIsInvariant) {
+  // Same cone from permuted, scaled, duplicated and redundant generators prints identically.
+  std::mt19937_64 rng(5);
+  for (int rep = 0; rep < 50; ++rep) {
+    SpanCone<Q> C = random_span(rng, 4, 7, rep % 2);
+    SpanCone<Q> D = C;
+    D.rays = Mat<Q>(C.rays.rows() + 1, 4);
+    for (Eigen::Index i = 0; i < C.rays.rows(); ++i) D.rays.row(i) = C.rays.row(C.rays.rows() - 1 - i) * (Q(i + 1) / 3);
+    D.rays.row(C.rays.rows()) = C.rays.row(0) + C.rays.row(1);  // redundant
+    if (D.lines.rows() > 0) D.lines.row(0) *= Q(-2);
+    EXPECT_TRUE(identical(canonical(to_face(C)), canonical(to_face(D))));
+    EXPECT_TRUE(identical(canonical(to_span(to_face(C))), canonical(to_span(to_face(D)))));
+  }
+}
+
+TEST(DoubleDescription, BudgetIsEnforced) {
+  std::mt19937_64 rng(3);
+  const SpanCone<Q> C = random_span(rng, 8, 30, 0);
+  EXPECT_THROW(to_face(C, DdBudget{10}), exact::BudgetExceeded);
+}
+
+}  // namespace
+}  // namespace contactcert::geometry

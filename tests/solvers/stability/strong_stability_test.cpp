@@ -1,0 +1,131 @@
+#include "solvers/stability/strong_stability.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "exact/rational_text.h"
+#include "geometry/nnc_cone.h"
+#include "geometry/scene_json.h"
+#include "solvers/wrench_cone/wrench_cone.h"
+
+namespace contactcert::solvers {
+namespace {
+
+using exact::Q;
+using exact::Vec;
+
+geometry::PlanarScene section7(const char* mu) {
+  geometry::PlanarScene s = geometry::load_planar_scene(CONTACTCERT_SCENES_DIR "/bt2002_section7_disk.json");
+  for (auto& f : s.fixels) f.mu_s = f.mu_k = exact::parse_rational(mu);
+  return s;
+}
+
+Vec<Q> wrench(long fx, long fy, long tz) {
+  Vec<Q> g(3);
+  g << fx, fy, tz;
+  return g;
+}
+
+TEST(StrongStability, Section7DiskPushedStraightDownIsStronglyStable) {
+  // A moving solution from rest has vdot^T M vdot = a^T c + vdot^T g <= vdot^T g (friction opposes
+  // sliding, separating contacts carry no force). For g = (0,-1,0), vdot^T g = -ydd, and the bottom
+  // fixel's normal acceleration is a_1n = ydd >= 0, so vdot = 0: no solution moves.
+  const auto scene = section7("1.2");
+  for (exact::Arith arith : {exact::Arith::kExact, exact::Arith::kVerified}) {
+    const auto r = strong_stability<Q>(scene, wrench(0, -1, 0), {arith});
+    EXPECT_EQ(r.verdict, StabilityVerdict::kStronglyStable);
+    EXPECT_EQ(r.proofs.size(), 15u);  // 4^2 - 1 moving modes, each with a proof
+    EXPECT_EQ(check_stability(scene, wrench(0, -1, 0), r), "");
+  }
+  EXPECT_EQ(strong_stability<double>(scene, exact::to_double(wrench(0, -1, 0))).verdict,
+            StabilityVerdict::kStronglyStable);
+}
+
+TEST(StrongStability, PushIntoTheSideFixelIsStronglyStable) {
+  // Same energy argument with g = (1,0,0): a_2n = -xdd >= 0 at the fixel at (1,0).
+  const auto scene = section7("1.2");
+  const auto r = strong_stability<Q>(scene, wrench(1, 0, 0));
+  EXPECT_EQ(r.verdict, StabilityVerdict::kStronglyStable);
+  EXPECT_EQ(check_stability(scene, wrench(1, 0, 0), r), "");
+}
+
+TEST(StrongStability, DownLeftPushIsOnlyWeaklyStableAndUnstableWithLowFriction) {
+  // Down-left through the centre: with mu = 1.2 the bottom fixel alone can hold it (|c_t|/c_n = 1 <= 1.2),
+  // but the disk may also roll on the bottom fixel away from the side fixel.
+  const auto scene = section7("1.2");
+  const auto r = strong_stability<Q>(scene, wrench(-1, -1, 0));
+  EXPECT_EQ(r.verdict, StabilityVerdict::kWeaklyStable);
+  ASSERT_TRUE(r.has_moving);
+  EXPECT_EQ(check_stability(scene, wrench(-1, -1, 0), r), "");
+  // With mu = 0.3 nothing holds it: the side fixel can only push left, the bottom one needs mu >= 1.
+  const auto low = section7("0.3");
+  const auto u = strong_stability<Q>(low, wrench(-1, -1, 0));
+  EXPECT_EQ(u.verdict, StabilityVerdict::kUnstable);
+  EXPECT_FALSE(u.has_resting);
+  EXPECT_EQ(check_stability(low, wrench(-1, -1, 0), u), "");
+}
+
+TEST(StrongStability, PullingAwayIsWeaklyStableOnlyUnderForceClosure) {
+  // g = (0,1,0) lifts the disk. With mu = 1.2 each fixel lies in the other's friction cone (force
+  // closure, section 7): the disk can wedge, c = (5, 6, -6, 6) balances g, yet it may also just lift off.
+  const auto scene = section7("1.2");
+  const auto r = strong_stability<Q>(scene, wrench(0, 1, 0));
+  EXPECT_EQ(r.verdict, StabilityVerdict::kWeaklyStable);
+  EXPECT_EQ(check_stability(scene, wrench(0, 1, 0), r), "");
+  // With mu = 0.3: x balance gives c_2n = -c_1t <= 0.3 c_1n, y balance c_2t = c_1n + 1 <= 0.3 c_2n
+  // <= 0.09 c_1n: impossible, so nothing holds it.
+  const auto low = section7("0.3");
+  const auto u = strong_stability<Q>(low, wrench(0, 1, 0));
+  EXPECT_EQ(u.verdict, StabilityVerdict::kUnstable);
+  EXPECT_EQ(check_stability(low, wrench(0, 1, 0), u), "");
+}
+
+TEST(StrongStability, CorruptedEvidenceIsRejected) {
+  const auto scene = section7("1.2");
+  auto r = strong_stability<Q>(scene, wrench(0, -1, 0));
+  ASSERT_EQ(r.verdict, StabilityVerdict::kStronglyStable);
+  auto wrong_verdict = r;
+  wrong_verdict.verdict = StabilityVerdict::kWeaklyStable;
+  EXPECT_NE(check_stability(scene, wrench(0, -1, 0), wrong_verdict), "");
+  // Change one number in a dynamic proof (one that is not all zeros).
+  bool corrupted = false;
+  for (auto& p : r.proofs) {
+    if (p.kinematic) continue;
+    for (Eigen::Index i = 0; i < p.motzkin.size() && !corrupted; ++i)
+      if (sgn(p.motzkin(i)) != 0) {
+        p.motzkin(i) = -p.motzkin(i) - 1;
+        corrupted = true;
+      }
+    if (corrupted) break;
+  }
+  ASSERT_TRUE(corrupted);
+  EXPECT_NE(check_stability(scene, wrench(0, -1, 0), r), "");
+  // The same evidence does not prove stability under another wrench.
+  auto w = strong_stability<Q>(scene, wrench(0, -1, 0));
+  EXPECT_NE(check_stability(scene, wrench(-1, -1, 0), w), "");
+}
+
+TEST(StrongStability, MembershipLpsAgreeWithTheWrenchConeAlgorithm) {
+  // Each moving mode's LP answer must equal membership in the cone of the wrench cone algorithm
+  // (an independent route: K z = P g, conversion, strict limits). Random small integer wrenches.
+  const auto scene = section7("1.2");
+  const auto model = contact_model<Q>(scene);
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> d(-3, 3);
+  std::vector<geometry::FaceCone<Q>> cones;
+  const auto modes = moving_modes(2);
+  for (const auto& m : modes) cones.push_back(wrench_cone_face<Q>(scene, model, m, Route::kPaper));
+  for (int t = 0; t < 60; ++t) {
+    const Vec<Q> g = wrench(d(rng), d(rng), d(rng));
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+      const auto ms = motion_system<Q>(scene, modes[i]);
+      const bool lp = exact::strict_feasibility(ms.with_wrench(g), exact::Arith::kExact).status ==
+                      exact::StrictStatus::kFeasible;
+      EXPECT_EQ(lp, geometry::contains_point<Q>(cones[i], g)) << "mode " << modes[i].text() << " g = " << g.transpose();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace contactcert::solvers
