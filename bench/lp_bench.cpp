@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "exact/adjacent_vertices.h"
 #include "exact/linalg.h"
 #include "exact/simplex.h"
 #include "exact/verified_lp.h"
@@ -175,6 +176,18 @@ void BM_cdd(benchmark::State& state) {
   state.counters["disagreements"] = disagree;
 }
 
+template <char Shape>
+void BM_adjacent(benchmark::State& state) {
+  const Instances& in = instances(Shape, static_cast<int>(state.range(0)));
+  std::vector<std::vector<Index>> bases;
+  for (const LpProblem<Q>& p : in.exact) bases.push_back(solve_lp_verified(p).basis);
+  double edges = 0;
+  for (auto _ : state)
+    for (size_t k = 0; k < in.exact.size(); ++k) edges = static_cast<double>(adjacent_vertices<Q>(in.exact[k], bases[k]).edges.size());
+  set_counters(state, in);
+  state.counters["edges_last"] = edges;
+}
+
 #define LP_BENCH(fn, shape, name) \
   BENCHMARK(fn<shape>)->Name(name)->Arg(3)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond)->Repetitions(3) \
       ->ReportAggregatesOnly(true)
@@ -189,6 +202,8 @@ LP_BENCH(BM_verified, 'Y', "Y/verified");
 LP_BENCH(BM_exact, 'Y', "Y/exact");
 LP_BENCH(BM_cgal, 'Y', "Y/cgal");
 LP_BENCH(BM_cdd, 'Y', "Y/cdd");
+LP_BENCH(BM_adjacent, 'X', "X/adjacent_vertices_exact");
+LP_BENCH(BM_adjacent, 'Y', "Y/adjacent_vertices_exact");
 
 }  // namespace
 

@@ -4,7 +4,9 @@
 // route up to 20 fixels to show its growth.
 //   ./wrench_cone_bench --benchmark_counters_tabular=true
 // Modes: 'n...n' (every fixel rolls: K is 2n x 2n) and 'm...m' (maintain contact: K is n x 2n, the
-// hardest conversion since pos(K) has 2n generators in n dimensions).
+// hardest conversion since pos(K) has 2n generators in n dimensions). Each iteration computes the
+// model (J, A, B), K and P, and the cone's canonical face form. "literal-K" runs the paper's route on
+// the literal K, P of eqs. (15), (17); the others first row-reduce K z = P g (wrench_cone.h).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -12,7 +14,7 @@
 
 #include "geometry/double_description.h"
 #include "geometry/scene_json.h"
-#include "reference/cdd_cone.h"
+#include "tests/reference/cdd_cone.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 
 namespace {
@@ -21,22 +23,23 @@ using namespace contactcert;
 using exact::Mat;
 using exact::Q;
 
-/// A unit disk (M = diag(1, 1, 1/2)) touching n fixels at rational points of the circle spread
-/// around it: ((1 - t^2)/(1 + t^2), 2t/(1 + t^2)) with t = tan(theta/2) rounded to sixteenths.
+/// A unit disk (M = diag(1, 1, 1/2)) touching n fixels at rational points of its lower half
+/// (angles -165 to -15 degrees, so that no mode is trivially force closure):
+/// ((1 - t^2)/(1 + t^2), 2t/(1 + t^2)) with t = tan(theta/2) rounded to sixteenths. mu_s = 1/5.
 geometry::PlanarScene disk_scene(int n) {
   geometry::PlanarScene s;
   const geometry::DiskShape disk{{Q(0), Q(0)}, Q(1)};
   s.workpiece = {disk, {Q(0), Q(0)}, Q(1, 2)};
   for (int i = 0; i < n; ++i) {
-    const double theta = -M_PI / 2 + 2 * M_PI * (i + 0.37 * (i % 2)) / n;
+    const double theta = n == 1 ? -M_PI / 2 : -M_PI * (165.0 - 150.0 * i / (n - 1)) / 180.0;
     Q t(static_cast<long>(std::lround(std::tan(theta / 2) * 16)), 16);
     t.canonicalize();
     const Q d = 1 + t * t;
     const geometry::Point2 p{Q((1 - t * t) / d), Q(2 * t / d)};
     geometry::Fixel f;
     f.frame = geometry::frame_from_position(disk, p).frame;
-    f.mu_s = Q(1, 2);
-    f.mu_k = Q(2, 5);
+    f.mu_s = Q(1, 5);
+    f.mu_k = Q(1, 6);
     f.position = p;
     s.fixels.push_back(f);
   }
@@ -51,7 +54,7 @@ solvers::ModeString mode(int n, char letter) {
 
 char letter_of(int64_t code) { return code == 0 ? 'n' : 'm'; }
 
-template <class T, solvers::Route route>
+template <class T, solvers::Route route, solvers::Preconditioning pre = solvers::Preconditioning::kRowReduce>
 void BM_WrenchCone(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const geometry::PlanarScene scene = disk_scene(n);
@@ -59,14 +62,33 @@ void BM_WrenchCone(benchmark::State& state) {
   Eigen::Index rows = 0;
   for (auto _ : state) {
     const solvers::ContactModel<T> model = solvers::contact_model<T>(scene);
-    const geometry::FaceCone<T> f = solvers::wrench_cone_face(scene, model, m, route);
+    const geometry::FaceCone<T> f = solvers::wrench_cone_face(scene, model, m, route, {}, pre);
     rows = f.inequalities.rows() + f.strict.rows();
     benchmark::DoNotOptimize(rows);
   }
+  // The error of the path beside its time: does its face count match the exact cone's?
+  const geometry::FaceCone<Q> exact_face = solvers::wrench_cone_face(scene, solvers::contact_model<Q>(scene), m, route);
+  const Eigen::Index exact_rows = exact_face.inequalities.rows() + exact_face.strict.rows();
   state.counters["fixels"] = n;
   state.counters["facets"] = static_cast<double>(rows);
+  state.counters["wrong_facet_count"] = rows == exact_rows ? 0 : 1;
   state.SetLabel(std::string(exact::NumberTraits<T>::name) + (route == solvers::Route::kPaper ? " paper " : " project ") +
+                 (pre == solvers::Preconditioning::kNone ? "literal-K " : "") +
                  std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
+}
+
+/// Our share outside the conversion: J, A, B (per scene) and K, P (per mode), exact.
+void BM_ModelAndConeForm(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const geometry::PlanarScene scene = disk_scene(n);
+  const solvers::ModeString m = mode(n, letter_of(state.range(1)));
+  for (auto _ : state) {
+    const solvers::ContactModel<Q> model = solvers::contact_model<Q>(scene);
+    const solvers::ConeForm<Q> form = solvers::cone_form(scene, model, m);
+    benchmark::DoNotOptimize(form.K.data());
+  }
+  state.counters["fixels"] = n;
+  state.SetLabel("exact J A B + K P " + std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
 }
 
 /// The paper's route with K^F by cddlib (GMP): F = K^F P, not reduced (the raw eq. 18).
@@ -119,11 +141,19 @@ void growth(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_WrenchCone<Q, solvers::Route::kPaper>)->Apply(table4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WrenchCone<Q, solvers::Route::kProject>)->Apply(table4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WrenchCone<Q, solvers::Route::kPaper, solvers::Preconditioning::kNone>)->Apply(table4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WrenchCone<double, solvers::Route::kPaper>)->Apply(table4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WrenchCone<double, solvers::Route::kProject>)->Apply(table4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ModelAndConeForm)->Apply(table4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperRouteCddKF)->Apply(table4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PaperRouteOwnKF)->Apply(table4)->Unit(benchmark::kMicrosecond);
+void growth_rolling(benchmark::internal::Benchmark* b) {
+  for (int n : {8, 10, 12, 16, 20}) b->Args({n, 0});
+}
+
 BENCHMARK(BM_WrenchCone<Q, solvers::Route::kProject>)->Apply(growth)->Unit(benchmark::kMicrosecond);
+// The paper's route after row reduction converts pos(K) in 3 dimensions for 'n...n' modes.
+BENCHMARK(BM_WrenchCone<Q, solvers::Route::kPaper>)->Apply(growth_rolling)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -27,6 +27,7 @@ void register_demo(CLI::App& app, Action& action);
 void register_ucp(CLI::App& app, Action& action);
 void register_check(CLI::App& app, Action& action);
 void register_stability(CLI::App& app, Action& action);
+void register_insert(CLI::App& app, Action& action);
 void register_cone(CLI::App& app, Action& action);
 void register_convert(CLI::App& app, Action& action);
 

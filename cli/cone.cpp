@@ -182,6 +182,7 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
       std::cout << "  ";
       if (face.empty()) std::cout << (f.closure.lines.rows() ? "the lineality space" : "the origin");
       for (std::size_t k = 0; k < face.size(); ++k) std::cout << (k ? ", " : "spanned by ") << "g" << face[k] + 1;
+      if (!face.empty() && f.closure.lines.rows() > 0) std::cout << " and the lines";
       std::cout << "\n";
     }
   }

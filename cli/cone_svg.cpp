@@ -128,10 +128,10 @@ std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat
   }
   // Generators as directed lines of force.
   std::vector<std::pair<exact::Vec<exact::Q>, std::string>> gens;
-  for (Eigen::Index r = 0; r < rays.rows(); ++r) gens.push_back({rays.row(r).transpose(), "g" + std::to_string(r + 1)});
+  for (Eigen::Index r = 0; r < rays.rows(); ++r) gens.push_back({rays.row(r).transpose(), std::string("g") + std::to_string(r + 1)});
   for (Eigen::Index r = 0; r < lines.rows(); ++r) {
-    gens.push_back({lines.row(r).transpose(), "+l" + std::to_string(r + 1)});
-    gens.push_back({exact::Vec<exact::Q>(-lines.row(r).transpose()), "-l" + std::to_string(r + 1)});
+    gens.push_back({lines.row(r).transpose(), std::string("+l") + std::to_string(r + 1)});
+    gens.push_back({exact::Vec<exact::Q>(-lines.row(r).transpose()), std::string("-l") + std::to_string(r + 1)});
   }
   const double half = 0.45 * size;
   int moments = 0;

@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   cli::register_ucp(app, action);
   cli::register_check(app, action);
   cli::register_stability(app, action);
+  cli::register_insert(app, action);
   cli::register_cone(app, action);
   cli::register_convert(app, action);
   try {

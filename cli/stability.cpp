@@ -2,14 +2,20 @@
 // (wrench cone paper, section 7; SPEC sections 6-7), with a witness or a certificate.
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <iostream>
+#include <optional>
 
 #include "cli/command.h"
 #include "cli/json_out.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "cli/stability_svg.h"
+#include "solvers/stability/finger_push.h"
+#include "solvers/stability/margin.h"
 #include "solvers/stability/stability_certificate.h"
+#include "solvers/stability/stable_region.h"
 
 namespace contactcert::cli {
 namespace {
@@ -22,6 +28,10 @@ struct StabilityOptions {
   std::string file;
   std::string wrench;
   std::string certificate;
+  bool region = false;
+  bool finger = false;
+  bool margin = false;
+  std::string svg;
 };
 
 template <class T>
@@ -57,7 +67,8 @@ std::string vec_text(const exact::Vec<double>& v) {
 }
 
 template <class T>
-int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityResult<T>& r) {
+int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityResult<T>& r,
+           const std::optional<solvers::Margin<Q>>& margin = std::nullopt) {
   if (o.common.json) {
     json j;
     j["verdict"] = solvers::verdict_name(r.verdict);
@@ -74,6 +85,9 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
     j["modes_checked"] = r.modes_checked;
     j["modes_kinematically_feasible"] = r.modes_kinematically_feasible;
     if (!o.certificate.empty()) j["certificate"] = o.certificate;
+    if (margin && !margin->nearest.empty())
+      j["margin"] = {{"squared_radius", exact_json(margin->squared_radius)},
+                     {"radius_approx", std::sqrt(margin->squared_radius.get_d())}, {"nearest", margin->nearest}};
     std::cout << j.dump() << "\n";
     return 0;
   }
@@ -89,14 +103,101 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
   else if (r.has_resting)
     std::cout << "  no moving mode admits g: " << r.proofs.size() << " proofs ("
               << (r.modes_checked - r.modes_kinematically_feasible) << " modes kinematically impossible)\n";
+  if (margin && !margin->nearest.empty())
+    std::cout << "  margin: squared radius " << exact::to_string(margin->squared_radius) << " (radius ~"
+              << std::sqrt(margin->squared_radius.get_d()) << "), nearest: "
+              << (margin->nearest == "weak" ? std::string("edge of the weakly stable cone")
+                                            : "mode '" + margin->nearest + "'")
+              << "\n";
   std::cout << "  LPs: " << r.lps << "\n";
   if (!o.certificate.empty()) std::cout << "  certificate: " << o.certificate << "\n";
+  return 0;
+}
+
+int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene) {
+  if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
+    throw exact::InputError("command line", "--arith", "--region is computed exactly (use exact or verified)");
+  const auto region = solvers::stable_region<Q>(scene);
+  if (!o.svg.empty()) write_text_file(o.svg, stability_sphere_svg(region));
+  int count[3][4] = {};
+  for (const auto& c : region.cells) ++count[static_cast<int>(c.label)][c.dimension];
+  if (o.common.json) {
+    json cells = json::array();
+    for (const auto& c : region.cells)
+      cells.push_back({{"dimension", c.dimension}, {"point", primitive_json(c.point)},
+                       {"label", solvers::verdict_name(c.label)}});
+    json modes = json::array();
+    for (const auto& m : region.modes) modes.push_back(m.text());
+    json j;
+    j["region"] = {{"planes", region.planes.rows()}, {"nonempty_moving_modes", modes}, {"cells", cells}};
+    std::cout << j.dump() << "\n";
+    return 0;
+  }
+  std::cout << "stable region of " << o.file << ": " << region.cells.size() << " cells cut by " << region.planes.rows()
+            << " planes (" << region.modes.size() << " moving modes with non-empty wrench cones)\n";
+  static const char* kind[4] = {"origin", "rays", "2-d sectors", "open regions"};
+  for (int l = 0; l < 3; ++l) {
+    std::cout << "  " << solvers::verdict_name(static_cast<solvers::StabilityVerdict>(l)) << ":";
+    for (int d = 0; d < 4; ++d)
+      if (count[l][d]) std::cout << " " << count[l][d] << " " << kind[d];
+    std::cout << "\n";
+  }
+  int shown = 0;
+  for (const auto& c : region.cells)
+    if (c.dimension == 3 && c.label == solvers::StabilityVerdict::kStronglyStable && shown++ < 5)
+      std::cout << "  strongly stable open region through g = " << primitive_json(c.point).dump() << "\n";
+  if (shown > 5) std::cout << "  ... (" << shown - 5 << " more; --json lists every cell)\n";
+  if (!o.svg.empty()) std::cout << "  picture: " << o.svg << "\n";
+  return 0;
+}
+
+std::string interval_text(bool from_closed, const std::string& from, const std::string& to, bool to_closed) {
+  return (from_closed ? "[" : "(") + from + ", " + to + (to_closed ? "]" : ")");
+}
+
+double degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
+
+int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
+  if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
+    throw exact::InputError("command line", "--arith", "--finger is computed exactly (use exact or verified)");
+  const auto region = solvers::stable_region<Q>(scene);
+  const auto pushes = solvers::finger_pushes<Q>(scene, region);
+  if (o.common.json) {
+    json edges = json::array(), arcs = json::array();
+    for (const auto& p : pushes.edges)
+      edges.push_back({{"edge", p.edge}, {"from", exact_json(p.from)}, {"to", exact_json(p.to)},
+                       {"from_closed", p.from_closed}, {"to_closed", p.to_closed},
+                       {"label", solvers::verdict_name(p.label)}});
+    for (const auto& p : pushes.arcs)
+      arcs.push_back({{"from_direction", primitive_json(p.from)}, {"to_direction", primitive_json(p.to)},
+                      {"from_closed", p.from_closed}, {"to_closed", p.to_closed},
+                      {"from_degrees_approx", degrees(p.from)}, {"to_degrees_approx", degrees(p.to)},
+                      {"label", solvers::verdict_name(p.label)}});
+    json j;
+    j["finger"] = {{"edges", edges}, {"arcs", arcs}};
+    std::cout << j.dump() << "\n";
+    return 0;
+  }
+  std::cout << "frictionless finger pushes along the inward normal of " << o.file << ":\n";
+  for (const auto& p : pushes.edges)
+    std::cout << "  edge " << p.edge << ", s in "
+              << interval_text(p.from_closed, exact::to_string(p.from), exact::to_string(p.to), p.to_closed) << ": "
+              << solvers::verdict_name(p.label) << "\n";
+  for (const auto& p : pushes.arcs)
+    std::cout << "  arc from direction " << primitive_json(p.from).dump() << " to " << primitive_json(p.to).dump()
+              << " counter-clockwise, angles "
+              << interval_text(p.from_closed, std::to_string(degrees(p.from)), std::to_string(degrees(p.to)), p.to_closed)
+              << " deg (approx): " << solvers::verdict_name(p.label) << "\n";
   return 0;
 }
 
 int run_stability(const StabilityOptions& o) {
   const std::string text = exact::JsonInput::read_text(o.file);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
+  if (int(o.region) + int(o.finger) + int(!o.wrench.empty()) != 1)
+    throw exact::InputError("command line", "--wrench", "give exactly one of --wrench fx,fy,tz, --region or --finger");
+  if (o.region) return run_region(o, scene);
+  if (o.finger) return run_finger(o, scene);
   const exact::Vec<Q> g = parse_number_list(o.wrench, "--wrench", 3);
   const exact::Arith arith = exact::parse_arith(o.common.arith);
   if (arith == exact::Arith::kFloat) {
@@ -106,7 +207,10 @@ int run_stability(const StabilityOptions& o) {
   }
   const auto r = solvers::strong_stability<Q>(scene, g, {arith});
   if (!o.certificate.empty()) write_text_file(o.certificate, solvers::stability_certificate(text, g, r));
-  return report(o, g, r);
+  std::optional<solvers::Margin<Q>> margin;
+  if (o.margin && r.verdict == solvers::StabilityVerdict::kStronglyStable)
+    margin = solvers::stability_margin<Q>(solvers::stable_region<Q>(scene), g);
+  return report(o, g, r, margin);
 }
 
 }  // namespace
@@ -117,8 +221,11 @@ void register_stability(CLI::App& app, Action& action) {
       "stability", "Is the workpiece strongly stable, only weakly stable, or unstable under a wrench?");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Planar scene file (SPEC section 3)")->required();
-  sub->add_option("--wrench", o->wrench, "External wrench fx,fy,tz (torque about the centre of mass), exact numbers")
-      ->required();
+  sub->add_option("--wrench", o->wrench, "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");
+  sub->add_flag("--region", o->region, "The whole strongly stable set: labelled cells of wrench space");
+  sub->add_flag("--margin", o->margin, "With --wrench: squared radius of the largest strongly stable ball around it");
+  sub->add_flag("--finger", o->finger, "Where a frictionless finger push along the boundary normal is strongly stable");
+  sub->add_option("--svg", o->svg, "With --region: picture of the sphere of wrench directions");
   sub->add_option("--certificate", o->certificate, "Write the evidence for `contactcert check` to this file");
   sub->callback([o, &action] { action = [o] { return run_stability(*o); }; });
 }

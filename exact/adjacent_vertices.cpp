@@ -1,11 +1,11 @@
 #include "exact/adjacent_vertices.h"
 
 #include <algorithm>
-#include <deque>
-#include <set>
 #include <stdexcept>
 
+#include "exact/field_ops.h"
 #include "exact/simplex_tableau.h"
+#include "exact/tangent_cone.h"
 
 namespace contactcert::exact {
 
@@ -23,13 +23,6 @@ Vec<T> normalised(Vec<T> d) {
     return d;
   }
   return d;
-}
-
-template <class T>
-bool same_vector(const Vec<T>& a, const Vec<T>& b) {
-  for (Index i = 0; i < a.size(); ++i)
-    if (!is_zero(T(a(i) - b(i)))) return false;
-  return true;
 }
 
 std::vector<Index> sorted(std::vector<Index> v) {
@@ -62,69 +55,99 @@ AdjacentResult<T> adjacent_vertices(const LpProblem<T>& problem, const std::vect
     if (problem.free(j)) throw std::invalid_argument("adjacent_vertices: free variables are not allowed");
   std::optional<SimplexTableau<T>> start = SimplexTableau<T>::from_basis(problem.A, problem.b, basis);
   if (!start) throw std::invalid_argument("adjacent_vertices: not a basis of A x = b");
-  for (Index r = 0; r < start->rows(); ++r)
-    if (is_negative(start->rhs(r))) throw std::invalid_argument("adjacent_vertices: basis is not feasible");
+  const SimplexTableau<T>& tab = *start;
+  for (Index r = 0; r < tab.rows(); ++r)
+    if (is_negative(tab.rhs(r))) throw std::invalid_argument("adjacent_vertices: basis is not feasible");
 
   AdjacentResult<T> res;
-  res.vertex = start->primal();
-  const Index n = problem.cols();
-  std::set<std::vector<Index>> seen{sorted(start->basis())};
-  std::deque<SimplexTableau<T>> queue;
-  queue.push_back(std::move(*start));
+  res.vertex = tab.primal();
+  res.vertex_bases.push_back(sorted(tab.basis()));
+  const Index n = problem.cols(), m = tab.rows();
 
-  // Breadth-first search over the bases of the vertex: a pivot in a row at level 0 (any non-zero entry)
-  // keeps the vertex. From each basis, every non-basic column with a positive step (or none) is an edge.
-  while (!queue.empty()) {
-    SimplexTableau<T> tab = std::move(queue.front());
-    queue.pop_front();
-    res.vertex_bases.push_back(sorted(tab.basis()));
-    for (Index j = 0; j < n; ++j) {
-      if (tab.is_basic(j)) continue;
-      Index r = -1;
-      T step = T(0);
-      for (Index i = 0; i < tab.rows(); ++i) {
-        if (!is_positive(tab.entry(i, j))) continue;
-        const T ratio = tab.rhs(i) / tab.entry(i, j);
-        if (r < 0 || sign(T(ratio - step)) < 0) {
-          r = i;
-          step = ratio;
-        }
-      }
-      if (r < 0 || is_positive(step)) {
-        Vec<T> d = Vec<T>::Zero(n);
-        d(j) = T(1);
-        for (Index i = 0; i < tab.rows(); ++i) d(tab.basis()[static_cast<size_t>(i)]) = -tab.entry(i, j);
-        Edge<T> edge;
-        edge.direction = normalised(d);
-        const bool known = std::any_of(res.edges.begin(), res.edges.end(),
-                                       [&](const Edge<T>& e) { return same_vector(e.direction, edge.direction); });
-        if (!known) {
-          edge.bounded = r >= 0;
-          edge.basis = tab.basis();
-          edge.entering = j;
-          if (edge.bounded) {
-            edge.neighbour = res.vertex + step * d;
-            edge.neighbour_basis = tab.basis();
-            edge.neighbour_basis[static_cast<size_t>(r)] = j;
-          }
-          res.edges.push_back(std::move(edge));
-        }
-      }
-      for (Index i = 0; i < tab.rows(); ++i) {
-        if (!is_zero(tab.rhs(i)) || is_zero(tab.entry(i, j))) continue;
-        std::vector<Index> next = tab.basis();
-        next[static_cast<size_t>(i)] = j;
-        if (!seen.insert(sorted(next)).second) continue;
-        if (static_cast<long>(seen.size()) > options.max_bases) {
-          res.status = AdjacencyStatus::kBudgetExceeded;
-          continue;
-        }
-        SimplexTableau<T> child = tab;
-        child.pivot(i, j);
-        ++res.pivots;
-        queue.push_back(std::move(child));
+  // The tangent cone {d : A d = 0, d_j >= 0 where x_j = 0} in the non-basic coordinates w = d_N:
+  // w >= 0 and, for each degenerate row r (basic variable at 0), d_B(r) = -(T_N w)_r >= 0.
+  std::vector<Index> N, degenerate;
+  for (Index j = 0; j < n; ++j)
+    if (!tab.is_basic(j)) N.push_back(j);
+  for (Index r = 0; r < m; ++r)
+    if (is_zero(tab.rhs(r))) degenerate.push_back(r);
+  const Index p = static_cast<Index>(N.size());
+  Mat<T> G(static_cast<Index>(degenerate.size()), p);
+  for (size_t i = 0; i < degenerate.size(); ++i)
+    for (Index k = 0; k < p; ++k) G(static_cast<Index>(i), k) = tab.entry(degenerate[i], N[static_cast<size_t>(k)]);
+  OrthantConeRays<T> cone = orthant_cone_rays<T>(G, options.max_bases);
+  if (cone.status == ConeStatus::kBudgetExceeded) {
+    // Keep the edges that are single pivots from this basis: non-basic columns with G e_k <= 0.
+    res.status = AdjacencyStatus::kBudgetExceeded;
+    for (Index k = 0; k < p; ++k) {
+      bool feasible = true;
+      for (Index i = 0; i < G.rows() && feasible; ++i) feasible = !is_positive(G(i, k));
+      if (!feasible) continue;
+      Vec<T> e = Vec<T>::Zero(p);
+      e(k) = T(1);
+      cone.rays.push_back(std::move(e));
+    }
+  }
+
+  // Each extreme ray of the tangent cone is an edge; one ratio test along it finds its other end.
+  T tmp;
+  for (const Vec<T>& w : cone.rays) {
+    Vec<T> d = Vec<T>::Zero(n);
+    Index single = -1, support = 0;
+    for (Index k = 0; k < p; ++k) {
+      if (is_zero(w(k))) continue;
+      d(N[static_cast<size_t>(k)]) = w(k);
+      single = N[static_cast<size_t>(k)];
+      ++support;
+    }
+    for (Index r = 0; r < m; ++r) {
+      T& dr = d(tab.basis()[static_cast<size_t>(r)]);
+      for (Index k = 0; k < p; ++k)
+        if (!is_zero(w(k))) sub_mul(dr, tab.entry(r, N[static_cast<size_t>(k)]), w(k), tmp);
+    }
+    Index block = -1;
+    T step = T(0);
+    for (Index r = 0; r < m; ++r) {
+      const T& dr = d(tab.basis()[static_cast<size_t>(r)]);
+      if (!is_negative(dr)) continue;
+      const T ratio = tab.rhs(r) / T(-dr);
+      if (block < 0 || sign(T(ratio - step)) < 0) {
+        block = r;
+        step = ratio;
       }
     }
+    Edge<T> edge;
+    edge.direction = normalised(d);
+    edge.bounded = block >= 0;
+    edge.basis = tab.basis();
+    edge.entering = support == 1 ? single : -1;
+    if (edge.bounded && support == 1) {
+      // A simplex pivot: the entering column replaces the blocking row's basic variable.
+      edge.neighbour = res.vertex + step * d;
+      for (Index j = 0; j < n; ++j)
+        if (!is_positive(edge.neighbour(j))) edge.neighbour(j) = T(0);
+      edge.neighbour_basis = tab.basis();
+      edge.neighbour_basis[static_cast<size_t>(block)] = single;
+    } else if (edge.bounded) {
+      // A basis of the neighbour: pivot each column of its support into a row whose basic variable is 0 there.
+      Vec<T> u = res.vertex + step * d;
+      for (Index j = 0; j < n; ++j)
+        if (!is_positive(u(j))) u(j) = T(0);
+      SimplexTableau<T> next = tab;
+      for (Index j = 0; j < n; ++j) {
+        if (is_zero(u(j)) || next.is_basic(j)) continue;
+        Index r = -1;
+        for (Index i = 0; i < next.rows(); ++i) {
+          if (is_zero(next.entry(i, j)) || !is_zero(u(next.basis()[static_cast<size_t>(i)]))) continue;
+          if (r < 0 || NumberTraits<T>::better_pivot(next.entry(i, j), next.entry(r, j))) r = i;
+        }
+        if (r >= 0) next.pivot(r, j);
+        ++res.pivots;
+      }
+      edge.neighbour = next.primal();
+      edge.neighbour_basis = next.basis();
+    }
+    res.edges.push_back(std::move(edge));
   }
   return res;
 }

@@ -1,7 +1,8 @@
 // Adjacent extreme points and extreme rays of the polyhedron {x >= 0 : A x = b} at a vertex given by a
 // basis (Murty, Linear Programming, section 3.7.1; Step 3 of the bilinear algorithm). Correct at degenerate
-// vertices: every basis of the vertex is reached by degenerate pivots (breadth-first, under a budget), and
-// every edge of a vertex is a single pivot from one of its bases.
+// vertices without enumerating their bases: the edges are the extreme rays of the tangent cone
+// {d : A d = 0, d_j >= 0 where x_j = 0}, computed in the non-basic coordinates of the given basis by the double
+// description method (tangent_cone.h), each followed by one exact ratio test (ANCHORS.md).
 #pragma once
 
 #include <vector>
@@ -11,7 +12,8 @@
 namespace contactcert::exact {
 
 struct AdjacencyOptions {
-  /// Budget on the number of bases of the vertex explored (a degenerate vertex can have exponentially many).
+  /// Work budget at a degenerate vertex: the number of intermediate rays of the tangent cone conversion
+  /// (the name is kept from the first version, which enumerated bases).
   long max_bases = 100000;
 };
 
@@ -24,18 +26,18 @@ struct Edge {
   bool bounded = true;  ///< true: the edge ends at `neighbour`; false: an extreme ray of the polyhedron
   Vec<T> neighbour;  ///< the adjacent vertex (bounded edges only)
   std::vector<Eigen::Index> neighbour_basis;  ///< a basis of `neighbour` (bounded edges only)
-  std::vector<Eigen::Index> basis;  ///< a basis of the vertex from which the pivot on `entering` follows the edge
-  Eigen::Index entering = -1;
+  std::vector<Eigen::Index> basis;  ///< the given basis of the vertex
+  Eigen::Index entering = -1;  ///< the column whose pivot from `basis` follows the edge, -1 if not a single pivot
 };
 
-/// All edges leaving the vertex, deduplicated exactly (by direction), and all bases of the vertex explored.
+/// All edges leaving the vertex, each once (distinct extreme rays of the tangent cone).
 template <class T>
 struct AdjacentResult {
-  AdjacencyStatus status = AdjacencyStatus::kComplete;  ///< kBudgetExceeded: edges may be incomplete
+  AdjacencyStatus status = AdjacencyStatus::kComplete;  ///< kBudgetExceeded: only the edges that are single pivots from the given basis
   Vec<T> vertex;
   std::vector<Edge<T>> edges;
-  std::vector<std::vector<Eigen::Index>> vertex_bases;  ///< each sorted
-  long pivots = 0;
+  std::vector<std::vector<Eigen::Index>> vertex_bases;  ///< bases of the vertex used (sorted): the given one
+  long pivots = 0;  ///< pivots done to find the neighbours' bases
 
   /// The adjacent vertices (endpoints of bounded edges).
   std::vector<Vec<T>> neighbours() const;

@@ -17,8 +17,11 @@ struct LpProblem {
   Vec<T> c;                   ///< may be empty: feasibility problem (c = 0)
   std::vector<bool> is_free;  ///< empty or size A.cols()
 
+  /// Number of equality rows m.
   Eigen::Index rows() const { return A.rows(); }
+  /// Number of variables n.
   Eigen::Index cols() const { return A.cols(); }
+  /// True if x_j has no sign constraint.
   bool free(Eigen::Index j) const { return !is_free.empty() && is_free[static_cast<size_t>(j)]; }
   /// The objective (zero vector if c is empty).
   Vec<T> objective() const { return c.size() == 0 ? Vec<T>(Vec<T>::Zero(A.cols())) : c; }

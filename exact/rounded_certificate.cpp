@@ -42,11 +42,20 @@ std::optional<Fraction> round_to_fraction(double v) {
   return std::nullopt;
 }
 
+/// z as a 64-bit integer (reads GMP's limbs directly: this runs once per matrix entry).
 bool to_i64(mpz_srcptr z, i64& out) {
-  if (!mpz_fits_slong_p(z)) return false;
-  out = mpz_get_si(z);
+  const int size = z->_mp_size;
+  if (size == 0) {
+    out = 0;
+    return true;
+  }
+  if (size > 1 || size < -1 || z->_mp_d[0] > static_cast<mp_limb_t>(INT64_MAX)) return false;
+  const i64 v = static_cast<i64>(z->_mp_d[0]);
+  out = size > 0 ? v : -v;
   return true;
 }
+
+bool is_one(mpz_srcptr z) { return z->_mp_size == 1 && z->_mp_d[0] == 1; }
 
 bool lcm_into(i64& acc, i64 d) {
   const i64 g = std::gcd(acc, d);
@@ -59,14 +68,18 @@ bool integer_scale(Index count, Get q, i64* out, i64& scale) {
   scale = 1;
   for (Index i = 0; i < count; ++i) {
     mpz_srcptr den = mpq_denref(q(i).get_mpq_t());
-    if (mpz_cmp_ui(den, 1) == 0) continue;
+    if (is_one(den)) continue;
     i64 d;
     if (!to_i64(den, d) || !lcm_into(scale, d)) return false;
   }
   for (Index i = 0; i < count; ++i) {
     i64 num, den;
     if (!to_i64(mpq_numref(q(i).get_mpq_t()), num) || !to_i64(mpq_denref(q(i).get_mpq_t()), den)) return false;
-    if (__builtin_mul_overflow(num, scale / den, &out[i])) return false;
+    if (scale == 1) {
+      out[i] = num;
+    } else if (__builtin_mul_overflow(num, scale / den, &out[i])) {
+      return false;
+    }
   }
   return true;
 }
@@ -91,9 +104,12 @@ bool fma128(i128& acc, i64 a, i64 b) {
   return !__builtin_add_overflow(acc, static_cast<i128>(a) * static_cast<i128>(b), &acc);
 }
 
+/// num / den in lowest terms (den > 0).
 Q make_q(i64 num, i64 den) {
-  Q q(mpz_class(static_cast<long>(num)), mpz_class(static_cast<long>(den)));
-  q.canonicalize();
+  Q q;
+  if (num == 0) return q;
+  const i64 g = std::gcd(num < 0 ? -num : num, den);
+  mpq_set_si(q.get_mpq_t(), static_cast<long>(num / g), static_cast<unsigned long>(den / g));
   return q;
 }
 
@@ -190,10 +206,14 @@ std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& pr
   cert.x = Vec<Q>::Zero(n);
   for (size_t s = 0; s < k; ++s) cert.x(basis[s]) = make_q(X[s], D);
   cert.y = Vec<Q>(m);
-  for (Index i = 0; i < m; ++i) cert.y(i) = make_q(Y[static_cast<size_t>(i)], E) * make_q(ilp.row_scale[static_cast<size_t>(i)], ilp.objective_scale);
+  for (Index i = 0; i < m; ++i) {
+    cert.y(i) = make_q(Y[static_cast<size_t>(i)], E);
+    const i64 L = ilp.row_scale[static_cast<size_t>(i)];
+    if (L != 1 || ilp.objective_scale != 1) cert.y(i) *= make_q(L, ilp.objective_scale);
+  }
   cert.value = 0;
-  const Vec<Q> c = problem.objective();
-  for (Index j : basis) cert.value += c(j) * cert.x(j);
+  if (problem.c.size() > 0)
+    for (Index j : basis) cert.value += problem.c(j) * cert.x(j);
   return cert;
 }
 

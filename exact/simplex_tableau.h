@@ -25,8 +25,10 @@ class SimplexTableau {
   /// The phase-1 start of A x + S a = b, S = diag(sign b): every row basic in its artificial, rhs = |b|.
   static SimplexTableau artificial_start(const Mat<T>& A, const Vec<T>& b);
 
+  /// Number of tableau rows (= rank of A once redundant rows are dropped).
   Index rows() const { return m_; }
-  Index cols() const { return n_; }  ///< structural columns (artificials excluded)
+  /// Number of structural columns (artificials excluded).
+  Index cols() const { return n_; }
   /// basis()[r] = variable basic in row r.
   const std::vector<Index>& basis() const { return basis_; }
   /// (B^-1 A)(r, j).
@@ -35,6 +37,7 @@ class SimplexTableau {
   const T& rhs(Index r) const { return entry(r, n_); }
   /// Row of basic column j, or -1 if j is non-basic.
   Index row_of(Index j) const { return row_of_[static_cast<size_t>(j)]; }
+  /// True if column j is basic.
   bool is_basic(Index j) const { return row_of(j) >= 0; }
   /// True if some basic variable is an artificial one.
   bool has_artificial() const;

@@ -5,7 +5,7 @@
 namespace contactcert::geometry {
 namespace {
 
-std::string text(const Point2& p) { return "(" + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")"; }
+std::string text(const Point2& p) { return std::string("(") + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")"; }
 
 FrameResult failure(FrameStatus s, std::string message) { return {s, {}, std::move(message)}; }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -43,6 +45,10 @@ void normalize(Z* v, Index k) {
     for (Index i = 0; i < k; ++i) mpz_divexact(v[i].get_mpz_t(), v[i].get_mpz_t(), g.get_mpz_t());
 }
 void normalize(double* v, Index k) {
+  // Entries below the sign tolerance are rounding noise of a cancellation: zero them before scaling
+  // (scaling would blow them up).
+  for (Index i = 0; i < k; ++i)
+    if (exact::is_zero(v[i])) v[i] = 0;
   double m = 0;
   for (Index i = 0; i < k; ++i) m = std::max(m, std::abs(v[i]));
   if (m > 0)
@@ -209,68 +215,66 @@ struct Generators {
   Mat<T> lines;
 };
 
-// Extreme rays and lineality of { x in R^n : A x <= 0, E x = 0 }.
+// Ring rows of A, without zero rows and duplicates, in lexicographic order.
 template <class T>
-Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBudget& budget) {
+std::vector<std::vector<Ring<T>>> ring_rows(const Mat<T>& A) {
   using R = Ring<T>;
-  // Restrict to the subspace E x = 0, then split off the lineality space {x : A x = 0, E x = 0}.
-  const Mat<T> V = E.rows() > 0 ? exact::null_space<T>(E) : Mat<T>(Mat<T>::Identity(n, n));
-  const Mat<T> A1 = multiply<T>(A, V);
-  const Index n1 = V.cols();
-  const Mat<T> L1 = A1.rows() > 0 ? exact::null_space<T>(A1) : Mat<T>(Mat<T>::Identity(n1, n1));
-  Generators<T> out;
-  Mat<T> lines_by_column = multiply<T>(V, L1);
-  normalize_columns<T>(lines_by_column);
-  out.lines = lines_by_column.transpose();
-  const Index k = n1 - L1.cols();
-  out.rays = Mat<T>(0, n);
-  if (k == 0) return out;
-  // Coordinates y of a complement of the lineality space: x = M y, and { y : (A M) y <= 0 } is pointed.
-  const Mat<T> W = L1.cols() > 0 ? exact::null_space<T>(Mat<T>(L1.transpose())) : Mat<T>(Mat<T>::Identity(n1, n1));
-  Mat<T> M = multiply<T>(V, W);
-  normalize_columns<T>(M);
-  const Mat<T> A2 = multiply<T>(A, M);
-
-  // Ring rows, without zero rows and duplicates, in lexicographic order.
+  const Index k = A.cols();
   std::vector<std::vector<R>> rows;
-  {
-    std::vector<T> buf(static_cast<size_t>(k));
-    std::vector<R> r(static_cast<size_t>(k));
-    for (Index i = 0; i < A2.rows(); ++i) {
-      bool zero = true;
-      for (Index j = 0; j < k; ++j) {
-        buf[static_cast<size_t>(j)] = A2(i, j);
-        if (!is_zero(A2(i, j))) zero = false;
-      }
-      if (zero) continue;
-      to_ring(buf.data(), k, r.data());
-      rows.push_back(r);
+  std::vector<T> buf(static_cast<size_t>(k));
+  std::vector<R> r(static_cast<size_t>(k));
+  for (Index i = 0; i < A.rows(); ++i) {
+    bool zero = true;
+    for (Index j = 0; j < k; ++j) {
+      buf[static_cast<size_t>(j)] = A(i, j);
+      if (!is_zero(A(i, j))) zero = false;
     }
+    if (zero) continue;
+    to_ring(buf.data(), k, r.data());
+    rows.push_back(r);
   }
   std::sort(rows.begin(), rows.end());
   rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  return rows;
+}
 
-  // Initial simplicial cone: k independent rows B (greedy), rays = columns of -B^{-1}.
+// Extreme rays of { y in R^k : a . y <= 0 for every row a } if the rows have rank k (the cone is
+// pointed), as ring vectors; nullopt if the rank is smaller.
+template <class T>
+std::optional<std::vector<std::vector<Ring<T>>>> pointed_extreme_rays(const std::vector<std::vector<Ring<T>>>& rows,
+                                                                      Index k, const DdBudget& budget) {
+  using R = Ring<T>;
+  // Initial simplicial cone: k independent rows B (greedy, fraction-free elimination in the ring).
   std::vector<std::size_t> basis;
   {
-    std::vector<Vec<T>> reduced;  // echelon rows with their pivot columns
+    std::vector<std::vector<R>> reduced;
     std::vector<Index> pivot;
+    std::vector<R> v(static_cast<size_t>(k)), tmp(static_cast<size_t>(k));
     for (std::size_t i = 0; i < rows.size() && static_cast<Index>(basis.size()) < k; ++i) {
-      Vec<T> v(k);
-      for (Index j = 0; j < k; ++j) v(j) = to_field(rows[i][static_cast<size_t>(j)], static_cast<T*>(nullptr));
+      v = rows[i];
       for (std::size_t b = 0; b < reduced.size(); ++b) {
-        const T f = v(pivot[b]) / reduced[b](pivot[b]);
-        if (!is_zero(f)) v -= f * reduced[b];
+        const R& vp = v[static_cast<size_t>(pivot[b])];
+        if (ring_sign(vp) == 0) continue;
+        // v <- piv_b * v - v_p * row_b (zero in column p), kept small.
+        const R pb = reduced[b][static_cast<size_t>(pivot[b])];
+        const R vpc = vp;
+        combine(reduced[b].data(), pb, v.data(), vpc, tmp.data(), k);
+        v.swap(tmp);
+        normalize(v.data(), k);
       }
       Index p = -1;
       for (Index j = 0; j < k; ++j)
-        if (!is_zero(v(j)) && (p < 0 || NumberTraits<T>::better_pivot(v(j), v(p)))) p = j;
+        if (ring_sign(v[static_cast<size_t>(j)]) != 0 &&
+            (p < 0 || NumberTraits<T>::better_pivot(to_field(v[static_cast<size_t>(j)], static_cast<T*>(nullptr)),
+                                                    to_field(v[static_cast<size_t>(p)], static_cast<T*>(nullptr)))))
+          p = j;
       if (p < 0) continue;
       reduced.push_back(v);
       pivot.push_back(p);
       basis.push_back(i);
     }
   }
+  if (static_cast<Index>(basis.size()) < k) return std::nullopt;
   std::vector<std::size_t> order = basis;  // processing order: basis first
   {
     std::vector<bool> in_basis(rows.size(), false);
@@ -282,7 +286,9 @@ Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBu
   for (Index i = 0; i < k; ++i)
     for (Index j = 0; j < k; ++j)
       B(i, j) = to_field(rows[basis[static_cast<size_t>(i)]][static_cast<size_t>(j)], static_cast<T*>(nullptr));
-  const Mat<T> Binv = *exact::inverse<T>(B);
+  const std::optional<Mat<T>> inv = exact::inverse<T>(B);
+  if (!inv) return std::nullopt;  // float path only: independent for the ring test, singular for rref's tolerance
+  const Mat<T>& Binv = *inv;
 
   DoubleDescription<R> dd(k, rows.size(), budget.max_rays);
   {
@@ -298,17 +304,56 @@ Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBu
     }
   }
   for (std::size_t t = static_cast<std::size_t>(k); t < order.size(); ++t) dd.add_row(rows[order[t]].data(), t);
+  std::vector<std::vector<R>> out;
+  for (std::size_t r = 0; r < dd.count(); ++r) out.emplace_back(dd.ray(r), dd.ray(r) + k);
+  return out;
+}
+
+// Extreme rays and lineality of { x in R^n : A x <= 0, E x = 0 }.
+template <class T>
+Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBudget& budget) {
+  using R = Ring<T>;
+  Generators<T> out;
+  // Fast path: no equalities and rank A = n (pointed): no change of coordinates.
+  if (E.rows() == 0) {
+    const auto rays = pointed_extreme_rays<T>(ring_rows<T>(A), n, budget);
+    if (rays) {
+      out.lines = Mat<T>(0, n);
+      out.rays = Mat<T>(static_cast<Index>(rays->size()), n);
+      for (Index r = 0; r < out.rays.rows(); ++r)
+        for (Index i = 0; i < n; ++i)
+          out.rays(r, i) = to_field((*rays)[static_cast<size_t>(r)][static_cast<size_t>(i)], static_cast<T*>(nullptr));
+      return out;
+    }
+  }
+  // Restrict to the subspace E x = 0, then split off the lineality space {x : A x = 0, E x = 0}.
+  const Mat<T> V = E.rows() > 0 ? exact::null_space<T>(E) : Mat<T>(Mat<T>::Identity(n, n));
+  const Mat<T> A1 = multiply<T>(A, V);
+  const Index n1 = V.cols();
+  const Mat<T> L1 = A1.rows() > 0 ? exact::null_space<T>(A1) : Mat<T>(Mat<T>::Identity(n1, n1));
+  Mat<T> lines_by_column = multiply<T>(V, L1);
+  normalize_columns<T>(lines_by_column);
+  out.lines = lines_by_column.transpose();
+  const Index k = n1 - L1.cols();
+  out.rays = Mat<T>(0, n);
+  if (k == 0) return out;
+  // Coordinates y of a complement of the lineality space: x = M y, and { y : (A M) y <= 0 } is pointed.
+  const Mat<T> W = L1.cols() > 0 ? exact::null_space<T>(Mat<T>(L1.transpose())) : Mat<T>(Mat<T>::Identity(n1, n1));
+  Mat<T> M = multiply<T>(V, W);
+  normalize_columns<T>(M);
+  const auto rays = pointed_extreme_rays<T>(ring_rows<T>(multiply<T>(A, M)), k, budget);
+  if (!rays) throw std::logic_error("double description: rank deficient after removing the lineality space");
 
   // Back to x = M y.
-  out.rays = Mat<T>(static_cast<Index>(dd.count()), n);
+  out.rays = Mat<T>(static_cast<Index>(rays->size()), n);
   std::vector<T> x(static_cast<size_t>(n));
   std::vector<R> xr(static_cast<size_t>(n));
-  for (std::size_t r = 0; r < dd.count(); ++r) {
-    const R* y = dd.ray(r);
+  for (std::size_t r = 0; r < rays->size(); ++r) {
+    const std::vector<R>& y = (*rays)[r];
     for (Index i = 0; i < n; ++i) {
       T s = T(0);
       for (Index j = 0; j < k; ++j)
-        if (ring_sign(y[j]) != 0) s += M(i, j) * to_field(y[j], static_cast<T*>(nullptr));
+        if (ring_sign(y[static_cast<size_t>(j)]) != 0) s += M(i, j) * to_field(y[static_cast<size_t>(j)], static_cast<T*>(nullptr));
       x[static_cast<size_t>(i)] = s;
     }
     to_ring(x.data(), n, xr.data());

@@ -218,6 +218,20 @@ CertificateCheck check_solvable(const JsonInput& cert, const CheckData& c) {
   return out;
 }
 
+/// build_Y scales row r of [C | -d] by s_r > 0; a Farkas vector u of the scaled rows is (s_r u_r) for C.
+Vec<Q> unscale_rows(const StandardPolyhedron<Q>& Y, const QuasistaticProblem& p, const Vec<Q>& u) {
+  const Mat<Q> C = build_C(p);
+  Vec<Q> out(u.size());
+  for (Index r = 0; r < u.size(); ++r) {
+    Q s = 0;
+    for (Index c = 0; c < C.cols() && sgn(s) == 0; ++c)
+      if (sgn(C(r, c)) != 0) s = Y.A(r, c) / C(r, c);
+    if (sgn(s) == 0) s = Y.b(r) / Q(-p.d(r));
+    out(r) = s * u(r);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>& result) {
@@ -235,7 +249,9 @@ std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>&
     } else {
       n["empty"] = node.side == Side::kX ? "X" : "Y";
       // Quasistatic X: state the certificate as w = Z^T u, independent of the choice of Z.
-      const Vec<Q> u = problem.quasistatic && node.side == Side::kX ? Vec<Q>(ZT * node.farkas) : node.farkas;
+      Vec<Q> u = node.farkas;
+      if (problem.quasistatic && node.side == Side::kX) u = ZT * node.farkas;
+      if (problem.quasistatic && node.side == Side::kY) u = unscale_rows(problem.ucp.Y, *problem.quasistatic, u);
       n["farkas"] = integers(exact::primitive(u));
     }
     nodes.push_back(n);

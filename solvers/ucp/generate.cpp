@@ -4,6 +4,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "exact/rational_text.h"
+
 namespace contactcert::solvers::ucp {
 
 namespace {
@@ -57,7 +59,9 @@ UcpProblem generate_random_problem(const RandomProblemOptions& o, std::mt19937_6
   p.Jt = Mat<Q>::Zero(nc, nt);
   for (int i = 0; i < nc; ++i) p.Jn(i, 2 * i) = 1, p.Jt(i, 2 * i + 1) = 1;
   p.mu = Vec<Q>(nc);
-  for (int i = 0; i < nc; ++i) p.mu(i) = o.mu_max * uniform_q(rng, 1, 19, 20);
+  Q mu_max = o.mu_max;
+  mu_max.canonicalize();
+  for (int i = 0; i < nc; ++i) p.mu(i) = mu_max * uniform_q(rng, 1, 19, 20);
   // Friction-consistent forces: |c_t| <= mu c_n (7); then (2), (3) give g_obj and tau - g_man.
   Vec<Q> cn(nc), ct(nc);
   for (int i = 0; i < nc; ++i) {
@@ -100,7 +104,7 @@ UcpProblem generate_random_problem(const RandomProblemOptions& o, std::mt19937_6
   u.quasistatic = p;
   u.ucp = build_ucp(p);
   u.source = "random problem (Pang, Trinkle, Lo section 5): nc=" + std::to_string(nc) + " mu in (0," +
-             o.mu_max.get_str() + ") |abar|=" + std::to_string(na);
+             exact::to_string(mu_max) + ") |abar|=" + std::to_string(na);
   return u;
 }
 

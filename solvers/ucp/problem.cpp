@@ -107,20 +107,20 @@ void validate(const QuasistaticProblem& p, const std::string& file) {
   auto fail = [&](const std::string& path, const std::string& what) { throw InputError(file, path, what); };
   const Index m = p.nq + static_cast<Index>(p.abar.size());
   if (p.P.rows() != 2 * p.nc || p.P.cols() != m)
-    fail(".P", "expected a 2nc x (nq + |abar|) matrix");
-  if (p.Jn.rows() != p.nc || p.Jn.cols() != p.ntheta) fail(".Jn", "expected an nc x ntheta matrix");
-  if (p.Jt.rows() != p.nc || p.Jt.cols() != p.ntheta) fail(".Jt", "expected an nc x ntheta matrix");
-  if (p.mu.size() != p.nc) fail(".mu", "expected nc entries");
-  if (p.d.size() != p.nc + m) fail(".d", "expected nc + nq + |abar| entries");
+    fail("$.P", "expected a 2nc x (nq + |abar|) matrix");
+  if (p.Jn.rows() != p.nc || p.Jn.cols() != p.ntheta) fail("$.Jn", "expected an nc x ntheta matrix");
+  if (p.Jt.rows() != p.nc || p.Jt.cols() != p.ntheta) fail("$.Jt", "expected an nc x ntheta matrix");
+  if (p.mu.size() != p.nc) fail("$.mu", "expected nc entries");
+  if (p.d.size() != p.nc + m) fail("$.d", "expected nc + nq + |abar| entries");
   const Mat<Q> J = J_stacked(p);
   for (std::size_t k = 0; k < p.abar.size(); ++k) {
     const Index col = p.nq + static_cast<Index>(k);
     if (p.P.col(col) != J.col(p.abar[k]))
-      fail(".P", "column " + std::to_string(col) + " (J_abar) must equal column " + std::to_string(p.abar[k]) +
+      fail("$.P", "column " + std::to_string(col) + " (J_abar) must equal column " + std::to_string(p.abar[k]) +
                      " of [Jn; Jt] (joint " + std::to_string(p.abar[k]) + " is not in alpha)");
   }
   for (Index i = 0; i < p.nc; ++i)
-    if (sgn(p.mu(i)) < 0) fail(".mu[" + std::to_string(i) + "]", "expected a friction coefficient >= 0");
+    if (sgn(p.mu(i)) < 0) fail("$.mu[" + std::to_string(i) + "]", "expected a friction coefficient >= 0");
 }
 
 UcpProblem read_ucp_problem(const JsonInput& in) {
@@ -153,7 +153,12 @@ StandardPolyhedron<Q> build_X(const QuasistaticProblem& p) {
     B(nc + i, 2 * nc + i) = -1;
   }
   // Section 2: Z a = 0 iff a = P b for some b, so Z spans the left null space of P.
-  const Mat<Q> Z = exact::left_null_space<Q>(p.P);
+  Mat<Q> Z = exact::left_null_space<Q>(p.P);
+  // Rows scaled to primitive integer vectors: the same X with smaller numbers for the LPs.
+  for (Index r = 0; r < Z.rows(); ++r) {
+    const std::vector<exact::Z> row = exact::primitive(Vec<Q>(Z.row(r).transpose()));
+    for (Index c = 0; c < Z.cols(); ++c) Z(r, c) = Q(row[static_cast<std::size_t>(c)]);
+  }
   StandardPolyhedron<Q> X;
   X.A = Z * B;
   X.b = -(Z * p.J_alpha_theta_alpha());
@@ -188,6 +193,14 @@ StandardPolyhedron<Q> build_Y(const QuasistaticProblem& p) {
   StandardPolyhedron<Q> Y;
   Y.A = build_C(p);
   Y.b = -p.d;  // 0 = C y + d
+  // Each row [C | -d] scaled to a primitive integer vector: the same Y with smaller numbers for the LPs.
+  for (Index r = 0; r < Y.A.rows(); ++r) {
+    Vec<Q> row(Y.A.cols() + 1);
+    row << Y.A.row(r).transpose(), Y.b(r);
+    const std::vector<exact::Z> z = exact::primitive(row);
+    for (Index c = 0; c < Y.A.cols(); ++c) Y.A(r, c) = Q(z[static_cast<std::size_t>(c)]);
+    Y.b(r) = Q(z.back());
+  }
   return Y;
 }
 

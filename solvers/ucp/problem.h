@@ -65,9 +65,10 @@ UcpProblem load_ucp_problem(const std::string& path);
 void validate(const QuasistaticProblem& p, const std::string& file = "");
 
 /// X = {(v_n, v_t^+, v_t^-) >= 0 : Z_n v_n + Z_t (v_t^+ - v_t^-) + Z J_alpha theta_dot_alpha = 0} with
-/// Z spanning the left null space of P, computed exactly (section 2).
+/// Z spanning the left null space of P, computed exactly (section 2), its rows scaled to primitive integers.
 StandardPolyhedron<Q> build_X(const QuasistaticProblem& p);
-/// Y = {(c_n, s_t^+, s_t^-) >= 0 : C y + d = 0} (section 2).
+/// Y = {(c_n, s_t^+, s_t^-) >= 0 : C y + d = 0} (section 2), each row of [C | -d] scaled by a positive factor
+/// to primitive integers (the same set; smaller numbers for the LPs).
 StandardPolyhedron<Q> build_Y(const QuasistaticProblem& p);
 /// The matrix C of section 2.
 Mat<Q> build_C(const QuasistaticProblem& p);

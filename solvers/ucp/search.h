@@ -34,7 +34,7 @@ struct SearchNode {
 struct SearchOptions {
   long max_nodes = 200000;          ///< node budget: the search ends `unknown` when it runs out
   bool bilinear_first = true;       ///< run the bilinear algorithm on X x Y before branching (SPEC default)
-  BilinearOptions heuristic{Step3Rule::kModified, 20, 2000, Arith::kVerified};
+  BilinearOptions heuristic{Step3Rule::kModified, 20, 2000, 100000, Arith::kVerified};
   int node_rounds = 3;              ///< Step-1 rounds of the heuristic at each node
 };
 

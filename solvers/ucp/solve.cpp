@@ -1,5 +1,6 @@
 #include "solvers/ucp/solve.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -8,6 +9,10 @@
 namespace contactcert::solvers::ucp {
 
 namespace {
+
+/// Budgets of the bilinear phase that precedes the complete search (its Step 3 is the costly part).
+constexpr int kCompleteRandomMoves = 2;
+constexpr long kCompleteMaxBases = 20;
 
 template <class T>
 void fill_pair(UcpReport& rep, const Vec<T>& x, const Vec<T>& y, const UcpProblem& problem) {
@@ -81,6 +86,9 @@ void run(const UcpProblem& problem, const UcpOptions& opts, UcpReport& rep) {
   so.max_nodes = opts.max_nodes;
   so.heuristic = bo;
   so.heuristic.step3 = Step3Rule::kModified;
+  // The search decides; the bilinear phase before it only has to find easy solutions quickly.
+  so.heuristic.max_random_moves = std::min(opts.max_random_moves, kCompleteRandomMoves);
+  so.heuristic.max_bases = std::min(opts.max_bases, kCompleteMaxBases);
   SearchResult<T> s = complete_search(u, so, rng);
   rep.status = s.status;
   rep.reason = s.reason;

@@ -94,34 +94,41 @@ ConeForm<T> cone_form(const geometry::PlanarScene& scene, const ContactModel<T>&
   // eq. (17): P = E B.
   out.P.resize(m, 3);
   for (Eigen::Index r = 0; r < m; ++r) out.P.row(r) = model.B.row(rows[static_cast<std::size_t>(r)]);
-  // eq. (15): K = E C N R S V, column by column. C = [I  -A] (eq. 8).
-  std::vector<Mat<T>> columns;
-  auto force_column = [&](Eigen::Index i, const T& coef) {
-    Mat<T> col(m, 1);
+  // eq. (15): K = E C N R S V, column by column, written in place. C = [I  -A] (eq. 8).
+  Eigen::Index columns = 0;
+  for (Eigen::Index j = 0; j < n4; ++j) columns += y.eliminated(j) ? 0 : 1;
+  out.K = Mat<T>::Zero(m, columns);
+  T scratch;
+  // K(:, c) = C(:, 2n + i) + coef * C(:, 3n + i) on the kept rows.
+  auto force_column = [&](Eigen::Index c, Eigen::Index i, const T& coef) {
     for (Eigen::Index r = 0; r < m; ++r) {
       const Eigen::Index row = rows[static_cast<std::size_t>(r)];
-      col(r, 0) = -model.A(row, i) - coef * model.A(row, n + i);
+      T& k = out.K(r, c);
+      k = -model.A(row, i);
+      if (!exact::is_zero(coef)) {
+        scratch = coef * model.A(row, n + i);
+        k -= scratch;
+      }
     }
-    return col;
   };
+  Eigen::Index c = 0;
   for (Eigen::Index j = 0; j < n4; ++j) {
     if (y.eliminated(j)) continue;
     if (j < n2) {
       const SignConstraint s = y.sign[static_cast<std::size_t>(j)];
-      Mat<T> col = Mat<T>::Zero(m, 1);
       for (Eigen::Index r = 0; r < m; ++r)
-        if (rows[static_cast<std::size_t>(r)] == j) col(r, 0) = s == SignConstraint::kNegative ? T(-1) : T(1);
-      columns.push_back(col);
+        if (rows[static_cast<std::size_t>(r)] == j) out.K(r, c) = s == SignConstraint::kNegative ? T(-1) : T(1);
       out.strict.push_back(s == SignConstraint::kPositive || s == SignConstraint::kNegative);
       out.acceleration.push_back(true);
       out.names.push_back(std::string(s == SignConstraint::kNegative ? "-a" : "a") + fixel_name(j % n) + (j < n ? "n" : "t"));
+      ++c;
       continue;
     }
     const Eigen::Index i = (j - n2) % n;
     const FrictionConstraint f = y.friction[static_cast<std::size_t>(i)];
     const T mu = from_exact<T>(y.mu[static_cast<std::size_t>(i)]);
     T coef = T(0);
-    std::string name = "c" + fixel_name(i);
+    std::string name = std::string("c") + fixel_name(i);
     if (j < 3 * n) {  // the c_n column, combined with c_t by R or S
       if (f == FrictionConstraint::kStaticCone || f == FrictionConstraint::kLeftEdge) {
         coef = -mu;
@@ -136,13 +143,11 @@ ConeForm<T> cone_form(const geometry::PlanarScene& scene, const ContactModel<T>&
       coef = mu;
       name += "[n+mu t]";
     }
-    columns.push_back(force_column(i, coef));
+    force_column(c++, i, coef);
     out.strict.push_back(false);
     out.acceleration.push_back(false);
     out.names.push_back(name);
   }
-  out.K.resize(m, static_cast<Eigen::Index>(columns.size()));
-  for (std::size_t c = 0; c < columns.size(); ++c) out.K.col(static_cast<Eigen::Index>(c)) = columns[c].col(0);
   return out;
 }
 

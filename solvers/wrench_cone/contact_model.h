@@ -19,16 +19,29 @@ struct ContactModel {
   Mat<T> J;  ///< 3 x 2n: columns n_1..n_n then t_1..t_n, as wrenches (f_x, f_y, torque about the com)
   Mat<T> A;  ///< 2n x 2n, A = J^T M^-1 J (eq. 6)
   Mat<T> B;  ///< 2n x 3,  B = J^T M^-1 (eq. 6)
-  Mat<T> C;  ///< 2n x 4n, C = [I  -A] (eq. 8)
   Eigen::Index fixels() const { return J.cols() / 2; }
+  /// C = [I  -A] (eq. 8), 2n x 4n; built on demand (cone_form reads A directly).
+  Mat<T> C() const {
+    const Eigen::Index n2 = A.rows();
+    Mat<T> out = Mat<T>::Zero(n2, 2 * n2);
+    for (Eigen::Index i = 0; i < n2; ++i) {
+      out(i, i) = T(1);
+      for (Eigen::Index j = 0; j < n2; ++j) out(i, n2 + j) = -A(i, j);
+    }
+    return out;
+  }
 };
 
-/// The Jacobian J of eq. (4), exactly: column i is the wrench of a unit-length-of-n_i force along
-/// n_i applied at p_i, column n + i the same for t_i; torques about the centre of mass.
+/// The Jacobian J of eq. (4), exactly: column i is the wrench of a force n_i applied at p_i, column
+/// n + i the same for t_i; torques about the centre of mass. Each frame (n_i, t_i) is first scaled by
+/// a positive factor that makes n_i a primitive integer vector and both torques integers (the cones
+/// do not change, SPEC section 3, and the exact arithmetic stays on small integers).
 Mat<Q> jacobian(const geometry::PlanarScene& scene);
 
-/// J, A, B, C for the scene, with M = diag(1, 1, I/m) (only I/m matters: the cones are invariant
-/// under scaling M).
+/// J, A, B, C for the scene, with M^-1 = diag(1, 1, m/I) scaled by the positive numerator of I/m
+/// (only I/m matters and the cones are invariant under scaling M; with integer J, A and B are
+/// integer matrices). For M = I (I/m = 1) these are literally the paper's matrices. The float model
+/// (T = double) uses unit normals and M^-1 = diag(1, 1, m/I) instead, to keep entries of order one.
 template <class T>
 ContactModel<T> contact_model(const geometry::PlanarScene& scene);
 

@@ -17,6 +17,16 @@ enum class Route { kPaper, kProject };
 
 enum class ConeStatus { kEmpty, kNonEmpty };
 
+/// What is done to K z = P g before a route sees it. kRowReduce multiplies both sides by an
+/// invertible T with T P = [P1; 0] (row echelon form): the rows 0 = K2 z then constrain z alone and
+/// are kept as a basis of their span, so pos(K) is converted in 3 + rank(K2) dimensions instead of
+/// 2n (for 'n...n' modes, K2 = 0 and the conversion is 3-dimensional). Same cone, exactly.
+enum class Preconditioning { kNone, kRowReduce };
+
+/// The equivalent row-reduced problem T K z = T P g described at Preconditioning::kRowReduce.
+template <class T>
+geometry::ProjectionProblem<T> row_reduced(const ConeForm<T>& form);
+
 /// The wrench cone of one mode with its evidence.
 template <class T>
 struct WrenchCone {
@@ -31,12 +41,13 @@ struct WrenchCone {
 /// encoded as in geometry::NncForm (equalities = identity and one zero strict row).
 template <class T>
 geometry::FaceCone<T> wrench_cone_face(const geometry::PlanarScene& scene, const ContactModel<T>& model,
-                                       const ModeString& mode, Route route, const geometry::DdBudget& budget = {});
+                                       const ModeString& mode, Route route, const geometry::DdBudget& budget = {},
+                                       Preconditioning pre = Preconditioning::kRowReduce);
 
 /// The wrench cone of `mode` in both forms. `mode` must fit the scene (parse_mode).
 template <class T>
 WrenchCone<T> wrench_cone(const geometry::PlanarScene& scene, const ModeString& mode, Route route,
-                          const geometry::DdBudget& budget = {});
+                          const geometry::DdBudget& budget = {}, Preconditioning pre = Preconditioning::kRowReduce);
 
 /// Is this face form the empty-cone encoding of geometry::NncForm?
 template <class T>
@@ -50,10 +61,12 @@ geometry::AffineFace<T> wrench_set_with_minimum_acceleration(const geometry::Pla
                                                              const Q& a_min, const geometry::DdBudget& budget = {});
 
 #define CONTACTCERT_WRENCH_CONE_EXTERN(T)                                                                         \
+  extern template geometry::ProjectionProblem<T> row_reduced<T>(const ConeForm<T>&);                             \
   extern template geometry::FaceCone<T> wrench_cone_face<T>(const geometry::PlanarScene&, const ContactModel<T>&,  \
-                                                            const ModeString&, Route, const geometry::DdBudget&);  \
+                                                            const ModeString&, Route, const geometry::DdBudget&,   \
+                                                            Preconditioning);                                      \
   extern template WrenchCone<T> wrench_cone<T>(const geometry::PlanarScene&, const ModeString&, Route,             \
-                                               const geometry::DdBudget&);                                         \
+                                               const geometry::DdBudget&, Preconditioning);                        \
   extern template bool is_empty_cone<T>(const geometry::FaceCone<T>&);                                             \
   extern template geometry::AffineFace<T> wrench_set_with_minimum_acceleration<T>(                                 \
       const geometry::PlanarScene&, const ModeString&, const Q&, const geometry::DdBudget&);

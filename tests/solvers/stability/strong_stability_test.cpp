@@ -4,9 +4,14 @@
 
 #include <random>
 
+#include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/nnc_cone.h"
+#include "geometry/span_cone.h"
 #include "geometry/scene_json.h"
+#include "solvers/stability/finger_push.h"
+#include "solvers/stability/margin.h"
+#include "solvers/stability/stable_region.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 
 namespace contactcert::solvers {
@@ -124,6 +129,95 @@ TEST(StrongStability, MembershipLpsAgreeWithTheWrenchConeAlgorithm) {
                       exact::StrictStatus::kFeasible;
       EXPECT_EQ(lp, geometry::contains_point<Q>(cones[i], g)) << "mode " << modes[i].text() << " g = " << g.transpose();
     }
+  }
+}
+
+TEST(StableRegion, EveryCellLabelEqualsTheOneWrenchVerdict) {
+  // The cells come from the cones' planes; each cell's label (from the cones) must equal the LP verdict
+  // at its representative, exactly, for both friction values.
+  for (const char* mu : {"1.2", "0.3"}) {
+    const auto scene = section7(mu);
+    const auto region = stable_region<Q>(scene);
+    int strong = 0, weak = 0, unstable = 0;
+    for (const auto& cell : region.cells) {
+      const auto r = strong_stability<Q>(scene, cell.point, {exact::Arith::kExact});
+      EXPECT_EQ(r.verdict, cell.label) << "mu " << mu << " cell at " << cell.point.transpose();
+      (cell.label == StabilityVerdict::kStronglyStable ? strong
+       : cell.label == StabilityVerdict::kWeaklyStable ? weak
+                                                       : unstable)++;
+    }
+    EXPECT_GT(strong, 0);  // e.g. pushing straight down
+    if (std::string(mu) == "0.3") EXPECT_GT(unstable, 0);
+    if (std::string(mu) == "1.2") EXPECT_GT(weak, 0) << "e.g. the down-left push";
+    if (std::string(mu) == "1.2") EXPECT_EQ(unstable, 0) << "force closure: every wrench can be resisted";
+  }
+}
+
+TEST(StableRegion, SixtyRandomWrenchesAgreeWithTheirCellLabel) {
+  const auto scene = section7("0.5");
+  const auto region = stable_region<Q>(scene);
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> d(-4, 4);
+  for (int t = 0; t < 60; ++t) {
+    const Vec<Q> g = wrench(d(rng), d(rng), d(rng));
+    EXPECT_EQ(region.label(g), strong_stability<Q>(scene, g).verdict) << g.transpose();
+  }
+}
+
+TEST(FingerPushes, SquareWithTwoFrictionlessFixelsByHand) {
+  // Square [0,2]^2 (com (1,1)), frictionless fixels under the bottom midpoint and left of the left
+  // midpoint. Their contact wrenches are (0,1,0) and (1,0,0), so a resting solution needs zero torque
+  // and f_x, f_y <= 0. A push on the top edge at (x,2) gives g = (0,-1,1-x): only x = 1 rests, and there
+  // a moving solution would have vdot^T M vdot <= vdot^T g = -ydd <= 0 (a_1n = ydd >= 0): strongly stable.
+  // The right edge at (2,y) gives (-1,0,y-1): the same at y = 1. Bottom and left pushes pull the square
+  // off a fixel: unstable.
+  const auto scene = geometry::read_planar_scene(exact::JsonInput::parse(R"({"kind": "planar",
+      "workpiece": {"shape": {"type": "polygon", "vertices": [[0,0],[2,0],[2,2],[0,2]]}},
+      "fixels": [{"position": [1, 0]}, {"position": [0, 1]}], "mu_s": 0, "mu_k": 0})",
+                                                                         "square.json"));
+  const auto region = stable_region<Q>(scene);
+  const auto pushes = finger_pushes<Q>(scene, region);
+  std::vector<std::string> got;
+  for (const auto& p : pushes.edges)
+    got.push_back(std::to_string(p.edge) + (p.from_closed ? "[" : "(") + exact::to_string(p.from) + "," +
+                  exact::to_string(p.to) + (p.to_closed ? "]" : ")") + verdict_name(p.label));
+  const std::vector<std::string> expected{
+      "0(0,1)unstable",         "1(0,1/2)unstable", "1[1/2,1/2]strongly_stable", "1(1/2,1)unstable",
+      "2(0,1/2)unstable",       "2[1/2,1/2]strongly_stable", "2(1/2,1)unstable", "3(0,1)unstable"};
+  EXPECT_EQ(got, expected);
+}
+
+TEST(Margin, SquaredDistanceToAQuarterPlaneByHand) {
+  geometry::SpanCone<Q> c;
+  c.dim = 3;
+  c.rays = exact::Mat<Q>(2, 3);
+  c.rays << 1, 0, 0, 0, 1, 0;
+  c.lines = exact::Mat<Q>(0, 3);
+  EXPECT_EQ(squared_distance<Q>(wrench(-1, -1, 5), c), 27);  // nearest point: the apex
+  EXPECT_EQ(squared_distance<Q>(wrench(1, -1, 2), c), 5);    // nearest point: (1,0,0) on a ray
+  EXPECT_EQ(squared_distance<Q>(wrench(1, 1, 1), c), 1);     // nearest point: (1,1,0) inside the sector
+  EXPECT_EQ(squared_distance<Q>(wrench(2, 3, 0), c), 0);
+}
+
+TEST(Margin, BallOfTheMarginStaysStronglyStable) {
+  // Section 8: every wrench within the margin of a strongly stable biasing wrench is strongly stable.
+  const auto scene = section7("1.2");
+  const auto region = stable_region<Q>(scene);
+  const Vec<Q> g = wrench(1, -2, 0);
+  ASSERT_EQ(region.label(g), StabilityVerdict::kStronglyStable);
+  const auto m = stability_margin<Q>(region, g);
+  ASSERT_GT(m.squared_radius, 0);
+  std::mt19937_64 rng(9);
+  std::uniform_int_distribution<int> d(-20, 20);
+  for (int t = 0; t < 200; ++t) {
+    Vec<Q> delta = wrench(d(rng), d(rng), d(rng));
+    const Q n2 = delta.dot(delta);
+    if (n2 == 0) continue;
+    // Scale delta to squared length just below the margin: |delta|^2 = margin * 99/100 (a rational factor
+    // on the squared length is enough to stay inside: scale by s with s^2 <= 99/100 * margin / n2).
+    Q s2 = m.squared_radius * Q(99, 100) / n2, s = 1;
+    while (s * s > s2) s /= 2;
+    EXPECT_EQ(region.label(Vec<Q>(g + s * delta)), StabilityVerdict::kStronglyStable);
   }
 }
 

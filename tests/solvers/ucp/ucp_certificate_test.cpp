@@ -1,0 +1,126 @@
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "exact/json_input.h"
+#include "solvers/ucp/certificate.h"
+#include "solvers/ucp/generate.h"
+#include "solvers/ucp/search.h"
+
+namespace contactcert::solvers::ucp {
+namespace {
+
+std::string scene(int k) { return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json"; }
+
+CertificateCheck check_text(const std::string& text) {
+  return check_ucp_certificate(exact::JsonInput::parse(text, "certificate"));
+}
+
+std::string jammed_text(const UcpProblem& p) {
+  std::mt19937_64 rng(1);
+  const SearchResult<Q> s = complete_search(p.ucp, SearchOptions{}, rng);
+  EXPECT_EQ(s.status, UcpStatus::kJammed);
+  return jammed_certificate(p, s);
+}
+
+/// Adds 1 to the integer string at j[path...].
+void bump(nlohmann::json& v) { v = exact::Z(exact::Z(v.get<std::string>(), 10) + 1).get_str(); }
+
+TEST(UcpCertificate, DataSet4JammedCertificateIsAcceptedAndEveryFarkasEntryMatters) {
+  const std::string text = jammed_text(load_ucp_problem(scene(4)));
+  const CertificateCheck ok = check_text(text);
+  ASSERT_EQ(ok.verdict, CertificateVerdict::kValid) << ok.reason;
+  EXPECT_GT(ok.leaves, 1);
+  const nlohmann::json j = nlohmann::json::parse(text);
+  int changed = 0, rejected = 0;
+  for (std::size_t k = 0; k < j["nodes"].size(); ++k) {
+    if (!j["nodes"][k].contains("farkas")) continue;
+    for (std::size_t e = 0; e < j["nodes"][k]["farkas"].size(); ++e) {
+      nlohmann::json t = j;
+      bump(t["nodes"][k]["farkas"][e]);
+      ++changed;
+      rejected += check_text(t.dump()).verdict == CertificateVerdict::kInvalid;
+    }
+  }
+  // X-side vectors must satisfy w^T P = 0 exactly, so any change breaks them; Y-side vectors almost always.
+  EXPECT_GT(changed, 10);
+  EXPECT_GE(rejected, changed - 2);
+}
+
+TEST(UcpCertificate, ChangingTheProblemOrTheTreeIsRejected) {
+  const std::string text = jammed_text(load_ucp_problem(scene(4)));
+  const nlohmann::json j = nlohmann::json::parse(text);
+  // A certificate stays valid for nearby problems that are jammed for the same reasons (e.g. another
+  // theta_dot), so the changes below are ones that must break it.
+  {  // a wrench entry: the X-side vectors w satisfy w^T P = 0 only for the original P
+    nlohmann::json t = j;
+    t["problem"]["P"][0][0] = "0.805";
+    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+  }
+  {  // no gravity: y = 0 is in Y and the problem becomes solvable, so no proof of jamming can pass
+    nlohmann::json t = j;
+    t["problem"]["d"][4] = "0";
+    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+  }
+  {  // a branch index
+    nlohmann::json t = j;
+    t["nodes"][0]["branch"] = (t["nodes"][0]["branch"].get<int>() + 1) % 9;
+    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+  }
+  {  // a child reference that makes a node unreachable / reached twice
+    nlohmann::json t = j;
+    t["nodes"][0]["y_zero"] = t["nodes"][0]["x_zero"];
+    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+  }
+  {  // the root alone is not a proof
+    nlohmann::json t = j;
+    t["nodes"] = nlohmann::json::array({j["nodes"][1]});
+    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+  }
+}
+
+TEST(UcpCertificate, SolvableCertificatesOfDataSets1To3AreAcceptedAndTamperingIsRejected) {
+  for (int k = 1; k <= 3; ++k) {
+    const UcpProblem p = load_ucp_problem(scene(k));
+    std::mt19937_64 rng(1);
+    const SearchResult<Q> s = complete_search(p.ucp, SearchOptions{}, rng);
+    ASSERT_EQ(s.status, UcpStatus::kSolvable);
+    const std::string text = solvable_certificate(p, s.x, s.y);
+    EXPECT_EQ(check_text(text).verdict, CertificateVerdict::kValid);
+    nlohmann::json t = nlohmann::json::parse(text);
+    for (std::size_t e = 0; e < t["y"].size(); ++e)
+      if (t["y"][e] != "0") {
+        t["y"][e] = "1";
+        break;
+      }
+    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+  }
+}
+
+TEST(UcpCertificate, RandomAndReductionJammedCertificatesVerify) {
+  int checked = 0;
+  for (int seed = 0; seed < 16; ++seed) {
+    std::mt19937_64 gen(seed);
+    UcpProblem p;
+    if (seed % 2 == 0) {
+      RandomProblemOptions o;
+      o.nc = 3 + seed % 3;
+      o.mu_max = Q(3, 2);
+      o.abar_size = seed % 4;
+      p = generate_random_problem(o, gen);
+    } else {
+      p = reduction_problem(random_zero_one(2, 4, false, gen));
+    }
+    std::mt19937_64 rng(seed);
+    const SearchResult<Q> s = complete_search(p.ucp, SearchOptions{}, rng);
+    if (s.status != UcpStatus::kJammed) continue;
+    ++checked;
+    const CertificateCheck c = check_text(jammed_certificate(p, s));
+    EXPECT_EQ(c.verdict, CertificateVerdict::kValid) << "seed " << seed << ": " << c.reason;
+  }
+  EXPECT_GE(checked, 4);
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::ucp

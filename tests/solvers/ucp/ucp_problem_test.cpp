@@ -1,0 +1,205 @@
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "exact/input_error.h"
+#include "exact/linalg.h"
+#include "solvers/ucp/generate.h"
+#include "solvers/ucp/problem.h"
+
+namespace contactcert::solvers::ucp {
+namespace {
+
+using exact::InputError;
+using exact::JsonInput;
+
+std::string scene(int k) { return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json"; }
+
+Q frac(long a, long b) {
+  Q q(a, b);
+  q.canonicalize();
+  return q;
+}
+
+UcpProblem parse(const std::string& text) { return read_ucp_problem(JsonInput::parse(text, "test.json")); }
+
+/// A small valid problem with |abar| = 1 (joint 5), as JSON to be edited by the bad-input table.
+nlohmann::json small_problem() {
+  return nlohmann::json::parse(R"({
+    "kind": "quasistatic", "nc": 2, "nq": 3, "ntheta": 4,
+    "P": [["1","0","0","0"], ["0","1","1","0"], ["0","1","0","0"], ["-1","0","0","1"]],
+    "Jn": [[1,0,0,0],[0,0,1,0]], "Jt": [[0,1,0,0],[0,0,0,1]],
+    "theta_dot": ["0.5", "-1", "0.25", null],
+    "alpha": [0, 1, 2],
+    "d": [0, 0, "0", "-1", "0", "0.5"],
+    "mu": ["0.5", "1/3"] })");
+}
+
+TEST(UcpProblem, DataSetsParseExactlyAsWrittenInThePaper) {
+  const UcpProblem p1 = load_ucp_problem(scene(1));
+  ASSERT_TRUE(p1.quasistatic);
+  const QuasistaticProblem& q = *p1.quasistatic;
+  EXPECT_EQ(q.P(0, 0), frac(966, 1000));
+  EXPECT_EQ(q.P(4, 2), frac(-145, 100));
+  EXPECT_EQ(q.theta_dot(1), frac(995, 1000));
+  EXPECT_EQ(q.Jn(2, 4), 1);  // erratum: the third row of Jn is [0 0 0 0 1 0]
+  EXPECT_EQ(q.g_obj(), (Vec<Q>(3) << 0, -1, 0).finished());
+  EXPECT_EQ(q.mu(2), Q(3, 10));
+  EXPECT_TRUE(q.abar.empty());
+  const UcpProblem p4 = load_ucp_problem(scene(4));
+  EXPECT_EQ(p4.quasistatic->mu, (Vec<Q>(3) << Q(7, 10), Q(9, 10), Q(9, 10)).finished());
+  EXPECT_EQ(p4.quasistatic->P, load_ucp_problem(scene(2)).quasistatic->P);
+}
+
+TEST(UcpProblem, XIsTheSetOfContactVelocitiesReachableByQDotAndThetaAbar) {
+  for (const UcpProblem& u : {load_ucp_problem(scene(1)), parse(small_problem().dump())}) {
+    const QuasistaticProblem& p = *u.quasistatic;
+    const Mat<Q> Z = exact::left_null_space<Q>(p.P);
+    EXPECT_TRUE((Z * p.P).isZero());
+    EXPECT_EQ(Z.rows(), 2 * p.nc - exact::rank<Q>(p.P));
+    // Any q_dot, theta_abar gives v = P [q_dot; -theta_abar] - J_alpha theta_alpha; split v_t into +/- parts:
+    // that x must satisfy X's equations.
+    std::mt19937_64 rng(3);
+    std::uniform_int_distribution<int> d(-9, 9);
+    for (int t = 0; t < 20; ++t) {
+      Vec<Q> b(p.P.cols());
+      for (Eigen::Index k = 0; k < b.size(); ++k) b(k) = Q(d(rng), 7);
+      const Vec<Q> v = p.P * b - p.J_alpha_theta_alpha();
+      Vec<Q> x = Vec<Q>::Zero(3 * p.nc);
+      for (int i = 0; i < p.nc; ++i) {
+        x(i) = v(i);
+        (sgn(v(p.nc + i)) > 0 ? x(p.nc + i) : x(2 * p.nc + i)) = abs(v(p.nc + i));
+      }
+      EXPECT_EQ(u.ucp.X.A * x, u.ucp.X.b);
+      if (Z.rows() == 0) continue;  // P has full row rank: every v is reachable
+      x(0) += 1;  // v_n changed alone: not reachable unless P spans e_0 (it does not here)
+      EXPECT_NE(u.ucp.X.A * x, u.ucp.X.b);
+    }
+  }
+}
+
+TEST(UcpProblem, YEncodesEquilibriumAndCoulombFriction) {
+  const UcpProblem u = parse(small_problem().dump());
+  const QuasistaticProblem& p = *u.quasistatic;
+  const Mat<Q> C = build_C(p);
+  ASSERT_EQ(C.rows(), p.nc + p.nq + 1);
+  // y = (c_n, s+, s-) with s+ = mu c_n + c_t, s- = mu c_n - c_t: C y + d = (0; W c + g_obj; (J^T c)_abar + d_abar).
+  Vec<Q> cn(2), ct(2);
+  cn << 2, 3;
+  ct << Q(1, 2), -1;
+  Vec<Q> y(6);
+  for (int i = 0; i < 2; ++i) y(i) = cn(i), y(2 + i) = p.mu(i) * cn(i) + ct(i), y(4 + i) = p.mu(i) * cn(i) - ct(i);
+  const Vec<Q> r = C * y + p.d;
+  EXPECT_EQ(r.head(2), Vec<Q>::Zero(2));
+  EXPECT_EQ(r.segment(2, 3), p.Wn() * cn + p.Wt() * ct + p.g_obj());
+  EXPECT_EQ(r(5), (p.Jn.col(3).dot(cn) + p.Jt.col(3).dot(ct)) + p.d(5));
+}
+
+TEST(UcpProblem, BadInputIsAnInputErrorNamingTheField) {
+  struct Case {
+    const char* what;
+    std::function<void(nlohmann::json&)> edit;
+    const char* path;
+  };
+  const std::vector<Case> cases = {
+      {"P has a wrong number of rows", [](auto& j) { j["P"].erase(3); }, ".P"},
+      {"P has a wrong number of columns", [](auto& j) { for (auto& r : j["P"]) r.erase(3); }, ".P"},
+      {"Jn has a wrong width", [](auto& j) { j["Jn"][0].push_back(0); }, ".Jn"},
+      {"J_abar column of P differs from [Jn; Jt]", [](auto& j) { j["P"][3][3] = "2"; }, ".P"},
+      {"mu < 0", [](auto& j) { j["mu"][1] = "-0.1"; }, ".mu[1]"},
+      {"mu has the wrong length", [](auto& j) { j["mu"].push_back(1); }, ".mu"},
+      {"alpha out of range", [](auto& j) { j["alpha"][2] = 4; }, ".alpha[2]"},
+      {"alpha negative", [](auto& j) { j["alpha"][0] = -1; }, ".alpha[0]"},
+      {"alpha repeats a joint", [](auto& j) { j["alpha"][2] = 1; }, ".alpha[2]"},
+      {"d has the wrong length", [](auto& j) { j["d"].erase(5); }, ".d"},
+      {"d's friction block is not zero", [](auto& j) { j["d"][1] = "1"; }, ".d[1]"},
+      {"theta_dot misses a given velocity", [](auto& j) { j["theta_dot"][1] = nullptr; }, ".theta_dot[1]"},
+      {"theta_dot has the wrong length", [](auto& j) { j["theta_dot"].erase(3); }, ".theta_dot"},
+      {"nc is not a positive integer", [](auto& j) { j["nc"] = "1.5"; }, ".nc"},
+      {"a number is not a number", [](auto& j) { j["P"][0][0] = "one"; }, ".P[0][0]"},
+      {"unknown field", [](auto& j) { j["mu_s"] = 1; }, ".mu_s"},
+      {"unknown kind", [](auto& j) { j["kind"] = "planar2"; }, ".kind"},
+  };
+  EXPECT_NO_THROW(parse(small_problem().dump()));
+  for (const Case& c : cases) {
+    nlohmann::json j = small_problem();
+    c.edit(j);
+    try {
+      parse(j.dump());
+      ADD_FAILURE() << c.what << ": accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file, "test.json") << c.what;
+      EXPECT_EQ(e.json_path.rfind(std::string("$") + c.path, 0), 0u) << c.what << ": path " << e.json_path;
+    }
+  }
+}
+
+TEST(UcpProblem, WrittenProblemsReadBackIdentically) {
+  std::mt19937_64 rng(11);
+  for (int t = 0; t < 6; ++t) {
+    RandomProblemOptions o;
+    o.nc = 2 + t;
+    o.mu_max = Q(6, 5);
+    o.abar_size = t;
+    const UcpProblem g = generate_random_problem(o, rng);
+    const UcpProblem r = parse(to_json_text(g));
+    EXPECT_EQ(r.quasistatic->P, g.quasistatic->P);
+    EXPECT_EQ(r.quasistatic->d, g.quasistatic->d);
+    EXPECT_EQ(r.quasistatic->theta_dot, g.quasistatic->theta_dot);
+    EXPECT_EQ(r.quasistatic->alpha, g.quasistatic->alpha);
+    EXPECT_EQ(r.ucp.X.A, g.ucp.X.A);
+    EXPECT_EQ(r.ucp.Y.b, g.ucp.Y.b);
+  }
+  const UcpProblem red = reduction_problem(random_zero_one(2, 4, true, rng));
+  const UcpProblem back = parse(to_json_text(red));
+  EXPECT_FALSE(back.quasistatic);
+  EXPECT_EQ(back.ucp.X.A, red.ucp.X.A);
+  EXPECT_EQ(back.ucp.Y.b, red.ucp.Y.b);
+}
+
+TEST(UcpGenerator, RandomProblemsFollowSection5) {
+  std::mt19937_64 rng(5);
+  for (int t = 0; t < 10; ++t) {
+    RandomProblemOptions o;
+    o.nc = 1 + t;
+    o.mu_max = frac(1 + t % 3, 2);
+    o.abar_size = t % (o.nc + 1);
+    const UcpProblem u = generate_random_problem(o, rng);
+    const QuasistaticProblem& p = *u.quasistatic;
+    EXPECT_EQ(p.ntheta, 2 * p.nc);
+    EXPECT_EQ(p.nq, 3);
+    EXPECT_EQ(static_cast<int>(p.abar.size()), o.abar_size);
+    for (int i = 0; i < p.nc; ++i) {
+      EXPECT_GT(sgn(p.mu(i)), 0);
+      EXPECT_LT(p.mu(i), o.mu_max);
+      // unit normals and tangents (rational), n x t = +1
+      const Mat<Q> Wn = p.Wn(), Wt = p.Wt();
+      EXPECT_EQ(Wn(0, i) * Wn(0, i) + Wn(1, i) * Wn(1, i), 1);
+      EXPECT_EQ(Wn(0, i) * Wt(1, i) - Wn(1, i) * Wt(0, i), 1);
+    }
+  }
+}
+
+TEST(UcpGenerator, ReductionHasTheFormOfProposition2) {
+  std::mt19937_64 rng(2);
+  const ZeroOneProblem zo = random_zero_one(2, 3, true, rng);
+  EXPECT_TRUE(zero_one_feasible(zo));
+  const UcpProblem u = reduction_problem(zo);
+  EXPECT_EQ(u.ucp.n(), 6);
+  // If z solves (12), (z, e - z) is in X and (e - z, z) in Y, and they are orthogonal.
+  for (unsigned mask = 0; mask < 8; ++mask) {
+    Vec<Q> z(3);
+    for (int j = 0; j < 3; ++j) z(j) = (mask >> j) & 1u;
+    if (zo.A * z != zo.b) continue;
+    Vec<Q> x(6), y(6);
+    x << z, Vec<Q>(Vec<Q>::Ones(3) - z);
+    y << Vec<Q>(Vec<Q>::Ones(3) - z), z;
+    EXPECT_EQ(u.ucp.X.A * x, u.ucp.X.b);
+    EXPECT_EQ(u.ucp.Y.A * y, u.ucp.Y.b);
+    EXPECT_EQ(sgn(Q(x.dot(y))), 0);
+  }
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::ucp

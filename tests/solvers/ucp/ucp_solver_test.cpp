@@ -64,3 +64,141 @@ TEST(UcpCompleteSearch, DataSets1To3SolvableAndDataSet4Jammed) {
 
 }  // namespace
 }  // namespace contactcert::solvers::ucp
+
+namespace contactcert::solvers::ucp {
+namespace {
+
+UcpProblem with_mu(UcpProblem p, const Vec<Q>& mu) {
+  p.quasistatic->mu = mu;
+  p.ucp = build_ucp(*p.quasistatic);
+  return p;
+}
+
+TEST(UcpCompleteSearch, DataSet2MuSweepAgreesWithTheEnumerativeBaseline) {
+  const UcpProblem base = load_ucp_problem(scene(2));
+  int solvable = 0, jammed = 0;
+  const Q step(1, 4);
+  for (int a = 0; a <= 4; ++a)
+    for (int b = 0; b <= 4; ++b)
+      for (int c = 0; c <= 4; ++c) {
+        Vec<Q> mu(3);
+        mu << step * a, step * b, step * c;
+        const UcpProblem p = with_mu(base, mu);
+        std::mt19937_64 rng(a * 25 + b * 5 + c);
+        const SearchResult<Q> s = complete_search(p.ucp, SearchOptions{}, rng);
+        const EnumerateResult e = enumerate_modes(p, Arith::kExact, 1000);
+        ASSERT_NE(s.status, UcpStatus::kUnknown);
+        ASSERT_EQ(s.status, e.status) << "mu = " << mu.transpose();
+        EXPECT_EQ(e.lps, 64);
+        if (s.status == UcpStatus::kSolvable) {
+          ++solvable;
+          expect_physical_solution(p, s.x, s.y);
+          expect_physical_solution(p, e.x, e.y);
+        } else {
+          ++jammed;
+        }
+      }
+  // The grid crosses the jamming region (Data Set 4 lies in it): both verdicts occur.
+  EXPECT_GT(solvable, 0);
+  EXPECT_GT(jammed, 0);
+}
+
+TEST(UcpCompleteSearch, RandomProblemsAgreeWithTheEnumerativeBaselineOnEveryPath) {
+  int solvable = 0, jammed = 0;
+  for (int seed = 0; seed < 24; ++seed) {
+    std::mt19937_64 gen(seed);
+    RandomProblemOptions o;
+    o.nc = 2 + seed % 3;
+    o.mu_max = Q(1 + seed % 4, 2);
+    o.mu_max.canonicalize();
+    o.abar_size = seed % (o.nc + 1);
+    const UcpProblem p = generate_random_problem(o, gen);
+    const EnumerateResult e = enumerate_modes(p, Arith::kExact, 1000);
+    for (Arith a : {Arith::kExact, Arith::kVerified}) {
+      std::mt19937_64 rng(seed);
+      SearchOptions so;
+      so.heuristic.arith = a;
+      const SearchResult<Q> s = complete_search(p.ucp, so, rng);
+      ASSERT_EQ(s.status, e.status) << "seed " << seed;
+      if (s.status == UcpStatus::kSolvable) expect_physical_solution(p, s.x, s.y);
+    }
+    // The float path is unchecked but should agree on these well-scaled problems.
+    std::mt19937_64 rng(seed);
+    SearchOptions so;
+    so.heuristic.arith = Arith::kFloat;
+    EXPECT_EQ(complete_search(convert<double>(p.ucp), so, rng).status, e.status) << "float, seed " << seed;
+    (e.status == UcpStatus::kSolvable ? solvable : jammed)++;
+  }
+  EXPECT_GT(solvable, 0);
+  EXPECT_GT(jammed, 0);
+}
+
+TEST(UcpCompleteSearch, ReductionInstancesAreSolvableExactlyWhenTheZeroOneProblemIs) {
+  int feasible = 0, infeasible = 0;
+  for (int seed = 0; seed < 40; ++seed) {
+    std::mt19937_64 gen(seed);
+    const int m = 1 + seed % 3, n = 3 + seed % 4;
+    const ZeroOneProblem zo = random_zero_one(m, n, seed % 2 == 0, gen);
+    const bool expected = zero_one_feasible(zo);
+    const UcpProblem p = reduction_problem(zo);
+    std::mt19937_64 rng(seed);
+    const SearchResult<Q> s = complete_search(p.ucp, SearchOptions{}, rng);
+    ASSERT_EQ(s.status, expected ? UcpStatus::kSolvable : UcpStatus::kJammed) << "seed " << seed;
+    if (expected) {
+      ++feasible;
+      ASSERT_TRUE(in_polyhedron(p.ucp.X, s.x));
+      ASSERT_TRUE(in_polyhedron(p.ucp.Y, s.y));
+      EXPECT_EQ(sgn(Q(s.x.dot(s.y))), 0);
+      // Proposition 2: the z part of x is a 0-1 solution of A z = b.
+      const Vec<Q> z = s.x.head(n);
+      for (int j = 0; j < n; ++j) EXPECT_TRUE(z(j) == 0 || z(j) == 1);
+      EXPECT_EQ(zo.A * z, zo.b);
+    } else {
+      ++infeasible;
+    }
+    if (2 * n <= 12) EXPECT_EQ(enumerate_modes(p, Arith::kExact, 1 << 12).status, s.status) << "seed " << seed;
+  }
+  EXPECT_GT(feasible, 5);
+  EXPECT_GT(infeasible, 5);
+}
+
+TEST(UcpPaperAlgorithm, DataSet4IsNotDecidedByTheBilinearAlgorithm) {
+  // Section 5: on the jamming region "the algorithm terminated due to cycling".
+  const UcpProblem p = load_ucp_problem(scene(4));
+  for (Step3Rule rule : {Step3Rule::kPaper, Step3Rule::kModified}) {
+    std::mt19937_64 rng(5);
+    BilinearOptions o;
+    o.step3 = rule;
+    const auto r = bilinear(make_face(p.ucp.X, {}), make_face(p.ucp.Y, {}), o, rng);
+    EXPECT_EQ(r.status, BilinearStatus::kStopped);
+    EXPECT_GT(sgn(r.xTy), 0);
+    EXPECT_EQ(r.random_moves, o.max_random_moves + 1);
+  }
+}
+
+TEST(UcpCompleteSearch, EmptyXIsJammedWithARootCertificate) {
+  // X = {x >= 0 : x_0 + x_1 = -1} is empty.
+  UcpProblem p;
+  p.ucp.X.A = Mat<Q>::Ones(1, 2);
+  p.ucp.X.b = Vec<Q>::Constant(1, Q(-1));
+  p.ucp.Y.A = Mat<Q>::Ones(1, 2);
+  p.ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  std::mt19937_64 rng(1);
+  const auto s = complete_search(p.ucp, SearchOptions{}, rng);
+  ASSERT_EQ(s.status, UcpStatus::kJammed);
+  EXPECT_EQ(s.reason, "X is empty");
+  ASSERT_EQ(s.tree.size(), 1u);
+  EXPECT_EQ(s.tree[0].side, Side::kX);
+}
+
+TEST(UcpCompleteSearch, NodeBudgetGivesUnknown) {
+  const UcpProblem p = load_ucp_problem(scene(4));
+  std::mt19937_64 rng(1);
+  SearchOptions so;
+  so.max_nodes = 2;
+  so.bilinear_first = false;
+  EXPECT_EQ(complete_search(p.ucp, so, rng).status, UcpStatus::kUnknown);
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::ucp

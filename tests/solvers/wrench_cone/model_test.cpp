@@ -39,12 +39,10 @@ ModeString mode_of(const PlanarScene& s, const std::string& text) {
 TEST(Section4, JacobianMatchesThePaper) {
   const PlanarScene s = section4_scene();
   const Mat<Q> J = jacobian(s);
-  // The Jacobian of section 4 up to the positive scale of the non-unit normal of fixel 2
-  // (n_2 = (-11/10, 0)): scale its columns back to unit normals.
-  Mat<Q> Ju = J;
-  Ju.col(1) /= Q(11, 10);
-  Ju.col(3) /= Q(11, 10);
-  EXPECT_EQ(Ju, mat({{"0", "-1", "-1", "0"}, {"1", "0", "0", "-1"}, {"0", "0", "-1", "-1"}}));
+  // The scene gives fixel 2 by its position (11/10, 0), so n_2 = (-11/10, 0); the Jacobian scales
+  // each frame to a primitive integer normal, which gives the paper's unit normal (-1, 0).
+  EXPECT_TRUE(s.fixels[1].frame.normal == (geometry::Point2{Q(-11, 10), Q(0)}));
+  EXPECT_EQ(J, mat({{"0", "-1", "-1", "0"}, {"1", "0", "0", "-1"}, {"0", "0", "-1", "-1"}}));
 }
 
 PlanarScene unit_normal_section4() {
@@ -58,7 +56,7 @@ PlanarScene unit_normal_section4() {
 TEST(Section4, Equation12IsReproducedExactly) {
   const ContactModel<Q> m = contact_model<Q>(unit_normal_section4());
   EXPECT_EQ(m.J, mat({{"0", "-1", "-1", "0"}, {"1", "0", "0", "-1"}, {"0", "0", "-1", "-1"}}));
-  EXPECT_EQ(m.C, mat({{"1", "0", "0", "0", "-1", "0", "0", "1"},
+  EXPECT_EQ(m.C(), mat({{"1", "0", "0", "0", "-1", "0", "0", "1"},
                       {"0", "1", "0", "0", "0", "-1", "-1", "0"},
                       {"0", "0", "1", "0", "0", "-1", "-2", "-1"},
                       {"0", "0", "0", "1", "1", "0", "-1", "-2"}}));
@@ -104,7 +102,7 @@ TEST(ConeForm, DirectKEqualsTheLiteralProductECNRSVOnEveryModeOfSeveralScenes) {
       for (std::size_t i = 0; i < n; ++i) mode.letters.push_back(letters[i][digit[i]]);
       const ModeMatrices<Q> mm = mode_matrices<Q>(s, mode);
       const ConeForm<Q> f = cone_form(s, m, mode);
-      const Mat<Q> K = mm.E * m.C * mm.N * mm.R * mm.S * mm.V;  // eq. (15)
+      const Mat<Q> K = mm.E * m.C() * mm.N * mm.R * mm.S * mm.V;  // eq. (15)
       const Mat<Q> P = mm.E * m.B;                                // eq. (17)
       EXPECT_EQ(f.K, K) << file << " " << mode.text();
       EXPECT_EQ(f.P, P) << file << " " << mode.text();
@@ -128,10 +126,11 @@ TEST(ConeForm, SlidingFrictionOpposesTheSlidingDirection) {
   const ConeForm<Q> r = cone_form(s, m, mode_of(s, "rs"));
   // The force column of fixel 1 is C_c1n + c_t/c_n * C_c1t with C = [I -A]; rows kept: a1n, a1t, a2n.
   const Q mu(1, 5);
+  const Mat<Q> C = m.C();
   Vec<Q> cn(4), ct(4);
   for (int i = 0; i < 4; ++i) {
-    cn(i) = m.C(i, 4);
-    ct(i) = m.C(i, 6);
+    cn(i) = C(i, 4);
+    ct(i) = C(i, 6);
   }
   const Vec<Q> left = cn - mu * ct, right = cn + mu * ct;
   ASSERT_EQ(l.K.rows(), 3);
@@ -162,12 +161,16 @@ TEST(Modes, ParseValidatesLettersAgainstTheTouchingState) {
   EXPECT_EQ(table2(Interaction::kSlideLeft, true).c_t, FrictionConstraint::kLeftEdge);
 }
 
-TEST(Model, FloatModelIsTheRoundedExactModel) {
+TEST(Model, FloatModelIsTheExactModelUpToThePositiveScaleOfM) {
+  // fig4a: unit normals, integer torques, I/m = 5/3: the exact model uses M^-1 ~ diag(5, 5, 3), the
+  // float model diag(1, 1, 3/5), a factor 5 apart.
   const PlanarScene s = geometry::load_planar_scene(CONTACTCERT_SCENES_DIR "/bt2002_fig4a_lla.json");
   const ContactModel<Q> e = contact_model<Q>(s);
   const ContactModel<double> d = contact_model<double>(s);
-  EXPECT_LT((exact::to_double(e.A) - d.A).cwiseAbs().maxCoeff(), 1e-12);
-  EXPECT_LT((exact::to_double(e.B) - d.B).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(s.workpiece.inertia_per_mass, Q(5, 3));
+  EXPECT_LT((exact::to_double(e.J) - d.J).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((exact::to_double(e.A) / 5 - d.A).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((exact::to_double(e.B) / 5 - d.B).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ TEST(Section4Cone, MinimumAccelerationCutsTheConeAtTheRequestedAcceleration) {
   EXPECT_FALSE(inside((Vec<Q>(3) << Q(1, 2), 0, Q(-1, 2)).finished()));
 }
 
-TEST(Routes, AgreeOnEveryModeOfThreeFixelScenes) {
+TEST(Routes, BothRoutesWithAndWithoutRowReductionAgreeOnEveryModeOfThreeFixelScenes) {
   const std::vector<PlanarScene> scenes = {
       parse(R"({"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":1}},
         "fixels":[{"position":[0,-1]},{"position":[1,0]},{"position":["-3/5","4/5"]}],"mu_s":"1/2","mu_k":"2/5"})"),
@@ -121,6 +121,9 @@ TEST(Routes, AgreeOnEveryModeOfThreeFixelScenes) {
       const geometry::FaceCone<Q> a = wrench_cone_face(s, m, mode, Route::kPaper);
       const geometry::FaceCone<Q> b = wrench_cone_face(s, m, mode, Route::kProject);
       EXPECT_TRUE(geometry::identical(a, b)) << mode.text();
+      // The literal K and P of eqs. (15) and (17), without the row reduction, give the same cone.
+      const geometry::FaceCone<Q> c = wrench_cone_face(s, m, mode, Route::kPaper, {}, Preconditioning::kNone);
+      EXPECT_TRUE(geometry::identical(a, c)) << mode.text();
       nonempty += is_empty_cone(a) ? 0 : 1;
       ++compared;
     }
@@ -145,7 +148,12 @@ TEST(Routes, AgreeOnRandomScenesAndModes) {
       else if (side == 1) { x = 4 + gap; y = along % 2 + 1; }
       else if (side == 2) { x = along; y = 3 + gap; }
       else { x = -gap; y = along % 2 + 1; }
-      fixels += (i ? "," : "") + std::string("{\"position\":[") + std::to_string(x) + "," + std::to_string(y) + "]}";
+      if (i) fixels += ",";
+      fixels += "{\"position\":[";
+      fixels += std::to_string(x);
+      fixels += ",";
+      fixels += std::to_string(y);
+      fixels += "]}";
     }
     const PlanarScene s = parse(R"({"kind":"planar","workpiece":{"shape":{"type":"polygon","vertices":[[0,0],[4,0],[4,3],[0,3]]},"com":[)" +
                                 std::to_string(1 + t % 3) + ",1]},\"fixels\":[" + fixels + "],\"mu_s\":\"" + std::to_string(t % 5) +
@@ -154,7 +162,9 @@ TEST(Routes, AgreeOnRandomScenesAndModes) {
     const std::vector<ModeString> modes = all_modes(s);
     for (int k = 0; k < 6; ++k) {
       const ModeString& mode = modes[static_cast<std::size_t>(rng() % modes.size())];
-      EXPECT_TRUE(geometry::identical(wrench_cone_face(s, m, mode, Route::kPaper), wrench_cone_face(s, m, mode, Route::kProject)))
+      const geometry::FaceCone<Q> a = wrench_cone_face(s, m, mode, Route::kPaper);
+      EXPECT_TRUE(geometry::identical(a, wrench_cone_face(s, m, mode, Route::kProject))) << t << " " << mode.text();
+      EXPECT_TRUE(geometry::identical(a, wrench_cone_face(s, m, mode, Route::kProject, {}, Preconditioning::kNone)))
           << t << " " << mode.text();
       ++compared;
     }

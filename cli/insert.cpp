@@ -1,0 +1,148 @@
+// `contactcert insert FILE`: the wrenches G_goal that seat the workpiece from any contact state
+// (wrench cone paper, sections 8-9, eq. 21 and Table 5) and the frictionless finger pushes inside it.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <iostream>
+
+#include "cli/command.h"
+#include "cli/json_out.h"
+#include "exact/input_error.h"
+#include "exact/rational_text.h"
+#include "geometry/scene_json.h"
+#include "solvers/insertion/insertion.h"
+
+namespace contactcert::cli {
+namespace {
+
+using exact::Q;
+
+struct InsertOptions {
+  CommonOptions common;
+  std::string file;
+  std::string sweep_mu;
+};
+
+double angle(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()); }
+
+/// The fraction of the boundary (by length, in doubles: a summary, not a verdict) whose pushes seat the part.
+double goal_fraction(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<Q, bool>& p) {
+  double in = 0, total = 0;
+  if (const auto* poly = std::get_if<geometry::PolygonShape>(&scene.workpiece.shape)) {
+    const auto& V = poly->vertices;
+    std::vector<double> len(V.size());
+    for (std::size_t e = 0; e < V.size(); ++e) {
+      const auto& a = V[e];
+      const auto& b = V[(e + 1) % V.size()];
+      len[e] = std::hypot(Q(b.x - a.x).get_d(), Q(b.y - a.y).get_d());
+      total += len[e];
+    }
+    for (const auto& piece : p.edges)
+      if (piece.label) in += Q(piece.to - piece.from).get_d() * len[piece.edge];
+  } else {
+    total = 2 * M_PI;
+    for (const auto& piece : p.arcs) {
+      if (!piece.label) continue;
+      double d = angle(piece.to) - angle(piece.from);
+      if (d < 0 || (d == 0 && !(piece.from_closed && piece.to_closed))) d += 2 * M_PI;
+      in += d;
+    }
+  }
+  return total > 0 ? in / total : 0;
+}
+
+json pieces_json(const solvers::BoundaryPieces<Q, bool>& p) {
+  json edges = json::array(), arcs = json::array();
+  for (const auto& e : p.edges)
+    if (e.label)
+      edges.push_back({{"edge", e.edge}, {"from", exact_json(e.from)}, {"to", exact_json(e.to)},
+                       {"from_closed", e.from_closed}, {"to_closed", e.to_closed}});
+  for (const auto& a : p.arcs)
+    if (a.label)
+      arcs.push_back({{"from_direction", primitive_json(a.from)}, {"to_direction", primitive_json(a.to)},
+                      {"from_closed", a.from_closed}, {"to_closed", a.to_closed}});
+  return {{"edges", edges}, {"arcs", arcs}};
+}
+
+int run_insert(const InsertOptions& o) {
+  const geometry::PlanarScene scene = geometry::load_planar_scene(o.file);
+  if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
+    throw exact::InputError("command line", "--arith", "insert is computed exactly (use exact or verified)");
+  std::vector<Q> mus;
+  if (!o.sweep_mu.empty()) {
+    const exact::Vec<Q> v = parse_number_list(o.sweep_mu, "--sweep-mu", std::count(o.sweep_mu.begin(), o.sweep_mu.end(), ',') + 1);
+    for (Eigen::Index i = 0; i < v.size(); ++i) {
+      if (sgn(v(i)) < 0) throw exact::InputError("command line", "--sweep-mu", "friction coefficients must be >= 0");
+      mus.push_back(v(i));
+    }
+  }
+  auto analyse = [&](const geometry::PlanarScene& s) {
+    auto ins = solvers::insertion<Q>(s);
+    auto pushes = solvers::insertion_pushes<Q>(s, ins);
+    return std::make_pair(std::move(ins), std::move(pushes));
+  };
+  const auto [ins, pushes] = analyse(scene);
+  json sweep = json::array();
+  std::vector<std::pair<std::string, double>> sweep_rows;
+  for (const Q& mu : mus) {
+    geometry::PlanarScene s = scene;
+    for (auto& f : s.fixels) f.mu_s = f.mu_k = mu;
+    const auto [i2, p2] = analyse(s);
+    const double frac = goal_fraction(s, p2);
+    sweep.push_back({{"mu", exact_json(mu)}, {"goal_boundary_fraction_approx", frac}, {"pushes", pieces_json(p2)}});
+    sweep_rows.emplace_back(exact::to_string(mu), frac);
+  }
+  if (o.common.json) {
+    json sets = json::array();
+    for (std::size_t i = 0; i < ins.sets.size(); ++i)
+      sets.push_back({{"state", ins.sets[i].state_text()}, {"mode", ins.sets[i].mode.text()},
+                      {"redundant", static_cast<bool>(ins.redundant[i])},
+                      {"empty", solvers::is_empty_cone<Q>(ins.cones[i])},
+                      {"inequalities", exact_json(ins.cones[i].inequalities)},
+                      {"equalities", exact_json(ins.cones[i].equalities)},
+                      {"strict", exact_json(ins.cones[i].strict)}});
+    json j;
+    j["sets"] = sets;
+    j["pushes"] = pieces_json(pushes);
+    j["goal_boundary_fraction_approx"] = goal_fraction(scene, pushes);
+    if (!mus.empty()) j["sweep"] = sweep;
+    std::cout << j.dump() << "\n";
+    return 0;
+  }
+  std::size_t needed = 0;
+  for (bool r : ins.redundant) needed += !r;
+  std::cout << "G_goal of " << o.file << ": complement of the union of " << ins.sets.size() << " wrench cones ("
+            << needed << " non-redundant)\n";
+  for (std::size_t i = 0; i < ins.sets.size(); ++i)
+    std::cout << "  state " << ins.sets[i].state_text() << "  mode " << ins.sets[i].mode.text()
+              << (solvers::is_empty_cone<Q>(ins.cones[i]) ? "  empty" : "")
+              << (ins.redundant[i] ? "  (redundant)" : "") << "\n";
+  std::cout << "finger pushes that seat the workpiece from any state (fraction of the boundary ~"
+            << goal_fraction(scene, pushes) << "):\n";
+  for (const auto& e : pushes.edges)
+    if (e.label)
+      std::cout << "  edge " << e.edge << ", s in " << (e.from_closed ? "[" : "(") << exact::to_string(e.from) << ", "
+                << exact::to_string(e.to) << (e.to_closed ? "]" : ")") << "\n";
+  for (const auto& a : pushes.arcs)
+    if (a.label)
+      std::cout << "  arc from direction " << primitive_json(a.from).dump() << " to " << primitive_json(a.to).dump()
+                << " counter-clockwise\n";
+  if (!sweep_rows.empty()) {
+    std::cout << "friction sweep (Figure 11):\n      mu   boundary fraction in G_goal\n";
+    for (const auto& [mu, frac] : sweep_rows) std::printf("  %6s   %.4f\n", mu.c_str(), frac);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_insert(CLI::App& app, Action& action) {
+  auto o = std::make_shared<InsertOptions>();
+  CLI::App* sub = app.add_subcommand("insert", "Wrenches that seat the workpiece from any contact state (G_goal)");
+  add_common_options(*sub, o->common);
+  sub->add_option("file", o->file, "Planar scene in its goal configuration (every fixel touching)")->required();
+  sub->add_option("--sweep-mu", o->sweep_mu, "Friction values to sweep, e.g. 0.01,0.2,0.4,0.6 (Figure 11)");
+  sub->callback([o, &action] { action = [o] { return run_insert(*o); }; });
+}
+
+}  // namespace contactcert::cli

@@ -1,0 +1,39 @@
+// The arrangement of planes through the origin of R^3 (great circles on the sphere of directions): its
+// relatively open cells, each with a representative point and its sign vector. In a central arrangement
+// every sign vector class is convex, so cells are identified by their sign vectors.
+#pragma once
+
+#include <vector>
+
+#include "exact/number.h"
+
+namespace contactcert::geometry {
+
+using exact::Mat;
+using exact::Q;
+using exact::Vec;
+
+/// One relatively open cell: dimension 0 (the origin), 1 (a ray: a vertex on the sphere), 2 (a sector
+/// of a plane: an arc) or 3 (an open region).
+template <class T>
+struct ArrangementCell {
+  int dimension = 3;
+  Vec<T> point;            ///< a representative point of the cell
+  std::vector<int> signs;  ///< sign of n_j . point for each (deduplicated) plane j
+};
+
+template <class T>
+struct SphereArrangement {
+  Mat<T> planes;  ///< deduplicated plane normals, one per row
+  std::vector<ArrangementCell<T>> cells;
+};
+
+/// All cells of the arrangement of the planes {g : n . g = 0} for the rows n of `normals` (zero rows are
+/// ignored, parallel rows merged). Representatives are exact for T = Q.
+template <class T>
+SphereArrangement<T> sphere_arrangement(const Mat<T>& normals);
+
+extern template SphereArrangement<double> sphere_arrangement<double>(const Mat<double>&);
+extern template SphereArrangement<Q> sphere_arrangement<Q>(const Mat<Q>&);
+
+}  // namespace contactcert::geometry

@@ -1,0 +1,94 @@
+#include "solvers/insertion/insertion.h"
+
+#include "exact/input_error.h"
+#include "geometry/nnc_cone.h"
+#include "geometry/set_ops.h"
+
+namespace contactcert::solvers {
+
+std::string InsertionSet::state_text() const {
+  std::string s;
+  for (bool b : state) s += b ? '1' : '0';
+  return s;
+}
+
+namespace {
+
+InsertionSet set_of(const char* state, const char* mode) {
+  InsertionSet s;
+  for (const char* c = state; *c; ++c) s.state.push_back(*c == '1');
+  for (const char* c = mode; *c; ++c) s.mode.letters.push_back(static_cast<Interaction>(*c));
+  return s;
+}
+
+}  // namespace
+
+std::vector<InsertionSet> insertion_sets(std::size_t fixels) {
+  if (fixels == 2)  // eq. (21): G_goal = complement of (G_su u G_us u G_sm u G_ms)
+    return {set_of("10", "su"), set_of("10", "ms"), set_of("01", "us"), set_of("01", "sm")};
+  if (fixels == 3)  // Table 5 (its state 111 row lists "mss" twice; the second is ssm by symmetry)
+    return {set_of("000", "sss"), set_of("100", "suu"), set_of("100", "mss"), set_of("010", "usu"),
+            set_of("010", "sms"), set_of("001", "uus"), set_of("001", "ssm"), set_of("110", "ssu"),
+            set_of("110", "msu"), set_of("110", "smu"), set_of("110", "mms"), set_of("101", "sus"),
+            set_of("101", "mus"), set_of("101", "sum"), set_of("101", "msm"), set_of("011", "uss"),
+            set_of("011", "ums"), set_of("011", "usm"), set_of("011", "smm"), set_of("111", "sss"),
+            set_of("111", "mss"), set_of("111", "sms"), set_of("111", "ssm"), set_of("111", "mms"),
+            set_of("111", "smm"), set_of("111", "msm")};
+  return {};
+}
+
+geometry::PlanarScene scene_in_state(const geometry::PlanarScene& goal, const std::vector<bool>& touching) {
+  geometry::PlanarScene s = goal;
+  for (std::size_t i = 0; i < s.fixels.size(); ++i)
+    if (!touching[i]) s.fixels[i].frame.gap_squared = 1;  // any positive gap: only touching() is read
+  return s;
+}
+
+template <class T>
+bool Insertion<T>::in_goal(const Vec<T>& g) const {
+  for (const auto& c : cones)
+    if (geometry::contains_point<T>(c, g)) return false;
+  return true;
+}
+
+template <class T>
+Insertion<T> insertion(const geometry::PlanarScene& goal, Route route) {
+  const std::size_t k = goal.fixels.size();
+  if (k != 2 && k != 3) throw exact::InputError("", "$.fixels", "insertion needs 2 or 3 fixels, found " + std::to_string(k));
+  for (std::size_t i = 0; i < k; ++i)
+    if (!goal.fixels[i].frame.touching())
+      throw exact::InputError("", "$.fixels[" + std::to_string(i) + "]",
+                              "insertion takes the goal configuration: every fixel must touch the workpiece");
+  Insertion<T> out;
+  out.sets = insertion_sets(k);
+  for (const auto& set : out.sets) {
+    const geometry::PlanarScene s = scene_in_state(goal, set.state);
+    out.cones.push_back(wrench_cone_face<T>(s, contact_model<T>(s), set.mode, route));
+  }
+  out.redundant.assign(out.cones.size(), false);
+  for (std::size_t i = 0; i < out.cones.size(); ++i)
+    for (std::size_t j = 0; j < out.cones.size() && !out.redundant[i]; ++j) {
+      if (i == j || out.redundant[j]) continue;
+      if (is_empty_cone<T>(out.cones[i]) ||
+          geometry::contains<T>(out.cones[j], out.cones[i]).status == geometry::ContainmentStatus::kContained)
+        out.redundant[i] = true;
+    }
+  return out;
+}
+
+template <class T>
+BoundaryPieces<T, bool> insertion_pushes(const geometry::PlanarScene& goal, const Insertion<T>& ins) {
+  std::vector<const geometry::FaceCone<T>*> cones;
+  for (std::size_t i = 0; i < ins.cones.size(); ++i)
+    if (!ins.redundant[i]) cones.push_back(&ins.cones[i]);
+  return boundary_pieces<T, bool>(goal, cone_rows<T>(cones), [&](const Vec<T>& g) { return ins.in_goal(g); });
+}
+
+#define CONTACTCERT_INSERTION_INSTANTIATE(T)                                                        \
+  template struct Insertion<T>;                                                                     \
+  template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route);                           \
+  template BoundaryPieces<T, bool> insertion_pushes<T>(const geometry::PlanarScene&, const Insertion<T>&);
+CONTACTCERT_INSERTION_INSTANTIATE(double)
+CONTACTCERT_INSERTION_INSTANTIATE(Q)
+
+}  // namespace contactcert::solvers

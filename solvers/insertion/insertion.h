@@ -1,0 +1,54 @@
+// Sensorless insertion (wrench cone paper, sections 8-9): the wrenches G_goal that seat the workpiece
+// against all fixels from any contact state, as the complement of the union of the wrench cones of the
+// backward and self transitions: eq. (21) for two fixels, Table 5 for three.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/face_cone.h"
+#include "solvers/stability/finger_push.h"
+#include "solvers/wrench_cone/wrench_cone.h"
+
+namespace contactcert::solvers {
+
+/// One set of eq. (21) / Table 5: the contact state (touching[i]: contact achieved at fixel i) and the
+/// augmented mode whose wrenches must be avoided in that state.
+struct InsertionSet {
+  std::vector<bool> state;
+  ModeString mode;
+  std::string state_text() const;  ///< e.g. "110"
+};
+
+/// eq. (21) for 2 fixels (su, ms in state 10; us, sm in state 01) and Table 5 for 3 fixels.
+std::vector<InsertionSet> insertion_sets(std::size_t fixels);
+
+template <class T>
+struct Insertion {
+  std::vector<InsertionSet> sets;
+  std::vector<geometry::FaceCone<T>> cones;  ///< G of each set (empty-cone encoding when empty)
+  std::vector<bool> redundant;               ///< contained in another set's cone (exactly checked)
+  bool in_goal(const Vec<T>& g) const;       ///< g in G_goal: in no set's cone
+};
+
+/// The scene in contact state `touching` (frames of the goal configuration; fixels not in contact get
+/// a positive gap).
+geometry::PlanarScene scene_in_state(const geometry::PlanarScene& goal, const std::vector<bool>& touching);
+
+/// G_goal for a goal scene in which every fixel touches (2 or 3 fixels). Throws InputError otherwise.
+template <class T>
+Insertion<T> insertion(const geometry::PlanarScene& goal, Route route = Route::kPaper);
+
+/// Frictionless finger pushes along the boundary that lie in G_goal (Figure 10).
+template <class T>
+BoundaryPieces<T, bool> insertion_pushes(const geometry::PlanarScene& goal, const Insertion<T>& ins);
+
+#define CONTACTCERT_INSERTION_EXTERN(T)                                                                   \
+  extern template struct Insertion<T>;                                                                    \
+  extern template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route);                          \
+  extern template BoundaryPieces<T, bool> insertion_pushes<T>(const geometry::PlanarScene&, const Insertion<T>&);
+CONTACTCERT_INSERTION_EXTERN(double)
+CONTACTCERT_INSERTION_EXTERN(Q)
+#undef CONTACTCERT_INSERTION_EXTERN
+
+}  // namespace contactcert::solvers

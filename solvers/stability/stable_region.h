@@ -1,0 +1,52 @@
+// The strongly stable set of a fixture, exactly (wrench cone paper, section 7, eq. 19): wrench space is
+// cut by the planes of the weakly stable cone and of every moving mode's wrench cone into relatively
+// open cells (geometry/sphere_arrangement.h); on each cell the verdict of strong_stability is constant,
+// so each cell gets one label.
+#pragma once
+
+#include <vector>
+
+#include "geometry/face_cone.h"
+#include "geometry/sphere_arrangement.h"
+#include "solvers/stability/strong_stability.h"
+#include "solvers/wrench_cone/wrench_cone.h"
+
+namespace contactcert::solvers {
+
+template <class T>
+struct LabelledCell {
+  int dimension = 3;
+  Vec<T> point;  ///< representative wrench of the cell
+  StabilityVerdict label = StabilityVerdict::kUnstable;
+};
+
+template <class T>
+struct StableRegion {
+  std::vector<Eigen::Index> touching;     ///< the touching fixels the analysis uses
+  geometry::FaceCone<T> weak;             ///< wrenches with a resting solution: -pos(friction cone edges)
+  std::vector<ModeString> modes;          ///< the moving modes with a non-empty wrench cone
+  std::vector<geometry::FaceCone<T>> cones;  ///< their wrench cones
+  Mat<T> planes;                          ///< the arrangement's planes
+  std::vector<LabelledCell<T>> cells;
+  /// The label of wrench g from the cones (the same verdict strong_stability gives, without LPs).
+  StabilityVerdict label(const Vec<T>& g) const;
+};
+
+/// The weakly stable cone {g : J c + g = 0 for some c in the static friction cones}: -pos of the edges
+/// J_n,i +- mu_s J_t,i of the touching fixels' friction cones, as a minimal face cone.
+template <class T>
+geometry::FaceCone<T> weakly_stable_cone(const geometry::PlanarScene& touching_scene);
+
+/// The wrench cones of every moving mode of the touching fixels and the labelled cells of wrench space.
+template <class T>
+StableRegion<T> stable_region(const geometry::PlanarScene& scene, Route route = Route::kPaper);
+
+#define CONTACTCERT_STABLE_REGION_EXTERN(T)                                                       \
+  extern template struct StableRegion<T>;                                                         \
+  extern template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&);       \
+  extern template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route);
+CONTACTCERT_STABLE_REGION_EXTERN(double)
+CONTACTCERT_STABLE_REGION_EXTERN(Q)
+#undef CONTACTCERT_STABLE_REGION_EXTERN
+
+}  // namespace contactcert::solvers
