@@ -1,5 +1,6 @@
 #include "exact/json_input.h"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -16,7 +17,8 @@ using json = nlohmann::json;
 
 // A SAX handler that builds the DOM but stores every number as its literal text (JSON numbers
 // become strings tagged by a leading '\x01' so that numbers and strings stay distinguishable).
-// Also enforces the depth limit and rejects duplicate keys.
+// Also enforces the depth limit, rejects duplicate keys and keeps the JSON path of the value being read
+// so that its errors can name it.
 constexpr char kNumberTag = '\x01';
 
 class LiteralNumberBuilder {
@@ -38,8 +40,8 @@ class LiteralNumberBuilder {
   bool start_array(std::size_t) { return open(json::array()); }
   bool end_array() { return close(); }
   bool key(std::string& k) {
-    if (stack_.back()->contains(k)) return fail("duplicate key \"" + k + "\"");
     key_ = k;
+    if (stack_.back()->contains(k)) return fail("duplicate key \"" + k + "\"");
     return true;
   }
   bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
@@ -50,11 +52,27 @@ class LiteralNumberBuilder {
   }
 
   const std::string& error() const { return error_; }
+  const std::string& error_path() const { return error_path_; }
 
  private:
   bool fail(std::string why) {
-    if (error_.empty()) error_ = std::move(why);
+    if (error_.empty()) {
+      error_ = std::move(why);
+      error_path_ = here();
+    }
     return false;
+  }
+  // The last path piece of the next value: its index in the open array or its key in the open object.
+  std::string next_segment() const {
+    if (stack_.empty()) return "";
+    if (stack_.back()->is_array()) return "[" + std::to_string(stack_.back()->size()) + "]";
+    return key_.empty() ? "" : "." + key_;
+  }
+  // The JSON path of the next value, e.g. "$.P[1]".
+  std::string here() const {
+    std::string p = "$";
+    for (const std::string& s : segments_) p += s;
+    return p + next_segment();
   }
   json* place(json v) {
     if (stack_.empty()) {
@@ -66,8 +84,9 @@ class LiteralNumberBuilder {
       top.push_back(std::move(v));
       return &top.back();
     }
-    top[key_] = std::move(v);
-    return &top[key_];
+    json* slot = &(top[key_] = std::move(v));
+    key_.clear();
+    return slot;
   }
   bool put(json v) {
     place(std::move(v));
@@ -76,18 +95,22 @@ class LiteralNumberBuilder {
   bool open(json v) {
     if (stack_.size() >= kMaxJsonDepth)
       return fail("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    segments_.push_back(next_segment());
     stack_.push_back(place(std::move(v)));
     return true;
   }
   bool close() {
     stack_.pop_back();
+    segments_.pop_back();
     return true;
   }
 
   json& root_;
   std::vector<json*> stack_;
+  std::vector<std::string> segments_;  // path pieces of the open containers, e.g. ".P", "[1]"
   std::string key_;
   std::string error_;
+  std::string error_path_;
 };
 
 bool is_number_text(const json& j) {
@@ -102,7 +125,8 @@ JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   LiteralNumberBuilder builder(*root);
   bool ok = json::sax_parse(text, &builder, json::input_format_t::json, /*strict=*/true);
   auto f = std::make_shared<const std::string>(file);
-  if (!ok) throw InputError(file, "", builder.error().empty() ? "malformed JSON" : builder.error());
+  if (!ok)
+    throw InputError(file, builder.error_path(), builder.error().empty() ? "malformed JSON" : builder.error());
   return JsonInput(root, root.get(), f, "$");
 }
 
@@ -113,6 +137,8 @@ std::string JsonInput::read_text(const std::string& path) {
   if (path == "-") {
     text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
   } else {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory; expected a JSON file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "", "cannot open the file for reading");
     std::ostringstream ss;
@@ -130,7 +156,7 @@ bool JsonInput::is_string_or_number() const { return node_->is_string(); }
 std::string JsonInput::kind() const {
   if (is_number_text(*node_)) return "a number";
   if (node_->is_string()) return "a string";
-  return std::string(node_->type_name() == std::string("object") ? "an " : "a ") + node_->type_name();
+  return std::string(node_->is_object() || node_->is_array() ? "an " : "a ") + node_->type_name();
 }
 
 void JsonInput::fail(const std::string& expected) const { throw InputError(*file_, path_, expected); }

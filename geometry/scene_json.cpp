@@ -61,8 +61,8 @@ Workpiece read_workpiece(const JsonInput& node) {
 }  // namespace
 
 PlanarScene read_planar_scene(const JsonInput& root) {
-  root.expect_keys({"kind", "name", "description", "workpiece", "fixels", "mu_s", "mu_k"});
   if (root.at("kind").string() != "planar") root.at("kind").fail("\"planar\" (a planar fixture scene)");
+  root.expect_keys({"kind", "name", "description", "workpiece", "fixels", "mu_s", "mu_k"});
   PlanarScene scene;
   scene.workpiece = read_workpiece(root.at("workpiece"));
   const auto mu_s = root.find("mu_s");

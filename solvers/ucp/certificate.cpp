@@ -226,7 +226,8 @@ Vec<Q> unscale_rows(const StandardPolyhedron<Q>& Y, const QuasistaticProblem& p,
     Q s = 0;
     for (Index c = 0; c < C.cols() && sgn(s) == 0; ++c)
       if (sgn(C(r, c)) != 0) s = Y.A(r, c) / C(r, c);
-    if (sgn(s) == 0) s = Y.b(r) / Q(-p.d(r));
+    if (sgn(s) == 0 && sgn(p.d(r)) != 0) s = Y.b(r) / Q(-p.d(r));
+    if (sgn(s) == 0) s = 1;  // a zero row: unscaled
     out(r) = s * u(r);
   }
   return out;
@@ -238,7 +239,7 @@ std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>&
   json j = header("ucp_jammed", problem);
   j["reason"] = result.reason;
   Mat<Q> ZT;
-  if (problem.quasistatic) ZT = exact::left_null_space<Q>(problem.quasistatic->P).transpose();
+  if (problem.quasistatic) ZT = build_Z(*problem.quasistatic).transpose();
   json nodes = json::array();
   for (const SearchNode<Q>& node : result.tree) {
     json n;
@@ -273,8 +274,10 @@ CertificateCheck check_ucp_certificate(const JsonInput& cert) {
   const std::string kind = cert.at("kind").string();
   CertificateCheck out;
   out.kind = kind;
+  // An unreadable embedded problem is bad input (exit 2); errors in the evidence make the certificate invalid.
+  const UcpProblem problem = read_ucp_problem(cert.at("problem"));
   try {
-    const CheckData c = derive(read_ucp_problem(cert.at("problem")));
+    const CheckData c = derive(problem);
     if (kind == "ucp_jammed") return check_jammed(cert, c);
     if (kind == "ucp_solvable") return check_solvable(cert, c);
     cert.at("kind").fail("expected \"ucp_jammed\" or \"ucp_solvable\"");

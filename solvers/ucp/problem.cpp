@@ -143,6 +143,17 @@ UcpProblem read_ucp_problem(const JsonInput& in) {
 
 UcpProblem load_ucp_problem(const std::string& path) { return read_ucp_problem(JsonInput::load(path)); }
 
+Mat<Q> build_Z(const QuasistaticProblem& p) {
+  // Section 2: Z a = 0 iff a = P b for some b, so Z spans the left null space of P.
+  Mat<Q> Z = exact::left_null_space<Q>(p.P);
+  // Rows scaled to primitive integer vectors: the same X with smaller numbers for the LPs.
+  for (Index r = 0; r < Z.rows(); ++r) {
+    const std::vector<exact::Z> row = exact::primitive(Vec<Q>(Z.row(r).transpose()));
+    for (Index c = 0; c < Z.cols(); ++c) Z(r, c) = Q(row[static_cast<std::size_t>(c)]);
+  }
+  return Z;
+}
+
 StandardPolyhedron<Q> build_X(const QuasistaticProblem& p) {
   const Index nc = p.nc;
   // B x = [v_n; v_t^+ - v_t^-] for x = (v_n, v_t^+, v_t^-).
@@ -152,13 +163,7 @@ StandardPolyhedron<Q> build_X(const QuasistaticProblem& p) {
     B(nc + i, nc + i) = 1;
     B(nc + i, 2 * nc + i) = -1;
   }
-  // Section 2: Z a = 0 iff a = P b for some b, so Z spans the left null space of P.
-  Mat<Q> Z = exact::left_null_space<Q>(p.P);
-  // Rows scaled to primitive integer vectors: the same X with smaller numbers for the LPs.
-  for (Index r = 0; r < Z.rows(); ++r) {
-    const std::vector<exact::Z> row = exact::primitive(Vec<Q>(Z.row(r).transpose()));
-    for (Index c = 0; c < Z.cols(); ++c) Z(r, c) = Q(row[static_cast<std::size_t>(c)]);
-  }
+  const Mat<Q> Z = build_Z(p);
   StandardPolyhedron<Q> X;
   X.A = Z * B;
   X.b = -(Z * p.J_alpha_theta_alpha());

@@ -64,6 +64,8 @@ UcpProblem load_ucp_problem(const std::string& path);
 /// Validates a quasistatic problem built in memory (generators); throws exact::InputError.
 void validate(const QuasistaticProblem& p, const std::string& file = "");
 
+/// Z: rows spanning the left null space of P (Z a = 0 iff a = P b), scaled to primitive integers.
+Mat<Q> build_Z(const QuasistaticProblem& p);
 /// X = {(v_n, v_t^+, v_t^-) >= 0 : Z_n v_n + Z_t (v_t^+ - v_t^-) + Z J_alpha theta_dot_alpha = 0} with
 /// Z spanning the left null space of P, computed exactly (section 2), its rows scaled to primitive integers.
 StandardPolyhedron<Q> build_X(const QuasistaticProblem& p);

@@ -33,19 +33,23 @@ TEST(UcpCertificate, DataSet4JammedCertificateIsAcceptedAndEveryFarkasEntryMatte
   ASSERT_EQ(ok.verdict, CertificateVerdict::kValid) << ok.reason;
   EXPECT_GT(ok.leaves, 1);
   const nlohmann::json j = nlohmann::json::parse(text);
-  int changed = 0, rejected = 0;
+  int changed_x = 0, rejected_x = 0, changed_y = 0, rejected_y = 0;
   for (std::size_t k = 0; k < j["nodes"].size(); ++k) {
     if (!j["nodes"][k].contains("farkas")) continue;
+    const bool x_side = j["nodes"][k]["empty"] == "X";
     for (std::size_t e = 0; e < j["nodes"][k]["farkas"].size(); ++e) {
       nlohmann::json t = j;
       bump(t["nodes"][k]["farkas"][e]);
-      ++changed;
-      rejected += check_text(t.dump()).verdict == CertificateVerdict::kInvalid;
+      const bool rejected = check_text(t.dump()).verdict == CertificateVerdict::kInvalid;
+      (x_side ? changed_x : changed_y)++;
+      (x_side ? rejected_x : rejected_y) += rejected;
     }
   }
-  // X-side vectors must satisfy w^T P = 0 exactly, so any change breaks them; Y-side vectors almost always.
-  EXPECT_GT(changed, 10);
-  EXPECT_GE(rejected, changed - 2);
+  // X-side vectors must satisfy w^T P = 0 exactly, so any change breaks them. A Y-side inequality with
+  // slack may survive a small change (the certificate then still proves the leaf empty).
+  EXPECT_GT(changed_x, 0);
+  EXPECT_EQ(rejected_x, changed_x);
+  EXPECT_GT(2 * rejected_y, changed_y);
 }
 
 TEST(UcpCertificate, ChangingTheProblemOrTheTreeIsRejected) {

@@ -1,0 +1,108 @@
+// Table 1 of Pang, Trinkle, Lo in spirit, and the speed targets of the UCP solver.
+//   ucp_bench [--quick]
+// Prints, for twenty random problems with the paper's nc, mu range, |alpha| and |abar| (section 5 generator,
+// seeded), the pairs, LPs, best x^T y, verdict and time of the paper algorithm, the modified algorithm and the
+// complete search (verified arithmetic); then the targets: nc = 40 solvable (verified), nc = 10 jammed,
+// and LPs of the complete search against the enumerative baseline at nc = 8.
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "solvers/ucp/generate.h"
+#include "solvers/ucp/solve.h"
+
+using namespace contactcert;
+using namespace contactcert::solvers::ucp;
+
+namespace {
+
+struct Table1Row {
+  int nc;
+  int mu_tenths;  // mu range (0, mu_tenths / 10)
+  int alpha, abar;
+};
+
+const Table1Row kTable1[20] = {{3, 10, 6, 0},    {10, 10, 20, 0},  {10, 20, 20, 0}, {15, 12, 29, 1},
+                               {18, 8, 27, 9},   {20, 10, 40, 0},  {20, 15, 40, 0}, {20, 12, 40, 0},
+                               {20, 10, 30, 10}, {20, 10, 30, 10}, {20, 10, 40, 0}, {30, 10, 60, 0},
+                               {30, 5, 45, 15},  {30, 6, 45, 15},  {40, 10, 80, 0}, {40, 10, 80, 0},
+                               {10, 13, 15, 5},  {15, 12, 24, 6},  {30, 6, 45, 15}, {40, 10, 60, 20}};
+
+UcpProblem make(int nc, int mu_tenths, int abar, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  RandomProblemOptions o;
+  o.nc = nc;
+  o.mu_max = Q(mu_tenths, 10);
+  o.mu_max.canonicalize();
+  o.abar_size = abar;
+  return generate_random_problem(o, rng);
+}
+
+UcpReport run(const UcpProblem& p, Method m, Arith a = Arith::kVerified, std::uint64_t seed = 1) {
+  UcpOptions o;
+  o.method = m;
+  o.arith = a;
+  o.seed = seed;
+  o.max_nodes = 100000;
+  return solve_ucp(p, o);
+}
+
+double best(const UcpReport& r) { return r.best_xTy ? r.best_xTy->get_d() : (r.x ? 0.0 : -1.0); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  std::printf("Table 1 (random problems, section 5 generator, seed 1000 + problem number; verified arithmetic)\n");
+  std::printf("%3s %3s %7s %5s %5s | %-26s | %-26s | %-34s\n", "No", "nc", "mu<", "|a|", "|ab|",
+              "paper: pairs LPs best time", "modified: pairs LPs best", "complete: LPs nodes verdict time");
+  int solvable = 0, jammed = 0, unknown = 0, paper_undecided = 0;
+  for (int k = 0; k < (quick ? 6 : 20); ++k) {
+    const Table1Row& t = kTable1[k];
+    const UcpProblem p = make(t.nc, t.mu_tenths, t.abar, 1000 + static_cast<std::uint64_t>(k) + 1);
+    const UcpReport a = run(p, Method::kPaper), b = run(p, Method::kModified), c = run(p, Method::kComplete);
+    paper_undecided += a.status != UcpStatus::kSolvable && b.status != UcpStatus::kSolvable;
+    (c.status == UcpStatus::kSolvable ? solvable : c.status == UcpStatus::kJammed ? jammed : unknown)++;
+    std::printf("%3d %3d %7.1f %5d %5d | %4ld %4ld %8.3g %6.3fs | %4ld %4ld %8.3g %6.3fs | %5ld %5ld %-8s %7.3fs\n", k + 1,
+                t.nc, t.mu_tenths / 10.0, t.alpha, t.abar, a.pairs, a.lps, best(a), a.seconds, b.pairs, b.lps, best(b),
+                b.seconds, c.lps, c.nodes, status_name(c.status), c.seconds);
+  }
+  std::printf("complete search: %d solvable, %d jammed, %d unknown; paper+modified left %d undecided\n\n", solvable,
+              jammed, unknown, paper_undecided);
+
+  // Target 1: nc = 40 solvable problems on the verified path.
+  std::printf("nc = 40, mu in (0, 1), |abar| = 0, solvable problems (complete, verified):\n");
+  int found = 0;
+  for (std::uint64_t s = 1; s < 60 && found < (quick ? 2 : 5); ++s) {
+    const UcpProblem p = make(40, 10, 0, s);
+    const UcpReport r = run(p, Method::kComplete);
+    if (r.status != UcpStatus::kSolvable) continue;
+    ++found;
+    const UcpReport f = run(p, Method::kComplete, Arith::kFloat);
+    std::printf("  seed %2llu: verified %6.1f ms (%ld LPs), float %6.2f ms\n", static_cast<unsigned long long>(s),
+                1e3 * r.seconds, r.lps, 1e3 * f.seconds);
+  }
+  // Target 2: nc = 10 jammed problems proven.
+  std::printf("nc = 10, mu in (0, 1.3), |abar| = 5, jammed problems (complete, verified):\n");
+  found = 0;
+  for (std::uint64_t s = 1; s < 60 && found < (quick ? 2 : 5); ++s) {
+    const UcpProblem p = make(10, 13, 5, s);
+    const UcpReport r = run(p, Method::kComplete);
+    if (r.status != UcpStatus::kJammed) continue;
+    ++found;
+    std::printf("  seed %2llu: proven jammed in %6.1f ms (%ld LPs, %ld nodes)\n", static_cast<unsigned long long>(s),
+                1e3 * r.seconds, r.lps, r.nodes);
+  }
+  // Target 3: LPs at nc = 8 against the enumerative baseline (4^8 modes, one LP each).
+  std::printf("nc = 8, |alpha| = 16, mu in (0, 1): LPs of the complete search vs the enumerative baseline:\n");
+  for (std::uint64_t s = 1; s <= (quick ? 1u : 4u); ++s) {
+    const UcpProblem p = make(8, 10, 0, s);
+    const UcpReport c = run(p, Method::kComplete), e = run(p, Method::kEnumerate);
+    std::printf("  seed %llu: complete %-8s %4ld LPs %7.1f ms | enumerate %-8s %ld LPs (%ld solution modes) %7.1f ms | "
+                "ratio %.0fx\n",
+                static_cast<unsigned long long>(s), status_name(c.status), c.lps, 1e3 * c.seconds, status_name(e.status),
+                e.lps, e.solutions, 1e3 * e.seconds, static_cast<double>(e.lps) / static_cast<double>(c.lps));
+  }
+  return 0;
+}
