@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    std::cerr << "contactcert: " << e.what() << " (run with --help for usage)\n";  // one line, exit 2
     return 2;
   } catch (const exact::InputError& e) {
     std::cerr << "contactcert: " << e.what() << "\n";

@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -195,9 +196,9 @@ void register_ucp(CLI::App& app, Action& action) {
       ->capture_default_str();
   sub->add_option("--seed", o->seed, "Seed of the random choices (Step 3) and of generators")->capture_default_str();
   sub->add_option("--certificate", o->certificate, "Write the certificate of the verdict to this file");
-  sub->add_option("--max-nodes", o->max_nodes, "Node budget of the complete search")->check(CLI::PositiveNumber)->capture_default_str();
+  sub->add_option("--max-nodes", o->max_nodes, "Node budget of the complete search")->check(CLI::Range(1L, std::numeric_limits<long>::max()))->capture_default_str();
   sub->add_option("--max-bases", o->max_bases, "Step 3: bases explored per degenerate vertex")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Range(1L, std::numeric_limits<long>::max()))
       ->capture_default_str();
   sub->add_option("--generate", o->generate, "Write a problem instead: random (section 5) | reduction (Proposition 2)")
       ->check(CLI::IsMember({"random", "reduction"}));
