@@ -23,11 +23,10 @@ struct Table1Row {
   int alpha, abar;
 };
 
-const Table1Row kTable1[20] = {{3, 10, 6, 0},    {10, 10, 20, 0},  {10, 20, 20, 0}, {15, 12, 29, 1},
-                               {18, 8, 27, 9},   {20, 10, 40, 0},  {20, 15, 40, 0}, {20, 12, 40, 0},
-                               {20, 10, 30, 10}, {20, 10, 30, 10}, {20, 10, 40, 0}, {30, 10, 60, 0},
-                               {30, 5, 45, 15},  {30, 6, 45, 15},  {40, 10, 80, 0}, {40, 10, 80, 0},
-                               {10, 13, 15, 5},  {15, 12, 24, 6},  {30, 6, 45, 15}, {40, 10, 60, 20}};
+const Table1Row kTable1[20] = {{3, 10, 6, 0},   {10, 10, 20, 0}, {10, 20, 20, 0}, {15, 12, 29, 1},  {18, 8, 27, 9},
+                               {20, 10, 40, 0}, {20, 15, 40, 0}, {20, 12, 40, 0}, {20, 10, 30, 10}, {20, 10, 30, 10},
+                               {20, 10, 40, 0}, {30, 10, 60, 0}, {30, 5, 45, 15}, {30, 6, 45, 15},  {40, 10, 80, 0},
+                               {40, 10, 80, 0}, {10, 13, 15, 5}, {15, 12, 24, 6}, {30, 6, 45, 15},  {40, 10, 60, 20}};
 
 UcpProblem make(int nc, int mu_tenths, int abar, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
@@ -64,9 +63,9 @@ int main(int argc, char** argv) {
     const UcpReport a = run(p, Method::kPaper), b = run(p, Method::kModified), c = run(p, Method::kComplete);
     paper_undecided += a.status != UcpStatus::kSolvable && b.status != UcpStatus::kSolvable;
     (c.status == UcpStatus::kSolvable ? solvable : c.status == UcpStatus::kJammed ? jammed : unknown)++;
-    std::printf("%3d %3d %7.1f %5d %5d | %4ld %4ld %8.3g %6.3fs | %4ld %4ld %8.3g %6.3fs | %5ld %5ld %-8s %7.3fs\n", k + 1,
-                t.nc, t.mu_tenths / 10.0, t.alpha, t.abar, a.pairs, a.lps, best(a), a.seconds, b.pairs, b.lps, best(b),
-                b.seconds, c.lps, c.nodes, status_name(c.status), c.seconds);
+    std::printf("%3d %3d %7.1f %5d %5d | %4ld %4ld %8.3g %6.3fs | %4ld %4ld %8.3g %6.3fs | %5ld %5ld %-8s %7.3fs\n",
+                k + 1, t.nc, t.mu_tenths / 10.0, t.alpha, t.abar, a.pairs, a.lps, best(a), a.seconds, b.pairs, b.lps,
+                best(b), b.seconds, c.lps, c.nodes, status_name(c.status), c.seconds);
   }
   std::printf("complete search: %d solvable, %d jammed, %d unknown; paper+modified left %d undecided\n\n", solvable,
               jammed, unknown, paper_undecided);
@@ -99,10 +98,11 @@ int main(int argc, char** argv) {
   for (std::uint64_t s = 1; s <= (quick ? 1u : 4u); ++s) {
     const UcpProblem p = make(8, 10, 0, s);
     const UcpReport c = run(p, Method::kComplete), e = run(p, Method::kEnumerate);
-    std::printf("  seed %llu: complete %-8s %4ld LPs %7.1f ms | enumerate %-8s %ld LPs (%ld solution modes) %7.1f ms | "
-                "ratio %.0fx\n",
-                static_cast<unsigned long long>(s), status_name(c.status), c.lps, 1e3 * c.seconds, status_name(e.status),
-                e.lps, e.solutions, 1e3 * e.seconds, static_cast<double>(e.lps) / static_cast<double>(c.lps));
+    std::printf(
+        "  seed %llu: complete %-8s %4ld LPs %7.1f ms | enumerate %-8s %ld LPs (%ld solution modes) %7.1f ms | "
+        "ratio %.0fx\n",
+        static_cast<unsigned long long>(s), status_name(c.status), c.lps, 1e3 * c.seconds, status_name(e.status), e.lps,
+        e.solutions, 1e3 * e.seconds, static_cast<double>(e.lps) / static_cast<double>(c.lps));
   }
   return 0;
 }

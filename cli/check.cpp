@@ -1,7 +1,6 @@
 // `contactcert check FILE`: independent verification of a certificate. The certificate's top-level "kind"
 // selects its checker; each checker re-derives everything from the embedded problem and trusts nothing else.
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -55,8 +54,8 @@ int run_check(const CheckOptions& o) {
     for (auto it = c.details.begin(); it != c.details.end(); ++it) j[it.key()] = it.value();
     std::cout << j.dump() << "\n";
   } else {
-    std::cout << "check " << o.file << ": " << c.kind << " certificate is " << (c.valid ? "VALID" : "INVALID")
-              << "\n  " << c.reason << "\n";
+    std::cout << "check " << o.file << ": " << c.kind << " certificate is " << (c.valid ? "VALID" : "INVALID") << "\n  "
+              << c.reason << "\n";
   }
   return 0;
 }

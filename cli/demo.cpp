@@ -205,6 +205,10 @@ void quasistatic(const DemoOptions& o, HtmlReport& rep) {
 
 int run_demo(const DemoOptions& o) {
   if (!fs::is_directory(o.scenes)) throw exact::InputError(o.scenes, "", "the scenes folder does not exist");
+  std::error_code ec;
+  fs::create_directories(o.out, ec);
+  if (ec || !fs::is_directory(o.out))
+    throw exact::InputError(o.out, "--out", "a folder that can be created (" + ec.message() + ")");
   const auto t0 = std::chrono::steady_clock::now();
   HtmlReport rep("contactcert demo: both papers, exactly");
   rep.paragraph("Every number below is exact (rational arithmetic); every 'no' carries a certificate that the "

@@ -1,7 +1,6 @@
 // `contactcert ucp FILE`: does the quasistatic contact problem (Pang, Trinkle, Lo) have a solution?
 // `contactcert ucp --generate random|reduction`: writes problem files (section 5 generator, Proposition 2).
 #include <CLI/CLI.hpp>
-
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -83,7 +82,8 @@ int run_generate(const UcpCliOptions& o) {
       throw exact::InputError("command line", "--rows/--cols", "expected rows >= 1 and 1 <= cols <= 60");
     const ucp::ZeroOneProblem zo = ucp::random_zero_one(o.rows, o.cols, o.planted, rng);
     p = ucp::reduction_problem(zo);
-    if (o.cols <= 20) p.source += ucp::zero_one_feasible(zo) ? " (0-1 feasible: solvable)" : " (0-1 infeasible: jammed)";
+    if (o.cols <= 20)
+      p.source += ucp::zero_one_feasible(zo) ? " (0-1 feasible: solvable)" : " (0-1 infeasible: jammed)";
   }
   p.source += ", seed " + std::to_string(o.seed);
   write_text(o.out, ucp::to_json_text(p));
@@ -126,13 +126,14 @@ int run_ucp(const UcpCliOptions& o) {
     j["x_approx"] = doubles(r.x_approx);
     j["y_approx"] = doubles(r.y_approx);
   }
-  if (r.best_xTy) j["best_xTy"] = exact::to_string(*r.best_xTy);
-  else if (r.arith == exact::Arith::kFloat) j["best_xTy_approx"] = r.best_xTy_approx;
+  if (r.best_xTy)
+    j["best_xTy"] = exact::to_string(*r.best_xTy);
+  else if (r.arith == exact::Arith::kFloat)
+    j["best_xTy_approx"] = r.best_xTy_approx;
   if (r.physical) {
     const ucp::PhysicalSolution& s = *r.physical;
-    j["physical"] = {{"c_n", strings(s.c_n)},   {"c_t", strings(s.c_t)},
-                     {"v_n", strings(s.v_n)},   {"v_t", strings(s.v_t)},
-                     {"q_dot", strings(s.q_dot)}, {"theta_dot", strings(s.theta_dot)},
+    j["physical"] = {{"c_n", strings(s.c_n)}, {"c_t", strings(s.c_t)},     {"v_n", strings(s.v_n)},
+                     {"v_t", strings(s.v_t)}, {"q_dot", strings(s.q_dot)}, {"theta_dot", strings(s.theta_dot)},
                      {"tau", strings(s.tau)}};
     j["physical"]["tau_is"] = "tau - g_man (joint efforts net of gravity loads), all joints";
   }
@@ -177,7 +178,8 @@ int run_ucp(const UcpCliOptions& o) {
       }
     if (r.conditions)
       std::cout << "  conditions (2)-(10): "
-                << (r.conditions->status == ucp::ConditionsStatus::kSatisfied ? "satisfied exactly" : "VIOLATED") << "\n";
+                << (r.conditions->status == ucp::ConditionsStatus::kSatisfied ? "satisfied exactly" : "VIOLATED")
+                << "\n";
     if (r.solutions >= 0) std::cout << "  solution modes: " << r.solutions << "\n";
     if (!cert_text.empty()) std::cout << "  certificate written to " << o.certificate << "\n";
   }
@@ -188,7 +190,8 @@ int run_ucp(const UcpCliOptions& o) {
 
 void register_ucp(CLI::App& app, Action& action) {
   auto o = std::make_shared<UcpCliOptions>();
-  CLI::App* sub = app.add_subcommand("ucp", "Solve the quasistatic contact problem (Pang, Trinkle, Lo) or prove it jammed");
+  CLI::App* sub =
+      app.add_subcommand("ucp", "Solve the quasistatic contact problem (Pang, Trinkle, Lo) or prove it jammed");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Problem file (SPEC section 2, or \"kind\": \"ucp\")");
   sub->add_option("--method", o->method, "paper | modified | complete | enumerate")
@@ -196,7 +199,9 @@ void register_ucp(CLI::App& app, Action& action) {
       ->capture_default_str();
   sub->add_option("--seed", o->seed, "Seed of the random choices (Step 3) and of generators")->capture_default_str();
   sub->add_option("--certificate", o->certificate, "Write the certificate of the verdict to this file");
-  sub->add_option("--max-nodes", o->max_nodes, "Node budget of the complete search")->check(CLI::Range(1L, std::numeric_limits<long>::max()))->capture_default_str();
+  sub->add_option("--max-nodes", o->max_nodes, "Node budget of the complete search")
+      ->check(CLI::Range(1L, std::numeric_limits<long>::max()))
+      ->capture_default_str();
   sub->add_option("--max-bases", o->max_bases, "Step 3: bases explored per degenerate vertex")
       ->check(CLI::Range(1L, std::numeric_limits<long>::max()))
       ->capture_default_str();

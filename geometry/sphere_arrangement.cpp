@@ -1,7 +1,9 @@
 #include "geometry/sphere_arrangement.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
+#include <set>
 
 namespace contactcert::geometry {
 namespace {
@@ -53,25 +55,33 @@ class Builder {
   void add(int dimension, const V3<T>& p) {
     std::vector<int> s(n_.size());
     for (std::size_t j = 0; j < n_.size(); ++j) s[j] = sign(dot(n_[j], p));
-    if (seen_.emplace(s, cells_.size()).second) cells_.push_back({dimension, Vec<T>(p), s});
+    record(dimension, p, std::move(s));
   }
 
-  // The point v + eps u, with eps small enough that every plane not through v keeps its sign at v.
-  V3<T> nudge(const V3<T>& v, const V3<T>& u) const {
+  // Adds the cell of v + eps u, eps > 0 small enough that every plane not through v keeps its sign at v
+  // (eps = half the least |n.v| / |n.u| over the planes whose sign would flip). `nv` caches n_j . v.
+  void add_near(int dimension, const V3<T>& v, const std::vector<T>& nv, const V3<T>& u) {
+    std::vector<T> nu(n_.size());
     T eps = T(1);
-    for (const V3<T>& n : n_) {
-      const T nv = dot(n, v), nu = dot(n, u);
-      if (is_zero(nv) || is_zero(nu) || sign(nv) == sign(nu)) continue;
-      const T bound = T(-nv / nu) / T(2);  // positive
+    for (std::size_t j = 0; j < n_.size(); ++j) {
+      nu[j] = dot(n_[j], u);
+      if (is_zero(nv[j]) || is_zero(nu[j]) || sign(nv[j]) == sign(nu[j])) continue;
+      const T bound = T(-nv[j] / nu[j]) / T(2);  // positive
       if (bound < eps) eps = bound;
     }
-    return V3<T>(T(v(0) + eps * u(0)), T(v(1) + eps * u(1)), T(v(2) + eps * u(2)));
+    std::vector<int> s(n_.size());
+    for (std::size_t j = 0; j < n_.size(); ++j) s[j] = is_zero(nv[j]) ? sign(nu[j]) : sign(nv[j]);
+    if (seen_.count(s)) return;
+    record(dimension, V3<T>(T(v(0) + eps * u(0)), T(v(1) + eps * u(1)), T(v(2) + eps * u(2))), std::move(s));
   }
 
   std::vector<ArrangementCell<T>> cells() && { return std::move(cells_); }
-  const std::vector<V3<T>>& normals() const { return n_; }
 
  private:
+  void record(int dimension, const V3<T>& p, std::vector<int> s) {
+    if (seen_.emplace(s, cells_.size()).second) cells_.push_back({dimension, Vec<T>(p), std::move(s)});
+  }
+
   std::vector<V3<T>> n_;
   std::map<std::vector<int>, std::size_t> seen_;
   std::vector<ArrangementCell<T>> cells_;
@@ -103,23 +113,29 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals) {
     b.add(3, a);
     b.add(3, V3<T>(-a));
   } else {
-    // Vertices: the lines n_i x n_j, both directions.
-    std::vector<V3<T>> vertices;
+    // Vertices: the lines n_i x n_j, both directions, each scaled so that its first non-zero
+    // coordinate is +-1 (equal rays then compare equal; float near-duplicates only cost time, since
+    // cells are merged by sign vector).
+    std::set<std::array<T, 3>> vertices;
     for (std::size_t i = 0; i < n.size(); ++i)
       for (std::size_t j = i + 1; j < n.size(); ++j) {
-        const V3<T> d = cross(n[i], n[j]);
-        for (const V3<T>& v : {d, V3<T>(-d)})
-          if (std::none_of(vertices.begin(), vertices.end(),
-                           [&](const V3<T>& w) { return parallel(v, w) && sign(dot(v, w)) > 0; }))
-            vertices.push_back(v);
+        V3<T> d = cross(n[i], n[j]);
+        const T lead = !is_zero(d(0)) ? d(0) : (!is_zero(d(1)) ? d(1) : d(2));
+        const T scale = sign(lead) > 0 ? lead : T(-lead);
+        d /= scale;
+        vertices.insert({d(0), d(1), d(2)});
+        vertices.insert({T(-d(0)), T(-d(1)), T(-d(2))});
       }
-    for (const V3<T>& v : vertices) {
+    for (const auto& key : vertices) {
+      const V3<T> v(key[0], key[1], key[2]);
       b.add(1, v);
+      std::vector<T> nv(n.size());
+      for (std::size_t j = 0; j < n.size(); ++j) nv[j] = dot(n[j], v);
       // Tangent directions at v of the circles through v, sorted around v.
       std::vector<V3<T>> dirs;
-      for (const V3<T>& a : n)
-        if (is_zero(dot(a, v))) {
-          const V3<T> d = cross(a, v);
+      for (std::size_t j = 0; j < n.size(); ++j)
+        if (is_zero(nv[j])) {
+          const V3<T> d = cross(n[j], v);
           dirs.push_back(d);
           dirs.push_back(V3<T>(-d));
         }
@@ -130,9 +146,9 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals) {
       for (std::size_t k = 0; k < order.size(); ++k) {
         const V3<T>& d = order[k].second;
         const V3<T>& next = order[(k + 1) % order.size()].second;
-        b.add(2, b.nudge(v, d));  // along an arc leaving v
+        b.add_near(2, v, nv, d);  // along an arc leaving v
         // Between two consecutive tangent directions (less than pi apart): a region at v.
-        b.add(3, b.nudge(v, V3<T>(T(d(0) + next(0)), T(d(1) + next(1)), T(d(2) + next(2)))));
+        b.add_near(3, v, nv, V3<T>(T(d(0) + next(0)), T(d(1) + next(1)), T(d(2) + next(2))));
       }
     }
   }

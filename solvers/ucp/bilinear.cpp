@@ -15,8 +15,7 @@ T dot(const Vec<T>& a, const Vec<T>& b) {
 }  // namespace
 
 template <class T>
-BilinearResult<T> bilinear(const Face<T>& FX, const Face<T>& FY, const BilinearOptions& opts,
-                           std::mt19937_64& rng) {
+BilinearResult<T> bilinear(const Face<T>& FX, const Face<T>& FY, const BilinearOptions& opts, std::mt19937_64& rng) {
   BilinearResult<T> r;
   LpCounters& count = r.counters;
   // Step 0: (x^0, y^0) from two LPs with a zero objective.
@@ -103,10 +102,9 @@ void alternate_lps(const Face<T>& FX, const Face<T>& FY, FaceVertex<T>& x, FaceV
   }
 }
 
-#define CONTACTCERT_BILINEAR_INSTANTIATE(T)                                                              \
-  template BilinearResult<T> bilinear<T>(const Face<T>&, const Face<T>&, const BilinearOptions&,          \
-                                         std::mt19937_64&);                                               \
-  template void alternate_lps<T>(const Face<T>&, const Face<T>&, FaceVertex<T>&, FaceVertex<T>&, Arith, int, \
+#define CONTACTCERT_BILINEAR_INSTANTIATE(T)                                                                         \
+  template BilinearResult<T> bilinear<T>(const Face<T>&, const Face<T>&, const BilinearOptions&, std::mt19937_64&); \
+  template void alternate_lps<T>(const Face<T>&, const Face<T>&, FaceVertex<T>&, FaceVertex<T>&, Arith, int,        \
                                  LpCounters&);
 CONTACTCERT_BILINEAR_INSTANTIATE(double)
 CONTACTCERT_BILINEAR_INSTANTIATE(Q)

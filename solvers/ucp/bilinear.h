@@ -17,9 +17,10 @@ enum class Step3Rule { kPaper, kModified };
 
 struct BilinearOptions {
   Step3Rule step3 = Step3Rule::kPaper;
-  int max_random_moves = 20;  ///< section 5: "Step 1 was reinvoked 20 times, after which the algorithm was set to terminate"
-  long max_pairs = 2000;      ///< safety bound on the iteration counter nu
-  long max_bases = 100000;    ///< Step 3: bases explored per degenerate vertex (AdjacencyOptions::max_bases)
+  int max_random_moves =
+      20;  ///< section 5: "Step 1 was reinvoked 20 times, after which the algorithm was set to terminate"
+  long max_pairs = 2000;    ///< safety bound on the iteration counter nu
+  long max_bases = 100000;  ///< Step 3: bases explored per degenerate vertex (AdjacencyOptions::max_bases)
   Arith arith = Arith::kVerified;
 };
 
@@ -52,11 +53,11 @@ template <class T>
 void alternate_lps(const Face<T>& FX, const Face<T>& FY, FaceVertex<T>& x, FaceVertex<T>& y, Arith arith,
                    int max_rounds, LpCounters& count);
 
-#define CONTACTCERT_BILINEAR_EXTERN(T)                                                                      \
-  extern template BilinearResult<T> bilinear<T>(const Face<T>&, const Face<T>&, const BilinearOptions&,      \
-                                                std::mt19937_64&);                                          \
-  extern template void alternate_lps<T>(const Face<T>&, const Face<T>&, FaceVertex<T>&, FaceVertex<T>&, Arith, \
-                                        int, LpCounters&);
+#define CONTACTCERT_BILINEAR_EXTERN(T)                                                                              \
+  extern template BilinearResult<T> bilinear<T>(const Face<T>&, const Face<T>&, const BilinearOptions&,             \
+                                                std::mt19937_64&);                                                  \
+  extern template void alternate_lps<T>(const Face<T>&, const Face<T>&, FaceVertex<T>&, FaceVertex<T>&, Arith, int, \
+                                        LpCounters&);
 CONTACTCERT_BILINEAR_EXTERN(double)
 CONTACTCERT_BILINEAR_EXTERN(Q)
 #undef CONTACTCERT_BILINEAR_EXTERN

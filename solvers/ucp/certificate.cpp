@@ -87,7 +87,8 @@ CheckData derive(const UcpProblem& u) {
 
 /// Checks that `u` proves {z >= 0 : A z = b, z_j = 0 for zero[j]} empty; returns "" or why not.
 std::string check_farkas(const Mat<Q>& A, const Vec<Q>& b, const std::vector<bool>& zero, const Vec<Q>& u) {
-  if (u.size() != A.rows()) return "Farkas vector has " + std::to_string(u.size()) + " entries, expected " + std::to_string(A.rows());
+  if (u.size() != A.rows())
+    return "Farkas vector has " + std::to_string(u.size()) + " entries, expected " + std::to_string(A.rows());
   const Vec<Q> g = A.transpose() * u;
   for (Index j = 0; j < g.size(); ++j)
     if (!zero[static_cast<std::size_t>(j)] && sgn(g(j)) < 0)
@@ -100,7 +101,8 @@ std::string check_farkas(const Mat<Q>& A, const Vec<Q>& b, const std::vector<boo
 /// Quasistatic X side: w^T P = 0, (w_n, w_t, -w_t) >= 0 on free columns, w^T h > 0.
 std::string check_velocity_farkas(const CheckData& c, const std::vector<bool>& zero, const Vec<Q>& w) {
   const Index nc = c.n / 3;
-  if (w.size() != 2 * nc) return "Farkas vector has " + std::to_string(w.size()) + " entries, expected 2nc = " + std::to_string(2 * nc);
+  if (w.size() != 2 * nc)
+    return "Farkas vector has " + std::to_string(w.size()) + " entries, expected 2nc = " + std::to_string(2 * nc);
   const Vec<Q> wP = c.P.transpose() * w;
   for (Index k = 0; k < wP.size(); ++k)
     if (sgn(wP(k)) != 0) return "w^T P is not zero in column " + std::to_string(k);

@@ -39,10 +39,18 @@ EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max
       }
       const Index nc = units, vn = k, vp = nc + k, vm = 2 * nc + k;  // (v_n, v_t^+, v_t^-) and (c_n, s_t^+, s_t^-)
       switch (c) {
-        case 0: fix_y(vn), fix_y(vp), fix_y(vm), name += 's'; break;  // separate: c = 0
-        case 1: fix_x(vn), fix_x(vp), fix_x(vm), name += 'r'; break;  // roll: v = 0
-        case 2: fix_x(vn), fix_x(vm), fix_y(vp), name += '+'; break;  // slide +: c_t = -mu c_n
-        default: fix_x(vn), fix_x(vp), fix_y(vm), name += '-'; break; // slide -: c_t = mu c_n
+        case 0:
+          fix_y(vn), fix_y(vp), fix_y(vm), name += 's';
+          break;  // separate: c = 0
+        case 1:
+          fix_x(vn), fix_x(vp), fix_x(vm), name += 'r';
+          break;  // roll: v = 0
+        case 2:
+          fix_x(vn), fix_x(vm), fix_y(vp), name += '+';
+          break;  // slide +: c_t = -mu c_n
+        default:
+          fix_x(vn), fix_x(vp), fix_y(vm), name += '-';
+          break;  // slide -: c_t = mu c_n
       }
     }
     const FaceLpResult<Q> r = minimize_on_face(make_face(XY, zero), Vec<Q>(Vec<Q>::Zero(2 * n)), arith, count);

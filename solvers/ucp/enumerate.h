@@ -12,11 +12,11 @@
 namespace contactcert::solvers::ucp {
 
 struct EnumerateResult {
-  UcpStatus status = UcpStatus::kUnknown;  ///< kUnknown if the LP budget was too small for all modes
-  long lps = 0;                            ///< modes tested (one LP each)
-  long solutions = 0;                      ///< modes with a complementary pair
-  std::vector<std::string> solution_modes; ///< per solution, one letter per contact: s r + -
-  Vec<Q> x, y;                             ///< the pair of the first solution mode
+  UcpStatus status = UcpStatus::kUnknown;   ///< kUnknown if the LP budget was too small for all modes
+  long lps = 0;                             ///< modes tested (one LP each)
+  long solutions = 0;                       ///< modes with a complementary pair
+  std::vector<std::string> solution_modes;  ///< per solution, one letter per contact: s r + -
+  Vec<Q> x, y;                              ///< the pair of the first solution mode
 };
 
 /// Tests all 4^nc contact-mode assignments of a quasistatic problem (per contact i: separate c_i = 0; roll

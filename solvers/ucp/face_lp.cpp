@@ -85,8 +85,8 @@ std::vector<FaceVertex<T>> adjacent_on_face(const Face<T>& F, const FaceVertex<T
   return out;
 }
 
-#define CONTACTCERT_FACE_LP_INSTANTIATE(T)                                                        \
-  template Face<T> make_face<T>(const StandardPolyhedron<T>&, const std::vector<bool>&);         \
+#define CONTACTCERT_FACE_LP_INSTANTIATE(T)                                                         \
+  template Face<T> make_face<T>(const StandardPolyhedron<T>&, const std::vector<bool>&);           \
   template FaceLpResult<T> minimize_on_face<T>(const Face<T>&, const Vec<T>&, Arith, LpCounters&); \
   template std::vector<FaceVertex<T>> adjacent_on_face<T>(const Face<T>&, const FaceVertex<T>&, long, LpCounters&);
 CONTACTCERT_FACE_LP_INSTANTIATE(double)

@@ -15,17 +15,17 @@ using exact::Arith;
 
 /// Work counters (Table 1 counts LPs).
 struct LpCounters {
-  long lps = 0;           ///< linear programs solved
-  long adjacencies = 0;   ///< adjacent-vertex enumerations (Step 3)
+  long lps = 0;                     ///< linear programs solved
+  long adjacencies = 0;             ///< adjacent-vertex enumerations (Step 3)
   long incomplete_adjacencies = 0;  ///< enumerations cut short by the basis budget at a degenerate vertex
 };
 
 /// The face of P where the columns in `zero` are fixed to 0, as a smaller standard-form polyhedron.
 template <class T>
 struct Face {
-  StandardPolyhedron<T> reduced;       ///< the free columns of P only
-  std::vector<Eigen::Index> columns;   ///< columns of P kept, ascending
-  Eigen::Index n = 0;                  ///< columns of P
+  StandardPolyhedron<T> reduced;      ///< the free columns of P only
+  std::vector<Eigen::Index> columns;  ///< columns of P kept, ascending
+  Eigen::Index n = 0;                 ///< columns of P
 };
 
 /// The face of P with x_j = 0 for every j with zero[j] (zero empty = P itself).
@@ -61,9 +61,9 @@ template <class T>
 std::vector<FaceVertex<T>> adjacent_on_face(const Face<T>& F, const FaceVertex<T>& v, long max_bases,
                                             LpCounters& count);
 
-#define CONTACTCERT_FACE_LP_EXTERN(T)                                                                    \
-  extern template Face<T> make_face<T>(const StandardPolyhedron<T>&, const std::vector<bool>&);         \
-  extern template FaceLpResult<T> minimize_on_face<T>(const Face<T>&, const Vec<T>&, Arith, LpCounters&); \
+#define CONTACTCERT_FACE_LP_EXTERN(T)                                                                        \
+  extern template Face<T> make_face<T>(const StandardPolyhedron<T>&, const std::vector<bool>&);              \
+  extern template FaceLpResult<T> minimize_on_face<T>(const Face<T>&, const Vec<T>&, Arith, LpCounters&);    \
   extern template std::vector<FaceVertex<T>> adjacent_on_face<T>(const Face<T>&, const FaceVertex<T>&, long, \
                                                                  LpCounters&);
 CONTACTCERT_FACE_LP_EXTERN(double)

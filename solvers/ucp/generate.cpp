@@ -26,10 +26,14 @@ std::pair<Q, Q> pythagorean_direction(std::mt19937_64& rng) {
   Q s(a * a + b * b);
   Q c = Q(a * a - b * b) / s, t = Q(2 * a * b) / s;
   switch (std::uniform_int_distribution<int>(0, 3)(rng)) {
-    case 0: return {c, t};
-    case 1: return {-t, c};
-    case 2: return {-c, -t};
-    default: return {t, -c};
+    case 0:
+      return {c, t};
+    case 1:
+      return {-t, c};
+    case 2:
+      return {-c, -t};
+    default:
+      return {t, -c};
   }
 }
 
@@ -50,7 +54,7 @@ UcpProblem generate_random_problem(const RandomProblemOptions& o, std::mt19937_6
     Q rx = uniform_q(rng, -10, 10, 10), ry = uniform_q(rng, -10, 10, 10);
     auto [nx, ny] = pythagorean_direction(rng);
     if (sgn(Q(nx * rx + ny * ry)) > 0) nx = -nx, ny = -ny;
-    const Q tx = -ny, ty = nx;  // n x t points out of the plane
+    const Q tx = -ny, ty = nx;                                       // n x t points out of the plane
     Wn(0, i) = nx, Wn(1, i) = ny, Wn(2, i) = cross(rx, ry, nx, ny);  // eq. (1)
     Wt(0, i) = tx, Wt(1, i) = ty, Wt(2, i) = cross(rx, ry, tx, ty);
   }
@@ -124,8 +128,8 @@ UcpProblem reduction_problem(const ZeroOneProblem& zo) {
   rhs << zo.b, Vec<Q>::Ones(n);
   u.ucp.X.b = rhs;
   u.ucp.Y.b = rhs;
-  u.source = "Proposition 2 reduction of a 0-1 problem with " + std::to_string(m) + " rows and " +
-             std::to_string(n) + " columns";
+  u.source = "Proposition 2 reduction of a 0-1 problem with " + std::to_string(m) + " rows and " + std::to_string(n) +
+             " columns";
   return u;
 }
 

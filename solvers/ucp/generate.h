@@ -11,7 +11,7 @@ namespace contactcert::solvers::ucp {
 /// Parameters of a random problem of section 5: point fingers on a workpiece, ntheta = 2nc, nq = 3.
 struct RandomProblemOptions {
   int nc = 3;
-  Q mu_max = 1;     ///< friction coefficients are drawn from (0, mu_max)
+  Q mu_max = 1;       ///< friction coefficients are drawn from (0, mu_max)
   int abar_size = 0;  ///< |abar|: joints that are effort-controlled (unknown velocity), 0 <= |abar| <= 2nc
 };
 

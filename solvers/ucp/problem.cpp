@@ -1,7 +1,6 @@
 #include "solvers/ucp/problem.h"
 
 #include <algorithm>
-
 #include <nlohmann/json.hpp>
 
 #include "exact/linalg.h"
@@ -106,8 +105,7 @@ Vec<Q> QuasistaticProblem::J_alpha_theta_alpha() const {
 void validate(const QuasistaticProblem& p, const std::string& file) {
   auto fail = [&](const std::string& path, const std::string& what) { throw InputError(file, path, what); };
   const Index m = p.nq + static_cast<Index>(p.abar.size());
-  if (p.P.rows() != 2 * p.nc || p.P.cols() != m)
-    fail("$.P", "expected a 2nc x (nq + |abar|) matrix");
+  if (p.P.rows() != 2 * p.nc || p.P.cols() != m) fail("$.P", "expected a 2nc x (nq + |abar|) matrix");
   if (p.Jn.rows() != p.nc || p.Jn.cols() != p.ntheta) fail("$.Jn", "expected an nc x ntheta matrix");
   if (p.Jt.rows() != p.nc || p.Jt.cols() != p.ntheta) fail("$.Jt", "expected an nc x ntheta matrix");
   if (p.mu.size() != p.nc) fail("$.mu", "expected nc entries");
@@ -117,7 +115,7 @@ void validate(const QuasistaticProblem& p, const std::string& file) {
     const Index col = p.nq + static_cast<Index>(k);
     if (p.P.col(col) != J.col(p.abar[k]))
       fail("$.P", "column " + std::to_string(col) + " (J_abar) must equal column " + std::to_string(p.abar[k]) +
-                     " of [Jn; Jt] (joint " + std::to_string(p.abar[k]) + " is not in alpha)");
+                      " of [Jn; Jt] (joint " + std::to_string(p.abar[k]) + " is not in alpha)");
   }
   for (Index i = 0; i < p.nc; ++i)
     if (sgn(p.mu(i)) < 0) fail("$.mu[" + std::to_string(i) + "]", "expected a friction coefficient >= 0");

@@ -32,13 +32,13 @@ struct UcpInstance {
 /// The quasistatic contact problem (section 2), exactly as read from a `"kind": "quasistatic"` file.
 struct QuasistaticProblem {
   int nc = 0, nq = 0, ntheta = 0;
-  Mat<Q> P;              ///< 2nc x (nq + |abar|): [W^T  J_abar]
-  Mat<Q> Jn, Jt;         ///< nc x ntheta
-  Vec<Q> theta_dot;      ///< ntheta; entries of joints in abar are 0 (unknown)
+  Mat<Q> P;                ///< 2nc x (nq + |abar|): [W^T  J_abar]
+  Mat<Q> Jn, Jt;           ///< nc x ntheta
+  Vec<Q> theta_dot;        ///< ntheta; entries of joints in abar are 0 (unknown)
   std::vector<int> alpha;  ///< joints with given velocity, ascending
   std::vector<int> abar;   ///< joints with given effort, ascending (the columns of J_abar in P)
-  Vec<Q> d;              ///< [0 (nc); g_obj (nq); (g_man - tau)_abar]
-  Vec<Q> mu;             ///< nc friction coefficients, >= 0
+  Vec<Q> d;                ///< [0 (nc); g_obj (nq); (g_man - tau)_abar]
+  Vec<Q> mu;               ///< nc friction coefficients, >= 0
 
   Mat<Q> Wn() const;  ///< nq x nc normal wrench matrix (from P's first nq columns)
   Mat<Q> Wt() const;  ///< nq x nc tangential wrench matrix

@@ -49,7 +49,8 @@ ConditionsCheck check_conditions(const QuasistaticProblem& p, const PhysicalSolu
       bad("(3) joint " + std::to_string(p.abar[k]) + " does not carry its given effort");
   // (4), (5) with the given velocities of the joints in alpha
   for (int j : p.alpha)
-    if (s.theta_dot(j) != p.theta_dot(j)) bad("theta_dot of joint " + std::to_string(j) + " differs from its given value");
+    if (s.theta_dot(j) != p.theta_dot(j))
+      bad("theta_dot of joint " + std::to_string(j) + " differs from its given value");
   const Vec<Q> r4 = Wn.transpose() * s.q_dot - p.Jn * s.theta_dot - s.v_n;
   const Vec<Q> r5 = Wt.transpose() * s.q_dot - p.Jt * s.theta_dot - s.v_t;
   for (Index i = 0; i < nc; ++i) {

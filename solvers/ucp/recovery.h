@@ -12,11 +12,11 @@ namespace contactcert::solvers::ucp {
 
 /// The quantities of the quasistatic contact problem recovered from (x, y) (proof of Proposition 1).
 struct PhysicalSolution {
-  Vec<Q> c_n, c_t;    ///< contact force intensities; c_t = s_t^+ - U c_n
-  Vec<Q> v_n, v_t;    ///< relative contact velocities; v_t = v_t^+ - v_t^-
-  Vec<Q> q_dot;       ///< object velocity (nq)
-  Vec<Q> theta_dot;   ///< all ntheta joint velocities (given ones and recovered unknown ones)
-  Vec<Q> tau;         ///< all ntheta joint efforts net of gravity loads: tau - g_man = Jn^T c_n + Jt^T c_t (3)
+  Vec<Q> c_n, c_t;   ///< contact force intensities; c_t = s_t^+ - U c_n
+  Vec<Q> v_n, v_t;   ///< relative contact velocities; v_t = v_t^+ - v_t^-
+  Vec<Q> q_dot;      ///< object velocity (nq)
+  Vec<Q> theta_dot;  ///< all ntheta joint velocities (given ones and recovered unknown ones)
+  Vec<Q> tau;        ///< all ntheta joint efforts net of gravity loads: tau - g_man = Jn^T c_n + Jt^T c_t (3)
 };
 
 /// Recovers the physics from x = (v_n, v_t^+, v_t^-) in X and y = (c_n, s_t^+, s_t^-) in Y; nullopt if x is

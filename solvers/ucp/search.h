@@ -32,10 +32,10 @@ struct SearchNode {
 };
 
 struct SearchOptions {
-  long max_nodes = 200000;          ///< node budget: the search ends `unknown` when it runs out
-  bool bilinear_first = true;       ///< run the bilinear algorithm on X x Y before branching (SPEC default)
+  long max_nodes = 200000;     ///< node budget: the search ends `unknown` when it runs out
+  bool bilinear_first = true;  ///< run the bilinear algorithm on X x Y before branching (SPEC default)
   BilinearOptions heuristic{Step3Rule::kModified, 20, 2000, 100000, Arith::kVerified};
-  int node_rounds = 3;              ///< Step-1 rounds of the heuristic at each node
+  int node_rounds = 3;  ///< Step-1 rounds of the heuristic at each node
 };
 
 /// Result with evidence: a complementary pair (kSolvable), or the search tree (kJammed, node 0 = root).
@@ -43,12 +43,12 @@ template <class T>
 struct SearchResult {
   UcpStatus status = UcpStatus::kUnknown;
   Vec<T> x, y;
-  T xTy = T(0);                     ///< best x^T y seen
+  T xTy = T(0);  ///< best x^T y seen
   std::vector<SearchNode<T>> tree;
-  std::string reason;               ///< "X is empty", "Y is empty", "search tree", "bilinear algorithm", ...
-  long nodes = 0;                   ///< nodes created
-  long learned_prunes = 0;          ///< nodes proven dead by an earlier Farkas vector, without an LP
-  long pairs = 0;                   ///< pairs of the bilinear heuristic at the root
+  std::string reason;       ///< "X is empty", "Y is empty", "search tree", "bilinear algorithm", ...
+  long nodes = 0;           ///< nodes created
+  long learned_prunes = 0;  ///< nodes proven dead by an earlier Farkas vector, without an LP
+  long pairs = 0;           ///< pairs of the bilinear heuristic at the root
   LpCounters counters;
 };
 

@@ -116,19 +116,26 @@ Method parse_method(const std::string& name) {
 
 const char* method_name(Method m) {
   switch (m) {
-    case Method::kPaper: return "paper";
-    case Method::kModified: return "modified";
-    case Method::kComplete: return "complete";
-    case Method::kEnumerate: return "enumerate";
+    case Method::kPaper:
+      return "paper";
+    case Method::kModified:
+      return "modified";
+    case Method::kComplete:
+      return "complete";
+    case Method::kEnumerate:
+      return "enumerate";
   }
   return "?";
 }
 
 const char* status_name(UcpStatus s) {
   switch (s) {
-    case UcpStatus::kSolvable: return "solvable";
-    case UcpStatus::kJammed: return "jammed";
-    case UcpStatus::kUnknown: return "unknown";
+    case UcpStatus::kSolvable:
+      return "solvable";
+    case UcpStatus::kJammed:
+      return "jammed";
+    case UcpStatus::kUnknown:
+      return "unknown";
   }
   return "?";
 }
@@ -146,9 +153,9 @@ UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts) {
     rep.lps = e.lps;
     rep.solutions = e.solutions;
     rep.solution_modes = e.solution_modes;
-    rep.reason = e.status == UcpStatus::kUnknown ? "too many modes for the enumeration budget"
-                                                 : std::to_string(e.solutions) + " of " + std::to_string(e.lps) +
-                                                       " modes have a solution";
+    rep.reason = e.status == UcpStatus::kUnknown
+                     ? "too many modes for the enumeration budget"
+                     : std::to_string(e.solutions) + " of " + std::to_string(e.lps) + " modes have a solution";
     if (e.solutions > 0) fill_pair(rep, e.x, e.y, problem);
   } else if (opts.arith == Arith::kFloat) {
     run<double>(problem, opts, rep);

@@ -39,17 +39,17 @@ struct UcpReport {
   std::string reason;
   Method method = Method::kComplete;
   Arith arith = Arith::kVerified;
-  std::optional<Vec<Q>> x, y;                 ///< the complementary pair (exact paths, kSolvable)
-  std::optional<Q> best_xTy;                  ///< smallest x^T y seen (exact paths)
-  Vec<double> x_approx, y_approx;             ///< float path
+  std::optional<Vec<Q>> x, y;      ///< the complementary pair (exact paths, kSolvable)
+  std::optional<Q> best_xTy;       ///< smallest x^T y seen (exact paths)
+  Vec<double> x_approx, y_approx;  ///< float path
   double best_xTy_approx = 0;
   std::optional<PhysicalSolution> physical;   ///< quasistatic problems, kSolvable
   std::optional<ConditionsCheck> conditions;  ///< (2)-(10) checked exactly on `physical`
   long pairs = 0, lps = 0, nodes = 0, learned_prunes = 0;
-  long incomplete_adjacencies = 0;            ///< Step 3 enumerations cut short by max_bases
-  long solutions = -1;                        ///< enumerate: solution modes (-1 = not counted)
+  long incomplete_adjacencies = 0;  ///< Step 3 enumerations cut short by max_bases
+  long solutions = -1;              ///< enumerate: solution modes (-1 = not counted)
   std::vector<std::string> solution_modes;
-  std::optional<SearchResult<Q>> proof;       ///< kJammed on an exact path: the tree for the certificate
+  std::optional<SearchResult<Q>> proof;  ///< kJammed on an exact path: the tree for the certificate
   double seconds = 0;
 };
 

@@ -93,6 +93,10 @@ check 2 '--max-nodes' ucp "$s/pang1994_dataset4.json" --max-nodes lots
 check 2 '--method' ucp "$s/pang1994_dataset4.json" --method bogus
 check 2 '--arith' ucp "$s/pang1994_dataset4.json" --arith approximate
 check 2 'FILE: expected a problem file' ucp
+check 2 '-: $: malformed JSON' ucp -
+check 2 'g.json: cannot open the file for writing' ucp --generate random --out "$work/a_directory.json/sub/g.json"
+check 2 'c.json: cannot open the file for writing' ucp "$m/ucp_valid.json" --certificate "$work/garbage.bin/c.json"
+check 2 'garbage.bin/out: --out: a folder that can be created' demo --out "$work/garbage.bin/out"
 check 2 '--mu-max: "1/0" is not an exact number (zero denominator' ucp --generate random --mu-max 1/0 --out "$work/gen.json"
 check 2 '--nc/--abar/--mu-max' ucp --generate random --nc 0 --out "$work/gen.json"
 

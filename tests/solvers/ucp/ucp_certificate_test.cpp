@@ -11,7 +11,9 @@
 namespace contactcert::solvers::ucp {
 namespace {
 
-std::string scene(int k) { return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json"; }
+std::string scene(int k) {
+  return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json";
+}
 
 CertificateCheck check_text(const std::string& text) {
   return check_ucp_certificate(exact::JsonInput::parse(text, "certificate"));

@@ -14,7 +14,9 @@ namespace {
 using exact::InputError;
 using exact::JsonInput;
 
-std::string scene(int k) { return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json"; }
+std::string scene(int k) {
+  return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json";
+}
 
 Q frac(long a, long b) {
   Q q(a, b);
@@ -73,7 +75,7 @@ TEST(UcpProblem, XIsTheSetOfContactVelocitiesReachableByQDotAndThetaAbar) {
       }
       EXPECT_EQ(u.ucp.X.A * x, u.ucp.X.b);
       if (Z.rows() == 0) continue;  // P has full row rank: every v is reachable
-      x(0) += 1;  // v_n changed alone: not reachable unless P spans e_0 (it does not here)
+      x(0) += 1;                    // v_n changed alone: not reachable unless P spans e_0 (it does not here)
       EXPECT_NE(u.ucp.X.A * x, u.ucp.X.b);
     }
   }
@@ -104,7 +106,11 @@ TEST(UcpProblem, BadInputIsAnInputErrorNamingTheField) {
   };
   const std::vector<Case> cases = {
       {"P has a wrong number of rows", [](auto& j) { j["P"].erase(3); }, ".P"},
-      {"P has a wrong number of columns", [](auto& j) { for (auto& r : j["P"]) r.erase(3); }, ".P"},
+      {"P has a wrong number of columns",
+       [](auto& j) {
+         for (auto& r : j["P"]) r.erase(3);
+       },
+       ".P"},
       {"Jn has a wrong width", [](auto& j) { j["Jn"][0].push_back(0); }, ".Jn"},
       {"J_abar column of P differs from [Jn; Jt]", [](auto& j) { j["P"][3][3] = "2"; }, ".P"},
       {"mu < 0", [](auto& j) { j["mu"][1] = "-0.1"; }, ".mu[1]"},

@@ -11,7 +11,9 @@
 namespace contactcert::solvers::ucp {
 namespace {
 
-std::string scene(int k) { return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json"; }
+std::string scene(int k) {
+  return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json";
+}
 
 bool in_polyhedron(const StandardPolyhedron<Q>& P, const Vec<Q>& x) {
   for (Eigen::Index i = 0; i < x.size(); ++i)
@@ -156,7 +158,9 @@ TEST(UcpCompleteSearch, ReductionInstancesAreSolvableExactlyWhenTheZeroOneProble
     } else {
       ++infeasible;
     }
-    if (2 * n <= 12) EXPECT_EQ(enumerate_modes(p, Arith::kExact, 1 << 12).status, s.status) << "seed " << seed;
+    if (2 * n <= 12) {
+      EXPECT_EQ(enumerate_modes(p, Arith::kExact, 1 << 12).status, s.status) << "seed " << seed;
+    }
   }
   EXPECT_GT(feasible, 5);
   EXPECT_GT(infeasible, 5);
