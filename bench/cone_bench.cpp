@@ -1,8 +1,8 @@
 // Cone conversion (generators -> facets): our exact (Q, fraction-free) and float paths against cddlib
 // GMP and cddlib double, in one run. Workloads: random integer cones (entries in [-20, 20], ANCHORS.md)
 // of dimension 3-12 with up to 40 generators (pointed: first coordinate positive), and the K matrices
-// of the wrench cone algorithm (eq. 15) for 1-6 fixels on a disk (arguments 0/fixels). Counters: facets, and for the float paths the number of
-// instances whose facet count differs from the exact answer (wrong).
+// of the wrench cone algorithm (eq. 15) for 1-6 fixels on a disk (arguments 0/fixels). Counters: facets, and for the
+// float paths the number of instances whose facet count differs from the exact answer (wrong).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -140,7 +140,8 @@ void BM_cdd_double(benchmark::State& state) {
 }
 
 void sizes(benchmark::internal::Benchmark* b) {
-  for (auto [d, n] : std::vector<std::pair<long, long>>{{3, 6}, {3, 20}, {3, 40}, {4, 12}, {6, 15}, {6, 30}, {6, 40}, {8, 20}, {9, 30}, {12, 18}})
+  for (auto [d, n] : std::vector<std::pair<long, long>>{
+           {3, 6}, {3, 20}, {3, 40}, {4, 12}, {6, 15}, {6, 30}, {6, 40}, {8, 20}, {9, 30}, {12, 18}})
     b->Args({d, n});
   for (long fixels = 1; fixels <= 6; ++fixels) b->Args({0, fixels});
   // Every instance once per repetition, so that all four converters time the same cones.

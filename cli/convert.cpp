@@ -2,10 +2,8 @@
 // Span in: the minimal face form out (and the minimal span form). Face in (strict rows allowed): the
 // closure's generators out, with the open faces, and the minimal face form of the cone itself.
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 #include <memory>
-
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
@@ -52,15 +50,21 @@ void print_rows(std::ostream& os, const char* title, const Mat<Q>& M, const char
 int run_float(const geometry::ConeInput& in, const ConvertOptions& opts) {
   nlohmann::json j;
   if (in.form == geometry::ConeInput::Form::kSpan) {
-    const auto s = SpanCone<double>::from_rows(in.span.dim, exact::to_double(in.span.rays), exact::to_double(in.span.lines));
+    const auto s =
+        SpanCone<double>::from_rows(in.span.dim, exact::to_double(in.span.rays), exact::to_double(in.span.lines));
     const FaceCone<double> f = geometry::canonical(geometry::to_face(s));
-    j = {{"input", "span"}, {"arith", "float"}, {"dim", f.dim},
+    j = {{"input", "span"},
+         {"arith", "float"},
+         {"dim", f.dim},
          {"face_approx", {{"inequalities", float_rows(f.inequalities)}, {"equalities", float_rows(f.equalities)}}}};
   } else {
     const auto c = FaceCone<double>::from_rows(in.face.dim, exact::to_double(in.face.inequalities),
                                                exact::to_double(in.face.equalities), exact::to_double(in.face.strict));
     const geometry::NncForm<double> n = geometry::nnc_form(c);
-    j = {{"input", "face"}, {"arith", "float"}, {"dim", c.dim}, {"empty", n.status == geometry::NncStatus::kEmpty},
+    j = {{"input", "face"},
+         {"arith", "float"},
+         {"dim", c.dim},
+         {"empty", n.status == geometry::NncStatus::kEmpty},
          {"span_approx", {{"rays", float_rows(n.closure.rays)}, {"lines", float_rows(n.closure.lines)}}},
          {"open_faces", n.open_faces}};
   }

@@ -25,9 +25,9 @@ bool identical(const FaceCone<T>& a, const FaceCone<T>& b);
 template <class T>
 bool identical(const SpanCone<T>& a, const SpanCone<T>& b);
 
-#define CONTACTCERT_CANONICAL_EXTERN(T)                                 \
-  extern template SpanCone<T> canonical<T>(const SpanCone<T>&);          \
-  extern template FaceCone<T> canonical<T>(const FaceCone<T>&);          \
+#define CONTACTCERT_CANONICAL_EXTERN(T)                                      \
+  extern template SpanCone<T> canonical<T>(const SpanCone<T>&);              \
+  extern template FaceCone<T> canonical<T>(const FaceCone<T>&);              \
   extern template bool identical<T>(const FaceCone<T>&, const FaceCone<T>&); \
   extern template bool identical<T>(const SpanCone<T>&, const SpanCone<T>&);
 CONTACTCERT_CANONICAL_EXTERN(double)

@@ -42,8 +42,11 @@ ConeInput read_cone(const exact::JsonInput& node) {
   const Index dim = node.at("dim").integer(1, 10000);
   const bool span = node.find("rays") || node.find("lines");
   const bool face = node.find("inequalities") || node.find("strict") || node.find("equalities");
-  if (span && face) node.fail("expected either the span form (rays, lines) or the face form (inequalities, strict, equalities), not both");
-  if (!span && !face) node.fail("expected \"rays\"/\"lines\" (span form) or \"inequalities\"/\"strict\"/\"equalities\" (face form)");
+  if (span && face)
+    node.fail(
+        "expected either the span form (rays, lines) or the face form (inequalities, strict, equalities), not both");
+  if (!span && !face)
+    node.fail("expected \"rays\"/\"lines\" (span form) or \"inequalities\"/\"strict\"/\"equalities\" (face form)");
   ConeInput in;
   if (span) {
     in.form = ConeInput::Form::kSpan;

@@ -133,8 +133,10 @@ class DoubleDescription {
       if (s > 0) {
         plus.push_back(r);
       } else {
-        if (s < 0) minus.push_back(r);
-        else bits_[r * words_ + t / 64] |= std::uint64_t{1} << (t % 64);
+        if (s < 0)
+          minus.push_back(r);
+        else
+          bits_[r * words_ + t / 64] |= std::uint64_t{1} << (t % 64);
         keep.push_back(r);
       }
     }
@@ -353,11 +355,13 @@ Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBu
     for (Index i = 0; i < n; ++i) {
       T s = T(0);
       for (Index j = 0; j < k; ++j)
-        if (ring_sign(y[static_cast<size_t>(j)]) != 0) s += M(i, j) * to_field(y[static_cast<size_t>(j)], static_cast<T*>(nullptr));
+        if (ring_sign(y[static_cast<size_t>(j)]) != 0)
+          s += M(i, j) * to_field(y[static_cast<size_t>(j)], static_cast<T*>(nullptr));
       x[static_cast<size_t>(i)] = s;
     }
     to_ring(x.data(), n, xr.data());
-    for (Index i = 0; i < n; ++i) out.rays(static_cast<Index>(r), i) = to_field(xr[static_cast<size_t>(i)], static_cast<T*>(nullptr));
+    for (Index i = 0; i < n; ++i)
+      out.rays(static_cast<Index>(r), i) = to_field(xr[static_cast<size_t>(i)], static_cast<T*>(nullptr));
   }
   return out;
 }

@@ -59,7 +59,8 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
   if (empty) {
     out.status = NncStatus::kEmpty;
     // Encoded as { g = 0, 0 . g < 0 } (canonical equalities: the identity rows, sorted).
-    const Mat<T> all = canonical(FaceCone<T>::from_rows(d, Mat<T>(0, d), Mat<T>(Mat<T>::Identity(d, d)), Mat<T>(0, d))).equalities;
+    const Mat<T> all =
+        canonical(FaceCone<T>::from_rows(d, Mat<T>(0, d), Mat<T>(Mat<T>::Identity(d, d)), Mat<T>(0, d))).equalities;
     out.face = FaceCone<T>::from_rows(d, Mat<T>(0, d), all, Mat<T>(Mat<T>::Zero(1, d)));
     out.closure = SpanCone<T>::from_rows(d, Mat<T>(0, d), Mat<T>(0, d));
     out.closure_face = FaceCone<T>::from_rows(d, Mat<T>(0, d), out.face.equalities, Mat<T>(0, d));
@@ -103,8 +104,8 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
   std::vector<Vec<T>> closed_rows;
   for (Index f = 0; f < F.rows(); ++f)
     if (!out.open_facets[static_cast<size_t>(f)]) closed_rows.push_back(F.row(f).transpose());
-  out.face = canonical(FaceCone<T>::from_rows(d, stack<T>(closed_rows, d), out.closure_face.equalities,
-                                              stack<T>(strict_rows, d)));
+  out.face = canonical(
+      FaceCone<T>::from_rows(d, stack<T>(closed_rows, d), out.closure_face.equalities, stack<T>(strict_rows, d)));
   return out;
 }
 
@@ -143,10 +144,10 @@ PointPosition<T> locate(const FaceCone<T>& cone, const Vec<T>& g) {
   return p;
 }
 
-#define CONTACTCERT_NNC_INSTANTIATE(T)                                        \
-  template struct NncForm<T>;                                                  \
-  template NncForm<T> nnc_form<T>(const FaceCone<T>&, const DdBudget&);        \
-  template bool contains_point<T>(const FaceCone<T>&, const Vec<T>&);          \
+#define CONTACTCERT_NNC_INSTANTIATE(T)                                  \
+  template struct NncForm<T>;                                           \
+  template NncForm<T> nnc_form<T>(const FaceCone<T>&, const DdBudget&); \
+  template bool contains_point<T>(const FaceCone<T>&, const Vec<T>&);   \
   template PointPosition<T> locate<T>(const FaceCone<T>&, const Vec<T>&);
 CONTACTCERT_NNC_INSTANTIATE(double)
 CONTACTCERT_NNC_INSTANTIATE(Q)

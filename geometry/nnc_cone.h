@@ -59,10 +59,10 @@ struct PointPosition {
 template <class T>
 PointPosition<T> locate(const FaceCone<T>& cone, const Vec<T>& g);
 
-#define CONTACTCERT_NNC_EXTERN(T)                                                    \
-  extern template struct NncForm<T>;                                                  \
-  extern template NncForm<T> nnc_form<T>(const FaceCone<T>&, const DdBudget&);        \
-  extern template bool contains_point<T>(const FaceCone<T>&, const Vec<T>&);          \
+#define CONTACTCERT_NNC_EXTERN(T)                                              \
+  extern template struct NncForm<T>;                                           \
+  extern template NncForm<T> nnc_form<T>(const FaceCone<T>&, const DdBudget&); \
+  extern template bool contains_point<T>(const FaceCone<T>&, const Vec<T>&);   \
   extern template PointPosition<T> locate<T>(const FaceCone<T>&, const Vec<T>&);
 CONTACTCERT_NNC_EXTERN(double)
 CONTACTCERT_NNC_EXTERN(Q)

@@ -99,7 +99,8 @@ FaceCone<T> project_by_polar(const ProjectionProblem<T>& problem, const DdBudget
   const Mat<T>& K = problem.K;
   const Mat<T>& P = problem.P;
   const Index d = P.cols();
-  const std::vector<bool> strict = problem.strict.empty() ? std::vector<bool>(static_cast<size_t>(K.cols()), false) : problem.strict;
+  const std::vector<bool> strict =
+      problem.strict.empty() ? std::vector<bool>(static_cast<size_t>(K.cols()), false) : problem.strict;
   if (K.rows() == 0) return nnc_form(whole_space<T>(d), budget).face;
   // K^F: pos(K) = { y : K^F y <= 0, E_K y = 0 } (section 3).
   const FaceCone<T> KF = to_face(SpanCone<T>::from_columns(K), budget);
@@ -122,7 +123,8 @@ FaceCone<T> project_by_lp(const ProjectionProblem<T>& problem, const DdBudget& b
   const Mat<T>& K = problem.K;
   const Mat<T>& P = problem.P;
   const Index d = P.cols();
-  const std::vector<bool> strict = problem.strict.empty() ? std::vector<bool>(static_cast<size_t>(K.cols()), false) : problem.strict;
+  const std::vector<bool> strict =
+      problem.strict.empty() ? std::vector<bool>(static_cast<size_t>(K.cols()), false) : problem.strict;
   if (K.rows() == 0) return nnc_form(whole_space<T>(d), budget).face;
   // Convex hull method: grow an inner cone pos(rays) + span(ker P) until every facet (and both sides
   // of every equality) of it is confirmed valid by an LP; each LP confirms a row or finds a new ray.
@@ -203,7 +205,8 @@ FaceCone<T> project_by_lp(const ProjectionProblem<T>& problem, const DdBudget& b
       if (subset(g, facet_sets[f])) s += inner.inequalities.row(static_cast<Index>(f)).transpose();
     strict_rows.push_back(s);
   }
-  return nnc_form(FaceCone<T>::from_rows(d, inner.inequalities, inner.equalities, stack_rows<T>(strict_rows, d)), budget)
+  return nnc_form(FaceCone<T>::from_rows(d, inner.inequalities, inner.equalities, stack_rows<T>(strict_rows, d)),
+                  budget)
       .face;
 }
 
@@ -219,9 +222,9 @@ AffineFace<T> theorem1(const Mat<T>& K, const Mat<T>& P, const Vec<T>& k, const 
   return out;
 }
 
-#define CONTACTCERT_PROJECTION_INSTANTIATE(T)                                                  \
-  template FaceCone<T> project_by_polar<T>(const ProjectionProblem<T>&, const DdBudget&);       \
-  template FaceCone<T> project_by_lp<T>(const ProjectionProblem<T>&, const DdBudget&);          \
+#define CONTACTCERT_PROJECTION_INSTANTIATE(T)                                             \
+  template FaceCone<T> project_by_polar<T>(const ProjectionProblem<T>&, const DdBudget&); \
+  template FaceCone<T> project_by_lp<T>(const ProjectionProblem<T>&, const DdBudget&);    \
   template AffineFace<T> theorem1<T>(const Mat<T>&, const Mat<T>&, const Vec<T>&, const DdBudget&);
 CONTACTCERT_PROJECTION_INSTANTIATE(double)
 CONTACTCERT_PROJECTION_INSTANTIATE(Q)

@@ -41,9 +41,9 @@ struct AffineFace {
 template <class T>
 AffineFace<T> theorem1(const Mat<T>& K, const Mat<T>& P, const Vec<T>& k, const DdBudget& budget = {});
 
-#define CONTACTCERT_PROJECTION_EXTERN(T)                                                           \
-  extern template FaceCone<T> project_by_polar<T>(const ProjectionProblem<T>&, const DdBudget&);    \
-  extern template FaceCone<T> project_by_lp<T>(const ProjectionProblem<T>&, const DdBudget&);       \
+#define CONTACTCERT_PROJECTION_EXTERN(T)                                                         \
+  extern template FaceCone<T> project_by_polar<T>(const ProjectionProblem<T>&, const DdBudget&); \
+  extern template FaceCone<T> project_by_lp<T>(const ProjectionProblem<T>&, const DdBudget&);    \
   extern template AffineFace<T> theorem1<T>(const Mat<T>&, const Mat<T>&, const Vec<T>&, const DdBudget&);
 CONTACTCERT_PROJECTION_EXTERN(double)
 CONTACTCERT_PROJECTION_EXTERN(Q)

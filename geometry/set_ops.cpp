@@ -87,8 +87,9 @@ Containment<T> contains(const FaceCone<T>& outer, const FaceCone<T>& inner, cons
     }
   for (Index l = 0; l < in.closure.lines.rows(); ++l)
     if (violated_row<T>(outer, in.closure.lines.row(l).transpose(), true, f)) {
-      const Vec<T> v = sign(T(f.dot(in.closure.lines.row(l).transpose()))) > 0 ? Vec<T>(in.closure.lines.row(l).transpose())
-                                                                                 : Vec<T>(-in.closure.lines.row(l).transpose());
+      const Vec<T> v = sign(T(f.dot(in.closure.lines.row(l).transpose()))) > 0
+                           ? Vec<T>(in.closure.lines.row(l).transpose())
+                           : Vec<T>(-in.closure.lines.row(l).transpose());
       out.status = ContainmentStatus::kNotContained;
       out.witness = push_inside<T>(v, c, f);
       return out;
@@ -126,8 +127,8 @@ bool equal(const FaceCone<T>& a, const FaceCone<T>& b, const DdBudget& budget) {
   }
 }
 
-#define CONTACTCERT_SETOPS_INSTANTIATE(T)                                                 \
-  template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);            \
+#define CONTACTCERT_SETOPS_INSTANTIATE(T)                                                       \
+  template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);                 \
   template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&); \
   template bool equal<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&);
 CONTACTCERT_SETOPS_INSTANTIATE(double)

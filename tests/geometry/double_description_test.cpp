@@ -1,4 +1,6 @@
 // Span <-> face conversion: round trips, degenerate cones, and cddlib (GMP) as the reference.
+#include "geometry/double_description.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -6,7 +8,6 @@
 #include "exact/input_error.h"
 #include "exact/linalg.h"
 #include "geometry/canonical.h"
-#include "geometry/double_description.h"
 #include "tests/geometry/random_cones.h"
 #include "tests/reference/cdd_cone.h"
 
@@ -44,8 +45,11 @@ void expect_valid_pair(const SpanCone<Q>& S, const FaceCone<Q>& F) {
 void check_span_cone(const SpanCone<Q>& C) {
   const FaceCone<Q> F = canonical(to_face(C));
   const FaceCone<Q> F_cdd = canonical(reference::cdd_to_face(C));
-  ASSERT_TRUE(identical(F, F_cdd)) << "dim " << C.dim << " rays\n" << C.rays << "\nlines\n" << C.lines
-                                   << "\nours\n" << F.inequalities << "\ncdd\n" << F_cdd.inequalities;
+  ASSERT_TRUE(identical(F, F_cdd)) << "dim " << C.dim << " rays\n"
+                                   << C.rays << "\nlines\n"
+                                   << C.lines << "\nours\n"
+                                   << F.inequalities << "\ncdd\n"
+                                   << F_cdd.inequalities;
   const SpanCone<Q> S = canonical(to_span(F));
   const SpanCone<Q> S_cdd = canonical(reference::cdd_to_span(F));
   ASSERT_TRUE(identical(S, S_cdd)) << "ours\n" << S.rays << "\ncdd\n" << S_cdd.rays;
@@ -120,15 +124,17 @@ TEST(DoubleDescription, SpecialCones) {
   EXPECT_EQ(origin.inequalities.rows(), 0);
   EXPECT_EQ(origin.equalities, rows({{0, 0, 1}, {0, 1, 0}, {1, 0, 0}}));  // sorted lexicographically
   // The whole space from lines: no rows at all.
-  const FaceCone<Q> whole = canonical(to_face(SpanCone<Q>::from_rows(3, Mat<Q>(0, 3), rows({{1, 2, 0}, {0, 1, 1}, {1, 0, 0}}))));
+  const FaceCone<Q> whole =
+      canonical(to_face(SpanCone<Q>::from_rows(3, Mat<Q>(0, 3), rows({{1, 2, 0}, {0, 1, 1}, {1, 0, 0}}))));
   EXPECT_EQ(whole.inequalities.rows(), 0);
   EXPECT_EQ(whole.equalities.rows(), 0);
   // The whole space from rays (positively spanning).
-  const FaceCone<Q> whole2 =
-      canonical(to_face(SpanCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, -1, -1}}), Mat<Q>(0, 3))));
+  const FaceCone<Q> whole2 = canonical(
+      to_face(SpanCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, -1, -1}}), Mat<Q>(0, 3))));
   EXPECT_EQ(whole2.inequalities.rows() + whole2.equalities.rows(), 0);
   // A half-space: z <= 0 is { (0,0,1) . g <= 0 }.
-  const FaceCone<Q> half = canonical(to_face(SpanCone<Q>::from_rows(3, rows({{0, 0, -1}}), rows({{1, 0, 0}, {0, 1, 0}}))));
+  const FaceCone<Q> half =
+      canonical(to_face(SpanCone<Q>::from_rows(3, rows({{0, 0, -1}}), rows({{1, 0, 0}, {0, 1, 0}}))));
   EXPECT_EQ(half.inequalities, rows({{0, 0, 1}}));
   EXPECT_EQ(half.equalities.rows(), 0);
   // A line: two equalities.

@@ -1,11 +1,12 @@
 // Not-necessarily-closed cones: the paper's section 4 cone with an open face, the origin as a closure
 // point, empty strict systems, and random strict systems against brute-force membership.
+#include "geometry/nnc_cone.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "geometry/canonical.h"
-#include "geometry/nnc_cone.h"
 #include "geometry/set_ops.h"
 #include "tests/geometry/random_cones.h"
 #include "tests/geometry/test_util.h"
@@ -21,12 +22,14 @@ using testing::vec;
 struct PaperExample {
   Vec<Q> g1 = vec({1, 0, -1}), g2 = vec({-1, -5, -1}), g3 = vec({1, -5, 1});
   FaceCone<Q> cone() const {
-    const FaceCone<Q> closed = canonical(to_face(SpanCone<Q>::from_rows(3, rows({{1, 0, -1}, {-1, -5, -1}, {1, -5, 1}}), Mat<Q>(0, 3))));
+    const FaceCone<Q> closed =
+        canonical(to_face(SpanCone<Q>::from_rows(3, rows({{1, 0, -1}, {-1, -5, -1}, {1, -5, 1}}), Mat<Q>(0, 3))));
     std::vector<Eigen::Index> open, kept;
     for (Eigen::Index f = 0; f < closed.inequalities.rows(); ++f)
       (closed.inequalities.row(f).dot(g2) == 0 && closed.inequalities.row(f).dot(g3) == 0 ? open : kept).push_back(f);
     EXPECT_EQ(open.size(), 1u);
-    return FaceCone<Q>::from_rows(3, closed.inequalities(kept, Eigen::all), Mat<Q>(0, 3), closed.inequalities(open, Eigen::all));
+    return FaceCone<Q>::from_rows(3, closed.inequalities(kept, Eigen::all), Mat<Q>(0, 3),
+                                  closed.inequalities(open, Eigen::all));
   }
 };
 
@@ -61,7 +64,8 @@ TEST(NncCone, PaperExampleHasOneOpenFace) {
 
 TEST(NncCone, OriginAsClosurePoint) {
   // Octant minus the origin: x, y, z <= 0 and x + y + z < 0.
-  const FaceCone<Q> c = FaceCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), rows({{1, 1, 1}}));
+  const FaceCone<Q> c =
+      FaceCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), rows({{1, 1, 1}}));
   const NncForm<Q> n = nnc_form(c);
   ASSERT_EQ(n.status, NncStatus::kNonEmpty);
   ASSERT_EQ(n.open_faces.size(), 1u);
@@ -72,11 +76,14 @@ TEST(NncCone, OriginAsClosurePoint) {
   EXPECT_TRUE(contains_point(n.face, vec({-1, 0, 0})));
   // The same set written differently (x + y + 3z < 0, or two strict rows that vanish only at the origin);
   // x + y < 0 also drops the z axis.
-  const FaceCone<Q> same = FaceCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), rows({{1, 1, 3}}));
+  const FaceCone<Q> same =
+      FaceCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), rows({{1, 1, 3}}));
   EXPECT_TRUE(identical(nnc_form(same).face, n.face));
-  const FaceCone<Q> two = FaceCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), rows({{2, 1, 1}, {1, 2, 1}}));
+  const FaceCone<Q> two =
+      FaceCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), rows({{2, 1, 1}, {1, 2, 1}}));
   EXPECT_TRUE(identical(nnc_form(two).face, n.face));
-  const FaceCone<Q> other = FaceCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), rows({{1, 1, 0}}));
+  const FaceCone<Q> other =
+      FaceCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), rows({{1, 1, 0}}));
   EXPECT_FALSE(identical(nnc_form(other).face, n.face));
   EXPECT_FALSE(contains_point(other, vec({0, 0, -1})));
   EXPECT_TRUE(contains_point(n.face, vec({0, 0, -1})));
@@ -101,7 +108,8 @@ TEST(NncCone, EmptyStrictSystems) {
     EXPECT_FALSE(contains_point(n.face, vec({0, 0})));
   }
   // Not empty: x < 0 alone.
-  EXPECT_EQ(nnc_form(FaceCone<Q>::from_rows(2, Mat<Q>(0, 2), Mat<Q>(0, 2), rows({{1, 0}}))).status, NncStatus::kNonEmpty);
+  EXPECT_EQ(nnc_form(FaceCone<Q>::from_rows(2, Mat<Q>(0, 2), Mat<Q>(0, 2), rows({{1, 0}}))).status,
+            NncStatus::kNonEmpty);
 }
 
 // Brute force: the canonical NNC form and the input accept the same points among many test points

@@ -1,11 +1,12 @@
 // The cone { g : exists z >= 0, z_i > 0 on strict, K z = P g }: the paper's route and the LP route agree.
+#include "geometry/projection.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "exact/linalg.h"
 #include "geometry/canonical.h"
-#include "geometry/projection.h"
 #include "tests/geometry/test_util.h"
 
 namespace contactcert::geometry {
@@ -68,8 +69,13 @@ TEST(Projection, RandomProblemsBothRoutesAgree) {
     for (Eigen::Index j = 0; j < n; ++j) p.strict[static_cast<size_t>(j)] = (rep + j) % 3 == 0;
     const FaceCone<Q> a = project_by_polar(p);
     const FaceCone<Q> b = project_by_lp(p);
-    ASSERT_TRUE(identical(a, b)) << "rep " << rep << "\nK\n" << p.K << "\nP\n" << p.P << "\npolar\n"
-                                 << a.inequalities << "\n/\n" << a.strict << "\nlp\n" << b.inequalities << "\n/\n" << b.strict;
+    ASSERT_TRUE(identical(a, b)) << "rep " << rep << "\nK\n"
+                                 << p.K << "\nP\n"
+                                 << p.P << "\npolar\n"
+                                 << a.inequalities << "\n/\n"
+                                 << a.strict << "\nlp\n"
+                                 << b.inequalities << "\n/\n"
+                                 << b.strict;
     if (a.strict.rows() > 0) ++with_strict;
     if (a.equalities.rows() == d) ++empty;
   }

@@ -1,10 +1,11 @@
 // Intersection, containment (with witnesses) and equality of cones with strict rows.
+#include "geometry/set_ops.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "geometry/canonical.h"
-#include "geometry/set_ops.h"
 #include "tests/geometry/random_cones.h"
 #include "tests/geometry/test_util.h"
 
@@ -27,10 +28,12 @@ TEST(SetOps, IntersectionIsContainedWithWitnessOtherwise) {
     const Containment<Q> r = contains(AB, A);
     if (r.status == ContainmentStatus::kNotContained) {
       ASSERT_TRUE(contains_point(A, r.witness)) << "rep " << rep;
-      ASSERT_FALSE(contains_point(AB, r.witness)) << "rep " << rep << "\nA\n" << A.inequalities << "\n/\n" << A.strict
-                                                  << "\nB\n" << B.inequalities << "\n/\n" << B.strict << "\nw " << r.witness.transpose();
-      if (!contains_point(FaceCone<Q>::from_rows(d, AB.inequalities, AB.equalities, Mat<Q>(0, d)), r.witness))
-        continue;
+      ASSERT_FALSE(contains_point(AB, r.witness)) << "rep " << rep << "\nA\n"
+                                                  << A.inequalities << "\n/\n"
+                                                  << A.strict << "\nB\n"
+                                                  << B.inequalities << "\n/\n"
+                                                  << B.strict << "\nw " << r.witness.transpose();
+      if (!contains_point(FaceCone<Q>::from_rows(d, AB.inequalities, AB.equalities, Mat<Q>(0, d)), r.witness)) continue;
       ++strict_witnesses;  // excluded only by a strict row
     } else {
       EXPECT_TRUE(equal(AB, A));
@@ -41,7 +44,8 @@ TEST(SetOps, IntersectionIsContainedWithWitnessOtherwise) {
 }
 
 TEST(SetOps, StrictContainment) {
-  const FaceCone<Q> octant = FaceCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), Mat<Q>(0, 3));
+  const FaceCone<Q> octant =
+      FaceCone<Q>::from_rows(3, rows({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), Mat<Q>(0, 3));
   const FaceCone<Q> punctured = FaceCone<Q>::from_rows(3, octant.inequalities, Mat<Q>(0, 3), rows({{1, 1, 1}}));
   const FaceCone<Q> open_x = FaceCone<Q>::from_rows(3, rows({{0, 1, 0}, {0, 0, 1}}), Mat<Q>(0, 3), rows({{1, 0, 0}}));
   EXPECT_EQ(contains(octant, punctured).status, ContainmentStatus::kContained);

@@ -1,12 +1,15 @@
 #include "tests/reference/cdd_cone.h"
 
-#include <mutex>
-#include <stdexcept>
-#include <vector>
-
+// clang-format off
+// cddlib needs setoper.h before cdd.h.
 #include <cddlib/setoper.h>
 #include <cddlib/cdd.h>
 #include <cddlib/cdd_f.h>
+// clang-format on
+
+#include <mutex>
+#include <stdexcept>
+#include <vector>
 
 namespace contactcert::reference {
 namespace {
@@ -24,7 +27,8 @@ void init_cdd() {
 }
 
 // Rows [0, v] for every row of each block; rows of linear_block go to the linearity set.
-dd_MatrixPtr make_matrix(const Mat<Q>& block, const Mat<Q>& linear_block, Index dim, Q sign, dd_RepresentationType rep) {
+dd_MatrixPtr make_matrix(const Mat<Q>& block, const Mat<Q>& linear_block, Index dim, Q sign,
+                         dd_RepresentationType rep) {
   const Index m = block.rows() + linear_block.rows();
   dd_MatrixPtr M = dd_CreateMatrix(m, dim + 1);
   M->representation = rep;
@@ -119,7 +123,8 @@ geometry::FaceCone<double> cddf_to_face(const geometry::SpanCone<double>& cone) 
   out.equalities = Mat<double>(static_cast<Index>(l.size()), cone.dim);
   out.strict = Mat<double>(0, cone.dim);
   for (size_t k = 0; k < r.size(); ++k)
-    for (Index j = 0; j < cone.dim; ++j) out.inequalities(static_cast<Index>(k), j) = -ddf_get_d(A->matrix[r[k]][j + 1]);
+    for (Index j = 0; j < cone.dim; ++j)
+      out.inequalities(static_cast<Index>(k), j) = -ddf_get_d(A->matrix[r[k]][j + 1]);
   for (size_t k = 0; k < l.size(); ++k)
     for (Index j = 0; j < cone.dim; ++j) out.equalities(static_cast<Index>(k), j) = -ddf_get_d(A->matrix[l[k]][j + 1]);
   ddf_FreeMatrix(A);
