@@ -1,13 +1,13 @@
 // `contactcert ucp FILE`: does the quasistatic contact problem (Pang, Trinkle, Lo) have a solution?
 // `contactcert ucp --generate random|reduction`: writes problem files (section 5 generator, Proposition 2).
 #include <CLI/CLI.hpp>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
 
 #include "cli/command.h"
+#include "cli/json_out.h"
 #include "exact/arith.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
@@ -19,7 +19,6 @@ namespace contactcert::cli {
 namespace {
 
 namespace ucp = solvers::ucp;
-using json = nlohmann::ordered_json;
 using exact::Q;
 using exact::Vec;
 
@@ -40,27 +39,6 @@ struct UcpCliOptions {
   int rows = 2, cols = 6;
   bool planted = false;
 };
-
-json strings(const Vec<Q>& v) {
-  json a = json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(exact::to_string(v(i)));
-  return a;
-}
-json doubles(const exact::Vec<double>& v) {
-  json a = json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v(i));
-  return a;
-}
-
-void write_text(const std::string& path, const std::string& text) {
-  if (path == "-") {
-    std::cout << text;
-    return;
-  }
-  std::ofstream f(path);
-  if (!f) throw exact::InputError(path, "", "cannot open the file for writing");
-  f << text;
-}
 
 int run_generate(const UcpCliOptions& o) {
   std::mt19937_64 rng(o.seed);
@@ -86,7 +64,7 @@ int run_generate(const UcpCliOptions& o) {
       p.source += ucp::zero_one_feasible(zo) ? " (0-1 feasible: solvable)" : " (0-1 infeasible: jammed)";
   }
   p.source += ", seed " + std::to_string(o.seed);
-  write_text(o.out, ucp::to_json_text(p));
+  write_text_file(o.out, ucp::to_json_text(p));
   return 0;
 }
 
@@ -110,7 +88,7 @@ int run_ucp(const UcpCliOptions& o) {
       cert_text = ucp::jammed_certificate(problem, *r.proof);
     else if (r.status == ucp::UcpStatus::kSolvable && r.x)
       cert_text = ucp::solvable_certificate(problem, *r.x, *r.y);
-    if (!cert_text.empty()) write_text(o.certificate, cert_text);
+    if (!cert_text.empty()) write_text_file(o.certificate, cert_text);
   }
 
   json j;
@@ -119,12 +97,12 @@ int run_ucp(const UcpCliOptions& o) {
   j["method"] = ucp::method_name(r.method);
   j["arith"] = exact::arith_name(r.arith);
   if (r.x) {
-    j["x"] = strings(*r.x);
-    j["y"] = strings(*r.y);
+    j["x"] = exact_json(*r.x);
+    j["y"] = exact_json(*r.y);
     j["xTy"] = exact::to_string(Q(r.x->dot(*r.y)));
   } else if (r.x_approx.size() > 0) {
-    j["x_approx"] = doubles(r.x_approx);
-    j["y_approx"] = doubles(r.y_approx);
+    j["x_approx"] = approx_json(r.x_approx);
+    j["y_approx"] = approx_json(r.y_approx);
   }
   if (r.best_xTy)
     j["best_xTy"] = exact::to_string(*r.best_xTy);
@@ -132,9 +110,9 @@ int run_ucp(const UcpCliOptions& o) {
     j["best_xTy_approx"] = r.best_xTy_approx;
   if (r.physical) {
     const ucp::PhysicalSolution& s = *r.physical;
-    j["physical"] = {{"c_n", strings(s.c_n)}, {"c_t", strings(s.c_t)},     {"v_n", strings(s.v_n)},
-                     {"v_t", strings(s.v_t)}, {"q_dot", strings(s.q_dot)}, {"theta_dot", strings(s.theta_dot)},
-                     {"tau", strings(s.tau)}};
+    j["physical"] = {{"c_n", exact_json(s.c_n)}, {"c_t", exact_json(s.c_t)},     {"v_n", exact_json(s.v_n)},
+                     {"v_t", exact_json(s.v_t)}, {"q_dot", exact_json(s.q_dot)}, {"theta_dot", exact_json(s.theta_dot)},
+                     {"tau", exact_json(s.tau)}};
     j["physical"]["tau_is"] = "tau - g_man (joint efforts net of gravity loads), all joints";
   }
   if (r.conditions) {

@@ -7,6 +7,7 @@
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "tests/solvers/scene_fixtures.h"
 
 namespace contactcert::solvers {
 namespace {
@@ -14,17 +15,9 @@ namespace {
 using exact::Q;
 using exact::Vec;
 
-geometry::PlanarScene load(const char* name, const char* mu) {
-  auto s = geometry::load_planar_scene(std::string(CONTACTCERT_SCENES_DIR "/") + name);
-  for (auto& f : s.fixels) f.mu_s = f.mu_k = exact::parse_rational(mu);
-  return s;
-}
+using testing::wrench;
 
-Vec<Q> wrench(long fx, long fy, long tz) {
-  Vec<Q> g(3);
-  g << fx, fy, tz;
-  return g;
-}
+geometry::PlanarScene load(const char* name, const char* mu) { return testing::scene_with_mu(name, mu); }
 
 TEST(Insertion, DiskIntoTwoFixelsEq21) {
   // The disk of Figure 6 (fixels at (0,-1) and (1,0)), mu = 0.2. A push through the centre toward the

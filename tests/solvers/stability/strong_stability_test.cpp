@@ -12,6 +12,7 @@
 #include "solvers/stability/finger_push.h"
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stable_region.h"
+#include "tests/solvers/scene_fixtures.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 
 namespace contactcert::solvers {
@@ -20,17 +21,9 @@ namespace {
 using exact::Q;
 using exact::Vec;
 
-geometry::PlanarScene section7(const char* mu) {
-  geometry::PlanarScene s = geometry::load_planar_scene(CONTACTCERT_SCENES_DIR "/bt2002_section7_disk.json");
-  for (auto& f : s.fixels) f.mu_s = f.mu_k = exact::parse_rational(mu);
-  return s;
-}
+using testing::wrench;
 
-Vec<Q> wrench(long fx, long fy, long tz) {
-  Vec<Q> g(3);
-  g << fx, fy, tz;
-  return g;
-}
+geometry::PlanarScene section7(const char* mu) { return testing::scene_with_mu("bt2002_section7_disk.json", mu); }
 
 TEST(StrongStability, Section7DiskPushedStraightDownIsStronglyStable) {
   // A moving solution from rest has vdot^T M vdot = a^T c + vdot^T g <= vdot^T g (friction opposes
