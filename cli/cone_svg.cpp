@@ -49,7 +49,8 @@ P2 unit(P2 v) {
 }  // namespace
 
 std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat<exact::Q>& rays,
-                            const exact::Mat<exact::Q>& lines, const std::string& title) {
+                            const exact::Mat<exact::Q>& lines, const std::string& title,
+                            const std::vector<BoundaryMark>& marks) {
   // Fixel positions: given, or the contact point moved back along the normal by the gap.
   std::vector<P2> fixel_at;
   for (const auto& f : scene.fixels) {
@@ -103,6 +104,16 @@ std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat
     for (const auto& p : std::get<geometry::PolygonShape>(scene.workpiece.shape).vertices)
       s << v.x(p.x.get_d()) << "," << v.y(p.y.get_d()) << " ";
     s << "\" fill=\"#dddddd\" stroke=\"black\"/>\n";
+  }
+  for (const auto& m : marks) {
+    if (m.points.size() == 1) {
+      s << "<circle cx=\"" << v.x(m.points[0].first) << "\" cy=\"" << v.y(m.points[0].second) << "\" r=\"4\" fill=\""
+        << m.colour << "\"/>\n";
+      continue;
+    }
+    s << "<polyline fill=\"none\" stroke=\"" << m.colour << "\" stroke-width=\"5\" stroke-linecap=\"round\" points=\"";
+    for (const auto& [x, y] : m.points) s << v.x(x) << "," << v.y(y) << " ";
+    s << "\"/>\n";
   }
   s << "<path d=\"M" << num(std::stod(v.x(com.x)) - 5) << "," << v.y(com.y) << " h10 M" << v.x(com.x) << ","
     << num(std::stod(v.y(com.y)) - 5) << " v10\" stroke=\"black\"/>\n";

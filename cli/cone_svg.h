@@ -4,15 +4,25 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "exact/number.h"
 #include "geometry/planar_scene.h"
 
 namespace contactcert::cli {
 
+/// A coloured piece of the workpiece boundary, in scene coordinates (floats: a picture), drawn over the
+/// workpiece: a polyline, or a dot when it has one point.
+struct BoundaryMark {
+  std::vector<std::pair<double, double>> points;
+  std::string colour;
+};
+
 /// A complete <svg> element. `rays` and `lines` are the cone's generators as rows (x, y, torque);
 /// lines are drawn in both directions. `title` is printed in the picture.
 std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat<exact::Q>& rays,
-                            const exact::Mat<exact::Q>& lines, const std::string& title);
+                            const exact::Mat<exact::Q>& lines, const std::string& title,
+                            const std::vector<BoundaryMark>& marks = {});
 
 }  // namespace contactcert::cli

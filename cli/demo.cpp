@@ -11,6 +11,7 @@
 #include <random>
 #include <sstream>
 
+#include "cli/boundary_marks.h"
 #include "cli/command.h"
 #include "cli/cone_svg.h"
 #include "cli/html_report.h"
@@ -115,6 +116,11 @@ void stability(const DemoOptions& o, HtmlReport& rep) {
   rep.paragraph("Frictionless finger pushes along the inward normal, by arc of the boundary (directions from the "
                 "centre, counter-clockwise):");
   rep.table({"from direction", "to direction", "verdict"}, prow);
+  rep.figure(wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), "finger pushes",
+                             boundary_marks<solvers::StabilityVerdict>(
+                                 scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); })),
+             "Where a frictionless push along the inward normal is strongly stable (green), only weakly stable "
+             "(yellow) or unstable (red): the dark line of Figure 5.");
 }
 
 /// Sections 8-9: G_goal and the friction sweep of Figure 11.
@@ -128,6 +134,10 @@ void insertion(const DemoOptions& o, HtmlReport& rep) {
       for (auto& f : scene.fixels) f.mu_s = f.mu_k = exact::parse_rational(mu);
       const auto ins = solvers::insertion<Q>(scene);
       const auto p = solvers::insertion_pushes<Q>(scene, ins);
+      if (std::string(mu) == "0.2")
+        rep.figure(wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), std::string(file) + ", mu = 0.2",
+                                   boundary_marks<bool>(scene, p, [](bool in) { return in ? std::string("#1b7837") : ""; })),
+                   std::string("Pushes that seat the workpiece from any contact state (green), mu = 0.2: ") + file);
       std::string where;
       for (const auto& e : p.edges)
         if (e.label) where += "edge " + std::to_string(e.edge) + " s in (" + exact::to_string(e.from) + ", " + exact::to_string(e.to) + ") ";

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "cli/boundary_marks.h"
 #include "cli/command.h"
 #include "cli/json_out.h"
 #include "exact/input_error.h"
@@ -21,6 +22,7 @@ struct InsertOptions {
   CommonOptions common;
   std::string file;
   std::string sweep_mu;
+  std::string svg;
 };
 
 double angle(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()); }
@@ -82,6 +84,11 @@ int run_insert(const InsertOptions& o) {
     return std::make_pair(std::move(ins), std::move(pushes));
   };
   const auto [ins, pushes] = analyse(scene);
+  if (!o.svg.empty()) {
+    const auto marks = boundary_marks<bool>(scene, pushes, [](bool in) { return in ? std::string("#1b7837") : ""; });
+    write_text_file(o.svg, wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
+                                           "green: frictionless pushes that seat the workpiece from any state", marks));
+  }
   json sweep = json::array();
   std::vector<std::pair<std::string, double>> sweep_rows;
   for (const Q& mu : mus) {
@@ -141,6 +148,7 @@ void register_insert(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("insert", "Wrenches that seat the workpiece from any contact state (G_goal)");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Planar scene in its goal configuration (every fixel touching)")->required();
+  sub->add_option("--svg", o->svg, "Picture of the workpiece with the seating pushes in green");
   sub->add_option("--sweep-mu", o->sweep_mu, "Friction values to sweep, e.g. 0.01,0.2,0.4,0.6 (Figure 11)");
   sub->callback([o, &action] { action = [o] { return run_insert(*o); }; });
 }

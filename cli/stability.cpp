@@ -11,6 +11,7 @@
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "cli/boundary_marks.h"
 #include "cli/stability_svg.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/stability/margin.h"
@@ -162,6 +163,12 @@ int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
     throw exact::InputError("command line", "--arith", "--finger is computed exactly (use exact or verified)");
   const auto region = solvers::stable_region<Q>(scene);
   const auto pushes = solvers::finger_pushes<Q>(scene, region);
+  if (!o.svg.empty()) {
+    const auto marks = boundary_marks<solvers::StabilityVerdict>(
+        scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); });
+    write_text_file(o.svg, wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
+                                           "finger pushes: green strongly stable, yellow weakly, red unstable", marks));
+  }
   if (o.common.json) {
     json edges = json::array(), arcs = json::array();
     for (const auto& p : pushes.edges)
@@ -225,7 +232,8 @@ void register_stability(CLI::App& app, Action& action) {
   sub->add_flag("--region", o->region, "The whole strongly stable set: labelled cells of wrench space");
   sub->add_flag("--margin", o->margin, "With --wrench: squared radius of the largest strongly stable ball around it");
   sub->add_flag("--finger", o->finger, "Where a frictionless finger push along the boundary normal is strongly stable");
-  sub->add_option("--svg", o->svg, "With --region: picture of the sphere of wrench directions");
+  sub->add_option("--svg", o->svg,
+                  "With --region: the sphere of wrench directions; with --finger: the boundary coloured by verdict");
   sub->add_option("--certificate", o->certificate, "Write the evidence for `contactcert check` to this file");
   sub->callback([o, &action] { action = [o] { return run_stability(*o); }; });
 }
