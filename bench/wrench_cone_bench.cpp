@@ -91,8 +91,9 @@ void BM_ModelAndConeForm(benchmark::State& state) {
   state.SetLabel("exact J A B + K P " + std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
 }
 
-/// The paper's route with K^F by cddlib (GMP): F = K^F P, not reduced (the raw eq. 18).
-void BM_PaperRouteCddKF(benchmark::State& state) {
+/// The raw eq. (18), F = K^F P without row reduction, with K^F from `convert` (cddlib's or ours).
+template <class Convert>
+void raw_paper_route(benchmark::State& state, Convert convert, const std::string& label) {
   const int n = static_cast<int>(state.range(0));
   const geometry::PlanarScene scene = disk_scene(n);
   const solvers::ModeString m = mode(n, letter_of(state.range(1)));
@@ -100,33 +101,24 @@ void BM_PaperRouteCddKF(benchmark::State& state) {
   for (auto _ : state) {
     const solvers::ContactModel<Q> model = solvers::contact_model<Q>(scene);
     const solvers::ConeForm<Q> form = solvers::cone_form(scene, model, m);
-    const geometry::FaceCone<Q> KF = reference::cdd_to_face(geometry::SpanCone<Q>::from_columns(form.K));
+    const geometry::FaceCone<Q> KF = convert(geometry::SpanCone<Q>::from_columns(form.K));
     const Mat<Q> F = KF.inequalities * form.P;  // eq. (18)
     rows = F.rows();
     benchmark::DoNotOptimize(rows);
   }
   state.counters["fixels"] = n;
   state.counters["KF_rows"] = static_cast<double>(rows);
-  state.SetLabel("cddlib-gmp K^F " + std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
+  state.SetLabel(label + " " + std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
 }
 
-/// The same raw eq. (18) with our own exact conversion for K^F (what cddlib's column competes with).
+/// The paper's route with K^F by cddlib (GMP).
+void BM_PaperRouteCddKF(benchmark::State& state) {
+  raw_paper_route(state, [](const geometry::SpanCone<Q>& c) { return reference::cdd_to_face(c); }, "cddlib-gmp K^F");
+}
+
+/// The same with our own exact conversion for K^F (what cddlib's column competes with).
 void BM_PaperRouteOwnKF(benchmark::State& state) {
-  const int n = static_cast<int>(state.range(0));
-  const geometry::PlanarScene scene = disk_scene(n);
-  const solvers::ModeString m = mode(n, letter_of(state.range(1)));
-  Eigen::Index rows = 0;
-  for (auto _ : state) {
-    const solvers::ContactModel<Q> model = solvers::contact_model<Q>(scene);
-    const solvers::ConeForm<Q> form = solvers::cone_form(scene, model, m);
-    const geometry::FaceCone<Q> KF = geometry::to_face(geometry::SpanCone<Q>::from_columns(form.K));
-    const Mat<Q> F = KF.inequalities * form.P;  // eq. (18)
-    rows = F.rows();
-    benchmark::DoNotOptimize(rows);
-  }
-  state.counters["fixels"] = n;
-  state.counters["KF_rows"] = static_cast<double>(rows);
-  state.SetLabel("own exact K^F " + std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
+  raw_paper_route(state, [](const geometry::SpanCone<Q>& c) { return geometry::to_face(c); }, "own exact K^F");
 }
 
 void table4(benchmark::internal::Benchmark* b) {
