@@ -191,7 +191,10 @@ int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
               << interval_text(p.from_closed, exact::to_string(p.from), exact::to_string(p.to), p.to_closed) << ": "
               << solvers::verdict_name(p.label) << "\n";
   for (const auto& p : pushes.arcs)
-    std::cout << "  arc from direction " << primitive_json(p.from).dump() << " to " << primitive_json(p.to).dump()
+    if (p.from == p.to && !p.from_closed && !p.to_closed)
+      std::cout << "  the whole boundary: " << solvers::verdict_name(p.label) << "\n";
+    else
+      std::cout << "  arc from direction " << primitive_json(p.from).dump() << " to " << primitive_json(p.to).dump()
               << " counter-clockwise, angles "
               << interval_text(p.from_closed, std::to_string(degrees(p.from)), std::to_string(degrees(p.to)), p.to_closed)
               << " deg (approx): " << solvers::verdict_name(p.label) << "\n";

@@ -123,8 +123,13 @@ void disk_pieces(const geometry::PlanarScene& scene, const std::function<Label(c
       out.push_back(p);
     }
   }
+  // One label all round: the whole circle, written as from == to with both ends open.
+  if (out.size() == 1) {
+    out.front() = {out.front().from, out.front().from, false, false, out.front().label};
+    return;
+  }
   // The circle closes: merge the last piece into the first when they carry the same label.
-  if (out.size() > 1 && out.back().label == out.front().label) {
+  if (out.back().label == out.front().label) {
     out.front().from = out.back().from;
     out.front().from_closed = out.back().from_closed;
     out.pop_back();

@@ -23,7 +23,8 @@ struct EdgeInterval {
 };
 
 /// A maximal arc of a disk with one label, from direction `from` to `to` counter-clockwise (directions
-/// from the centre, exact, not normalised); a single point when from == to and both ends are closed.
+/// from the centre, exact, not normalised); a single point when from == to and both ends are closed, the
+/// whole circle when from == to and both ends are open.
 template <class T, class Label>
 struct ArcInterval {
   Vec<T> from, to;
