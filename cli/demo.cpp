@@ -39,15 +39,9 @@ struct DemoOptions {
   std::string out = "contactcert-out";
 };
 
-std::string vec_text(const exact::Vec<Q>& v) {
-  std::string s = "(";
-  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + exact::to_string(v(i));
-  return s + ")";
-}
-
 std::string rows_text(const exact::Mat<Q>& M) {
   std::string s;
-  for (Eigen::Index r = 0; r < M.rows(); ++r) s += (r ? ", " : "") + vec_text(M.row(r).transpose());
+  for (Eigen::Index r = 0; r < M.rows(); ++r) s += (r ? ", " : "") + tuple_text(exact::Vec<Q>(M.row(r).transpose()));
   return s.empty() ? "none" : s;
 }
 
@@ -94,11 +88,11 @@ void stability(const DemoOptions& o, HtmlReport& rep) {
     const auto r = solvers::strong_stability<Q>(scene, g);
     const std::string cert = solvers::stability_certificate(text, g, r);
     const auto check = solvers::check_stability_certificate(exact::JsonInput::parse(cert, "certificate"));
-    rows.push_back({vec_text(g), solvers::verdict_name(r.verdict),
-                    r.has_moving ? "moves in mode '" + r.moving.mode.text() + "', vdot = " + vec_text(r.moving.acceleration)
+    rows.push_back({tuple_text(g), solvers::verdict_name(r.verdict),
+                    r.has_moving ? "moves in mode '" + r.moving.mode.text() + "', vdot = " + tuple_text(r.moving.acceleration)
                                  : std::to_string(r.proofs.size()) + " mode proofs",
                     check.valid ? "valid" : "INVALID: " + check.reason, std::to_string(r.lps)});
-    std::cout << "  stability g = " << vec_text(g) << ": " << solvers::verdict_name(r.verdict)
+    std::cout << "  stability g = " << tuple_text(g) << ": " << solvers::verdict_name(r.verdict)
               << " (certificate " << (check.valid ? "valid" : "INVALID") << ")\n";
   }
   rep.table({"wrench g", "verdict", "evidence", "contactcert check", "LPs"}, rows);
@@ -168,7 +162,7 @@ void quasistatic(const DemoOptions& o, HtmlReport& rep) {
     const double secs = seconds_since(t0);
     std::string evidence;
     if (r.status == solvers::ucp::UcpStatus::kSolvable && r.physical) {
-      evidence = "c_n = " + vec_text(r.physical->c_n) + ", q_dot = " + vec_text(r.physical->q_dot) +
+      evidence = "c_n = " + tuple_text(r.physical->c_n) + ", q_dot = " + tuple_text(r.physical->q_dot) +
                  (r.conditions && r.conditions->status == solvers::ucp::ConditionsStatus::kSatisfied ? "; (2)-(10) hold exactly" : "; (2)-(10) FAIL");
     } else if (r.status == solvers::ucp::UcpStatus::kJammed && r.proof) {
       const std::string cert = solvers::ucp::jammed_certificate(problem, *r.proof);

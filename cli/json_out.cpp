@@ -53,6 +53,18 @@ json primitive_json(const exact::Vec<Q>& v) {
   return a;
 }
 
+std::string tuple_text(const exact::Vec<Q>& v) {
+  std::string s = "(";
+  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + exact::to_string(v(i));
+  return s + ")";
+}
+
+std::string tuple_text(const exact::Vec<double>& v) {
+  std::string s = "(";
+  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v(i));
+  return s + ")";
+}
+
 exact::Vec<Q> parse_number_list(const std::string& text, const std::string& option, long expected_size) {
   std::vector<Q> values;
   std::stringstream ss(text);

@@ -22,6 +22,9 @@ json approx_json(const exact::Vec<double>& v);
 json approx_json(const exact::Mat<double>& M);
 /// A primitive integer direction vector (SPEC section 1) as strings.
 json primitive_json(const exact::Vec<exact::Q>& v);
+/// "(a, b, c)" for readable reports: exact entries in lowest terms, or doubles.
+std::string tuple_text(const exact::Vec<exact::Q>& v);
+std::string tuple_text(const exact::Vec<double>& v);
 /// Reads "a,b,c" (each an exact number, SPEC section 1) for option `option`; InputError names the option.
 exact::Vec<exact::Q> parse_number_list(const std::string& text, const std::string& option, long expected_size);
 /// Writes text to path ("-" = stdout); InputError if the file cannot be written.

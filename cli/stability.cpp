@@ -56,17 +56,6 @@ json forces_json(const exact::Vec<T>& c) {
   else return approx_json(c);
 }
 
-std::string vec_text(const exact::Vec<Q>& v) {
-  std::string s = "(";
-  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + exact::to_string(v(i));
-  return s + ")";
-}
-std::string vec_text(const exact::Vec<double>& v) {
-  std::string s = "(";
-  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v(i));
-  return s + ")";
-}
-
 template <class T>
 int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityResult<T>& r,
            const std::optional<solvers::Margin<Q>>& margin = std::nullopt) {
@@ -94,13 +83,13 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
   }
   const std::size_t k = r.touching.size();
   std::cout << "verdict: " << solvers::verdict_name(r.verdict) << "\n"
-            << "  wrench g = " << vec_text(g) << " on " << o.file << " (" << k << " touching fixels, "
+            << "  wrench g = " << tuple_text(g) << " on " << o.file << " (" << k << " touching fixels, "
             << o.common.arith << " arithmetic)\n";
-  if (r.has_resting) std::cout << "  at rest with contact forces (c_n..., c_t...) = " << vec_text(r.resting_forces) << "\n";
+  if (r.has_resting) std::cout << "  at rest with contact forces (c_n..., c_t...) = " << tuple_text(r.resting_forces) << "\n";
   else std::cout << "  no contact forces in the friction cones balance g (Motzkin certificate found)\n";
   if (r.has_moving)
-    std::cout << "  moves in mode '" << r.moving.mode.text() << "' with acceleration " << vec_text(r.moving.acceleration)
-              << ", forces " << vec_text(r.moving.forces) << "\n";
+    std::cout << "  moves in mode '" << r.moving.mode.text() << "' with acceleration " << tuple_text(r.moving.acceleration)
+              << ", forces " << tuple_text(r.moving.forces) << "\n";
   else if (r.has_resting)
     std::cout << "  no moving mode admits g: " << r.proofs.size() << " proofs ("
               << (r.modes_checked - r.modes_kinematically_feasible) << " modes kinematically impossible)\n";
