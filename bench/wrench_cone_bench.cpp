@@ -1,7 +1,7 @@
 // The wrench cone paper's Table 4: time per cone for 1 to 6 fixels on a disk (paper: 0.00003 s to
 // 0.219 s on an 800 MHz Pentium III), in one run: our exact and float paths on both routes, the
 // paper's route with cddlib (GMP) doing K^F, and our K^F alone for comparison; then the projection
-// route up to 20 fixels to show its growth.
+// route up to 20 fixels to show its growth. BM_Table4Ratios puts exact, float and cddlib side by side.
 //   ./wrench_cone_bench --benchmark_counters_tabular=true
 // Modes: 'n...n' (every fixel rolls: K is 2n x 2n) and 'm...m' (maintain contact: K is n x 2n, the
 // hardest conversion since pos(K) has 2n generators in n dimensions). Each iteration computes the
@@ -9,13 +9,16 @@
 // the literal K, P of eqs. (15), (17); the others first row-reduce K z = P g (wrench_cone.h).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "geometry/double_description.h"
 #include "geometry/scene_json.h"
-#include "tests/reference/cdd_cone.h"
 #include "solvers/wrench_cone/wrench_cone.h"
+#include "tests/reference/cdd_cone.h"
 
 namespace {
 
@@ -72,7 +75,8 @@ void BM_WrenchCone(benchmark::State& state) {
   state.counters["fixels"] = n;
   state.counters["facets"] = static_cast<double>(rows);
   state.counters["wrong_facet_count"] = rows == exact_rows ? 0 : 1;
-  state.SetLabel(std::string(exact::NumberTraits<T>::name) + (route == solvers::Route::kPaper ? " paper " : " project ") +
+  state.SetLabel(std::string(exact::NumberTraits<T>::name) +
+                 (route == solvers::Route::kPaper ? " paper " : " project ") +
                  (pre == solvers::Preconditioning::kNone ? "literal-K " : "") +
                  std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
 }
@@ -113,12 +117,60 @@ void raw_paper_route(benchmark::State& state, Convert convert, const std::string
 
 /// The paper's route with K^F by cddlib (GMP).
 void BM_PaperRouteCddKF(benchmark::State& state) {
-  raw_paper_route(state, [](const geometry::SpanCone<Q>& c) { return reference::cdd_to_face(c); }, "cddlib-gmp K^F");
+  raw_paper_route(
+      state, [](const geometry::SpanCone<Q>& c) { return reference::cdd_to_face(c); }, "cddlib-gmp K^F");
 }
 
 /// The same with our own exact conversion for K^F (what cddlib's column competes with).
 void BM_PaperRouteOwnKF(benchmark::State& state) {
-  raw_paper_route(state, [](const geometry::SpanCone<Q>& c) { return geometry::to_face(c); }, "own exact K^F");
+  raw_paper_route(
+      state, [](const geometry::SpanCone<Q>& c) { return geometry::to_face(c); }, "own exact K^F");
+}
+
+/// Median wall time of `reps` calls of f, in microseconds.
+template <class F>
+double median_us(F&& f, int reps = 41) {
+  std::vector<double> t;
+  for (int r = 0; r < reps; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    t.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::nth_element(t.begin(), t.begin() + reps / 2, t.end());
+  return t[static_cast<std::size_t>(reps / 2)];
+}
+
+/// Table 4 side by side: the exact paper route (the timed body), the float paper route and the raw
+/// eq. (18) with cddlib's K^F, each as a median per cone (model included), and the ratios.
+void BM_Table4Ratios(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const geometry::PlanarScene scene = disk_scene(n);
+  const solvers::ModeString m = mode(n, letter_of(state.range(1)));
+  auto exact = [&] {
+    const geometry::FaceCone<Q> f =
+        solvers::wrench_cone_face(scene, solvers::contact_model<Q>(scene), m, solvers::Route::kPaper);
+    benchmark::DoNotOptimize(f.inequalities.rows());
+  };
+  auto flt = [&] {
+    const geometry::FaceCone<double> f =
+        solvers::wrench_cone_face(scene, solvers::contact_model<double>(scene), m, solvers::Route::kPaper);
+    benchmark::DoNotOptimize(f.inequalities.rows());
+  };
+  auto cdd = [&] {
+    const solvers::ContactModel<Q> model = solvers::contact_model<Q>(scene);
+    const solvers::ConeForm<Q> form = solvers::cone_form(scene, model, m);
+    const Mat<Q> F = reference::cdd_to_face(geometry::SpanCone<Q>::from_columns(form.K)).inequalities * form.P;
+    benchmark::DoNotOptimize(F.rows());
+  };
+  for (auto _ : state) exact();
+  const double e = median_us(exact), f = median_us(flt), c = median_us(cdd);
+  state.counters["fixels"] = n;
+  state.counters["exact_us"] = e;
+  state.counters["float_us"] = f;
+  state.counters["cddlib_us"] = c;
+  state.counters["exact/float"] = e / f;
+  state.counters["exact/cddlib"] = e / c;
+  state.SetLabel(std::string(static_cast<std::size_t>(n), letter_of(state.range(1))));
 }
 
 void table4(benchmark::internal::Benchmark* b) {
@@ -131,9 +183,12 @@ void growth(benchmark::internal::Benchmark* b) {
     for (int n : {8, 10, 12, 16, 20}) b->Args({n, letter});
 }
 
+BENCHMARK(BM_Table4Ratios)->Apply(table4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WrenchCone<Q, solvers::Route::kPaper>)->Apply(table4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WrenchCone<Q, solvers::Route::kProject>)->Apply(table4)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_WrenchCone<Q, solvers::Route::kPaper, solvers::Preconditioning::kNone>)->Apply(table4)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_WrenchCone<Q, solvers::Route::kPaper, solvers::Preconditioning::kNone>)
+    ->Apply(table4)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WrenchCone<double, solvers::Route::kPaper>)->Apply(table4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_WrenchCone<double, solvers::Route::kProject>)->Apply(table4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ModelAndConeForm)->Apply(table4)->Unit(benchmark::kMicrosecond);

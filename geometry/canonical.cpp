@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "exact/fraction_free.h"
 #include "exact/linalg.h"
 
 namespace contactcert::geometry {
@@ -14,14 +15,11 @@ using exact::is_zero;
 
 // Primitive integer row (Q) / row with max |entry| = 1 (double); same direction.
 void normalize_row(std::vector<Q>& v) {
-  Z l = 1, g = 0;
-  for (const Q& x : v) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
-  for (Q& x : v) {
-    x *= l;
-    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), x.get_num_mpz_t());
-  }
-  if (g > 1)
-    for (Q& x : v) x /= g;
+  exact::with_exact_ring<Q>([&]<class R>() {
+    std::vector<R> r(v.size());
+    exact::ring::to_ring(v.data(), static_cast<Index>(v.size()), r.data());
+    for (size_t i = 0; i < v.size(); ++i) v[i] = exact::ring::to_field<Q>(r[i]);
+  });
 }
 void normalize_row(std::vector<double>& v) {
   double m = 0;

@@ -2,15 +2,14 @@
 
 #include <algorithm>
 #include <bit>
-#include <cmath>
 #include <cstdint>
-#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
 
+#include "exact/fraction_free.h"
 #include "exact/input_error.h"
 #include "exact/linalg.h"
 
@@ -19,69 +18,9 @@ namespace {
 
 using Index = Eigen::Index;
 using exact::is_zero;
-using exact::NumberTraits;
 
-// The ring the iteration runs in: Z (fraction-free) for the exact field Q, double for double.
-template <class T>
-using Ring = std::conditional_t<std::is_same_v<T, Q>, Z, double>;
-
-int ring_sign(const Z& x) { return sgn(x); }
-int ring_sign(double x) { return exact::sign(x); }
-
-void dot(const Z* a, const Z* b, Index k, Z& out) {
-  out = 0;
-  for (Index i = 0; i < k; ++i) mpz_addmul(out.get_mpz_t(), a[i].get_mpz_t(), b[i].get_mpz_t());
-}
-void dot(const double* a, const double* b, Index k, double& out) {
-  out = 0;
-  for (Index i = 0; i < k; ++i) out += a[i] * b[i];
-}
-
-// Primitive integer vector (gcd 1) / unit max-norm vector: keeps entries small.
-void normalize(Z* v, Index k) {
-  Z g = 0;
-  for (Index i = 0; i < k && g != 1; ++i) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), v[i].get_mpz_t());
-  if (g > 1)
-    for (Index i = 0; i < k; ++i) mpz_divexact(v[i].get_mpz_t(), v[i].get_mpz_t(), g.get_mpz_t());
-}
-void normalize(double* v, Index k) {
-  // Entries below the sign tolerance are rounding noise of a cancellation: zero them before scaling
-  // (scaling would blow them up).
-  for (Index i = 0; i < k; ++i)
-    if (exact::is_zero(v[i])) v[i] = 0;
-  double m = 0;
-  for (Index i = 0; i < k; ++i) m = std::max(m, std::abs(v[i]));
-  if (m > 0)
-    for (Index i = 0; i < k; ++i) v[i] /= m;
-}
-
-// out = ap * rm - am * rp with ap > 0 > am: a . out = 0 and out is a positive combination.
-void combine(const Z* rp, const Z& ap, const Z* rm, const Z& am, Z* out, Index k) {
-  for (Index i = 0; i < k; ++i) {
-    mpz_mul(out[i].get_mpz_t(), ap.get_mpz_t(), rm[i].get_mpz_t());
-    mpz_submul(out[i].get_mpz_t(), am.get_mpz_t(), rp[i].get_mpz_t());
-  }
-}
-void combine(const double* rp, double ap, const double* rm, double am, double* out, Index k) {
-  for (Index i = 0; i < k; ++i) out[i] = ap * rm[i] - am * rp[i];
-}
-
-// A field row as a ring row.
-void to_ring(const Q* row, Index k, Z* out) {
-  Z l = 1;
-  for (Index i = 0; i < k; ++i) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), row[i].get_den_mpz_t());
-  for (Index i = 0; i < k; ++i) {
-    mpz_divexact(out[i].get_mpz_t(), l.get_mpz_t(), row[i].get_den_mpz_t());
-    out[i] *= row[i].get_num();
-  }
-  normalize(out, k);
-}
-void to_ring(const double* row, Index k, double* out) {
-  std::copy(row, row + k, out);
-  normalize(out, k);
-}
-Q to_field(const Z& x, Q*) { return Q(x); }
-double to_field(double x, double*) { return x; }
+namespace rg = exact::ring;
+using exact::Ring;
 
 template <class T>
 Mat<T> multiply(const Mat<T>& A, const Mat<T>& B) {
@@ -103,18 +42,19 @@ void normalize_columns(Mat<T>& M) {
   std::vector<R> r(static_cast<size_t>(M.rows()));
   for (Index j = 0; j < M.cols(); ++j) {
     for (Index i = 0; i < M.rows(); ++i) col[static_cast<size_t>(i)] = M(i, j);
-    to_ring(col.data(), M.rows(), r.data());
-    for (Index i = 0; i < M.rows(); ++i) M(i, j) = to_field(r[static_cast<size_t>(i)], static_cast<T*>(nullptr));
+    rg::to_ring(col.data(), M.rows(), r.data());
+    for (Index i = 0; i < M.rows(); ++i) M(i, j) = rg::to_field<T>(r[static_cast<size_t>(i)]);
   }
 }
 
-// The double description iteration on a pointed cone { y in R^k : a_t . y <= 0 } whose rows have rank k.
-// Rays and their zero sets (bitsets over processed rows) are kept in flat arrays.
+// The double description iteration on a pointed cone { y in R^k : a_t . y <= 0 } whose rows have rank k,
+// in the ring R (exact/fraction_free.h). Rays and their zero sets (bitsets over processed rows) are kept
+// in flat arrays; the scratch lists are reused from row to row.
 template <class R>
 class DoubleDescription {
  public:
   DoubleDescription(Index k, std::size_t rows, std::size_t max_rays)
-      : k_(k), words_((rows + 63) / 64), max_rays_(max_rays) {}
+      : k_(k), words_((rows + 63) / 64), max_rays_(max_rays), common_(words_) {}
 
   void add_initial_ray(const R* y, const std::vector<std::size_t>& zero_rows) {
     const std::size_t id = push_ray();
@@ -125,35 +65,36 @@ class DoubleDescription {
   // Intersects the current cone with { a . y <= 0 }; `t` is the row's position (its bit).
   void add_row(const R* a, std::size_t t) {
     const std::size_t n = count_;
-    values_.resize(n);
-    std::vector<std::size_t> plus, minus, keep;
+    if (values_.size() < n) values_.resize(n);
+    plus_.clear();
+    minus_.clear();
+    keep_.clear();
     for (std::size_t r = 0; r < n; ++r) {
-      dot(a, &coord_[r * static_cast<size_t>(k_)], k_, values_[r]);
-      const int s = ring_sign(values_[r]);
+      rg::dot(a, &coord_[r * static_cast<size_t>(k_)], k_, values_[r]);
+      const int s = rg::sign(values_[r]);
       if (s > 0) {
-        plus.push_back(r);
+        plus_.push_back(r);
       } else {
         if (s < 0)
-          minus.push_back(r);
+          minus_.push_back(r);
         else
           bits_[r * words_ + t / 64] |= std::uint64_t{1} << (t % 64);
-        keep.push_back(r);
+        keep_.push_back(r);
       }
     }
-    if (plus.empty()) return;
+    if (plus_.empty()) return;
     // New rays from adjacent (plus, minus) pairs: combinatorial test (Fukuda-Prodon).
-    std::vector<std::uint64_t> common(words_);
     const std::size_t need = k_ >= 2 ? static_cast<std::size_t>(k_ - 2) : 0;
-    std::vector<std::size_t> created;
-    for (auto p : plus) {
-      for (auto m : minus) {
+    const std::size_t first_created = count_;
+    for (auto p : plus_) {
+      for (auto m : minus_) {
         // (bits_ may grow below: index it afresh for every pair.)
         const std::uint64_t* bp = &bits_[p * words_];
         const std::uint64_t* bm = &bits_[m * words_];
         std::size_t pop = 0;
         for (std::size_t w = 0; w < words_; ++w) {
-          common[w] = bp[w] & bm[w];
-          pop += static_cast<std::size_t>(std::popcount(common[w]));
+          common_[w] = bp[w] & bm[w];
+          pop += static_cast<std::size_t>(std::popcount(common_[w]));
         }
         if (pop < need) continue;
         bool adjacent = true;
@@ -161,30 +102,29 @@ class DoubleDescription {
           if (r == p || r == m) continue;
           const std::uint64_t* br = &bits_[r * words_];
           bool subset = true;
-          for (std::size_t w = 0; w < words_ && subset; ++w) subset = (common[w] & ~br[w]) == 0;
+          for (std::size_t w = 0; w < words_ && subset; ++w) subset = (common_[w] & ~br[w]) == 0;
           if (subset) adjacent = false;
         }
         if (!adjacent) continue;
         const std::size_t id = push_ray();
-        combine(&coord_[p * static_cast<size_t>(k_)], values_[p], &coord_[m * static_cast<size_t>(k_)], values_[m],
-                &coord_[id * static_cast<size_t>(k_)], k_);
-        normalize(&coord_[id * static_cast<size_t>(k_)], k_);
-        for (std::size_t w = 0; w < words_; ++w) bits_[id * words_ + w] = common[w];
+        rg::combine(&coord_[p * static_cast<size_t>(k_)], values_[p], &coord_[m * static_cast<size_t>(k_)], values_[m],
+                    &coord_[id * static_cast<size_t>(k_)], k_);
+        rg::normalize(&coord_[id * static_cast<size_t>(k_)], k_);
+        for (std::size_t w = 0; w < words_; ++w) bits_[id * words_ + w] = common_[w];
         bits_[id * words_ + t / 64] |= std::uint64_t{1} << (t % 64);
-        created.push_back(id);
       }
     }
     // Compact: kept rays, then created rays.
-    keep.insert(keep.end(), created.begin(), created.end());
-    for (std::size_t i = 0; i < keep.size(); ++i) {
-      const std::size_t from = keep[i];
+    for (std::size_t id = first_created; id < count_; ++id) keep_.push_back(id);
+    for (std::size_t i = 0; i < keep_.size(); ++i) {
+      const std::size_t from = keep_[i];
       if (from == i) continue;
       for (Index j = 0; j < k_; ++j)
         std::swap(coord_[i * static_cast<size_t>(k_) + static_cast<size_t>(j)],
                   coord_[from * static_cast<size_t>(k_) + static_cast<size_t>(j)]);
       for (std::size_t w = 0; w < words_; ++w) bits_[i * words_ + w] = bits_[from * words_ + w];
     }
-    count_ = keep.size();
+    count_ = keep_.size();
   }
 
   std::size_t count() const { return count_; }
@@ -209,18 +149,13 @@ class DoubleDescription {
   std::vector<R> coord_;
   std::vector<std::uint64_t> bits_;
   std::vector<R> values_;
-};
-
-template <class T>
-struct Generators {
-  Mat<T> rays;
-  Mat<T> lines;
+  std::vector<std::size_t> plus_, minus_, keep_;
+  std::vector<std::uint64_t> common_;
 };
 
 // Ring rows of A, without zero rows and duplicates, in lexicographic order.
-template <class T>
-std::vector<std::vector<Ring<T>>> ring_rows(const Mat<T>& A) {
-  using R = Ring<T>;
+template <class T, class R>
+std::vector<std::vector<R>> ring_rows(const Mat<T>& A) {
   const Index k = A.cols();
   std::vector<std::vector<R>> rows;
   std::vector<T> buf(static_cast<size_t>(k));
@@ -232,7 +167,7 @@ std::vector<std::vector<Ring<T>>> ring_rows(const Mat<T>& A) {
       if (!is_zero(A(i, j))) zero = false;
     }
     if (zero) continue;
-    to_ring(buf.data(), k, r.data());
+    rg::to_ring(buf.data(), k, r.data());
     rows.push_back(r);
   }
   std::sort(rows.begin(), rows.end());
@@ -240,12 +175,99 @@ std::vector<std::vector<Ring<T>>> ring_rows(const Mat<T>& A) {
   return rows;
 }
 
+// The extreme rays of the simplicial cone { y : B y <= 0 } for k independent rows B (ray j is tight on
+// every row but j): y_j = -B^-1 e_j up to a positive factor, by fraction-free Gauss-Jordan elimination of
+// [B^T | I] in the ring. Each row of the result reads u^T B^T = d e_j^T, i.e. B u = d e_j, so
+// y_j = -sign(d) u. nullopt if a pivot vanishes (float path: B singular within the tolerance).
+template <class R>
+std::optional<std::vector<std::vector<R>>> simplicial_rays(const std::vector<const std::vector<R>*>& B, Index k) {
+  const auto uk = static_cast<std::size_t>(k);
+  std::vector<std::vector<R>> w(uk, std::vector<R>(2 * uk, R(0)));
+  for (std::size_t i = 0; i < uk; ++i) {
+    for (std::size_t j = 0; j < uk; ++j) w[i][j] = (*B[j])[i];
+    w[i][uk + i] = R(1);
+  }
+  std::vector<std::size_t> pivot_row(uk);
+  std::vector<bool> used(uk, false);
+  std::vector<R> tmp(2 * uk);
+  for (std::size_t c = 0; c < uk; ++c) {
+    std::size_t p = uk;
+    for (std::size_t i = 0; i < uk; ++i)
+      if (!used[i] && rg::sign(w[i][c]) != 0 && (p == uk || rg::better_pivot(w[i][c], w[p][c]))) p = i;
+    if (p == uk) return std::nullopt;
+    used[p] = true;
+    pivot_row[c] = p;
+    for (std::size_t i = 0; i < uk; ++i) {
+      if (i == p || rg::sign(w[i][c]) == 0) continue;
+      // w_i <- piv * w_i - w_i[c] * w_p: zero in column c.
+      const R piv = w[p][c], f = w[i][c];
+      rg::combine(w[p].data(), piv, w[i].data(), f, tmp.data(), 2 * k);
+      w[i].swap(tmp);
+      w[i][c] = R(0);
+      rg::normalize(w[i].data(), 2 * k);
+    }
+  }
+  std::vector<std::vector<R>> rays(uk);
+  for (std::size_t j = 0; j < uk; ++j) {
+    const std::vector<R>& row = w[pivot_row[j]];
+    rays[j].assign(row.begin() + k, row.end());
+    if (rg::sign(row[j]) > 0)
+      for (R& x : rays[j]) x = -x;
+    rg::normalize(rays[j].data(), k);
+  }
+  return rays;
+}
+
+// R^3 (exact rings): an extreme ray of the pointed cone { y : a . y <= 0 } is tight on two independent
+// rows, so it is +-(a_i x a_j) for a pair that keeps every row <= 0; no simplicial start, no DD.
+// Primitive rays in lexicographic order; nullopt if the rows have rank < 3.
+template <class R>
+std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::vector<std::vector<R>>& rows,
+                                                                   const DdBudget& budget) {
+  std::vector<std::vector<R>> out;
+  std::vector<R> c(3);
+  R x;
+  bool full_rank = false;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (std::size_t j = i + 1; j < rows.size(); ++j) {
+      const std::vector<R>&a = rows[i], &b = rows[j];
+      for (std::size_t t = 0; t < 3; ++t) {  // c_t = a_{t+1} b_{t+2} - a_{t+2} b_{t+1}
+        const std::size_t u = (t + 1) % 3, v = (t + 2) % 3;
+        rg::combine(&b[u], a[u], &b[v], a[v], &c[t], 1);
+      }
+      if (rg::sign(c[0]) == 0 && rg::sign(c[1]) == 0 && rg::sign(c[2]) == 0) continue;
+      int side = 0;
+      bool ray = true;
+      for (std::size_t l = 0; l < rows.size() && ray; ++l) {
+        rg::dot(rows[l].data(), c.data(), 3, x);
+        const int s = rg::sign(x);
+        if (s == 0) continue;
+        full_rank = true;
+        if (side == 0) side = s;
+        ray = side == s;
+      }
+      if (!ray || side == 0) continue;
+      if (side > 0)
+        for (R& e : c) e = -e;
+      rg::normalize(c.data(), 3);
+      out.push_back(c);
+    }
+  if (!full_rank) return std::nullopt;
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  if (out.size() > budget.max_rays)
+    throw exact::BudgetExceeded("double description: more than " + std::to_string(budget.max_rays) + " rays",
+                                std::to_string(out.size()) + " rays");
+  return out;
+}
+
 // Extreme rays of { y in R^k : a . y <= 0 for every row a } if the rows have rank k (the cone is
 // pointed), as ring vectors; nullopt if the rank is smaller.
-template <class T>
-std::optional<std::vector<std::vector<Ring<T>>>> pointed_extreme_rays(const std::vector<std::vector<Ring<T>>>& rows,
-                                                                      Index k, const DdBudget& budget) {
-  using R = Ring<T>;
+template <class R>
+std::optional<std::vector<std::vector<R>>> pointed_extreme_rays(const std::vector<std::vector<R>>& rows, Index k,
+                                                                const DdBudget& budget) {
+  if constexpr (!std::is_same_v<R, double>)  // the float path keeps the DD's tolerances
+    if (k == 3) return pointed_extreme_rays_3d<R>(rows, budget);
   // Initial simplicial cone: k independent rows B (greedy, fraction-free elimination in the ring).
   std::vector<std::size_t> basis;
   {
@@ -256,19 +278,18 @@ std::optional<std::vector<std::vector<Ring<T>>>> pointed_extreme_rays(const std:
       v = rows[i];
       for (std::size_t b = 0; b < reduced.size(); ++b) {
         const R& vp = v[static_cast<size_t>(pivot[b])];
-        if (ring_sign(vp) == 0) continue;
+        if (rg::sign(vp) == 0) continue;
         // v <- piv_b * v - v_p * row_b (zero in column p), kept small.
         const R pb = reduced[b][static_cast<size_t>(pivot[b])];
         const R vpc = vp;
-        combine(reduced[b].data(), pb, v.data(), vpc, tmp.data(), k);
+        rg::combine(reduced[b].data(), pb, v.data(), vpc, tmp.data(), k);
         v.swap(tmp);
-        normalize(v.data(), k);
+        rg::normalize(v.data(), k);
       }
       Index p = -1;
       for (Index j = 0; j < k; ++j)
-        if (ring_sign(v[static_cast<size_t>(j)]) != 0 &&
-            (p < 0 || NumberTraits<T>::better_pivot(to_field(v[static_cast<size_t>(j)], static_cast<T*>(nullptr)),
-                                                    to_field(v[static_cast<size_t>(p)], static_cast<T*>(nullptr)))))
+        if (rg::sign(v[static_cast<size_t>(j)]) != 0 &&
+            (p < 0 || rg::better_pivot(v[static_cast<size_t>(j)], v[static_cast<size_t>(p)])))
           p = j;
       if (p < 0) continue;
       reduced.push_back(v);
@@ -284,26 +305,17 @@ std::optional<std::vector<std::vector<Ring<T>>>> pointed_extreme_rays(const std:
     for (std::size_t i = 0; i < rows.size(); ++i)
       if (!in_basis[i]) order.push_back(i);
   }
-  Mat<T> B(k, k);
-  for (Index i = 0; i < k; ++i)
-    for (Index j = 0; j < k; ++j)
-      B(i, j) = to_field(rows[basis[static_cast<size_t>(i)]][static_cast<size_t>(j)], static_cast<T*>(nullptr));
-  const std::optional<Mat<T>> inv = exact::inverse<T>(B);
-  if (!inv) return std::nullopt;  // float path only: independent for the ring test, singular for rref's tolerance
-  const Mat<T>& Binv = *inv;
+  std::vector<const std::vector<R>*> B;
+  for (auto b : basis) B.push_back(&rows[b]);
+  const auto initial = simplicial_rays<R>(B, k);
+  if (!initial) return std::nullopt;  // float path only: independent for the ring test, singular for the elimination
 
   DoubleDescription<R> dd(k, rows.size(), budget.max_rays);
-  {
-    std::vector<T> col(static_cast<size_t>(k));
-    std::vector<R> y(static_cast<size_t>(k));
-    for (Index j = 0; j < k; ++j) {
-      for (Index i = 0; i < k; ++i) col[static_cast<size_t>(i)] = -Binv(i, j);
-      to_ring(col.data(), k, y.data());
-      std::vector<std::size_t> zero_rows;
-      for (Index i = 0; i < k; ++i)
-        if (i != j) zero_rows.push_back(static_cast<std::size_t>(i));
-      dd.add_initial_ray(y.data(), zero_rows);
-    }
+  for (Index j = 0; j < k; ++j) {
+    std::vector<std::size_t> zero_rows;
+    for (Index i = 0; i < k; ++i)
+      if (i != j) zero_rows.push_back(static_cast<std::size_t>(i));
+    dd.add_initial_ray((*initial)[static_cast<size_t>(j)].data(), zero_rows);
   }
   for (std::size_t t = static_cast<std::size_t>(k); t < order.size(); ++t) dd.add_row(rows[order[t]].data(), t);
   std::vector<std::vector<R>> out;
@@ -311,20 +323,30 @@ std::optional<std::vector<std::vector<Ring<T>>>> pointed_extreme_rays(const std:
   return out;
 }
 
-// Extreme rays and lineality of { x in R^n : A x <= 0, E x = 0 }.
+template <class T>
+struct Generators {
+  Mat<T> rays;
+  Mat<T> lines;
+};
+
+// Extreme rays and lineality of { x in R^n : A x <= 0, E x = 0 }. The iteration runs in the exact ring
+// std::int64_t and restarts in Z if a number outgrows it (T = Q), in double for T = double.
 template <class T>
 Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBudget& budget) {
-  using R = Ring<T>;
   Generators<T> out;
   // Fast path: no equalities and rank A = n (pointed): no change of coordinates.
   if (E.rows() == 0) {
-    const auto rays = pointed_extreme_rays<T>(ring_rows<T>(A), n, budget);
+    std::optional<Mat<T>> rays = exact::with_exact_ring<T>([&]<class R>() -> std::optional<Mat<T>> {
+      const auto y = pointed_extreme_rays<R>(ring_rows<T, R>(A), n, budget);
+      if (!y) return std::nullopt;
+      Mat<T> M(static_cast<Index>(y->size()), n);
+      for (Index r = 0; r < M.rows(); ++r)
+        for (Index i = 0; i < n; ++i) M(r, i) = rg::to_field<T>((*y)[static_cast<size_t>(r)][static_cast<size_t>(i)]);
+      return M;
+    });
     if (rays) {
       out.lines = Mat<T>(0, n);
-      out.rays = Mat<T>(static_cast<Index>(rays->size()), n);
-      for (Index r = 0; r < out.rays.rows(); ++r)
-        for (Index i = 0; i < n; ++i)
-          out.rays(r, i) = to_field((*rays)[static_cast<size_t>(r)][static_cast<size_t>(i)], static_cast<T*>(nullptr));
+      out.rays = std::move(*rays);
       return out;
     }
   }
@@ -343,26 +365,27 @@ Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBu
   const Mat<T> W = L1.cols() > 0 ? exact::null_space<T>(Mat<T>(L1.transpose())) : Mat<T>(Mat<T>::Identity(n1, n1));
   Mat<T> M = multiply<T>(V, W);
   normalize_columns<T>(M);
-  const auto rays = pointed_extreme_rays<T>(ring_rows<T>(multiply<T>(A, M)), k, budget);
-  if (!rays) throw std::logic_error("double description: rank deficient after removing the lineality space");
-
-  // Back to x = M y.
-  out.rays = Mat<T>(static_cast<Index>(rays->size()), n);
-  std::vector<T> x(static_cast<size_t>(n));
-  std::vector<R> xr(static_cast<size_t>(n));
-  for (std::size_t r = 0; r < rays->size(); ++r) {
-    const std::vector<R>& y = (*rays)[r];
-    for (Index i = 0; i < n; ++i) {
-      T s = T(0);
-      for (Index j = 0; j < k; ++j)
-        if (ring_sign(y[static_cast<size_t>(j)]) != 0)
-          s += M(i, j) * to_field(y[static_cast<size_t>(j)], static_cast<T*>(nullptr));
-      x[static_cast<size_t>(i)] = s;
+  const Mat<T> AM = multiply<T>(A, M);
+  out.rays = exact::with_exact_ring<T>([&]<class R>() {
+    const auto rays = pointed_extreme_rays<R>(ring_rows<T, R>(AM), k, budget);
+    if (!rays) throw std::logic_error("double description: rank deficient after removing the lineality space");
+    // Back to x = M y, as primitive (Q) / unit max-norm (double) rows.
+    Mat<T> X(static_cast<Index>(rays->size()), n);
+    std::vector<T> x(static_cast<size_t>(n));
+    std::vector<Ring<T>> xr(static_cast<size_t>(n));
+    for (std::size_t r = 0; r < rays->size(); ++r) {
+      const std::vector<R>& y = (*rays)[r];
+      for (Index i = 0; i < n; ++i) {
+        T s = T(0);
+        for (Index j = 0; j < k; ++j)
+          if (rg::sign(y[static_cast<size_t>(j)]) != 0) s += M(i, j) * rg::to_field<T>(y[static_cast<size_t>(j)]);
+        x[static_cast<size_t>(i)] = s;
+      }
+      rg::to_ring(x.data(), n, xr.data());
+      for (Index i = 0; i < n; ++i) X(static_cast<Index>(r), i) = rg::to_field<T>(xr[static_cast<size_t>(i)]);
     }
-    to_ring(x.data(), n, xr.data());
-    for (Index i = 0; i < n; ++i)
-      out.rays(static_cast<Index>(r), i) = to_field(xr[static_cast<size_t>(i)], static_cast<T*>(nullptr));
-  }
+    return X;
+  });
   return out;
 }
 

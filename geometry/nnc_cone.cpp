@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "exact/fraction_free.h"
 #include "geometry/canonical.h"
 
 namespace contactcert::geometry {
@@ -12,12 +13,23 @@ using Index = Eigen::Index;
 using exact::is_zero;
 using exact::sign;
 
-// Rays r (rows of R) with row . r == 0, as a bit per ray.
+// For every row s of S, the rays r (rows of R) with s . r == 0, as a bit per ray. Decided in the ring
+// of T on rows and rays scaled by positive factors (the same signs).
 template <class T>
-std::vector<bool> zero_set(const Mat<T>& R, const auto& row) {
-  std::vector<bool> z(static_cast<size_t>(R.rows()));
-  for (Index r = 0; r < R.rows(); ++r) z[static_cast<size_t>(r)] = is_zero(T(row.dot(R.row(r))));
-  return z;
+std::vector<std::vector<bool>> zero_sets(const Mat<T>& R, const Mat<T>& S) {
+  return exact::with_exact_ring<T>([&]<class Rg>() {
+    namespace rg = exact::ring;
+    const Index k = R.cols();
+    const std::vector<Rg> rays = rg::to_ring_rows<Rg>(R), rows = rg::to_ring_rows<Rg>(S);
+    std::vector<std::vector<bool>> z(static_cast<size_t>(S.rows()), std::vector<bool>(static_cast<size_t>(R.rows())));
+    Rg x;
+    for (Index s = 0; s < S.rows(); ++s)
+      for (Index r = 0; r < R.rows(); ++r) {
+        rg::dot(&rows[static_cast<size_t>(s * k)], &rays[static_cast<size_t>(r * k)], k, x);
+        z[static_cast<size_t>(s)][static_cast<size_t>(r)] = rg::sign(x) == 0;
+      }
+    return z;
+  });
 }
 
 bool subset(const std::vector<bool>& a, const std::vector<bool>& b) {
@@ -49,13 +61,10 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
   out.closure = canonical(to_span(cone, budget));
   const Mat<T>& R = out.closure.rays;
   // Z_s for every strict row; the cone is empty iff some Z_s holds every ray (s vanishes on K').
-  std::vector<std::vector<bool>> zs;
+  std::vector<std::vector<bool>> zs = zero_sets<T>(R, cone.strict);
   bool empty = false;
-  for (Index s = 0; s < cone.strict.rows(); ++s) {
-    std::vector<bool> z = zero_set<T>(R, cone.strict.row(s));
+  for (const auto& z : zs)
     if (std::all_of(z.begin(), z.end(), [](bool b) { return b; })) empty = true;
-    zs.push_back(std::move(z));
-  }
   if (empty) {
     out.status = NncStatus::kEmpty;
     // Encoded as { g = 0, 0 . g < 0 } (canonical equalities: the identity rows, sorted).
@@ -79,8 +88,7 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
     for (size_t j = 0; j < zs.size() && !dominated; ++j) dominated = j != i && subset(zs[i], zs[j]);
     if (!dominated) maximal.push_back(zs[i]);
   }
-  std::vector<std::vector<bool>> facet_rays;
-  for (Index f = 0; f < F.rows(); ++f) facet_rays.push_back(zero_set<T>(R, F.row(f)));
+  const std::vector<std::vector<bool>> facet_rays = zero_sets<T>(R, F);
   out.open_facets.assign(static_cast<size_t>(F.rows()), false);
   std::vector<Vec<T>> strict_rows;
   for (const auto& g : maximal) {
@@ -100,6 +108,11 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
       s += F.row(f).transpose();
     }
     strict_rows.push_back(s);
+  }
+  // No missing face: the cone is its closure, whose face form is canonical already.
+  if (strict_rows.empty()) {
+    out.face = out.closure_face;
+    return out;
   }
   std::vector<Vec<T>> closed_rows;
   for (Index f = 0; f < F.rows(); ++f)

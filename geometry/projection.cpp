@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "exact/fraction_free.h"
 #include "exact/linalg.h"
 #include "exact/simplex.h"
 #include "exact/verified_lp.h"
@@ -106,15 +107,38 @@ FaceCone<T> project_by_polar(const ProjectionProblem<T>& problem, const DdBudget
   const FaceCone<T> KF = to_face(SpanCone<T>::from_columns(K), budget);
   // A facet of pos(K) is open iff it misses a column k_i with z_i > 0: the relative interiors of the
   // faces of pos(K) that contain every such column make up { K z : z >= 0, z_i > 0 on strict }.
+  // Both in the ring of T: the rows of K^F and the columns of K scaled by positive factors (same
+  // signs), P by one positive factor (the same cone F g <= 0).
   std::vector<Vec<T>> closed, open;
-  for (Index f = 0; f < KF.inequalities.rows(); ++f) {
-    bool is_open = false;
-    for (Index i = 0; i < K.cols() && !is_open; ++i)
-      is_open = strict[static_cast<size_t>(i)] && sign(T(KF.inequalities.row(f).dot(K.col(i)))) < 0;
-    const Vec<T> row = (KF.inequalities.row(f) * P).transpose();  // eq. (18): F = K^F P
-    (is_open ? open : closed).push_back(row);
-  }
-  const Mat<T> E = KF.equalities * P;
+  Mat<T> E(KF.equalities.rows(), d);
+  exact::with_exact_ring<T>([&]<class R>() {
+    namespace rg = exact::ring;
+    const Index m = K.rows();
+    closed.clear();
+    open.clear();
+    const std::vector<R> kf = rg::to_ring_rows<R>(KF.inequalities), ke = rg::to_ring_rows<R>(KF.equalities);
+    const std::vector<R> kc = rg::to_ring_rows<R>(K.transpose()), pc = rg::to_ring_rows<R>(P.reshaped().transpose());
+    R x;
+    // Row f of the rows (m entries each) times P (columns pc + j m).
+    auto times_P = [&](const std::vector<R>& rows, Index f, auto&& set) {
+      for (Index j = 0; j < d; ++j) {
+        rg::dot(&rows[static_cast<size_t>(f * m)], &pc[static_cast<size_t>(j * m)], m, x);
+        set(j, rg::to_field<T>(x));
+      }
+    };
+    for (Index f = 0; f < KF.inequalities.rows(); ++f) {
+      bool is_open = false;
+      for (Index i = 0; i < K.cols() && !is_open; ++i) {
+        if (!strict[static_cast<size_t>(i)]) continue;
+        rg::dot(&kf[static_cast<size_t>(f * m)], &kc[static_cast<size_t>(i * m)], m, x);
+        is_open = rg::sign(x) < 0;
+      }
+      Vec<T> row(d);
+      times_P(kf, f, [&](Index j, T v) { row(j) = std::move(v); });  // eq. (18): F = K^F P
+      (is_open ? open : closed).push_back(std::move(row));
+    }
+    for (Index e = 0; e < KF.equalities.rows(); ++e) times_P(ke, e, [&](Index j, T v) { E(e, j) = std::move(v); });
+  });
   return nnc_form(FaceCone<T>::from_rows(d, stack_rows<T>(closed, d), E, stack_rows<T>(open, d)), budget).face;
 }
 

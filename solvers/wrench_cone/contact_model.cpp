@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "exact/fraction_free.h"
 #include "exact/rational_text.h"
 
 namespace contactcert::solvers {
@@ -50,26 +51,33 @@ ContactModel<T> contact_model(const geometry::PlanarScene& scene) {
     rot = rot / lin;
     lin = T(1);
   }
-  // B = J^T M^-1, A = B J (eq. 6).
-  m.B.resize(n2, 3);
-  for (Eigen::Index i = 0; i < n2; ++i) {
-    m.B(i, 0) = m.J(0, i) * lin;
-    m.B(i, 1) = m.J(1, i) * lin;
-    m.B(i, 2) = m.J(2, i) * rot;
-  }
-  // A is symmetric; products go through one scratch number (no temporaries in the exact path).
-  m.A.resize(n2, n2);
-  T product;
-  for (Eigen::Index i = 0; i < n2; ++i)
-    for (Eigen::Index j = i; j < n2; ++j) {
-      T& a = m.A(i, j);
-      a = m.B(i, 0) * m.J(0, j);
-      for (Eigen::Index k = 1; k < 3; ++k) {
-        product = m.B(i, k) * m.J(k, j);
-        a += product;
+  // B = J^T M^-1, A = B J (eq. 6), in the ring of T: integer matrices in the exact path (integer J,
+  // lin and rot), so the products run on machine integers (restarted in Z if they outgrow them).
+  exact::with_exact_ring<T>([&]<class R>() {
+    namespace rg = exact::ring;
+    const auto u2 = static_cast<std::size_t>(n2);
+    std::vector<R> w(3), Jt(3 * u2), Bt(3 * u2);  // diag(M^-1), rows of J^T and of B
+    rg::from_integer(lin, w[0]);
+    w[1] = w[0];
+    rg::from_integer(rot, w[2]);
+    m.B.resize(n2, 3);
+    for (std::size_t i = 0; i < u2; ++i)
+      for (std::size_t k = 0; k < 3; ++k) {
+        rg::from_integer(m.J(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)), Jt[3 * i + k]);
+        rg::mul(Jt[3 * i + k], w[k], Bt[3 * i + k]);
+        m.B(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = rg::to_field<T>(Bt[3 * i + k]);
       }
-      if (j != i) m.A(j, i) = a;
-    }
+    // A is symmetric.
+    m.A.resize(n2, n2);
+    R a;
+    for (std::size_t i = 0; i < u2; ++i)
+      for (std::size_t j = i; j < u2; ++j) {
+        rg::dot(&Bt[3 * i], &Jt[3 * j], 3, a);
+        const auto ei = static_cast<Eigen::Index>(i), ej = static_cast<Eigen::Index>(j);
+        m.A(ei, ej) = rg::to_field<T>(a);
+        if (j != i) m.A(ej, ei) = m.A(ei, ej);
+      }
+  });
   return m;
 }
 

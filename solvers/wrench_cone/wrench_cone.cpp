@@ -1,42 +1,81 @@
 #include "solvers/wrench_cone/wrench_cone.h"
 
-#include "exact/linalg.h"
+#include <vector>
+
+#include "exact/fraction_free.h"
 
 namespace contactcert::solvers {
 namespace {
 
 template <class T>
-geometry::FaceCone<T> run_route(const ConeForm<T>& form, Route route, const geometry::DdBudget& budget, Preconditioning pre) {
+geometry::FaceCone<T> run_route(const ConeForm<T>& form, Route route, const geometry::DdBudget& budget,
+                                Preconditioning pre) {
   // eqs. (13)-(14) with z_i > 0 on the strict components: Theorem 1 with k -> 0+ (section 5.6).
-  const geometry::ProjectionProblem<T> problem =
-      pre == Preconditioning::kRowReduce ? row_reduced(form) : geometry::ProjectionProblem<T>{form.K, form.P, form.strict};
-  return route == Route::kPaper ? geometry::project_by_polar(problem, budget) : geometry::project_by_lp(problem, budget);
+  const geometry::ProjectionProblem<T> problem = pre == Preconditioning::kRowReduce
+                                                     ? row_reduced(form)
+                                                     : geometry::ProjectionProblem<T>{form.K, form.P, form.strict};
+  return route == Route::kPaper ? geometry::project_by_polar(problem, budget)
+                                : geometry::project_by_lp(problem, budget);
 }
 
 }  // namespace
 
 template <class T>
 geometry::ProjectionProblem<T> row_reduced(const ConeForm<T>& form) {
-  const Eigen::Index m = form.K.rows(), k = form.K.cols(), d = form.P.cols();
+  using Index = Eigen::Index;
+  namespace rg = exact::ring;
+  const Index m = form.K.rows(), k = form.K.cols(), d = form.P.cols(), w = d + k;
   if (m == 0) return {form.K, form.P, form.strict};
-  // rref [P | I] = [T P | T] with T invertible; its first r rows hold the pivots of P.
-  Mat<T> aug(m, d + m);
-  aug.leftCols(d) = form.P;
-  aug.rightCols(m) = Mat<T>::Identity(m, m);
-  const exact::Rref<T> e = exact::rref(aug);
-  Eigen::Index r = 0;
-  while (r < e.rank() && e.pivots[static_cast<std::size_t>(r)] < d) ++r;
-  const Mat<T> TK = e.R.rightCols(m) * form.K;
-  // 0 = K2 z: keep a basis of the row space of K2.
-  const exact::Rref<T> k2 = exact::rref<T>(TK.bottomRows(m - r));
-  geometry::ProjectionProblem<T> out;
-  out.K.resize(r + k2.rank(), k);
-  out.K.topRows(r) = TK.topRows(r);
-  out.K.bottomRows(k2.rank()) = k2.R.topRows(k2.rank());
-  out.P = Mat<T>::Zero(r + k2.rank(), d);
-  out.P.topRows(r) = e.R.topLeftCorner(r, d);
-  out.strict = form.strict;
-  return out;
+  // Fraction-free Gauss-Jordan elimination on the rows [P | K] of P g = K z, every row kept primitive
+  // (a positive multiple of the row of rref): the columns of P give T P = [P1; 0] and T K = [K1; K2];
+  // continuing in the columns of K on the rows below leaves a basis of the row space of K2 and zero
+  // rows. (Reducing above the pivots too keeps the entries as small as those of rref.)
+  return exact::with_exact_ring<T>([&]<class R>() {
+    std::vector<std::vector<R>> rows(static_cast<std::size_t>(m), std::vector<R>(static_cast<std::size_t>(w)));
+    {
+      std::vector<T> buf(static_cast<std::size_t>(w));
+      for (Index i = 0; i < m; ++i) {
+        for (Index j = 0; j < d; ++j) buf[static_cast<std::size_t>(j)] = form.P(i, j);
+        for (Index j = 0; j < k; ++j) buf[static_cast<std::size_t>(d + j)] = form.K(i, j);
+        rg::to_ring(buf.data(), w, rows[static_cast<std::size_t>(i)].data());
+      }
+    }
+    std::vector<R> tmp(static_cast<std::size_t>(w));
+    // Pivots column c on the rows from `top` down and clears it in the rows from `first` on; false if
+    // the column is zero from `top` down.
+    auto eliminate = [&](Index c, Index first, Index top) {
+      const auto uc = static_cast<std::size_t>(c), ut = static_cast<std::size_t>(top);
+      std::size_t p = rows.size();
+      for (std::size_t i = ut; i < rows.size(); ++i)
+        if (rg::sign(rows[i][uc]) != 0 && (p == rows.size() || rg::better_pivot(rows[i][uc], rows[p][uc]))) p = i;
+      if (p == rows.size()) return false;
+      rows[ut].swap(rows[p]);
+      for (std::size_t i = static_cast<std::size_t>(first); i < rows.size(); ++i) {
+        if (i == ut || rg::sign(rows[i][uc]) == 0) continue;
+        // row_i <- piv * row_i - row_i[c] * row_top: zero in column c.
+        const R piv = rows[ut][uc], f = rows[i][uc];
+        rg::combine(rows[ut].data(), piv, rows[i].data(), f, tmp.data(), w);
+        rows[i].swap(tmp);
+        rows[i][uc] = R(0);
+        rg::normalize(rows[i].data(), w);
+      }
+      return true;
+    };
+    Index r = 0;
+    for (Index c = 0; c < d && r < m; ++c) r += eliminate(c, 0, r) ? 1 : 0;
+    Index rank = r;  // rows [r, rank) will be a basis of the row space of K2
+    for (Index c = d; c < w && rank < m; ++c) rank += eliminate(c, r, rank) ? 1 : 0;
+    geometry::ProjectionProblem<T> out;
+    out.K.resize(rank, k);
+    out.P.resize(rank, d);
+    for (Index i = 0; i < rank; ++i) {
+      const std::vector<R>& row = rows[static_cast<std::size_t>(i)];
+      for (Index j = 0; j < d; ++j) out.P(i, j) = rg::to_field<T>(row[static_cast<std::size_t>(j)]);
+      for (Index j = 0; j < k; ++j) out.K(i, j) = rg::to_field<T>(row[static_cast<std::size_t>(d + j)]);
+    }
+    out.strict = form.strict;
+    return out;
+  });
 }
 
 template <class T>
@@ -82,15 +121,15 @@ geometry::AffineFace<T> wrench_set_with_minimum_acceleration(const geometry::Pla
   return geometry::theorem1(form.K, form.P, k, budget);
 }
 
-#define CONTACTCERT_WRENCH_CONE_INSTANTIATE(T)                                                                  \
-  template geometry::ProjectionProblem<T> row_reduced<T>(const ConeForm<T>&);                                   \
-  template geometry::FaceCone<T> wrench_cone_face<T>(const geometry::PlanarScene&, const ContactModel<T>&,       \
-                                                     const ModeString&, Route, const geometry::DdBudget&,        \
-                                                     Preconditioning);                                           \
-  template WrenchCone<T> wrench_cone<T>(const geometry::PlanarScene&, const ModeString&, Route,                  \
-                                        const geometry::DdBudget&, Preconditioning);                             \
-  template bool is_empty_cone<T>(const geometry::FaceCone<T>&);                                                  \
-  template geometry::AffineFace<T> wrench_set_with_minimum_acceleration<T>(                                      \
+#define CONTACTCERT_WRENCH_CONE_INSTANTIATE(T)                                                             \
+  template geometry::ProjectionProblem<T> row_reduced<T>(const ConeForm<T>&);                              \
+  template geometry::FaceCone<T> wrench_cone_face<T>(const geometry::PlanarScene&, const ContactModel<T>&, \
+                                                     const ModeString&, Route, const geometry::DdBudget&,  \
+                                                     Preconditioning);                                     \
+  template WrenchCone<T> wrench_cone<T>(const geometry::PlanarScene&, const ModeString&, Route,            \
+                                        const geometry::DdBudget&, Preconditioning);                       \
+  template bool is_empty_cone<T>(const geometry::FaceCone<T>&);                                            \
+  template geometry::AffineFace<T> wrench_set_with_minimum_acceleration<T>(                                \
       const geometry::PlanarScene&, const ModeString&, const Q&, const geometry::DdBudget&);
 CONTACTCERT_WRENCH_CONE_INSTANTIATE(double)
 CONTACTCERT_WRENCH_CONE_INSTANTIATE(Q)

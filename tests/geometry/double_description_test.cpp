@@ -3,8 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
+#include <type_traits>
+#include <vector>
 
+#include "exact/fraction_free.h"
 #include "exact/input_error.h"
 #include "exact/linalg.h"
 #include "geometry/canonical.h"
@@ -170,6 +174,51 @@ TEST(DoubleDescription, CanonicalFormIsInvariant) {
     EXPECT_TRUE(identical(canonical(to_face(C)), canonical(to_face(D))));
     EXPECT_TRUE(identical(canonical(to_span(to_face(C))), canonical(to_span(to_face(D)))));
   }
+}
+
+// The fixed-width ring of exact/fraction_free.h: every overflow is caught, and with_exact_ring then
+// restarts in Z.
+TEST(FractionFree, MachineIntegerOverflowRestartsInZ) {
+  namespace rg = exact::ring;
+  const std::int64_t big = std::int64_t{1} << 62;
+  EXPECT_THROW(rg::mul(big, 2), exact::RingOverflow);
+  EXPECT_THROW(rg::add(big, big), exact::RingOverflow);
+  EXPECT_THROW(rg::sub(-big, big), exact::RingOverflow);  // INT64_MIN itself is excluded
+  EXPECT_EQ(rg::mul(-(big / 2), 2), -big);
+  // Primitive rows: the same in both rings; a row that does not fit throws.
+  const std::vector<Q> row = {Q(6, 35), Q(-4, 21), Q(0), Q(2, 15)};
+  std::vector<std::int64_t> small(row.size());
+  std::vector<Z> exact(row.size());
+  rg::to_ring(row.data(), 4, small.data());
+  rg::to_ring(row.data(), 4, exact.data());
+  EXPECT_EQ(small, (std::vector<std::int64_t>{9, -10, 0, 7}));  // 105 row / 2
+  for (std::size_t i = 0; i < row.size(); ++i) EXPECT_EQ(Z(static_cast<long>(small[i])), exact[i]);
+  const std::vector<Q> huge = {Q(Z("123456789012345678901234567890")), Q(1, 7)};
+  EXPECT_THROW(rg::to_ring(huge.data(), 2, small.data()), exact::RingOverflow);
+  const bool restarted = exact::with_exact_ring<Q>([&]<class R>() {
+    std::vector<R> r(2);
+    rg::to_ring(huge.data(), 2, r.data());
+    return std::is_same_v<R, Z>;
+  });
+  EXPECT_TRUE(restarted);
+}
+
+// Coordinates that overflow 64-bit products part way through the iteration (2^20), at the first
+// product (2^40) or already in the input (2^62): the restart in Z gives cddlib's cone.
+TEST(DoubleDescription, HugeCoordinatesAgainstCddlib) {
+  std::mt19937_64 rng(20261124);
+  for (long range : {long{1} << 20, long{1} << 40, long{1} << 62})
+    for (Eigen::Index dim = 3; dim <= 6; ++dim)
+      for (int rep = 0; rep < 6; ++rep) {
+        SpanCone<Q> C = random_span(rng, dim, dim + 3, rep % 3 == 2 ? 1 : 0, 0, range);
+        if (rep % 3 == 0)
+          for (Eigen::Index r = 0; r < C.rays.rows(); ++r) C.rays(r, 0) = abs(C.rays(r, 0)) + 1;
+        const FaceCone<Q> F = canonical(to_face(C));
+        ASSERT_TRUE(identical(F, canonical(reference::cdd_to_face(C)))) << "range " << range << " dim " << dim;
+        const SpanCone<Q> S = canonical(to_span(F));
+        ASSERT_TRUE(identical(S, canonical(reference::cdd_to_span(F)))) << "range " << range << " dim " << dim;
+        expect_valid_pair(S, F);
+      }
 }
 
 TEST(DoubleDescription, BudgetIsEnforced) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <random>
 #include <set>
 #include <string>
@@ -170,6 +171,29 @@ TEST(Routes, AgreeOnRandomScenesAndModes) {
     }
   }
   EXPECT_EQ(compared, 360);
+}
+
+// Numbers that outgrow 64-bit integers part way (radius 10^3, mu with large denominators) or at once
+// (radius 10^12): the exact path restarts in GMP integers and every route still agrees.
+TEST(Routes, AgreeOnEveryModeWithHugeCoordinates) {
+  // Fixels at (0, -r), (r, 0) and (-3r/5, 4r/5) on a disk of radius r.
+  const std::vector<std::array<std::string, 3>> sizes = {{"1000", "-600", "800"},
+                                                         {"1000000000000", "-600000000000", "800000000000"}};
+  for (const auto& [r, x, y] : sizes) {
+    const PlanarScene s = parse(R"({"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":)" + r +
+                                R"(}},"fixels":[{"position":[0,-)" + r + R"(]},{"position":[)" + r +
+                                R"(,0]},{"position":[)" + x + "," + y + R"(]}],"mu_s":"123457/999983","mu_k":"2/5"})");
+    const ContactModel<Q> m = contact_model<Q>(s);
+    int nonempty = 0;
+    for (const ModeString& mode : all_modes(s)) {
+      const geometry::FaceCone<Q> a = wrench_cone_face(s, m, mode, Route::kPaper);
+      EXPECT_TRUE(geometry::identical(a, wrench_cone_face(s, m, mode, Route::kProject))) << r << " " << mode.text();
+      EXPECT_TRUE(geometry::identical(a, wrench_cone_face(s, m, mode, Route::kPaper, {}, Preconditioning::kNone)))
+          << r << " " << mode.text();
+      nonempty += is_empty_cone(a) ? 0 : 1;
+    }
+    EXPECT_GT(nonempty, 0);
+  }
 }
 
 TEST(Invariance, ScalingAContactFrameLeavesEveryConeUnchanged) {

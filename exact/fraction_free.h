@@ -1,0 +1,205 @@
+// Fraction-free row arithmetic over the ring an exact or float algorithm runs in:
+//   std::int64_t  exact, fixed width; every operation checks for overflow and throws RingOverflow,
+//   Z             exact, unbounded (GMP),
+//   double        the float path, with the tolerance sign test of NumberTraits<double>.
+// Exact callers run in std::int64_t first and restart in Z on overflow (with_exact_ring), so the result
+// is exact either way and fixed width is only a speed-up. Rows of a field matrix become primitive
+// integer rows (Q) or unit max-norm rows (double): both are positive multiples of the field row.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <type_traits>
+#include <vector>
+
+#include "exact/number.h"
+
+namespace contactcert::exact {
+
+/// Thrown by the std::int64_t ring when a result does not fit; the caller restarts in Z.
+struct RingOverflow {};
+
+/// The ring an algorithm over the field T runs in when it stays fraction-free: Z for Q, double for double.
+/// (std::int64_t is the fast exact alternative to Z, see with_exact_ring.)
+template <class T>
+using Ring = std::conditional_t<std::is_same_v<T, Q>, Z, double>;
+
+/// Runs `f.template operator()<R>()` in the ring R of T: for T = Q first in std::int64_t and, on
+/// RingOverflow, again in Z; for T = double in double.
+template <class T, class F>
+auto with_exact_ring(F&& f) {
+  if constexpr (std::is_same_v<T, Q>) {
+    try {
+      return f.template operator()<std::int64_t>();
+    } catch (const RingOverflow&) {
+      return f.template operator()<Z>();
+    }
+  } else {
+    return f.template operator()<double>();
+  }
+}
+
+namespace ring {
+
+using Index = Eigen::Index;
+
+// std::int64_t: INT64_MIN is excluded so that negation and |x| never overflow.
+inline std::int64_t checked(std::int64_t x) {
+  if (x == std::numeric_limits<std::int64_t>::min()) throw RingOverflow{};
+  return x;
+}
+inline std::int64_t mul(std::int64_t a, std::int64_t b) {
+  std::int64_t r;
+  if (__builtin_mul_overflow(a, b, &r)) throw RingOverflow{};
+  return checked(r);
+}
+inline std::int64_t add(std::int64_t a, std::int64_t b) {
+  std::int64_t r;
+  if (__builtin_add_overflow(a, b, &r)) throw RingOverflow{};
+  return checked(r);
+}
+inline std::int64_t sub(std::int64_t a, std::int64_t b) {
+  std::int64_t r;
+  if (__builtin_sub_overflow(a, b, &r)) throw RingOverflow{};
+  return checked(r);
+}
+
+/// out = a * b.
+inline void mul(std::int64_t a, std::int64_t b, std::int64_t& out) { out = mul(a, b); }
+inline void mul(const Z& a, const Z& b, Z& out) { mpz_mul(out.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t()); }
+inline void mul(double a, double b, double& out) { out = a * b; }
+
+/// An integer-valued element of the field as a ring element (Q: precondition x is an integer;
+/// double: as is).
+inline void from_integer(const Q& x, std::int64_t& out) {
+  if (!mpz_fits_slong_p(x.get_num_mpz_t())) throw RingOverflow{};
+  out = checked(mpz_get_si(x.get_num_mpz_t()));
+}
+inline void from_integer(const Q& x, Z& out) { out = x.get_num(); }
+inline void from_integer(double x, double& out) { out = x; }
+
+inline int sign(std::int64_t x) { return (x > 0) - (x < 0); }
+inline int sign(const Z& x) { return sgn(x); }
+inline int sign(double x) { return exact::sign(x); }
+
+/// Pivot choice: the first non-zero entry in the exact rings, the largest in magnitude in double.
+inline bool better_pivot(std::int64_t, std::int64_t) { return false; }
+inline bool better_pivot(const Z&, const Z&) { return false; }
+inline bool better_pivot(double candidate, double best) { return NumberTraits<double>::better_pivot(candidate, best); }
+
+/// out = a . b over k entries.
+inline void dot(const std::int64_t* a, const std::int64_t* b, Index k, std::int64_t& out) {
+  out = 0;
+  for (Index i = 0; i < k; ++i) out = add(out, mul(a[i], b[i]));
+}
+inline void dot(const Z* a, const Z* b, Index k, Z& out) {
+  out = 0;
+  for (Index i = 0; i < k; ++i) mpz_addmul(out.get_mpz_t(), a[i].get_mpz_t(), b[i].get_mpz_t());
+}
+inline void dot(const double* a, const double* b, Index k, double& out) {
+  out = 0;
+  for (Index i = 0; i < k; ++i) out += a[i] * b[i];
+}
+
+/// out = ap * rm - am * rp: with a . rp = ap and a . rm = am, a . out = 0 (one elimination step);
+/// a positive combination of rp and rm when ap > 0 > am.
+inline void combine(const std::int64_t* rp, std::int64_t ap, const std::int64_t* rm, std::int64_t am, std::int64_t* out,
+                    Index k) {
+  for (Index i = 0; i < k; ++i) out[i] = sub(mul(ap, rm[i]), mul(am, rp[i]));
+}
+inline void combine(const Z* rp, const Z& ap, const Z* rm, const Z& am, Z* out, Index k) {
+  for (Index i = 0; i < k; ++i) {
+    mpz_mul(out[i].get_mpz_t(), ap.get_mpz_t(), rm[i].get_mpz_t());
+    mpz_submul(out[i].get_mpz_t(), am.get_mpz_t(), rp[i].get_mpz_t());
+  }
+}
+inline void combine(const double* rp, double ap, const double* rm, double am, double* out, Index k) {
+  for (Index i = 0; i < k; ++i) out[i] = ap * rm[i] - am * rp[i];
+}
+
+/// Divides v by the positive gcd of its entries (primitive vector) / by its max-norm (double).
+inline void normalize(std::int64_t* v, Index k) {
+  std::int64_t g = 0;
+  for (Index i = 0; i < k && g != 1; ++i) g = std::gcd(g, v[i]);
+  if (g > 1)
+    for (Index i = 0; i < k; ++i) v[i] /= g;
+}
+inline void normalize(Z* v, Index k) {
+  Z g = 0;
+  for (Index i = 0; i < k && g != 1; ++i) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), v[i].get_mpz_t());
+  if (g > 1)
+    for (Index i = 0; i < k; ++i) mpz_divexact(v[i].get_mpz_t(), v[i].get_mpz_t(), g.get_mpz_t());
+}
+inline void normalize(double* v, Index k) {
+  // Entries below the sign tolerance are rounding noise of a cancellation: zero them before scaling
+  // (scaling would blow them up).
+  for (Index i = 0; i < k; ++i)
+    if (exact::is_zero(v[i])) v[i] = 0;
+  double m = 0;
+  for (Index i = 0; i < k; ++i) m = std::max(m, std::abs(v[i]));
+  if (m > 0)
+    for (Index i = 0; i < k; ++i) v[i] /= m;
+}
+
+/// A field row as a ring row: the primitive integer multiple (Q), the unit max-norm multiple (double).
+inline void to_ring(const Q* row, Index k, std::int64_t* out) {
+  std::int64_t l = 1;
+  for (Index i = 0; i < k; ++i) {
+    if (!mpz_fits_slong_p(row[i].get_den_mpz_t())) throw RingOverflow{};
+    const std::int64_t d = mpz_get_si(row[i].get_den_mpz_t());
+    l = mul(l / std::gcd(l, d), d);
+  }
+  for (Index i = 0; i < k; ++i) {
+    if (!mpz_fits_slong_p(row[i].get_num_mpz_t())) throw RingOverflow{};
+    out[i] = mul(checked(mpz_get_si(row[i].get_num_mpz_t())), l / mpz_get_si(row[i].get_den_mpz_t()));
+  }
+  normalize(out, k);
+}
+inline void to_ring(const Q* row, Index k, Z* out) {
+  Z l = 1;
+  for (Index i = 0; i < k; ++i) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), row[i].get_den_mpz_t());
+  for (Index i = 0; i < k; ++i) {
+    mpz_divexact(out[i].get_mpz_t(), l.get_mpz_t(), row[i].get_den_mpz_t());
+    out[i] *= row[i].get_num();
+  }
+  normalize(out, k);
+}
+inline void to_ring(const double* row, Index k, double* out) {
+  std::copy(row, row + k, out);
+  normalize(out, k);
+}
+
+/// The rows of A (any Eigen expression over the field T) as ring rows, flat and row-major: row i is
+/// the positive multiple of A's row i that to_ring gives (a zero row stays zero).
+template <class R, class Derived>
+std::vector<R> to_ring_rows(const Eigen::MatrixBase<Derived>& A) {
+  using T = typename Derived::Scalar;
+  const Index k = A.cols();
+  std::vector<R> out(static_cast<std::size_t>(A.rows() * k));
+  std::vector<T> row(static_cast<std::size_t>(k));
+  for (Index i = 0; i < A.rows(); ++i) {
+    for (Index j = 0; j < k; ++j) row[static_cast<std::size_t>(j)] = A(i, j);
+    to_ring(row.data(), k, &out[static_cast<std::size_t>(i * k)]);
+  }
+  return out;
+}
+
+/// A ring element as an element of the field T.
+template <class T>
+T to_field(std::int64_t x) {
+  return T(static_cast<long>(x));
+}
+template <class T>
+T to_field(const Z& x) {
+  return T(x);
+}
+template <class T>
+T to_field(double x) {
+  return T(x);
+}
+
+}  // namespace ring
+}  // namespace contactcert::exact
