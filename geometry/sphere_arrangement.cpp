@@ -4,85 +4,155 @@
 #include <array>
 #include <map>
 #include <set>
+#include <type_traits>
 
 namespace contactcert::geometry {
 namespace {
 
-using exact::is_zero;
-using exact::sign;
+using exact::Z;
 using Index = Eigen::Index;
 
+// The arrangement is computed over R: the exact one over the integers (each normal scaled to a primitive
+// integer vector; a ray's direction is all that matters, so every point is kept integer too), the float one
+// in doubles. Integer products need no gcd, unlike rational ones.
 template <class T>
-using V3 = Eigen::Matrix<T, 3, 1>;
+using Ring = std::conditional_t<std::is_same_v<T, Q>, Z, double>;
 
-template <class T>
-V3<T> cross(const V3<T>& a, const V3<T>& b) {
-  return V3<T>(T(a(1) * b(2) - a(2) * b(1)), T(a(2) * b(0) - a(0) * b(2)), T(a(0) * b(1) - a(1) * b(0)));
+int sign_of(double x) { return exact::sign(x); }
+int sign_of(const Z& x) { return sgn(x); }
+template <class R>
+bool is_zero(const R& x) {
+  return sign_of(x) == 0;
 }
 
-template <class T>
-T dot(const V3<T>& a, const V3<T>& b) {
-  return T(a(0) * b(0) + a(1) * b(1) + a(2) * b(2));
+template <class R>
+using V3 = std::array<R, 3>;
+
+template <class R>
+V3<R> cross(const V3<R>& a, const V3<R>& b) {
+  return {R(a[1] * b[2] - a[2] * b[1]), R(a[2] * b[0] - a[0] * b[2]), R(a[0] * b[1] - a[1] * b[0])};
 }
 
-template <class T>
-bool parallel(const V3<T>& a, const V3<T>& b) {
-  const V3<T> c = cross(a, b);
-  return is_zero(c(0)) && is_zero(c(1)) && is_zero(c(2));
+template <class R>
+R dot(const V3<R>& a, const V3<R>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
+// a . b without temporaries (the arrangement's inner loop).
+Z dot(const V3<Z>& a, const V3<Z>& b) {
+  Z r;
+  mpz_mul(r.get_mpz_t(), a[0].get_mpz_t(), b[0].get_mpz_t());
+  mpz_addmul(r.get_mpz_t(), a[1].get_mpz_t(), b[1].get_mpz_t());
+  mpz_addmul(r.get_mpz_t(), a[2].get_mpz_t(), b[2].get_mpz_t());
+  return r;
+}
+
+// s a + t b.
+template <class R>
+V3<R> combine(const R& s, const V3<R>& a, const R& t, const V3<R>& b) {
+  return {R(s * a[0] + t * b[0]), R(s * a[1] + t * b[1]), R(s * a[2] + t * b[2])};
+}
+
+template <class R>
+V3<R> negated(const V3<R>& a) {
+  return {R(-a[0]), R(-a[1]), R(-a[2])};
+}
+
+template <class R>
+bool nonzero(const V3<R>& a) {
+  return !is_zero(a[0]) || !is_zero(a[1]) || !is_zero(a[2]);
+}
+
+template <class R>
+bool parallel(const V3<R>& a, const V3<R>& b) {
+  return !nonzero(cross(a, b));
+}
+
+// One representative of the ray through d: the primitive integer vector (exact), or d over the magnitude of
+// its first non-zero coordinate (float), so that equal rays compare equal.
+V3<Z> ray_key(V3<Z> d) {
+  Z g;
+  mpz_gcd(g.get_mpz_t(), d[0].get_mpz_t(), d[1].get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), d[2].get_mpz_t());
+  for (Z& x : d) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
+  return d;
+}
+V3<double> ray_key(V3<double> d) {
+  const double lead = !is_zero(d[0]) ? d[0] : (!is_zero(d[1]) ? d[1] : d[2]);
+  for (double& x : d) x /= std::abs(lead);
+  return d;
+}
+
+// A normal row in R: the row times the lcm of its denominators, over the gcd of the numerators (exact).
+V3<Z> to_ring(const Vec<Q>& row) {
+  Z l = 1;
+  for (Index j = 0; j < 3; ++j) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), row(j).get_den_mpz_t());
+  V3<Z> v;
+  for (Index j = 0; j < 3; ++j) v[static_cast<size_t>(j)] = row(j).get_num() * (l / row(j).get_den());
+  return nonzero(v) ? ray_key(v) : v;
+}
+V3<double> to_ring(const Vec<double>& row) { return {row(0), row(1), row(2)}; }
+
 template <class T>
-bool nonzero(const V3<T>& a) {
-  return !is_zero(a(0)) || !is_zero(a(1)) || !is_zero(a(2));
+Vec<T> from_ring(const V3<Ring<T>>& p) {
+  Vec<T> v(3);
+  for (Index j = 0; j < 3; ++j) v(j) = T(p[static_cast<size_t>(j)]);
+  return v;
 }
 
 // Angular order of tangent directions around a vertex, in the coordinates (d . e1, d . e2).
-template <class T>
+template <class R>
 struct Angular {
-  T x, y;
-  int half() const { return (sign(y) > 0 || (sign(y) == 0 && sign(x) > 0)) ? 0 : 1; }
+  R x, y;
+  int half() const { return (sign_of(y) > 0 || (sign_of(y) == 0 && sign_of(x) > 0)) ? 0 : 1; }
   bool operator<(const Angular& o) const {
     if (half() != o.half()) return half() < o.half();
-    return sign(T(x * o.y - y * o.x)) > 0;
+    return sign_of(R(x * o.y - y * o.x)) > 0;
   }
 };
 
 template <class T>
 class Builder {
- public:
-  explicit Builder(const std::vector<V3<T>>& n) : n_(n) {}
+  using R = Ring<T>;
 
-  void add(int dimension, const V3<T>& p) {
+ public:
+  explicit Builder(const std::vector<V3<R>>& n) : n_(n) {}
+
+  void add(int dimension, const V3<R>& p) {
     std::vector<int> s(n_.size());
-    for (std::size_t j = 0; j < n_.size(); ++j) s[j] = sign(dot(n_[j], p));
+    for (std::size_t j = 0; j < n_.size(); ++j) s[j] = sign_of(dot(n_[j], p));
     record(dimension, p, std::move(s));
   }
 
-  // Adds the cell of v + eps u, eps > 0 small enough that every plane not through v keeps its sign at v
-  // (eps = half the least |n.v| / |n.u| over the planes whose sign would flip). `nv` caches n_j . v.
-  void add_near(int dimension, const V3<T>& v, const std::vector<T>& nv, const V3<T>& u) {
-    std::vector<T> nu(n_.size());
-    T eps = T(1);
+  // Adds the cell of v + eps u, eps > 0 small enough that every plane not through v keeps its sign at v:
+  // eps = a / b = half the least |n.v| / |n.u| over the planes whose sign would flip (eps = 1 if none), and
+  // the point is b v + a u, a positive multiple. `nv` caches n_j . v.
+  void add_near(int dimension, const V3<R>& v, const std::vector<R>& nv, const V3<R>& u) {
+    std::vector<R> nu(n_.size());
+    std::vector<int> s(n_.size());
     for (std::size_t j = 0; j < n_.size(); ++j) {
       nu[j] = dot(n_[j], u);
-      if (is_zero(nv[j]) || is_zero(nu[j]) || sign(nv[j]) == sign(nu[j])) continue;
-      const T bound = T(-nv[j] / nu[j]) / T(2);  // positive
-      if (bound < eps) eps = bound;
+      s[j] = is_zero(nv[j]) ? sign_of(nu[j]) : sign_of(nv[j]);
     }
-    std::vector<int> s(n_.size());
-    for (std::size_t j = 0; j < n_.size(); ++j) s[j] = is_zero(nv[j]) ? sign(nu[j]) : sign(nv[j]);
     if (seen_.count(s)) return;
-    record(dimension, V3<T>(T(v(0) + eps * u(0)), T(v(1) + eps * u(1)), T(v(2) + eps * u(2))), std::move(s));
+    R a = 1, b = 1;
+    for (std::size_t j = 0; j < n_.size(); ++j) {
+      if (is_zero(nv[j]) || is_zero(nu[j]) || sign_of(nv[j]) == sign_of(nu[j])) continue;
+      // |nv| / (2 |nu|) < a / b  <=>  |nv| b < 2 |nu| a
+      const R num = sign_of(nv[j]) > 0 ? nv[j] : R(-nv[j]), den = R(2 * (sign_of(nu[j]) > 0 ? nu[j] : R(-nu[j])));
+      if (sign_of(R(num * b - den * a)) < 0) a = num, b = den;
+    }
+    record(dimension, combine(b, v, a, u), std::move(s));
   }
 
   std::vector<ArrangementCell<T>> cells() && { return std::move(cells_); }
 
  private:
-  void record(int dimension, const V3<T>& p, std::vector<int> s) {
-    if (seen_.emplace(s, cells_.size()).second) cells_.push_back({dimension, Vec<T>(p), std::move(s)});
+  void record(int dimension, const V3<R>& p, std::vector<int> s) {
+    if (seen_.emplace(s, cells_.size()).second) cells_.push_back({dimension, from_ring<T>(p), std::move(s)});
   }
 
-  std::vector<V3<T>> n_;
+  std::vector<V3<R>> n_;
   std::map<std::vector<int>, std::size_t> seen_;
   std::vector<ArrangementCell<T>> cells_;
 };
@@ -91,64 +161,69 @@ class Builder {
 
 template <class T>
 SphereArrangement<T> sphere_arrangement(const Mat<T>& normals) {
-  std::vector<V3<T>> n;
-  for (Index r = 0; r < normals.rows(); ++r) {
-    const V3<T> v(normals(r, 0), normals(r, 1), normals(r, 2));
-    if (!nonzero(v)) continue;
-    if (std::none_of(n.begin(), n.end(), [&](const V3<T>& w) { return parallel(v, w); })) n.push_back(v);
-  }
+  using R = Ring<T>;
   SphereArrangement<T> out;
+  std::vector<V3<R>> n;
+  std::vector<Index> kept;  // the input row of each plane
+  out.row_plane.assign(static_cast<std::size_t>(normals.rows()), -1);
+  out.row_orientation.assign(static_cast<std::size_t>(normals.rows()), 0);
+  for (Index r = 0; r < normals.rows(); ++r) {
+    const V3<R> v = to_ring(Vec<T>(normals.row(r).transpose()));
+    if (!nonzero(v)) continue;
+    const auto same = std::find_if(n.begin(), n.end(), [&](const V3<R>& w) { return parallel(v, w); });
+    out.row_plane[static_cast<std::size_t>(r)] = same - n.begin();
+    out.row_orientation[static_cast<std::size_t>(r)] = same == n.end() ? 1 : sign_of(dot(v, *same));
+    if (same == n.end()) {
+      n.push_back(v);
+      kept.push_back(r);
+    }
+  }
   out.planes = Mat<T>(static_cast<Index>(n.size()), 3);
-  for (std::size_t j = 0; j < n.size(); ++j) out.planes.row(static_cast<Index>(j)) = n[j].transpose();
+  for (std::size_t j = 0; j < n.size(); ++j) out.planes.row(static_cast<Index>(j)) = normals.row(kept[j]);
 
   Builder<T> b(n);
-  b.add(0, V3<T>::Zero());
+  b.add(0, V3<R>{R(0), R(0), R(0)});
   if (n.empty()) {
-    b.add(3, V3<T>(T(1), T(0), T(0)));
+    b.add(3, V3<R>{R(1), R(0), R(0)});
   } else if (n.size() == 1) {
     // One great circle: the two open hemispheres and the circle (a plane minus the origin).
-    const V3<T>& a = n[0];
-    V3<T> e = parallel(a, V3<T>(T(1), T(0), T(0))) ? V3<T>(T(0), T(1), T(0)) : V3<T>(T(1), T(0), T(0));
-    b.add(2, cross(a, e));
+    const V3<R>& a = n[0];
+    const V3<R> x{R(1), R(0), R(0)}, y{R(0), R(1), R(0)};
+    b.add(2, cross(a, parallel(a, x) ? y : x));
     b.add(3, a);
-    b.add(3, V3<T>(-a));
+    b.add(3, negated(a));
   } else {
-    // Vertices: the lines n_i x n_j, both directions, each scaled so that its first non-zero
-    // coordinate is +-1 (equal rays then compare equal; float near-duplicates only cost time, since
-    // cells are merged by sign vector).
-    std::set<std::array<T, 3>> vertices;
+    // Vertices: the lines n_i x n_j, both directions, each as its ray_key (float near-duplicates only cost
+    // time, since cells are merged by sign vector).
+    std::set<V3<R>> vertices;
     for (std::size_t i = 0; i < n.size(); ++i)
       for (std::size_t j = i + 1; j < n.size(); ++j) {
-        V3<T> d = cross(n[i], n[j]);
-        const T lead = !is_zero(d(0)) ? d(0) : (!is_zero(d(1)) ? d(1) : d(2));
-        const T scale = sign(lead) > 0 ? lead : T(-lead);
-        d /= scale;
-        vertices.insert({d(0), d(1), d(2)});
-        vertices.insert({T(-d(0)), T(-d(1)), T(-d(2))});
+        const V3<R> d = ray_key(cross(n[i], n[j]));
+        vertices.insert(d);
+        vertices.insert(negated(d));
       }
-    for (const auto& key : vertices) {
-      const V3<T> v(key[0], key[1], key[2]);
+    for (const V3<R>& v : vertices) {
       b.add(1, v);
-      std::vector<T> nv(n.size());
+      std::vector<R> nv(n.size());
       for (std::size_t j = 0; j < n.size(); ++j) nv[j] = dot(n[j], v);
       // Tangent directions at v of the circles through v, sorted around v.
-      std::vector<V3<T>> dirs;
+      std::vector<V3<R>> dirs;
       for (std::size_t j = 0; j < n.size(); ++j)
         if (is_zero(nv[j])) {
-          const V3<T> d = cross(n[j], v);
+          const V3<R> d = cross(n[j], v);
           dirs.push_back(d);
-          dirs.push_back(V3<T>(-d));
+          dirs.push_back(negated(d));
         }
-      const V3<T> e1 = dirs.front(), e2 = cross(v, e1);
-      std::vector<std::pair<Angular<T>, V3<T>>> order;
-      for (const V3<T>& d : dirs) order.push_back({Angular<T>{dot(d, e1), dot(d, e2)}, d});
+      const V3<R> e1 = dirs.front(), e2 = cross(v, e1);
+      std::vector<std::pair<Angular<R>, V3<R>>> order;
+      for (const V3<R>& d : dirs) order.push_back({Angular<R>{dot(d, e1), dot(d, e2)}, d});
       std::sort(order.begin(), order.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
       for (std::size_t k = 0; k < order.size(); ++k) {
-        const V3<T>& d = order[k].second;
-        const V3<T>& next = order[(k + 1) % order.size()].second;
+        const V3<R>& d = order[k].second;
+        const V3<R>& next = order[(k + 1) % order.size()].second;
         b.add_near(2, v, nv, d);  // along an arc leaving v
         // Between two consecutive tangent directions (less than pi apart): a region at v.
-        b.add_near(3, v, nv, V3<T>(T(d(0) + next(0)), T(d(1) + next(1)), T(d(2) + next(2))));
+        b.add_near(3, v, nv, combine(R(1), d, R(1), next));
       }
     }
   }

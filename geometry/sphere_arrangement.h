@@ -26,10 +26,15 @@ template <class T>
 struct SphereArrangement {
   Mat<T> planes;  ///< deduplicated plane normals, one per row
   std::vector<ArrangementCell<T>> cells;
+  /// Per input row r: its plane j = row_plane[r] (-1 for a zero row) and row_orientation[r] = +-1 with
+  /// row r = c planes.row(j), sign(c) = row_orientation[r]; so sign(row_r . g) = row_orientation[r] signs[j].
+  std::vector<Eigen::Index> row_plane;
+  std::vector<int> row_orientation;
 };
 
 /// All cells of the arrangement of the planes {g : n . g = 0} for the rows n of `normals` (zero rows are
-/// ignored, parallel rows merged). Representatives are exact for T = Q.
+/// ignored, parallel rows merged). Representatives are exact for T = Q (computed in integer arithmetic:
+/// normals scaled to primitive integer vectors, representatives integer vectors).
 template <class T>
 SphereArrangement<T> sphere_arrangement(const Mat<T>& normals);
 

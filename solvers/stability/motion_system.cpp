@@ -9,9 +9,16 @@ namespace contactcert::solvers {
 using Index = Eigen::Index;
 
 template <class T>
+Vec<T> MotionSystem<T>::rhs(const Vec<T>& g) const {
+  Vec<T> b = Vec<T>::Zero(system.A.rows());
+  b.tail(3) = g;
+  return b;
+}
+
+template <class T>
 exact::StrictSystem<T> MotionSystem<T>::with_wrench(const Vec<T>& g) const {
   exact::StrictSystem<T> s = system;
-  s.b.tail(3) = g;
+  s.b = rhs(g);
   return s;
 }
 
@@ -27,10 +34,30 @@ Vec<T> MotionSystem<T>::forces(const Vec<T>& x) const {
   for (Index i = 0; i < k; ++i) {
     const Index cn = c_n_column[static_cast<size_t>(i)], ct = c_t_column[static_cast<size_t>(i)];
     if (cn >= 0) c(i) = x(cn);
-    if (ct >= 0) c(k + i) = x(ct);
-    else if (cn >= 0) c(k + i) = c_t_per_c_n[static_cast<size_t>(i)] * x(cn);
+    if (ct >= 0)
+      c(k + i) = x(ct);
+    else if (cn >= 0)
+      c(k + i) = c_t_per_c_n[static_cast<size_t>(i)] * x(cn);
   }
   return c;
+}
+
+template <class T>
+Vec<T> MotionSystem<T>::point(const Vec<T>& vdot, const Vec<T>& c) const {
+  const Index k = static_cast<Index>(c_n_column.size());
+  Vec<T> x = Vec<T>::Zero(system.A.cols());
+  if (!zero_acceleration) x.head(3) = vdot;
+  for (Index i = 0; i < k; ++i) {
+    const Index cn = c_n_column[static_cast<size_t>(i)], ct = c_t_column[static_cast<size_t>(i)];
+    if (cn >= 0) x(cn) = c(i);
+    if (ct >= 0) x(ct) = c(k + i);
+  }
+  // Each slack appears in its own row only, with coefficient -+1: slack = -(row . x without it) / coefficient.
+  for (Index r = 0; r < static_cast<Index>(slack_column.size()); ++r) {
+    const Index j = slack_column[static_cast<size_t>(r)];
+    if (j >= 0) x(j) = T(-system.A.row(r).dot(x) / system.A(r, j));
+  }
+  return x;
 }
 
 template <class T>
@@ -82,6 +109,8 @@ MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeStri
 
   Index r = 0, f = kin_rows;
   const Index dyn = kin_rows + fric_rows;
+  ms.slack_column.assign(static_cast<size_t>(dyn), -1);
+  ms.zero_acceleration = zero_acceleration;
   for (Index i = 0; i < k; ++i) {
     const auto u = static_cast<size_t>(i);
     const Interaction L = zero_acceleration ? Interaction::kRoll : mode.letters[u];
@@ -89,13 +118,14 @@ MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeStri
       // a_n = J_n^T vdot and a_t = J_t^T vdot (eq. 6 from rest, velocity products neglected).
       if (L == Interaction::kSeparate) {  // a_n - sigma = 0, sigma > 0
         s.A.block(r, 0, 1, 3) = J.col(i).transpose();
-        s.A(r++, sigma[u]) = T(-1);
+        s.A(r, sigma[u]) = T(-1);
+        ms.slack_column[static_cast<size_t>(r++)] = sigma[u];
       } else {
         s.A.block(r++, 0, 1, 3) = J.col(i).transpose();  // a_n = 0
         s.A.block(r, 0, 1, 3) = J.col(k + i).transpose();
-        if (L == Interaction::kSlideLeft) s.A(r, sigma[u]) = T(-1);   // a_t = sigma > 0
-        if (L == Interaction::kSlideRight) s.A(r, sigma[u]) = T(1);   // a_t = -sigma < 0
-        ++r;
+        if (L == Interaction::kSlideLeft) s.A(r, sigma[u]) = T(-1);  // a_t = sigma > 0
+        if (L == Interaction::kSlideRight) s.A(r, sigma[u]) = T(1);  // a_t = -sigma < 0
+        ms.slack_column[static_cast<size_t>(r++)] = sigma[u];
       }
       if (sigma[u] >= 0) s.strict[static_cast<size_t>(sigma[u])] = true;
     }
@@ -105,19 +135,21 @@ MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeStri
     const Index ct = ms.c_t_column[u];
     for (Index d = 0; d < 3; ++d) {
       s.A(dyn + d, cn) = -J(d, i);
-      if (ct >= 0) s.A(dyn + d, ct) = -J(d, k + i);
-      else s.A(dyn + d, cn) -= ms.c_t_per_c_n[u] * J(d, k + i);
+      if (ct >= 0)
+        s.A(dyn + d, ct) = -J(d, k + i);
+      else
+        s.A(dyn + d, cn) -= ms.c_t_per_c_n[u] * J(d, k + i);
     }
     if (ct >= 0) {
       // |c_t| <= mu_s c_n:  mu_s c_n - c_t - rho+ = 0,  mu_s c_n + c_t - rho- = 0.
       const T mu_s = from_exact<T>(scene.fixels[u].mu_s);
       s.is_free[static_cast<size_t>(ct)] = true;
-      s.A(f, cn) = mu_s;
-      s.A(f, ct) = T(-1);
-      s.A(f++, rho[u]) = T(-1);
-      s.A(f, cn) = mu_s;
-      s.A(f, ct) = T(1);
-      s.A(f++, rho[u] + 1) = T(-1);
+      for (Index side = 0; side < 2; ++side, ++f) {
+        s.A(f, cn) = mu_s;
+        s.A(f, ct) = T(side ? 1 : -1);
+        s.A(f, rho[u] + side) = T(-1);
+        ms.slack_column[static_cast<size_t>(f)] = rho[u] + side;
+      }
     }
   }
   if (!zero_acceleration) {

@@ -23,17 +23,26 @@ using exact::Vec;
 /// kinematic rows first (they do not involve g), then friction rows, then the 3 dynamics rows.
 template <class T>
 struct MotionSystem {
-  exact::StrictSystem<T> system;  ///< b is zero except on the dynamics rows (set by with_wrench)
-  Eigen::Index kinematic_rows = 0;                    ///< rows [0, kinematic_rows) constrain vdot only
-  std::vector<Eigen::Index> c_n_column, c_t_column;   ///< per fixel: column of c_n / c_t (-1 if none)
-  std::vector<T> c_t_per_c_n;                         ///< per fixel: c_t = this * c_n when sliding (else 0)
-  /// The system for wrench g (the last 3 entries of b).
+  exact::StrictSystem<T> system;                     ///< b is zero except on the dynamics rows (set by with_wrench)
+  Eigen::Index kinematic_rows = 0;                   ///< rows [0, kinematic_rows) constrain vdot only
+  std::vector<Eigen::Index> c_n_column, c_t_column;  ///< per fixel: column of c_n / c_t (-1 if none)
+  std::vector<T> c_t_per_c_n;                        ///< per fixel: c_t = this * c_n when sliding (else 0)
+  std::vector<Eigen::Index> slack_column;            ///< per kinematic or friction row: its slack column (-1 if none)
+  bool zero_acceleration = false;                    ///< vdot fixed to 0 (no vdot columns, no kinematic rows)
+  /// The right-hand side b for wrench g: zero but for the 3 dynamics rows, which are g.
+  Vec<T> rhs(const Vec<T>& g) const;
+  /// The system for wrench g (b = rhs(g)).
   exact::StrictSystem<T> with_wrench(const Vec<T>& g) const;
   /// The kinematic rows alone (with all columns): feasible iff the mode is kinematically feasible.
   exact::StrictSystem<T> kinematic() const;
   /// Contact forces (c_1n..c_kn, c_1t..c_kt) and vdot read off a point of the system.
   Vec<T> forces(const Vec<T>& x) const;
   Vec<T> acceleration(const Vec<T>& x) const { return x.head(3); }
+  /// The point of the system for acceleration vdot (not read if zero_acceleration) and forces c, the inverse
+  /// of acceleration() and forces(): each slack follows from its row, rho+- = mu_s c_n -+ c_t and
+  /// sigma = a_n or +-a_t (Table 2). The entries of c that the mode fixes (c_t of a sliding fixel, c of a
+  /// separating one) are not read.
+  Vec<T> point(const Vec<T>& vdot, const Vec<T>& c) const;
 };
 
 /// The system of `mode` (letters s l r n, one per fixel; every fixel must touch) for the scene.

@@ -36,24 +36,57 @@ geometry::FaceCone<T> weakly_stable_cone(const geometry::PlanarScene& scene) {
   return f;
 }
 
+namespace {
+
+// The rows of one face cone inside the arrangement's normals: F, E, S from `at` on.
+struct RowBlock {
+  Index at, inequalities, equalities, strict;
+};
+
+// Whether every point of a cell lies in the cone of `rows`, read off the cell's sign vector: the sign of
+// row r . g on the cell is row_orientation[r] * signs[row_plane[r]] (0 for a zero row).
+template <class T>
+bool cell_in_cone(const geometry::SphereArrangement<T>& arr, const std::vector<int>& signs, const RowBlock& rows) {
+  auto sign_of_row = [&](Index r) {
+    const Index j = arr.row_plane[static_cast<std::size_t>(r)];
+    return j < 0 ? 0 : arr.row_orientation[static_cast<std::size_t>(r)] * signs[static_cast<std::size_t>(j)];
+  };
+  Index r = rows.at;
+  for (Index i = 0; i < rows.inequalities; ++i)
+    if (sign_of_row(r++) > 0) return false;
+  for (Index i = 0; i < rows.equalities; ++i)
+    if (sign_of_row(r++) != 0) return false;
+  for (Index i = 0; i < rows.strict; ++i)
+    if (sign_of_row(r++) >= 0) return false;
+  return true;
+}
+
+}  // namespace
+
 template <class T>
 StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route) {
   StableRegion<T> out;
   const geometry::PlanarScene scene = touching_scene(full, &out.touching);
   out.weak = weakly_stable_cone<T>(scene);
   const ContactModel<T> model = contact_model<T>(scene);
-  std::vector<Mat<T>> rows{out.weak.inequalities, out.weak.equalities, out.weak.strict};
+  std::vector<Mat<T>> rows;
+  std::vector<RowBlock> blocks;  // the weak cone, then each moving mode's cone
+  Index total = 0;
+  auto add_rows = [&](const geometry::FaceCone<T>& c) {
+    blocks.push_back({total, c.inequalities.rows(), c.equalities.rows(), c.strict.rows()});
+    for (const Mat<T>* m : {&c.inequalities, &c.equalities, &c.strict}) {
+      rows.push_back(*m);
+      total += m->rows();
+    }
+  };
+  add_rows(out.weak);
   for (const ModeString& m : moving_modes(scene.fixels.size())) {
     geometry::FaceCone<T> c = wrench_cone_face<T>(scene, model, m, route);
     if (is_empty_cone<T>(c)) continue;
     out.modes.push_back(m);
-    rows.push_back(c.inequalities);
-    rows.push_back(c.equalities);
-    rows.push_back(c.strict);
+    add_rows(c);
     out.cones.push_back(std::move(c));
   }
-  Index total = 0;
-  for (const auto& r : rows) total += r.rows();
   Mat<T> normals(total, 3);
   Index at = 0;
   for (const auto& r : rows) {
@@ -62,13 +95,22 @@ StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route) {
   }
   const geometry::SphereArrangement<T> arr = geometry::sphere_arrangement<T>(normals);
   out.planes = arr.planes;
-  for (const auto& c : arr.cells) out.cells.push_back({c.dimension, c.point, out.label(c.point)});
+  // Each cell's label as label() gives it, from its sign vector (no dot products).
+  for (const auto& c : arr.cells) {
+    StabilityVerdict v = StabilityVerdict::kUnstable;
+    if (cell_in_cone(arr, c.signs, blocks.front())) {
+      v = StabilityVerdict::kStronglyStable;
+      for (std::size_t i = 1; i < blocks.size() && v == StabilityVerdict::kStronglyStable; ++i)
+        if (cell_in_cone(arr, c.signs, blocks[i])) v = StabilityVerdict::kWeaklyStable;
+    }
+    out.cells.push_back({c.dimension, c.point, v});
+  }
   return out;
 }
 
-#define CONTACTCERT_STABLE_REGION_INSTANTIATE(T)                                            \
-  template struct StableRegion<T>;                                                          \
-  template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&);        \
+#define CONTACTCERT_STABLE_REGION_INSTANTIATE(T)                                      \
+  template struct StableRegion<T>;                                                    \
+  template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&); \
   template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route);
 CONTACTCERT_STABLE_REGION_INSTANTIATE(double)
 CONTACTCERT_STABLE_REGION_INSTANTIATE(Q)

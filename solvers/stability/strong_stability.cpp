@@ -9,9 +9,12 @@ using Index = Eigen::Index;
 
 const char* verdict_name(StabilityVerdict v) {
   switch (v) {
-    case StabilityVerdict::kStronglyStable: return "strongly_stable";
-    case StabilityVerdict::kWeaklyStable: return "weakly_stable";
-    case StabilityVerdict::kUnstable: return "unstable";
+    case StabilityVerdict::kStronglyStable:
+      return "strongly_stable";
+    case StabilityVerdict::kWeaklyStable:
+      return "weakly_stable";
+    case StabilityVerdict::kUnstable:
+      return "unstable";
   }
   return "?";
 }
@@ -27,8 +30,8 @@ geometry::PlanarScene touching_scene(const geometry::PlanarScene& scene, std::ve
 }
 
 std::vector<ModeString> moving_modes(std::size_t k) {
-  static constexpr Interaction kLetters[] = {Interaction::kSeparate, Interaction::kSlideLeft,
-                                             Interaction::kSlideRight, Interaction::kRoll};
+  static constexpr Interaction kLetters[] = {Interaction::kSeparate, Interaction::kSlideLeft, Interaction::kSlideRight,
+                                             Interaction::kRoll};
   std::vector<ModeString> out;
   std::size_t total = 1;
   for (std::size_t i = 0; i < k; ++i) total *= 4;
@@ -52,59 +55,96 @@ bool nonzero(const Vec<T>& v) {
   return false;
 }
 
+// The touching fixels of the scene, within the budget on 4^k modes.
+geometry::PlanarScene budgeted_touching_scene(const geometry::PlanarScene& full, const StabilityOptions& options,
+                                              std::vector<Index>& touching) {
+  geometry::PlanarScene scene = touching_scene(full, &touching);
+  const std::size_t k = scene.fixels.size();
+  if (k > 8 || (std::size_t{1} << (2 * k)) > static_cast<std::size_t>(options.max_modes))
+    throw exact::BudgetExceeded(
+        "strong stability over " + std::to_string(k) + " touching fixels needs 4^" + std::to_string(k) + " modes",
+        "no mode checked");
+  return scene;
+}
+
 }  // namespace
 
 template <class T>
-StabilityResult<T> strong_stability(const geometry::PlanarScene& full, const Vec<T>& g,
-                                    const StabilityOptions& options) {
+StabilityOracle<T>::StabilityOracle(const geometry::PlanarScene& full, const StabilityOptions& options)
+    : scene_(budgeted_touching_scene(full, options, touching_)),
+      rest_(motion_system<T>(scene_, all_rolling(scene_.fixels.size()), /*zero_acceleration=*/true)),
+      rest_solver_(rest_.system, options.arith) {
+  // Kinematic feasibility of each moving mode: its kinematic rows alone (they do not involve g).
+  const std::size_t k = scene_.fixels.size();
+  for (const ModeString& mode : moving_modes(k)) {
+    Mode m{mode, motion_system<T>(scene_, mode), std::nullopt, {}};
+    const auto kin = exact::strict_feasibility(m.ms.kinematic(), options.arith);
+    preparation_lps_ += kin.lps;
+    if (kin.rounded_float_checked) preparation_lps_checked_from_float_ += kin.lps;
+    if (kin.status == StrictStatus::kFeasible) {
+      m.solver.emplace(m.ms.system, options.arith);
+    } else {
+      m.kinematic_proof = Vec<T>::Zero(m.ms.system.A.rows());
+      m.kinematic_proof.head(m.ms.kinematic_rows) = kin.motzkin;
+    }
+    modes_.push_back(std::move(m));
+  }
+  Mode rolling{all_rolling(k), motion_system<T>(scene_, all_rolling(k)), std::nullopt, {}};
+  rolling.solver.emplace(rolling.ms.system, options.arith);
+  modes_.push_back(std::move(rolling));
+}
+
+template <class T>
+StabilityResult<T> StabilityOracle<T>::verdict(const Vec<T>& g) const {
   StabilityResult<T> out;
-  const geometry::PlanarScene scene = touching_scene(full, &out.touching);
-  const std::size_t k = scene.fixels.size();
-  if (k > 8 || (std::size_t{1} << (2 * k)) > static_cast<std::size_t>(options.max_modes))
-    throw exact::BudgetExceeded("strong stability over " + std::to_string(k) + " touching fixels needs 4^" +
-                                    std::to_string(k) + " modes",
-                                "no mode checked");
+  out.touching = touching_;
+  auto count = [&out](const exact::StrictFeasibility<T>& f) {
+    out.lps += f.lps;
+    if (f.rounded_float_checked) out.lps_checked_from_float += f.lps;
+  };
 
   // Resting solutions: J c + g = 0 with every c in its static friction cone.
-  const MotionSystem<T> rest = motion_system<T>(scene, all_rolling(k), /*zero_acceleration=*/true);
-  const auto r = exact::strict_feasibility(rest.with_wrench(g), options.arith);
-  out.lps += r.lps;
+  const auto r = rest_solver_.solve(rest_.rhs(g));
+  count(r);
   out.has_resting = r.status == StrictStatus::kFeasible;
-  if (out.has_resting) out.resting_forces = rest.forces(r.x);
-  else out.resting_farkas = r.motzkin;
+  if (out.has_resting)
+    out.resting_forces = rest_.forces(r.x);
+  else
+    out.resting_farkas = r.motzkin;
 
-  // Moving solutions: every mode but n..n, kinematic feasibility first (independent of g).
-  std::vector<ModeString> modes = moving_modes(k);
-  modes.push_back(all_rolling(k));  // last: n..n moves only if vdot != 0 (null space of J^T)
-  for (const ModeString& mode : modes) {
-    const bool rolling = &mode == &modes.back();
+  // Moving solutions: every mode but n..n, then n..n, which moves only if vdot != 0 (null space of J^T).
+  for (const Mode& m : modes_) {
+    const bool rolling = &m == &modes_.back();
     if (rolling && out.has_resting) break;  // then every all-rolling solution has vdot = 0
-    const MotionSystem<T> ms = motion_system<T>(scene, mode);
     ++out.modes_checked;
-    if (!rolling) {
-      const auto kin = exact::strict_feasibility(ms.kinematic(), options.arith);
-      out.lps += kin.lps;
-      if (kin.status == StrictStatus::kInfeasible) {
-        Vec<T> y = Vec<T>::Zero(ms.system.A.rows());
-        y.head(ms.kinematic_rows) = kin.motzkin;
-        out.proofs.push_back({mode, true, y});
-        continue;
-      }
-      ++out.modes_kinematically_feasible;
+    if (!m.solver) {
+      out.proofs.push_back({m.mode, true, m.kinematic_proof});
+      continue;
     }
-    const auto f = exact::strict_feasibility(ms.with_wrench(g), options.arith);
-    out.lps += f.lps;
-    if (f.status == StrictStatus::kFeasible && (!rolling || nonzero<T>(ms.acceleration(f.x)))) {
+    if (!rolling) ++out.modes_kinematically_feasible;
+    const auto f = m.solver->solve(m.ms.rhs(g));
+    count(f);
+    if (f.status == StrictStatus::kFeasible && (!rolling || nonzero<T>(m.ms.acceleration(f.x)))) {
       out.has_moving = true;
-      out.moving = {mode, ms.forces(f.x), ms.acceleration(f.x)};
+      out.moving = {m.mode, m.ms.forces(f.x), m.ms.acceleration(f.x)};
       break;
     }
-    if (!rolling) out.proofs.push_back({mode, false, f.motzkin});
+    if (!rolling) out.proofs.push_back({m.mode, false, f.motzkin});
   }
   if (out.has_moving) out.proofs.clear();  // no longer evidence of anything
   out.verdict = !out.has_resting ? StabilityVerdict::kUnstable
                 : out.has_moving ? StabilityVerdict::kWeaklyStable
                                  : StabilityVerdict::kStronglyStable;
+  return out;
+}
+
+template <class T>
+StabilityResult<T> strong_stability(const geometry::PlanarScene& scene, const Vec<T>& g,
+                                    const StabilityOptions& options) {
+  const StabilityOracle<T> oracle(scene, options);
+  StabilityResult<T> out = oracle.verdict(g);
+  out.lps += oracle.preparation_lps();
+  out.lps_checked_from_float += oracle.preparation_lps_checked_from_float();
   return out;
 }
 
@@ -116,17 +156,8 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
   // Resting evidence: a point (J c + g = 0, c in the friction cones) or a Motzkin certificate.
   bool resting = false;
   if (claim.has_resting) {
-    // Rebuild the system's point from the forces: c_n, c_t, then the slacks mu_s c_n -+ c_t.
-    Vec<Q> x = Vec<Q>::Zero(rest.system.A.cols());
     if (claim.resting_forces.size() != static_cast<Index>(2 * k)) return "resting forces have the wrong size";
-    for (std::size_t i = 0; i < k; ++i) {
-      const Index cn = rest.c_n_column[i], ct = rest.c_t_column[i];
-      const Q c_n = claim.resting_forces(static_cast<Index>(i)), c_t = claim.resting_forces(static_cast<Index>(k + i));
-      x(cn) = c_n;
-      x(ct) = c_t;
-      x(ct + 1) = scene.fixels[i].mu_s * c_n - c_t;
-      x(ct + 2) = scene.fixels[i].mu_s * c_n + c_t;
-    }
+    const Vec<Q> x = rest.point(Vec<Q>(), claim.resting_forces);
     if (!exact::verify_strict_point(rest.with_wrench(g), x))
       return "the resting forces do not balance the wrench inside the friction cones";
     resting = true;
@@ -142,32 +173,18 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
     bool nz = false;
     for (Index i = 0; i < 3; ++i) nz = nz || sgn(w.acceleration(i)) != 0;
     if (!nz) return "the witness does not move";
-    // M vdot = J c + g and Table 2 for its mode, checked on the motion system's point.
+    // M vdot = J c + g and Table 2 for its mode, checked on the motion system's point; the forces the
+    // mode fixes (which point() does not read) are checked here.
     const MotionSystem<Q> ms = motion_system<Q>(scene, w.mode);
-    Vec<Q> x = Vec<Q>::Zero(ms.system.A.cols());
-    x.head(3) = w.acceleration;
-    const Mat<Q>& A = ms.system.A;
     for (std::size_t i = 0; i < k; ++i) {
       const Index cn = ms.c_n_column[i], ct = ms.c_t_column[i];
-      if (cn >= 0) x(cn) = w.forces(static_cast<Index>(i));
-      if (ct >= 0) {
-        x(ct) = w.forces(static_cast<Index>(k + i));
-        x(ct + 1) = scene.fixels[i].mu_s * x(cn) - x(ct);
-        x(ct + 2) = scene.fixels[i].mu_s * x(cn) + x(ct);
-      } else if (cn >= 0 && w.forces(static_cast<Index>(k + i)) != ms.c_t_per_c_n[i] * x(cn)) {
+      const Q& c_n = w.forces(static_cast<Index>(i));
+      const Q& c_t = w.forces(static_cast<Index>(k + i));
+      if (cn >= 0 && ct < 0 && c_t != ms.c_t_per_c_n[i] * c_n)
         return "a sliding force is not on the edge of its friction cone";
-      } else if (cn < 0 && (sgn(w.forces(static_cast<Index>(i))) != 0 || sgn(w.forces(static_cast<Index>(k + i))) != 0)) {
-        return "a separating contact carries force";
-      }
+      if (cn < 0 && (sgn(c_n) != 0 || sgn(c_t) != 0)) return "a separating contact carries force";
     }
-    // Kinematic slacks: each strict slack column appears in exactly one kinematic row with entry +-1.
-    for (Index row = 0; row < ms.kinematic_rows; ++row)
-      for (Index j = 3; j < A.cols(); ++j)
-        if (sgn(A(row, j)) != 0) {
-          Q a = 0;
-          for (Index d = 0; d < 3; ++d) a += A(row, d) * x(d);
-          x(j) = -a / A(row, j);
-        }
+    const Vec<Q> x = ms.point(w.acceleration, w.forces);
     if (!exact::verify_strict_point(ms.with_wrench(g), x)) return "the moving witness violates its mode";
     moving = true;
   } else if (resting) {
@@ -194,6 +211,8 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
   return "";
 }
 
+template class StabilityOracle<double>;
+template class StabilityOracle<Q>;
 template StabilityResult<double> strong_stability<double>(const geometry::PlanarScene&, const Vec<double>&,
                                                           const StabilityOptions&);
 template StabilityResult<Q> strong_stability<Q>(const geometry::PlanarScene&, const Vec<Q>&, const StabilityOptions&);

@@ -9,6 +9,7 @@
 // the same for every all-rolling solution), so only the 4^k - 1 other modes need a proof.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,12 +44,13 @@ struct StabilityResult {
   StabilityVerdict verdict = StabilityVerdict::kUnstable;
   std::vector<Eigen::Index> touching;  ///< indices of the touching fixels (the scene's order)
   bool has_resting = false;
-  Vec<T> resting_forces;               ///< a zero-acceleration solution (J c + g = 0), if has_resting
-  Vec<T> resting_farkas;               ///< unstable: Motzkin certificate that no resting solution exists
+  Vec<T> resting_forces;  ///< a zero-acceleration solution (J c + g = 0), if has_resting
+  Vec<T> resting_farkas;  ///< unstable: Motzkin certificate that no resting solution exists
   bool has_moving = false;
-  MotionWitness<T> moving;             ///< a moving solution, if has_moving
-  std::vector<ModeProof<T>> proofs;    ///< strongly stable: one proof per moving mode (4^k - 1)
-  long lps = 0;
+  MotionWitness<T> moving;           ///< a moving solution, if has_moving
+  std::vector<ModeProof<T>> proofs;  ///< strongly stable: one proof per moving mode (4^k - 1)
+  long lps = 0;                      ///< LPs solved (for strong_stability: including the kinematic ones)
+  long lps_checked_from_float = 0;   ///< of these, decided by a float LP's rounded answer checked exactly (no rational LP)
   long modes_checked = 0;
   long modes_kinematically_feasible = 0;
 };
@@ -64,7 +66,38 @@ geometry::PlanarScene touching_scene(const geometry::PlanarScene& scene, std::ve
 /// All mode strings over {s, l, r, n}^k except n..n, in a fixed order.
 std::vector<ModeString> moving_modes(std::size_t k);
 
-/// The verdict for wrench g = (f_x, f_y, torque about the com), with witness or certificate.
+/// Strong stability of one scene under many wrenches (a planner's question). Prepared once per scene: the
+/// touching fixels, the motion system of every mode, which moving modes are kinematically feasible (their
+/// kinematic rows do not involve g; the others get their g-independent proof here) and each remaining LP
+/// (exact::StrictSolver). A verdict then solves 1 + (kinematically feasible modes visited) LPs.
+template <class T>
+class StabilityOracle {
+ public:
+  explicit StabilityOracle(const geometry::PlanarScene& scene, const StabilityOptions& options = {});
+  /// The verdict for wrench g, as strong_stability; its lps count only the LPs solved for g.
+  StabilityResult<T> verdict(const Vec<T>& g) const;
+  /// LPs solved while preparing (the kinematic feasibility of every moving mode), and how many of them were
+  /// decided by a float LP's rounded answer checked exactly.
+  long preparation_lps() const { return preparation_lps_; }
+  long preparation_lps_checked_from_float() const { return preparation_lps_checked_from_float_; }
+
+ private:
+  struct Mode {
+    ModeString mode;
+    MotionSystem<T> ms;
+    std::optional<exact::StrictSolver<T>> solver;  ///< none if kinematically infeasible
+    Vec<T> kinematic_proof;                        ///< then: its Motzkin certificate (zero off the kinematic rows)
+  };
+  std::vector<Eigen::Index> touching_;
+  geometry::PlanarScene scene_;  ///< the touching fixels only
+  MotionSystem<T> rest_;
+  exact::StrictSolver<T> rest_solver_;
+  std::vector<Mode> modes_;  ///< moving_modes(k), then n..n (it moves only if vdot != 0)
+  long preparation_lps_ = 0, preparation_lps_checked_from_float_ = 0;
+};
+
+/// The verdict for wrench g = (f_x, f_y, torque about the com), with witness or certificate:
+/// StabilityOracle(scene, options).verdict(g), its lps including the preparation's.
 template <class T>
 StabilityResult<T> strong_stability(const geometry::PlanarScene& scene, const Vec<T>& g,
                                     const StabilityOptions& options = {});
@@ -73,6 +106,8 @@ StabilityResult<T> strong_stability(const geometry::PlanarScene& scene, const Ve
 /// Returns an empty string if valid, else the reason.
 std::string check_stability(const geometry::PlanarScene& scene, const Vec<Q>& g, const StabilityResult<Q>& claim);
 
+extern template class StabilityOracle<double>;
+extern template class StabilityOracle<Q>;
 extern template StabilityResult<double> strong_stability<double>(const geometry::PlanarScene&, const Vec<double>&,
                                                                  const StabilityOptions&);
 extern template StabilityResult<Q> strong_stability<Q>(const geometry::PlanarScene&, const Vec<Q>&,

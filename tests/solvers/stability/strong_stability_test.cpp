@@ -7,19 +7,20 @@
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/nnc_cone.h"
-#include "geometry/span_cone.h"
 #include "geometry/scene_json.h"
+#include "geometry/span_cone.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stable_region.h"
-#include "tests/solvers/scene_fixtures.h"
 #include "solvers/wrench_cone/wrench_cone.h"
+#include "tests/solvers/scene_fixtures.h"
 
 namespace contactcert::solvers {
 namespace {
 
 using exact::Q;
 using exact::Vec;
+using exact::Z;
 
 using testing::wrench;
 
@@ -104,6 +105,118 @@ TEST(StrongStability, CorruptedEvidenceIsRejected) {
   EXPECT_NE(check_stability(scene, wrench(-1, -1, 0), w), "");
 }
 
+// A unit disk touching fixels at (0,-1), (1,0) and (-4/5,-3/5), mu = 1/2 (the benchmark's three-fixel scene).
+geometry::PlanarScene three_fixel_disk() {
+  return geometry::read_planar_scene(exact::JsonInput::parse(
+      R"({"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":1},"mass":1,"inertia":1},
+          "fixels":[{"position":[0,-1]},{"position":[1,0]},{"position":["-4/5","-3/5"]}],
+          "mu_s":"1/2","mu_k":"1/2"})",
+      "three_fixel_disk.json"));
+}
+
+TEST(StabilityOracle, FloatFirstVerdictEqualsTheExactVerdictIncludingConeFaces) {
+  // The prepared, float-first (verified) oracle must give the exact verdict with verifying evidence, on random
+  // wrenches and on the representatives of every cell of the region: those of dimension 1 and 2 lie exactly
+  // on faces of the weak cone or of a moving-mode cone, where a float LP cannot tell the sides apart.
+  for (const char* mu : {"1.2", "0.3"}) {
+    const auto scene = section7(mu);
+    const StabilityOracle<Q> oracle(scene);
+    const auto region = stable_region<Q>(scene);
+    std::vector<Vec<Q>> wrenches;
+    for (const auto& cell : region.cells) wrenches.push_back(cell.point);
+    std::mt19937_64 rng(17);
+    std::uniform_int_distribution<int> d(-5, 5);
+    for (int t = 0; t < 100; ++t) wrenches.push_back(wrench(d(rng), d(rng), d(rng)));
+    long lps = 0, from_float = 0;
+    for (const Vec<Q>& g : wrenches) {
+      const auto r = oracle.verdict(g);
+      EXPECT_EQ(r.verdict, strong_stability<Q>(scene, g, {exact::Arith::kExact}).verdict)
+          << "mu " << mu << " g = " << g.transpose();
+      EXPECT_EQ(r.verdict, region.label(g));
+      EXPECT_EQ(check_stability(scene, g, r), "") << "mu " << mu << " g = " << g.transpose();
+      lps += r.lps;
+      from_float += r.lps_checked_from_float;
+    }
+    // The point of the float-first path: nearly every LP is decided by a rounded float answer.
+    EXPECT_GT(from_float * 10, lps * 9) << from_float << " of " << lps;
+  }
+}
+
+TEST(StabilityOracle, ThreeFixelsAgreeWithTheCellLabelsAndTheColdVerdict) {
+  const auto scene = three_fixel_disk();
+  const StabilityOracle<Q> oracle(scene);
+  const StabilityOracle<double> floats(scene);
+  const auto region = stable_region<Q>(scene);
+  std::mt19937_64 rng(23);
+  for (std::size_t c = 0; c < region.cells.size(); c += 1 + rng() % 6) {
+    const Vec<Q>& g = region.cells[c].point;
+    const auto r = oracle.verdict(g);
+    EXPECT_EQ(r.verdict, region.cells[c].label) << g.transpose();
+    EXPECT_EQ(check_stability(scene, g, r), "") << g.transpose();
+    const auto cold = strong_stability<Q>(scene, g);
+    EXPECT_EQ(cold.verdict, r.verdict);
+    EXPECT_EQ(cold.lps, r.lps + oracle.preparation_lps());
+    if (region.cells[c].dimension == 3) {  // off every face the float oracle agrees too
+      EXPECT_EQ(floats.verdict(exact::to_double(g)).verdict, r.verdict) << g.transpose();
+    }
+  }
+}
+
+TEST(StabilityOracle, CorruptedFloatFirstEvidenceIsRejected) {
+  const auto scene = section7("1.2");
+  const StabilityOracle<Q> oracle(scene);
+  // A kinematic proof turned into nonsense, and one made non-zero off the kinematic rows.
+  auto strong = oracle.verdict(wrench(0, -1, 0));
+  ASSERT_EQ(strong.verdict, StabilityVerdict::kStronglyStable);
+  ASSERT_EQ(check_stability(scene, wrench(0, -1, 0), strong), "");
+  for (auto& p : strong.proofs)
+    if (p.kinematic) {
+      auto bad = strong;
+      ModeProof<Q>& q = bad.proofs[static_cast<std::size_t>(&p - strong.proofs.data())];
+      q.motzkin = -q.motzkin;
+      EXPECT_NE(check_stability(scene, wrench(0, -1, 0), bad), "") << p.mode.text();
+      q.motzkin = p.motzkin;
+      q.motzkin(q.motzkin.size() - 1) += 1;
+      EXPECT_NE(check_stability(scene, wrench(0, -1, 0), bad), "") << p.mode.text();
+    }
+  // A moving witness with a changed acceleration, and resting forces that no longer balance g.
+  auto weak = oracle.verdict(wrench(-1, -1, 0));
+  ASSERT_EQ(weak.verdict, StabilityVerdict::kWeaklyStable);
+  ASSERT_EQ(check_stability(scene, wrench(-1, -1, 0), weak), "");
+  auto moved = weak;
+  moved.moving.acceleration(0) += Q(1, 7);
+  EXPECT_NE(check_stability(scene, wrench(-1, -1, 0), moved), "");
+  auto resting = weak;
+  resting.resting_forces(0) += 1;
+  EXPECT_NE(check_stability(scene, wrench(-1, -1, 0), resting), "");
+}
+
+TEST(StrictSolver, FallsBackToTheExactLpWhenTheRoundedAnswerDoesNotCheck) {
+  // x1 - p x2 = b <= 0 with x1, x2 >= 0, x1 > 0, p = 1 + 2^-31: the LP's only optimal vertex has x1 = 1 and
+  // x2 = (1 - b) / p, whose denominator 2^31 + 1 is beyond the rounding's 2^30, so the rounded point fails the
+  // exact check and the exact route decides.
+  const Q p = 1 + 1 / Q(Z(1) << 31);
+  exact::StrictSystem<Q> sys;
+  sys.A = exact::Mat<Q>(1, 2);
+  sys.A << 1, -p;
+  sys.strict = {true, false};
+  const exact::StrictSolver<Q> solver(sys);
+  for (const Q& b : {Q(0), Q(-1), Q(-3)}) {
+    const Vec<Q> rhs = Vec<Q>::Constant(1, b);
+    const auto r = solver.solve(rhs);
+    sys.b = rhs;
+    ASSERT_EQ(r.status, exact::StrictStatus::kFeasible) << b;  // x2 large enough always works
+    EXPECT_TRUE(exact::verify_strict_point(sys, r.x)) << b;
+    EXPECT_FALSE(r.rounded_float_checked) << b;
+  }
+  // Infeasible with a certificate: x1 + x2 = -1.
+  exact::StrictSystem<Q> neg{exact::Mat<Q>::Ones(1, 2), Vec<Q>::Constant(1, Q(-1)), {}, {}};
+  const auto r = exact::strict_feasibility(neg);
+  ASSERT_EQ(r.status, exact::StrictStatus::kInfeasible);
+  EXPECT_TRUE(r.rounded_float_checked);
+  EXPECT_TRUE(exact::verify_motzkin(neg, r.motzkin));
+}
+
 TEST(StrongStability, MembershipLpsAgreeWithTheWrenchConeAlgorithm) {
   // Each moving mode's LP answer must equal membership in the cone of the wrench cone algorithm
   // (an independent route: K z = P g, conversion, strict limits). Random small integer wrenches.
@@ -118,8 +231,8 @@ TEST(StrongStability, MembershipLpsAgreeWithTheWrenchConeAlgorithm) {
     const Vec<Q> g = wrench(d(rng), d(rng), d(rng));
     for (std::size_t i = 0; i < modes.size(); ++i) {
       const auto ms = motion_system<Q>(scene, modes[i]);
-      const bool lp = exact::strict_feasibility(ms.with_wrench(g), exact::Arith::kExact).status ==
-                      exact::StrictStatus::kFeasible;
+      const bool lp =
+          exact::strict_feasibility(ms.with_wrench(g), exact::Arith::kExact).status == exact::StrictStatus::kFeasible;
       EXPECT_EQ(lp, geometry::contains_point<Q>(cones[i], g)) << "mode " << modes[i].text() << " g = " << g.transpose();
     }
   }
@@ -147,6 +260,32 @@ TEST(StableRegion, EveryCellLabelEqualsTheOneWrenchVerdict) {
       EXPECT_EQ(unstable, 0) << "force closure: every wrench can be resisted";
     }
   }
+}
+
+TEST(StableRegion, SignVectorLabelsEqualTheConeLabelsOnThreeFixels) {
+  // Cells are labelled from their sign vectors (integer arrangement, rows mapped to planes with an
+  // orientation): each sign must be the exact sign of plane . point, and each label that of label(point).
+  const auto scene = three_fixel_disk();
+  const auto region = stable_region<Q>(scene);
+  ASSERT_GT(region.cells.size(), 100u);
+  const auto arr = geometry::sphere_arrangement<Q>(region.planes);
+  ASSERT_EQ(arr.cells.size(), region.cells.size());
+  for (const auto& cell : arr.cells)
+    for (Eigen::Index j = 0; j < region.planes.rows(); ++j)
+      ASSERT_EQ(cell.signs[static_cast<std::size_t>(j)], sgn(Q(region.planes.row(j).dot(cell.point))));
+  for (Eigen::Index j = 0; j < region.planes.rows(); ++j) {  // every plane given itself: orientation +1
+    EXPECT_EQ(arr.row_plane[static_cast<std::size_t>(j)], j);
+    EXPECT_EQ(arr.row_orientation[static_cast<std::size_t>(j)], 1);
+  }
+  for (const auto& cell : region.cells) ASSERT_EQ(cell.label, region.label(cell.point)) << cell.point.transpose();
+  // A negated, rescaled copy of a plane maps to it with orientation -1.
+  exact::Mat<Q> two(2, 3);
+  two.row(0) = region.planes.row(0);
+  two.row(1) = Q(-3, 7) * region.planes.row(0);
+  const auto pair = geometry::sphere_arrangement<Q>(two);
+  EXPECT_EQ(pair.planes.rows(), 1);
+  EXPECT_EQ(pair.row_plane, (std::vector<Eigen::Index>{0, 0}));
+  EXPECT_EQ(pair.row_orientation, (std::vector<int>{1, -1}));
 }
 
 TEST(StableRegion, SixtyRandomWrenchesAgreeWithTheirCellLabel) {
@@ -177,9 +316,9 @@ TEST(FingerPushes, SquareWithTwoFrictionlessFixelsByHand) {
   for (const auto& p : pushes.edges)
     got.push_back(std::to_string(p.edge) + (p.from_closed ? "[" : "(") + exact::to_string(p.from) + "," +
                   exact::to_string(p.to) + (p.to_closed ? "]" : ")") + verdict_name(p.label));
-  const std::vector<std::string> expected{
-      "0(0,1)unstable",         "1(0,1/2)unstable", "1[1/2,1/2]strongly_stable", "1(1/2,1)unstable",
-      "2(0,1/2)unstable",       "2[1/2,1/2]strongly_stable", "2(1/2,1)unstable", "3(0,1)unstable"};
+  const std::vector<std::string> expected{"0(0,1)unstable",   "1(0,1/2)unstable", "1[1/2,1/2]strongly_stable",
+                                          "1(1/2,1)unstable", "2(0,1/2)unstable", "2[1/2,1/2]strongly_stable",
+                                          "2(1/2,1)unstable", "3(0,1)unstable"};
   EXPECT_EQ(got, expected);
 }
 
