@@ -1,7 +1,9 @@
 // LPs of the shapes the UCP produces (issue 2): X = {x in R^{3nc}_+ : Zn vn + Zt (vt+ - vt-) = b} with Z the
 // left null space of a random planar contact matrix P (2nc x 3), and Y = {y in R^{3nc}_+ : C y = -d} with C
 // of size (nc + 3 + nc/2) x 3nc. Our float, exact and verified paths against CGAL's solve_linear_program
-// (Gmpzf) and cddlib's GMP dd_LPSolve on the same LPs. Each iteration solves kInstances LPs.
+// (Gmpzf) and cddlib's GMP dd_LPSolve on the same LPs, and the precision ladder of issue 9 (filtered:
+// intervals then exact; adaptive: double, intervals, MPFR 113 and 256 bits, exact). Each iteration solves
+// kInstances LPs.
 #include <benchmark/benchmark.h>
 
 #include <CGAL/Gmpzf.h>
@@ -143,6 +145,27 @@ void BM_verified(benchmark::State& state) {
   state.counters["float_basis_checked"] = checked;
 }
 
+/// The filter alone in front of exact arithmetic (issue 9): intervals propose, exact arithmetic checks.
+const std::vector<Rung>& filtered_ladder() {
+  static const std::vector<Rung> ladder{{Rung::Kind::kInterval, 0}, {Rung::Kind::kExact, 0}};
+  return ladder;
+}
+
+/// solve_lp_ladder on a ladder; decided_by_first_rung counts the LPs whose first rung's basis checked out.
+template <char Shape, const std::vector<Rung>& (*Ladder)()>
+void BM_ladder(benchmark::State& state) {
+  const Instances& in = instances(Shape, static_cast<int>(state.range(0)));
+  int first = 0;
+  for (const LpProblem<Q>& p : in.exact) {
+    const LpResult<Q> r = solve_lp_ladder(p, Ladder());
+    first += r.decided_by == DecidedBy::kFloatBasisCheckedExactly && r.proposed_by == Ladder().front();
+  }
+  for (auto _ : state)
+    for (const LpProblem<Q>& p : in.exact) benchmark::DoNotOptimize(solve_lp_ladder(p, Ladder()));
+  set_counters(state, in);
+  state.counters["decided_by_first_rung"] = first;
+}
+
 template <char Shape>
 void BM_cgal(benchmark::State& state) {
   const Instances& in = instances(Shape, static_cast<int>(state.range(0)));
@@ -188,17 +211,28 @@ void BM_adjacent(benchmark::State& state) {
   state.counters["edges_last"] = edges;
 }
 
-#define LP_BENCH(fn, shape, name) \
-  BENCHMARK(fn<shape>)->Name(name)->Arg(3)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond)->Repetitions(3) \
+#define LP_BENCH_RUNS(name)           \
+  Name(name)                          \
+      ->Arg(3)                        \
+      ->Arg(10)                       \
+      ->Arg(20)                       \
+      ->Arg(40)                       \
+      ->Unit(benchmark::kMicrosecond) \
+      ->Repetitions(3)                \
       ->ReportAggregatesOnly(true)
+#define LP_BENCH(fn, shape, name) BENCHMARK(fn<shape>)->LP_BENCH_RUNS(name)
 
 LP_BENCH(BM_float, 'X', "X/float");
 LP_BENCH(BM_verified, 'X', "X/verified");
+BENCHMARK(BM_ladder<'X', filtered_ladder>)->LP_BENCH_RUNS("X/filtered");
+BENCHMARK(BM_ladder<'X', adaptive_ladder>)->LP_BENCH_RUNS("X/adaptive");
 LP_BENCH(BM_exact, 'X', "X/exact");
 LP_BENCH(BM_cgal, 'X', "X/cgal");
 LP_BENCH(BM_cdd, 'X', "X/cdd");
 LP_BENCH(BM_float, 'Y', "Y/float");
 LP_BENCH(BM_verified, 'Y', "Y/verified");
+BENCHMARK(BM_ladder<'Y', filtered_ladder>)->LP_BENCH_RUNS("Y/filtered");
+BENCHMARK(BM_ladder<'Y', adaptive_ladder>)->LP_BENCH_RUNS("Y/adaptive");
 LP_BENCH(BM_exact, 'Y', "Y/exact");
 LP_BENCH(BM_cgal, 'Y', "Y/cgal");
 LP_BENCH(BM_cdd, 'Y', "Y/cdd");

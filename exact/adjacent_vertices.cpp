@@ -4,6 +4,8 @@
 #include <stdexcept>
 
 #include "exact/field_ops.h"
+#include "exact/interval_number.h"
+#include "exact/mpfr_number.h"
 #include "exact/simplex_tableau.h"
 #include "exact/tangent_cone.h"
 
@@ -17,8 +19,8 @@ using Index = Eigen::Index;
 template <class T>
 Vec<T> normalised(Vec<T> d) {
   for (Index i = 0; i < d.size(); ++i) {
-    if (is_zero(d(i))) continue;
-    const T scale = sign(d(i)) > 0 ? T(d(i)) : T(-d(i));
+    if (exact::is_zero(d(i))) continue;
+    const T scale = exact::sign(d(i)) > 0 ? T(d(i)) : T(-d(i));
     for (Index k = 0; k < d.size(); ++k) d(k) /= scale;
     return d;
   }
@@ -57,7 +59,7 @@ AdjacentResult<T> adjacent_vertices(const LpProblem<T>& problem, const std::vect
   if (!start) throw std::invalid_argument("adjacent_vertices: not a basis of A x = b");
   const SimplexTableau<T>& tab = *start;
   for (Index r = 0; r < tab.rows(); ++r)
-    if (is_negative(tab.rhs(r))) throw std::invalid_argument("adjacent_vertices: basis is not feasible");
+    if (exact::is_negative(tab.rhs(r))) throw std::invalid_argument("adjacent_vertices: basis is not feasible");
 
   AdjacentResult<T> res;
   res.vertex = tab.primal();
@@ -70,7 +72,7 @@ AdjacentResult<T> adjacent_vertices(const LpProblem<T>& problem, const std::vect
   for (Index j = 0; j < n; ++j)
     if (!tab.is_basic(j)) N.push_back(j);
   for (Index r = 0; r < m; ++r)
-    if (is_zero(tab.rhs(r))) degenerate.push_back(r);
+    if (exact::is_zero(tab.rhs(r))) degenerate.push_back(r);
   const Index p = static_cast<Index>(N.size());
   Mat<T> G(static_cast<Index>(degenerate.size()), p);
   for (size_t i = 0; i < degenerate.size(); ++i)
@@ -81,7 +83,7 @@ AdjacentResult<T> adjacent_vertices(const LpProblem<T>& problem, const std::vect
     res.status = AdjacencyStatus::kBudgetExceeded;
     for (Index k = 0; k < p; ++k) {
       bool feasible = true;
-      for (Index i = 0; i < G.rows() && feasible; ++i) feasible = !is_positive(G(i, k));
+      for (Index i = 0; i < G.rows() && feasible; ++i) feasible = !exact::is_positive(G(i, k));
       if (!feasible) continue;
       Vec<T> e = Vec<T>::Zero(p);
       e(k) = T(1);
@@ -95,7 +97,7 @@ AdjacentResult<T> adjacent_vertices(const LpProblem<T>& problem, const std::vect
     Vec<T> d = Vec<T>::Zero(n);
     Index single = -1, support = 0;
     for (Index k = 0; k < p; ++k) {
-      if (is_zero(w(k))) continue;
+      if (exact::is_zero(w(k))) continue;
       d(N[static_cast<size_t>(k)]) = w(k);
       single = N[static_cast<size_t>(k)];
       ++support;
@@ -103,15 +105,15 @@ AdjacentResult<T> adjacent_vertices(const LpProblem<T>& problem, const std::vect
     for (Index r = 0; r < m; ++r) {
       T& dr = d(tab.basis()[static_cast<size_t>(r)]);
       for (Index k = 0; k < p; ++k)
-        if (!is_zero(w(k))) sub_mul(dr, tab.entry(r, N[static_cast<size_t>(k)]), w(k), tmp);
+        if (!exact::is_zero(w(k))) sub_mul(dr, tab.entry(r, N[static_cast<size_t>(k)]), w(k), tmp);
     }
     Index block = -1;
     T step = T(0);
     for (Index r = 0; r < m; ++r) {
       const T& dr = d(tab.basis()[static_cast<size_t>(r)]);
-      if (!is_negative(dr)) continue;
+      if (!exact::is_negative(dr)) continue;
       const T ratio = tab.rhs(r) / T(-dr);
-      if (block < 0 || sign(T(ratio - step)) < 0) {
+      if (block < 0 || exact::sign(T(ratio - step)) < 0) {
         block = r;
         step = ratio;
       }
@@ -125,20 +127,20 @@ AdjacentResult<T> adjacent_vertices(const LpProblem<T>& problem, const std::vect
       // A simplex pivot: the entering column replaces the blocking row's basic variable.
       edge.neighbour = res.vertex + step * d;
       for (Index j = 0; j < n; ++j)
-        if (!is_positive(edge.neighbour(j))) edge.neighbour(j) = T(0);
+        if (!exact::is_positive(edge.neighbour(j))) edge.neighbour(j) = T(0);
       edge.neighbour_basis = tab.basis();
       edge.neighbour_basis[static_cast<size_t>(block)] = single;
     } else if (edge.bounded) {
       // A basis of the neighbour: pivot each column of its support into a row whose basic variable is 0 there.
       Vec<T> u = res.vertex + step * d;
       for (Index j = 0; j < n; ++j)
-        if (!is_positive(u(j))) u(j) = T(0);
+        if (!exact::is_positive(u(j))) u(j) = T(0);
       SimplexTableau<T> next = tab;
       for (Index j = 0; j < n; ++j) {
-        if (is_zero(u(j)) || next.is_basic(j)) continue;
+        if (exact::is_zero(u(j)) || next.is_basic(j)) continue;
         Index r = -1;
         for (Index i = 0; i < next.rows(); ++i) {
-          if (is_zero(next.entry(i, j)) || !is_zero(u(next.basis()[static_cast<size_t>(i)]))) continue;
+          if (exact::is_zero(next.entry(i, j)) || !exact::is_zero(u(next.basis()[static_cast<size_t>(i)]))) continue;
           if (r < 0 || NumberTraits<T>::better_pivot(next.entry(i, j), next.entry(r, j))) r = i;
         }
         if (r >= 0) next.pivot(r, j);
@@ -158,5 +160,11 @@ template AdjacentResult<double> adjacent_vertices<double>(const LpProblem<double
                                                           const AdjacencyOptions&);
 template AdjacentResult<Q> adjacent_vertices<Q>(const LpProblem<Q>&, const std::vector<Index>&,
                                                 const AdjacencyOptions&);
+template struct AdjacentResult<Mpfr>;
+template struct AdjacentResult<Interval>;
+template AdjacentResult<Mpfr> adjacent_vertices<Mpfr>(const LpProblem<Mpfr>&, const std::vector<Index>&,
+                                                      const AdjacencyOptions&);
+template AdjacentResult<Interval> adjacent_vertices<Interval>(const LpProblem<Interval>&, const std::vector<Index>&,
+                                                              const AdjacencyOptions&);
 
 }  // namespace contactcert::exact

@@ -1,5 +1,8 @@
 #include "exact/linalg.h"
 
+#include "exact/interval_number.h"
+#include "exact/mpfr_number.h"
+
 namespace contactcert::exact {
 
 template <class T>
@@ -11,7 +14,7 @@ Rref<T> rref(const Mat<T>& A) {
   for (Eigen::Index col = 0; col < n && row < m; ++col) {
     Eigen::Index p = -1;
     for (Eigen::Index i = row; i < m; ++i)
-      if (!is_zero(R(i, col)) && (p < 0 || NumberTraits<T>::better_pivot(R(i, col), R(p, col)))) p = i;
+      if (!exact::is_zero(R(i, col)) && (p < 0 || NumberTraits<T>::better_pivot(R(i, col), R(p, col)))) p = i;
     if (p < 0) {
       for (Eigen::Index i = row; i < m; ++i) R(i, col) = T(0);  // below tolerance: treat as zero
       continue;
@@ -21,7 +24,7 @@ Rref<T> rref(const Mat<T>& A) {
     for (Eigen::Index j = col; j < n; ++j) R(row, j) *= inv;
     R(row, col) = T(1);
     for (Eigen::Index i = 0; i < m; ++i) {
-      if (i == row || is_zero(R(i, col))) continue;
+      if (i == row || exact::is_negligible(R(i, col))) continue;
       const T f = R(i, col);
       for (Eigen::Index j = col; j < n; ++j) R(i, j) -= f * R(row, j);
       R(i, col) = T(0);
@@ -91,5 +94,7 @@ std::optional<Mat<T>> inverse(const Mat<T>& A) {
   template std::optional<Mat<T>> inverse<T>(const Mat<T>&);
 CONTACTCERT_LINALG_INSTANTIATE(double)
 CONTACTCERT_LINALG_INSTANTIATE(Q)
+CONTACTCERT_LINALG_INSTANTIATE(Mpfr)
+CONTACTCERT_LINALG_INSTANTIATE(Interval)
 
 }  // namespace contactcert::exact

@@ -1,5 +1,5 @@
-// Dense linear algebra over a field T (double or Q), written once: reduced row echelon form, rank,
-// null spaces, solving and inversion. Instantiated in linalg.cpp for double and Q.
+// Dense linear algebra over a field T (double, Q, MPFR floats or intervals), written once: reduced row echelon form,
+// rank, null spaces, solving and inversion. Instantiated in linalg.cpp.
 #pragma once
 
 #include <optional>
@@ -41,6 +41,8 @@ std::optional<Vec<T>> solve(const Mat<T>& A, const Vec<T>& b);
 template <class T>
 std::optional<Mat<T>> inverse(const Mat<T>& A);
 
+/// Explicit instantiation declarations for one number type (also used by exact/mpfr_number.h and
+/// exact/interval_number.h).
 #define CONTACTCERT_LINALG_EXTERN(T)                                               \
   extern template Rref<T> rref<T>(const Mat<T>&);                                  \
   extern template Eigen::Index rank<T>(const Mat<T>&);                             \
@@ -50,6 +52,5 @@ std::optional<Mat<T>> inverse(const Mat<T>& A);
   extern template std::optional<Mat<T>> inverse<T>(const Mat<T>&);
 CONTACTCERT_LINALG_EXTERN(double)
 CONTACTCERT_LINALG_EXTERN(Q)
-#undef CONTACTCERT_LINALG_EXTERN
 
 }  // namespace contactcert::exact

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "exact/arith.h"
 #include "exact/number.h"
 
 namespace contactcert::exact {
@@ -66,10 +67,17 @@ struct LpResult {
   Vec<T> ray;
   Eigen::Index unbounded_column = -1;
   DecidedBy decided_by = DecidedBy::kExact;
+  Rung proposed_by;  ///< the float rung whose basis was checked or continued from (solve_lp_ladder; else double)
   long pivots = 0;  ///< simplex pivots done in this number type (0 if a float basis checked out)
 };
 
 /// The problem in doubles (for the float path).
 LpProblem<double> to_double(const LpProblem<Q>& problem);
+
+/// The problem with every number mapped by f : Q -> T (the interval and MPFR paths).
+template <class T, class F>
+LpProblem<T> convert_lp(const LpProblem<Q>& problem, F f) {
+  return {problem.A.unaryExpr(f), problem.b.unaryExpr(f), problem.c.unaryExpr(f), problem.is_free};
+}
 
 }  // namespace contactcert::exact

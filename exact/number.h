@@ -38,7 +38,9 @@ template <class T>
 using Vec = Eigen::Matrix<T, Eigen::Dynamic, 1>;
 
 /// Sign and zero tests over a number type: exact for Q, with a documented tolerance for double.
-/// Algorithms are written once over T and call only these to decide a sign.
+/// Algorithms are written once over T and call only these to decide a sign. `is_negligible` is not a
+/// decision: it lets an update loop skip an entry that is zero for T (an interval skips only the point 0).
+/// More number types (MPFR floats, intervals) have their traits in exact/mpfr_number.h, exact/interval_number.h.
 template <class T>
 struct NumberTraits;
 
@@ -47,6 +49,7 @@ struct NumberTraits<Q> {
   static constexpr bool is_exact = true;
   static constexpr const char* name = "exact";
   static int sign(const Q& x) { return sgn(x); }
+  static bool is_negligible(const Q& x) { return sgn(x) == 0; }
   static double to_double(const Q& x) { return x.get_d(); }
   /// Pivot choice in elimination: any non-zero pivot is exact, so keep the first one.
   static bool better_pivot(const Q&, const Q&) { return false; }
@@ -60,6 +63,7 @@ struct NumberTraits<double> {
   /// papers use is of order 1 to 100; the verified path never trusts a float sign without an exact check.
   static constexpr double tolerance = 1e-9;
   static int sign(double x) { return x > tolerance ? 1 : (x < -tolerance ? -1 : 0); }
+  static bool is_negligible(double x) { return sign(x) == 0; }
   static double to_double(double x) { return x; }
   /// Partial pivoting: prefer the entry of largest magnitude.
   static bool better_pivot(double candidate, double best) { return std::abs(candidate) > std::abs(best); }
@@ -72,6 +76,11 @@ int sign(const T& x) {
 template <class T>
 bool is_zero(const T& x) {
   return NumberTraits<T>::sign(x) == 0;
+}
+/// True if an update loop may skip x as a zero (not a sign decision; see NumberTraits).
+template <class T>
+bool is_negligible(const T& x) {
+  return NumberTraits<T>::is_negligible(x);
 }
 template <class T>
 bool is_positive(const T& x) {

@@ -84,7 +84,8 @@ bool integer_scale(Index count, Get q, i64* out, i64& scale) {
   return true;
 }
 
-/// Rounds each entry of v to a fraction; returns integers with v ~ out / scale.
+}  // namespace
+
 bool round_vector(const std::vector<double>& v, std::vector<i64>& out, i64& scale) {
   std::vector<Fraction> f;
   f.reserve(v.size());
@@ -100,11 +101,14 @@ bool round_vector(const std::vector<double>& v, std::vector<i64>& out, i64& scal
   return true;
 }
 
+namespace {
+
 bool fma128(i128& acc, i64 a, i64 b) {
   return !__builtin_add_overflow(acc, static_cast<i128>(a) * static_cast<i128>(b), &acc);
 }
 
-/// num / den in lowest terms (den > 0).
+}  // namespace
+
 Q make_q(i64 num, i64 den) {
   Q q;
   if (num == 0) return q;
@@ -113,20 +117,8 @@ Q make_q(i64 num, i64 den) {
   return q;
 }
 
-}  // namespace
-
 LpProblem<double> IntegerLp::to_double(const std::vector<bool>& is_free) const {
-  LpProblem<double> p;
-  p.A = Mat<double>(m, n);
-  p.b = Vec<double>(m);
-  p.c = Vec<double>(n);
-  for (Index i = 0; i < m; ++i) {
-    for (Index j = 0; j < n; ++j) p.A(i, j) = static_cast<double>(A[static_cast<size_t>(i * n + j)]);
-    p.b(i) = static_cast<double>(b[static_cast<size_t>(i)]);
-  }
-  for (Index j = 0; j < n; ++j) p.c(j) = static_cast<double>(c[static_cast<size_t>(j)]);
-  p.is_free = is_free;
-  return p;
+  return convert<double>(is_free, [](i64 v) { return static_cast<double>(v); });
 }
 
 std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem) {
@@ -215,6 +207,34 @@ std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& pr
   if (problem.c.size() > 0)
     for (Index j : basis) cert.value += problem.c(j) * cert.x(j);
   return cert;
+}
+
+std::optional<Vec<Q>> round_and_check_point(const LpProblem<Q>& problem, const Vec<double>& x_approx,
+                                            const std::vector<bool>& zero) {
+  const Index m = problem.rows(), n = problem.cols();
+  if (x_approx.size() != n || zero.size() != static_cast<size_t>(n)) return std::nullopt;
+  const std::optional<IntegerLp> ilp = integer_lp(problem);
+  if (!ilp) return std::nullopt;
+  // x ~ X / D on the columns not fixed to zero.
+  std::vector<Index> support;
+  std::vector<double> xs;
+  for (Index j = 0; j < n; ++j)
+    if (!zero[static_cast<size_t>(j)]) support.push_back(j), xs.push_back(x_approx(j));
+  std::vector<i64> X;
+  i64 D;
+  if (!round_vector(xs, X, D)) return std::nullopt;
+  for (size_t t = 0; t < support.size(); ++t)
+    if (X[t] < 0 && !problem.free(support[t])) return std::nullopt;
+  // A X = D b, row by row in the integer rows.
+  for (Index i = 0; i < m; ++i) {
+    i128 acc = 0;
+    for (size_t t = 0; t < support.size(); ++t)
+      if (!fma128(acc, ilp->A[static_cast<size_t>(i * n + support[t])], X[t])) return std::nullopt;
+    if (acc != static_cast<i128>(D) * ilp->b[static_cast<size_t>(i)]) return std::nullopt;
+  }
+  Vec<Q> x = Vec<Q>::Zero(n);
+  for (size_t t = 0; t < support.size(); ++t) x(support[t]) = make_q(X[t], D);
+  return x;
 }
 
 }  // namespace contactcert::exact

@@ -3,7 +3,9 @@
 #include <string>
 
 #include "exact/input_error.h"
+#include "exact/interval_number.h"
 #include "exact/linalg.h"
+#include "exact/mpfr_number.h"
 
 namespace contactcert::exact {
 
@@ -49,7 +51,7 @@ LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_fre
     for (Index j = 0; j < n; ++j) {
       if (tab.is_basic(j)) continue;
       const T& dj = tab.reduced_cost(j);
-      const int sg = sign(dj);
+      const int sg = exact::sign(dj);
       if (sg == 0 || (sg > 0 && !column_is_free(is_free, j))) continue;
       if (bland) {
         s = j;
@@ -62,7 +64,7 @@ LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_fre
       }
     }
     if (s < 0) return {LoopEnd::kOptimal, -1, 1};
-    const int direction = sign(tab.reduced_cost(s)) > 0 ? -1 : 1;
+    const int direction = exact::sign(tab.reduced_cost(s)) > 0 ? -1 : 1;
 
     Index r = -1;
     T best_ratio = T(0), best_entry = T(0);
@@ -70,11 +72,11 @@ LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_fre
       const Index v = tab.basis()[static_cast<size_t>(i)];
       if (row_is_free(is_free, v, n)) continue;
       const T a = direction > 0 ? tab.entry(i, s) : T(-tab.entry(i, s));
-      if (!is_positive(a)) continue;
+      if (!exact::is_positive(a)) continue;
       const T ratio = tab.rhs(i) / a;
       bool take = r < 0;
       if (!take) {
-        const int cmp = sign(T(ratio - best_ratio));
+        const int cmp = exact::sign(T(ratio - best_ratio));
         take = cmp < 0 || (cmp == 0 && (bland ? v < tab.basis()[static_cast<size_t>(r)]
                                               : NumberTraits<T>::better_pivot(a, best_entry)));
       }
@@ -85,7 +87,7 @@ LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_fre
       }
     }
     if (r < 0) return {LoopEnd::kUnbounded, s, direction};
-    const bool degenerate = is_zero(tab.rhs(r));
+    const bool degenerate = exact::is_zero(tab.rhs(r));
     tab.pivot(r, s);
     if (++pivots > max_pivots)
       throw BudgetExceeded("simplex pivot budget exceeded", std::to_string(max_pivots) + " pivots");
@@ -103,7 +105,7 @@ Vec<T> basis_duals(const Mat<T>& A, const Vec<T>& b, const std::vector<Index>& b
     if (v < n)
       Bt.row(r) = A.col(v).transpose();
     else
-      Bt(r, v - n) = sign(b(v - n)) < 0 ? T(-1) : T(1);
+      Bt(r, v - n) = exact::sign(b(v - n)) < 0 ? T(-1) : T(1);
   }
   std::optional<Vec<T>> y = solve<T>(Bt, cB);
   return y ? *y : Vec<T>(Vec<T>::Zero(m));
@@ -153,7 +155,7 @@ LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options) {
     std::optional<SimplexTableau<T>> tab = SimplexTableau<T>::from_basis(problem.A, problem.b, *options.warm_basis);
     bool feasible = tab.has_value();
     for (Index r = 0; feasible && r < tab->rows(); ++r)
-      feasible = !is_negative(tab->rhs(r)) || problem.free(tab->basis()[static_cast<size_t>(r)]);
+      feasible = !exact::is_negative(tab->rhs(r)) || problem.free(tab->basis()[static_cast<size_t>(r)]);
     if (feasible) return solve_lp_from_tableau(problem, std::move(*tab), options);
   }
 
@@ -162,7 +164,7 @@ LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options) {
   tab.set_objective(Vec<T>::Zero(n), T(1));
   long pivots = 0;
   simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
-  if (is_positive(tab.objective_value())) {
+  if (exact::is_positive(tab.objective_value())) {
     LpResult<T> res;
     res.status = LpStatus::kInfeasible;
     res.decided_by = NumberTraits<T>::is_exact ? DecidedBy::kExact : DecidedBy::kFloat;
@@ -178,7 +180,7 @@ LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options) {
     if (tab.basis()[static_cast<size_t>(r)] < n) continue;
     Index s = -1;
     for (Index j = 0; j < n && s < 0; ++j)
-      if (!tab.is_basic(j) && !is_zero(tab.entry(r, j))) s = j;
+      if (!tab.is_basic(j) && !exact::is_zero(tab.entry(r, j))) s = j;
     if (s >= 0) {
       tab.pivot(r, s);
       ++pivots;
@@ -230,5 +232,10 @@ template LpResult<Q> solve_lp<Q>(const LpProblem<Q>&, const LpOptions&);
 template LpResult<double> solve_lp_from_tableau<double>(const LpProblem<double>&, SimplexTableau<double>,
                                                         const LpOptions&);
 template LpResult<Q> solve_lp_from_tableau<Q>(const LpProblem<Q>&, SimplexTableau<Q>, const LpOptions&);
+template LpResult<Mpfr> solve_lp<Mpfr>(const LpProblem<Mpfr>&, const LpOptions&);
+template LpResult<Mpfr> solve_lp_from_tableau<Mpfr>(const LpProblem<Mpfr>&, SimplexTableau<Mpfr>, const LpOptions&);
+template LpResult<Interval> solve_lp<Interval>(const LpProblem<Interval>&, const LpOptions&);
+template LpResult<Interval> solve_lp_from_tableau<Interval>(const LpProblem<Interval>&, SimplexTableau<Interval>,
+                                                            const LpOptions&);
 
 }  // namespace contactcert::exact

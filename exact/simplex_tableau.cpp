@@ -3,6 +3,8 @@
 #include <cassert>
 
 #include "exact/field_ops.h"
+#include "exact/interval_number.h"
+#include "exact/mpfr_number.h"
 
 namespace contactcert::exact {
 
@@ -28,7 +30,7 @@ std::optional<SimplexTableau<T>> SimplexTableau<T>::from_basis(const Mat<T>& A, 
     if (j < 0 || j >= n || tab.is_basic(j)) return std::nullopt;
     Index p = -1;
     for (Index r = 0; r < m; ++r) {
-      if (tab.basis_[static_cast<size_t>(r)] >= 0 || is_zero(tab.entry(r, j))) continue;
+      if (tab.basis_[static_cast<size_t>(r)] >= 0 || exact::is_zero(tab.entry(r, j))) continue;
       if (p < 0 || NumberTraits<T>::better_pivot(tab.entry(r, j), tab.entry(p, j))) p = r;
     }
     if (p < 0) return std::nullopt;  // dependent columns
@@ -39,7 +41,7 @@ std::optional<SimplexTableau<T>> SimplexTableau<T>::from_basis(const Mat<T>& A, 
   for (Index r = m - 1; r >= 0; --r) {
     if (tab.basis_[static_cast<size_t>(r)] >= 0) continue;
     for (Index j = 0; j <= n; ++j)
-      if (!is_zero(tab.entry(r, j))) return std::nullopt;
+      if (!exact::is_zero(tab.entry(r, j))) return std::nullopt;
     tab.remove_row(r);
   }
   return tab;
@@ -50,7 +52,7 @@ SimplexTableau<T> SimplexTableau<T>::artificial_start(const Mat<T>& A, const Vec
   const Index m = A.rows(), n = A.cols();
   SimplexTableau tab(m, n);
   for (Index r = 0; r < m; ++r) {
-    const bool negate = sign(b(r)) < 0;
+    const bool negate = exact::sign(b(r)) < 0;
     for (Index j = 0; j < n; ++j) tab.at(r, j) = negate ? T(-A(r, j)) : A(r, j);
     tab.at(r, n) = negate ? T(-b(r)) : b(r);
     tab.basis_[static_cast<size_t>(r)] = n + r;
@@ -67,13 +69,13 @@ bool SimplexTableau<T>::has_artificial() const {
 
 template <class T>
 void SimplexTableau<T>::pivot(Index r, Index s) {
-  assert(r >= 0 && r < m_ && s >= 0 && s < n_ && !is_zero(entry(r, s)));
+  assert(r >= 0 && r < m_ && s >= 0 && s < n_ && !exact::is_zero(entry(r, s)));
   const Index w = n_ + 1;
   T* row = &t_[static_cast<size_t>(r * w)];
   const T inv = T(1) / row[s];
   nz_.clear();
   for (Index j = 0; j < w; ++j) {
-    if (is_zero(row[j])) continue;
+    if (exact::is_negligible(row[j])) continue;
     mul_by(row[j], inv);
     nz_.push_back(j);
   }
@@ -82,12 +84,12 @@ void SimplexTableau<T>::pivot(Index r, Index s) {
   for (Index i = 0; i < m_; ++i) {
     if (i == r) continue;
     T* other = &t_[static_cast<size_t>(i * w)];
-    if (is_zero(other[s])) continue;
+    if (exact::is_negligible(other[s])) continue;
     const T f = other[s];
     for (Index j : nz_) sub_mul(other[j], f, row[j], tmp);
     other[s] = T(0);
   }
-  if (!is_zero(d_[static_cast<size_t>(s)])) {
+  if (!exact::is_negligible(d_[static_cast<size_t>(s)])) {
     const T f = d_[static_cast<size_t>(s)];
     for (Index j : nz_) {
       if (j < n_)
@@ -125,9 +127,9 @@ void SimplexTableau<T>::set_objective(const Vec<T>& c, const T& artificial_cost)
   for (Index r = 0; r < m_; ++r) {
     const Index v = basis_[static_cast<size_t>(r)];
     const T cb = v >= n_ ? artificial_cost : (v >= 0 ? c(v) : T(0));
-    if (is_zero(cb)) continue;
+    if (exact::is_negligible(cb)) continue;
     for (Index j = 0; j < n_; ++j)
-      if (!is_zero(entry(r, j))) sub_mul(d_[static_cast<size_t>(j)], cb, entry(r, j), tmp);
+      if (!exact::is_negligible(entry(r, j))) sub_mul(d_[static_cast<size_t>(j)], cb, entry(r, j), tmp);
     sub_mul(z_, T(-cb), rhs(r), tmp);
   }
   for (Index r = 0; r < m_; ++r) {
@@ -148,5 +150,7 @@ Vec<T> SimplexTableau<T>::primal() const {
 
 template class SimplexTableau<double>;
 template class SimplexTableau<Q>;
+template class SimplexTableau<Mpfr>;
+template class SimplexTableau<Interval>;
 
 }  // namespace contactcert::exact

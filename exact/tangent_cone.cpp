@@ -4,6 +4,8 @@
 #include <cstdint>
 
 #include "exact/field_ops.h"
+#include "exact/interval_number.h"
+#include "exact/mpfr_number.h"
 
 namespace contactcert::exact {
 
@@ -23,8 +25,8 @@ void set(Bits& b, Index i) { b[static_cast<size_t>(i / 64)] |= std::uint64_t(1) 
 template <class T>
 void scale_first_to_one(std::vector<T>& w) {
   for (const T& x : w) {
-    if (is_zero(x)) continue;
-    const T inv = T(1) / (sign(x) > 0 ? x : T(-x));
+    if (exact::is_zero(x)) continue;
+    const T inv = T(1) / (exact::sign(x) > 0 ? x : T(-x));
     for (T& y : w) mul_by(y, inv);
     return;
   }
@@ -54,8 +56,9 @@ OrthantConeRays<T> orthant_cone_rays(const Mat<T>& G, long max_rays) {
     for (size_t a = 0; a < rays.size(); ++a) {
       T v = T(0);
       for (Index j = 0; j < p; ++j)
-        if (!is_zero(rays[a].w[static_cast<size_t>(j)])) sub_mul(v, T(-G(i, j)), rays[a].w[static_cast<size_t>(j)], tmp);
-      const int s = sign(v);
+        if (!exact::is_zero(rays[a].w[static_cast<size_t>(j)]))
+          sub_mul(v, T(-G(i, j)), rays[a].w[static_cast<size_t>(j)], tmp);
+      const int s = exact::sign(v);
       if (s > 0) pos.push_back(a);
       if (s < 0) neg.push_back(a);
       if (s == 0) set(rays[a].zero, p + i);
@@ -64,7 +67,7 @@ OrthantConeRays<T> orthant_cone_rays(const Mat<T>& G, long max_rays) {
     if (pos.empty()) continue;
     std::vector<Ray<T>> next;
     for (size_t a = 0; a < rays.size(); ++a)
-      if (!is_positive(val[a])) next.push_back(rays[a]);
+      if (!exact::is_positive(val[a])) next.push_back(rays[a]);
     for (size_t a : pos) {
       for (size_t b : neg) {
         long count = 0;
@@ -85,9 +88,11 @@ OrthantConeRays<T> orthant_cone_rays(const Mat<T>& G, long max_rays) {
         Ray<T> r{std::vector<T>(static_cast<size_t>(p), T(0)), common};
         for (Index j = 0; j < p; ++j) {
           T& x = r.w[static_cast<size_t>(j)];
-          if (!is_zero(rays[b].w[static_cast<size_t>(j)])) sub_mul(x, T(-val[a]), rays[b].w[static_cast<size_t>(j)], tmp);
-          if (!is_zero(rays[a].w[static_cast<size_t>(j)])) sub_mul(x, val[b], rays[a].w[static_cast<size_t>(j)], tmp);
-          if (is_zero(x)) x = T(0);
+          if (!exact::is_zero(rays[b].w[static_cast<size_t>(j)]))
+            sub_mul(x, T(-val[a]), rays[b].w[static_cast<size_t>(j)], tmp);
+          if (!exact::is_zero(rays[a].w[static_cast<size_t>(j)]))
+            sub_mul(x, val[b], rays[a].w[static_cast<size_t>(j)], tmp);
+          if (exact::is_zero(x)) x = T(0);
         }
         scale_first_to_one(r.w);
         set(r.zero, p + i);
@@ -110,5 +115,7 @@ OrthantConeRays<T> orthant_cone_rays(const Mat<T>& G, long max_rays) {
 
 template OrthantConeRays<double> orthant_cone_rays<double>(const Mat<double>&, long);
 template OrthantConeRays<Q> orthant_cone_rays<Q>(const Mat<Q>&, long);
+template OrthantConeRays<Mpfr> orthant_cone_rays<Mpfr>(const Mat<Mpfr>&, long);
+template OrthantConeRays<Interval> orthant_cone_rays<Interval>(const Mat<Interval>&, long);
 
 }  // namespace contactcert::exact

@@ -1,5 +1,8 @@
 #include "solvers/ucp/bilinear.h"
 
+#include "exact/interval_number.h"
+#include "exact/mpfr_number.h"
+
 namespace contactcert::solvers::ucp {
 
 namespace {
@@ -9,7 +12,7 @@ template <class T>
 T dot(const Vec<T>& a, const Vec<T>& b) {
   T s = T(0);
   for (Index i = 0; i < a.size(); ++i)
-    if (!exact::is_zero(a(i)) && !exact::is_zero(b(i))) s += a(i) * b(i);
+    if (!exact::is_negligible(a(i)) && !exact::is_negligible(b(i))) s += a(i) * b(i);
   return s;
 }
 }  // namespace
@@ -39,6 +42,10 @@ BilinearResult<T> bilinear(const Face<T>& FX, const Face<T>& FY, const BilinearO
   };
   bool step1 = true;
   while (!exact::is_zero(val) && r.pairs < opts.max_pairs) {
+    if (opts.deadline.expired()) {
+      r.status = BilinearStatus::kTimeLimit;
+      return r;
+    }
     if (step1) {
       // Step 1: x^{nu+1} solves (14), then y^{nu+1} solves (15).
       FaceLpResult<T> xn = minimize_on_face(FX, yv.x, opts.arith, count);
@@ -108,6 +115,8 @@ void alternate_lps(const Face<T>& FX, const Face<T>& FY, FaceVertex<T>& x, FaceV
                                  LpCounters&);
 CONTACTCERT_BILINEAR_INSTANTIATE(double)
 CONTACTCERT_BILINEAR_INSTANTIATE(Q)
+CONTACTCERT_BILINEAR_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_BILINEAR_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_BILINEAR_INSTANTIATE
 
 }  // namespace contactcert::solvers::ucp

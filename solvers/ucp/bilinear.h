@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "exact/deadline.h"
 #include "solvers/ucp/face_lp.h"
 
 namespace contactcert::solvers::ucp {
@@ -22,6 +23,7 @@ struct BilinearOptions {
   long max_pairs = 2000;    ///< safety bound on the iteration counter nu
   long max_bases = 100000;  ///< Step 3: bases explored per degenerate vertex (AdjacencyOptions::max_bases)
   Arith arith = Arith::kVerified;
+  exact::Deadline deadline;  ///< tested before each new pair; kTimeLimit when it expires
 };
 
 enum class BilinearStatus {
@@ -29,6 +31,7 @@ enum class BilinearStatus {
   kStopped,        ///< random-move limit reached at a stationary, non-complementary pair
   kXEmpty,         ///< Step 0: X is empty (farkas proves it)
   kYEmpty,         ///< Step 0: Y is empty
+  kTimeLimit,      ///< the deadline expired before a verdict (the best pair so far is kept)
 };
 
 /// The outcome with the evidence: the final (best) pair and the counts of Table 1.

@@ -6,7 +6,8 @@ namespace {
 using Index = Eigen::Index;
 }
 
-EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max_lps) {
+EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max_lps, const exact::Deadline& deadline,
+                                const std::function<void(long, long)>& progress) {
   const UcpInstance<Q>& u = problem.ucp;
   const Index n = u.n(), mx = u.X.A.rows(), my = u.Y.A.rows();
   // X x Y as one block-diagonal polyhedron in R^{2n}.
@@ -58,12 +59,17 @@ EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max
       if (out.solutions++ == 0) out.x = r.vertex.x.head(n), out.y = r.vertex.x.tail(n);
       out.solution_modes.push_back(name);
     }
+    if (progress) progress(count.lps, count.lps);
+    if (deadline.expired()) {
+      out.complete = false;
+      break;
+    }
     Index k = 0;
     while (k < units && ++code[static_cast<std::size_t>(k)] == choices) code[static_cast<std::size_t>(k++)] = 0;
     if (k == units) break;
   }
   out.lps = count.lps;
-  out.status = out.solutions > 0 ? UcpStatus::kSolvable : UcpStatus::kJammed;
+  out.status = out.solutions > 0 ? UcpStatus::kSolvable : out.complete ? UcpStatus::kJammed : UcpStatus::kUnknown;
   return out;
 }
 

@@ -3,6 +3,7 @@
 // It finds every solution mode for small nc.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@ struct EnumerateResult {
   long solutions = 0;                       ///< modes with a complementary pair
   std::vector<std::string> solution_modes;  ///< per solution, one letter per contact: s r + -
   Vec<Q> x, y;                              ///< the pair of the first solution mode
+  bool complete = true;                     ///< false if the deadline stopped the enumeration early
 };
 
 /// Tests all 4^nc contact-mode assignments of a quasistatic problem (per contact i: separate c_i = 0; roll
@@ -24,6 +26,10 @@ struct EnumerateResult {
 /// generic UCP it tests the 2^n choices of x_i = 0 or y_i = 0 (letters x y). Exact (or verified) LPs.
 /// Every complementary pair of a quasistatic problem lies in some mode: v_t^+ and v_t^- can be lowered by
 /// their minimum, keeping (x, y) in X and complementary.
-EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max_lps);
+/// The deadline stops the enumeration early (then kSolvable if a solution mode was found, else kUnknown);
+/// `progress` is called after every mode with (modes tested, LPs).
+EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max_lps,
+                                const exact::Deadline& deadline = {},
+                                const std::function<void(long, long)>& progress = {});
 
 }  // namespace contactcert::solvers::ucp

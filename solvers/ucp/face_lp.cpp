@@ -1,6 +1,8 @@
 #include "solvers/ucp/face_lp.h"
 
 #include "exact/adjacent_vertices.h"
+#include "exact/interval_number.h"
+#include "exact/mpfr_number.h"
 #include "exact/simplex.h"
 #include "exact/verified_lp.h"
 
@@ -20,6 +22,7 @@ template <class T>
 exact::LpResult<T> run_lp(const exact::LpProblem<T>& lp, Arith arith) {
   if constexpr (std::is_same_v<T, Q>) {
     if (arith == Arith::kVerified) return exact::solve_lp_verified(lp);
+    if (arith == Arith::kAdaptive) return exact::solve_lp_ladder(lp, exact::adaptive_ladder());
   }
   (void)arith;
   return exact::solve_lp<T>(lp);
@@ -91,6 +94,8 @@ std::vector<FaceVertex<T>> adjacent_on_face(const Face<T>& F, const FaceVertex<T
   template std::vector<FaceVertex<T>> adjacent_on_face<T>(const Face<T>&, const FaceVertex<T>&, long, LpCounters&);
 CONTACTCERT_FACE_LP_INSTANTIATE(double)
 CONTACTCERT_FACE_LP_INSTANTIATE(Q)
+CONTACTCERT_FACE_LP_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_FACE_LP_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_FACE_LP_INSTANTIATE
 
 }  // namespace contactcert::solvers::ucp

@@ -10,7 +10,8 @@
 
 namespace contactcert::solvers::ucp {
 
-/// Which LP path: exact rationals, doubles (unchecked), or the float simplex checked exactly.
+/// Which LP path: exact rationals, doubles (unchecked), the float simplex checked exactly, or the precision
+/// ladder (exact::solve_lp_ladder). Only T = Q reads it: other number types solve in T.
 using exact::Arith;
 
 /// Work counters (Table 1 counts LPs).

@@ -86,4 +86,13 @@ UcpInstance<T> convert(const UcpInstance<Q>& u);
 extern template UcpInstance<double> convert<double>(const UcpInstance<Q>&);
 extern template UcpInstance<Q> convert<Q>(const UcpInstance<Q>&);
 
+/// Converts an exact instance entry by entry with f : Q -> T (intervals, MPFR floats of a chosen precision).
+template <class T, class F>
+UcpInstance<T> convert(const UcpInstance<Q>& u, F f) {
+  const auto conv = [&f](const StandardPolyhedron<Q>& P) {
+    return StandardPolyhedron<T>{P.A.unaryExpr(f), P.b.unaryExpr(f)};
+  };
+  return {conv(u.X), conv(u.Y)};
+}
+
 }  // namespace contactcert::solvers::ucp

@@ -2,6 +2,9 @@
 
 #include <optional>
 
+#include "exact/interval_number.h"
+#include "exact/mpfr_number.h"
+
 namespace contactcert::solvers::ucp {
 
 namespace {
@@ -15,7 +18,8 @@ struct Learned {
   Vec<T> farkas;
 };
 
-struct NodeBudgetExhausted {};
+/// Thrown out of the recursion when the node or time budget runs out.
+struct BudgetExhausted {};
 
 template <class T>
 class Search {
@@ -62,7 +66,8 @@ class Search {
   bool have_best = false;  ///< out.xTy holds a pair's value
 
   long new_node() {
-    if (static_cast<long>(out_.tree.size()) >= opts_.max_nodes) throw NodeBudgetExhausted{};
+    if (static_cast<long>(out_.tree.size()) >= opts_.max_nodes || opts_.deadline.expired()) throw BudgetExhausted{};
+    if (opts_.progress) opts_.progress(static_cast<long>(out_.tree.size()), out_.counters.lps);
     out_.tree.emplace_back();
     return static_cast<long>(out_.tree.size()) - 1;
   }
@@ -151,10 +156,12 @@ SearchResult<T> complete_search(const UcpInstance<T>& ucp, const SearchOptions& 
       out.status = UcpStatus::kJammed;
       out.reason = out.tree.size() == 1 ? (out.tree[0].side == Side::kX ? "X is empty" : "Y is empty") : "search tree";
     }
-  } catch (const NodeBudgetExhausted&) {
+  } catch (const BudgetExhausted&) {
     out.nodes = static_cast<long>(out.tree.size());
     out.status = UcpStatus::kUnknown;
-    out.reason = "node budget of " + std::to_string(opts.max_nodes) + " exhausted";
+    out.reason = out.nodes >= opts.max_nodes
+                     ? "node budget of " + std::to_string(opts.max_nodes) + " exhausted"
+                     : opts.deadline.reached_text() + " after " + std::to_string(out.nodes) + " nodes";
     out.tree.clear();
   }
   return out;
@@ -163,5 +170,9 @@ SearchResult<T> complete_search(const UcpInstance<T>& ucp, const SearchOptions& 
 template SearchResult<double> complete_search<double>(const UcpInstance<double>&, const SearchOptions&,
                                                       std::mt19937_64&);
 template SearchResult<Q> complete_search<Q>(const UcpInstance<Q>&, const SearchOptions&, std::mt19937_64&);
+template SearchResult<exact::Mpfr> complete_search<exact::Mpfr>(const UcpInstance<exact::Mpfr>&, const SearchOptions&,
+                                                                std::mt19937_64&);
+template SearchResult<exact::Interval> complete_search<exact::Interval>(const UcpInstance<exact::Interval>&,
+                                                                        const SearchOptions&, std::mt19937_64&);
 
 }  // namespace contactcert::solvers::ucp

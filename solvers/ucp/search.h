@@ -5,6 +5,7 @@
 // vector at every dead leaf is the certificate that no complementary pair exists ("jammed").
 #pragma once
 
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -34,8 +35,10 @@ struct SearchNode {
 struct SearchOptions {
   long max_nodes = 200000;     ///< node budget: the search ends `unknown` when it runs out
   bool bilinear_first = true;  ///< run the bilinear algorithm on X x Y before branching (SPEC default)
-  BilinearOptions heuristic{Step3Rule::kModified, 20, 2000, 100000, Arith::kVerified};
+  BilinearOptions heuristic{Step3Rule::kModified, 20, 2000, 100000, Arith::kVerified, {}};
   int node_rounds = 3;  ///< Step-1 rounds of the heuristic at each node
+  exact::Deadline deadline;  ///< time budget (also passed to the heuristic): the search ends `unknown`
+  std::function<void(long nodes, long lps)> progress;  ///< called at every new node (rate-limit in the callee)
 };
 
 /// Result with evidence: a complementary pair (kSolvable), or the search tree (kJammed, node 0 = root).

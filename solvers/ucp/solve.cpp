@@ -4,7 +4,10 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "exact/interval_number.h"
+#include "exact/mpfr_number.h"
 #include "solvers/ucp/enumerate.h"
+#include "solvers/ucp/float_check.h"
 
 namespace contactcert::solvers::ucp {
 
@@ -13,6 +16,51 @@ namespace {
 /// Budgets of the bilinear phase that precedes the complete search (its Step 3 is the costly part).
 constexpr int kCompleteRandomMoves = 2;
 constexpr long kCompleteMaxBases = 20;
+
+template <class T>
+Vec<double> approx(const Vec<T>& v) {
+  return v.unaryExpr([](const T& e) { return exact::NumberTraits<T>::to_double(e); });
+}
+
+/// The shape of a verdict found in a float number type, for its exact check (float_check.h): the zero
+/// pattern of the complementary pair (every index fixed to 0 on one side), or the search tree without its
+/// float Farkas vectors.
+struct FloatEvidence {
+  std::vector<bool> x_zero, y_zero;
+  std::vector<SearchNode<Q>> tree;
+};
+
+/// x_i = 0 where T's sign test says so; y_i = 0 wherever x_i is not.
+template <class T>
+void record_pattern(FloatEvidence* ev, const Vec<T>& x, const Vec<T>& y) {
+  if (!ev) return;
+  ev->x_zero.assign(static_cast<std::size_t>(x.size()), false);
+  ev->y_zero = ev->x_zero;
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    ev->x_zero[static_cast<std::size_t>(i)] = exact::is_zero(x(i));
+    ev->y_zero[static_cast<std::size_t>(i)] = !ev->x_zero[static_cast<std::size_t>(i)] || exact::is_zero(y(i));
+  }
+}
+
+template <class T>
+void record_tree(FloatEvidence* ev, const std::vector<SearchNode<T>>& tree) {
+  if (!ev) return;
+  ev->tree.resize(tree.size());
+  for (std::size_t k = 0; k < tree.size(); ++k) {
+    ev->tree[k].branch = tree[k].branch;
+    ev->tree[k].child_x_zero = tree[k].child_x_zero;
+    ev->tree[k].child_y_zero = tree[k].child_y_zero;
+    ev->tree[k].side = tree[k].side;
+  }
+}
+
+/// An MPFR float as the rational it is; an interval as its midpoint (bench error measures, not proofs).
+Q exact_value(const exact::Mpfr& v) {
+  Q q;
+  mpfr_get_q(q.get_mpq_t(), v.fr());
+  return q;
+}
+Q exact_value(const exact::Interval& v) { return (Q(v.inf()) + Q(v.sup())) / 2; }
 
 template <class T>
 void fill_pair(UcpReport& rep, const Vec<T>& x, const Vec<T>& y, const UcpProblem& problem) {
@@ -24,7 +72,11 @@ void fill_pair(UcpReport& rep, const Vec<T>& x, const Vec<T>& y, const UcpProble
     }
   } else {
     (void)problem;
-    rep.x_approx = x, rep.y_approx = y;
+    rep.x_approx = approx(x), rep.y_approx = approx(y);
+    if constexpr (!std::is_same_v<T, double>) {
+      rep.x_float = x.unaryExpr([](const T& e) { return exact_value(e); });
+      rep.y_float = y.unaryExpr([](const T& e) { return exact_value(e); });
+    }
   }
 }
 
@@ -33,17 +85,19 @@ void set_best(UcpReport& rep, const T& v) {
   if constexpr (std::is_same_v<T, Q>)
     rep.best_xTy = v;
   else
-    rep.best_xTy_approx = v;
+    rep.best_xTy_approx = exact::NumberTraits<T>::to_double(v);
 }
 
+/// Runs the method on u (the problem's instance in T). ev (T not Q): receives the shape of the verdict.
 template <class T>
-void run(const UcpProblem& problem, const UcpOptions& opts, UcpReport& rep) {
-  const UcpInstance<T> u = convert<T>(problem.ucp);
+void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& opts, const exact::Deadline& deadline,
+         UcpReport& rep, FloatEvidence* ev = nullptr) {
   std::mt19937_64 rng(opts.seed);
   BilinearOptions bo;
   bo.arith = opts.arith;
   bo.max_random_moves = opts.max_random_moves;
   bo.max_bases = opts.max_bases;
+  bo.deadline = deadline;
   if (opts.method == Method::kPaper || opts.method == Method::kModified) {
     bo.step3 = opts.method == Method::kPaper ? Step3Rule::kPaper : Step3Rule::kModified;
     const BilinearResult<T> b = bilinear(make_face(u.X, {}), make_face(u.Y, {}), bo, rng);
@@ -55,12 +109,18 @@ void run(const UcpProblem& problem, const UcpOptions& opts, UcpReport& rep) {
         rep.status = UcpStatus::kSolvable;
         rep.reason = "x^T y = 0 reached by the bilinear algorithm";
         fill_pair(rep, b.x.x, b.y.x, problem);
+        record_pattern(ev, b.x.x, b.y.x);
         set_best(rep, b.xTy);
         break;
       case BilinearStatus::kStopped:
         rep.status = UcpStatus::kUnknown;
         rep.reason = "stationary pair with x^T y > 0 after " + std::to_string(b.random_moves - 1) +
                      " random Step 3 moves (the bilinear algorithm cannot prove that no solution exists)";
+        set_best(rep, b.xTy);
+        break;
+      case BilinearStatus::kTimeLimit:
+        rep.status = UcpStatus::kUnknown;
+        rep.reason = deadline.reached_text() + " after " + std::to_string(b.pairs) + " pairs";
         set_best(rep, b.xTy);
         break;
       case BilinearStatus::kXEmpty:
@@ -76,6 +136,9 @@ void run(const UcpProblem& problem, const UcpOptions& opts, UcpReport& rep) {
           proof.tree[0].side = x_empty ? Side::kX : Side::kY;
           proof.tree[0].farkas = b.farkas;
           rep.proof = std::move(proof);
+        } else if (ev) {
+          ev->tree.resize(1);
+          ev->tree[0].side = x_empty ? Side::kX : Side::kY;
         }
         break;
       }
@@ -84,6 +147,8 @@ void run(const UcpProblem& problem, const UcpOptions& opts, UcpReport& rep) {
   }
   SearchOptions so;
   so.max_nodes = opts.max_nodes;
+  so.deadline = deadline;
+  so.progress = opts.progress;
   so.heuristic = bo;
   so.heuristic.step3 = Step3Rule::kModified;
   // The search decides; the bilinear phase before it only has to find easy solutions quickly.
@@ -98,9 +163,108 @@ void run(const UcpProblem& problem, const UcpOptions& opts, UcpReport& rep) {
   rep.nodes = s.nodes;
   rep.learned_prunes = s.learned_prunes;
   set_best(rep, s.xTy);
-  if (s.status == UcpStatus::kSolvable) fill_pair(rep, s.x, s.y, problem);
+  if (s.status == UcpStatus::kSolvable) {
+    fill_pair(rep, s.x, s.y, problem);
+    record_pattern(ev, s.x, s.y);
+  }
   if constexpr (std::is_same_v<T, Q>) {
     if (s.status == UcpStatus::kJammed) rep.proof = std::move(s);
+  } else if (s.status == UcpStatus::kJammed) {
+    record_tree(ev, s.tree);
+  }
+}
+
+/// One float rung of --arith adaptive: the method in T, then its verdict checked exactly (float_check.h).
+/// True if the verdict checked out (rep then holds it with exact evidence); false for `unknown`, a verdict
+/// that does not check out, or an uncertain interval sign.
+template <class T>
+bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& opts,
+               const exact::Deadline& deadline, UcpReport& rep) {
+  UcpReport r;
+  r.method = rep.method;
+  r.arith = rep.arith;
+  FloatEvidence ev;
+  try {
+    run<T>(problem, u, opts, deadline, r, &ev);
+  } catch (const exact::UncertainSign&) {
+    return false;
+  }
+  LpCounters check;
+  if (r.status == UcpStatus::kSolvable) {
+    const std::optional<std::pair<Vec<Q>, Vec<Q>>> pair =
+        exact_pair(problem.ucp, r.x_approx, r.y_approx, ev.x_zero, ev.y_zero, check);
+    if (!pair) return false;
+    fill_pair(r, pair->first, pair->second, problem);
+    r.x_approx = r.y_approx = Vec<double>();
+    r.best_xTy = Q(0);
+  } else if (r.status == UcpStatus::kJammed) {
+    SearchResult<Q> proof;
+    proof.status = UcpStatus::kJammed;
+    proof.reason = r.reason;
+    proof.tree = std::move(ev.tree);
+    if (!prove_leaves(problem.ucp, proof.tree, check)) return false;
+    r.proof = std::move(proof);
+  } else {
+    return false;
+  }
+  r.lps += check.lps;
+  rep = std::move(r);
+  return true;
+}
+
+/// --arith adaptive: the rungs of exact::adaptive_ladder() in order; the first float rung whose verdict
+/// checks out decides, else the exact rung (rational search, its LPs on the LP ladder) does.
+void solve_adaptive(const UcpProblem& problem, const UcpOptions& opts, const exact::Deadline& deadline,
+                    UcpReport& rep) {
+  for (const exact::Rung& rung : exact::adaptive_ladder()) {
+    bool decided = false;
+    switch (rung.kind) {
+      case exact::Rung::Kind::kDouble:
+        decided = decide_at(problem, convert<double>(problem.ucp), opts, deadline, rep);
+        break;
+      case exact::Rung::Kind::kInterval:
+        decided =
+            decide_at(problem, convert<exact::Interval>(problem.ucp, [](const Q& q) { return exact::to_interval(q); }),
+                      opts, deadline, rep);
+        break;
+      case exact::Rung::Kind::kMpfr:
+        decided = decide_at(
+            problem, convert<exact::Mpfr>(problem.ucp, [&rung](const Q& q) { return exact::to_mpfr(q, rung.bits); }),
+            opts, deadline, rep);
+        break;
+      case exact::Rung::Kind::kExact:
+        run<Q>(problem, problem.ucp, opts, deadline, rep);
+        decided = true;
+        break;
+    }
+    if (decided) {
+      rep.decided_by = exact::rung_name(rung);
+      return;
+    }
+  }
+}
+
+/// --arith float: the method unchecked in the number type of opts.float_rung (an uncertain interval sign: unknown).
+void run_float(const UcpProblem& problem, const UcpOptions& opts, const exact::Deadline& deadline, UcpReport& rep) {
+  const exact::Rung& rung = opts.float_rung;
+  try {
+    switch (rung.kind) {
+      case exact::Rung::Kind::kInterval:
+        run(problem, convert<exact::Interval>(problem.ucp, [](const Q& q) { return exact::to_interval(q); }), opts,
+            deadline, rep);
+        return;
+      case exact::Rung::Kind::kMpfr:
+        run(problem, convert<exact::Mpfr>(problem.ucp, [&rung](const Q& q) { return exact::to_mpfr(q, rung.bits); }),
+            opts, deadline, rep);
+        return;
+      case exact::Rung::Kind::kDouble:
+      case exact::Rung::Kind::kExact:
+        run<double>(problem, convert<double>(problem.ucp), opts, deadline, rep);
+        return;
+    }
+  } catch (const exact::UncertainSign&) {
+    rep.status = UcpStatus::kUnknown;
+    rep.reason = "an interval sign is uncertain";
   }
 }
 
@@ -142,25 +306,30 @@ const char* status_name(UcpStatus s) {
 
 UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts) {
   const auto start = std::chrono::steady_clock::now();
+  const exact::Deadline deadline = exact::Deadline::after(opts.time_limit);
   UcpReport rep;
   rep.method = opts.method;
   rep.arith = opts.arith;
   if (opts.method == Method::kEnumerate) {
     const Arith a = opts.arith == Arith::kFloat ? Arith::kVerified : opts.arith;  // the baseline is exact
     rep.arith = a;
-    EnumerateResult e = enumerate_modes(problem, a, opts.max_enumerate_lps);
+    EnumerateResult e = enumerate_modes(problem, a, opts.max_enumerate_lps, deadline, opts.progress);
     rep.status = e.status;
     rep.lps = e.lps;
     rep.solutions = e.solutions;
     rep.solution_modes = e.solution_modes;
-    rep.reason = e.status == UcpStatus::kUnknown
-                     ? "too many modes for the enumeration budget"
-                     : std::to_string(e.solutions) + " of " + std::to_string(e.lps) + " modes have a solution";
+    if (e.lps == 0)
+      rep.reason = "too many modes for the enumeration budget";
+    else
+      rep.reason = std::to_string(e.solutions) + " of " + std::to_string(e.lps) + " modes have a solution" +
+                   (e.complete ? "" : " (" + deadline.reached_text() + " before all modes were tested)");
     if (e.solutions > 0) fill_pair(rep, e.x, e.y, problem);
   } else if (opts.arith == Arith::kFloat) {
-    run<double>(problem, opts, rep);
+    run_float(problem, opts, deadline, rep);
+  } else if (opts.arith == Arith::kAdaptive) {
+    solve_adaptive(problem, opts, deadline, rep);
   } else {
-    run<Q>(problem, opts, rep);
+    run<Q>(problem, problem.ucp, opts, deadline, rep);
   }
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return rep;

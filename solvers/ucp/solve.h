@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "exact/arith.h"
 #include "solvers/ucp/recovery.h"
 #include "solvers/ucp/search.h"
 
@@ -25,11 +27,16 @@ const char* status_name(UcpStatus s);
 struct UcpOptions {
   Method method = Method::kComplete;
   Arith arith = Arith::kVerified;
+  /// --arith float: the number type of the unchecked run (doubles by default; intervals or MPFR of `bits` bits
+  /// for the bench's precision ladder). An uncertain interval sign ends the run as `unknown`.
+  exact::Rung float_rung{};
   std::uint64_t seed = 1;
   long max_nodes = 200000;            ///< complete search node budget
   long max_enumerate_lps = 1L << 22;  ///< enumerate: refuse (unknown) above this many modes
   int max_random_moves = 20;          ///< bilinear: Step 3 random moves before giving up
   long max_bases = 100000;            ///< bilinear Step 3: bases explored per degenerate vertex
+  double time_limit = 0;              ///< seconds of wall clock for the whole run (0 = none): then `unknown`
+  std::function<void(long units, long lps)> progress;  ///< search nodes or enumerated modes so far
 };
 
 /// The verdict with its evidence. On the exact and verified paths every number is exact; on the float
@@ -42,6 +49,7 @@ struct UcpReport {
   std::optional<Vec<Q>> x, y;      ///< the complementary pair (exact paths, kSolvable)
   std::optional<Q> best_xTy;       ///< smallest x^T y seen (exact paths)
   Vec<double> x_approx, y_approx;  ///< float path
+  Vec<Q> x_float, y_float;         ///< float path in MPFR or intervals: the pair's values exactly (interval midpoints)
   double best_xTy_approx = 0;
   std::optional<PhysicalSolution> physical;   ///< quasistatic problems, kSolvable
   std::optional<ConditionsCheck> conditions;  ///< (2)-(10) checked exactly on `physical`
@@ -50,6 +58,9 @@ struct UcpReport {
   long solutions = -1;              ///< enumerate: solution modes (-1 = not counted)
   std::vector<std::string> solution_modes;
   std::optional<SearchResult<Q>> proof;  ///< kJammed on an exact path: the tree for the certificate
+  /// --arith adaptive: the rung of the precision ladder whose verdict decided ("double", "interval",
+  /// "mpfr113", "mpfr256", "exact"); empty otherwise.
+  std::string decided_by;
   double seconds = 0;
 };
 

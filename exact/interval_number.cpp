@@ -1,0 +1,13 @@
+#include "exact/interval_number.h"
+
+#include <CGAL/mpq_class.h>
+
+namespace contactcert::exact {
+
+Interval to_interval(const Q& q) { return Interval(CGAL::to_interval(q)); }
+
+LpProblem<Interval> to_interval(const LpProblem<Q>& problem) {
+  return convert_lp<Interval>(problem, [](const Q& q) { return to_interval(q); });
+}
+
+}  // namespace contactcert::exact

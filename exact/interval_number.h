@@ -1,0 +1,60 @@
+// Double intervals (CGAL::Interval_nt) as a number type of the templated algorithms: the filter of the
+// precision ladder (docs/precision.md). Every operation rounds outward, so an interval computed from
+// intervals that enclose the exact data encloses the exact result; a sign is decided only when the interval
+// proves it, and otherwise sign() throws UncertainSign, as CGAL's filtered predicates do. An algorithm run
+// over intervals that does not throw has taken every decision as the exact run would have.
+//
+// Include this header only where intervals are used: it pulls in CGAL.
+#pragma once
+
+#include <CGAL/Interval_nt.h>
+
+#include "exact/adjacent_vertices.h"
+#include "exact/linalg.h"
+#include "exact/lp_problem.h"
+#include "exact/simplex.h"
+#include "exact/tangent_cone.h"
+
+namespace contactcert::exact {
+
+/// Protected intervals: each operation sets and restores the rounding mode itself (no caller duty).
+using Interval = CGAL::Interval_nt<true>;
+
+/// Thrown when an interval sign is uncertain (the interval holds 0 and another number). The same type
+/// CGAL throws when an uncertain interval comparison is used as a bool.
+using UncertainSign = CGAL::Uncertain_conversion_exception;
+
+/// Intervals: a sign is -1, 0 (only the point 0) or +1 when the interval proves it; else UncertainSign.
+/// Pivot choice as for Q (the first candidate), so that the interval run takes the exact run's decisions.
+template <>
+struct NumberTraits<Interval> {
+  static constexpr bool is_exact = false;
+  static constexpr const char* name = "interval";
+  static int sign(const Interval& x) {
+    if (x.inf() > 0) return 1;
+    if (x.sup() < 0) return -1;
+    if (x.inf() == 0 && x.sup() == 0) return 0;
+    throw UncertainSign("interval sign is uncertain");
+  }
+  static bool is_negligible(const Interval& x) { return x.inf() == 0 && x.sup() == 0; }
+  static double to_double(const Interval& x) { return CGAL::to_double(x); }
+  static bool better_pivot(const Interval&, const Interval&) { return false; }
+};
+
+/// The smallest double interval that holds q.
+Interval to_interval(const Q& q);
+/// The problem with every number enclosed in an interval.
+LpProblem<Interval> to_interval(const LpProblem<Q>& problem);
+
+extern template class SimplexTableau<Interval>;
+extern template LpResult<Interval> solve_lp<Interval>(const LpProblem<Interval>&, const LpOptions&);
+extern template LpResult<Interval> solve_lp_from_tableau<Interval>(const LpProblem<Interval>&, SimplexTableau<Interval>,
+                                                                   const LpOptions&);
+CONTACTCERT_LINALG_EXTERN(Interval)
+extern template OrthantConeRays<Interval> orthant_cone_rays<Interval>(const Mat<Interval>&, long);
+extern template struct AdjacentResult<Interval>;
+extern template AdjacentResult<Interval> adjacent_vertices<Interval>(const LpProblem<Interval>&,
+                                                                     const std::vector<Eigen::Index>&,
+                                                                     const AdjacencyOptions&);
+
+}  // namespace contactcert::exact

@@ -1,0 +1,61 @@
+// Binary floating point of any precision (MPFR, through CGAL::Gmpfr) as a number type of the templated
+// algorithms: the MPFR rungs of the precision ladder (docs/precision.md).
+//
+// Why CGAL::Gmpfr and not boost::multiprecision's mpfr_float_backend<N>: boost fixes the precision in the
+// type in decimal digits, so 53, 113, 256 or 1024 bits cannot be asked for (16 digits are 55 bits), and
+// each precision would be one more instantiation of every algorithm. A Gmpfr carries its precision (in
+// bits) and an operation rounds to the larger precision of its operands (never below MPFR's default, 53
+// bits, which contactcert does not change): one instantiation serves every rung, and the rung is the
+// precision the input is rounded to (to_mpfr).
+//
+// Include this header only where MPFR numbers are used: it pulls in CGAL.
+#pragma once
+
+#include <CGAL/Gmpfr.h>
+
+#include "exact/adjacent_vertices.h"
+#include "exact/linalg.h"
+#include "exact/lp_problem.h"
+#include "exact/simplex.h"
+#include "exact/tangent_cone.h"
+
+namespace contactcert::exact {
+
+using Mpfr = CGAL::Gmpfr;
+
+/// MPFR floats: the float path's tolerance scaled with the precision p of x. |x| < 2^(-30 p / 53) counts
+/// as zero (at p = 53, 2^-30 ~ 9.3e-10, as NumberTraits<double>): the same share of the mantissa is kept
+/// as headroom for rounding errors at every precision.
+template <>
+struct NumberTraits<Mpfr> {
+  static constexpr bool is_exact = false;
+  static constexpr const char* name = "mpfr";
+  static long zero_exponent(const Mpfr& x) { return -30L * static_cast<long>(x.get_precision()) / 53; }
+  static int sign(const Mpfr& x) {
+    if (mpfr_zero_p(x.fr()) || mpfr_get_exp(x.fr()) <= zero_exponent(x)) return 0;
+    return mpfr_sgn(x.fr());
+  }
+  static bool is_negligible(const Mpfr& x) { return sign(x) == 0; }
+  static double to_double(const Mpfr& x) { return mpfr_get_d(x.fr(), MPFR_RNDN); }
+  /// Partial pivoting, as for double.
+  static bool better_pivot(const Mpfr& candidate, const Mpfr& best) {
+    return mpfr_cmpabs(candidate.fr(), best.fr()) > 0;
+  }
+};
+
+/// q rounded to the nearest float of `bits` bits (bits >= 53, MPFR's default precision).
+Mpfr to_mpfr(const Q& q, long bits);
+/// The problem with every number rounded to `bits` bits.
+LpProblem<Mpfr> to_mpfr(const LpProblem<Q>& problem, long bits);
+
+extern template class SimplexTableau<Mpfr>;
+extern template LpResult<Mpfr> solve_lp<Mpfr>(const LpProblem<Mpfr>&, const LpOptions&);
+extern template LpResult<Mpfr> solve_lp_from_tableau<Mpfr>(const LpProblem<Mpfr>&, SimplexTableau<Mpfr>,
+                                                           const LpOptions&);
+CONTACTCERT_LINALG_EXTERN(Mpfr)
+extern template OrthantConeRays<Mpfr> orthant_cone_rays<Mpfr>(const Mat<Mpfr>&, long);
+extern template struct AdjacentResult<Mpfr>;
+extern template AdjacentResult<Mpfr> adjacent_vertices<Mpfr>(const LpProblem<Mpfr>&, const std::vector<Eigen::Index>&,
+                                                             const AdjacencyOptions&);
+
+}  // namespace contactcert::exact
