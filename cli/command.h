@@ -13,13 +13,14 @@ namespace contactcert::cli {
 /// Options every subcommand takes (SPEC section 6).
 struct CommonOptions {
   bool json = false;                ///< machine output: one JSON object on stdout
-  std::string arith = "verified";   ///< exact | float | verified
+  std::string arith = "verified";   ///< exact | float | verified | adaptive
+  double time_limit = 0;            ///< --time-limit seconds (0 = none); see main.cpp for how it is enforced
 };
 
 /// A subcommand's work, run after parsing; returns the exit code.
 using Action = std::function<int()>;
 
-/// Adds --json and --arith to a subcommand.
+/// Adds --json, --arith and --time-limit to a subcommand.
 void add_common_options(CLI::App& sub, CommonOptions& opts);
 
 // One registration function per subcommand; each stores its work in `action` when selected.

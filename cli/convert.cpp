@@ -89,8 +89,8 @@ int run_convert(const ConvertOptions& opts) {
     return 0;
   }
   std::ostream& os = std::cout;
-  os << "cone in R^" << face.dim << " (" << (in.form == geometry::ConeInput::Form::kSpan ? "span" : "face")
-     << " form in)\n";
+  os << "cone in R^" << face.dim << ", given in " << (in.form == geometry::ConeInput::Form::kSpan ? "span" : "face")
+     << " form\n";
   if (n.status == geometry::NncStatus::kEmpty) {
     os << "empty\n";
     return 0;

@@ -8,6 +8,7 @@
 #include "cli/boundary_marks.h"
 #include "cli/command.h"
 #include "cli/json_out.h"
+#include "cli/progress_line.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
@@ -91,7 +92,10 @@ int run_insert(const InsertOptions& o) {
   }
   json sweep = json::array();
   std::vector<std::pair<std::string, double>> sweep_rows;
+  ProgressLine progress("insert " + o.file + " --sweep-mu");
   for (const Q& mu : mus) {
+    progress.update("mu = " + exact::to_string(mu) + " (" + std::to_string(sweep_rows.size() + 1) + " of " +
+                    std::to_string(mus.size()) + ")");
     geometry::PlanarScene s = scene;
     for (auto& f : s.fixels) f.mu_s = f.mu_k = mu;
     const auto [i2, p2] = analyse(s);
@@ -99,6 +103,7 @@ int run_insert(const InsertOptions& o) {
     sweep.push_back({{"mu", exact_json(mu)}, {"goal_boundary_fraction_approx", frac}, {"pushes", pieces_json(p2)}});
     sweep_rows.emplace_back(exact::to_string(mu), frac);
   }
+  progress.finish();
   if (o.common.json) {
     json sets = json::array();
     for (std::size_t i = 0; i < ins.sets.size(); ++i)

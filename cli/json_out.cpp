@@ -65,6 +65,12 @@ std::string tuple_text(const exact::Vec<double>& v) {
   return s + ")";
 }
 
+std::string tuple_text(const std::vector<exact::Z>& v) {
+  std::string s = "(";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i].get_str();
+  return s + ")";
+}
+
 exact::Vec<Q> parse_number_list(const std::string& text, const std::string& option, long expected_size) {
   std::vector<Q> values;
   std::stringstream ss(text);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,7 @@ json primitive_json(const exact::Vec<exact::Q>& v);
 /// "(a, b, c)" for readable reports: exact entries in lowest terms, or doubles.
 std::string tuple_text(const exact::Vec<exact::Q>& v);
 std::string tuple_text(const exact::Vec<double>& v);
+std::string tuple_text(const std::vector<exact::Z>& v);
 /// Reads "a,b,c" (each an exact number, SPEC section 1) for option `option`; InputError names the option.
 exact::Vec<exact::Q> parse_number_list(const std::string& text, const std::string& option, long expected_size);
 /// Writes text to path ("-" = stdout); InputError if the file cannot be written.

@@ -1,8 +1,17 @@
 // contactcert: exact answers for planar rigid bodies in frictional contact.
 // Exit codes (SPEC section 6): 0 success, 1 internal error, 2 bad input or usage, 3 budget exceeded.
+//
+// --time-limit: commands with a search loop (ucp) test the deadline between units of work and end with
+// `unknown`, exit 3 and what they covered. As a backstop for every command, a watchdog thread ends the
+// process with exit 3 shortly after the limit (a 5% grace, at least one second, lets the loops report first).
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
+#include <thread>
 
 #include "cli/command.h"
 #include "exact/input_error.h"
@@ -17,10 +26,29 @@ void add_common_options(CLI::App& sub, CommonOptions& opts) {
   sub.add_flag("--json", opts.json, "Machine output: one JSON object on stdout");
   sub.add_option("--arith", opts.arith,
                  "exact: rationals only; float: doubles only, unchecked; verified: float checked and "
-                 "if need be redone exactly")
-      ->check(CLI::IsMember({"exact", "float", "verified"}))
+                 "if need be redone exactly; adaptive: double, intervals, MPFR, exact, climbed only as far as "
+                 "needed (ucp; the other commands treat it as verified)")
+      ->check(CLI::IsMember({"exact", "float", "verified", "adaptive"}))
       ->default_str("verified");
+  sub.add_option("--time-limit", opts.time_limit, "Seconds of wall clock before the run stops with exit 3 (0 = none)")
+      ->check(CLI::NonNegativeNumber)
+      ->default_str("0");
 }
+
+namespace {
+
+/// Ends the process with exit code 3 if the command is still running `limit` seconds (+ grace) from now.
+void start_watchdog(const std::string& command, double limit) {
+  const double grace = std::max(1.0, 0.05 * limit);
+  std::thread([command, limit, grace] {
+    std::this_thread::sleep_for(std::chrono::duration<double>(limit + grace));
+    std::fprintf(stderr, "\ncontactcert: %s: time limit of %g s reached before an answer (stopped)\n",
+                 command.c_str(), limit);
+    std::_Exit(3);
+  }).detach();
+}
+
+}  // namespace
 
 }  // namespace contactcert::cli
 
@@ -56,6 +84,11 @@ int main(int argc, char** argv) {
   } catch (const exact::InputError& e) {
     std::cerr << "contactcert: " << e.what() << "\n";
     return 2;
+  }
+  for (const CLI::App* sub : app.get_subcommands()) {
+    const CLI::Option* limit = sub->get_option_no_throw("--time-limit");
+    if (limit != nullptr && limit->count() > 0 && limit->as<double>() > 0)
+      cli::start_watchdog(sub->get_name(), limit->as<double>());
   }
   try {
     return action ? action() : 0;

@@ -128,14 +128,15 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene) {
   static const char* kind[4] = {"origin", "rays", "2-d sectors", "open regions"};
   for (int l = 0; l < 3; ++l) {
     std::cout << "  " << solvers::verdict_name(static_cast<solvers::StabilityVerdict>(l)) << ":";
+    int cells = 0;
     for (int d = 0; d < 4; ++d)
-      if (count[l][d]) std::cout << " " << count[l][d] << " " << kind[d];
-    std::cout << "\n";
+      if (count[l][d]) std::cout << " " << count[l][d] << " " << kind[d], cells += count[l][d];
+    std::cout << (cells == 0 ? " none\n" : "\n");
   }
   int shown = 0;
   for (const auto& c : region.cells)
     if (c.dimension == 3 && c.label == solvers::StabilityVerdict::kStronglyStable && shown++ < 5)
-      std::cout << "  strongly stable open region through g = " << primitive_json(c.point).dump() << "\n";
+      std::cout << "  strongly stable open region through g = " << tuple_text(exact::primitive(c.point)) << "\n";
   if (shown > 5) std::cout << "  ... (" << shown - 5 << " more; --json lists every cell)\n";
   if (!o.svg.empty()) std::cout << "  picture: " << o.svg << "\n";
   return 0;
@@ -190,7 +191,11 @@ int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
   return 0;
 }
 
-int run_stability(const StabilityOptions& o) {
+int run_stability(const StabilityOptions& options) {
+  // The precision ladder is the UCP's (--arith adaptive); stability's verified path already settles each LP
+  // from a float answer checked exactly, so adaptive runs (and is reported) as verified here.
+  StabilityOptions o = options;
+  if (o.common.arith == "adaptive") o.common.arith = "verified";
   const std::string text = exact::JsonInput::read_text(o.file);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
   if (int(o.region) + int(o.finger) + int(!o.wrench.empty()) != 1)

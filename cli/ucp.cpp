@@ -8,6 +8,7 @@
 
 #include "cli/command.h"
 #include "cli/json_out.h"
+#include "cli/progress_line.h"
 #include "exact/arith.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
@@ -78,9 +79,18 @@ int run_ucp(const UcpCliOptions& o) {
   opts.seed = o.seed;
   opts.max_nodes = o.max_nodes;
   opts.max_bases = o.max_bases;
+  opts.time_limit = o.common.time_limit;
+  ProgressLine progress("ucp " + o.file);
+  if (progress.enabled())
+    opts.progress = [&progress, &opts](long units, long lps) {
+      progress.update(opts.method == ucp::Method::kEnumerate
+                          ? std::to_string(units) + " modes tested"
+                          : std::to_string(units) + " nodes, " + std::to_string(lps) + " LPs");
+    };
   if (!o.certificate.empty() && opts.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
   const ucp::UcpReport r = ucp::solve_ucp(problem, opts);
+  progress.finish();
 
   std::string cert_text;
   if (!o.certificate.empty()) {
@@ -96,6 +106,7 @@ int run_ucp(const UcpCliOptions& o) {
   j["reason"] = r.reason;
   j["method"] = ucp::method_name(r.method);
   j["arith"] = exact::arith_name(r.arith);
+  if (!r.decided_by.empty()) j["decided_by"] = r.decided_by;
   if (r.x) {
     j["x"] = exact_json(*r.x);
     j["y"] = exact_json(*r.y);
@@ -138,7 +149,7 @@ int run_ucp(const UcpCliOptions& o) {
   } else {
     std::cout << "ucp " << o.file << ": " << j["status"].get<std::string>() << " (" << r.reason << ")\n";
     std::cout << "  method " << j["method"].get<std::string>() << ", arith " << j["arith"].get<std::string>()
-              << ", pairs " << r.pairs << ", LPs " << r.lps;
+              << (r.decided_by.empty() ? "" : " (decided by " + r.decided_by + ")") << ", pairs " << r.pairs << ", LPs " << r.lps;
     if (r.method == ucp::Method::kComplete) std::cout << ", nodes " << r.nodes;
     std::cout << ", " << r.seconds << " s\n";
     if (r.best_xTy && !r.x) std::cout << "  best x^T y = " << exact::to_string(*r.best_xTy) << "\n";

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# docs/formats.md must name every option of every subcommand (it is the user's reference to the command
+# line). Usage: docs_options.sh CONTACTCERT DOCS_FILE
+set -u
+cc="$1" doc="$2"
+subs=$("$cc" --help | awk 'tolower($0) ~ /^subcommands:/ {on=1; next} on && NF {print $1}')
+if [ "$(echo "$subs" | wc -w)" -lt 7 ]; then
+  echo "docs: could not read the subcommands from $cc --help"
+  exit 1
+fi
+missing=0
+checked=0
+for sub in $subs; do
+  for opt in $("$cc" "$sub" --help | grep -oE '(^|[ ,])--[a-z][a-z-]*' | tr -d ' ,' | sort -u); do
+    case "$opt" in --help) continue ;; esac
+    checked=$((checked + 1))
+    if ! grep -q -- "\`$opt" "$doc"; then
+      echo "docs: $sub $opt is not described in $doc"
+      missing=1
+    fi
+  done
+done
+echo "docs: $checked options of $(echo "$subs" | wc -w) subcommands checked"
+exit $missing
