@@ -31,5 +31,6 @@ void register_stability(CLI::App& app, Action& action);
 void register_insert(CLI::App& app, Action& action);
 void register_cone(CLI::App& app, Action& action);
 void register_convert(CLI::App& app, Action& action);
+void register_bench(CLI::App& app, Action& action);
 
 }  // namespace contactcert::cli

@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
   cli::register_insert(app, action);
   cli::register_cone(app, action);
   cli::register_convert(app, action);
+  cli::register_bench(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
