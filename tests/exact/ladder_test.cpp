@@ -10,6 +10,7 @@
 #include "exact/mpfr_number.h"
 #include "exact/simplex.h"
 #include "exact/verified_lp.h"
+#include "tests/exact/lp_expectations.h"
 #include "tests/exact/random_lp.h"
 
 namespace contactcert::exact {
@@ -122,22 +123,6 @@ TEST(Ladder, LinearAlgebraInstantiates) {
   EXPECT_EQ(rank<Mpfr>(thirds.unaryExpr([](const Q& q) { return to_mpfr(q, 113); })), 1);
 }
 
-void expect_certified(const LpProblem<Q>& p, const LpResult<Q>& r, const LpResult<Q>& e, int t) {
-  ASSERT_EQ(r.status, e.status) << "case " << t;
-  switch (r.status) {
-    case LpStatus::kOptimal:
-      ASSERT_EQ(r.value, e.value) << "case " << t;
-      ASSERT_TRUE(verify_optimal(p, r.x, r.duals)) << "case " << t;
-      break;
-    case LpStatus::kInfeasible:
-      ASSERT_TRUE(verify_farkas(p, r.farkas)) << "case " << t;
-      break;
-    case LpStatus::kUnbounded:
-      ASSERT_TRUE(verify_ray(p, r.ray)) << "case " << t;
-      break;
-  }
-}
-
 // The adaptive ladder is exact on both families; on the near-degenerate one some LPs are decided above the
 // double rung.
 TEST(Ladder, AdaptiveLpIsExactAndClimbsWhenNeeded) {
@@ -147,7 +132,7 @@ TEST(Ladder, AdaptiveLpIsExactAndClimbsWhenNeeded) {
     for (int t = 0; t < 300; ++t) {
       const LpProblem<Q> p = generate(rng);
       const LpResult<Q> r = solve_lp_ladder(p, adaptive_ladder());
-      expect_certified(p, r, solve_lp<Q>(p), t);
+      testing::expect_certified_like(p, r, solve_lp<Q>(p), t);
       above_double += r.decided_by == DecidedBy::kFloatBasisCheckedExactly && r.proposed_by.kind != Rung::Kind::kDouble;
     }
     if (generate == near_degenerate_lp) {
@@ -159,7 +144,7 @@ TEST(Ladder, AdaptiveLpIsExactAndClimbsWhenNeeded) {
   const std::vector<Rung> filtered{{Rung::Kind::kInterval, 0}, {Rung::Kind::kExact, 0}};
   for (int t = 0; t < 300; ++t) {
     const LpProblem<Q> p = testing::random_lp(rng);
-    expect_certified(p, solve_lp_ladder(p, filtered), solve_lp<Q>(p), t);
+    testing::expect_certified_like(p, solve_lp_ladder(p, filtered), solve_lp<Q>(p), t);
   }
 }
 

@@ -6,28 +6,12 @@
 
 #include "exact/rounded_certificate.h"
 #include "exact/simplex.h"
+#include "tests/exact/lp_expectations.h"
 #include "tests/exact/random_lp.h"
 #include "tests/reference/cdd_lp.h"
 
 namespace contactcert::exact {
 namespace {
-
-void expect_same(const LpProblem<Q>& p, const LpResult<Q>& v, const LpResult<Q>& e, int t) {
-  ASSERT_EQ(v.status, e.status) << "case " << t;
-  switch (v.status) {
-    case LpStatus::kOptimal:
-      ASSERT_EQ(v.value, e.value) << "case " << t;
-      ASSERT_TRUE(verify_optimal(p, v.x, v.duals)) << "case " << t;
-      break;
-    case LpStatus::kInfeasible:
-      ASSERT_TRUE(verify_farkas(p, v.farkas)) << "case " << t;
-      break;
-    case LpStatus::kUnbounded:
-      ASSERT_TRUE(verify_ray(p, v.ray)) << "case " << t;
-      ASSERT_EQ(p.A * v.x, p.b) << "case " << t;
-      break;
-  }
-}
 
 // The verified path equals the exact simplex (status, value, valid certificates) on the random LPs of
 // simplex_test, and the float basis usually checks out without exact pivots.
@@ -38,7 +22,7 @@ TEST(VerifiedLp, EqualsExactOnRandomLps) {
     const LpProblem<Q> p = testing::random_lp(rng);
     const LpResult<Q> e = solve_lp<Q>(p);
     const LpResult<Q> v = solve_lp_verified(p);
-    expect_same(p, v, e, t);
+    testing::expect_certified_like(p, v, e, t);
     if (v.decided_by == DecidedBy::kFloatBasisCheckedExactly) {
       ++checked;
       EXPECT_EQ(v.pivots, 0);
@@ -103,7 +87,7 @@ TEST(VerifiedLp, IllConditionedLpsEqualExact) {
       if (pct(rng) < 30) p.b(i) += eps * small(rng);
     const LpResult<Q> e = solve_lp<Q>(p);
     const LpResult<Q> v = solve_lp_verified(p);
-    expect_same(p, v, e, t);
+    testing::expect_certified_like(p, v, e, t);
     const reference::CddLpResult ref = reference::cdd_solve_lp(p);
     ASSERT_EQ(v.status, ref.status) << "case " << t;
     if (v.status == LpStatus::kOptimal) {

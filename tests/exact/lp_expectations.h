@@ -1,0 +1,29 @@
+// GoogleTest expectations shared by the LP tests: a result must carry the same status and optimal value as a
+// reference, and a certificate (optimal duals, Farkas vector, or ray) that verifies exactly.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include "exact/simplex.h"
+
+namespace contactcert::exact::testing {
+
+/// `r` agrees with the reference `e` on problem `p`, and every certificate of `r` verifies (case `t`).
+inline void expect_certified_like(const LpProblem<Q>& p, const LpResult<Q>& r, const LpResult<Q>& e, int t) {
+  ASSERT_EQ(r.status, e.status) << "case " << t;
+  switch (r.status) {
+    case LpStatus::kOptimal:
+      ASSERT_EQ(r.value, e.value) << "case " << t;
+      ASSERT_TRUE(verify_optimal(p, r.x, r.duals)) << "case " << t;
+      break;
+    case LpStatus::kInfeasible:
+      ASSERT_TRUE(verify_farkas(p, r.farkas)) << "case " << t;
+      break;
+    case LpStatus::kUnbounded:
+      ASSERT_TRUE(verify_ray(p, r.ray)) << "case " << t;
+      ASSERT_EQ(p.A * r.x, p.b) << "case " << t;
+      break;
+  }
+}
+
+}  // namespace contactcert::exact::testing
