@@ -43,10 +43,6 @@ struct Plan {
 };
 constexpr double kRepeatSeconds = 0.5;
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
 /// Runs one instance on every rung: the first run's answer, the median time over the repeats.
 InstanceRecord run_instance(const bench::Instance& inst, const std::vector<bench::Rung>& rungs, int repeats) {
   InstanceRecord rec{inst.family, bench::question_kind(inst.question), inst.knob, inst.difficulty, inst.seed, {}};
@@ -77,7 +73,7 @@ InstanceRecord run_instance(const bench::Instance& inst, const std::vector<bench
 
 int run_bench(const BenchOptions& o) {
   const auto start = std::chrono::steady_clock::now();
-  make_report_dir(o.out);  // fail before the run, not after it
+  create_output_dir(o.out);  // fail before the run, not after it
   std::vector<bench::Rung> rungs;
   try {
     rungs = bench::parse_rungs(o.rungs);

@@ -479,15 +479,8 @@ std::string ladder_text(const BenchRun& run) {
   return s + "\n" + kLadderLegend + "\n";
 }
 
-void make_report_dir(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir, ec))
-    throw exact::InputError("command line", "--out", "a directory that can be created, not " + dir);
-}
-
 std::vector<std::string> write_bench_report(const BenchRun& run, const std::string& dir) {
-  make_report_dir(dir);
+  create_output_dir(dir);
   const auto path = [&](const char* name) { return (std::filesystem::path(dir) / name).string(); };
   std::vector<std::string> written = {path("report.txt"), path("report.md"), path("time_vs_error.svg"),
                                       path("bench.json"), path("precision_ladder.svg")};

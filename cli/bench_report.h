@@ -54,8 +54,6 @@ std::string bench_svg(const BenchRun& run);
 std::string ladder_svg(const BenchRun& run);
 /// The precision ladder as text: per family, a row per rung (median time, wrong verdicts, undecided, worst error).
 std::string ladder_text(const BenchRun& run);
-/// Creates DIR if needed; InputError (exit 2) naming --out if it cannot.
-void make_report_dir(const std::string& dir);
 /// Writes DIR/report.txt, report.md, time_vs_error.svg, bench.json, precision_ladder.svg and index.html; returns
 /// the paths.
 std::vector<std::string> write_bench_report(const BenchRun& run, const std::string& dir);

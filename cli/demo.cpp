@@ -45,10 +45,6 @@ std::string rows_text(const exact::Mat<Q>& M) {
   return s.empty() ? "none" : s;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 /// Section 4 and Figure 4: the wrench cone of each bundled bt2002 scene's mode (named in the file name).
 void wrench_cones(const DemoOptions& o, HtmlReport& rep) {
   rep.heading("Wrench cones (Balkcom and Trinkle 2002, sections 4-6)");
@@ -209,10 +205,7 @@ void quasistatic(const DemoOptions& o, HtmlReport& rep) {
 
 int run_demo(const DemoOptions& o) {
   if (!fs::is_directory(o.scenes)) throw exact::InputError(o.scenes, "", "the scenes folder does not exist");
-  std::error_code ec;
-  fs::create_directories(o.out, ec);
-  if (ec || !fs::is_directory(o.out))
-    throw exact::InputError(o.out, "--out", "a folder that can be created (" + ec.message() + ")");
+  create_output_dir(o.out);
   const auto t0 = std::chrono::steady_clock::now();
   HtmlReport rep("contactcert demo: both papers, exactly");
   rep.paragraph("Every number below is exact (rational arithmetic); every 'no' carries a certificate that the "

@@ -1,5 +1,6 @@
 #include "cli/json_out.h"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -99,6 +100,17 @@ void write_text_file(const std::string& path, const std::string& text) {
   std::ofstream f(path);
   if (!f) throw exact::InputError(path, "", "cannot open the file for writing");
   f << text;
+}
+
+void create_output_dir(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw exact::InputError(dir, "--out", "a folder that can be created (" + ec.message() + ")");
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
 }  // namespace contactcert::cli

@@ -2,6 +2,7 @@
 // terms, float views beside them under `_approx` keys, and writing a result file.
 #pragma once
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,9 @@ std::string tuple_text(const std::vector<exact::Z>& v);
 exact::Vec<exact::Q> parse_number_list(const std::string& text, const std::string& option, long expected_size);
 /// Writes text to path ("-" = stdout); InputError if the file cannot be written.
 void write_text_file(const std::string& path, const std::string& text);
+/// Creates the folder `dir` of a command's files (and its parents); InputError naming --out otherwise.
+void create_output_dir(const std::string& dir);
+/// Wall-clock seconds since t.
+double seconds_since(std::chrono::steady_clock::time_point t);
 
 }  // namespace contactcert::cli
