@@ -9,11 +9,7 @@
 
 #include <CGAL/Interval_nt.h>
 
-#include "exact/adjacent_vertices.h"
-#include "exact/linalg.h"
-#include "exact/lp_problem.h"
-#include "exact/simplex.h"
-#include "exact/tangent_cone.h"
+#include "exact/lp_layer_extern.h"
 
 namespace contactcert::exact {
 
@@ -46,15 +42,6 @@ Interval to_interval(const Q& q);
 /// The problem with every number enclosed in an interval.
 LpProblem<Interval> to_interval(const LpProblem<Q>& problem);
 
-extern template class SimplexTableau<Interval>;
-extern template LpResult<Interval> solve_lp<Interval>(const LpProblem<Interval>&, const LpOptions&);
-extern template LpResult<Interval> solve_lp_from_tableau<Interval>(const LpProblem<Interval>&, SimplexTableau<Interval>,
-                                                                   const LpOptions&);
-CONTACTCERT_LINALG_EXTERN(Interval)
-extern template OrthantConeRays<Interval> orthant_cone_rays<Interval>(const Mat<Interval>&, long);
-extern template struct AdjacentResult<Interval>;
-extern template AdjacentResult<Interval> adjacent_vertices<Interval>(const LpProblem<Interval>&,
-                                                                     const std::vector<Eigen::Index>&,
-                                                                     const AdjacencyOptions&);
+CONTACTCERT_LP_LAYER_EXTERN(Interval)
 
 }  // namespace contactcert::exact

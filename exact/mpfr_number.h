@@ -13,11 +13,7 @@
 
 #include <CGAL/Gmpfr.h>
 
-#include "exact/adjacent_vertices.h"
-#include "exact/linalg.h"
-#include "exact/lp_problem.h"
-#include "exact/simplex.h"
-#include "exact/tangent_cone.h"
+#include "exact/lp_layer_extern.h"
 
 namespace contactcert::exact {
 
@@ -48,14 +44,6 @@ Mpfr to_mpfr(const Q& q, long bits);
 /// The problem with every number rounded to `bits` bits.
 LpProblem<Mpfr> to_mpfr(const LpProblem<Q>& problem, long bits);
 
-extern template class SimplexTableau<Mpfr>;
-extern template LpResult<Mpfr> solve_lp<Mpfr>(const LpProblem<Mpfr>&, const LpOptions&);
-extern template LpResult<Mpfr> solve_lp_from_tableau<Mpfr>(const LpProblem<Mpfr>&, SimplexTableau<Mpfr>,
-                                                           const LpOptions&);
-CONTACTCERT_LINALG_EXTERN(Mpfr)
-extern template OrthantConeRays<Mpfr> orthant_cone_rays<Mpfr>(const Mat<Mpfr>&, long);
-extern template struct AdjacentResult<Mpfr>;
-extern template AdjacentResult<Mpfr> adjacent_vertices<Mpfr>(const LpProblem<Mpfr>&, const std::vector<Eigen::Index>&,
-                                                             const AdjacencyOptions&);
+CONTACTCERT_LP_LAYER_EXTERN(Mpfr)
 
 }  // namespace contactcert::exact
