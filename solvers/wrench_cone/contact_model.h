@@ -57,7 +57,8 @@ Mat<Q> jacobian(const geometry::PlanarScene& scene);
 
 /// J, A, B, C for the scene, with M^-1 = diag(1, 1, m/I) scaled by the positive numerator of I/m
 /// (only I/m matters and the cones are invariant under scaling M; with integer J, A and B are
-/// integer matrices). For M = I (I/m = 1) these are literally the paper's matrices. The float model
+/// integer matrices, computed and held in std::int64_t, or in Z if they outgrow it). For M = I
+/// (I/m = 1) these are literally the paper's matrices. The float model
 /// (T = double) uses unit normals and M^-1 = diag(1, 1, m/I) instead, to keep entries of order one.
 template <class T>
 ContactModel<T> contact_model(const geometry::PlanarScene& scene);
