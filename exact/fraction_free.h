@@ -13,6 +13,7 @@
 #include <limits>
 #include <numeric>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "exact/number.h"
@@ -186,6 +187,102 @@ std::vector<R> to_ring_rows(const Eigen::MatrixBase<Derived>& A) {
   }
   return out;
 }
+
+/// Value-returning ring arithmetic for short formulas (std::int64_t: checked, see above).
+inline Z mul(const Z& a, const Z& b) { return a * b; }
+inline Z add(const Z& a, const Z& b) { return a + b; }
+inline Z sub(const Z& a, const Z& b) { return a - b; }
+inline double mul(double a, double b) { return a * b; }
+inline double add(double a, double b) { return a + b; }
+inline double sub(double a, double b) { return a - b; }
+
+/// The non-negative gcd, and a / b for b dividing a (exact rings).
+inline std::int64_t gcd(std::int64_t a, std::int64_t b) { return std::gcd(a, b); }
+inline Z gcd(const Z& a, const Z& b) {
+  Z g;
+  mpz_gcd(g.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  return g;
+}
+inline std::int64_t divexact(std::int64_t a, std::int64_t b) { return a / b; }
+inline Z divexact(const Z& a, const Z& b) {
+  Z q;
+  mpz_divexact(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  return q;
+}
+
+/// An integer as a ring element.
+inline void from_integer(const Z& x, std::int64_t& out) {
+  if (!mpz_fits_slong_p(x.get_mpz_t())) throw RingOverflow{};
+  out = checked(mpz_get_si(x.get_mpz_t()));
+}
+inline void from_integer(const Z& x, Z& out) { out = x; }
+inline void from_integer(long x, std::int64_t& out) { out = checked(x); }
+inline void from_integer(long x, Z& out) { out = x; }
+inline void from_integer(long x, double& out) { out = static_cast<double>(x); }
+
+/// A rational x = num / den (den > 0, lowest terms) in an exact ring; in double, x rounded and 1.
+inline void from_rational(const Q& x, std::int64_t& num, std::int64_t& den) {
+  from_integer(x.get_num(), num);
+  from_integer(x.get_den(), den);
+}
+inline void from_rational(const Q& x, Z& num, Z& den) {
+  num = x.get_num();
+  den = x.get_den();
+}
+inline void from_rational(const Q& x, double& num, double& den) {
+  num = x.get_d();
+  den = 1;
+}
+
+/// An integer matrix for exact work in either exact ring: held in std::int64_t when every entry fits,
+/// in Z otherwise (row-major). Reading a Z-held matrix in std::int64_t throws RingOverflow, so that
+/// with_exact_ring restarts in Z.
+class IntegerMatrix {
+ public:
+  IntegerMatrix() = default;
+  IntegerMatrix(Index rows, Index cols, std::vector<std::int64_t> entries)
+      : rows_(rows), cols_(cols), fixed_(std::move(entries)) {}
+  IntegerMatrix(Index rows, Index cols, std::vector<Z> entries)
+      : rows_(rows), cols_(cols), wide_(std::move(entries)), is_wide_(true) {}
+  Index rows() const { return rows_; }
+  Index cols() const { return cols_; }
+  bool is_wide() const { return is_wide_; }
+  void get(Index i, Index j, std::int64_t& out) const {
+    if (is_wide_) throw RingOverflow{};
+    out = fixed_[at(i, j)];
+  }
+  void get(Index i, Index j, Z& out) const {
+    if (is_wide_)
+      out = wide_[at(i, j)];
+    else
+      out = static_cast<long>(fixed_[at(i, j)]);
+  }
+  /// The same matrix over Q.
+  Mat<Q> to_field() const {
+    Mat<Q> M(rows_, cols_);
+    Z x;
+    for (Index i = 0; i < rows_; ++i)
+      for (Index j = 0; j < cols_; ++j) {
+        get(i, j, x);
+        M(i, j) = Q(x);
+      }
+    return M;
+  }
+
+ private:
+  std::size_t at(Index i, Index j) const { return static_cast<std::size_t>(i * cols_ + j); }
+  Index rows_ = 0, cols_ = 0;
+  std::vector<std::int64_t> fixed_;
+  std::vector<Z> wide_;
+  bool is_wide_ = false;
+};
+
+/// Entry (i, j) of a matrix over the ring: an IntegerMatrix (exact rings) or a double matrix.
+template <class R>
+void get(const IntegerMatrix& M, Index i, Index j, R& out) {
+  M.get(i, j, out);
+}
+inline void get(const Mat<double>& M, Index i, Index j, double& out) { out = M(i, j); }
 
 /// A ring element as an element of the field T.
 template <class T>

@@ -153,25 +153,16 @@ class DoubleDescription {
   std::vector<std::uint64_t> common_;
 };
 
-// Ring rows of A, without zero rows and duplicates, in lexicographic order.
+// The rows of A as ring rows.
 template <class T, class R>
 std::vector<std::vector<R>> ring_rows(const Mat<T>& A) {
   const Index k = A.cols();
-  std::vector<std::vector<R>> rows;
+  std::vector<std::vector<R>> rows(static_cast<size_t>(A.rows()), std::vector<R>(static_cast<size_t>(k)));
   std::vector<T> buf(static_cast<size_t>(k));
-  std::vector<R> r(static_cast<size_t>(k));
   for (Index i = 0; i < A.rows(); ++i) {
-    bool zero = true;
-    for (Index j = 0; j < k; ++j) {
-      buf[static_cast<size_t>(j)] = A(i, j);
-      if (!is_zero(A(i, j))) zero = false;
-    }
-    if (zero) continue;
-    rg::to_ring(buf.data(), k, r.data());
-    rows.push_back(r);
+    for (Index j = 0; j < k; ++j) buf[static_cast<size_t>(j)] = A(i, j);
+    rg::to_ring(buf.data(), k, rows[static_cast<size_t>(i)].data());
   }
-  std::sort(rows.begin(), rows.end());
-  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
   return rows;
 }
 
@@ -323,6 +314,29 @@ std::optional<std::vector<std::vector<R>>> pointed_extreme_rays(const std::vecto
   return out;
 }
 
+}  // namespace
+
+template <class R>
+std::optional<std::vector<std::vector<R>>> pointed_cone_rays(std::vector<std::vector<R>> rows, Index k,
+                                                             const DdBudget& budget) {
+  // Zero rows and duplicates dropped, lexicographic order (a fixed processing order).
+  std::erase_if(rows, [](const std::vector<R>& r) {
+    return std::all_of(r.begin(), r.end(), [](const R& x) { return rg::sign(x) == 0; });
+  });
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  return pointed_extreme_rays<R>(rows, k, budget);
+}
+
+template std::optional<std::vector<std::vector<double>>> pointed_cone_rays<double>(std::vector<std::vector<double>>,
+                                                                                   Index, const DdBudget&);
+template std::optional<std::vector<std::vector<std::int64_t>>> pointed_cone_rays<std::int64_t>(
+    std::vector<std::vector<std::int64_t>>, Index, const DdBudget&);
+template std::optional<std::vector<std::vector<Z>>> pointed_cone_rays<Z>(std::vector<std::vector<Z>>, Index,
+                                                                         const DdBudget&);
+
+namespace {
+
 template <class T>
 struct Generators {
   Mat<T> rays;
@@ -337,7 +351,7 @@ Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBu
   // Fast path: no equalities and rank A = n (pointed): no change of coordinates.
   if (E.rows() == 0) {
     std::optional<Mat<T>> rays = exact::with_exact_ring<T>([&]<class R>() -> std::optional<Mat<T>> {
-      const auto y = pointed_extreme_rays<R>(ring_rows<T, R>(A), n, budget);
+      const auto y = pointed_cone_rays<R>(ring_rows<T, R>(A), n, budget);
       if (!y) return std::nullopt;
       Mat<T> M(static_cast<Index>(y->size()), n);
       for (Index r = 0; r < M.rows(); ++r)
@@ -367,7 +381,7 @@ Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBu
   normalize_columns<T>(M);
   const Mat<T> AM = multiply<T>(A, M);
   out.rays = exact::with_exact_ring<T>([&]<class R>() {
-    const auto rays = pointed_extreme_rays<R>(ring_rows<T, R>(AM), k, budget);
+    const auto rays = pointed_cone_rays<R>(ring_rows<T, R>(AM), k, budget);
     if (!rays) throw std::logic_error("double description: rank deficient after removing the lineality space");
     // Back to x = M y, as primitive (Q) / unit max-norm (double) rows.
     Mat<T> X(static_cast<Index>(rays->size()), n);

@@ -7,6 +7,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
 
 #include "geometry/face_cone.h"
 #include "geometry/span_cone.h"
@@ -30,6 +33,21 @@ FaceCone<T> to_face(const SpanCone<T>& cone, const DdBudget& budget = {});
 /// of the cone when the cone is not empty (see nnc_cone.h for strict cones).
 template <class T>
 SpanCone<T> to_span(const FaceCone<T>& cone, const DdBudget& budget = {});
+
+/// The extreme rays of the pointed cone { y in R^k : a . y <= 0 for every row a } for rows already in
+/// the ring R of exact/fraction_free.h (std::int64_t, Z or double), as ring rows (primitive integers;
+/// unit max-norm in double); nullopt when the rows have rank < k (the cone is not pointed: to_face /
+/// to_span handle that case). The engine of to_face and to_span. std::int64_t throws RingOverflow.
+template <class R>
+std::optional<std::vector<std::vector<R>>> pointed_cone_rays(std::vector<std::vector<R>> rows, Eigen::Index k,
+                                                             const DdBudget& budget = {});
+
+extern template std::optional<std::vector<std::vector<double>>> pointed_cone_rays<double>(
+    std::vector<std::vector<double>>, Eigen::Index, const DdBudget&);
+extern template std::optional<std::vector<std::vector<std::int64_t>>> pointed_cone_rays<std::int64_t>(
+    std::vector<std::vector<std::int64_t>>, Eigen::Index, const DdBudget&);
+extern template std::optional<std::vector<std::vector<Z>>> pointed_cone_rays<Z>(std::vector<std::vector<Z>>,
+                                                                                Eigen::Index, const DdBudget&);
 
 extern template FaceCone<double> to_face<double>(const SpanCone<double>&, const DdBudget&);
 extern template FaceCone<Q> to_face<Q>(const SpanCone<Q>&, const DdBudget&);

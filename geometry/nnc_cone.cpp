@@ -1,6 +1,8 @@
 #include "geometry/nnc_cone.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "exact/fraction_free.h"
@@ -13,29 +15,93 @@ using Index = Eigen::Index;
 using exact::is_zero;
 using exact::sign;
 
-// For every row s of S, the rays r (rows of R) with s . r == 0, as a bit per ray. Decided in the ring
-// of T on rows and rays scaled by positive factors (the same signs).
+// For every ring row s of S, the ring rays r with s . r == 0, as a bit per ray.
+template <class Rg>
+std::vector<std::vector<bool>> ring_zero_sets(const std::vector<std::vector<Rg>>& rays,
+                                              const std::vector<std::vector<Rg>>& S) {
+  std::vector<std::vector<bool>> z(S.size(), std::vector<bool>(rays.size()));
+  Rg x;
+  for (std::size_t s = 0; s < S.size(); ++s)
+    for (std::size_t r = 0; r < rays.size(); ++r) {
+      exact::ring::dot(S[s].data(), rays[r].data(), static_cast<Index>(rays[r].size()), x);
+      z[s][r] = exact::ring::sign(x) == 0;
+    }
+  return z;
+}
+
+// The rows of A as ring rows.
+template <class Rg, class T>
+std::vector<std::vector<Rg>> ring_rows(const Mat<T>& A) {
+  const std::vector<Rg> flat = exact::ring::to_ring_rows<Rg>(A);
+  std::vector<std::vector<Rg>> rows(static_cast<size_t>(A.rows()));
+  for (Index i = 0; i < A.rows(); ++i)
+    rows[static_cast<size_t>(i)].assign(flat.begin() + i * A.cols(), flat.begin() + (i + 1) * A.cols());
+  return rows;
+}
+
+// For every row s of S, the rays r (rows of R) with s . r == 0. Decided in the ring of T on rows and
+// rays scaled by positive factors (the same signs).
 template <class T>
 std::vector<std::vector<bool>> zero_sets(const Mat<T>& R, const Mat<T>& S) {
-  return exact::with_exact_ring<T>([&]<class Rg>() {
-    namespace rg = exact::ring;
-    const Index k = R.cols();
-    const std::vector<Rg> rays = rg::to_ring_rows<Rg>(R), rows = rg::to_ring_rows<Rg>(S);
-    std::vector<std::vector<bool>> z(static_cast<size_t>(S.rows()), std::vector<bool>(static_cast<size_t>(R.rows())));
-    Rg x;
-    for (Index s = 0; s < S.rows(); ++s)
-      for (Index r = 0; r < R.rows(); ++r) {
-        rg::dot(&rows[static_cast<size_t>(s * k)], &rays[static_cast<size_t>(r * k)], k, x);
-        z[static_cast<size_t>(s)][static_cast<size_t>(r)] = rg::sign(x) == 0;
-      }
-    return z;
-  });
+  return exact::with_exact_ring<T>([&]<class Rg>() { return ring_zero_sets<Rg>(ring_rows<Rg>(R), ring_rows<Rg>(S)); });
 }
 
 bool subset(const std::vector<bool>& a, const std::vector<bool>& b) {
   for (size_t i = 0; i < a.size(); ++i)
     if (a[i] && !b[i]) return false;
   return true;
+}
+
+// The maximal faces missing from the cone: the maximal sets among the Z_s of the strict rows (each a
+// bit per closure ray), and for each the facets through it (by their ray sets), which is the facet
+// itself when the face is a facet (marked in open_facets).
+struct MissingFaces {
+  std::vector<std::vector<bool>> maximal;
+  std::vector<std::vector<Index>> facets;  ///< per maximal face: the facets whose normals sum to its strict row
+  std::vector<bool> open_facets;
+};
+
+MissingFaces missing_faces(std::vector<std::vector<bool>> zs, const std::vector<std::vector<bool>>& facet_rays) {
+  MissingFaces out;
+  std::sort(zs.begin(), zs.end());
+  zs.erase(std::unique(zs.begin(), zs.end()), zs.end());
+  for (size_t i = 0; i < zs.size(); ++i) {
+    bool dominated = false;
+    for (size_t j = 0; j < zs.size() && !dominated; ++j) dominated = j != i && subset(zs[i], zs[j]);
+    if (!dominated) out.maximal.push_back(zs[i]);
+  }
+  out.open_facets.assign(facet_rays.size(), false);
+  for (const auto& g : out.maximal) {
+    std::vector<Index> through;
+    for (size_t f = 0; f < facet_rays.size(); ++f) {
+      if (!subset(g, facet_rays[f])) continue;
+      if (facet_rays[f] == g) {
+        out.open_facets[f] = true;
+        through.assign(1, static_cast<Index>(f));
+        break;
+      }
+      through.push_back(static_cast<Index>(f));
+    }
+    out.facets.push_back(std::move(through));
+  }
+  return out;
+}
+
+// The empty cone's face form: { g = 0, 0 . g < 0 } (canonical equalities: the identity rows, sorted).
+template <class T>
+FaceCone<T> empty_face(Index d) {
+  const Mat<T> all =
+      canonical(FaceCone<T>::from_rows(d, Mat<T>(0, d), Mat<T>(Mat<T>::Identity(d, d)), Mat<T>(0, d))).equalities;
+  return FaceCone<T>::from_rows(d, Mat<T>(0, d), all, Mat<T>(Mat<T>::Zero(1, d)));
+}
+
+template <class T, class Rg>
+Mat<T> to_matrix(const std::vector<std::vector<Rg>>& rows, Index d) {
+  Mat<T> M(static_cast<Index>(rows.size()), d);
+  for (Index i = 0; i < M.rows(); ++i)
+    for (Index j = 0; j < d; ++j)
+      M(i, j) = exact::ring::to_field<T>(rows[static_cast<size_t>(i)][static_cast<size_t>(j)]);
+  return M;
 }
 
 template <class T>
@@ -61,16 +127,13 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
   out.closure = canonical(to_span(cone, budget));
   const Mat<T>& R = out.closure.rays;
   // Z_s for every strict row; the cone is empty iff some Z_s holds every ray (s vanishes on K').
-  std::vector<std::vector<bool>> zs = zero_sets<T>(R, cone.strict);
+  const std::vector<std::vector<bool>> zs = zero_sets<T>(R, cone.strict);
   bool empty = false;
   for (const auto& z : zs)
     if (std::all_of(z.begin(), z.end(), [](bool b) { return b; })) empty = true;
   if (empty) {
     out.status = NncStatus::kEmpty;
-    // Encoded as { g = 0, 0 . g < 0 } (canonical equalities: the identity rows, sorted).
-    const Mat<T> all =
-        canonical(FaceCone<T>::from_rows(d, Mat<T>(0, d), Mat<T>(Mat<T>::Identity(d, d)), Mat<T>(0, d))).equalities;
-    out.face = FaceCone<T>::from_rows(d, Mat<T>(0, d), all, Mat<T>(Mat<T>::Zero(1, d)));
+    out.face = empty_face<T>(d);
     out.closure = SpanCone<T>::from_rows(d, Mat<T>(0, d), Mat<T>(0, d));
     out.closure_face = FaceCone<T>::from_rows(d, Mat<T>(0, d), out.face.equalities, Mat<T>(0, d));
     return out;
@@ -79,34 +142,17 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
   out.closure_face = canonical(to_face(out.closure, budget));
   const Mat<T>& F = out.closure_face.inequalities;
 
-  // Maximal missing faces: the maximal sets among the Z_s (duplicates removed).
-  std::sort(zs.begin(), zs.end());
-  zs.erase(std::unique(zs.begin(), zs.end()), zs.end());
-  std::vector<std::vector<bool>> maximal;
-  for (size_t i = 0; i < zs.size(); ++i) {
-    bool dominated = false;
-    for (size_t j = 0; j < zs.size() && !dominated; ++j) dominated = j != i && subset(zs[i], zs[j]);
-    if (!dominated) maximal.push_back(zs[i]);
-  }
-  const std::vector<std::vector<bool>> facet_rays = zero_sets<T>(R, F);
-  out.open_facets.assign(static_cast<size_t>(F.rows()), false);
+  const MissingFaces missing = missing_faces(zs, zero_sets<T>(R, F));
+  out.open_facets = missing.open_facets;
   std::vector<Vec<T>> strict_rows;
-  for (const auto& g : maximal) {
+  for (size_t m = 0; m < missing.maximal.size(); ++m) {
+    const std::vector<bool>& g = missing.maximal[m];
     std::vector<Index> rays;
     for (size_t r = 0; r < g.size(); ++r)
       if (g[r]) rays.push_back(static_cast<Index>(r));
     out.open_faces.push_back(rays);
-    // The facets through g; g is one of them iff it is a facet itself (same ray set).
     Vec<T> s = Vec<T>::Zero(d);
-    for (Index f = 0; f < F.rows(); ++f) {
-      if (!subset(g, facet_rays[static_cast<size_t>(f)])) continue;
-      if (facet_rays[static_cast<size_t>(f)] == g) {
-        out.open_facets[static_cast<size_t>(f)] = true;
-        s = F.row(f).transpose();
-        break;
-      }
-      s += F.row(f).transpose();
-    }
+    for (Index f : missing.facets[m]) s += F.row(f).transpose();
     strict_rows.push_back(s);
   }
   // No missing face: the cone is its closure, whose face form is canonical already.
@@ -120,6 +166,42 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
   out.face = canonical(
       FaceCone<T>::from_rows(d, stack<T>(closed_rows, d), out.closure_face.equalities, stack<T>(strict_rows, d)));
   return out;
+}
+
+template <class T, class R>
+std::optional<FaceCone<T>> pointed_nnc_face(const std::vector<std::vector<R>>& F, const std::vector<std::vector<R>>& S,
+                                            Index d, const DdBudget& budget) {
+  namespace rg = exact::ring;
+  // The steps of nnc_form in the ring; canonical rows are primitive, deduplicated and sorted, and
+  // without equalities or lines nothing else is reduced.
+  std::vector<std::vector<R>> rows = F;
+  rows.insert(rows.end(), S.begin(), S.end());
+  auto rays = pointed_cone_rays<R>(std::move(rows), d, budget);  // K' = { F g <= 0, S g <= 0 }
+  if (!rays || rays->empty()) return std::nullopt;
+  std::sort(rays->begin(), rays->end());
+  const std::vector<std::vector<bool>> zs = ring_zero_sets<R>(*rays, S);
+  for (const auto& z : zs)
+    if (std::all_of(z.begin(), z.end(), [](bool b) { return b; })) return empty_face<T>(d);
+  // Facets of the closure: the extreme rays of its polar, pointed iff the closure is full-dimensional.
+  auto facets = pointed_cone_rays<R>(*rays, d, budget);
+  if (!facets) return std::nullopt;
+  std::sort(facets->begin(), facets->end());
+  const MissingFaces missing = missing_faces(zs, ring_zero_sets<R>(*rays, *facets));
+  std::vector<std::vector<R>> closed, strict;
+  for (size_t f = 0; f < facets->size(); ++f)
+    if (!missing.open_facets[f]) closed.push_back((*facets)[f]);
+  for (const std::vector<Index>& through : missing.facets) {
+    std::vector<R> s(static_cast<size_t>(d), R(0));
+    for (Index f : through)
+      for (Index j = 0; j < d; ++j)
+        s[static_cast<size_t>(j)] =
+            rg::add(s[static_cast<size_t>(j)], (*facets)[static_cast<size_t>(f)][static_cast<size_t>(j)]);
+    rg::normalize(s.data(), d);
+    if (std::any_of(s.begin(), s.end(), [](const R& x) { return rg::sign(x) != 0; })) strict.push_back(std::move(s));
+  }
+  std::sort(strict.begin(), strict.end());
+  strict.erase(std::unique(strict.begin(), strict.end()), strict.end());
+  return FaceCone<T>::from_rows(d, to_matrix<T, R>(closed, d), Mat<T>(0, d), to_matrix<T, R>(strict, d));
 }
 
 template <class T>
@@ -156,6 +238,12 @@ PointPosition<T> locate(const FaceCone<T>& cone, const Vec<T>& g) {
   p.location = p.tight.empty() ? PointLocation::kInterior : PointLocation::kBoundary;
   return p;
 }
+
+template std::optional<FaceCone<Q>> pointed_nnc_face<Q, std::int64_t>(const std::vector<std::vector<std::int64_t>>&,
+                                                                      const std::vector<std::vector<std::int64_t>>&,
+                                                                      Index, const DdBudget&);
+template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const std::vector<std::vector<Z>>&,
+                                                           const std::vector<std::vector<Z>>&, Index, const DdBudget&);
 
 #define CONTACTCERT_NNC_INSTANTIATE(T)                                  \
   template struct NncForm<T>;                                           \

@@ -6,6 +6,8 @@
 // faces inside some Z_s. This is the combinatorial form of the limit k -> 0+ of section 5.6 / Theorem 1.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "geometry/double_description.h"
@@ -35,6 +37,21 @@ struct NncForm {
 /// Resolves a face cone with strict rows exactly. For T = Q the result is canonical.
 template <class T>
 NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget = {});
+
+/// nnc_form(...).face of { F g <= 0, S g < 0 } for rows F, S (d entries each) in an exact ring R of
+/// exact/fraction_free.h, computed in R and turned into T = Q once, when the closure is pointed and
+/// full-dimensional or the cone is empty (the common case of a wrench cone); nullopt otherwise, and
+/// then nnc_form decides. std::int64_t throws RingOverflow.
+template <class T, class R>
+std::optional<FaceCone<T>> pointed_nnc_face(const std::vector<std::vector<R>>& F, const std::vector<std::vector<R>>& S,
+                                            Eigen::Index d, const DdBudget& budget = {});
+
+extern template std::optional<FaceCone<Q>> pointed_nnc_face<Q, std::int64_t>(
+    const std::vector<std::vector<std::int64_t>>&, const std::vector<std::vector<std::int64_t>>&, Eigen::Index,
+    const DdBudget&);
+extern template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const std::vector<std::vector<Z>>&,
+                                                                  const std::vector<std::vector<Z>>&, Eigen::Index,
+                                                                  const DdBudget&);
 
 /// Is g in the cone? (F g <= 0, E g = 0, S g < 0, checked row by row.)
 template <class T>

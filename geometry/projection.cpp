@@ -1,6 +1,7 @@
 #include "geometry/projection.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <set>
 #include <stdexcept>
 #include <type_traits>
@@ -97,49 +98,90 @@ FaceCone<T> whole_space(Index d) {
 
 template <class T>
 FaceCone<T> project_by_polar(const ProjectionProblem<T>& problem, const DdBudget& budget) {
-  const Mat<T>& K = problem.K;
-  const Mat<T>& P = problem.P;
-  const Index d = P.cols();
+  const Index m = problem.K.rows(), k = problem.K.cols(), d = problem.P.cols();
+  return exact::with_exact_ring<T>([&]<class R>() {
+    // The rows [P | K] as ring rows (positive multiples: the same P g = K z).
+    std::vector<std::vector<R>> rows(static_cast<size_t>(m), std::vector<R>(static_cast<size_t>(d + k)));
+    std::vector<T> buf(static_cast<size_t>(d + k));
+    for (Index i = 0; i < m; ++i) {
+      for (Index j = 0; j < d; ++j) buf[static_cast<size_t>(j)] = problem.P(i, j);
+      for (Index j = 0; j < k; ++j) buf[static_cast<size_t>(d + j)] = problem.K(i, j);
+      exact::ring::to_ring(buf.data(), d + k, rows[static_cast<size_t>(i)].data());
+    }
+    return project_by_polar_rows<T, R>(rows, d, k, problem.strict, budget);
+  });
+}
+
+template <class T, class R>
+FaceCone<T> project_by_polar_rows(const std::vector<std::vector<R>>& rows, Index d, Index k,
+                                  const std::vector<bool>& strict_components, const DdBudget& budget) {
+  namespace rg = exact::ring;
   const std::vector<bool> strict =
-      problem.strict.empty() ? std::vector<bool>(static_cast<size_t>(K.cols()), false) : problem.strict;
-  if (K.rows() == 0) return nnc_form(whole_space<T>(d), budget).face;
-  // K^F: pos(K) = { y : K^F y <= 0, E_K y = 0 } (section 3).
-  const FaceCone<T> KF = to_face(SpanCone<T>::from_columns(K), budget);
+      strict_components.empty() ? std::vector<bool>(static_cast<size_t>(k), false) : strict_components;
+  const Index m = static_cast<Index>(rows.size());
+  if (m == 0) return nnc_form(whole_space<T>(d), budget).face;
+  // The columns of K (ring rows of K^T, each scaled by a positive factor: the same pos(K) up to
+  // scaling z) and of P.
+  std::vector<std::vector<R>> kc(static_cast<size_t>(k), std::vector<R>(static_cast<size_t>(m)));
+  std::vector<std::vector<R>> pc(static_cast<size_t>(d), std::vector<R>(static_cast<size_t>(m)));
+  for (Index i = 0; i < m; ++i) {
+    const std::vector<R>& row = rows[static_cast<size_t>(i)];
+    for (Index j = 0; j < d; ++j) pc[static_cast<size_t>(j)][static_cast<size_t>(i)] = row[static_cast<size_t>(j)];
+    for (Index j = 0; j < k; ++j) kc[static_cast<size_t>(j)][static_cast<size_t>(i)] = row[static_cast<size_t>(d + j)];
+  }
+  for (std::vector<R>& c : kc) rg::normalize(c.data(), m);
+  // K^F: pos(K) = { y : K^F y <= 0, E_K y = 0 } (section 3); its facets are the extreme rays of the
+  // polar { f : k_i . f <= 0 }, pointed unless K has a left null space E_K.
+  std::vector<std::vector<R>> kf, ke;
+  if (auto polar = pointed_cone_rays<R>(kc, m, budget)) {
+    kf = std::move(*polar);
+  } else {
+    Mat<T> Kt(k, m);
+    for (Index j = 0; j < k; ++j)
+      for (Index i = 0; i < m; ++i) Kt(j, i) = rg::to_field<T>(kc[static_cast<size_t>(j)][static_cast<size_t>(i)]);
+    const FaceCone<T> KF = to_face(SpanCone<T>::from_rows(m, Kt, Mat<T>(0, m)), budget);
+    auto ring = [&](const Mat<T>& M) {
+      std::vector<std::vector<R>> out(static_cast<size_t>(M.rows()), std::vector<R>(static_cast<size_t>(m)));
+      std::vector<T> b(static_cast<size_t>(m));
+      for (Index r = 0; r < M.rows(); ++r) {
+        for (Index i = 0; i < m; ++i) b[static_cast<size_t>(i)] = M(r, i);
+        rg::to_ring(b.data(), m, out[static_cast<size_t>(r)].data());
+      }
+      return out;
+    };
+    kf = ring(KF.inequalities);
+    ke = ring(KF.equalities);
+  }
   // A facet of pos(K) is open iff it misses a column k_i with z_i > 0: the relative interiors of the
   // faces of pos(K) that contain every such column make up { K z : z >= 0, z_i > 0 on strict }.
-  // Both in the ring of T: the rows of K^F and the columns of K scaled by positive factors (same
-  // signs), P by one positive factor (the same cone F g <= 0).
-  std::vector<Vec<T>> closed, open;
-  Mat<T> E(KF.equalities.rows(), d);
-  exact::with_exact_ring<T>([&]<class R>() {
-    namespace rg = exact::ring;
-    const Index m = K.rows();
-    closed.clear();
-    open.clear();
-    const std::vector<R> kf = rg::to_ring_rows<R>(KF.inequalities), ke = rg::to_ring_rows<R>(KF.equalities);
-    const std::vector<R> kc = rg::to_ring_rows<R>(K.transpose()), pc = rg::to_ring_rows<R>(P.reshaped().transpose());
-    R x;
-    // Row f of the rows (m entries each) times P (columns pc + j m).
-    auto times_P = [&](const std::vector<R>& rows, Index f, auto&& set) {
-      for (Index j = 0; j < d; ++j) {
-        rg::dot(&rows[static_cast<size_t>(f * m)], &pc[static_cast<size_t>(j * m)], m, x);
-        set(j, rg::to_field<T>(x));
-      }
-    };
-    for (Index f = 0; f < KF.inequalities.rows(); ++f) {
-      bool is_open = false;
-      for (Index i = 0; i < K.cols() && !is_open; ++i) {
-        if (!strict[static_cast<size_t>(i)]) continue;
-        rg::dot(&kf[static_cast<size_t>(f * m)], &kc[static_cast<size_t>(i * m)], m, x);
-        is_open = rg::sign(x) < 0;
-      }
-      Vec<T> row(d);
-      times_P(kf, f, [&](Index j, T v) { row(j) = std::move(v); });  // eq. (18): F = K^F P
-      (is_open ? open : closed).push_back(std::move(row));
+  std::vector<std::vector<R>> closed, open, E;
+  R x;
+  // eq. (18): F = K^F P, row by row.
+  auto times_P = [&](const std::vector<R>& f) {
+    std::vector<R> row(static_cast<size_t>(d));
+    for (Index j = 0; j < d; ++j) rg::dot(f.data(), pc[static_cast<size_t>(j)].data(), m, row[static_cast<size_t>(j)]);
+    return row;
+  };
+  for (const std::vector<R>& f : kf) {
+    bool is_open = false;
+    for (Index i = 0; i < k && !is_open; ++i) {
+      if (!strict[static_cast<size_t>(i)]) continue;
+      rg::dot(f.data(), kc[static_cast<size_t>(i)].data(), m, x);
+      is_open = rg::sign(x) < 0;
     }
-    for (Index e = 0; e < KF.equalities.rows(); ++e) times_P(ke, e, [&](Index j, T v) { E(e, j) = std::move(v); });
-  });
-  return nnc_form(FaceCone<T>::from_rows(d, stack_rows<T>(closed, d), E, stack_rows<T>(open, d)), budget).face;
+    (is_open ? open : closed).push_back(times_P(f));
+  }
+  for (const std::vector<R>& e : ke) E.push_back(times_P(e));
+  if constexpr (!std::is_same_v<R, double>)  // the float path keeps nnc_form's normal forms
+    if (E.empty())
+      if (auto face = pointed_nnc_face<T, R>(closed, open, d, budget)) return std::move(*face);
+  auto field = [&](const std::vector<std::vector<R>>& rs) {
+    Mat<T> M(static_cast<Index>(rs.size()), d);
+    for (Index i = 0; i < M.rows(); ++i)
+      for (Index j = 0; j < d; ++j) M(i, j) = rg::to_field<T>(rs[static_cast<size_t>(i)][static_cast<size_t>(j)]);
+    return M;
+  };
+  return nnc_form(FaceCone<T>::from_rows(d, field(closed), field(E), field(open)), budget).face;
 }
 
 template <class T>
@@ -245,6 +287,13 @@ AffineFace<T> theorem1(const Mat<T>& K, const Mat<T>& P, const Vec<T>& k, const 
   out.c = KF.equalities * (K * k);
   return out;
 }
+
+template FaceCone<double> project_by_polar_rows<double, double>(const std::vector<std::vector<double>>&, Index, Index,
+                                                                const std::vector<bool>&, const DdBudget&);
+template FaceCone<Q> project_by_polar_rows<Q, std::int64_t>(const std::vector<std::vector<std::int64_t>>&, Index, Index,
+                                                            const std::vector<bool>&, const DdBudget&);
+template FaceCone<Q> project_by_polar_rows<Q, Z>(const std::vector<std::vector<Z>>&, Index, Index,
+                                                 const std::vector<bool>&, const DdBudget&);
 
 #define CONTACTCERT_PROJECTION_INSTANTIATE(T)                                             \
   template FaceCone<T> project_by_polar<T>(const ProjectionProblem<T>&, const DdBudget&); \

@@ -2,6 +2,7 @@
 // (Theorem 1 with k -> 0+, section 5.6), as a minimal face cone, by two independent routes.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "geometry/nnc_cone.h"
@@ -21,6 +22,23 @@ struct ProjectionProblem {
 /// of the result (canonical for T = Q; empty cone encoded as in NncForm).
 template <class T>
 FaceCone<T> project_by_polar(const ProjectionProblem<T>& problem, const DdBudget& budget = {});
+
+/// project_by_polar for K z = P g given as rows [P | K] (d entries of P, k of K each) in the ring R of
+/// T (exact/fraction_free.h; each row may be any positive multiple): the same result, with K^F, eq. (18)
+/// and, for exact rings, the face form of a pointed full-dimensional result computed in R (T only for
+/// the result). std::int64_t throws RingOverflow.
+template <class T, class R>
+FaceCone<T> project_by_polar_rows(const std::vector<std::vector<R>>& rows, Eigen::Index d, Eigen::Index k,
+                                  const std::vector<bool>& strict, const DdBudget& budget = {});
+
+extern template FaceCone<double> project_by_polar_rows<double, double>(const std::vector<std::vector<double>>&,
+                                                                       Eigen::Index, Eigen::Index,
+                                                                       const std::vector<bool>&, const DdBudget&);
+extern template FaceCone<Q> project_by_polar_rows<Q, std::int64_t>(const std::vector<std::vector<std::int64_t>>&,
+                                                                   Eigen::Index, Eigen::Index, const std::vector<bool>&,
+                                                                   const DdBudget&);
+extern template FaceCone<Q> project_by_polar_rows<Q, Z>(const std::vector<std::vector<Z>>&, Eigen::Index, Eigen::Index,
+                                                        const std::vector<bool>&, const DdBudget&);
 
 /// Route (b), output-sensitive for a low-dimensional target: discovers the generators of the closed
 /// cone with one exact LP per facet and per generator (convex hull method), converts in R^d only, and

@@ -7,12 +7,16 @@ namespace {
 /// coefficient that multiplies c_n in the R or S substitution.
 struct YConstraints {
   Eigen::Index n = 0;
-  std::vector<SignConstraint> sign;        ///< 4n; c_t entries: kFree when R or S handles them
+  std::vector<SignConstraint> sign;          ///< 4n; c_t entries: kFree when R or S handles them
   std::vector<FrictionConstraint> friction;  ///< n
-  std::vector<Q> mu;                        ///< n: mu_s for the static cone, mu_k for sliding
-  bool unconstrained(Eigen::Index j) const { return j < 2 * n && sign[static_cast<std::size_t>(j)] == SignConstraint::kFree; }
+  std::vector<Q> mu;                         ///< n: mu_s for the static cone, mu_k for sliding
+  bool unconstrained(Eigen::Index j) const {
+    return j < 2 * n && sign[static_cast<std::size_t>(j)] == SignConstraint::kFree;
+  }
   bool eliminated(Eigen::Index j) const {  // the set V of section 5.5
-    if (j < 2 * n) return sign[static_cast<std::size_t>(j)] == SignConstraint::kFree || sign[static_cast<std::size_t>(j)] == SignConstraint::kZero;
+    if (j < 2 * n)
+      return sign[static_cast<std::size_t>(j)] == SignConstraint::kFree ||
+             sign[static_cast<std::size_t>(j)] == SignConstraint::kZero;
     if (j < 3 * n) return sign[static_cast<std::size_t>(j)] == SignConstraint::kZero;
     return friction[static_cast<std::size_t>(j - 3 * n)] != FrictionConstraint::kStaticCone;
   }
@@ -38,6 +42,43 @@ YConstraints classify(const geometry::PlanarScene& scene, const ModeString& mode
 }
 
 std::string fixel_name(Eigen::Index i) { return std::to_string(i + 1); }
+
+/// One column of K (eq. 15): an acceleration y_j (sign -1 when N flips it) or the force column of
+/// fixel i, C(:, 2n + i) + (coef_sign mu_i) C(:, 3n + i) after R and S.
+struct KColumn {
+  bool acceleration = false;
+  Eigen::Index j = 0;  ///< the y index
+  Eigen::Index i = 0;  ///< the fixel
+  int sign = 1;        ///< acceleration: -1 for a negative variable
+  int coef_sign = 0;   ///< force: the sign of mu_i's coefficient (0: a pure c_n column)
+};
+
+/// The rows kept by E (5.1) and the columns kept by V (5.5), in order.
+void rows_and_columns(const YConstraints& y, std::vector<Eigen::Index>& rows, std::vector<KColumn>& cols) {
+  const Eigen::Index n = y.n, n2 = 2 * n, n4 = 4 * n;
+  for (Eigen::Index j = 0; j < n2; ++j)
+    if (!y.unconstrained(j)) rows.push_back(j);
+  for (Eigen::Index j = 0; j < n4; ++j) {
+    if (y.eliminated(j)) continue;
+    KColumn c;
+    c.j = j;
+    if (j < n2) {
+      c.acceleration = true;
+      c.i = j % n;
+      c.sign = y.sign[static_cast<std::size_t>(j)] == SignConstraint::kNegative ? -1 : 1;
+    } else {
+      c.i = (j - n2) % n;
+      const FrictionConstraint f = y.friction[static_cast<std::size_t>(c.i)];
+      if (j >= 3 * n)  // the c_t column of a static friction cone
+        c.coef_sign = 1;
+      else if (f == FrictionConstraint::kStaticCone || f == FrictionConstraint::kLeftEdge)
+        c.coef_sign = -1;
+      else if (f == FrictionConstraint::kRightEdge)
+        c.coef_sign = 1;
+    }
+    cols.push_back(c);
+  }
+}
 
 }  // namespace
 
@@ -69,9 +110,14 @@ ModeMatrices<T> mode_matrices(const geometry::PlanarScene& scene, const ModeStri
         m.R(cn, ct) = T(1);
         m.R(ct, cn) = -mu;
         break;
-      case FrictionConstraint::kLeftEdge: m.S(ct, cn) = -mu; break;
-      case FrictionConstraint::kRightEdge: m.S(ct, cn) = mu; break;
-      case FrictionConstraint::kZero: break;
+      case FrictionConstraint::kLeftEdge:
+        m.S(ct, cn) = -mu;
+        break;
+      case FrictionConstraint::kRightEdge:
+        m.S(ct, cn) = mu;
+        break;
+      case FrictionConstraint::kZero:
+        break;
     }
   }
   // 5.5: V drops the columns of zero, sliding c_t and unconstrained variables.
@@ -85,77 +131,99 @@ ModeMatrices<T> mode_matrices(const geometry::PlanarScene& scene, const ModeStri
 template <class T>
 ConeForm<T> cone_form(const geometry::PlanarScene& scene, const ContactModel<T>& model, const ModeString& mode) {
   const YConstraints y = classify(scene, mode);
-  const Eigen::Index n = y.n, n2 = 2 * n, n4 = 4 * n;
   std::vector<Eigen::Index> rows;
-  for (Eigen::Index j = 0; j < n2; ++j)
-    if (!y.unconstrained(j)) rows.push_back(j);
+  std::vector<KColumn> cols;
+  rows_and_columns(y, rows, cols);
   const auto m = static_cast<Eigen::Index>(rows.size());
+  const Mat<T> A = to_field<T>(model.A), B = to_field<T>(model.B);
   ConeForm<T> out;
   // eq. (17): P = E B.
   out.P.resize(m, 3);
-  for (Eigen::Index r = 0; r < m; ++r) out.P.row(r) = model.B.row(rows[static_cast<std::size_t>(r)]);
-  // eq. (15): K = E C N R S V, column by column, written in place. C = [I  -A] (eq. 8).
-  Eigen::Index columns = 0;
-  for (Eigen::Index j = 0; j < n4; ++j) columns += y.eliminated(j) ? 0 : 1;
-  out.K = Mat<T>::Zero(m, columns);
-  T scratch;
-  // K(:, c) = C(:, 2n + i) + coef * C(:, 3n + i) on the kept rows.
-  auto force_column = [&](Eigen::Index c, Eigen::Index i, const T& coef) {
-    for (Eigen::Index r = 0; r < m; ++r) {
-      const Eigen::Index row = rows[static_cast<std::size_t>(r)];
-      T& k = out.K(r, c);
-      k = -model.A(row, i);
-      if (!exact::is_zero(coef)) {
-        scratch = coef * model.A(row, n + i);
-        k -= scratch;
-      }
-    }
-  };
-  Eigen::Index c = 0;
-  for (Eigen::Index j = 0; j < n4; ++j) {
-    if (y.eliminated(j)) continue;
-    if (j < n2) {
-      const SignConstraint s = y.sign[static_cast<std::size_t>(j)];
+  for (Eigen::Index r = 0; r < m; ++r) out.P.row(r) = B.row(rows[static_cast<std::size_t>(r)]);
+  // eq. (15): K = E C N R S V, column by column. C = [I  -A] (eq. 8).
+  out.K = Mat<T>::Zero(m, static_cast<Eigen::Index>(cols.size()));
+  for (std::size_t c = 0; c < cols.size(); ++c) {
+    const KColumn& col = cols[c];
+    const auto ec = static_cast<Eigen::Index>(c);
+    if (col.acceleration) {
       for (Eigen::Index r = 0; r < m; ++r)
-        if (rows[static_cast<std::size_t>(r)] == j) out.K(r, c) = s == SignConstraint::kNegative ? T(-1) : T(1);
-      out.strict.push_back(s == SignConstraint::kPositive || s == SignConstraint::kNegative);
+        if (rows[static_cast<std::size_t>(r)] == col.j) out.K(r, ec) = T(col.sign);
+      out.strict.push_back(y.sign[static_cast<std::size_t>(col.j)] == SignConstraint::kPositive || col.sign < 0);
       out.acceleration.push_back(true);
-      out.names.push_back(std::string(s == SignConstraint::kNegative ? "-a" : "a") + fixel_name(j % n) + (j < n ? "n" : "t"));
-      ++c;
+      out.names.push_back(std::string(col.sign < 0 ? "-a" : "a") + fixel_name(col.i) + (col.j < y.n ? "n" : "t"));
       continue;
     }
-    const Eigen::Index i = (j - n2) % n;
-    const FrictionConstraint f = y.friction[static_cast<std::size_t>(i)];
-    const T mu = from_exact<T>(y.mu[static_cast<std::size_t>(i)]);
-    T coef = T(0);
-    std::string name = std::string("c") + fixel_name(i);
-    if (j < 3 * n) {  // the c_n column, combined with c_t by R or S
-      if (f == FrictionConstraint::kStaticCone || f == FrictionConstraint::kLeftEdge) {
-        coef = -mu;
-        name += "[n-mu t]";
-      } else if (f == FrictionConstraint::kRightEdge) {
-        coef = mu;
-        name += "[n+mu t]";
-      } else {
-        name += "n";
-      }
-    } else {  // the c_t column of a static friction cone
-      coef = mu;
-      name += "[n+mu t]";
+    // K(:, c) = -A(:, i) - coef A(:, n + i) on the kept rows.
+    const T coef = from_exact<T>(Q(col.coef_sign * y.mu[static_cast<std::size_t>(col.i)]));
+    for (Eigen::Index r = 0; r < m; ++r) {
+      const Eigen::Index row = rows[static_cast<std::size_t>(r)];
+      T& k = out.K(r, ec);
+      k = -A(row, col.i);
+      if (col.coef_sign != 0) k -= T(coef * A(row, y.n + col.i));
     }
-    force_column(c++, i, coef);
     out.strict.push_back(false);
     out.acceleration.push_back(false);
+    std::string name = std::string("c") + fixel_name(col.i);
+    name += col.coef_sign < 0 ? "[n-mu t]" : col.coef_sign > 0 ? "[n+mu t]" : "n";
     out.names.push_back(name);
   }
   return out;
 }
 
-#define CONTACTCERT_CONE_FORM_INSTANTIATE(T)                                                    \
-  template ModeMatrices<T> mode_matrices<T>(const geometry::PlanarScene&, const ModeString&);   \
+template <class R, class T>
+RingForm<R> ring_form(const geometry::PlanarScene& scene, const ContactModel<T>& model, const ModeString& mode) {
+  namespace rg = exact::ring;
+  const YConstraints y = classify(scene, mode);
+  std::vector<Eigen::Index> rows;
+  std::vector<KColumn> cols;
+  rows_and_columns(y, rows, cols);
+  RingForm<R> out;
+  out.k = static_cast<Eigen::Index>(cols.size());
+  const auto w = static_cast<std::size_t>(out.d + out.k);
+  out.rows.assign(rows.size(), std::vector<R>(w, R(0)));
+  // mu_i = p / q scales the force column of fixel i by q: -(q A(:, i) + coef_sign p A(:, n + i)).
+  std::vector<R> p(static_cast<std::size_t>(y.n)), q(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) rg::from_rational(y.mu[i], p[i], q[i]);
+  R a1, a2;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    std::vector<R>& row = out.rows[r];
+    for (Eigen::Index j = 0; j < out.d; ++j)
+      rg::get(model.B, rows[r], j, row[static_cast<std::size_t>(j)]);  // eq. (17)
+    for (std::size_t c = 0; c < cols.size(); ++c) {
+      const KColumn& col = cols[c];
+      R& k = row[static_cast<std::size_t>(out.d) + c];
+      if (col.acceleration) {
+        if (rows[r] == col.j) rg::from_integer(long{col.sign}, k);
+        continue;
+      }
+      const auto i = static_cast<std::size_t>(col.i);
+      rg::get(model.A, rows[r], col.i, a1);
+      if (col.coef_sign == 0) {
+        k = -a1;
+        continue;
+      }
+      rg::get(model.A, rows[r], y.n + col.i, a2);
+      k = rg::sub(-rg::mul(q[i], a1), rg::mul(col.coef_sign > 0 ? p[i] : R(-p[i]), a2));
+    }
+    rg::normalize(row.data(), static_cast<Eigen::Index>(w));
+  }
+  for (const KColumn& col : cols)
+    out.strict.push_back(col.acceleration &&
+                         (y.sign[static_cast<std::size_t>(col.j)] == SignConstraint::kPositive || col.sign < 0));
+  return out;
+}
+
+#define CONTACTCERT_CONE_FORM_INSTANTIATE(T)                                                  \
+  template ModeMatrices<T> mode_matrices<T>(const geometry::PlanarScene&, const ModeString&); \
   template ConeForm<T> cone_form<T>(const geometry::PlanarScene&, const ContactModel<T>&, const ModeString&);
 CONTACTCERT_CONE_FORM_INSTANTIATE(double)
 CONTACTCERT_CONE_FORM_INSTANTIATE(Q)
 #undef CONTACTCERT_CONE_FORM_INSTANTIATE
+template RingForm<double> ring_form<double, double>(const geometry::PlanarScene&, const ContactModel<double>&,
+                                                    const ModeString&);
+template RingForm<std::int64_t> ring_form<std::int64_t, Q>(const geometry::PlanarScene&, const ContactModel<Q>&,
+                                                           const ModeString&);
+template RingForm<exact::Z> ring_form<exact::Z, Q>(const geometry::PlanarScene&, const ContactModel<Q>&,
+                                                   const ModeString&);
 
 }  // namespace contactcert::solvers

@@ -2,6 +2,7 @@
 // (Table 2) to K z = P g, z >= 0 (eqs. 13-17), through the matrices E, N, R, S, V.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -40,8 +41,31 @@ ModeMatrices<T> mode_matrices(const geometry::PlanarScene& scene, const ModeStri
 template <class T>
 ConeForm<T> cone_form(const geometry::PlanarScene& scene, const ContactModel<T>& model, const ModeString& mode);
 
-#define CONTACTCERT_CONE_FORM_EXTERN(T)                                                                \
-  extern template ModeMatrices<T> mode_matrices<T>(const geometry::PlanarScene&, const ModeString&);   \
+/// K z = P g as ring rows [P | K'] over the ring R of T (exact/fraction_free.h), read straight from the
+/// model: K' is K with each force column scaled by the denominator of its friction coefficient and each
+/// row [P | K'] by a positive factor (to_ring); pos(K') = pos(K) and the cone of eqs. (13)-(14) is the
+/// same, with the same z and strict components as cone_form.
+template <class R>
+struct RingForm {
+  Eigen::Index d = 3;                ///< columns of P
+  Eigen::Index k = 0;                ///< columns of K
+  std::vector<std::vector<R>> rows;  ///< the rows of E: d + k entries each
+  std::vector<bool> strict;          ///< per z, as ConeForm::strict
+};
+
+/// The RingForm of a valid mode of the scene.
+template <class R, class T>
+RingForm<R> ring_form(const geometry::PlanarScene& scene, const ContactModel<T>& model, const ModeString& mode);
+
+extern template RingForm<double> ring_form<double, double>(const geometry::PlanarScene&, const ContactModel<double>&,
+                                                           const ModeString&);
+extern template RingForm<std::int64_t> ring_form<std::int64_t, Q>(const geometry::PlanarScene&, const ContactModel<Q>&,
+                                                                  const ModeString&);
+extern template RingForm<exact::Z> ring_form<exact::Z, Q>(const geometry::PlanarScene&, const ContactModel<Q>&,
+                                                          const ModeString&);
+
+#define CONTACTCERT_CONE_FORM_EXTERN(T)                                                              \
+  extern template ModeMatrices<T> mode_matrices<T>(const geometry::PlanarScene&, const ModeString&); \
   extern template ConeForm<T> cone_form<T>(const geometry::PlanarScene&, const ContactModel<T>&, const ModeString&);
 CONTACTCERT_CONE_FORM_EXTERN(double)
 CONTACTCERT_CONE_FORM_EXTERN(Q)

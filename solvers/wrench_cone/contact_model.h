@@ -4,6 +4,7 @@
 
 #include <type_traits>
 
+#include "exact/fraction_free.h"
 #include "exact/number.h"
 #include "geometry/planar_scene.h"
 
@@ -13,20 +14,36 @@ using exact::Mat;
 using exact::Q;
 using exact::Vec;
 
-/// The matrices of eqs. (4)-(8) for one scene with n fixels, over T.
+/// A matrix of the model over the ring of T: integers for the exact path (held in machine integers
+/// when they fit, exact/fraction_free.h), doubles for the float path.
+template <class T>
+using ModelMatrix = std::conditional_t<exact::NumberTraits<T>::is_exact, exact::ring::IntegerMatrix, Mat<double>>;
+
+/// A model matrix as a matrix over T.
+template <class T>
+Mat<T> to_field(const ModelMatrix<T>& M) {
+  if constexpr (exact::NumberTraits<T>::is_exact) {
+    return M.to_field();
+  } else {
+    return M;
+  }
+}
+
+/// The matrices of eqs. (4)-(8) for one scene with n fixels, over the ring of T.
 template <class T>
 struct ContactModel {
-  Mat<T> J;  ///< 3 x 2n: columns n_1..n_n then t_1..t_n, as wrenches (f_x, f_y, torque about the com)
-  Mat<T> A;  ///< 2n x 2n, A = J^T M^-1 J (eq. 6)
-  Mat<T> B;  ///< 2n x 3,  B = J^T M^-1 (eq. 6)
+  ModelMatrix<T> J;  ///< 3 x 2n: columns n_1..n_n then t_1..t_n, as wrenches (f_x, f_y, torque about the com)
+  ModelMatrix<T> A;  ///< 2n x 2n, A = J^T M^-1 J (eq. 6)
+  ModelMatrix<T> B;  ///< 2n x 3,  B = J^T M^-1 (eq. 6)
   Eigen::Index fixels() const { return J.cols() / 2; }
-  /// C = [I  -A] (eq. 8), 2n x 4n; built on demand (cone_form reads A directly).
+  /// C = [I  -A] (eq. 8), 2n x 4n, over T; built on demand (cone_form reads A directly).
   Mat<T> C() const {
     const Eigen::Index n2 = A.rows();
+    const Mat<T> a = to_field<T>(A);
     Mat<T> out = Mat<T>::Zero(n2, 2 * n2);
     for (Eigen::Index i = 0; i < n2; ++i) {
       out(i, i) = T(1);
-      for (Eigen::Index j = 0; j < n2; ++j) out(i, n2 + j) = -A(i, j);
+      for (Eigen::Index j = 0; j < n2; ++j) out(i, n2 + j) = -a(i, j);
     }
     return out;
   }
@@ -40,7 +57,8 @@ Mat<Q> jacobian(const geometry::PlanarScene& scene);
 
 /// J, A, B, C for the scene, with M^-1 = diag(1, 1, m/I) scaled by the positive numerator of I/m
 /// (only I/m matters and the cones are invariant under scaling M; with integer J, A and B are
-/// integer matrices). For M = I (I/m = 1) these are literally the paper's matrices. The float model
+/// integer matrices, computed and held in std::int64_t, or in Z if they outgrow it). For M = I
+/// (I/m = 1) these are literally the paper's matrices. The float model
 /// (T = double) uses unit normals and M^-1 = diag(1, 1, m/I) instead, to keep entries of order one.
 template <class T>
 ContactModel<T> contact_model(const geometry::PlanarScene& scene);

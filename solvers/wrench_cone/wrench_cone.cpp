@@ -7,13 +7,74 @@
 namespace contactcert::solvers {
 namespace {
 
+using Index = Eigen::Index;
+namespace rg = exact::ring;
+
+// Fraction-free Gauss-Jordan elimination on the ring rows [P | K] of P g = K z (d columns of P, k of
+// K), every row kept primitive (a positive multiple of the row of rref): the columns of P give
+// T P = [P1; 0] and T K = [K1; K2]; continuing in the columns of K on the rows below leaves a basis of
+// the row space of K2 and zero rows, which are dropped. (Reducing above the pivots too keeps the
+// entries as small as those of rref.)
+template <class R>
+void reduce_rows(std::vector<std::vector<R>>& rows, Index d, Index k) {
+  const Index m = static_cast<Index>(rows.size()), w = d + k;
+  std::vector<R> tmp(static_cast<std::size_t>(w));
+  // Pivots column c on the rows from `top` down and clears it in the rows from `first` on; false if
+  // the column is zero from `top` down.
+  auto eliminate = [&](Index c, Index first, Index top) {
+    const auto uc = static_cast<std::size_t>(c), ut = static_cast<std::size_t>(top);
+    std::size_t p = rows.size();
+    for (std::size_t i = ut; i < rows.size(); ++i)
+      if (rg::sign(rows[i][uc]) != 0 && (p == rows.size() || rg::better_pivot(rows[i][uc], rows[p][uc]))) p = i;
+    if (p == rows.size()) return false;
+    rows[ut].swap(rows[p]);
+    for (std::size_t i = static_cast<std::size_t>(first); i < rows.size(); ++i) {
+      if (i == ut || rg::sign(rows[i][uc]) == 0) continue;
+      // row_i <- piv * row_i - row_i[c] * row_top: zero in column c.
+      const R piv = rows[ut][uc], f = rows[i][uc];
+      rg::combine(rows[ut].data(), piv, rows[i].data(), f, tmp.data(), w);
+      rows[i].swap(tmp);
+      rows[i][uc] = R(0);
+      rg::normalize(rows[i].data(), w);
+    }
+    return true;
+  };
+  Index r = 0;
+  for (Index c = 0; c < d && r < m; ++c) r += eliminate(c, 0, r) ? 1 : 0;
+  Index rank = r;  // rows [r, rank) will be a basis of the row space of K2
+  for (Index c = d; c < w && rank < m; ++c) rank += eliminate(c, r, rank) ? 1 : 0;
+  rows.resize(static_cast<std::size_t>(rank));
+}
+
+// The reduced ring rows as K z = P g over T.
+template <class T, class R>
+geometry::ProjectionProblem<T> to_problem(const std::vector<std::vector<R>>& rows, Index d, Index k,
+                                          const std::vector<bool>& strict) {
+  geometry::ProjectionProblem<T> out;
+  const auto m = static_cast<Index>(rows.size());
+  out.K.resize(m, k);
+  out.P.resize(m, d);
+  for (Index i = 0; i < m; ++i) {
+    const std::vector<R>& row = rows[static_cast<std::size_t>(i)];
+    for (Index j = 0; j < d; ++j) out.P(i, j) = rg::to_field<T>(row[static_cast<std::size_t>(j)]);
+    for (Index j = 0; j < k; ++j) out.K(i, j) = rg::to_field<T>(row[static_cast<std::size_t>(d + j)]);
+  }
+  out.strict = strict;
+  return out;
+}
+
+// The RingForm of the mode, row-reduced.
+template <class R, class T>
+RingForm<R> reduced_form(const geometry::PlanarScene& scene, const ContactModel<T>& model, const ModeString& mode) {
+  RingForm<R> form = ring_form<R>(scene, model, mode);
+  reduce_rows<R>(form.rows, form.d, form.k);
+  return form;
+}
+
 template <class T>
-geometry::FaceCone<T> run_route(const ConeForm<T>& form, Route route, const geometry::DdBudget& budget,
-                                Preconditioning pre) {
+geometry::FaceCone<T> run_route(const geometry::ProjectionProblem<T>& problem, Route route,
+                                const geometry::DdBudget& budget) {
   // eqs. (13)-(14) with z_i > 0 on the strict components: Theorem 1 with k -> 0+ (section 5.6).
-  const geometry::ProjectionProblem<T> problem = pre == Preconditioning::kRowReduce
-                                                     ? row_reduced(form)
-                                                     : geometry::ProjectionProblem<T>{form.K, form.P, form.strict};
   return route == Route::kPaper ? geometry::project_by_polar(problem, budget)
                                 : geometry::project_by_lp(problem, budget);
 }
@@ -22,59 +83,18 @@ geometry::FaceCone<T> run_route(const ConeForm<T>& form, Route route, const geom
 
 template <class T>
 geometry::ProjectionProblem<T> row_reduced(const ConeForm<T>& form) {
-  using Index = Eigen::Index;
-  namespace rg = exact::ring;
   const Index m = form.K.rows(), k = form.K.cols(), d = form.P.cols(), w = d + k;
   if (m == 0) return {form.K, form.P, form.strict};
-  // Fraction-free Gauss-Jordan elimination on the rows [P | K] of P g = K z, every row kept primitive
-  // (a positive multiple of the row of rref): the columns of P give T P = [P1; 0] and T K = [K1; K2];
-  // continuing in the columns of K on the rows below leaves a basis of the row space of K2 and zero
-  // rows. (Reducing above the pivots too keeps the entries as small as those of rref.)
   return exact::with_exact_ring<T>([&]<class R>() {
     std::vector<std::vector<R>> rows(static_cast<std::size_t>(m), std::vector<R>(static_cast<std::size_t>(w)));
-    {
-      std::vector<T> buf(static_cast<std::size_t>(w));
-      for (Index i = 0; i < m; ++i) {
-        for (Index j = 0; j < d; ++j) buf[static_cast<std::size_t>(j)] = form.P(i, j);
-        for (Index j = 0; j < k; ++j) buf[static_cast<std::size_t>(d + j)] = form.K(i, j);
-        rg::to_ring(buf.data(), w, rows[static_cast<std::size_t>(i)].data());
-      }
+    std::vector<T> buf(static_cast<std::size_t>(w));
+    for (Index i = 0; i < m; ++i) {
+      for (Index j = 0; j < d; ++j) buf[static_cast<std::size_t>(j)] = form.P(i, j);
+      for (Index j = 0; j < k; ++j) buf[static_cast<std::size_t>(d + j)] = form.K(i, j);
+      rg::to_ring(buf.data(), w, rows[static_cast<std::size_t>(i)].data());
     }
-    std::vector<R> tmp(static_cast<std::size_t>(w));
-    // Pivots column c on the rows from `top` down and clears it in the rows from `first` on; false if
-    // the column is zero from `top` down.
-    auto eliminate = [&](Index c, Index first, Index top) {
-      const auto uc = static_cast<std::size_t>(c), ut = static_cast<std::size_t>(top);
-      std::size_t p = rows.size();
-      for (std::size_t i = ut; i < rows.size(); ++i)
-        if (rg::sign(rows[i][uc]) != 0 && (p == rows.size() || rg::better_pivot(rows[i][uc], rows[p][uc]))) p = i;
-      if (p == rows.size()) return false;
-      rows[ut].swap(rows[p]);
-      for (std::size_t i = static_cast<std::size_t>(first); i < rows.size(); ++i) {
-        if (i == ut || rg::sign(rows[i][uc]) == 0) continue;
-        // row_i <- piv * row_i - row_i[c] * row_top: zero in column c.
-        const R piv = rows[ut][uc], f = rows[i][uc];
-        rg::combine(rows[ut].data(), piv, rows[i].data(), f, tmp.data(), w);
-        rows[i].swap(tmp);
-        rows[i][uc] = R(0);
-        rg::normalize(rows[i].data(), w);
-      }
-      return true;
-    };
-    Index r = 0;
-    for (Index c = 0; c < d && r < m; ++c) r += eliminate(c, 0, r) ? 1 : 0;
-    Index rank = r;  // rows [r, rank) will be a basis of the row space of K2
-    for (Index c = d; c < w && rank < m; ++c) rank += eliminate(c, r, rank) ? 1 : 0;
-    geometry::ProjectionProblem<T> out;
-    out.K.resize(rank, k);
-    out.P.resize(rank, d);
-    for (Index i = 0; i < rank; ++i) {
-      const std::vector<R>& row = rows[static_cast<std::size_t>(i)];
-      for (Index j = 0; j < d; ++j) out.P(i, j) = rg::to_field<T>(row[static_cast<std::size_t>(j)]);
-      for (Index j = 0; j < k; ++j) out.K(i, j) = rg::to_field<T>(row[static_cast<std::size_t>(d + j)]);
-    }
-    out.strict = form.strict;
-    return out;
+    reduce_rows<R>(rows, d, k);
+    return to_problem<T, R>(rows, d, k, form.strict);
   });
 }
 
@@ -82,7 +102,23 @@ template <class T>
 geometry::FaceCone<T> wrench_cone_face(const geometry::PlanarScene& scene, const ContactModel<T>& model,
                                        const ModeString& mode, Route route, const geometry::DdBudget& budget,
                                        Preconditioning pre) {
-  return run_route(cone_form(scene, model, mode), route, budget, pre);
+  if (pre == Preconditioning::kNone) {
+    const ConeForm<T> form = cone_form(scene, model, mode);
+    return run_route<T>({form.K, form.P, form.strict}, route, budget);
+  }
+  // K z = P g read from the model in the ring and row-reduced there (the same cone as row_reduced of
+  // cone_form: the rows differ by positive factors, the columns of K by positive factors); the paper's
+  // route stays in the ring up to the canonical face form.
+  if (route == Route::kPaper)
+    return exact::with_exact_ring<T>([&]<class R>() {
+      const RingForm<R> form = reduced_form<R>(scene, model, mode);
+      return geometry::project_by_polar_rows<T, R>(form.rows, form.d, form.k, form.strict, budget);
+    });
+  return geometry::project_by_lp(exact::with_exact_ring<T>([&]<class R>() {
+                                   const RingForm<R> form = reduced_form<R>(scene, model, mode);
+                                   return to_problem<T, R>(form.rows, form.d, form.k, form.strict);
+                                 }),
+                                 budget);
 }
 
 template <class T>
@@ -93,7 +129,10 @@ WrenchCone<T> wrench_cone(const geometry::PlanarScene& scene, const ModeString& 
   out.route = route;
   const ContactModel<T> model = contact_model<T>(scene);
   out.form = cone_form(scene, model, mode);
-  const geometry::FaceCone<T> face = run_route(out.form, route, budget, pre);
+  const geometry::FaceCone<T> face = run_route<T>(
+      pre == Preconditioning::kRowReduce ? row_reduced(out.form)
+                                         : geometry::ProjectionProblem<T>{out.form.K, out.form.P, out.form.strict},
+      route, budget);
   out.cone = geometry::nnc_form(face, budget);
   out.status = out.cone.status == geometry::NncStatus::kEmpty ? ConeStatus::kEmpty : ConeStatus::kNonEmpty;
   return out;

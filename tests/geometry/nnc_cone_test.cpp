@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
 
+#include "exact/fraction_free.h"
 #include "geometry/canonical.h"
 #include "geometry/set_ops.h"
 #include "tests/geometry/random_cones.h"
@@ -154,6 +156,49 @@ TEST(NncCone, RandomStrictSystemsKeepTheirPoints) {
   EXPECT_GT(nonempty, 50);
   EXPECT_GT(empty, 5);
   EXPECT_GT(with_open, 20);
+}
+
+template <class R>
+std::vector<std::vector<R>> ring_rows_of(const Mat<Q>& M) {
+  std::vector<std::vector<R>> out(static_cast<std::size_t>(M.rows()),
+                                  std::vector<R>(static_cast<std::size_t>(M.cols())));
+  for (Eigen::Index i = 0; i < M.rows(); ++i)
+    for (Eigen::Index j = 0; j < M.cols(); ++j)
+      exact::ring::from_integer(M(i, j), out[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)]);
+  return out;
+}
+
+// pointed_nnc_face is nnc_form's face whenever it answers (pointed full-dimensional closure, or an
+// empty cone), in Z and in std::int64_t; with entries up to 2^40 the machine integers overflow
+// (RingOverflow) and Z still agrees.
+TEST(NncCone, RingFaceFormIsNncFormsFaceAndOverflowsIntoZ) {
+  std::mt19937_64 rng(29);
+  int answered = 0, overflowed = 0, empty = 0;
+  for (int rep = 0; rep < 300; ++rep) {
+    const Eigen::Index d = 2 + rep % 3;
+    const long range = rep % 4 == 3 ? long{1} << 40 : 5;
+    const FaceCone<Q> c = testing::random_face(rng, d, 2 + rep % 4, 0, 1 + rep % 3, range);
+    const FaceCone<Q> want = nnc_form(c).face;
+    const auto z = pointed_nnc_face<Q, Z>(ring_rows_of<Z>(c.inequalities), ring_rows_of<Z>(c.strict), d);
+    if (z) {
+      ++answered;
+      ASSERT_TRUE(identical(*z, want)) << "rep " << rep;
+      if (want.strict.rows() == 1 && want.equalities.rows() == d) ++empty;
+    }
+    try {
+      const auto s = pointed_nnc_face<Q, std::int64_t>(ring_rows_of<std::int64_t>(c.inequalities),
+                                                       ring_rows_of<std::int64_t>(c.strict), d);
+      ASSERT_EQ(s.has_value(), z.has_value()) << "rep " << rep;
+      if (s) {
+        ASSERT_TRUE(identical(*s, want)) << "rep " << rep;
+      }
+    } catch (const exact::RingOverflow&) {
+      ++overflowed;
+    }
+  }
+  EXPECT_GT(answered, 100);
+  EXPECT_GT(empty, 2);
+  EXPECT_GT(overflowed, 20);
 }
 
 TEST(NncCone, FloatPathAgreesOnThePaperExample) {

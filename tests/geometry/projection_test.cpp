@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
 
+#include "exact/fraction_free.h"
 #include "exact/linalg.h"
 #include "geometry/canonical.h"
 #include "tests/geometry/test_util.h"
@@ -80,6 +82,41 @@ TEST(Projection, RandomProblemsBothRoutesAgree) {
     if (a.equalities.rows() == d) ++empty;
   }
   EXPECT_GT(with_strict, 20);
+}
+
+// The paper's route on rows already in the ring ([P | K], any positive row factor) is the LP route's
+// cone; with entries up to 2^40 std::int64_t overflows (RingOverflow) and Z still agrees.
+TEST(Projection, RingRowsRouteAgreesWithTheLpRouteAndOverflowsIntoZ) {
+  std::mt19937_64 rng(31);
+  int overflowed = 0;
+  for (int rep = 0; rep < 40; ++rep) {
+    const Eigen::Index m = 3 + rep % 2, n = 3 + rep % 4, d = 3;
+    std::uniform_int_distribution<long> u(rep % 2 ? -(long{1} << 40) : -3, rep % 2 ? long{1} << 40 : 3);
+    ProjectionProblem<Q> p;
+    p.K = Mat<Q>(m, n);
+    p.P = Mat<Q>(m, d);
+    std::vector<std::vector<Z>> wide(static_cast<size_t>(m));
+    std::vector<std::vector<std::int64_t>> fixed(static_cast<size_t>(m));
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const long scale = 1 + (rep + i) % 3;  // a positive factor per row
+      for (Eigen::Index j = 0; j < d + n; ++j) {
+        const long x = u(rng);
+        (j < d ? p.P(i, j) : p.K(i, j - d)) = Q(x);
+        wide[static_cast<size_t>(i)].push_back(Z(x) * scale);
+        fixed[static_cast<size_t>(i)].push_back(x * scale);
+      }
+    }
+    p.strict.assign(static_cast<size_t>(n), false);
+    for (Eigen::Index j = 0; j < n; ++j) p.strict[static_cast<size_t>(j)] = (rep + j) % 3 == 0;
+    const FaceCone<Q> want = project_by_lp(p);
+    ASSERT_TRUE(identical(project_by_polar_rows<Q, Z>(wide, d, n, p.strict), want)) << "rep " << rep;
+    try {
+      ASSERT_TRUE(identical(project_by_polar_rows<Q, std::int64_t>(fixed, d, n, p.strict), want)) << "rep " << rep;
+    } catch (const exact::RingOverflow&) {
+      ++overflowed;
+    }
+  }
+  EXPECT_GT(overflowed, 10);
 }
 
 TEST(Projection, FloatRoutesAgreeOnThePaperExample) {

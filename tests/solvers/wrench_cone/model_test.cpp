@@ -2,6 +2,7 @@
 // matrices K and P of section 4 and their identity with E C N R S V and E B (eqs. 15, 17), modes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 
@@ -13,9 +14,12 @@
 namespace contactcert::solvers {
 namespace {
 
+using exact::Z;
 using geometry::PlanarScene;
 
-PlanarScene section4_scene() { return geometry::load_planar_scene(CONTACTCERT_SCENES_DIR "/bt2002_section4_disk.json"); }
+PlanarScene section4_scene() {
+  return geometry::load_planar_scene(CONTACTCERT_SCENES_DIR "/bt2002_section4_disk.json");
+}
 
 Mat<Q> mat(std::initializer_list<std::initializer_list<const char*>> rows) {
   Mat<Q> M(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(rows.begin()->size()));
@@ -50,17 +54,18 @@ PlanarScene unit_normal_section4() {
   // are literally the paper's.
   return geometry::read_planar_scene(exact::JsonInput::parse(R"({"kind":"planar",
     "workpiece":{"shape":{"type":"disk","center":[0,0],"radius":1},"mass":1,"inertia":1},
-    "fixels":[{"position":[0,-1]},{"point":[1,0],"normal":[-1,0],"gap":"1/10"}],"mu_s":"0.2","mu_k":"0.2"})", "unit.json"));
+    "fixels":[{"position":[0,-1]},{"point":[1,0],"normal":[-1,0],"gap":"1/10"}],"mu_s":"0.2","mu_k":"0.2"})",
+                                                             "unit.json"));
 }
 
 TEST(Section4, Equation12IsReproducedExactly) {
   const ContactModel<Q> m = contact_model<Q>(unit_normal_section4());
-  EXPECT_EQ(m.J, mat({{"0", "-1", "-1", "0"}, {"1", "0", "0", "-1"}, {"0", "0", "-1", "-1"}}));
+  EXPECT_EQ(to_field<Q>(m.J), mat({{"0", "-1", "-1", "0"}, {"1", "0", "0", "-1"}, {"0", "0", "-1", "-1"}}));
   EXPECT_EQ(m.C(), mat({{"1", "0", "0", "0", "-1", "0", "0", "1"},
-                      {"0", "1", "0", "0", "0", "-1", "-1", "0"},
-                      {"0", "0", "1", "0", "0", "-1", "-2", "-1"},
-                      {"0", "0", "0", "1", "1", "0", "-1", "-2"}}));
-  EXPECT_EQ(m.B, mat({{"0", "1", "0"}, {"-1", "0", "0"}, {"-1", "0", "-1"}, {"0", "-1", "-1"}}));
+                        {"0", "1", "0", "0", "0", "-1", "-1", "0"},
+                        {"0", "0", "1", "0", "0", "-1", "-2", "-1"},
+                        {"0", "0", "0", "1", "1", "0", "-1", "-2"}}));
+  EXPECT_EQ(to_field<Q>(m.B), mat({{"0", "1", "0"}, {"-1", "0", "0"}, {"-1", "0", "-1"}, {"0", "-1", "-1"}}));
 }
 
 TEST(Section4, KAndPOfModeNaAreThePapers) {
@@ -103,15 +108,17 @@ TEST(ConeForm, DirectKEqualsTheLiteralProductECNRSVOnEveryModeOfSeveralScenes) {
       const ModeMatrices<Q> mm = mode_matrices<Q>(s, mode);
       const ConeForm<Q> f = cone_form(s, m, mode);
       const Mat<Q> K = mm.E * m.C() * mm.N * mm.R * mm.S * mm.V;  // eq. (15)
-      const Mat<Q> P = mm.E * m.B;                                // eq. (17)
+      const Mat<Q> P = mm.E * to_field<Q>(m.B);                   // eq. (17)
       EXPECT_EQ(f.K, K) << file << " " << mode.text();
       EXPECT_EQ(f.P, P) << file << " " << mode.text();
       EXPECT_EQ(f.strict.size(), static_cast<std::size_t>(K.cols()));
       ++checked;
       more = false;
       for (std::size_t i = 0; i < n && !more; ++i) {
-        if (++digit[i] < letters[i].size()) more = true;
-        else digit[i] = 0;
+        if (++digit[i] < letters[i].size())
+          more = true;
+        else
+          digit[i] = 0;
       }
     }
   }
@@ -168,9 +175,100 @@ TEST(Model, FloatModelIsTheExactModelUpToThePositiveScaleOfM) {
   const ContactModel<Q> e = contact_model<Q>(s);
   const ContactModel<double> d = contact_model<double>(s);
   EXPECT_EQ(s.workpiece.inertia_per_mass, Q(5, 3));
-  EXPECT_LT((exact::to_double(e.J) - d.J).cwiseAbs().maxCoeff(), 1e-12);
-  EXPECT_LT((exact::to_double(e.A) / 5 - d.A).cwiseAbs().maxCoeff(), 1e-12);
-  EXPECT_LT((exact::to_double(e.B) / 5 - d.B).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((exact::to_double(to_field<Q>(e.J)) - d.J).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((exact::to_double(to_field<Q>(e.A)) / 5 - d.A).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((exact::to_double(to_field<Q>(e.B)) / 5 - d.B).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+PlanarScene parse(const std::string& text) {
+  return geometry::read_planar_scene(exact::JsonInput::parse(text, "test.json"));
+}
+
+// a = c b for some c > 0.
+bool positive_multiple(const std::vector<Q>& a, const std::vector<Q>& b) {
+  if (a.size() != b.size()) return false;
+  Q c = 0;
+  for (std::size_t i = 0; i < b.size() && sgn(c) == 0; ++i)
+    if (sgn(b[i]) != 0) c = a[i] / b[i];
+  if (sgn(c) <= 0) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i] != c * b[i]) return false;
+  return true;
+}
+
+std::vector<Q> column(const Mat<Q>& M, Eigen::Index j) {
+  return std::vector<Q>(M.col(j).data(), M.col(j).data() + M.rows());
+}
+
+// The integer model in machine integers, and in Z when its numbers outgrow them (radius 10^12 and a
+// com at (1/7, 2/9): torques ~10^13, A ~10^27): each frame of J is a positive multiple of
+// (n_i, (p_i - com) x n_i) and (t_i, (p_i - com) x t_i), and B = J^T diag(1, 1, 2), A = B J (eq. 6,
+// M^-1 = diag(1, 1, m/I) scaled by num(I/m) = 1).
+TEST(Model, IntegerModelIsEquation6AndRestartsInZ) {
+  for (const bool huge : {false, true}) {
+    const std::string r = huge ? "1000000000000" : "5", x = huge ? "-600000000000" : "-3",
+                      y = huge ? "800000000000" : "4";
+    const PlanarScene s =
+        parse(R"({"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":)" + r +
+              R"(},"com":["1/7","2/9"],"mass":2,"inertia":1},"fixels":[{"position":[0,-)" + r + R"(]},{"position":[)" +
+              r + R"(,0]},{"position":[)" + x + "," + y + R"(]}],"mu_s":"1/5"})");
+    const ContactModel<Q> m = contact_model<Q>(s);
+    EXPECT_EQ(m.A.is_wide(), huge);
+    const Mat<Q> J = to_field<Q>(m.J), A = to_field<Q>(m.A), B = to_field<Q>(m.B);
+    EXPECT_EQ(J, jacobian(s));
+    Mat<Q> Minv = Mat<Q>::Identity(3, 3);
+    Minv(2, 2) = 2;
+    EXPECT_EQ(B, Mat<Q>(J.transpose() * Minv));
+    EXPECT_EQ(A, Mat<Q>(B * J));
+    const Eigen::Index n = 3;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const geometry::ContactFrame& f = s.fixels[static_cast<std::size_t>(i)].frame;
+      const geometry::Point2 p = f.point - s.workpiece.com, t = f.tangent();
+      const std::vector<Q> wn = {f.normal.x, f.normal.y, geometry::cross(p, f.normal)};
+      const std::vector<Q> wt = {t.x, t.y, geometry::cross(p, t)};
+      EXPECT_TRUE(positive_multiple(column(J, i), wn)) << i;
+      EXPECT_TRUE(positive_multiple(column(J, n + i), wt)) << i;
+      EXPECT_EQ(J(0, i) * f.normal.y, J(1, i) * f.normal.x);
+      for (Eigen::Index k = 0; k < 3; ++k) EXPECT_EQ(J(k, i).get_den(), 1);
+    }
+  }
+}
+
+// ring_form: the rows [P | K] of cone_form up to a positive factor per row, with the force columns
+// of K scaled by the denominator q of mu; q = 2^62 against A_ii = 25 overflows std::int64_t, and the
+// rows then come in Z.
+TEST(ConeForm, RingFormIsConeFormUpToPositiveScalingAndRestartsInZ) {
+  for (const std::string mu : {"1/5", "3/4611686018427387904"}) {
+    const PlanarScene s = parse(R"({"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":5}},
+      "fixels":[{"position":[3,-4]},{"position":[-4,-3]},{"position":[5,0]}],"mu_s":")" +
+                                mu + R"(","mu_k":")" + mu + R"("})");
+    const ContactModel<Q> m = contact_model<Q>(s);
+    const Q q = exact::parse_rational(mu).get_den();
+    const bool huge = q > 5;
+    for (const char* text : {"nnn", "lrs", "mns", "sss"}) {
+      const ModeString mode = mode_of(s, text);
+      const ConeForm<Q> f = cone_form(s, m, mode);
+      const bool has_mu = std::any_of(f.names.begin(), f.names.end(),
+                                      [](const std::string& name) { return name.find("mu") != std::string::npos; });
+      if (huge && has_mu) {
+        EXPECT_THROW(ring_form<std::int64_t>(s, m, mode), exact::RingOverflow) << text;
+      }
+      if (!huge) {
+        EXPECT_EQ(ring_form<std::int64_t>(s, m, mode).rows.size(), static_cast<std::size_t>(f.K.rows()));
+      }
+      const RingForm<Z> g = ring_form<Z>(s, m, mode);
+      EXPECT_EQ(g.strict, f.strict) << text;
+      ASSERT_EQ(g.rows.size(), static_cast<std::size_t>(f.K.rows())) << text;
+      for (Eigen::Index r = 0; r < f.K.rows(); ++r) {
+        std::vector<Q> want, got;
+        for (Eigen::Index j = 0; j < 3; ++j) want.push_back(f.P(r, j));
+        for (Eigen::Index j = 0; j < f.K.cols(); ++j)
+          want.push_back(f.K(r, j) * (f.names[static_cast<std::size_t>(j)].find("mu") != std::string::npos ? q : Z(1)));
+        for (const Z& x : g.rows[static_cast<std::size_t>(r)]) got.push_back(Q(x));
+        EXPECT_TRUE(positive_multiple(got, want)) << text << " row " << r;
+      }
+    }
+  }
 }
 
 }  // namespace

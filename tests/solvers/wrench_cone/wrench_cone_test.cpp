@@ -1,5 +1,7 @@
 // The wrench cones themselves: the section 4 example, both routes on every mode of several scenes,
 // invariance under scaling a frame, the kinematically feasible modes of section 7.
+#include "solvers/wrench_cone/wrench_cone.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,15 +13,18 @@
 #include "exact/rational_text.h"
 #include "geometry/canonical.h"
 #include "geometry/scene_json.h"
-#include "solvers/wrench_cone/wrench_cone.h"
 
 namespace contactcert::solvers {
 namespace {
 
 using geometry::PlanarScene;
 
-PlanarScene load(const std::string& name) { return geometry::load_planar_scene(std::string(CONTACTCERT_SCENES_DIR) + "/" + name); }
-PlanarScene parse(const std::string& text) { return geometry::read_planar_scene(exact::JsonInput::parse(text, "test.json")); }
+PlanarScene load(const std::string& name) {
+  return geometry::load_planar_scene(std::string(CONTACTCERT_SCENES_DIR) + "/" + name);
+}
+PlanarScene parse(const std::string& text) {
+  return geometry::read_planar_scene(exact::JsonInput::parse(text, "test.json"));
+}
 
 std::vector<bool> touching_of(const PlanarScene& s) {
   std::vector<bool> t;
@@ -145,10 +150,19 @@ TEST(Routes, AgreeOnRandomScenesAndModes) {
     for (int i = 0; i < n; ++i) {
       const int side = pick(rng), along = 1 + (coord(rng) + 6) % 3, gap = letter(rng) % 2;
       int x = 0, y = 0;
-      if (side == 0) { x = along; y = -gap; }
-      else if (side == 1) { x = 4 + gap; y = along % 2 + 1; }
-      else if (side == 2) { x = along; y = 3 + gap; }
-      else { x = -gap; y = along % 2 + 1; }
+      if (side == 0) {
+        x = along;
+        y = -gap;
+      } else if (side == 1) {
+        x = 4 + gap;
+        y = along % 2 + 1;
+      } else if (side == 2) {
+        x = along;
+        y = 3 + gap;
+      } else {
+        x = -gap;
+        y = along % 2 + 1;
+      }
       if (i) fixels += ",";
       fixels += "{\"position\":[";
       fixels += std::to_string(x);
@@ -156,9 +170,10 @@ TEST(Routes, AgreeOnRandomScenesAndModes) {
       fixels += std::to_string(y);
       fixels += "]}";
     }
-    const PlanarScene s = parse(R"({"kind":"planar","workpiece":{"shape":{"type":"polygon","vertices":[[0,0],[4,0],[4,3],[0,3]]},"com":[)" +
-                                std::to_string(1 + t % 3) + ",1]},\"fixels\":[" + fixels + "],\"mu_s\":\"" + std::to_string(t % 5) +
-                                "/4\",\"mu_k\":\"1/3\"}");
+    const PlanarScene s = parse(
+        R"({"kind":"planar","workpiece":{"shape":{"type":"polygon","vertices":[[0,0],[4,0],[4,3],[0,3]]},"com":[)" +
+        std::to_string(1 + t % 3) + ",1]},\"fixels\":[" + fixels + "],\"mu_s\":\"" + std::to_string(t % 5) +
+        "/4\",\"mu_k\":\"1/3\"}");
     const ContactModel<Q> m = contact_model<Q>(s);
     const std::vector<ModeString> modes = all_modes(s);
     for (int k = 0; k < 6; ++k) {
@@ -196,10 +211,34 @@ TEST(Routes, AgreeOnEveryModeWithHugeCoordinates) {
   }
 }
 
+// A friction coefficient 3/2^62 against A_ii = 625: the integer K z = P g overflows std::int64_t as it
+// is read from the (machine-integer) model, and the paper's route restarts in Z.
+TEST(Routes, AgreeOnEveryModeWhenTheFrictionDenominatorOverflows) {
+  const PlanarScene s = parse(R"({"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":5}},
+    "fixels":[{"position":[3,-4]},{"position":[-4,-3]},{"position":[5,0]}],
+    "mu_s":"3/4611686018427387904","mu_k":"1/4611686018427387903"})");
+  const ContactModel<Q> m = contact_model<Q>(s);
+  EXPECT_FALSE(m.A.is_wide());
+  int nonempty = 0;
+  for (const ModeString& mode : all_modes(s)) {
+    const geometry::FaceCone<Q> a = wrench_cone_face(s, m, mode, Route::kPaper);
+    EXPECT_TRUE(geometry::identical(a, wrench_cone_face(s, m, mode, Route::kPaper, {}, Preconditioning::kNone)))
+        << mode.text();
+    EXPECT_TRUE(geometry::identical(a, wrench_cone_face(s, m, mode, Route::kProject))) << mode.text();
+    nonempty += is_empty_cone(a) ? 0 : 1;
+  }
+  EXPECT_GT(nonempty, 0);
+}
+
 TEST(Invariance, ScalingAContactFrameLeavesEveryConeUnchanged) {
-  const std::string base = R"({"kind":"planar","workpiece":{"shape":{"type":"polygon","vertices":[[0,0],[4,0],[4,2],[0,2]]}},"fixels":[)";
-  const PlanarScene unit = parse(base + R"({"point":[1,0],"normal":[0,1],"gap":0},{"point":[4,1],"normal":[-1,0],"gap":0},{"point":[0,1],"normal":[1,0],"gap":"1/2"}],"mu_s":"1/3"})");
-  const PlanarScene scaled = parse(base + R"({"point":[1,0],"normal":[0,"7/3"],"gap":0},{"point":[4,1],"normal":[-5,0],"gap":0},{"point":[0,1],"normal":["1/9",0],"gap":"1/2"}],"mu_s":"1/3"})");
+  const std::string base =
+      R"({"kind":"planar","workpiece":{"shape":{"type":"polygon","vertices":[[0,0],[4,0],[4,2],[0,2]]}},"fixels":[)";
+  const PlanarScene unit = parse(
+      base +
+      R"({"point":[1,0],"normal":[0,1],"gap":0},{"point":[4,1],"normal":[-1,0],"gap":0},{"point":[0,1],"normal":[1,0],"gap":"1/2"}],"mu_s":"1/3"})");
+  const PlanarScene scaled = parse(
+      base +
+      R"({"point":[1,0],"normal":[0,"7/3"],"gap":0},{"point":[4,1],"normal":[-5,0],"gap":0},{"point":[0,1],"normal":["1/9",0],"gap":"1/2"}],"mu_s":"1/3"})");
   const ContactModel<Q> mu = contact_model<Q>(unit), ms = contact_model<Q>(scaled);
   int nonempty = 0;
   for (const ModeString& mode : all_modes(unit)) {
