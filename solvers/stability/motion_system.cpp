@@ -24,7 +24,18 @@ exact::StrictSystem<T> MotionSystem<T>::with_wrench(const Vec<T>& g) const {
 
 template <class T>
 exact::StrictSystem<T> MotionSystem<T>::kinematic() const {
-  return {system.A.topRows(kinematic_rows), Vec<T>::Zero(kinematic_rows), system.is_free, system.strict};
+  std::vector<Index> cols{0, 1, 2};  // vdot (free), then sigma (strict)
+  for (Index j = 3; j < system.A.cols(); ++j)
+    if (system.strict[static_cast<size_t>(j)]) cols.push_back(j);
+  exact::StrictSystem<T> s{Mat<T>(kinematic_rows, static_cast<Index>(cols.size())), Vec<T>::Zero(kinematic_rows),
+                           std::vector<bool>(cols.size(), false), std::vector<bool>(cols.size(), true)};
+  for (Index c = 0; c < static_cast<Index>(cols.size()); ++c)
+    for (Index i = 0; i < kinematic_rows; ++i) s.A(i, c) = system.A(i, cols[static_cast<size_t>(c)]);
+  for (std::size_t c = 0; c < 3; ++c) {
+    s.is_free[c] = true;
+    s.strict[c] = false;
+  }
+  return s;
 }
 
 template <class T>
@@ -61,11 +72,26 @@ Vec<T> MotionSystem<T>::point(const Vec<T>& vdot, const Vec<T>& c) const {
 }
 
 template <class T>
+MotionModel<T> motion_model(const geometry::PlanarScene& scene) {
+  MotionModel<T> m{from_exact<T>(jacobian(scene)), from_exact<T>(scene.workpiece.inertia_per_mass), {}, {}};
+  for (const geometry::Fixel& f : scene.fixels) {
+    m.mu_s.push_back(from_exact<T>(f.mu_s));
+    m.mu_k.push_back(from_exact<T>(f.mu_k));
+  }
+  return m;
+}
+
+template <class T>
 MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeString& mode, bool zero_acceleration) {
-  const Index k = static_cast<Index>(scene.fixels.size());
+  return motion_system(motion_model<T>(scene), mode, zero_acceleration);
+}
+
+template <class T>
+MotionSystem<T> motion_system(const MotionModel<T>& model, const ModeString& mode, bool zero_acceleration) {
+  const Index k = model.J.cols() / 2;
   if (static_cast<Index>(mode.letters.size()) != k) throw std::invalid_argument("motion_system: mode length");
-  const Mat<T> J = from_exact<T>(jacobian(scene));  // 3 x 2k: normals, then tangents
-  const T inertia = from_exact<T>(scene.workpiece.inertia_per_mass);
+  const Mat<T>& J = model.J;  // 3 x 2k: normals, then tangents
+  const T& inertia = model.inertia_per_mass;
 
   // Column layout: vdot (3) | per fixel: [sigma (strict kinematic slack)] [c_n] [c_t, rho+, rho-].
   MotionSystem<T> ms;
@@ -94,7 +120,7 @@ MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeStri
       fric_rows += 2;
     } else {
       // Table 2: l has c_t = -mu_k c_n, r has c_t = +mu_k c_n (friction opposes the sliding).
-      const T mu_k = from_exact<T>(scene.fixels[u].mu_k);
+      const T& mu_k = model.mu_k[u];
       ms.c_t_per_c_n[u] = L == Interaction::kSlideLeft ? T(-mu_k) : mu_k;
     }
   }
@@ -142,7 +168,7 @@ MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeStri
     }
     if (ct >= 0) {
       // |c_t| <= mu_s c_n:  mu_s c_n - c_t - rho+ = 0,  mu_s c_n + c_t - rho- = 0.
-      const T mu_s = from_exact<T>(scene.fixels[u].mu_s);
+      const T& mu_s = model.mu_s[u];
       s.is_free[static_cast<size_t>(ct)] = true;
       for (Index side = 0; side < 2; ++side, ++f) {
         s.A(f, cn) = mu_s;
@@ -163,7 +189,12 @@ MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeStri
 
 template struct MotionSystem<double>;
 template struct MotionSystem<Q>;
-template MotionSystem<double> motion_system<double>(const geometry::PlanarScene&, const ModeString&, bool);
-template MotionSystem<Q> motion_system<Q>(const geometry::PlanarScene&, const ModeString&, bool);
+#define CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(T)                                             \
+  template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                     \
+  template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool); \
+  template MotionSystem<T> motion_system<T>(const geometry::PlanarScene&, const ModeString&, bool);
+CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(double)
+CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(Q)
+#undef CONTACTCERT_MOTION_SYSTEM_INSTANTIATE
 
 }  // namespace contactcert::solvers

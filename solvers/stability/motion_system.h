@@ -33,7 +33,9 @@ struct MotionSystem {
   Vec<T> rhs(const Vec<T>& g) const;
   /// The system for wrench g (b = rhs(g)).
   exact::StrictSystem<T> with_wrench(const Vec<T>& g) const;
-  /// The kinematic rows alone (with all columns): feasible iff the mode is kinematically feasible.
+  /// The kinematic rows alone, on the only columns they involve (vdot, then the strict slacks sigma):
+  /// feasible iff the mode is kinematically feasible; a Motzkin certificate of it is one of the kinematic
+  /// rows of the whole system (the other columns are zero there).
   exact::StrictSystem<T> kinematic() const;
   /// Contact forces (c_1n..c_kn, c_1t..c_kt) and vdot read off a point of the system.
   Vec<T> forces(const Vec<T>& x) const;
@@ -45,14 +47,35 @@ struct MotionSystem {
   Vec<T> point(const Vec<T>& vdot, const Vec<T>& c) const;
 };
 
-/// The system of `mode` (letters s l r n, one per fixel; every fixel must touch) for the scene.
+/// What the system of every mode reads from a scene whose fixels all touch: the Jacobian J of eq. (4)
+/// (contact_model.h: exact frames scaled to integers), I/m, and mu_s, mu_k per fixel.
+template <class T>
+struct MotionModel {
+  Mat<T> J;
+  T inertia_per_mass;
+  std::vector<T> mu_s, mu_k;
+};
+
+template <class T>
+MotionModel<T> motion_model(const geometry::PlanarScene& scene);
+
+/// The system of `mode` (letters s l r n, one per fixel; every fixel must touch) for the model's scene.
 /// With `zero_acceleration`, vdot is fixed to 0 and the kinematic rows are dropped: then the system
 /// says J c + g = 0 with every force in its static friction cone (the weakly stable test).
+template <class T>
+MotionSystem<T> motion_system(const MotionModel<T>& model, const ModeString& mode, bool zero_acceleration = false);
+
+/// motion_system(motion_model<T>(scene), mode, zero_acceleration).
 template <class T>
 MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeString& mode,
                               bool zero_acceleration = false);
 
-extern template MotionSystem<double> motion_system<double>(const geometry::PlanarScene&, const ModeString&, bool);
-extern template MotionSystem<Q> motion_system<Q>(const geometry::PlanarScene&, const ModeString&, bool);
+#define CONTACTCERT_MOTION_SYSTEM_EXTERN(T)                                                         \
+  extern template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                     \
+  extern template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool); \
+  extern template MotionSystem<T> motion_system<T>(const geometry::PlanarScene&, const ModeString&, bool);
+CONTACTCERT_MOTION_SYSTEM_EXTERN(double)
+CONTACTCERT_MOTION_SYSTEM_EXTERN(Q)
+#undef CONTACTCERT_MOTION_SYSTEM_EXTERN
 
 }  // namespace contactcert::solvers

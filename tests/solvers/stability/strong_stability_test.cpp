@@ -11,6 +11,7 @@
 #include "geometry/span_cone.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/stability/margin.h"
+#include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 #include "tests/solvers/scene_fixtures.h"
@@ -89,16 +90,18 @@ TEST(StrongStability, CorruptedEvidenceIsRejected) {
   EXPECT_NE(check_stability(scene, wrench(0, -1, 0), wrong_verdict), "");
   // Change one number in a dynamic proof (one that is not all zeros).
   bool corrupted = false;
-  for (auto& p : r.proofs) {
-    if (p.kinematic) continue;
-    for (Eigen::Index i = 0; i < p.motzkin.size() && !corrupted; ++i)
-      if (sgn(p.motzkin(i)) != 0) {
-        p.motzkin(i) = -p.motzkin(i) - 1;
+  ModeProofs<Q> bad;
+  for (const auto& p : r.proofs) {
+    ModeProof<Q> q = p;
+    for (Eigen::Index i = 0; i < q.motzkin.size() && !corrupted && !q.kinematic; ++i)
+      if (sgn(q.motzkin(i)) != 0) {
+        q.motzkin(i) = -q.motzkin(i) - 1;
         corrupted = true;
       }
-    if (corrupted) break;
+    bad.push_back(q);
   }
   ASSERT_TRUE(corrupted);
+  r.proofs = bad;
   EXPECT_NE(check_stability(scene, wrench(0, -1, 0), r), "");
   // The same evidence does not prove stability under another wrench.
   auto w = strong_stability<Q>(scene, wrench(0, -1, 0));
@@ -106,12 +109,12 @@ TEST(StrongStability, CorruptedEvidenceIsRejected) {
 }
 
 // A unit disk touching fixels at (0,-1), (1,0) and (-4/5,-3/5), mu = 1/2 (the benchmark's three-fixel scene).
+const char* const kThreeFixelDisk =
+    R"({"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":1},"mass":1,"inertia":1},
+        "fixels":[{"position":[0,-1]},{"position":[1,0]},{"position":["-4/5","-3/5"]}],
+        "mu_s":"1/2","mu_k":"1/2"})";
 geometry::PlanarScene three_fixel_disk() {
-  return geometry::read_planar_scene(exact::JsonInput::parse(
-      R"({"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":1},"mass":1,"inertia":1},
-          "fixels":[{"position":[0,-1]},{"position":[1,0]},{"position":["-4/5","-3/5"]}],
-          "mu_s":"1/2","mu_k":"1/2"})",
-      "three_fixel_disk.json"));
+  return geometry::read_planar_scene(exact::JsonInput::parse(kThreeFixelDisk, "three_fixel_disk.json"));
 }
 
 TEST(StabilityOracle, FloatFirstVerdictEqualsTheExactVerdictIncludingConeFaces) {
@@ -155,10 +158,48 @@ TEST(StabilityOracle, ThreeFixelsAgreeWithTheCellLabelsAndTheColdVerdict) {
     EXPECT_EQ(check_stability(scene, g, r), "") << g.transpose();
     const auto cold = strong_stability<Q>(scene, g);
     EXPECT_EQ(cold.verdict, r.verdict);
-    EXPECT_EQ(cold.lps, r.lps + oracle.preparation_lps());
+    EXPECT_EQ(check_stability(scene, g, cold), "") << g.transpose();
+    // Cold prepares only the modes the verdict reaches: all of them unless some mode moves.
+    if (r.has_moving) {
+      EXPECT_LE(cold.lps, r.lps + oracle.preparation_lps());
+      EXPECT_EQ(cold.moving.mode.text(), r.moving.mode.text());
+    } else {
+      EXPECT_EQ(cold.lps, r.lps + oracle.preparation_lps());
+    }
     if (region.cells[c].dimension == 3) {  // off every face the float oracle agrees too
       EXPECT_EQ(floats.verdict(exact::to_double(g)).verdict, r.verdict) << g.transpose();
     }
+  }
+}
+
+TEST(StabilityOracle, SharedKinematicProofsOutliveTheOracleAndEqualTheColdOnes) {
+  // A verdict refers to the oracle's kinematic proofs instead of copying them: they must still verify (also
+  // through the certificate file) after the oracle is gone, in copies of the result, and equal the proofs that
+  // the cold path computes for itself.
+  const auto scene = three_fixel_disk();
+  const Vec<Q> g = wrench(0, -1, 0);
+  StabilityResult<Q> warm;
+  long shared = 0;
+  {
+    const StabilityOracle<Q> oracle(scene);
+    warm = oracle.verdict(g);
+    for (const auto& p : warm.proofs) shared += p.kinematic;
+  }
+  ASSERT_EQ(warm.verdict, StabilityVerdict::kStronglyStable);
+  ASSERT_EQ(warm.proofs.size(), 63u);
+  EXPECT_GT(shared, 40);
+  const StabilityResult<Q> copy = warm;
+  warm = StabilityResult<Q>();  // the copy alone keeps the shared proofs now
+  EXPECT_EQ(check_stability(scene, g, copy), "");
+  const auto checked = check_stability_certificate(
+      exact::JsonInput::parse(stability_certificate(kThreeFixelDisk, g, copy), "certificate.json"));
+  EXPECT_TRUE(checked.valid) << checked.reason;
+  const auto cold = strong_stability<Q>(scene, g);
+  ASSERT_EQ(cold.proofs.size(), copy.proofs.size());
+  for (std::size_t i = 0; i < cold.proofs.size(); ++i) {
+    EXPECT_EQ(cold.proofs[i].mode.text(), copy.proofs[i].mode.text());
+    EXPECT_EQ(cold.proofs[i].kinematic, copy.proofs[i].kinematic);
+    EXPECT_EQ(cold.proofs[i].motzkin, copy.proofs[i].motzkin) << cold.proofs[i].mode.text();
   }
 }
 
@@ -169,16 +210,24 @@ TEST(StabilityOracle, CorruptedFloatFirstEvidenceIsRejected) {
   auto strong = oracle.verdict(wrench(0, -1, 0));
   ASSERT_EQ(strong.verdict, StabilityVerdict::kStronglyStable);
   ASSERT_EQ(check_stability(scene, wrench(0, -1, 0), strong), "");
-  for (auto& p : strong.proofs)
-    if (p.kinematic) {
-      auto bad = strong;
-      ModeProof<Q>& q = bad.proofs[static_cast<std::size_t>(&p - strong.proofs.data())];
-      q.motzkin = -q.motzkin;
-      EXPECT_NE(check_stability(scene, wrench(0, -1, 0), bad), "") << p.mode.text();
-      q.motzkin = p.motzkin;
-      q.motzkin(q.motzkin.size() - 1) += 1;
-      EXPECT_NE(check_stability(scene, wrench(0, -1, 0), bad), "") << p.mode.text();
-    }
+  // The list with proof i replaced by `q` (the others still shared with the oracle).
+  auto with = [&strong](std::size_t i, const ModeProof<Q>& q) {
+    auto bad = strong;
+    bad.proofs = ModeProofs<Q>();
+    for (std::size_t j = 0; j < strong.proofs.size(); ++j) bad.proofs.push_back(j == i ? q : strong.proofs[j]);
+    return bad;
+  };
+  for (std::size_t i = 0; i < strong.proofs.size(); ++i) {
+    const ModeProof<Q>& p = strong.proofs[i];
+    if (!p.kinematic) continue;
+    ModeProof<Q> q = p;
+    q.motzkin = -q.motzkin;
+    EXPECT_NE(check_stability(scene, wrench(0, -1, 0), with(i, q)), "") << p.mode.text();
+    q.motzkin = p.motzkin;
+    q.motzkin(q.motzkin.size() - 1) += 1;
+    EXPECT_NE(check_stability(scene, wrench(0, -1, 0), with(i, q)), "") << p.mode.text();
+  }
+  EXPECT_EQ(check_stability(scene, wrench(0, -1, 0), strong), "");  // the shared set itself is unchanged
   // A moving witness with a changed acceleration, and resting forces that no longer balance g.
   auto weak = oracle.verdict(wrench(-1, -1, 0));
   ASSERT_EQ(weak.verdict, StabilityVerdict::kWeaklyStable);
