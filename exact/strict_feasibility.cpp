@@ -1,5 +1,6 @@
 #include "exact/strict_feasibility.h"
 
+#include <numeric>
 #include <type_traits>
 
 #include "exact/simplex.h"
@@ -93,8 +94,8 @@ std::optional<std::vector<i64>> integer_rhs(const IntegerLp& ilp, const Vec<Q>& 
 // The float LP on the integer rows, its point or certificate rounded to fractions and checked exactly;
 // nullopt if the check fails.
 std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const LpProblem<double>& hint,
-                                                  const StrictSystem<Q>& sys, const std::vector<Index>& S,
-                                                  const Vec<Q>& b) {
+                                                  const std::vector<bool>& is_free, const std::vector<bool>& strict,
+                                                  const std::vector<Index>& S, const Vec<Q>& b) {
   const Index m = ilp.m, n = ilp.n;
   Z d;
   const std::optional<std::vector<i64>> B = integer_rhs(ilp, b, d);
@@ -116,7 +117,7 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
     if (!round_vector(std::vector<double>(f.x.data(), f.x.data() + n), X, D)) return std::nullopt;
     for (Index j = 0; j < n; ++j) {
       const i64 xj = X[static_cast<size_t>(j)];
-      if (!flag(sys.is_free, j) && (xj < 0 || (xj == 0 && flag(sys.strict, j)))) return std::nullopt;
+      if (!flag(is_free, j) && (xj < 0 || (xj == 0 && flag(strict, j)))) return std::nullopt;
     }
     for (Index i = 0; i < m; ++i) {
       i128 acc = 0;
@@ -138,8 +139,8 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
     i128 t = 0;
     for (Index i = 0; i < m; ++i)
       if (!fma128(t, Y[static_cast<size_t>(i)], A(i, j))) return std::nullopt;
-    if (flag(sys.is_free, j) ? t != 0 : t < 0) return std::nullopt;
-    strict_positive = strict_positive || (t > 0 && flag(sys.strict, j));
+    if (flag(is_free, j) ? t != 0 : t < 0) return std::nullopt;
+    strict_positive = strict_positive || (t > 0 && flag(strict, j));
   }
   i128 yb = 0;
   for (Index i = 0; i < m; ++i)
@@ -152,45 +153,125 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
   return out;
 }
 
+// Row i of A times L_i, the lcm of the denominators of its entries, in 64 bits: the rows of integer_lp (b = 0,
+// no objective) read straight from A's non-zero entries, which for_each_entry(f) passes as f(i, j, a_ij).
+// Nullopt if a number does not fit.
+template <class ForEachEntry>
+std::optional<IntegerLp> integer_rows(Index m, Index n, ForEachEntry&& for_each_entry) {
+  IntegerLp out;
+  out.m = m;
+  out.n = n;
+  out.A.assign(static_cast<size_t>(m * n), 0);
+  out.b.assign(static_cast<size_t>(m), 0);
+  out.c.assign(static_cast<size_t>(n), 0);
+  out.row_scale.assign(static_cast<size_t>(m), 1);
+  bool fits = true;
+  for_each_entry([&](Index i, Index, const Q& a) {
+    i64& L = out.row_scale[static_cast<size_t>(i)];
+    mpz_srcptr den = mpq_denref(a.get_mpq_t());
+    if (!fits || !mpz_fits_slong_p(den)) {
+      fits = false;
+      return;
+    }
+    const i64 d = mpz_get_si(den);
+    fits = !__builtin_mul_overflow(L / std::gcd(L, d), d, &L);
+  });
+  for_each_entry([&](Index i, Index j, const Q& a) {
+    mpz_srcptr num = mpq_numref(a.get_mpq_t());
+    if (!fits || !mpz_fits_slong_p(num)) {
+      fits = false;
+      return;
+    }
+    const i64 multiple = out.row_scale[static_cast<size_t>(i)] / mpz_get_si(mpq_denref(a.get_mpq_t()));
+    fits = !__builtin_mul_overflow(mpz_get_si(num), multiple, &out.A[static_cast<size_t>(i * n + j)]);
+  });
+  if (!fits) return std::nullopt;
+  return out;
+}
+
 }  // namespace
 
 template <class T>
-StrictSolver<T>::StrictSolver(const StrictSystem<T>& system, Arith arith) : system_(system), arith_(arith) {
-  for (Index j = 0; j < system.A.cols(); ++j)
-    if (flag(system.strict, j)) strict_columns_.push_back(j);
+StrictSystem<T> SparseStrictSystem<T>::dense(const Vec<T>& b) const {
+  StrictSystem<T> s{Mat<T>::Zero(rows, cols), b.size() ? b : Vec<T>(Vec<T>::Zero(rows)), is_free, strict};
+  for (const Entry<T>& e : entries) s.A(e.row, e.col) = e.value;
+  return s;
+}
+
+template <class T>
+template <class ForEachEntry>
+void StrictSolver<T>::prepare(ForEachEntry&& for_each_entry) {
+  for (Index j = 0; j < n_; ++j)
+    if (flag(strict_, j)) strict_columns_.push_back(j);
   if constexpr (std::is_same_v<T, Q>) {
-    if (arith == Arith::kExact) return;
-    // A is lent to the LP for the scaling and taken back (no copy of a rational matrix).
-    LpProblem<Q> lp{std::move(system_.A), Vec<Q>::Zero(system.A.rows()), {}, {}};
-    integer_ = integer_lp(lp);
-    system_.A = std::move(lp.A);
-    if (integer_) hint_ = strict_lp<double>(integer_->to_double({}).A, system.is_free, strict_columns_);
-  } else {
-    hint_ = strict_lp<double>(system.A, system.is_free, strict_columns_);
+    if (arith_ != Arith::kExact) integer_ = integer_rows(m_, n_, for_each_entry);
+    if (integer_) {
+      hint_ = strict_lp<double>(integer_->to_double({}).A, is_free_, strict_columns_);
+      return;
+    }
   }
+  Mat<T> A = Mat<T>::Zero(m_, n_);
+  for_each_entry([&A](Index i, Index j, const T& a) { A(i, j) = a; });
+  if constexpr (std::is_same_v<T, Q>)
+    A_ = std::move(A);
+  else
+    hint_ = strict_lp<double>(A, is_free_, strict_columns_);
+}
+
+template <class T>
+StrictSolver<T>::StrictSolver(const StrictSystem<T>& s, Arith arith)
+    : m_(s.A.rows()), n_(s.A.cols()), is_free_(s.is_free), strict_(s.strict), arith_(arith) {
+  prepare([&s](auto&& f) {
+    const T zero(0);  // exact comparison: a float entry below the sign tolerance still enters the LP
+    for (Index j = 0; j < s.A.cols(); ++j)
+      for (Index i = 0; i < s.A.rows(); ++i)
+        if (s.A(i, j) != zero) f(i, j, s.A(i, j));
+  });
+}
+
+template <class T>
+StrictSolver<T>::StrictSolver(const SparseStrictSystem<T>& s, Arith arith)
+    : m_(s.rows), n_(s.cols), is_free_(s.is_free), strict_(s.strict), arith_(arith) {
+  prepare([&s](auto&& f) {
+    for (const Entry<T>& e : s.entries) f(e.row, e.col, e.value);
+  });
 }
 
 template <class T>
 StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
-  const Index m = system_.A.rows(), n = system_.A.cols();
   const bool has_strict = !strict_columns_.empty();
   if constexpr (std::is_same_v<T, Q>) {
-    if (integer_)
-      if (std::optional<StrictFeasibility<Q>> r = rounded_solve(*integer_, hint_, system_, strict_columns_, b))
-        return std::move(*r);
-    LpProblem<Q> lp = strict_lp<Q>(system_.A, system_.is_free, strict_columns_);
-    lp.b.head(m) = b;
-    return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp) : solve_lp_verified(lp), m, n, has_strict);
+    if (!integer_) {
+      LpProblem<Q> lp = strict_lp<Q>(A_, is_free_, strict_columns_);
+      lp.b.head(m_) = b;
+      return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp) : solve_lp_verified(lp), m_, n_, has_strict);
+    }
+    if (std::optional<StrictFeasibility<Q>> r = rounded_solve(*integer_, hint_, is_free_, strict_, strict_columns_, b))
+      return std::move(*r);
+    // The verified LP on the integer rows, right-hand side L o b: the same points; a certificate y' of these
+    // rows is y = L o y' for A (y^T A = y'^T (L o A), y^T b = y'^T (L o b)).
+    const std::vector<i64>& L = integer_->row_scale;
+    LpProblem<Q> lp = strict_lp<Q>(integer_->convert<Q>({}, [](i64 v) { return Q(static_cast<long>(v)); }).A, is_free_,
+                                   strict_columns_);
+    for (Index i = 0; i < m_; ++i) lp.b(i) = b(i) * Q(static_cast<long>(L[static_cast<size_t>(i)]));
+    StrictFeasibility<Q> out = read_strict(solve_lp_verified(lp), m_, n_, has_strict);
+    for (Index i = 0; i < out.motzkin.size(); ++i) out.motzkin(i) *= Q(static_cast<long>(L[static_cast<size_t>(i)]));
+    return out;
   } else {
     LpProblem<double> lp = hint_;
-    lp.b.head(m) = b;
-    return read_strict(solve_lp<double>(lp), m, n, has_strict);
+    lp.b.head(m_) = b;
+    return read_strict(solve_lp<double>(lp), m_, n_, has_strict);
   }
 }
 
 template <class T>
 StrictFeasibility<T> strict_feasibility(const StrictSystem<T>& sys, Arith arith) {
   return StrictSolver<T>(sys, arith).solve(sys.b);
+}
+
+template <class T>
+StrictFeasibility<T> strict_feasibility(const SparseStrictSystem<T>& sys, Arith arith) {
+  return StrictSolver<T>(sys, arith).solve(Vec<T>::Zero(sys.rows));
 }
 
 bool verify_strict_point(const StrictSystem<Q>& sys, const Vec<Q>& x) {
@@ -224,9 +305,13 @@ bool verify_motzkin(const StrictSystem<Q>& sys, const Vec<Q>& y) {
   return sgn(yb) < 0 || (sgn(yb) == 0 && strict_positive);
 }
 
-template class StrictSolver<double>;
-template class StrictSolver<Q>;
-template StrictFeasibility<double> strict_feasibility<double>(const StrictSystem<double>&, Arith);
-template StrictFeasibility<Q> strict_feasibility<Q>(const StrictSystem<Q>&, Arith);
+#define CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(T)                                 \
+  template struct SparseStrictSystem<T>;                                              \
+  template class StrictSolver<T>;                                                     \
+  template StrictFeasibility<T> strict_feasibility<T>(const StrictSystem<T>&, Arith); \
+  template StrictFeasibility<T> strict_feasibility<T>(const SparseStrictSystem<T>&, Arith);
+CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(double)
+CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(Q)
+#undef CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE
 
 }  // namespace contactcert::exact

@@ -67,8 +67,9 @@ geometry::PlanarScene budgeted_touching_scene(const geometry::PlanarScene& full,
   return scene;
 }
 
-// A moving mode prepared for verdicts: its system, and its LP if it is kinematically feasible (n..n always
-// is); else its Motzkin certificate on the kinematic rows, padded with zeros to every row (it holds for all g).
+// A moving mode prepared for verdicts: its system and LP if it is kinematically feasible (n..n always is);
+// else only its Motzkin certificate on the kinematic rows, padded with zeros to every row of its system (it
+// holds for all g; the system itself is not built).
 template <class T>
 struct PreparedMode {
   MotionSystem<T> ms;
@@ -79,17 +80,18 @@ struct PreparedMode {
 
 template <class T>
 PreparedMode<T> prepare_mode(const MotionModel<T>& model, const ModeString& mode, bool rolling, exact::Arith arith) {
-  PreparedMode<T> p{motion_system(model, mode), std::nullopt, {}};
+  PreparedMode<T> p;
   if (!rolling) {
-    auto kin = exact::strict_feasibility(p.ms.kinematic(), arith);
+    auto kin = exact::strict_feasibility(kinematic_system(model, mode), arith);
     p.lps = kin.lps;
     if (kin.rounded_float_checked) p.lps_checked_from_float = kin.lps;
     if (kin.status != StrictStatus::kFeasible) {
-      p.kinematic_proof = Vec<T>::Zero(p.ms.system.A.rows());
-      p.kinematic_proof.head(p.ms.kinematic_rows) = kin.motzkin;
+      p.kinematic_proof = Vec<T>::Zero(motion_system_rows(mode));
+      p.kinematic_proof.head(kin.motzkin.size()) = kin.motzkin;
       return p;
     }
   }
+  p.ms = motion_system(model, mode);
   p.solver.emplace(p.ms.system, arith);
   return p;
 }
@@ -255,9 +257,10 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
       if (p.mode.text() != modes[i].text()) return "proof " + std::to_string(i) + " is for the wrong mode";
       const MotionSystem<Q> ms = motion_system(model, p.mode);
       if (p.kinematic) {
-        bool zero_tail = p.motzkin.size() == ms.system.A.rows();
+        bool zero_tail = p.motzkin.size() == ms.system.rows;
         for (Index j = ms.kinematic_rows; zero_tail && j < p.motzkin.size(); ++j) zero_tail = sgn(p.motzkin(j)) == 0;
-        if (!zero_tail || !exact::verify_motzkin(ms.kinematic(), p.motzkin.head(ms.kinematic_rows)))
+        if (!zero_tail ||
+            !exact::verify_motzkin(kinematic_system(model, p.mode).dense(), p.motzkin.head(ms.kinematic_rows)))
           return "the kinematic proof for mode " + p.mode.text() + " does not verify";
       } else if (!exact::verify_motzkin(ms.with_wrench(g), p.motzkin)) {
         return "the proof for mode " + p.mode.text() + " does not verify";

@@ -56,7 +56,11 @@ class ModeProofs {
     if (!shared_) shared_ = set;
     slots_.push_back(-1 - static_cast<std::ptrdiff_t>(j));
   }
-  void reserve(std::size_t n) { slots_.reserve(n); }
+  /// Room for n proofs (own ones included: a growing vector would copy the rational vectors).
+  void reserve(std::size_t n) {
+    slots_.reserve(n);
+    own_.reserve(n);
+  }
   void clear() { *this = ModeProofs(); }
 
   class const_iterator {

@@ -266,6 +266,64 @@ TEST(StrictSolver, FallsBackToTheExactLpWhenTheRoundedAnswerDoesNotCheck) {
   EXPECT_TRUE(exact::verify_motzkin(neg, r.motzkin));
 }
 
+TEST(StrictSolver, RowsBeyondSixtyFourBitsAreSolvedInRationals) {
+  // 2^-62 x1 + (2^62 - 1)^-1 x2 = b: the row's common denominator 2^62 (2^62 - 1) does not fit in 64 bits, so
+  // the solver keeps the rational row (dense or sparse input alike) and every answer comes from the verified LP.
+  const Q a = 1 / Q(Z(1) << 62), c = 1 / Q((Z(1) << 62) - 1);
+  exact::SparseStrictSystem<Q> sparse{1, 2, {{0, 0, a}, {0, 1, c}}, {}, {true, false}};
+  for (const Q& b : {Q(1), Q(-1)}) {
+    const Vec<Q> rhs = Vec<Q>::Constant(1, b);
+    const exact::StrictSystem<Q> dense = sparse.dense(rhs);
+    for (const auto& r : {exact::StrictSolver<Q>(sparse).solve(rhs), exact::StrictSolver<Q>(dense).solve(rhs)}) {
+      EXPECT_FALSE(r.rounded_float_checked);
+      if (b > 0) {
+        ASSERT_EQ(r.status, exact::StrictStatus::kFeasible);
+        EXPECT_TRUE(exact::verify_strict_point(dense, r.x));
+      } else {
+        ASSERT_EQ(r.status, exact::StrictStatus::kInfeasible);
+        EXPECT_TRUE(exact::verify_motzkin(dense, r.motzkin));
+      }
+    }
+  }
+}
+
+TEST(MotionSystem, KinematicRowsAndIntegerRowsEqualTheRationalSystem) {
+  // Every mode of the three-fixel disk: kinematic_system is the kinematic rows of motion_system on the vdot and
+  // sigma columns, motion_system_rows its row count, and the verified solver built from the sparse rational
+  // entries (rows scaled to 64-bit integers) answers as the exact LP on the dense rational system.
+  const auto scene = three_fixel_disk();
+  const auto model = motion_model<Q>(scene);
+  std::vector<ModeString> modes = moving_modes(3);
+  modes.push_back(ModeString{std::vector<Interaction>(3, Interaction::kRoll)});
+  const Vec<Q> g = wrench(1, -3, 1);
+  for (const ModeString& mode : modes) {
+    const auto ms = motion_system(model, mode);
+    const exact::StrictSystem<Q> full = ms.with_wrench(g);
+    ASSERT_EQ(motion_system_rows(mode), full.A.rows()) << mode.text();
+    const exact::StrictSystem<Q> kin = kinematic_system(model, mode).dense();
+    ASSERT_EQ(kin.A.rows(), ms.kinematic_rows);
+    std::vector<Eigen::Index> columns{0, 1, 2};
+    for (Eigen::Index j = 3; j < full.A.cols(); ++j)
+      if (full.strict[static_cast<std::size_t>(j)]) columns.push_back(j);
+    ASSERT_EQ(kin.A.cols(), static_cast<Eigen::Index>(columns.size())) << mode.text();
+    for (Eigen::Index c = 0; c < kin.A.cols(); ++c) {
+      const Eigen::Index j = columns[static_cast<std::size_t>(c)];
+      EXPECT_EQ(kin.is_free[static_cast<std::size_t>(c)], full.is_free[static_cast<std::size_t>(j)]);
+      EXPECT_EQ(kin.strict[static_cast<std::size_t>(c)], full.strict[static_cast<std::size_t>(j)]);
+      for (Eigen::Index i = 0; i < kin.A.rows(); ++i) EXPECT_EQ(kin.A(i, c), full.A(i, j)) << mode.text();
+    }
+    for (Eigen::Index i = 0; i < kin.A.rows(); ++i)  // the kinematic rows involve no other column
+      EXPECT_EQ(kin.A.row(i).cwiseAbs().sum(), full.A.row(i).cwiseAbs().sum()) << mode.text();
+    const auto fast = exact::StrictSolver<Q>(ms.system).solve(ms.rhs(g));
+    const auto exact_lp = exact::strict_feasibility(full, exact::Arith::kExact);
+    ASSERT_EQ(fast.status, exact_lp.status) << mode.text();
+    EXPECT_TRUE(fast.rounded_float_checked) << mode.text();
+    EXPECT_TRUE(fast.status == exact::StrictStatus::kFeasible ? exact::verify_strict_point(full, fast.x)
+                                                              : exact::verify_motzkin(full, fast.motzkin))
+        << mode.text();
+  }
+}
+
 TEST(StrongStability, MembershipLpsAgreeWithTheWrenchConeAlgorithm) {
   // Each moving mode's LP answer must equal membership in the cone of the wrench cone algorithm
   // (an independent route: K z = P g, conversion, strict limits). Random small integer wrenches.
