@@ -78,23 +78,84 @@ struct PreparedMode {
   long lps = 0, lps_checked_from_float = 0;  // the kinematic LP's
 };
 
+// Prepares the modes of a scene one by one, in the order a verdict visits them. A kinematic proof y of one mode
+// that is zero on the rows of every fixel outside a set S also proves every later mode with the same letters on
+// S: its rows for S are the same (Table 2 per fixel), the others carry no weight, so the conditions of
+// strict_feasibility.h on y hold column by column. Such a mode gets y (moved to its rows) without an LP.
 template <class T>
-PreparedMode<T> prepare_mode(const MotionModel<T>& model, const ModeString& mode, bool rolling, exact::Arith arith) {
-  PreparedMode<T> p;
-  if (!rolling) {
-    auto kin = exact::strict_feasibility(kinematic_system(model, mode), arith);
-    p.lps = kin.lps;
-    if (kin.rounded_float_checked) p.lps_checked_from_float = kin.lps;
-    if (kin.status != StrictStatus::kFeasible) {
-      p.kinematic_proof = Vec<T>::Zero(motion_system_rows(mode));
-      p.kinematic_proof.head(kin.motzkin.size()) = kin.motzkin;
-      return p;
+class ModePreparer {
+ public:
+  ModePreparer(const MotionModel<T>& model, exact::Arith arith) : model_(model), arith_(arith) {}
+
+  PreparedMode<T> operator()(const ModeString& mode, bool rolling) {
+    PreparedMode<T> p;
+    if (!rolling) {
+      if (reuse(mode, p.kinematic_proof)) return p;
+      auto kin = exact::strict_feasibility(kinematic_system(model_, mode), arith_);
+      p.lps = kin.lps;
+      if (kin.rounded_float_checked) p.lps_checked_from_float = kin.lps;
+      if (kin.status != StrictStatus::kFeasible) {
+        p.kinematic_proof = Vec<T>::Zero(motion_system_rows(mode));
+        p.kinematic_proof.head(kin.motzkin.size()) = kin.motzkin;
+        remember(mode, std::move(kin.motzkin));
+        return p;
+      }
     }
+    p.ms = motion_system(model_, mode);
+    p.solver.emplace(p.ms.system, arith_);
+    return p;
   }
-  p.ms = motion_system(model, mode);
-  p.solver.emplace(p.ms.system, arith);
-  return p;
-}
+
+ private:
+  struct Known {
+    ModeString mode;
+    std::vector<bool> support;  // per fixel: y is non-zero on one of its rows
+    Vec<T> y;                   // on the kinematic rows of `mode`
+  };
+
+  // The first kinematic row of each fixel (s has one row, l r n have two; kinematic_system's order).
+  static std::vector<Index> first_rows(const ModeString& mode) {
+    std::vector<Index> first;
+    Index r = 0;
+    for (Interaction L : mode.letters) {
+      first.push_back(r);
+      r += L == Interaction::kSeparate ? 1 : 2;
+    }
+    return first;
+  }
+  static Index row_count(Interaction L) { return L == Interaction::kSeparate ? 1 : 2; }
+
+  void remember(const ModeString& mode, Vec<T> y) {
+    const std::vector<Index> first = first_rows(mode);
+    std::vector<bool> support(first.size(), false);
+    for (std::size_t i = 0; i < first.size(); ++i)
+      for (Index r = 0; r < row_count(mode.letters[i]); ++r)
+        support[i] = support[i] || !exact::is_zero(y(first[i] + r));
+    known_.push_back({mode, std::move(support), std::move(y)});
+  }
+
+  bool reuse(const ModeString& mode, Vec<T>& proof) const {
+    for (const Known& known : known_) {
+      bool same = true;
+      for (std::size_t i = 0; same && i < known.support.size(); ++i)
+        same = !known.support[i] || known.mode.letters[i] == mode.letters[i];
+      if (!same) continue;
+      const std::vector<Index> from = first_rows(known.mode), to = first_rows(mode);
+      proof = Vec<T>::Zero(motion_system_rows(mode));
+      for (std::size_t i = 0; i < known.support.size(); ++i)
+        if (known.support[i]) {
+          const Index n = row_count(mode.letters[i]);
+          proof.segment(to[i], n) = known.y.segment(from[i], n);
+        }
+      return true;
+    }
+    return false;
+  }
+
+  const MotionModel<T>& model_;
+  exact::Arith arith_;
+  std::vector<Known> known_;
+};
 
 // The modes a verdict visits: moving_modes(k), then n..n (it moves only if vdot != 0).
 std::vector<ModeString> verdict_modes(std::size_t k) {
@@ -169,9 +230,10 @@ StabilityOracle<T>::StabilityOracle(const geometry::PlanarScene& full, const Sta
       mode_names_(verdict_modes(model_.mu_s.size())) {
   // Kinematic feasibility of each moving mode: its kinematic rows alone (they do not involve g).
   auto proofs = std::make_shared<std::vector<ModeProof<T>>>();
+  ModePreparer<T> prepare(model_, options.arith);
   modes_.reserve(mode_names_.size());
   for (std::size_t i = 0; i < mode_names_.size(); ++i) {
-    PreparedMode<T> p = prepare_mode(model_, mode_names_[i], i + 1 == mode_names_.size(), options.arith);
+    PreparedMode<T> p = prepare(mode_names_[i], i + 1 == mode_names_.size());
     preparation_lps_ += p.lps;
     preparation_lps_checked_from_float_ += p.lps_checked_from_float;
     modes_.push_back({std::move(p.ms), std::move(p.solver), proofs->size()});
@@ -198,9 +260,10 @@ StabilityResult<T> strong_stability(const geometry::PlanarScene& full, const Vec
   const MotionSystem<T> rest = motion_system(model, all_rolling(k), /*zero_acceleration=*/true);
   const exact::StrictSolver<T> rest_solver(rest.system, options.arith);
   const std::vector<ModeString> modes = verdict_modes(k);
+  ModePreparer<T> prepare(model, options.arith);
   std::optional<PreparedMode<T>> current;  // the mode being decided
   return decide(touching, rest, rest_solver, modes, g, [&](std::size_t i, StabilityResult<T>& out) {
-    current.emplace(prepare_mode(model, modes[i], i + 1 == modes.size(), options.arith));
+    current.emplace(prepare(modes[i], i + 1 == modes.size()));
     out.lps += current->lps;
     out.lps_checked_from_float += current->lps_checked_from_float;
     if (!current->solver && out.has_resting)
