@@ -77,9 +77,10 @@ template <class T>
 MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeString& mode,
                               bool zero_acceleration = false);
 
-#define CONTACTCERT_MOTION_SYSTEM_EXTERN(T)                                                         \
-  extern template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                     \
-  extern template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool); \
+#define CONTACTCERT_MOTION_SYSTEM_EXTERN(T)                                                                   \
+  extern template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                               \
+  extern template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&); \
+  extern template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);           \
   extern template MotionSystem<T> motion_system<T>(const geometry::PlanarScene&, const ModeString&, bool);
 CONTACTCERT_MOTION_SYSTEM_EXTERN(double)
 CONTACTCERT_MOTION_SYSTEM_EXTERN(Q)

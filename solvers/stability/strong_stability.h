@@ -9,6 +9,7 @@
 // the same for every all-rolling solution), so only the 4^k - 1 other modes need a proof.
 #pragma once
 
+#include <cassert>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -41,7 +42,6 @@ class ModeProofs {
  public:
   using Shared = std::shared_ptr<const std::vector<ModeProof<T>>>;
   std::size_t size() const { return slots_.size(); }
-  bool empty() const { return slots_.empty(); }
   const ModeProof<T>& operator[](std::size_t i) const {
     const std::ptrdiff_t s = slots_[i];
     return s >= 0 ? own_[static_cast<std::size_t>(s)] : (*shared_)[static_cast<std::size_t>(-1 - s)];
@@ -51,9 +51,10 @@ class ModeProofs {
     slots_.push_back(static_cast<std::ptrdiff_t>(own_.size()));
     own_.push_back(std::move(p));
   }
-  /// Appends proof j of `set` without copying it (every shared proof of one list comes from one set).
+  /// Appends proof j of `set` without copying it. Precondition: every shared proof of one list is from one set.
   void push_shared(const Shared& set, std::size_t j) {
     if (!shared_) shared_ = set;
+    assert(shared_ == set);
     slots_.push_back(-1 - static_cast<std::ptrdiff_t>(j));
   }
   /// Room for n proofs (own ones included: a growing vector would copy the rational vectors).
@@ -106,8 +107,8 @@ struct StabilityResult {
   MotionWitness<T> moving;  ///< a moving solution, if has_moving
   ModeProofs<T> proofs;     ///< strongly stable: one proof per moving mode (4^k - 1)
   long lps = 0;             ///< LPs solved (for strong_stability: including the kinematic ones)
-  long lps_checked_from_float =
-      0;  ///< of these, decided by a float LP's rounded answer checked exactly (no rational LP)
+  /// Of these, decided by a float LP's rounded answer checked exactly (no rational LP).
+  long lps_checked_from_float = 0;
   long modes_checked = 0;
   long modes_kinematically_feasible = 0;
 };
@@ -124,9 +125,9 @@ geometry::PlanarScene touching_scene(const geometry::PlanarScene& scene, std::ve
 std::vector<ModeString> moving_modes(std::size_t k);
 
 /// Strong stability of one scene under many wrenches (a planner's question). Prepared once per scene: the
-/// touching fixels, the motion system of every mode, which moving modes are kinematically feasible (their
-/// kinematic rows do not involve g; the others get their g-independent proof here, shared by every verdict)
-/// and each remaining LP (exact::StrictSolver). A verdict then solves 1 + (kinematically feasible modes
+/// touching fixels, which moving modes are kinematically feasible (their kinematic rows do not involve g; the
+/// others get their g-independent proof here, shared by every verdict) and the motion system and LP
+/// (exact::StrictSolver) of each remaining mode. A verdict then solves 1 + (kinematically feasible modes
 /// visited) LPs.
 template <class T>
 class StabilityOracle {
