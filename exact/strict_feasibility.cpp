@@ -126,7 +126,10 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
       if (acc != static_cast<i128>(D) * (*B)[static_cast<size_t>(i)]) return std::nullopt;
     }
     out.x = Vec<Q>(n);
-    for (Index j = 0; j < n; ++j) out.x(j) = make_q(X[static_cast<size_t>(j)], D) / d;
+    for (Index j = 0; j < n; ++j) {
+      out.x(j) = make_q(X[static_cast<size_t>(j)], D);
+      if (d != 1) out.x(j) /= d;
+    }
     return out;
   }
   // y' ~ Y / E for the integer rows: check the Motzkin conditions on (A_int, B); then y = L o Y is one for
@@ -147,9 +150,15 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
     if (!fma128(yb, Y[static_cast<size_t>(i)], (*B)[static_cast<size_t>(i)])) return std::nullopt;
   if (!(yb < 0 || (yb == 0 && strict_positive))) return std::nullopt;
   out.motzkin = Vec<Q>(m);
-  for (Index i = 0; i < m; ++i)
-    out.motzkin(i) = Q(Z(static_cast<long>(ilp.row_scale[static_cast<size_t>(i)])) *
-                       Z(static_cast<long>(Y[static_cast<size_t>(i)])));
+  for (Index i = 0; i < m; ++i) {
+    const i64 Yi = Y[static_cast<size_t>(i)], Li = ilp.row_scale[static_cast<size_t>(i)];
+    i64 y;
+    if (Yi == 0) continue;
+    if (!__builtin_mul_overflow(Yi, Li, &y))
+      mpq_set_si(out.motzkin(i).get_mpq_t(), static_cast<long>(y), 1);
+    else
+      out.motzkin(i) = Q(Z(static_cast<long>(Li)) * Z(static_cast<long>(Yi)));
+  }
   return out;
 }
 
