@@ -15,13 +15,14 @@ __extension__ typedef __int128 i128;
 
 bool flag(const std::vector<bool>& v, Index j) { return !v.empty() && v[static_cast<size_t>(j)]; }
 
-// The LP of strict feasibility, b = 0 (set per solve on the first m rows). Columns: x (n), then t,
-// sigma_1..sigma_s, u.  Rows: A x = b;  x_j - t - sigma_j = 0 (j in S);  t + u = 1.  Objective: min -t.
+// The LP of strict feasibility, b = 0 (set per solve on the first m rows). With x_j = t + sigma_j on S (sigma_j
+// >= 0 takes the column of x_j): columns x (n, sigma_j in place of x_j on S), t, u; rows A x + (sum_S A_j) t = b
+// and t + u = 1; objective min -t. (m + 1 rows: one row per strict column fewer than x_j - t - sigma_j = 0.)
 // With no strict column this is plain feasibility of A x = b.
 template <class T>
 LpProblem<T> strict_lp(const Mat<T>& A, const std::vector<bool>& is_free, const std::vector<Index>& S) {
   const Index m = A.rows(), n = A.cols(), s = static_cast<Index>(S.size());
-  const Index cols = s ? n + s + 2 : n, rows = s ? m + s + 1 : m;
+  const Index cols = s ? n + 2 : n, rows = s ? m + 1 : m;
   LpProblem<T> lp;
   lp.A = Mat<T>::Zero(rows, cols);
   lp.b = Vec<T>::Zero(rows);
@@ -29,41 +30,40 @@ LpProblem<T> strict_lp(const Mat<T>& A, const std::vector<bool>& is_free, const 
   lp.is_free.assign(static_cast<size_t>(cols), false);
   for (Index j = 0; j < n; ++j) lp.is_free[static_cast<size_t>(j)] = flag(is_free, j);
   if (s) {
-    const Index t = n, u = n + s + 1;
-    for (Index k = 0; k < s; ++k) {
-      lp.A(m + k, S[static_cast<size_t>(k)]) = T(1);
-      lp.A(m + k, t) = T(-1);
-      lp.A(m + k, n + 1 + k) = T(-1);
-    }
-    lp.A(m + s, t) = T(1);
-    lp.A(m + s, u) = T(1);
-    lp.b(m + s) = T(1);
+    const Index t = n, u = n + 1;
+    for (Index j : S)
+      for (Index i = 0; i < m; ++i) lp.A(i, t) += A(i, j);
+    lp.A(m, t) = T(1);
+    lp.A(m, u) = T(1);
+    lp.b(m) = T(1);
     lp.c = Vec<T>::Zero(cols);
     lp.c(t) = T(-1);
   }
   return lp;
 }
 
-// The answer read off the LP's result (m rows and n columns of the system).
+// The answer read off the LP's result (m rows and n columns of the system, strict columns S).
 template <class T>
-StrictFeasibility<T> read_strict(const LpResult<T>& r, Index m, Index n, bool has_strict) {
+StrictFeasibility<T> read_strict(const LpResult<T>& r, Index m, Index n, const std::vector<Index>& S) {
   StrictFeasibility<T> out;
   out.lps = 1;
   out.decided_by = r.decided_by;
   if (r.status == LpStatus::kInfeasible) {
     // The first m entries of the Farkas vector of the extended system already prove A x = b, x >= 0
-    // infeasible (the extra rows only add non-negative terms), with y^T b < 0.
+    // infeasible (the t and u columns only add non-negative terms), with y^T b < 0.
     out.motzkin = r.farkas.head(m);
     return out;
   }
   // Optimal (t <= 1 bounds the LP).
-  if (!has_strict || is_positive(T(-r.value))) {
+  if (S.empty() || is_positive(T(-r.value))) {
     out.status = StrictStatus::kFeasible;
     out.x = r.x.head(n);
+    for (Index j : S) out.x(j) += r.x(n);  // x_j = t + sigma_j
     return out;
   }
-  // t* = 0: the duals (y1, y2, y3) give w = -y1 with w^T A >= y2 >= 0 on S, w^T b = y3 <= 0 and
-  // sum(y2) >= 1 + y3, so w^T b < 0 or some (w^T A)_j > 0 on S.
+  // t* = 0: the duals (y1, y3) have A_j^T y1 <= 0 (== 0 if free), (sum_S A_j)^T y1 + y3 <= -1, y3 <= 0 and
+  // b^T y1 + y3 = 0; so w = -y1 has w^T A >= 0 (== 0 on free columns), w^T b = y3 <= 0 and
+  // sum_S (w^T A)_j >= 1 + y3: w^T b < 0 or some (w^T A)_j > 0 on S.
   out.motzkin = -r.duals.head(m);
   return out;
 }
@@ -102,7 +102,7 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
   if (!B) return std::nullopt;
   LpProblem<double> lp = hint;
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
-  const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp), m, n, !S.empty());
+  const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp), m, n, S);
   auto A = [&](Index i, Index j) { return ilp.A[static_cast<size_t>(i * n + j)]; };
 
   StrictFeasibility<Q> out;
@@ -248,12 +248,11 @@ StrictSolver<T>::StrictSolver(const SparseStrictSystem<T>& s, Arith arith)
 
 template <class T>
 StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
-  const bool has_strict = !strict_columns_.empty();
   if constexpr (std::is_same_v<T, Q>) {
     if (!integer_) {
       LpProblem<Q> lp = strict_lp<Q>(A_, is_free_, strict_columns_);
       lp.b.head(m_) = b;
-      return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp) : solve_lp_verified(lp), m_, n_, has_strict);
+      return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp) : solve_lp_verified(lp), m_, n_, strict_columns_);
     }
     if (std::optional<StrictFeasibility<Q>> r = rounded_solve(*integer_, hint_, is_free_, strict_, strict_columns_, b))
       return std::move(*r);
@@ -263,13 +262,13 @@ StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
     LpProblem<Q> lp = strict_lp<Q>(integer_->convert<Q>({}, [](i64 v) { return Q(static_cast<long>(v)); }).A, is_free_,
                                    strict_columns_);
     for (Index i = 0; i < m_; ++i) lp.b(i) = b(i) * Q(static_cast<long>(L[static_cast<size_t>(i)]));
-    StrictFeasibility<Q> out = read_strict(solve_lp_verified(lp), m_, n_, has_strict);
+    StrictFeasibility<Q> out = read_strict(solve_lp_verified(lp), m_, n_, strict_columns_);
     for (Index i = 0; i < out.motzkin.size(); ++i) out.motzkin(i) *= Q(static_cast<long>(L[static_cast<size_t>(i)]));
     return out;
   } else {
     LpProblem<double> lp = hint_;
     lp.b.head(m_) = b;
-    return read_strict(solve_lp<double>(lp), m_, n_, has_strict);
+    return read_strict(solve_lp<double>(lp), m_, n_, strict_columns_);
   }
 }
 
