@@ -173,11 +173,12 @@ struct ModeLp {
 
 // The verdict for g (SPEC section 7): the resting LP, then the modes of verdict_modes in order until one moves.
 // mode_at(i, out) gives mode i; for a kinematically infeasible one it appends the mode's proof to out.proofs if
-// out.has_resting (only then is it evidence). Every other moving mode gets its proof from its LP here.
+// out.has_resting (only then is it evidence). Every other moving mode gets its proof from its LP here; at most
+// `own_proofs` proofs are the result's own (the others are shared).
 template <class T, class ModeAt>
 StabilityResult<T> decide(const std::vector<Index>& touching, const MotionSystem<T>& rest,
                           const exact::StrictSolver<T>& rest_solver, const std::vector<ModeString>& modes,
-                          const Vec<T>& g, ModeAt&& mode_at) {
+                          const Vec<T>& g, std::size_t own_proofs, ModeAt&& mode_at) {
   StabilityResult<T> out;
   out.touching = touching;
   auto count = [&out](const exact::StrictFeasibility<T>& f) {
@@ -191,7 +192,7 @@ StabilityResult<T> decide(const std::vector<Index>& touching, const MotionSystem
   out.has_resting = r.status == StrictStatus::kFeasible;
   if (out.has_resting) {
     out.resting_forces = rest.forces(r.x);
-    out.proofs.reserve(modes.size() - 1);
+    out.proofs.reserve(modes.size() - 1, own_proofs);
   } else {
     out.resting_farkas = std::move(r.motzkin);
   }
@@ -244,7 +245,8 @@ StabilityOracle<T>::StabilityOracle(const geometry::PlanarScene& full, const Sta
 
 template <class T>
 StabilityResult<T> StabilityOracle<T>::verdict(const Vec<T>& g) const {
-  return decide(touching_, rest_, rest_solver_, mode_names_, g, [this](std::size_t i, StabilityResult<T>& out) {
+  const std::size_t own = mode_names_.size() - 1 - kinematic_proofs_->size();  // the LPs' proofs
+  return decide(touching_, rest_, rest_solver_, mode_names_, g, own, [this](std::size_t i, StabilityResult<T>& out) {
     const Mode& m = modes_[i];
     if (!m.solver && out.has_resting) out.proofs.push_shared(kinematic_proofs_, m.kinematic_proof);
     return ModeLp<T>{&m.ms, m.solver ? &*m.solver : nullptr};
@@ -262,7 +264,7 @@ StabilityResult<T> strong_stability(const geometry::PlanarScene& full, const Vec
   const std::vector<ModeString> modes = verdict_modes(k);
   ModePreparer<T> prepare(model, options.arith);
   std::optional<PreparedMode<T>> current;  // the mode being decided
-  return decide(touching, rest, rest_solver, modes, g, [&](std::size_t i, StabilityResult<T>& out) {
+  return decide(touching, rest, rest_solver, modes, g, modes.size() - 1, [&](std::size_t i, StabilityResult<T>& out) {
     current.emplace(prepare(modes[i], i + 1 == modes.size()));
     out.lps += current->lps;
     out.lps_checked_from_float += current->lps_checked_from_float;

@@ -57,10 +57,10 @@ class ModeProofs {
     assert(shared_ == set);
     slots_.push_back(-1 - static_cast<std::ptrdiff_t>(j));
   }
-  /// Room for n proofs (own ones included: a growing vector would copy the rational vectors).
-  void reserve(std::size_t n) {
+  /// Room for n proofs, `own` of them this list's own (a growing vector would copy the rational vectors).
+  void reserve(std::size_t n, std::size_t own) {
     slots_.reserve(n);
-    own_.reserve(n);
+    own_.reserve(own);
   }
   void clear() { *this = ModeProofs(); }
 
