@@ -79,9 +79,10 @@ struct PreparedMode {
 };
 
 // Prepares the modes of a scene one by one, in the order a verdict visits them. A kinematic proof y of one mode
-// that is zero on the rows of every fixel outside a set S also proves every later mode with the same letters on
-// S: its rows for S are the same (Table 2 per fixel), the others carry no weight, so the conditions of
-// strict_feasibility.h on y hold column by column. Such a mode gets y (moved to its rows) without an LP.
+// also proves every later mode that has each row y weighs: per fixel, the normal row is the same for the letters
+// l, r, n (a_n = 0) and another for s (a_n - sigma = 0); the tangent row is its letter's own (l, r, n). Column by
+// column the conditions of strict_feasibility.h on y then hold as before (vdot: the same rows; a sigma column:
+// the same entries where y weighs, zero elsewhere), so such a mode gets y, moved to its rows, without an LP.
 template <class T>
 class ModePreparer {
  public:
@@ -109,11 +110,11 @@ class ModePreparer {
  private:
   struct Known {
     ModeString mode;
-    std::vector<bool> support;  // per fixel: y is non-zero on one of its rows
-    Vec<T> y;                   // on the kinematic rows of `mode`
+    std::vector<bool> normal, tangent;  // per fixel: y is non-zero on its normal / tangent row
+    Vec<T> y;                           // on the kinematic rows of `mode`
   };
 
-  // The first kinematic row of each fixel (s has one row, l r n have two; kinematic_system's order).
+  // The first kinematic row of each fixel (its normal row; l r n have a tangent row after it).
   static std::vector<Index> first_rows(const ModeString& mode) {
     std::vector<Index> first;
     Index r = 0;
@@ -123,30 +124,33 @@ class ModePreparer {
     }
     return first;
   }
-  static Index row_count(Interaction L) { return L == Interaction::kSeparate ? 1 : 2; }
 
   void remember(const ModeString& mode, Vec<T> y) {
     const std::vector<Index> first = first_rows(mode);
-    std::vector<bool> support(first.size(), false);
-    for (std::size_t i = 0; i < first.size(); ++i)
-      for (Index r = 0; r < row_count(mode.letters[i]); ++r)
-        support[i] = support[i] || !exact::is_zero(y(first[i] + r));
-    known_.push_back({mode, std::move(support), std::move(y)});
+    const std::size_t k = first.size();
+    std::vector<bool> normal(k), tangent(k, false);
+    for (std::size_t i = 0; i < k; ++i) {
+      normal[i] = !exact::is_zero(y(first[i]));
+      if (mode.letters[i] != Interaction::kSeparate) tangent[i] = !exact::is_zero(y(first[i] + 1));
+    }
+    known_.push_back({mode, std::move(normal), std::move(tangent), std::move(y)});
   }
 
   bool reuse(const ModeString& mode, Vec<T>& proof) const {
+    auto separates = [](Interaction L) { return L == Interaction::kSeparate; };
     for (const Known& known : known_) {
       bool same = true;
-      for (std::size_t i = 0; same && i < known.support.size(); ++i)
-        same = !known.support[i] || known.mode.letters[i] == mode.letters[i];
+      for (std::size_t i = 0; same && i < known.normal.size(); ++i) {
+        const Interaction was = known.mode.letters[i], is = mode.letters[i];
+        same = (!known.normal[i] || separates(was) == separates(is)) && (!known.tangent[i] || was == is);
+      }
       if (!same) continue;
       const std::vector<Index> from = first_rows(known.mode), to = first_rows(mode);
       proof = Vec<T>::Zero(motion_system_rows(mode));
-      for (std::size_t i = 0; i < known.support.size(); ++i)
-        if (known.support[i]) {
-          const Index n = row_count(mode.letters[i]);
-          proof.segment(to[i], n) = known.y.segment(from[i], n);
-        }
+      for (std::size_t i = 0; i < known.normal.size(); ++i) {
+        if (known.normal[i]) proof(to[i]) = known.y(from[i]);
+        if (known.tangent[i]) proof(to[i] + 1) = known.y(from[i] + 1);
+      }
       return true;
     }
     return false;
