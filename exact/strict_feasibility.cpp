@@ -1,5 +1,6 @@
 #include "exact/strict_feasibility.h"
 
+#include <numeric>
 #include <type_traits>
 
 #include "exact/simplex.h"
@@ -14,13 +15,14 @@ __extension__ typedef __int128 i128;
 
 bool flag(const std::vector<bool>& v, Index j) { return !v.empty() && v[static_cast<size_t>(j)]; }
 
-// The LP of strict feasibility, b = 0 (set per solve on the first m rows). Columns: x (n), then t,
-// sigma_1..sigma_s, u.  Rows: A x = b;  x_j - t - sigma_j = 0 (j in S);  t + u = 1.  Objective: min -t.
+// The LP of strict feasibility, b = 0 (set per solve on the first m rows). With x_j = t + sigma_j on S (sigma_j
+// >= 0 takes the column of x_j): columns x (n, sigma_j in place of x_j on S), t, u; rows A x + (sum_S A_j) t = b
+// and t + u = 1; objective min -t. (m + 1 rows: one row per strict column fewer than x_j - t - sigma_j = 0.)
 // With no strict column this is plain feasibility of A x = b.
 template <class T>
 LpProblem<T> strict_lp(const Mat<T>& A, const std::vector<bool>& is_free, const std::vector<Index>& S) {
   const Index m = A.rows(), n = A.cols(), s = static_cast<Index>(S.size());
-  const Index cols = s ? n + s + 2 : n, rows = s ? m + s + 1 : m;
+  const Index cols = s ? n + 2 : n, rows = s ? m + 1 : m;
   LpProblem<T> lp;
   lp.A = Mat<T>::Zero(rows, cols);
   lp.b = Vec<T>::Zero(rows);
@@ -28,41 +30,40 @@ LpProblem<T> strict_lp(const Mat<T>& A, const std::vector<bool>& is_free, const 
   lp.is_free.assign(static_cast<size_t>(cols), false);
   for (Index j = 0; j < n; ++j) lp.is_free[static_cast<size_t>(j)] = flag(is_free, j);
   if (s) {
-    const Index t = n, u = n + s + 1;
-    for (Index k = 0; k < s; ++k) {
-      lp.A(m + k, S[static_cast<size_t>(k)]) = T(1);
-      lp.A(m + k, t) = T(-1);
-      lp.A(m + k, n + 1 + k) = T(-1);
-    }
-    lp.A(m + s, t) = T(1);
-    lp.A(m + s, u) = T(1);
-    lp.b(m + s) = T(1);
+    const Index t = n, u = n + 1;
+    for (Index j : S)
+      for (Index i = 0; i < m; ++i) lp.A(i, t) += A(i, j);
+    lp.A(m, t) = T(1);
+    lp.A(m, u) = T(1);
+    lp.b(m) = T(1);
     lp.c = Vec<T>::Zero(cols);
     lp.c(t) = T(-1);
   }
   return lp;
 }
 
-// The answer read off the LP's result (m rows and n columns of the system).
+// The answer read off the LP's result (m rows and n columns of the system, strict columns S).
 template <class T>
-StrictFeasibility<T> read_strict(const LpResult<T>& r, Index m, Index n, bool has_strict) {
+StrictFeasibility<T> read_strict(const LpResult<T>& r, Index m, Index n, const std::vector<Index>& S) {
   StrictFeasibility<T> out;
   out.lps = 1;
   out.decided_by = r.decided_by;
   if (r.status == LpStatus::kInfeasible) {
     // The first m entries of the Farkas vector of the extended system already prove A x = b, x >= 0
-    // infeasible (the extra rows only add non-negative terms), with y^T b < 0.
+    // infeasible (the t and u columns only add non-negative terms), with y^T b < 0.
     out.motzkin = r.farkas.head(m);
     return out;
   }
   // Optimal (t <= 1 bounds the LP).
-  if (!has_strict || is_positive(T(-r.value))) {
+  if (S.empty() || is_positive(T(-r.value))) {
     out.status = StrictStatus::kFeasible;
     out.x = r.x.head(n);
+    for (Index j : S) out.x(j) += r.x(n);  // x_j = t + sigma_j
     return out;
   }
-  // t* = 0: the duals (y1, y2, y3) give w = -y1 with w^T A >= y2 >= 0 on S, w^T b = y3 <= 0 and
-  // sum(y2) >= 1 + y3, so w^T b < 0 or some (w^T A)_j > 0 on S.
+  // t* = 0: the duals (y1, y3) have A_j^T y1 <= 0 (== 0 if free), (sum_S A_j)^T y1 + y3 <= -1, y3 <= 0 and
+  // b^T y1 + y3 = 0; so w = -y1 has w^T A >= 0 (== 0 on free columns), w^T b = y3 <= 0 and
+  // sum_S (w^T A)_j >= 1 + y3: w^T b < 0 or some (w^T A)_j > 0 on S.
   out.motzkin = -r.duals.head(m);
   return out;
 }
@@ -93,15 +94,15 @@ std::optional<std::vector<i64>> integer_rhs(const IntegerLp& ilp, const Vec<Q>& 
 // The float LP on the integer rows, its point or certificate rounded to fractions and checked exactly;
 // nullopt if the check fails.
 std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const LpProblem<double>& hint,
-                                                  const StrictSystem<Q>& sys, const std::vector<Index>& S,
-                                                  const Vec<Q>& b) {
+                                                  const std::vector<bool>& is_free, const std::vector<bool>& strict,
+                                                  const std::vector<Index>& S, const Vec<Q>& b) {
   const Index m = ilp.m, n = ilp.n;
   Z d;
   const std::optional<std::vector<i64>> B = integer_rhs(ilp, b, d);
   if (!B) return std::nullopt;
   LpProblem<double> lp = hint;
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
-  const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp), m, n, !S.empty());
+  const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp), m, n, S);
   auto A = [&](Index i, Index j) { return ilp.A[static_cast<size_t>(i * n + j)]; };
 
   StrictFeasibility<Q> out;
@@ -116,7 +117,7 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
     if (!round_vector(std::vector<double>(f.x.data(), f.x.data() + n), X, D)) return std::nullopt;
     for (Index j = 0; j < n; ++j) {
       const i64 xj = X[static_cast<size_t>(j)];
-      if (!flag(sys.is_free, j) && (xj < 0 || (xj == 0 && flag(sys.strict, j)))) return std::nullopt;
+      if (!flag(is_free, j) && (xj < 0 || (xj == 0 && flag(strict, j)))) return std::nullopt;
     }
     for (Index i = 0; i < m; ++i) {
       i128 acc = 0;
@@ -125,7 +126,10 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
       if (acc != static_cast<i128>(D) * (*B)[static_cast<size_t>(i)]) return std::nullopt;
     }
     out.x = Vec<Q>(n);
-    for (Index j = 0; j < n; ++j) out.x(j) = make_q(X[static_cast<size_t>(j)], D) / d;
+    for (Index j = 0; j < n; ++j) {
+      out.x(j) = make_q(X[static_cast<size_t>(j)], D);
+      if (d != 1) out.x(j) /= d;
+    }
     return out;
   }
   // y' ~ Y / E for the integer rows: check the Motzkin conditions on (A_int, B); then y = L o Y is one for
@@ -138,59 +142,144 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
     i128 t = 0;
     for (Index i = 0; i < m; ++i)
       if (!fma128(t, Y[static_cast<size_t>(i)], A(i, j))) return std::nullopt;
-    if (flag(sys.is_free, j) ? t != 0 : t < 0) return std::nullopt;
-    strict_positive = strict_positive || (t > 0 && flag(sys.strict, j));
+    if (flag(is_free, j) ? t != 0 : t < 0) return std::nullopt;
+    strict_positive = strict_positive || (t > 0 && flag(strict, j));
   }
   i128 yb = 0;
   for (Index i = 0; i < m; ++i)
     if (!fma128(yb, Y[static_cast<size_t>(i)], (*B)[static_cast<size_t>(i)])) return std::nullopt;
   if (!(yb < 0 || (yb == 0 && strict_positive))) return std::nullopt;
   out.motzkin = Vec<Q>(m);
-  for (Index i = 0; i < m; ++i)
-    out.motzkin(i) = Q(Z(static_cast<long>(ilp.row_scale[static_cast<size_t>(i)])) *
-                       Z(static_cast<long>(Y[static_cast<size_t>(i)])));
+  for (Index i = 0; i < m; ++i) {
+    const i64 Yi = Y[static_cast<size_t>(i)], Li = ilp.row_scale[static_cast<size_t>(i)];
+    i64 y;
+    if (Yi == 0) continue;
+    if (!__builtin_mul_overflow(Yi, Li, &y))
+      mpq_set_si(out.motzkin(i).get_mpq_t(), static_cast<long>(y), 1);
+    else
+      out.motzkin(i) = Q(Z(static_cast<long>(Li)) * Z(static_cast<long>(Yi)));
+  }
+  return out;
+}
+
+// Row i of A times L_i, the lcm of the denominators of its entries, in 64 bits: the rows of integer_lp (b = 0,
+// no objective) read straight from A's non-zero entries, which for_each_entry(f) passes as f(i, j, a_ij).
+// Nullopt if a number does not fit.
+template <class ForEachEntry>
+std::optional<IntegerLp> integer_rows(Index m, Index n, ForEachEntry&& for_each_entry) {
+  IntegerLp out;
+  out.m = m;
+  out.n = n;
+  out.A.assign(static_cast<size_t>(m * n), 0);
+  out.b.assign(static_cast<size_t>(m), 0);
+  out.c.assign(static_cast<size_t>(n), 0);
+  out.row_scale.assign(static_cast<size_t>(m), 1);
+  bool fits = true;
+  for_each_entry([&](Index i, Index, const Q& a) {
+    i64& L = out.row_scale[static_cast<size_t>(i)];
+    mpz_srcptr den = mpq_denref(a.get_mpq_t());
+    if (!fits || !mpz_fits_slong_p(den)) {
+      fits = false;
+      return;
+    }
+    const i64 d = mpz_get_si(den);
+    fits = !__builtin_mul_overflow(L / std::gcd(L, d), d, &L);
+  });
+  for_each_entry([&](Index i, Index j, const Q& a) {
+    mpz_srcptr num = mpq_numref(a.get_mpq_t());
+    if (!fits || !mpz_fits_slong_p(num)) {
+      fits = false;
+      return;
+    }
+    const i64 multiple = out.row_scale[static_cast<size_t>(i)] / mpz_get_si(mpq_denref(a.get_mpq_t()));
+    fits = !__builtin_mul_overflow(mpz_get_si(num), multiple, &out.A[static_cast<size_t>(i * n + j)]);
+  });
+  if (!fits) return std::nullopt;
   return out;
 }
 
 }  // namespace
 
 template <class T>
-StrictSolver<T>::StrictSolver(const StrictSystem<T>& system, Arith arith) : system_(system), arith_(arith) {
-  for (Index j = 0; j < system.A.cols(); ++j)
-    if (flag(system.strict, j)) strict_columns_.push_back(j);
+StrictSystem<T> SparseStrictSystem<T>::dense(const Vec<T>& b) const {
+  StrictSystem<T> s{Mat<T>::Zero(rows, cols), b.size() ? b : Vec<T>(Vec<T>::Zero(rows)), is_free, strict};
+  for (const Entry<T>& e : entries) s.A(e.row, e.col) = e.value;
+  return s;
+}
+
+template <class T>
+template <class ForEachEntry>
+void StrictSolver<T>::prepare(ForEachEntry&& for_each_entry) {
+  for (Index j = 0; j < n_; ++j)
+    if (flag(strict_, j)) strict_columns_.push_back(j);
   if constexpr (std::is_same_v<T, Q>) {
-    if (arith == Arith::kExact) return;
-    // A is lent to the LP for the scaling and taken back (no copy of a rational matrix).
-    LpProblem<Q> lp{std::move(system_.A), Vec<Q>::Zero(system.A.rows()), {}, {}};
-    integer_ = integer_lp(lp);
-    system_.A = std::move(lp.A);
-    if (integer_) hint_ = strict_lp<double>(integer_->to_double({}).A, system.is_free, strict_columns_);
-  } else {
-    hint_ = strict_lp<double>(system.A, system.is_free, strict_columns_);
+    if (arith_ != Arith::kExact) integer_ = integer_rows(m_, n_, for_each_entry);
+    if (integer_) {
+      hint_ = strict_lp<double>(integer_->to_double({}).A, is_free_, strict_columns_);
+      return;
+    }
   }
+  Mat<T> A = Mat<T>::Zero(m_, n_);
+  for_each_entry([&A](Index i, Index j, const T& a) { A(i, j) = a; });
+  if constexpr (std::is_same_v<T, Q>)
+    A_ = std::move(A);
+  else
+    hint_ = strict_lp<double>(A, is_free_, strict_columns_);
+}
+
+template <class T>
+StrictSolver<T>::StrictSolver(const StrictSystem<T>& s, Arith arith)
+    : m_(s.A.rows()), n_(s.A.cols()), is_free_(s.is_free), strict_(s.strict), arith_(arith) {
+  prepare([&s](auto&& f) {
+    const T zero(0);  // exact comparison: a float entry below the sign tolerance still enters the LP
+    for (Index j = 0; j < s.A.cols(); ++j)
+      for (Index i = 0; i < s.A.rows(); ++i)
+        if (s.A(i, j) != zero) f(i, j, s.A(i, j));
+  });
+}
+
+template <class T>
+StrictSolver<T>::StrictSolver(const SparseStrictSystem<T>& s, Arith arith)
+    : m_(s.rows), n_(s.cols), is_free_(s.is_free), strict_(s.strict), arith_(arith) {
+  prepare([&s](auto&& f) {
+    for (const Entry<T>& e : s.entries) f(e.row, e.col, e.value);
+  });
 }
 
 template <class T>
 StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
-  const Index m = system_.A.rows(), n = system_.A.cols();
-  const bool has_strict = !strict_columns_.empty();
   if constexpr (std::is_same_v<T, Q>) {
-    if (integer_)
-      if (std::optional<StrictFeasibility<Q>> r = rounded_solve(*integer_, hint_, system_, strict_columns_, b))
-        return std::move(*r);
-    LpProblem<Q> lp = strict_lp<Q>(system_.A, system_.is_free, strict_columns_);
-    lp.b.head(m) = b;
-    return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp) : solve_lp_verified(lp), m, n, has_strict);
+    if (!integer_) {
+      LpProblem<Q> lp = strict_lp<Q>(A_, is_free_, strict_columns_);
+      lp.b.head(m_) = b;
+      return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp) : solve_lp_verified(lp), m_, n_, strict_columns_);
+    }
+    if (std::optional<StrictFeasibility<Q>> r = rounded_solve(*integer_, hint_, is_free_, strict_, strict_columns_, b))
+      return std::move(*r);
+    // The verified LP on the integer rows, right-hand side L o b: the same points; a certificate y' of these
+    // rows is y = L o y' for A (y^T A = y'^T (L o A), y^T b = y'^T (L o b)).
+    const std::vector<i64>& L = integer_->row_scale;
+    LpProblem<Q> lp = strict_lp<Q>(integer_->convert<Q>({}, [](i64 v) { return Q(static_cast<long>(v)); }).A, is_free_,
+                                   strict_columns_);
+    for (Index i = 0; i < m_; ++i) lp.b(i) = b(i) * Q(static_cast<long>(L[static_cast<size_t>(i)]));
+    StrictFeasibility<Q> out = read_strict(solve_lp_verified(lp), m_, n_, strict_columns_);
+    for (Index i = 0; i < out.motzkin.size(); ++i) out.motzkin(i) *= Q(static_cast<long>(L[static_cast<size_t>(i)]));
+    return out;
   } else {
     LpProblem<double> lp = hint_;
-    lp.b.head(m) = b;
-    return read_strict(solve_lp<double>(lp), m, n, has_strict);
+    lp.b.head(m_) = b;
+    return read_strict(solve_lp<double>(lp), m_, n_, strict_columns_);
   }
 }
 
 template <class T>
 StrictFeasibility<T> strict_feasibility(const StrictSystem<T>& sys, Arith arith) {
   return StrictSolver<T>(sys, arith).solve(sys.b);
+}
+
+template <class T>
+StrictFeasibility<T> strict_feasibility(const SparseStrictSystem<T>& sys, Arith arith) {
+  return StrictSolver<T>(sys, arith).solve(Vec<T>::Zero(sys.rows));
 }
 
 bool verify_strict_point(const StrictSystem<Q>& sys, const Vec<Q>& x) {
@@ -224,9 +313,13 @@ bool verify_motzkin(const StrictSystem<Q>& sys, const Vec<Q>& y) {
   return sgn(yb) < 0 || (sgn(yb) == 0 && strict_positive);
 }
 
-template class StrictSolver<double>;
-template class StrictSolver<Q>;
-template StrictFeasibility<double> strict_feasibility<double>(const StrictSystem<double>&, Arith);
-template StrictFeasibility<Q> strict_feasibility<Q>(const StrictSystem<Q>&, Arith);
+#define CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(T)                                 \
+  template struct SparseStrictSystem<T>;                                              \
+  template class StrictSolver<T>;                                                     \
+  template StrictFeasibility<T> strict_feasibility<T>(const StrictSystem<T>&, Arith); \
+  template StrictFeasibility<T> strict_feasibility<T>(const SparseStrictSystem<T>&, Arith);
+CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(double)
+CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(Q)
+#undef CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE
 
 }  // namespace contactcert::exact

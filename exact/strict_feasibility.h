@@ -25,37 +25,64 @@ struct StrictSystem {
   std::vector<bool> strict;   ///< empty = none strict; strict columns must not be free
 };
 
+/// One non-zero entry a_ij of a system matrix.
+template <class T>
+struct Entry {
+  Eigen::Index row, col;
+  T value;
+};
+
+/// The system A x = 0 with the sign constraints of StrictSystem, A given by its non-zero entries (in any
+/// order, each (i, j) at most once): the verified solver scales its rows to integers straight from them.
+template <class T>
+struct SparseStrictSystem {
+  Eigen::Index rows = 0, cols = 0;
+  std::vector<Entry<T>> entries;
+  std::vector<bool> is_free;  ///< empty or size cols
+  std::vector<bool> strict;   ///< empty or size cols
+  /// The dense system with right-hand side b (zero if b is empty).
+  StrictSystem<T> dense(const Vec<T>& b = {}) const;
+};
+
 enum class StrictStatus { kFeasible, kInfeasible };
 
 template <class T>
 struct StrictFeasibility {
   StrictStatus status = StrictStatus::kInfeasible;
-  Vec<T> x;        ///< kFeasible: a point of the system
-  Vec<T> motzkin;  ///< kInfeasible: the certificate y described above
-  long lps = 0;    ///< LPs solved (1)
+  Vec<T> x;                                  ///< kFeasible: a point of the system
+  Vec<T> motzkin;                            ///< kInfeasible: the certificate y described above
+  long lps = 0;                              ///< LPs solved (1)
   DecidedBy decided_by = DecidedBy::kExact;  ///< kFloat for T = double; else how the exact answer was reached
   /// T = Q: the float LP's point or certificate, rounded to fractions, verified exactly (no rational LP).
   bool rounded_float_checked = false;
 };
 
 /// One system matrix with many right-hand sides: the LP above is set up once, and each solve(b) is one LP.
-/// For T = Q with the verified arithmetic (every Arith but kExact), solve(b) first solves the LP in doubles
-/// on the rows of A scaled to 64-bit integers, rounds its point x or its certificate y to fractions and
-/// checks A x = b and the signs, or the Motzkin conditions on y, exactly in 128-bit integers; only if that
-/// check fails (or an integer overflows) is the LP solved again by the verified LP. Answers are exact.
+/// For T = Q with the verified arithmetic (every Arith but kExact), the rows of A are scaled to 64-bit integers
+/// (row i times the lcm L_i of its denominators) and solve(b) first solves the LP in doubles on them, rounds
+/// its point x or its certificate y to fractions and checks A x = b and the signs, or the Motzkin conditions on
+/// y, exactly in 128-bit integers; only if that check fails is the LP solved again by the verified LP, on the
+/// integer rows (in Q; a certificate y' of them gives y = L o y'). If a scaled entry does not fit in 64 bits,
+/// the rows stay rational and every solve is the verified LP. Answers are exact.
 template <class T>
 class StrictSolver {
  public:
   /// Prepares the LP of `system` (its b is not used).
   explicit StrictSolver(const StrictSystem<T>& system, Arith arith = Arith::kVerified);
+  /// The same from the non-zero entries of A (no dense rational matrix on the verified path).
+  explicit StrictSolver(const SparseStrictSystem<T>& system, Arith arith = Arith::kVerified);
   /// Strict feasibility of the system with right-hand side b.
   StrictFeasibility<T> solve(const Vec<T>& b) const;
-  const StrictSystem<T>& system() const { return system_; }
 
  private:
-  StrictSystem<T> system_;
+  template <class ForEachEntry>
+  void prepare(ForEachEntry&& for_each_entry);
+
+  Eigen::Index m_ = 0, n_ = 0;
+  std::vector<bool> is_free_, strict_;
   Arith arith_;
   std::vector<Eigen::Index> strict_columns_;
+  Mat<T> A_;                          ///< T = Q: the rows as given, unless integer_ holds them
   std::optional<IntegerLp> integer_;  ///< T = Q, verified: row i of A times integer_->row_scale[i], in 64 bits
   LpProblem<double> hint_;            ///< the LP in doubles (of the integer rows if T = Q); b set per solve
 };
@@ -64,15 +91,22 @@ class StrictSolver {
 /// chooses the exact or the verified route (kFloat is treated as kVerified); for T = double the float simplex.
 template <class T>
 StrictFeasibility<T> strict_feasibility(const StrictSystem<T>& system, Arith arith = Arith::kVerified);
+/// The same for A x = 0 given by its non-zero entries.
+template <class T>
+StrictFeasibility<T> strict_feasibility(const SparseStrictSystem<T>& system, Arith arith = Arith::kVerified);
 
 /// Exact check of a Motzkin certificate for the system (trusts nothing but the numbers).
 bool verify_motzkin(const StrictSystem<Q>& system, const Vec<Q>& y);
 /// Exact check that x satisfies the system.
 bool verify_strict_point(const StrictSystem<Q>& system, const Vec<Q>& x);
 
-extern template class StrictSolver<double>;
-extern template class StrictSolver<Q>;
-extern template StrictFeasibility<double> strict_feasibility<double>(const StrictSystem<double>&, Arith);
-extern template StrictFeasibility<Q> strict_feasibility<Q>(const StrictSystem<Q>&, Arith);
+#define CONTACTCERT_STRICT_FEASIBILITY_EXTERN(T)                                             \
+  extern template struct SparseStrictSystem<T>;                                              \
+  extern template class StrictSolver<T>;                                                     \
+  extern template StrictFeasibility<T> strict_feasibility<T>(const StrictSystem<T>&, Arith); \
+  extern template StrictFeasibility<T> strict_feasibility<T>(const SparseStrictSystem<T>&, Arith);
+CONTACTCERT_STRICT_FEASIBILITY_EXTERN(double)
+CONTACTCERT_STRICT_FEASIBILITY_EXTERN(Q)
+#undef CONTACTCERT_STRICT_FEASIBILITY_EXTERN
 
 }  // namespace contactcert::exact

@@ -10,21 +10,9 @@ using Index = Eigen::Index;
 
 template <class T>
 Vec<T> MotionSystem<T>::rhs(const Vec<T>& g) const {
-  Vec<T> b = Vec<T>::Zero(system.A.rows());
+  Vec<T> b = Vec<T>::Zero(system.rows);
   b.tail(3) = g;
   return b;
-}
-
-template <class T>
-exact::StrictSystem<T> MotionSystem<T>::with_wrench(const Vec<T>& g) const {
-  exact::StrictSystem<T> s = system;
-  s.b = rhs(g);
-  return s;
-}
-
-template <class T>
-exact::StrictSystem<T> MotionSystem<T>::kinematic() const {
-  return {system.A.topRows(kinematic_rows), Vec<T>::Zero(kinematic_rows), system.is_free, system.strict};
 }
 
 template <class T>
@@ -45,7 +33,7 @@ Vec<T> MotionSystem<T>::forces(const Vec<T>& x) const {
 template <class T>
 Vec<T> MotionSystem<T>::point(const Vec<T>& vdot, const Vec<T>& c) const {
   const Index k = static_cast<Index>(c_n_column.size());
-  Vec<T> x = Vec<T>::Zero(system.A.cols());
+  Vec<T> x = Vec<T>::Zero(system.cols);
   if (!zero_acceleration) x.head(3) = vdot;
   for (Index i = 0; i < k; ++i) {
     const Index cn = c_n_column[static_cast<size_t>(i)], ct = c_t_column[static_cast<size_t>(i)];
@@ -53,19 +41,95 @@ Vec<T> MotionSystem<T>::point(const Vec<T>& vdot, const Vec<T>& c) const {
     if (ct >= 0) x(ct) = c(k + i);
   }
   // Each slack appears in its own row only, with coefficient -+1: slack = -(row . x without it) / coefficient.
-  for (Index r = 0; r < static_cast<Index>(slack_column.size()); ++r) {
+  const Index rows = static_cast<Index>(slack_column.size());
+  Vec<T> rest = Vec<T>::Zero(rows), coefficient = Vec<T>::Zero(rows);
+  for (const exact::Entry<T>& e : system.entries) {
+    if (e.row >= rows || slack_column[static_cast<size_t>(e.row)] < 0) continue;
+    if (e.col == slack_column[static_cast<size_t>(e.row)])
+      coefficient(e.row) = e.value;
+    else
+      rest(e.row) += e.value * x(e.col);
+  }
+  for (Index r = 0; r < rows; ++r) {
     const Index j = slack_column[static_cast<size_t>(r)];
-    if (j >= 0) x(j) = T(-system.A.row(r).dot(x) / system.A(r, j));
+    if (j >= 0) x(j) = T(-rest(r) / coefficient(r));
   }
   return x;
 }
 
 template <class T>
+MotionModel<T> motion_model(const geometry::PlanarScene& scene) {
+  MotionModel<T> m{from_exact<T>(jacobian(scene)), from_exact<T>(scene.workpiece.inertia_per_mass), {}, {}};
+  for (const geometry::Fixel& f : scene.fixels) {
+    m.mu_s.push_back(from_exact<T>(f.mu_s));
+    m.mu_k.push_back(from_exact<T>(f.mu_k));
+  }
+  return m;
+}
+
+template <class T>
 MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeString& mode, bool zero_acceleration) {
-  const Index k = static_cast<Index>(scene.fixels.size());
+  return motion_system(motion_model<T>(scene), mode, zero_acceleration);
+}
+
+namespace {
+
+void check_letters(const ModeString& mode, Index k) {
   if (static_cast<Index>(mode.letters.size()) != k) throw std::invalid_argument("motion_system: mode length");
-  const Mat<T> J = from_exact<T>(jacobian(scene));  // 3 x 2k: normals, then tangents
-  const T inertia = from_exact<T>(scene.workpiece.inertia_per_mass);
+  for (Interaction L : mode.letters)
+    if (L != Interaction::kSeparate && L != Interaction::kSlideLeft && L != Interaction::kSlideRight &&
+        L != Interaction::kRoll)
+      throw std::invalid_argument("motion_system: only s, l, r, n describe motion from rest");
+}
+
+}  // namespace
+
+Index motion_system_rows(const ModeString& mode) {
+  Index rows = 3;
+  for (Interaction L : mode.letters) rows += L == Interaction::kSeparate ? 1 : L == Interaction::kRoll ? 4 : 2;
+  return rows;
+}
+
+template <class T>
+exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const ModeString& mode) {
+  const Index k = model.J.cols() / 2;
+  check_letters(mode, k);
+  exact::SparseStrictSystem<T> s{0, 3, {}, {true, true, true}, {false, false, false}};
+  s.entries.reserve(static_cast<size_t>(8 * k));
+  const T zero(0);
+  auto add = [&s, &zero](Index col, const T& value) {
+    if (value != zero) s.entries.push_back({s.rows, col, value});
+  };
+  for (Index i = 0; i < k; ++i) {
+    const Interaction L = mode.letters[static_cast<size_t>(i)];
+    Index sigma = -1;
+    if (L != Interaction::kRoll) {
+      sigma = s.cols++;
+      s.is_free.push_back(false);
+      s.strict.push_back(true);
+    }
+    // a_n = J_n^T vdot and a_t = J_t^T vdot (eq. 6 from rest, velocity products neglected).
+    for (Index d = 0; d < 3; ++d) add(d, model.J(d, i));
+    if (L == Interaction::kSeparate) {  // a_n - sigma = 0, sigma > 0
+      add(sigma, T(-1));
+      ++s.rows;
+      continue;
+    }
+    ++s.rows;  // a_n = 0
+    for (Index d = 0; d < 3; ++d) add(d, model.J(d, k + i));
+    if (L == Interaction::kSlideLeft) add(sigma, T(-1));  // a_t = sigma > 0
+    if (L == Interaction::kSlideRight) add(sigma, T(1));  // a_t = -sigma < 0
+    ++s.rows;
+  }
+  return s;
+}
+
+template <class T>
+MotionSystem<T> motion_system(const MotionModel<T>& model, const ModeString& mode, bool zero_acceleration) {
+  const Index k = model.J.cols() / 2;
+  if (!zero_acceleration) check_letters(mode, k);
+  const Mat<T>& J = model.J;  // 3 x 2k: normals, then tangents
+  const T& inertia = model.inertia_per_mass;
 
   // Column layout: vdot (3) | per fixel: [sigma (strict kinematic slack)] [c_n] [c_t, rho+, rho-].
   MotionSystem<T> ms;
@@ -78,9 +142,6 @@ MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeStri
   for (Index i = 0; i < k; ++i) {
     const auto u = static_cast<size_t>(i);
     const Interaction L = zero_acceleration ? Interaction::kRoll : mode.letters[u];
-    if (L != Interaction::kSeparate && L != Interaction::kSlideLeft && L != Interaction::kSlideRight &&
-        L != Interaction::kRoll)
-      throw std::invalid_argument("motion_system: only s, l, r, n describe motion from rest");
     if (!zero_acceleration) {
       if (L != Interaction::kRoll) sigma[u] = cols++;
       kin_rows += (L == Interaction::kSeparate) ? 1 : 2;
@@ -94,68 +155,72 @@ MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeStri
       fric_rows += 2;
     } else {
       // Table 2: l has c_t = -mu_k c_n, r has c_t = +mu_k c_n (friction opposes the sliding).
-      const T mu_k = from_exact<T>(scene.fixels[u].mu_k);
+      const T& mu_k = model.mu_k[u];
       ms.c_t_per_c_n[u] = L == Interaction::kSlideLeft ? T(-mu_k) : mu_k;
     }
   }
-  const Index rows = kin_rows + fric_rows + 3;
-  exact::StrictSystem<T>& s = ms.system;
-  s.A = Mat<T>::Zero(rows, cols);
-  s.b = Vec<T>::Zero(rows);
+  exact::SparseStrictSystem<T>& s = ms.system;
+  ms.slack_column.assign(static_cast<size_t>(kin_rows + fric_rows), -1);
+  s.rows = kin_rows + fric_rows + 3;
+  s.cols = cols;
   s.is_free.assign(static_cast<size_t>(cols), false);
   s.strict.assign(static_cast<size_t>(cols), false);
   if (!zero_acceleration)
     for (Index j = 0; j < 3; ++j) s.is_free[static_cast<size_t>(j)] = true;
+  s.entries.reserve(static_cast<size_t>(4 * kin_rows + 3 * fric_rows + 3 * (1 + 2 * k)));
+  const T zero(0);
+  auto add = [&s, &zero](Index row, Index col, T value) {
+    if (value != zero) s.entries.push_back({row, col, std::move(value)});
+  };
+  if (!zero_acceleration) {
+    // The kinematic rows first, their sigma columns (compact 3, 4, ...) moved to the fixels' sigma columns.
+    exact::SparseStrictSystem<T> kin = kinematic_system(model, mode);
+    std::vector<Index> column{0, 1, 2};
+    for (Index i = 0; i < k; ++i)
+      if (sigma[static_cast<size_t>(i)] >= 0) column.push_back(sigma[static_cast<size_t>(i)]);
+    for (exact::Entry<T>& e : kin.entries) {
+      const Index j = column[static_cast<size_t>(e.col)];
+      if (e.col >= 3) {  // the row's slack, strict
+        ms.slack_column[static_cast<size_t>(e.row)] = j;
+        s.strict[static_cast<size_t>(j)] = true;
+      }
+      s.entries.push_back({e.row, j, std::move(e.value)});
+    }
+  }
 
-  Index r = 0, f = kin_rows;
+  Index f = kin_rows;
   const Index dyn = kin_rows + fric_rows;
-  ms.slack_column.assign(static_cast<size_t>(dyn), -1);
   ms.zero_acceleration = zero_acceleration;
   for (Index i = 0; i < k; ++i) {
     const auto u = static_cast<size_t>(i);
-    const Interaction L = zero_acceleration ? Interaction::kRoll : mode.letters[u];
-    if (!zero_acceleration) {
-      // a_n = J_n^T vdot and a_t = J_t^T vdot (eq. 6 from rest, velocity products neglected).
-      if (L == Interaction::kSeparate) {  // a_n - sigma = 0, sigma > 0
-        s.A.block(r, 0, 1, 3) = J.col(i).transpose();
-        s.A(r, sigma[u]) = T(-1);
-        ms.slack_column[static_cast<size_t>(r++)] = sigma[u];
-      } else {
-        s.A.block(r++, 0, 1, 3) = J.col(i).transpose();  // a_n = 0
-        s.A.block(r, 0, 1, 3) = J.col(k + i).transpose();
-        if (L == Interaction::kSlideLeft) s.A(r, sigma[u]) = T(-1);  // a_t = sigma > 0
-        if (L == Interaction::kSlideRight) s.A(r, sigma[u]) = T(1);  // a_t = -sigma < 0
-        ms.slack_column[static_cast<size_t>(r++)] = sigma[u];
-      }
-      if (sigma[u] >= 0) s.strict[static_cast<size_t>(sigma[u])] = true;
-    }
     const Index cn = ms.c_n_column[u];
     if (cn < 0) continue;
     // Dynamics: M vdot - J c = g, the contact force entering through its columns of J.
     const Index ct = ms.c_t_column[u];
     for (Index d = 0; d < 3; ++d) {
-      s.A(dyn + d, cn) = -J(d, i);
-      if (ct >= 0)
-        s.A(dyn + d, ct) = -J(d, k + i);
-      else
-        s.A(dyn + d, cn) -= ms.c_t_per_c_n[u] * J(d, k + i);
+      if (ct >= 0) {
+        add(dyn + d, cn, T(-J(d, i)));
+        add(dyn + d, ct, T(-J(d, k + i)));
+      } else {
+        add(dyn + d, cn, T(-J(d, i) - ms.c_t_per_c_n[u] * J(d, k + i)));
+      }
     }
     if (ct >= 0) {
       // |c_t| <= mu_s c_n:  mu_s c_n - c_t - rho+ = 0,  mu_s c_n + c_t - rho- = 0.
-      const T mu_s = from_exact<T>(scene.fixels[u].mu_s);
+      const T& mu_s = model.mu_s[u];
       s.is_free[static_cast<size_t>(ct)] = true;
       for (Index side = 0; side < 2; ++side, ++f) {
-        s.A(f, cn) = mu_s;
-        s.A(f, ct) = T(side ? 1 : -1);
-        s.A(f, rho[u] + side) = T(-1);
+        add(f, cn, mu_s);
+        add(f, ct, T(side ? 1 : -1));
+        add(f, rho[u] + side, T(-1));
         ms.slack_column[static_cast<size_t>(f)] = rho[u] + side;
       }
     }
   }
   if (!zero_acceleration) {
-    s.A(dyn, 0) = T(1);
-    s.A(dyn + 1, 1) = T(1);
-    s.A(dyn + 2, 2) = inertia;  // M = diag(1, 1, I/m) per unit mass
+    add(dyn, 0, T(1));
+    add(dyn + 1, 1, T(1));
+    add(dyn + 2, 2, inertia);  // M = diag(1, 1, I/m) per unit mass
   }
   ms.kinematic_rows = kin_rows;
   return ms;
@@ -163,7 +228,13 @@ MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeStri
 
 template struct MotionSystem<double>;
 template struct MotionSystem<Q>;
-template MotionSystem<double> motion_system<double>(const geometry::PlanarScene&, const ModeString&, bool);
-template MotionSystem<Q> motion_system<Q>(const geometry::PlanarScene&, const ModeString&, bool);
+#define CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(T)                                                       \
+  template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                               \
+  template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&); \
+  template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);           \
+  template MotionSystem<T> motion_system<T>(const geometry::PlanarScene&, const ModeString&, bool);
+CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(double)
+CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(Q)
+#undef CONTACTCERT_MOTION_SYSTEM_INSTANTIATE
 
 }  // namespace contactcert::solvers

@@ -23,7 +23,7 @@ using exact::Vec;
 /// kinematic rows first (they do not involve g), then friction rows, then the 3 dynamics rows.
 template <class T>
 struct MotionSystem {
-  exact::StrictSystem<T> system;                     ///< b is zero except on the dynamics rows (set by with_wrench)
+  exact::SparseStrictSystem<T> system;               ///< A by its non-zero entries; b = rhs(g)
   Eigen::Index kinematic_rows = 0;                   ///< rows [0, kinematic_rows) constrain vdot only
   std::vector<Eigen::Index> c_n_column, c_t_column;  ///< per fixel: column of c_n / c_t (-1 if none)
   std::vector<T> c_t_per_c_n;                        ///< per fixel: c_t = this * c_n when sliding (else 0)
@@ -31,10 +31,8 @@ struct MotionSystem {
   bool zero_acceleration = false;                    ///< vdot fixed to 0 (no vdot columns, no kinematic rows)
   /// The right-hand side b for wrench g: zero but for the 3 dynamics rows, which are g.
   Vec<T> rhs(const Vec<T>& g) const;
-  /// The system for wrench g (b = rhs(g)).
-  exact::StrictSystem<T> with_wrench(const Vec<T>& g) const;
-  /// The kinematic rows alone (with all columns): feasible iff the mode is kinematically feasible.
-  exact::StrictSystem<T> kinematic() const;
+  /// The system for wrench g (b = rhs(g)), dense.
+  exact::StrictSystem<T> with_wrench(const Vec<T>& g) const { return system.dense(rhs(g)); }
   /// Contact forces (c_1n..c_kn, c_1t..c_kt) and vdot read off a point of the system.
   Vec<T> forces(const Vec<T>& x) const;
   Vec<T> acceleration(const Vec<T>& x) const { return x.head(3); }
@@ -45,14 +43,47 @@ struct MotionSystem {
   Vec<T> point(const Vec<T>& vdot, const Vec<T>& c) const;
 };
 
-/// The system of `mode` (letters s l r n, one per fixel; every fixel must touch) for the scene.
+/// What the system of every mode reads from a scene whose fixels all touch: the Jacobian J of eq. (4)
+/// (contact_model.h: exact frames scaled to integers), I/m, and mu_s, mu_k per fixel.
+template <class T>
+struct MotionModel {
+  Mat<T> J;
+  T inertia_per_mass;
+  std::vector<T> mu_s, mu_k;
+};
+
+template <class T>
+MotionModel<T> motion_model(const geometry::PlanarScene& scene);
+
+/// The system of `mode` (letters s l r n, one per fixel; every fixel must touch) for the model's scene.
 /// With `zero_acceleration`, vdot is fixed to 0 and the kinematic rows are dropped: then the system
 /// says J c + g = 0 with every force in its static friction cone (the weakly stable test).
+template <class T>
+MotionSystem<T> motion_system(const MotionModel<T>& model, const ModeString& mode, bool zero_acceleration = false);
+
+/// The kinematic rows of motion_system(model, mode) alone, on the only columns they involve (vdot, then the
+/// strict slack sigma of each fixel that does not roll, in fixel order): feasible iff the mode is kinematically
+/// feasible; a Motzkin certificate of it is one for those rows of the whole system (the other columns are zero
+/// there). Does not depend on g.
+template <class T>
+exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const ModeString& mode);
+
+/// The number of rows of motion_system(model, mode): per fixel 1 kinematic row if it separates, else 2, plus 2
+/// friction rows if it rolls; then the 3 dynamics rows.
+Eigen::Index motion_system_rows(const ModeString& mode);
+
+/// motion_system(motion_model<T>(scene), mode, zero_acceleration).
 template <class T>
 MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeString& mode,
                               bool zero_acceleration = false);
 
-extern template MotionSystem<double> motion_system<double>(const geometry::PlanarScene&, const ModeString&, bool);
-extern template MotionSystem<Q> motion_system<Q>(const geometry::PlanarScene&, const ModeString&, bool);
+#define CONTACTCERT_MOTION_SYSTEM_EXTERN(T)                                                                   \
+  extern template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                               \
+  extern template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&); \
+  extern template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);           \
+  extern template MotionSystem<T> motion_system<T>(const geometry::PlanarScene&, const ModeString&, bool);
+CONTACTCERT_MOTION_SYSTEM_EXTERN(double)
+CONTACTCERT_MOTION_SYSTEM_EXTERN(Q)
+#undef CONTACTCERT_MOTION_SYSTEM_EXTERN
 
 }  // namespace contactcert::solvers

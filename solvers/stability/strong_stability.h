@@ -9,6 +9,9 @@
 // the same for every all-rolling solution), so only the 4^k - 1 other modes need a proof.
 #pragma once
 
+#include <cassert>
+#include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +34,60 @@ struct ModeProof {
   Vec<T> motzkin;
 };
 
+/// The proofs of a strongly stable verdict, one per moving mode in the order of moving_modes(k). A kinematic
+/// proof holds for every g, so a StabilityOracle finds those once and its verdicts refer to that immutable set
+/// (kept alive by shared ownership, also after the oracle is gone) instead of copying it into every result.
+template <class T>
+class ModeProofs {
+ public:
+  using Shared = std::shared_ptr<const std::vector<ModeProof<T>>>;
+  std::size_t size() const { return slots_.size(); }
+  const ModeProof<T>& operator[](std::size_t i) const {
+    const std::ptrdiff_t s = slots_[i];
+    return s >= 0 ? own_[static_cast<std::size_t>(s)] : (*shared_)[static_cast<std::size_t>(-1 - s)];
+  }
+  /// Appends a proof of this result's own.
+  void push_back(ModeProof<T> p) {
+    slots_.push_back(static_cast<std::ptrdiff_t>(own_.size()));
+    own_.push_back(std::move(p));
+  }
+  /// Appends proof j of `set` without copying it. Precondition: every shared proof of one list is from one set.
+  void push_shared(const Shared& set, std::size_t j) {
+    if (!shared_) shared_ = set;
+    assert(shared_ == set);
+    slots_.push_back(-1 - static_cast<std::ptrdiff_t>(j));
+  }
+  /// Room for n proofs, `own` of them this list's own (a growing vector would copy the rational vectors).
+  void reserve(std::size_t n, std::size_t own) {
+    slots_.reserve(n);
+    own_.reserve(own);
+  }
+  void clear() { *this = ModeProofs(); }
+
+  class const_iterator {
+   public:
+    const_iterator(const ModeProofs* list, std::size_t i) : list_(list), i_(i) {}
+    const ModeProof<T>& operator*() const { return (*list_)[i_]; }
+    const ModeProof<T>* operator->() const { return &(*list_)[i_]; }
+    const_iterator& operator++() {
+      ++i_;
+      return *this;
+    }
+    bool operator==(const const_iterator& o) const { return i_ == o.i_; }
+
+   private:
+    const ModeProofs* list_;
+    std::size_t i_;
+  };
+  const_iterator begin() const { return {this, 0}; }
+  const_iterator end() const { return {this, size()}; }
+
+ private:
+  Shared shared_;
+  std::vector<ModeProof<T>> own_;
+  std::vector<std::ptrdiff_t> slots_;  ///< >= 0: index in own_; else -1 - index in *shared_
+};
+
 /// A solution of the model: its mode, contact forces (c_1n..c_kn, c_1t..c_kt) and acceleration vdot.
 template <class T>
 struct MotionWitness {
@@ -47,10 +104,11 @@ struct StabilityResult {
   Vec<T> resting_forces;  ///< a zero-acceleration solution (J c + g = 0), if has_resting
   Vec<T> resting_farkas;  ///< unstable: Motzkin certificate that no resting solution exists
   bool has_moving = false;
-  MotionWitness<T> moving;           ///< a moving solution, if has_moving
-  std::vector<ModeProof<T>> proofs;  ///< strongly stable: one proof per moving mode (4^k - 1)
-  long lps = 0;                      ///< LPs solved (for strong_stability: including the kinematic ones)
-  long lps_checked_from_float = 0;   ///< of these, decided by a float LP's rounded answer checked exactly (no rational LP)
+  MotionWitness<T> moving;  ///< a moving solution, if has_moving
+  ModeProofs<T> proofs;     ///< strongly stable: one proof per moving mode (4^k - 1)
+  long lps = 0;             ///< LPs solved (for strong_stability: including the kinematic ones)
+  /// Of these, decided by a float LP's rounded answer checked exactly (no rational LP).
+  long lps_checked_from_float = 0;
   long modes_checked = 0;
   long modes_kinematically_feasible = 0;
 };
@@ -67,9 +125,10 @@ geometry::PlanarScene touching_scene(const geometry::PlanarScene& scene, std::ve
 std::vector<ModeString> moving_modes(std::size_t k);
 
 /// Strong stability of one scene under many wrenches (a planner's question). Prepared once per scene: the
-/// touching fixels, the motion system of every mode, which moving modes are kinematically feasible (their
-/// kinematic rows do not involve g; the others get their g-independent proof here) and each remaining LP
-/// (exact::StrictSolver). A verdict then solves 1 + (kinematically feasible modes visited) LPs.
+/// touching fixels, which moving modes are kinematically feasible (their kinematic rows do not involve g; the
+/// others get their g-independent proof here, shared by every verdict) and the motion system and LP
+/// (exact::StrictSolver) of each remaining mode. A verdict then solves 1 + (kinematically feasible modes
+/// visited) LPs.
 template <class T>
 class StabilityOracle {
  public:
@@ -83,21 +142,24 @@ class StabilityOracle {
 
  private:
   struct Mode {
-    ModeString mode;
     MotionSystem<T> ms;
     std::optional<exact::StrictSolver<T>> solver;  ///< none if kinematically infeasible
-    Vec<T> kinematic_proof;                        ///< then: its Motzkin certificate (zero off the kinematic rows)
+    std::size_t kinematic_proof = 0;               ///< then: its proof in kinematic_proofs_
   };
   std::vector<Eigen::Index> touching_;
-  geometry::PlanarScene scene_;  ///< the touching fixels only
+  MotionModel<T> model_;  ///< of the touching fixels only
   MotionSystem<T> rest_;
   exact::StrictSolver<T> rest_solver_;
-  std::vector<Mode> modes_;  ///< moving_modes(k), then n..n (it moves only if vdot != 0)
+  std::vector<ModeString> mode_names_;  ///< moving_modes(k), then n..n (it moves only if vdot != 0)
+  std::vector<Mode> modes_;             ///< in the order of mode_names_
+  typename ModeProofs<T>::Shared kinematic_proofs_;
   long preparation_lps_ = 0, preparation_lps_checked_from_float_ = 0;
 };
 
-/// The verdict for wrench g = (f_x, f_y, torque about the com), with witness or certificate:
-/// StabilityOracle(scene, options).verdict(g), its lps including the preparation's.
+/// The verdict for wrench g = (f_x, f_y, torque about the com), with witness or certificate: the verdict and
+/// evidence of StabilityOracle(scene, options).verdict(g), but each moving mode is prepared (its kinematic LP)
+/// only when the verdict reaches it, so a verdict with a moving witness prepares no mode after the witness's.
+/// Its lps count every LP solved, the kinematic ones included.
 template <class T>
 StabilityResult<T> strong_stability(const geometry::PlanarScene& scene, const Vec<T>& g,
                                     const StabilityOptions& options = {});

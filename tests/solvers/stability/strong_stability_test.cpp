@@ -11,6 +11,7 @@
 #include "geometry/span_cone.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/stability/margin.h"
+#include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 #include "tests/solvers/scene_fixtures.h"
@@ -89,16 +90,18 @@ TEST(StrongStability, CorruptedEvidenceIsRejected) {
   EXPECT_NE(check_stability(scene, wrench(0, -1, 0), wrong_verdict), "");
   // Change one number in a dynamic proof (one that is not all zeros).
   bool corrupted = false;
-  for (auto& p : r.proofs) {
-    if (p.kinematic) continue;
-    for (Eigen::Index i = 0; i < p.motzkin.size() && !corrupted; ++i)
-      if (sgn(p.motzkin(i)) != 0) {
-        p.motzkin(i) = -p.motzkin(i) - 1;
+  ModeProofs<Q> bad;
+  for (const auto& p : r.proofs) {
+    ModeProof<Q> q = p;
+    for (Eigen::Index i = 0; i < q.motzkin.size() && !corrupted && !q.kinematic; ++i)
+      if (sgn(q.motzkin(i)) != 0) {
+        q.motzkin(i) = -q.motzkin(i) - 1;
         corrupted = true;
       }
-    if (corrupted) break;
+    bad.push_back(q);
   }
   ASSERT_TRUE(corrupted);
+  r.proofs = bad;
   EXPECT_NE(check_stability(scene, wrench(0, -1, 0), r), "");
   // The same evidence does not prove stability under another wrench.
   auto w = strong_stability<Q>(scene, wrench(0, -1, 0));
@@ -106,12 +109,12 @@ TEST(StrongStability, CorruptedEvidenceIsRejected) {
 }
 
 // A unit disk touching fixels at (0,-1), (1,0) and (-4/5,-3/5), mu = 1/2 (the benchmark's three-fixel scene).
+const char* const kThreeFixelDisk =
+    R"({"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":1},"mass":1,"inertia":1},
+        "fixels":[{"position":[0,-1]},{"position":[1,0]},{"position":["-4/5","-3/5"]}],
+        "mu_s":"1/2","mu_k":"1/2"})";
 geometry::PlanarScene three_fixel_disk() {
-  return geometry::read_planar_scene(exact::JsonInput::parse(
-      R"({"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":1},"mass":1,"inertia":1},
-          "fixels":[{"position":[0,-1]},{"position":[1,0]},{"position":["-4/5","-3/5"]}],
-          "mu_s":"1/2","mu_k":"1/2"})",
-      "three_fixel_disk.json"));
+  return geometry::read_planar_scene(exact::JsonInput::parse(kThreeFixelDisk, "three_fixel_disk.json"));
 }
 
 TEST(StabilityOracle, FloatFirstVerdictEqualsTheExactVerdictIncludingConeFaces) {
@@ -155,10 +158,50 @@ TEST(StabilityOracle, ThreeFixelsAgreeWithTheCellLabelsAndTheColdVerdict) {
     EXPECT_EQ(check_stability(scene, g, r), "") << g.transpose();
     const auto cold = strong_stability<Q>(scene, g);
     EXPECT_EQ(cold.verdict, r.verdict);
-    EXPECT_EQ(cold.lps, r.lps + oracle.preparation_lps());
+    EXPECT_EQ(check_stability(scene, g, cold), "") << g.transpose();
+    // Cold prepares only the modes the verdict reaches: all of them unless some mode moves.
+    if (r.has_moving) {
+      EXPECT_LE(cold.lps, r.lps + oracle.preparation_lps());
+      EXPECT_EQ(cold.moving.mode.text(), r.moving.mode.text());
+    } else {
+      EXPECT_EQ(cold.lps, r.lps + oracle.preparation_lps());
+    }
     if (region.cells[c].dimension == 3) {  // off every face the float oracle agrees too
       EXPECT_EQ(floats.verdict(exact::to_double(g)).verdict, r.verdict) << g.transpose();
     }
+  }
+}
+
+TEST(StabilityOracle, SharedKinematicProofsOutliveTheOracleAndEqualTheColdOnes) {
+  // A verdict refers to the oracle's kinematic proofs instead of copying them: they must still verify (also
+  // through the certificate file) after the oracle is gone, in copies of the result, and equal the proofs that
+  // the cold path computes for itself.
+  const auto scene = three_fixel_disk();
+  const Vec<Q> g = wrench(0, -1, 0);
+  StabilityResult<Q> warm;
+  long shared = 0;
+  {
+    const StabilityOracle<Q> oracle(scene);
+    warm = oracle.verdict(g);
+    for (const auto& p : warm.proofs) shared += p.kinematic;
+    // Some kinematic proofs were reused from an earlier mode (fewer LPs than moving modes), and still verify below.
+    EXPECT_LT(oracle.preparation_lps(), 63);
+  }
+  ASSERT_EQ(warm.verdict, StabilityVerdict::kStronglyStable);
+  ASSERT_EQ(warm.proofs.size(), 63u);
+  EXPECT_GT(shared, 40);
+  const StabilityResult<Q> copy = warm;
+  warm = StabilityResult<Q>();  // the copy alone keeps the shared proofs now
+  EXPECT_EQ(check_stability(scene, g, copy), "");
+  const auto checked = check_stability_certificate(
+      exact::JsonInput::parse(stability_certificate(kThreeFixelDisk, g, copy), "certificate.json"));
+  EXPECT_TRUE(checked.valid) << checked.reason;
+  const auto cold = strong_stability<Q>(scene, g);
+  ASSERT_EQ(cold.proofs.size(), copy.proofs.size());
+  for (std::size_t i = 0; i < cold.proofs.size(); ++i) {
+    EXPECT_EQ(cold.proofs[i].mode.text(), copy.proofs[i].mode.text());
+    EXPECT_EQ(cold.proofs[i].kinematic, copy.proofs[i].kinematic);
+    EXPECT_EQ(cold.proofs[i].motzkin, copy.proofs[i].motzkin) << cold.proofs[i].mode.text();
   }
 }
 
@@ -169,16 +212,24 @@ TEST(StabilityOracle, CorruptedFloatFirstEvidenceIsRejected) {
   auto strong = oracle.verdict(wrench(0, -1, 0));
   ASSERT_EQ(strong.verdict, StabilityVerdict::kStronglyStable);
   ASSERT_EQ(check_stability(scene, wrench(0, -1, 0), strong), "");
-  for (auto& p : strong.proofs)
-    if (p.kinematic) {
-      auto bad = strong;
-      ModeProof<Q>& q = bad.proofs[static_cast<std::size_t>(&p - strong.proofs.data())];
-      q.motzkin = -q.motzkin;
-      EXPECT_NE(check_stability(scene, wrench(0, -1, 0), bad), "") << p.mode.text();
-      q.motzkin = p.motzkin;
-      q.motzkin(q.motzkin.size() - 1) += 1;
-      EXPECT_NE(check_stability(scene, wrench(0, -1, 0), bad), "") << p.mode.text();
-    }
+  // The list with proof i replaced by `q` (the others still shared with the oracle).
+  auto with = [&strong](std::size_t i, const ModeProof<Q>& q) {
+    auto bad = strong;
+    bad.proofs = ModeProofs<Q>();
+    for (std::size_t j = 0; j < strong.proofs.size(); ++j) bad.proofs.push_back(j == i ? q : strong.proofs[j]);
+    return bad;
+  };
+  for (std::size_t i = 0; i < strong.proofs.size(); ++i) {
+    const ModeProof<Q>& p = strong.proofs[i];
+    if (!p.kinematic) continue;
+    ModeProof<Q> q = p;
+    q.motzkin = -q.motzkin;
+    EXPECT_NE(check_stability(scene, wrench(0, -1, 0), with(i, q)), "") << p.mode.text();
+    q.motzkin = p.motzkin;
+    q.motzkin(q.motzkin.size() - 1) += 1;
+    EXPECT_NE(check_stability(scene, wrench(0, -1, 0), with(i, q)), "") << p.mode.text();
+  }
+  EXPECT_EQ(check_stability(scene, wrench(0, -1, 0), strong), "");  // the shared set itself is unchanged
   // A moving witness with a changed acceleration, and resting forces that no longer balance g.
   auto weak = oracle.verdict(wrench(-1, -1, 0));
   ASSERT_EQ(weak.verdict, StabilityVerdict::kWeaklyStable);
@@ -215,6 +266,64 @@ TEST(StrictSolver, FallsBackToTheExactLpWhenTheRoundedAnswerDoesNotCheck) {
   ASSERT_EQ(r.status, exact::StrictStatus::kInfeasible);
   EXPECT_TRUE(r.rounded_float_checked);
   EXPECT_TRUE(exact::verify_motzkin(neg, r.motzkin));
+}
+
+TEST(StrictSolver, RowsBeyondSixtyFourBitsAreSolvedInRationals) {
+  // 2^-62 x1 + (2^62 - 1)^-1 x2 = b: the row's common denominator 2^62 (2^62 - 1) does not fit in 64 bits, so
+  // the solver keeps the rational row (dense or sparse input alike) and every answer comes from the verified LP.
+  const Q a = 1 / Q(Z(1) << 62), c = 1 / Q((Z(1) << 62) - 1);
+  exact::SparseStrictSystem<Q> sparse{1, 2, {{0, 0, a}, {0, 1, c}}, {}, {true, false}};
+  for (const Q& b : {Q(1), Q(-1)}) {
+    const Vec<Q> rhs = Vec<Q>::Constant(1, b);
+    const exact::StrictSystem<Q> dense = sparse.dense(rhs);
+    for (const auto& r : {exact::StrictSolver<Q>(sparse).solve(rhs), exact::StrictSolver<Q>(dense).solve(rhs)}) {
+      EXPECT_FALSE(r.rounded_float_checked);
+      if (b > 0) {
+        ASSERT_EQ(r.status, exact::StrictStatus::kFeasible);
+        EXPECT_TRUE(exact::verify_strict_point(dense, r.x));
+      } else {
+        ASSERT_EQ(r.status, exact::StrictStatus::kInfeasible);
+        EXPECT_TRUE(exact::verify_motzkin(dense, r.motzkin));
+      }
+    }
+  }
+}
+
+TEST(MotionSystem, KinematicRowsAndIntegerRowsEqualTheRationalSystem) {
+  // Every mode of the three-fixel disk: kinematic_system is the kinematic rows of motion_system on the vdot and
+  // sigma columns, motion_system_rows its row count, and the verified solver built from the sparse rational
+  // entries (rows scaled to 64-bit integers) answers as the exact LP on the dense rational system.
+  const auto scene = three_fixel_disk();
+  const auto model = motion_model<Q>(scene);
+  std::vector<ModeString> modes = moving_modes(3);
+  modes.push_back(ModeString{std::vector<Interaction>(3, Interaction::kRoll)});
+  const Vec<Q> g = wrench(1, -3, 1);
+  for (const ModeString& mode : modes) {
+    const auto ms = motion_system(model, mode);
+    const exact::StrictSystem<Q> full = ms.with_wrench(g);
+    ASSERT_EQ(motion_system_rows(mode), full.A.rows()) << mode.text();
+    const exact::StrictSystem<Q> kin = kinematic_system(model, mode).dense();
+    ASSERT_EQ(kin.A.rows(), ms.kinematic_rows);
+    std::vector<Eigen::Index> columns{0, 1, 2};
+    for (Eigen::Index j = 3; j < full.A.cols(); ++j)
+      if (full.strict[static_cast<std::size_t>(j)]) columns.push_back(j);
+    ASSERT_EQ(kin.A.cols(), static_cast<Eigen::Index>(columns.size())) << mode.text();
+    for (Eigen::Index c = 0; c < kin.A.cols(); ++c) {
+      const Eigen::Index j = columns[static_cast<std::size_t>(c)];
+      EXPECT_EQ(kin.is_free[static_cast<std::size_t>(c)], full.is_free[static_cast<std::size_t>(j)]);
+      EXPECT_EQ(kin.strict[static_cast<std::size_t>(c)], full.strict[static_cast<std::size_t>(j)]);
+      for (Eigen::Index i = 0; i < kin.A.rows(); ++i) EXPECT_EQ(kin.A(i, c), full.A(i, j)) << mode.text();
+    }
+    for (Eigen::Index i = 0; i < kin.A.rows(); ++i)  // the kinematic rows involve no other column
+      EXPECT_EQ(kin.A.row(i).cwiseAbs().sum(), full.A.row(i).cwiseAbs().sum()) << mode.text();
+    const auto fast = exact::StrictSolver<Q>(ms.system).solve(ms.rhs(g));
+    const auto exact_lp = exact::strict_feasibility(full, exact::Arith::kExact);
+    ASSERT_EQ(fast.status, exact_lp.status) << mode.text();
+    EXPECT_TRUE(fast.rounded_float_checked) << mode.text();
+    EXPECT_TRUE(fast.status == exact::StrictStatus::kFeasible ? exact::verify_strict_point(full, fast.x)
+                                                              : exact::verify_motzkin(full, fast.motzkin))
+        << mode.text();
+  }
 }
 
 TEST(StrongStability, MembershipLpsAgreeWithTheWrenchConeAlgorithm) {
