@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <numeric>
 
+#include "exact/fraction_free.h"
+
 namespace contactcert::exact {
 
 namespace {
@@ -138,7 +140,8 @@ std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem) {
     out.b[static_cast<size_t>(i)] = row[static_cast<size_t>(n)];
   }
   if (problem.c.size() > 0 &&
-      !integer_scale(n, [&](Index j) -> const Q& { return problem.c(j); }, out.c.data(), out.objective_scale))
+      !integer_scale(
+          n, [&](Index j) -> const Q& { return problem.c(j); }, out.c.data(), out.objective_scale))
     return std::nullopt;
   return out;
 }
@@ -209,32 +212,192 @@ std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& pr
   return cert;
 }
 
-std::optional<Vec<Q>> round_and_check_point(const LpProblem<Q>& problem, const Vec<double>& x_approx,
-                                            const std::vector<bool>& zero) {
-  const Index m = problem.rows(), n = problem.cols();
-  if (x_approx.size() != n || zero.size() != static_cast<size_t>(n)) return std::nullopt;
-  const std::optional<IntegerLp> ilp = integer_lp(problem);
-  if (!ilp) return std::nullopt;
-  // x ~ X / D on the columns not fixed to zero.
-  std::vector<Index> support;
-  std::vector<double> xs;
-  for (Index j = 0; j < n; ++j)
-    if (!zero[static_cast<size_t>(j)]) support.push_back(j), xs.push_back(x_approx(j));
-  std::vector<i64> X;
-  i64 D;
-  if (!round_vector(xs, X, D)) return std::nullopt;
-  for (size_t t = 0; t < support.size(); ++t)
-    if (X[t] < 0 && !problem.free(support[t])) return std::nullopt;
-  // A X = D b, row by row in the integer rows.
-  for (Index i = 0; i < m; ++i) {
-    i128 acc = 0;
-    for (size_t t = 0; t < support.size(); ++t)
-      if (!fma128(acc, ilp->A[static_cast<size_t>(i * n + support[t])], X[t])) return std::nullopt;
-    if (acc != static_cast<i128>(D) * ilp->b[static_cast<size_t>(i)]) return std::nullopt;
+namespace {
+
+// The ring operations the integer checks need, for R = std::int64_t (overflow-checked, exact/fraction_free.h)
+// and R = Z.
+i64 times(i64 a, i64 b) { return ring::mul(a, b); }
+Z times(const Z& a, const Z& b) { return a * b; }
+i64 plus(i64 a, i64 b) { return ring::add(a, b); }
+Z plus(const Z& a, const Z& b) { return a + b; }
+i64 minus(i64 a, i64 b) { return ring::sub(a, b); }
+Z minus(const Z& a, const Z& b) { return a - b; }
+/// a / b, known to be exact (b != 0).
+i64 divide_exact(i64 a, i64 b) { return ring::checked(a / b); }
+Z divide_exact(const Z& a, const Z& b) {
+  Z q;
+  mpz_divexact(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  return q;
+}
+void lcm_with(i64& acc, i64 d) { acc = ring::mul(acc / std::gcd(acc, d), d); }
+void lcm_with(Z& acc, i64 d) { mpz_lcm_ui(acc.get_mpz_t(), acc.get_mpz_t(), static_cast<unsigned long>(d)); }
+void lcm_with(Z& acc, mpz_srcptr d) { mpz_lcm(acc.get_mpz_t(), acc.get_mpz_t(), d); }
+void lcm_with(i64& acc, mpz_srcptr d) {
+  i64 v;
+  if (!to_i64(d, v)) throw RingOverflow{};
+  lcm_with(acc, v);
+}
+void from_mpz(mpz_srcptr z, i64& out) {
+  if (!to_i64(z, out)) throw RingOverflow{};
+  out = ring::checked(out);
+}
+void from_mpz(mpz_srcptr z, Z& out) { mpz_set(out.get_mpz_t(), z); }
+double to_double(i64 v) { return static_cast<double>(v); }
+double to_double(const Z& v) { return v.get_d(); }
+
+/// v rounded entry by entry to fractions over their common denominator D: v ~ out / D. False if an entry has
+/// no convergent with a denominator <= kMaxDenominator.
+template <class R>
+bool over_common_denominator(const std::vector<double>& v, std::vector<R>& out, R& D) {
+  std::vector<Fraction> f;
+  f.reserve(v.size());
+  D = 1;
+  for (double x : v) {
+    const std::optional<Fraction> r = round_to_fraction(x);
+    if (!r) return false;
+    lcm_with(D, r->den);
+    f.push_back(*r);
   }
-  Vec<Q> x = Vec<Q>::Zero(n);
-  for (size_t t = 0; t < support.size(); ++t) x(support[t]) = make_q(X[t], D);
+  out.resize(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) out[i] = times(R(f[i].num), R(D / R(f[i].den)));
+  return true;
+}
+
+}  // namespace
+
+template <class R>
+IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b) {
+  IntegerSystem<R> s;
+  s.m = A.rows(), s.n = A.cols();
+  s.A.resize(static_cast<std::size_t>(s.m * s.n));
+  s.b.resize(static_cast<std::size_t>(s.m));
+  s.row_scale.assign(static_cast<std::size_t>(s.m), R(1));
+  R den;
+  for (Index i = 0; i < s.m; ++i) {
+    auto entry = [&](Index j) -> const Q& { return j < s.n ? A(i, j) : b(i); };
+    R& L = s.row_scale[static_cast<std::size_t>(i)];
+    for (Index j = 0; j <= s.n; ++j)
+      if (!is_one(mpq_denref(entry(j).get_mpq_t()))) lcm_with(L, mpq_denref(entry(j).get_mpq_t()));
+    for (Index j = 0; j <= s.n; ++j) {
+      R& out = j < s.n ? s.A[static_cast<std::size_t>(i * s.n + j)] : s.b[static_cast<std::size_t>(i)];
+      from_mpz(mpq_numref(entry(j).get_mpq_t()), out);
+      if (L == 1) continue;
+      from_mpz(mpq_denref(entry(j).get_mpq_t()), den);
+      out = times(out, R(L / den));
+    }
+  }
+  return s;
+}
+
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Index>& columns) {
+  const auto k = static_cast<Index>(columns.size()), w = k + 1;
+  if (k > s.m) return std::nullopt;
+  // M = [A_S | b], row-major m x (k + 1).
+  std::vector<R> M(static_cast<std::size_t>(s.m * w));
+  auto at = [&](Index i, Index j) -> R& { return M[static_cast<std::size_t>(i * w + j)]; };
+  for (Index i = 0; i < s.m; ++i) {
+    for (Index c = 0; c < k; ++c)
+      at(i, c) = s.A[static_cast<std::size_t>(i * s.n + columns[static_cast<std::size_t>(c)])];
+    at(i, k) = s.b[static_cast<std::size_t>(i)];
+  }
+  // Bareiss: after step c every entry below row c is a minor of M, so the division by the previous pivot is
+  // exact.
+  R prev(1);
+  for (Index c = 0; c < k; ++c) {
+    Index p = c;
+    while (p < s.m && ring::sign(at(p, c)) == 0) ++p;
+    if (p == s.m) return std::nullopt;  // A_S is rank deficient
+    if (p != c)
+      for (Index j = c; j < w; ++j) std::swap(at(p, j), at(c, j));
+    for (Index i = c + 1; i < s.m; ++i) {
+      for (Index j = c + 1; j < w; ++j)
+        at(i, j) = divide_exact(minus(times(at(c, c), at(i, j)), times(at(i, c), at(c, j))), prev);
+      at(i, c) = 0;
+    }
+    prev = at(c, c);
+  }
+  for (Index i = k; i < s.m; ++i)
+    if (ring::sign(at(i, k)) != 0) return std::nullopt;  // inconsistent
+  // d = prev (the last pivot, a k x k minor of A_S); N_i = d x_i are integers (Cramer's rule), and
+  // a_ii N_i = d b_i - sum_{j > i} a_ij N_j row by row from the bottom.
+  std::vector<R> N(static_cast<std::size_t>(k));
+  for (Index i = k - 1; i >= 0; --i) {
+    R acc = times(prev, at(i, k));
+    for (Index j = i + 1; j < k; ++j) acc = minus(acc, times(at(i, j), N[static_cast<std::size_t>(j)]));
+    N[static_cast<std::size_t>(i)] = divide_exact(acc, at(i, i));
+  }
+  Vec<Q> x(k);
+  const Q d = ring::to_field<Q>(prev);
+  for (Index i = 0; i < k; ++i) x(i) = ring::to_field<Q>(N[static_cast<std::size_t>(i)]) / d;
   return x;
 }
+
+template <class R>
+std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>& x_approx,
+                                    const std::vector<bool>& zero) {
+  std::vector<Index> support;
+  std::vector<double> xs;
+  for (Index j = 0; j < s.n; ++j)
+    if (!zero[static_cast<std::size_t>(j)]) support.push_back(j), xs.push_back(x_approx(j));
+  std::vector<R> X;
+  R D;
+  if (!over_common_denominator(xs, X, D)) return std::nullopt;
+  for (const R& v : X)
+    if (ring::sign(v) < 0) return std::nullopt;
+  // A X = D b, row by row.
+  for (Index i = 0; i < s.m; ++i) {
+    R acc(0);
+    for (std::size_t t = 0; t < support.size(); ++t)
+      acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + support[t])], X[t]));
+    if (acc != times(D, s.b[static_cast<std::size_t>(i)])) return std::nullopt;
+  }
+  Vec<Q> x = Vec<Q>::Zero(s.n);
+  const Q d = ring::to_field<Q>(D);
+  for (std::size_t t = 0; t < support.size(); ++t)
+    if (ring::sign(X[t]) != 0) x(support[t]) = ring::to_field<Q>(X[t]) / d;
+  return x;
+}
+
+template <class R>
+std::optional<FarkasVector> rounded_farkas(const IntegerSystem<R>& s, const Vec<double>& y_approx,
+                                           const std::vector<bool>& zero) {
+  std::vector<double> ys(static_cast<std::size_t>(s.m));
+  for (Index i = 0; i < s.m; ++i)
+    ys[static_cast<std::size_t>(i)] = y_approx(i) / to_double(s.row_scale[static_cast<std::size_t>(i)]);
+  std::vector<R> Y;
+  R E;
+  if (!over_common_denominator(ys, Y, E)) return std::nullopt;
+  // Y^T b < 0, and Y^T A_j >= 0 unless j is in `zero`, column by column over the rows with Y_i != 0.
+  R acc(0);
+  for (Index i = 0; i < s.m; ++i)
+    acc = plus(acc, times(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+  if (ring::sign(acc) >= 0) return std::nullopt;
+  FarkasVector f;
+  for (Index j = 0; j < s.n; ++j) {
+    acc = 0;
+    for (Index i = 0; i < s.m; ++i)
+      if (ring::sign(Y[static_cast<std::size_t>(i)]) != 0)
+        acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + j)], Y[static_cast<std::size_t>(i)]));
+    if (ring::sign(acc) >= 0) continue;
+    if (!zero[static_cast<std::size_t>(j)]) return std::nullopt;
+    f.negative.push_back(j);
+  }
+  f.y = Vec<Q>(s.m);
+  for (Index i = 0; i < s.m; ++i)
+    f.y(i) = ring::to_field<Q>(times(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+  return f;
+}
+
+#define CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(R)                                                        \
+  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                             \
+  template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Index>&); \
+  template std::optional<Vec<Q>> rounded_point<R>(const IntegerSystem<R>&, const Vec<double>&,           \
+                                                  const std::vector<bool>&);                             \
+  template std::optional<FarkasVector> rounded_farkas<R>(const IntegerSystem<R>&, const Vec<double>&,    \
+                                                         const std::vector<bool>&);
+CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(i64)
+CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(Z)
+#undef CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE
 
 }  // namespace contactcert::exact
