@@ -3,8 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
-
-#include "exact/fraction_free.h"
+#include <utility>
 
 namespace contactcert::exact {
 
@@ -12,7 +11,8 @@ namespace {
 
 using Index = Eigen::Index;
 using i64 = std::int64_t;
-__extension__ typedef __int128 i128;
+using i128 = Int128;
+__extension__ typedef unsigned __int128 u128;
 
 /// Largest denominator tried when rounding a double to a fraction.
 constexpr i64 kMaxDenominator = i64(1) << 30;
@@ -214,36 +214,67 @@ std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& pr
 
 namespace {
 
-// The ring operations the integer checks need, for R = std::int64_t (overflow-checked, exact/fraction_free.h)
-// and R = Z.
-i64 times(i64 a, i64 b) { return ring::mul(a, b); }
+// The ring operations the integer checks need, for R = Int128 (every operation overflow-checked: throws
+// RingOverflow) and R = Z.
+i128 times(i128 a, i128 b) {
+  i128 r;
+  if (__builtin_mul_overflow(a, b, &r)) throw RingOverflow{};
+  return r;
+}
 Z times(const Z& a, const Z& b) { return a * b; }
-i64 plus(i64 a, i64 b) { return ring::add(a, b); }
+i128 plus(i128 a, i128 b) {
+  i128 r;
+  if (__builtin_add_overflow(a, b, &r)) throw RingOverflow{};
+  return r;
+}
 Z plus(const Z& a, const Z& b) { return a + b; }
-i64 minus(i64 a, i64 b) { return ring::sub(a, b); }
+i128 minus(i128 a, i128 b) {
+  i128 r;
+  if (__builtin_sub_overflow(a, b, &r)) throw RingOverflow{};
+  return r;
+}
 Z minus(const Z& a, const Z& b) { return a - b; }
 /// a / b, known to be exact (b != 0).
-i64 divide_exact(i64 a, i64 b) { return ring::checked(a / b); }
+i128 divide_exact(i128 a, i128 b) { return b == -1 ? minus(0, a) : a / b; }
 Z divide_exact(const Z& a, const Z& b) {
   Z q;
   mpz_divexact(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
   return q;
 }
-void lcm_with(i64& acc, i64 d) { acc = ring::mul(acc / std::gcd(acc, d), d); }
-void lcm_with(Z& acc, i64 d) { mpz_lcm_ui(acc.get_mpz_t(), acc.get_mpz_t(), static_cast<unsigned long>(d)); }
-void lcm_with(Z& acc, mpz_srcptr d) { mpz_lcm(acc.get_mpz_t(), acc.get_mpz_t(), d); }
-void lcm_with(i64& acc, mpz_srcptr d) {
-  i64 v;
-  if (!to_i64(d, v)) throw RingOverflow{};
-  lcm_with(acc, v);
-}
-void from_mpz(mpz_srcptr z, i64& out) {
-  if (!to_i64(z, out)) throw RingOverflow{};
-  out = ring::checked(out);
+int sign_of(i128 v) { return (v > 0) - (v < 0); }
+int sign_of(const Z& v) { return sgn(v); }
+/// z as an Int128 (throws RingOverflow if it does not fit).
+void from_mpz(mpz_srcptr z, i128& out) {
+  const int size = z->_mp_size, limbs = size < 0 ? -size : size;
+  static_assert(sizeof(mp_limb_t) == 8);
+  if (limbs > 2 || (limbs == 2 && z->_mp_d[1] >> 63 != 0)) throw RingOverflow{};
+  u128 u = 0;
+  for (int k = limbs - 1; k >= 0; --k) u = (u << 64) | z->_mp_d[k];
+  out = size < 0 ? -static_cast<i128>(u) : static_cast<i128>(u);
 }
 void from_mpz(mpz_srcptr z, Z& out) { mpz_set(out.get_mpz_t(), z); }
-double to_double(i64 v) { return static_cast<double>(v); }
+void lcm_with(i128& acc, i128 d) {
+  i128 a = acc, b = d;  // gcd of two positive numbers
+  while (b != 0) a = std::exchange(b, a % b);
+  acc = times(acc / a, d);
+}
+void lcm_with(i128& acc, mpz_srcptr d) {
+  i128 v;
+  from_mpz(d, v);
+  lcm_with(acc, v);
+}
+void lcm_with(Z& acc, i64 d) { mpz_lcm_ui(acc.get_mpz_t(), acc.get_mpz_t(), static_cast<unsigned long>(d)); }
+void lcm_with(Z& acc, mpz_srcptr d) { mpz_lcm(acc.get_mpz_t(), acc.get_mpz_t(), d); }
+double to_double(i128 v) { return static_cast<double>(v); }
 double to_double(const Z& v) { return v.get_d(); }
+Q to_q(const Z& v) { return Q(v); }
+Q to_q(i128 v) {
+  const u128 u = v < 0 ? -static_cast<u128>(v) : static_cast<u128>(v);
+  Z z = static_cast<unsigned long>(u >> 64);
+  mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), 64);
+  z += static_cast<unsigned long>(u);
+  return v < 0 ? Q(-z) : Q(z);
+}
 
 /// v rounded entry by entry to fractions over their common denominator D: v ~ out / D. False if an entry has
 /// no convergent with a denominator <= kMaxDenominator.
@@ -306,7 +337,7 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vect
   R prev(1);
   for (Index c = 0; c < k; ++c) {
     Index p = c;
-    while (p < s.m && ring::sign(at(p, c)) == 0) ++p;
+    while (p < s.m && sign_of(at(p, c)) == 0) ++p;
     if (p == s.m) return std::nullopt;  // A_S is rank deficient
     if (p != c)
       for (Index j = c; j < w; ++j) std::swap(at(p, j), at(c, j));
@@ -318,7 +349,7 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vect
     prev = at(c, c);
   }
   for (Index i = k; i < s.m; ++i)
-    if (ring::sign(at(i, k)) != 0) return std::nullopt;  // inconsistent
+    if (sign_of(at(i, k)) != 0) return std::nullopt;  // inconsistent
   // d = prev (the last pivot, a k x k minor of A_S); N_i = d x_i are integers (Cramer's rule), and
   // a_ii N_i = d b_i - sum_{j > i} a_ij N_j row by row from the bottom.
   std::vector<R> N(static_cast<std::size_t>(k));
@@ -328,8 +359,8 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vect
     N[static_cast<std::size_t>(i)] = divide_exact(acc, at(i, i));
   }
   Vec<Q> x(k);
-  const Q d = ring::to_field<Q>(prev);
-  for (Index i = 0; i < k; ++i) x(i) = ring::to_field<Q>(N[static_cast<std::size_t>(i)]) / d;
+  const Q d = to_q(prev);
+  for (Index i = 0; i < k; ++i) x(i) = to_q(N[static_cast<std::size_t>(i)]) / d;
   return x;
 }
 
@@ -344,7 +375,7 @@ std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>
   R D;
   if (!over_common_denominator(xs, X, D)) return std::nullopt;
   for (const R& v : X)
-    if (ring::sign(v) < 0) return std::nullopt;
+    if (sign_of(v) < 0) return std::nullopt;
   // A X = D b, row by row.
   for (Index i = 0; i < s.m; ++i) {
     R acc(0);
@@ -353,9 +384,9 @@ std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>
     if (acc != times(D, s.b[static_cast<std::size_t>(i)])) return std::nullopt;
   }
   Vec<Q> x = Vec<Q>::Zero(s.n);
-  const Q d = ring::to_field<Q>(D);
+  const Q d = to_q(D);
   for (std::size_t t = 0; t < support.size(); ++t)
-    if (ring::sign(X[t]) != 0) x(support[t]) = ring::to_field<Q>(X[t]) / d;
+    if (sign_of(X[t]) != 0) x(support[t]) = to_q(X[t]) / d;
   return x;
 }
 
@@ -372,20 +403,20 @@ std::optional<FarkasVector> rounded_farkas(const IntegerSystem<R>& s, const Vec<
   R acc(0);
   for (Index i = 0; i < s.m; ++i)
     acc = plus(acc, times(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
-  if (ring::sign(acc) >= 0) return std::nullopt;
+  if (sign_of(acc) >= 0) return std::nullopt;
   FarkasVector f;
   for (Index j = 0; j < s.n; ++j) {
     acc = 0;
     for (Index i = 0; i < s.m; ++i)
-      if (ring::sign(Y[static_cast<std::size_t>(i)]) != 0)
+      if (sign_of(Y[static_cast<std::size_t>(i)]) != 0)
         acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + j)], Y[static_cast<std::size_t>(i)]));
-    if (ring::sign(acc) >= 0) continue;
+    if (sign_of(acc) >= 0) continue;
     if (!zero[static_cast<std::size_t>(j)]) return std::nullopt;
     f.negative.push_back(j);
   }
   f.y = Vec<Q>(s.m);
   for (Index i = 0; i < s.m; ++i)
-    f.y(i) = ring::to_field<Q>(times(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+    f.y(i) = to_q(times(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
   return f;
 }
 
@@ -396,7 +427,7 @@ std::optional<FarkasVector> rounded_farkas(const IntegerSystem<R>& s, const Vec<
                                                   const std::vector<bool>&);                             \
   template std::optional<FarkasVector> rounded_farkas<R>(const IntegerSystem<R>&, const Vec<double>&,    \
                                                          const std::vector<bool>&);
-CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(i64)
+CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(i128)
 CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(Z)
 #undef CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE
 

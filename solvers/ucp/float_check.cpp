@@ -1,10 +1,8 @@
 #include "solvers/ucp/float_check.h"
 
 #include <cassert>
-#include <cstdint>
 #include <tuple>
 
-#include "exact/fraction_free.h"
 #include "exact/rounded_certificate.h"
 
 namespace contactcert::solvers::ucp {
@@ -14,14 +12,14 @@ namespace {
 using Index = Eigen::Index;
 
 /// A polyhedron's rows [A | b] as integers (exact::IntegerSystem), built on first use: run(check) runs
-/// check(system) in std::int64_t and, if a number does not fit, again in Z (exact::with_exact_ring).
+/// check(system) in 128-bit integers and, if a number does not fit, again in Z (exact::with_integer_ring).
 class IntegerRows {
  public:
   explicit IntegerRows(const StandardPolyhedron<Q>& P) : P_(P) {}
 
   template <class F>
   auto run(F&& check) {
-    return exact::with_exact_ring<Q>([&]<class R>() { return check(system<R>()); });
+    return exact::with_integer_ring([&]<class R>() { return check(system<R>()); });
   }
 
  private:
@@ -33,7 +31,8 @@ class IntegerRows {
   }
 
   const StandardPolyhedron<Q>& P_;
-  std::tuple<std::optional<exact::IntegerSystem<std::int64_t>>, std::optional<exact::IntegerSystem<exact::Z>>> systems_;
+  std::tuple<std::optional<exact::IntegerSystem<exact::Int128>>, std::optional<exact::IntegerSystem<exact::Z>>>
+      systems_;
 };
 
 /// Walks the float tree depth first with the fixings of each node and proves its leaves (prove_leaves).

@@ -1,6 +1,5 @@
 #include "solvers/ucp/recovery.h"
 
-#include "exact/fraction_free.h"
 #include "exact/linalg.h"
 #include "exact/rounded_certificate.h"
 
@@ -22,10 +21,11 @@ std::optional<PhysicalSolution> recover(const QuasistaticProblem& p, const Vec<Q
   Vec<Q> v(2 * nc);
   v << s.v_n, s.v_t;
   const Vec<Q> rhs = v + p.J_alpha_theta_alpha();
-  // P has full column rank in practice: its one solution in int64 (GMP on overflow), else elimination in Q.
+  // P has full column rank in practice: its one solution in 128-bit integers (GMP on overflow), else
+  // elimination in Q.
   std::vector<Index> columns(static_cast<std::size_t>(p.P.cols()));
   for (Index j = 0; j < p.P.cols(); ++j) columns[static_cast<std::size_t>(j)] = j;
-  std::optional<Vec<Q>> b = exact::with_exact_ring<Q>(
+  std::optional<Vec<Q>> b = exact::with_integer_ring(
       [&]<class R>() { return exact::unique_solution(exact::integer_system<R>(p.P, rhs), columns); });
   if (!b) b = exact::solve<Q>(p.P, rhs);
   if (!b) return std::nullopt;

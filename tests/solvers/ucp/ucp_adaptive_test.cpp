@@ -153,13 +153,13 @@ TEST(UcpAdaptive, ALeafWhoseFaceIsNotEmptyIsRepairedByAnExactSearchBelowIt) {
   EXPECT_EQ(found.result.x.dot(found.result.y), 0);
 }
 
-TEST(UcpAdaptive, IntegerChecksThatOverflowInt64RestartInGmp) {
-  // X = {x in R^3_+ : a x_0 + a x_1 = 2^62} with a = 3 2^61: the rounded point (1/3, 1/3, 0) gives
-  // a 1 + a 1 = 3 2^62 = 3 (2^62), beyond int64 on both sides; Y = {y in R^3_+ : y_2 = 1}.
+TEST(UcpAdaptive, IntegerChecksThatOverflow128BitsRestartInGmp) {
+  // X = {x in R^3_+ : a x_0 + a x_1 = 2^126} with a = 3 2^125 (fits in 128 bits): the rounded point
+  // (1/3, 1/3, 0) gives a 1 + a 1 = 3 2^126 = 3 (2^126), beyond 128 bits on both sides; Y = {y in R^3_+ : y_2 = 1}.
   UcpProblem p;
   Q a = 3, b = 1;
-  mpq_mul_2exp(a.get_mpq_t(), a.get_mpq_t(), 61);
-  mpq_mul_2exp(b.get_mpq_t(), b.get_mpq_t(), 62);
+  mpq_mul_2exp(a.get_mpq_t(), a.get_mpq_t(), 125);
+  mpq_mul_2exp(b.get_mpq_t(), b.get_mpq_t(), 126);
   p.ucp.X.A = Mat<Q>(1, 3);
   p.ucp.X.A << a, a, 0;
   p.ucp.X.b = Vec<Q>::Constant(1, b);
@@ -172,7 +172,7 @@ TEST(UcpAdaptive, IntegerChecksThatOverflowInt64RestartInGmp) {
   LpCounters count;
   const auto pair = exact_pair(p.ucp, x, y, {false, false, true}, {true, true, false}, count);
   ASSERT_TRUE(pair);
-  EXPECT_EQ(count.lps, 0);  // checked in integers (in GMP after the int64 overflow), no LP
+  EXPECT_EQ(count.lps, 0);  // checked in integers (in GMP after the 128-bit overflow), no LP
   EXPECT_EQ(pair->first(0), Q(1, 3));
   EXPECT_EQ(pair->first(1), Q(1, 3));
 }
