@@ -1,12 +1,18 @@
 // Table 1 of Pang, Trinkle, Lo in spirit, and the speed targets of the UCP solver.
 //   ucp_bench [--quick]
+//   ucp_bench --adaptive [REPEATS [FILTER]]   (only the --arith adaptive table of docs/precision.md; FILTER: the
+//                                            problems whose name contains it)
 // Prints, for twenty random problems with the paper's nc, mu range, |alpha| and |abar| (section 5 generator,
 // seeded), the pairs, LPs, best x^T y, verdict and time of the paper algorithm, the modified algorithm and the
 // complete search (verified arithmetic); then the targets: nc = 40 solvable (verified), nc = 10 jammed,
 // and LPs of the complete search against the enumerative baseline at nc = 8.
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "solvers/ucp/generate.h"
@@ -49,9 +55,73 @@ UcpReport run(const UcpProblem& p, Method m, Arith a = Arith::kVerified, std::ui
 
 double best(const UcpReport& r) { return r.best_xTy ? r.best_xTy->get_d() : (r.x ? 0.0 : -1.0); }
 
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// Median over `repeats` batches of the CPU ms of one solve_ucp call (a batch repeats the call until it has
+/// taken 20 ms, so that microsecond calls are timed over many calls).
+double median_ms(const UcpProblem& p, Arith a, int repeats, UcpReport& last) {
+  std::vector<double> ms;
+  for (int r = 0; r < repeats; ++r) {
+    long calls = 0;
+    const double start = cpu_seconds();
+    double now = start;
+    do {
+      last = run(p, Method::kComplete, a);
+      ++calls;
+      now = cpu_seconds();
+    } while (now - start < 0.02);
+    ms.push_back(1e3 * (now - start) / static_cast<double>(calls));
+  }
+  std::nth_element(ms.begin(), ms.begin() + static_cast<long>(ms.size() / 2), ms.end());
+  return ms[ms.size() / 2];
+}
+
+/// The --arith adaptive table of docs/precision.md: float, verified, adaptive and adaptive without the
+/// physical recovery (the same UCP as a generic problem) on the paper's data sets and the large jammed
+/// problems of `contactcert bench` (family large, nc 40: the section 5 generator, mt19937_64(seed)).
+void adaptive_table(int repeats, const std::string& filter) {
+  struct Case {
+    std::string name;
+    UcpProblem p;
+  };
+  std::vector<Case> cases;
+  for (int k = 1; k <= 4; ++k)
+    cases.push_back(
+        {"Data Set " + std::to_string(k),
+         load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json")});
+  for (std::uint64_t s = 1; s <= 5; ++s) {
+    std::mt19937_64 rng(s);
+    RandomProblemOptions o;
+    o.nc = 40;
+    cases.push_back({"large nc 40 seed " + std::to_string(s), generate_random_problem(o, rng)});
+  }
+  std::printf("CPU ms per solve_ucp call, median of %d batches\n", repeats);
+  std::printf("%-22s %-9s %9s %9s %9s %12s %-9s %8s %12s\n", "problem", "verdict", "float", "verified", "adaptive",
+              "adapt-nophys", "decided", "repaired", "adapt/float");
+  for (const Case& c : cases) {
+    if (c.name.find(filter) == std::string::npos) continue;
+    UcpProblem bare = c.p;
+    bare.quasistatic.reset();
+    UcpReport f, v, a, an;
+    const double tf = median_ms(c.p, Arith::kFloat, repeats, f), tv = median_ms(c.p, Arith::kVerified, repeats, v),
+                 ta = median_ms(c.p, Arith::kAdaptive, repeats, a), tn = median_ms(bare, Arith::kAdaptive, repeats, an);
+    std::printf("%-22s %-9s %9.4f %9.4f %9.4f %12.4f %-9s %8ld %12.1f%s\n", c.name.c_str(), status_name(a.status), tf,
+                tv, ta, tn, a.decided_by.c_str(), a.repaired_leaves, ta / tf,
+                a.status == v.status ? "" : "  VERDICT DIFFERS FROM VERIFIED");
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::strcmp(argv[1], "--adaptive") == 0) {
+    adaptive_table(argc > 2 ? std::atoi(argv[2]) : 7, argc > 3 ? argv[3] : "");
+    return 0;
+  }
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   std::printf("Table 1 (random problems, section 5 generator, seed 1000 + problem number; verified arithmetic)\n");
   std::printf("%3s %3s %7s %5s %5s | %-26s | %-26s | %-34s\n", "No", "nc", "mu<", "|a|", "|ab|",

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 
 namespace contactcert::exact {
 
@@ -10,7 +11,8 @@ namespace {
 
 using Index = Eigen::Index;
 using i64 = std::int64_t;
-__extension__ typedef __int128 i128;
+using i128 = Int128;
+__extension__ typedef unsigned __int128 u128;
 
 /// Largest denominator tried when rounding a double to a fraction.
 constexpr i64 kMaxDenominator = i64(1) << 30;
@@ -138,7 +140,8 @@ std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem) {
     out.b[static_cast<size_t>(i)] = row[static_cast<size_t>(n)];
   }
   if (problem.c.size() > 0 &&
-      !integer_scale(n, [&](Index j) -> const Q& { return problem.c(j); }, out.c.data(), out.objective_scale))
+      !integer_scale(
+          n, [&](Index j) -> const Q& { return problem.c(j); }, out.c.data(), out.objective_scale))
     return std::nullopt;
   return out;
 }
@@ -209,32 +212,223 @@ std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& pr
   return cert;
 }
 
-std::optional<Vec<Q>> round_and_check_point(const LpProblem<Q>& problem, const Vec<double>& x_approx,
-                                            const std::vector<bool>& zero) {
-  const Index m = problem.rows(), n = problem.cols();
-  if (x_approx.size() != n || zero.size() != static_cast<size_t>(n)) return std::nullopt;
-  const std::optional<IntegerLp> ilp = integer_lp(problem);
-  if (!ilp) return std::nullopt;
-  // x ~ X / D on the columns not fixed to zero.
-  std::vector<Index> support;
-  std::vector<double> xs;
-  for (Index j = 0; j < n; ++j)
-    if (!zero[static_cast<size_t>(j)]) support.push_back(j), xs.push_back(x_approx(j));
-  std::vector<i64> X;
-  i64 D;
-  if (!round_vector(xs, X, D)) return std::nullopt;
-  for (size_t t = 0; t < support.size(); ++t)
-    if (X[t] < 0 && !problem.free(support[t])) return std::nullopt;
-  // A X = D b, row by row in the integer rows.
-  for (Index i = 0; i < m; ++i) {
-    i128 acc = 0;
-    for (size_t t = 0; t < support.size(); ++t)
-      if (!fma128(acc, ilp->A[static_cast<size_t>(i * n + support[t])], X[t])) return std::nullopt;
-    if (acc != static_cast<i128>(D) * ilp->b[static_cast<size_t>(i)]) return std::nullopt;
+namespace {
+
+// The ring operations the integer checks need, for R = Int128 (every operation overflow-checked: throws
+// RingOverflow) and R = Z.
+i128 times(i128 a, i128 b) {
+  i128 r;
+  if (__builtin_mul_overflow(a, b, &r)) throw RingOverflow{};
+  return r;
+}
+Z times(const Z& a, const Z& b) { return a * b; }
+i128 plus(i128 a, i128 b) {
+  i128 r;
+  if (__builtin_add_overflow(a, b, &r)) throw RingOverflow{};
+  return r;
+}
+Z plus(const Z& a, const Z& b) { return a + b; }
+i128 minus(i128 a, i128 b) {
+  i128 r;
+  if (__builtin_sub_overflow(a, b, &r)) throw RingOverflow{};
+  return r;
+}
+Z minus(const Z& a, const Z& b) { return a - b; }
+/// a / b, known to be exact (b != 0).
+i128 divide_exact(i128 a, i128 b) { return b == -1 ? minus(0, a) : a / b; }
+Z divide_exact(const Z& a, const Z& b) {
+  Z q;
+  mpz_divexact(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  return q;
+}
+int sign_of(i128 v) { return (v > 0) - (v < 0); }
+int sign_of(const Z& v) { return sgn(v); }
+/// z as an Int128 (throws RingOverflow if it does not fit).
+void from_mpz(mpz_srcptr z, i128& out) {
+  const int size = z->_mp_size, limbs = size < 0 ? -size : size;
+  static_assert(sizeof(mp_limb_t) == 8);
+  if (limbs > 2 || (limbs == 2 && z->_mp_d[1] >> 63 != 0)) throw RingOverflow{};
+  u128 u = 0;
+  for (int k = limbs - 1; k >= 0; --k) u = (u << 64) | z->_mp_d[k];
+  out = size < 0 ? -static_cast<i128>(u) : static_cast<i128>(u);
+}
+void from_mpz(mpz_srcptr z, Z& out) { mpz_set(out.get_mpz_t(), z); }
+void lcm_with(i128& acc, i128 d) {
+  i128 a = acc, b = d;  // gcd of two positive numbers
+  while (b != 0) a = std::exchange(b, a % b);
+  acc = times(acc / a, d);
+}
+void lcm_with(i128& acc, mpz_srcptr d) {
+  i128 v;
+  from_mpz(d, v);
+  lcm_with(acc, v);
+}
+void lcm_with(Z& acc, i64 d) { mpz_lcm_ui(acc.get_mpz_t(), acc.get_mpz_t(), static_cast<unsigned long>(d)); }
+void lcm_with(Z& acc, mpz_srcptr d) { mpz_lcm(acc.get_mpz_t(), acc.get_mpz_t(), d); }
+double to_double(i128 v) { return static_cast<double>(v); }
+double to_double(const Z& v) { return v.get_d(); }
+Q to_q(const Z& v) { return Q(v); }
+Q to_q(i128 v) {
+  const u128 u = v < 0 ? -static_cast<u128>(v) : static_cast<u128>(v);
+  Z z = static_cast<unsigned long>(u >> 64);
+  mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), 64);
+  z += static_cast<unsigned long>(u);
+  return v < 0 ? Q(-z) : Q(z);
+}
+
+/// v rounded entry by entry to fractions over their common denominator D: v ~ out / D. False if an entry has
+/// no convergent with a denominator <= kMaxDenominator.
+template <class R>
+bool over_common_denominator(const std::vector<double>& v, std::vector<R>& out, R& D) {
+  std::vector<Fraction> f;
+  f.reserve(v.size());
+  D = 1;
+  for (double x : v) {
+    const std::optional<Fraction> r = round_to_fraction(x);
+    if (!r) return false;
+    lcm_with(D, r->den);
+    f.push_back(*r);
   }
-  Vec<Q> x = Vec<Q>::Zero(n);
-  for (size_t t = 0; t < support.size(); ++t) x(support[t]) = make_q(X[t], D);
+  out.resize(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) out[i] = times(R(f[i].num), R(D / R(f[i].den)));
+  return true;
+}
+
+}  // namespace
+
+template <class R>
+IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b) {
+  IntegerSystem<R> s;
+  s.m = A.rows(), s.n = A.cols();
+  s.A.resize(static_cast<std::size_t>(s.m * s.n));
+  s.b.resize(static_cast<std::size_t>(s.m));
+  s.row_scale.assign(static_cast<std::size_t>(s.m), R(1));
+  R den;
+  for (Index i = 0; i < s.m; ++i) {
+    auto entry = [&](Index j) -> const Q& { return j < s.n ? A(i, j) : b(i); };
+    R& L = s.row_scale[static_cast<std::size_t>(i)];
+    for (Index j = 0; j <= s.n; ++j)
+      if (!is_one(mpq_denref(entry(j).get_mpq_t()))) lcm_with(L, mpq_denref(entry(j).get_mpq_t()));
+    for (Index j = 0; j <= s.n; ++j) {
+      R& out = j < s.n ? s.A[static_cast<std::size_t>(i * s.n + j)] : s.b[static_cast<std::size_t>(i)];
+      from_mpz(mpq_numref(entry(j).get_mpq_t()), out);
+      if (L == 1) continue;
+      from_mpz(mpq_denref(entry(j).get_mpq_t()), den);
+      out = times(out, R(L / den));
+    }
+  }
+  return s;
+}
+
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Index>& columns) {
+  const auto k = static_cast<Index>(columns.size()), w = k + 1;
+  if (k > s.m) return std::nullopt;
+  // M = [A_S | b], row-major m x (k + 1).
+  std::vector<R> M(static_cast<std::size_t>(s.m * w));
+  auto at = [&](Index i, Index j) -> R& { return M[static_cast<std::size_t>(i * w + j)]; };
+  for (Index i = 0; i < s.m; ++i) {
+    for (Index c = 0; c < k; ++c)
+      at(i, c) = s.A[static_cast<std::size_t>(i * s.n + columns[static_cast<std::size_t>(c)])];
+    at(i, k) = s.b[static_cast<std::size_t>(i)];
+  }
+  // Bareiss: after step c every entry below row c is a minor of M, so the division by the previous pivot is
+  // exact.
+  R prev(1);
+  for (Index c = 0; c < k; ++c) {
+    Index p = c;
+    while (p < s.m && sign_of(at(p, c)) == 0) ++p;
+    if (p == s.m) return std::nullopt;  // A_S is rank deficient
+    if (p != c)
+      for (Index j = c; j < w; ++j) std::swap(at(p, j), at(c, j));
+    for (Index i = c + 1; i < s.m; ++i) {
+      for (Index j = c + 1; j < w; ++j)
+        at(i, j) = divide_exact(minus(times(at(c, c), at(i, j)), times(at(i, c), at(c, j))), prev);
+      at(i, c) = 0;
+    }
+    prev = at(c, c);
+  }
+  for (Index i = k; i < s.m; ++i)
+    if (sign_of(at(i, k)) != 0) return std::nullopt;  // inconsistent
+  // d = prev (the last pivot, a k x k minor of A_S); N_i = d x_i are integers (Cramer's rule), and
+  // a_ii N_i = d b_i - sum_{j > i} a_ij N_j row by row from the bottom.
+  std::vector<R> N(static_cast<std::size_t>(k));
+  for (Index i = k - 1; i >= 0; --i) {
+    R acc = times(prev, at(i, k));
+    for (Index j = i + 1; j < k; ++j) acc = minus(acc, times(at(i, j), N[static_cast<std::size_t>(j)]));
+    N[static_cast<std::size_t>(i)] = divide_exact(acc, at(i, i));
+  }
+  Vec<Q> x(k);
+  const Q d = to_q(prev);
+  for (Index i = 0; i < k; ++i) x(i) = to_q(N[static_cast<std::size_t>(i)]) / d;
   return x;
 }
+
+template <class R>
+std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>& x_approx,
+                                    const std::vector<bool>& zero) {
+  std::vector<Index> support;
+  std::vector<double> xs;
+  for (Index j = 0; j < s.n; ++j)
+    if (!zero[static_cast<std::size_t>(j)]) support.push_back(j), xs.push_back(x_approx(j));
+  std::vector<R> X;
+  R D;
+  if (!over_common_denominator(xs, X, D)) return std::nullopt;
+  for (const R& v : X)
+    if (sign_of(v) < 0) return std::nullopt;
+  // A X = D b, row by row.
+  for (Index i = 0; i < s.m; ++i) {
+    R acc(0);
+    for (std::size_t t = 0; t < support.size(); ++t)
+      acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + support[t])], X[t]));
+    if (acc != times(D, s.b[static_cast<std::size_t>(i)])) return std::nullopt;
+  }
+  Vec<Q> x = Vec<Q>::Zero(s.n);
+  const Q d = to_q(D);
+  for (std::size_t t = 0; t < support.size(); ++t)
+    if (sign_of(X[t]) != 0) x(support[t]) = to_q(X[t]) / d;
+  return x;
+}
+
+template <class R>
+std::optional<FarkasVector> rounded_farkas(const IntegerSystem<R>& s, const Vec<double>& y_approx,
+                                           const std::vector<bool>& zero) {
+  std::vector<double> ys(static_cast<std::size_t>(s.m));
+  for (Index i = 0; i < s.m; ++i)
+    ys[static_cast<std::size_t>(i)] = y_approx(i) / to_double(s.row_scale[static_cast<std::size_t>(i)]);
+  std::vector<R> Y;
+  R E;
+  if (!over_common_denominator(ys, Y, E)) return std::nullopt;
+  // Y^T b < 0, and Y^T A_j >= 0 unless j is in `zero`, column by column over the rows with Y_i != 0.
+  R acc(0);
+  for (Index i = 0; i < s.m; ++i)
+    acc = plus(acc, times(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+  if (sign_of(acc) >= 0) return std::nullopt;
+  FarkasVector f;
+  for (Index j = 0; j < s.n; ++j) {
+    acc = 0;
+    for (Index i = 0; i < s.m; ++i)
+      if (sign_of(Y[static_cast<std::size_t>(i)]) != 0)
+        acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + j)], Y[static_cast<std::size_t>(i)]));
+    if (sign_of(acc) >= 0) continue;
+    if (!zero[static_cast<std::size_t>(j)]) return std::nullopt;
+    f.negative.push_back(j);
+  }
+  f.y = Vec<Q>(s.m);
+  for (Index i = 0; i < s.m; ++i)
+    f.y(i) = to_q(times(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+  return f;
+}
+
+#define CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(R)                                                        \
+  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                             \
+  template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Index>&); \
+  template std::optional<Vec<Q>> rounded_point<R>(const IntegerSystem<R>&, const Vec<double>&,           \
+                                                  const std::vector<bool>&);                             \
+  template std::optional<FarkasVector> rounded_farkas<R>(const IntegerSystem<R>&, const Vec<double>&,    \
+                                                         const std::vector<bool>&);
+CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(i128)
+CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(Z)
+#undef CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE
 
 }  // namespace contactcert::exact

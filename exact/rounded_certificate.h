@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "exact/fraction_free.h"
 #include "exact/lp_problem.h"
 
 namespace contactcert::exact {
@@ -56,18 +57,76 @@ Q make_q(std::int64_t num, std::int64_t den);
 /// The integer-scaled LP, or nullopt if a scaled entry does not fit in 64 bits.
 std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem);
 
-/// A point of {x : A x = b, x >= 0 on non-free columns, x_j = 0 where zero[j]} (problem.c unused) near
-/// x_approx: its entries rounded to fractions and checked exactly in 64/128-bit integers; nullopt if the
-/// rounding, an integer overflow or a check fails.
-std::optional<Vec<Q>> round_and_check_point(const LpProblem<Q>& problem, const Vec<double>& x_approx,
-                                            const std::vector<bool>& zero);
+/// The fixed-width ring of the integer checks below: exact, every operation overflow-checked (throws
+/// RingOverflow). 128 bits, not 64: the paper's data overflow 64 bits in the elimination of unique_solution.
+__extension__ typedef __int128 Int128;
+
+/// Runs f.template operator()<R>() with R = Int128 and, on RingOverflow, again with R = Z (unbounded): the
+/// answer is exact either way, the fixed width is only a speed-up (as with_exact_ring, one width up).
+template <class F>
+auto with_integer_ring(F&& f) {
+  try {
+    return f.template operator()<Int128>();
+  } catch (const RingOverflow&) {
+    return f.template operator()<Z>();
+  }
+}
+
+/// The rows of A x = b, each row of [A | b] multiplied by the lcm of its denominators (row_scale), as integers
+/// of the ring R (Int128 or Z, see with_integer_ring).
+template <class R>
+struct IntegerSystem {
+  Eigen::Index m = 0, n = 0;
+  std::vector<R> A, b, row_scale;  ///< A row-major, m x n
+};
+
+template <class R>
+IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b);
+
+/// The unique solution x_S of A_S x_S = b (A_S: the given columns of A, in order), by fraction-free (Bareiss)
+/// elimination in R and fraction-free back substitution: x_S = N / d with d a minor of A_S. nullopt if A_S
+/// does not have full column rank or the system is inconsistent.
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Eigen::Index>& columns);
+
+/// A point of the face {x >= 0 : A x = b, x_j = 0 where zero[j]} near x_approx: the entries off `zero`
+/// rounded to fractions (continued-fraction convergents, denominators <= 2^30) over their common denominator
+/// D, then A X = D b and X >= 0 checked in R. nullopt if a rounding or the check fails.
+template <class R>
+std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>& x_approx,
+                                    const std::vector<bool>& zero);
+
+/// A Farkas vector y for the rows of A x = b, with the columns j where y^T A_j < 0.
+struct FarkasVector {
+  Vec<Q> y;
+  std::vector<Eigen::Index> negative;
+};
+
+/// A Farkas vector y proving that face empty, near y_approx (a float one for the rows of A x = b):
+/// y^T A_j >= 0 for every j off `zero` and y^T b < 0 (then no x >= 0 of the face has A x = b). The entries
+/// y_approx_i / row_scale_i are rounded to fractions Y_i / E and checked against the integer rows; the
+/// result is y_i = row_scale_i Y_i, a positive multiple of the rounded vector, with its negative columns
+/// (all in `zero`). nullopt if a rounding or the check fails.
+template <class R>
+std::optional<FarkasVector> rounded_farkas(const IntegerSystem<R>& s, const Vec<double>& y_approx,
+                                           const std::vector<bool>& zero);
+
+#define CONTACTCERT_INTEGER_SYSTEM_EXTERN(R)                                                                           \
+  extern template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                                    \
+  extern template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Eigen::Index>&); \
+  extern template std::optional<Vec<Q>> rounded_point<R>(const IntegerSystem<R>&, const Vec<double>&,                  \
+                                                         const std::vector<bool>&);                                    \
+  extern template std::optional<FarkasVector> rounded_farkas<R>(const IntegerSystem<R>&, const Vec<double>&,           \
+                                                                const std::vector<bool>&);
+CONTACTCERT_INTEGER_SYSTEM_EXTERN(Int128)
+CONTACTCERT_INTEGER_SYSTEM_EXTERN(Z)
+#undef CONTACTCERT_INTEGER_SYSTEM_EXTERN
 
 /// Rounds x_approx (on the basis columns; zero elsewhere) and y_approx to nearby rationals and returns them if
 /// they form an exact optimality certificate of `problem`; nullopt if rounding fails, an integer overflows or
 /// a check fails. x_approx and y_approx are a float optimum of the scaled LP `ilp` (its duals, not problem's).
 std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& problem, const IntegerLp& ilp,
                                                           const std::vector<Eigen::Index>& basis,
-                                                          const Vec<double>& x_approx,
-                                                          const Vec<double>& y_approx);
+                                                          const Vec<double>& x_approx, const Vec<double>& y_approx);
 
 }  // namespace contactcert::exact

@@ -1,6 +1,7 @@
 #include "solvers/ucp/float_check.h"
 
 #include <cassert>
+#include <tuple>
 
 #include "exact/rounded_certificate.h"
 
@@ -10,61 +11,109 @@ namespace {
 
 using Index = Eigen::Index;
 
-/// A Farkas vector already proven exactly, with the columns where farkas^T A_j < 0 (they must be fixed).
-struct Proven {
-  Vec<Q> farkas;
-  std::vector<Index> negative;
+/// A polyhedron's rows [A | b] as integers (exact::IntegerSystem), built on first use: run(check) runs
+/// check(system) in 128-bit integers and, if a number does not fit, again in Z (exact::with_integer_ring).
+class IntegerRows {
+ public:
+  explicit IntegerRows(const StandardPolyhedron<Q>& P) : P_(P) {}
+
+  template <class F>
+  auto run(F&& check) {
+    return exact::with_integer_ring([&]<class R>() { return check(system<R>()); });
+  }
+
+ private:
+  template <class R>
+  const exact::IntegerSystem<R>& system() {
+    std::optional<exact::IntegerSystem<R>>& s = std::get<std::optional<exact::IntegerSystem<R>>>(systems_);
+    if (!s) s = exact::integer_system<R>(P_.A, P_.b);
+    return *s;
+  }
+
+  const StandardPolyhedron<Q>& P_;
+  std::tuple<std::optional<exact::IntegerSystem<exact::Int128>>, std::optional<exact::IntegerSystem<exact::Z>>>
+      systems_;
 };
 
+/// Walks the float tree depth first with the fixings of each node and proves its leaves (prove_leaves).
 class LeafProver {
  public:
-  LeafProver(const UcpInstance<Q>& ucp, std::vector<SearchNode<Q>>& tree, LpCounters& count)
-      : ucp_(ucp), tree_(tree), count_(count) {}
+  LeafProver(const UcpInstance<Q>& ucp, FloatTree& tree, const std::optional<SearchOptions>& repair, ProvenTree& out)
+      : ucp_(ucp), farkas_(tree.farkas), repair_(repair), out_(out), rows_{IntegerRows(ucp.X), IntegerRows(ucp.Y)} {
+    out_.result.tree = std::move(tree.nodes);
+  }
 
+  /// Proves the subtree of node `id`, whose fixings are (zx, zy); false stops the walk (out.result.status
+  /// then says why).
   bool prove(long id, std::vector<bool>& zx, std::vector<bool>& zy) {
-    SearchNode<Q>& node = tree_[static_cast<std::size_t>(id)];
+    const auto k = static_cast<std::size_t>(id);
+    const SearchNode<Q> node = out_.result.tree[k];  // a copy: a repair appends to the tree
     if (node.is_leaf()) {
-      const bool x_side = node.side == Side::kX;
-      return prove_leaf(node, x_side ? ucp_.X : ucp_.Y, x_side ? zx : zy, proven_[x_side ? 0 : 1]);
+      const int s = node.side == Side::kX ? 0 : 1;
+      if (std::optional<Vec<Q>> f = leaf_farkas(s, k, s == 0 ? zx : zy)) {
+        out_.result.tree[k].farkas = std::move(*f);
+        return true;
+      }
+      if (!repair_) {
+        out_.result.status = UcpStatus::kUnknown;
+        return false;
+      }
+      ++out_.repaired_leaves;
+      out_.result.status = search_subtree(ucp_, *repair_, out_.result, id, zx, zy);
+      return out_.result.status == UcpStatus::kJammed;
     }
     const auto b = static_cast<std::size_t>(node.branch);
-    const long cx = node.child_x_zero, cy = node.child_y_zero;
     zx[b] = true;
-    const bool ok = prove(cx, zx, zy);
+    const bool ok = prove(node.child_x_zero, zx, zy);
     zx[b] = false;
     if (!ok) return false;
     zy[b] = true;
-    const bool ok_y = prove(cy, zx, zy);
+    const bool ok_y = prove(node.child_y_zero, zx, zy);
     zy[b] = false;
     return ok_y;
   }
 
  private:
-  bool prove_leaf(SearchNode<Q>& node, const StandardPolyhedron<Q>& P, const std::vector<bool>& zero,
-                  std::vector<Proven>& proven) {
-    for (const Proven& p : proven) {
+  /// A Farkas vector already proven exactly, with the columns where farkas^T A_j < 0 (they must be fixed).
+  struct Proven {
+    Vec<Q> farkas;
+    std::vector<Index> negative;
+  };
+
+  /// An exact Farkas vector for the face of side s (0: X, 1: Y) with the fixings `zero`, or nullopt if the
+  /// face is not empty.
+  std::optional<Vec<Q>> leaf_farkas(int s, std::size_t k, const std::vector<bool>& zero) {
+    for (const Proven& p : proven_[s]) {
       bool covers = true;
       for (Index j : p.negative) covers = covers && zero[static_cast<std::size_t>(j)];
-      if (covers) {
-        node.farkas = p.farkas;
-        return true;
+      if (covers) return p.farkas;
+    }
+    const StandardPolyhedron<Q>& P = s == 0 ? ucp_.X : ucp_.Y;
+    const Vec<double>& approx = farkas_[k];
+    if (approx.size() == P.A.rows()) {
+      std::optional<exact::FarkasVector> f =
+          rows_[s].run([&](const auto& system) { return exact::rounded_farkas(system, approx, zero); });
+      if (f) {
+        proven_[s].push_back({f->y, std::move(f->negative)});
+        return std::move(f->y);
       }
     }
     const FaceLpResult<Q> r =
-        minimize_on_face(make_face(P, zero), Vec<Q>(Vec<Q>::Zero(P.A.cols())), Arith::kVerified, count_);
-    if (r.status != FaceLpStatus::kEmpty) return false;
+        minimize_on_face(make_face(P, zero), Vec<Q>(Vec<Q>::Zero(P.A.cols())), Arith::kVerified, out_.result.counters);
+    if (r.status != FaceLpStatus::kEmpty) return std::nullopt;
     Proven p{r.farkas, {}};
     const Vec<Q> g = P.A.transpose() * r.farkas;
     for (Index j = 0; j < g.size(); ++j)
       if (sgn(g(j)) < 0) p.negative.push_back(j);
-    node.farkas = r.farkas;
-    proven.push_back(std::move(p));
-    return true;
+    proven_[s].push_back(std::move(p));
+    return r.farkas;
   }
 
   const UcpInstance<Q>& ucp_;
-  std::vector<SearchNode<Q>>& tree_;
-  LpCounters& count_;
+  const std::vector<Vec<double>>& farkas_;
+  const std::optional<SearchOptions>& repair_;
+  ProvenTree& out_;
+  IntegerRows rows_[2];
   std::vector<Proven> proven_[2];
 };
 
@@ -76,7 +125,24 @@ std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, c
   for (std::size_t i = 0; i < x_zero.size(); ++i) assert(x_zero[i] || y_zero[i]);
   const auto point = [&](const StandardPolyhedron<Q>& P, const Vec<double>& approx,
                          const std::vector<bool>& zero) -> std::optional<Vec<Q>> {
-    if (std::optional<Vec<Q>> x = exact::round_and_check_point({P.A, P.b, {}, {}}, approx, zero)) return x;
+    IntegerRows rows(P);
+    // A vertex (the search's points are): its support columns are independent, so A_S x_S = b has one solution.
+    std::vector<Index> support;
+    for (Index j = 0; j < ucp.n(); ++j)
+      if (!zero[static_cast<std::size_t>(j)]) support.push_back(j);
+    if (std::optional<Vec<Q>> xs =
+            rows.run([&](const auto& system) { return exact::unique_solution(system, support); })) {
+      Vec<Q> x = Vec<Q>::Zero(ucp.n());
+      bool nonnegative = true;
+      for (std::size_t t = 0; t < support.size(); ++t) {
+        nonnegative = nonnegative && sgn((*xs)(static_cast<Index>(t))) >= 0;
+        x(support[t]) = (*xs)(static_cast<Index>(t));
+      }
+      if (nonnegative) return x;
+    }
+    if (std::optional<Vec<Q>> x =
+            rows.run([&](const auto& system) { return exact::rounded_point(system, approx, zero); }))
+      return x;
     const FaceLpResult<Q> r =
         minimize_on_face(make_face(P, zero), Vec<Q>(Vec<Q>::Zero(ucp.n())), Arith::kVerified, count);
     if (r.status != FaceLpStatus::kOptimal) return std::nullopt;
@@ -89,10 +155,15 @@ std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, c
   return std::make_pair(std::move(*x), std::move(*y));
 }
 
-bool prove_leaves(const UcpInstance<Q>& ucp, std::vector<SearchNode<Q>>& tree, LpCounters& count) {
-  if (tree.empty()) return false;
+ProvenTree prove_leaves(const UcpInstance<Q>& ucp, FloatTree tree, const std::optional<SearchOptions>& repair) {
+  ProvenTree out;
+  if (tree.nodes.empty()) return out;
   std::vector<bool> zx(static_cast<std::size_t>(ucp.n()), false), zy = zx;
-  return LeafProver(ucp, tree, count).prove(0, zx, zy);
+  out.result.status = UcpStatus::kJammed;
+  LeafProver(ucp, tree, repair, out).prove(0, zx, zy);
+  if (out.result.status != UcpStatus::kJammed) out.result.tree.clear();
+  out.result.nodes = static_cast<long>(out.result.tree.size());
+  return out;
 }
 
 }  // namespace contactcert::solvers::ucp

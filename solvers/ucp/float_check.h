@@ -1,7 +1,7 @@
 // Exact checks of UCP verdicts found in floating point (the rungs of --arith adaptive below exact). A float
 // complementary pair is trusted only through its zero pattern and a float search tree only through its
-// shape: the numbers that prove the verdict are recomputed in exact arithmetic, so a verdict that passes
-// is the exact one (SPEC section 7).
+// shape: the numbers that prove the verdict are recomputed or checked in exact arithmetic, so a verdict that
+// passes is the exact one (SPEC section 7).
 #pragma once
 
 #include <optional>
@@ -14,16 +14,35 @@ namespace contactcert::solvers::ucp {
 
 /// An exact complementary pair with the zero pattern of a float one (x_approx, y_approx): x in X with x_i = 0
 /// where x_zero[i], y in Y with y_i = 0 where y_zero[i]. Every index must be in one pattern (then x^T y = 0).
-/// Each side is first the float point rounded to fractions and checked in integers, else an exact face LP.
-/// nullopt if one of the two faces is empty in exact arithmetic.
+/// Each side is first the exact solution on the float point's support if it is unique and >= 0 (a vertex:
+/// exact::unique_solution), else the float point rounded to fractions and checked (exact::rounded_point), both
+/// in 128-bit integers with a restart in GMP on overflow, else an exact face LP. nullopt if one of the two faces is empty
+/// in exact arithmetic.
 std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, const Vec<double>& x_approx,
                                                     const Vec<double>& y_approx, const std::vector<bool>& x_zero,
                                                     const std::vector<bool>& y_zero, LpCounters& count);
 
-/// Turns the shape of a float search tree (branches, children, the side of each leaf) into an exact proof:
-/// every leaf gets an exact Farkas vector for the face its path fixes on its side, an earlier leaf's vector
-/// if it covers the fixings (as the search's learning does), else that of an exact face LP. false if some
-/// leaf's face is not empty in exact arithmetic.
-bool prove_leaves(const UcpInstance<Q>& ucp, std::vector<SearchNode<Q>>& tree, LpCounters& count);
+/// The search tree of a float "jammed" verdict: its shape (branches, children, the side of each leaf; no
+/// Farkas vectors) and, per node, the float Farkas vector of a leaf (empty where there is none).
+struct FloatTree {
+  std::vector<SearchNode<Q>> nodes;
+  std::vector<Vec<double>> farkas;
+};
+
+/// The outcome of prove_leaves.
+struct ProvenTree {
+  /// kJammed: result.tree is an exact proof; kSolvable: a repaired subtree holds the complementary pair
+  /// result.x, result.y; kUnknown: a leaf's face is not empty and no repair was asked for, or the repair ran
+  /// out of budget.
+  SearchResult<Q> result;
+  long repaired_leaves = 0;  ///< leaves whose face was not empty, searched exactly below
+};
+
+/// Turns a float search tree into an exact proof: every leaf gets an exact Farkas vector for the face its
+/// path fixes on its side: an earlier leaf's vector if it covers the fixings (as the search's learning does),
+/// else the leaf's float vector rounded to fractions and checked in integers (exact::rounded_farkas), else
+/// that of an exact face LP. A leaf whose face is not empty in exact arithmetic is repaired when `repair`
+/// is given: the exact search continues below it with those options (search_subtree), and only there.
+ProvenTree prove_leaves(const UcpInstance<Q>& ucp, FloatTree tree, const std::optional<SearchOptions>& repair);
 
 }  // namespace contactcert::solvers::ucp

@@ -1,6 +1,7 @@
 #include "solvers/ucp/recovery.h"
 
 #include "exact/linalg.h"
+#include "exact/rounded_certificate.h"
 
 namespace contactcert::solvers::ucp {
 
@@ -19,7 +20,14 @@ std::optional<PhysicalSolution> recover(const QuasistaticProblem& p, const Vec<Q
   // (4), (5): [v_n; v_t] + J_alpha theta_alpha = W^T q_dot - J_abar theta_abar = P [q_dot; -theta_abar].
   Vec<Q> v(2 * nc);
   v << s.v_n, s.v_t;
-  const auto b = exact::solve<Q>(p.P, Vec<Q>(v + p.J_alpha_theta_alpha()));
+  const Vec<Q> rhs = v + p.J_alpha_theta_alpha();
+  // P has full column rank in practice: its one solution in 128-bit integers (GMP on overflow), else
+  // elimination in Q.
+  std::vector<Index> columns(static_cast<std::size_t>(p.P.cols()));
+  for (Index j = 0; j < p.P.cols(); ++j) columns[static_cast<std::size_t>(j)] = j;
+  std::optional<Vec<Q>> b = exact::with_integer_ring(
+      [&]<class R>() { return exact::unique_solution(exact::integer_system<R>(p.P, rhs), columns); });
+  if (!b) b = exact::solve<Q>(p.P, rhs);
   if (!b) return std::nullopt;
   s.q_dot = b->segment(0, nq);
   s.theta_dot = p.theta_dot;

@@ -167,6 +167,19 @@ SearchResult<T> complete_search(const UcpInstance<T>& ucp, const SearchOptions& 
   return out;
 }
 
+template <class T>
+UcpStatus search_subtree(const UcpInstance<T>& ucp, const SearchOptions& opts, SearchResult<T>& out, long id,
+                         std::vector<bool>& zx, std::vector<bool>& zy) {
+  Search<T> search(ucp, opts, out);
+  try {
+    return search.visit(id, zx, zy, std::nullopt, std::nullopt) ? UcpStatus::kSolvable : UcpStatus::kJammed;
+  } catch (const BudgetExhausted&) {
+    return UcpStatus::kUnknown;
+  }
+}
+
+template UcpStatus search_subtree<Q>(const UcpInstance<Q>&, const SearchOptions&, SearchResult<Q>&, long,
+                                     std::vector<bool>&, std::vector<bool>&);
 template SearchResult<double> complete_search<double>(const UcpInstance<double>&, const SearchOptions&,
                                                       std::mt19937_64&);
 template SearchResult<Q> complete_search<Q>(const UcpInstance<Q>&, const SearchOptions&, std::mt19937_64&);

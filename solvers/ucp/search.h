@@ -36,7 +36,7 @@ struct SearchOptions {
   long max_nodes = 200000;     ///< node budget: the search ends `unknown` when it runs out
   bool bilinear_first = true;  ///< run the bilinear algorithm on X x Y before branching (SPEC default)
   BilinearOptions heuristic{Step3Rule::kModified, 20, 2000, 100000, Arith::kVerified, {}};
-  int node_rounds = 3;  ///< Step-1 rounds of the heuristic at each node
+  int node_rounds = 3;       ///< Step-1 rounds of the heuristic at each node
   exact::Deadline deadline;  ///< time budget (also passed to the heuristic): the search ends `unknown`
   std::function<void(long nodes, long lps)> progress;  ///< called at every new node (rate-limit in the callee)
 };
@@ -59,6 +59,16 @@ struct SearchResult {
 template <class T>
 SearchResult<T> complete_search(const UcpInstance<T>& ucp, const SearchOptions& opts, std::mt19937_64& rng);
 
+/// Searches the subtree of node `id` of out.tree, whose fixings are (zx, zy), as complete_search does below
+/// the root (no bilinear phase, no earlier Farkas vectors); new nodes are appended to out.tree and counted in
+/// out.counters. kSolvable: out.x, out.y is a complementary pair; kJammed: every leaf of the subtree has its
+/// Farkas vector; kUnknown: the node or time budget ran out (the subtree is then incomplete).
+template <class T>
+UcpStatus search_subtree(const UcpInstance<T>& ucp, const SearchOptions& opts, SearchResult<T>& out, long id,
+                         std::vector<bool>& zx, std::vector<bool>& zy);
+
+extern template UcpStatus search_subtree<Q>(const UcpInstance<Q>&, const SearchOptions&, SearchResult<Q>&, long,
+                                            std::vector<bool>&, std::vector<bool>&);
 extern template SearchResult<double> complete_search<double>(const UcpInstance<double>&, const SearchOptions&,
                                                              std::mt19937_64&);
 extern template SearchResult<Q> complete_search<Q>(const UcpInstance<Q>&, const SearchOptions&, std::mt19937_64&);

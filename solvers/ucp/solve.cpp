@@ -23,11 +23,11 @@ Vec<double> approx(const Vec<T>& v) {
 }
 
 /// The shape of a verdict found in a float number type, for its exact check (float_check.h): the zero
-/// pattern of the complementary pair (every index fixed to 0 on one side), or the search tree without its
-/// float Farkas vectors.
+/// pattern of the complementary pair (every index fixed to 0 on one side), or the search tree with its float
+/// Farkas vectors in doubles.
 struct FloatEvidence {
   std::vector<bool> x_zero, y_zero;
-  std::vector<SearchNode<Q>> tree;
+  FloatTree tree;
 };
 
 /// x_i = 0 where T's sign test says so; y_i = 0 wherever x_i is not.
@@ -45,12 +45,14 @@ void record_pattern(FloatEvidence* ev, const Vec<T>& x, const Vec<T>& y) {
 template <class T>
 void record_tree(FloatEvidence* ev, const std::vector<SearchNode<T>>& tree) {
   if (!ev) return;
-  ev->tree.resize(tree.size());
+  ev->tree.nodes.resize(tree.size());
+  ev->tree.farkas.resize(tree.size());
   for (std::size_t k = 0; k < tree.size(); ++k) {
-    ev->tree[k].branch = tree[k].branch;
-    ev->tree[k].child_x_zero = tree[k].child_x_zero;
-    ev->tree[k].child_y_zero = tree[k].child_y_zero;
-    ev->tree[k].side = tree[k].side;
+    ev->tree.nodes[k].branch = tree[k].branch;
+    ev->tree.nodes[k].child_x_zero = tree[k].child_x_zero;
+    ev->tree.nodes[k].child_y_zero = tree[k].child_y_zero;
+    ev->tree.nodes[k].side = tree[k].side;
+    ev->tree.farkas[k] = approx(tree[k].farkas);
   }
 }
 
@@ -88,17 +90,37 @@ void set_best(UcpReport& rep, const T& v) {
     rep.best_xTy_approx = exact::NumberTraits<T>::to_double(v);
 }
 
-/// Runs the method on u (the problem's instance in T). ev (T not Q): receives the shape of the verdict.
-template <class T>
-void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& opts, const exact::Deadline& deadline,
-         UcpReport& rep, FloatEvidence* ev = nullptr) {
-  std::mt19937_64 rng(opts.seed);
+/// The options of the bilinear algorithm (Method::kPaper, kModified; the heuristic of the complete search).
+BilinearOptions bilinear_options(const UcpOptions& opts, const exact::Deadline& deadline) {
   BilinearOptions bo;
   bo.arith = opts.arith;
   bo.max_random_moves = opts.max_random_moves;
   bo.max_bases = opts.max_bases;
   bo.deadline = deadline;
+  return bo;
+}
+
+/// The options of the complete search (Method::kComplete).
+SearchOptions search_options(const UcpOptions& opts, const exact::Deadline& deadline) {
+  SearchOptions so;
+  so.max_nodes = opts.max_nodes;
+  so.deadline = deadline;
+  so.progress = opts.progress;
+  so.heuristic = bilinear_options(opts, deadline);
+  so.heuristic.step3 = Step3Rule::kModified;
+  // The search decides; the bilinear phase before it only has to find easy solutions quickly.
+  so.heuristic.max_random_moves = std::min(opts.max_random_moves, kCompleteRandomMoves);
+  so.heuristic.max_bases = std::min(opts.max_bases, kCompleteMaxBases);
+  return so;
+}
+
+/// Runs the method on u (the problem's instance in T). ev (T not Q): receives the shape of the verdict.
+template <class T>
+void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& opts, const exact::Deadline& deadline,
+         UcpReport& rep, FloatEvidence* ev = nullptr) {
+  std::mt19937_64 rng(opts.seed);
   if (opts.method == Method::kPaper || opts.method == Method::kModified) {
+    BilinearOptions bo = bilinear_options(opts, deadline);
     bo.step3 = opts.method == Method::kPaper ? Step3Rule::kPaper : Step3Rule::kModified;
     const BilinearResult<T> b = bilinear(make_face(u.X, {}), make_face(u.Y, {}), bo, rng);
     rep.pairs = b.pairs;
@@ -137,24 +159,16 @@ void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& o
           proof.tree[0].farkas = b.farkas;
           rep.proof = std::move(proof);
         } else if (ev) {
-          ev->tree.resize(1);
-          ev->tree[0].side = x_empty ? Side::kX : Side::kY;
+          ev->tree.nodes.resize(1);
+          ev->tree.nodes[0].side = x_empty ? Side::kX : Side::kY;
+          ev->tree.farkas = {approx(b.farkas)};
         }
         break;
       }
     }
     return;
   }
-  SearchOptions so;
-  so.max_nodes = opts.max_nodes;
-  so.deadline = deadline;
-  so.progress = opts.progress;
-  so.heuristic = bo;
-  so.heuristic.step3 = Step3Rule::kModified;
-  // The search decides; the bilinear phase before it only has to find easy solutions quickly.
-  so.heuristic.max_random_moves = std::min(opts.max_random_moves, kCompleteRandomMoves);
-  so.heuristic.max_bases = std::min(opts.max_bases, kCompleteMaxBases);
-  SearchResult<T> s = complete_search(u, so, rng);
+  SearchResult<T> s = complete_search(u, search_options(opts, deadline), rng);
   rep.status = s.status;
   rep.reason = s.reason;
   rep.pairs = s.pairs;
@@ -198,12 +212,32 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOpti
     r.x_approx = r.y_approx = Vec<double>();
     r.best_xTy = Q(0);
   } else if (r.status == UcpStatus::kJammed) {
-    SearchResult<Q> proof;
-    proof.status = UcpStatus::kJammed;
-    proof.reason = r.reason;
-    proof.tree = std::move(ev.tree);
-    if (!prove_leaves(problem.ucp, proof.tree, check)) return false;
-    r.proof = std::move(proof);
+    // The complete search repairs a leaf whose face is not empty by searching exactly below it (its LPs
+    // verified, as the check's); the bilinear methods cannot, so their verdict then fails.
+    std::optional<SearchOptions> repair;
+    if (opts.method == Method::kComplete) {
+      repair = search_options(opts, deadline);
+      repair->heuristic.arith = Arith::kVerified;
+    }
+    ProvenTree proven = prove_leaves(problem.ucp, std::move(ev.tree), repair);
+    check.lps += proven.result.counters.lps;
+    r.repaired_leaves = proven.repaired_leaves;
+    if (proven.result.status == UcpStatus::kSolvable) {
+      r.status = UcpStatus::kSolvable;
+      r.reason = "complete search (below a leaf of the float search tree whose face is not empty)";
+      fill_pair(r, proven.result.x, proven.result.y, problem);
+      r.best_xTy = Q(0);
+    } else if (proven.result.status == UcpStatus::kJammed) {
+      // As complete_search names it (a repair may have grown a root leaf into a tree).
+      const std::vector<SearchNode<Q>>& t = proven.result.tree;
+      if (proven.repaired_leaves > 0)
+        r.reason = t.size() > 1 ? "search tree" : t[0].side == Side::kX ? "X is empty" : "Y is empty";
+      proven.result.reason = r.reason;
+      r.nodes = proven.result.nodes;
+      r.proof = std::move(proven.result);
+    } else {
+      return false;
+    }
   } else {
     return false;
   }

@@ -61,6 +61,9 @@ struct UcpReport {
   /// --arith adaptive: the rung of the precision ladder whose verdict decided ("double", "interval",
   /// "mpfr113", "mpfr256", "exact"); empty otherwise.
   std::string decided_by;
+  /// --arith adaptive, kJammed: leaves of the deciding rung's search tree whose face was not empty in exact
+  /// arithmetic, each re-searched exactly below it (float_check.h).
+  long repaired_leaves = 0;
   double seconds = 0;
 };
 

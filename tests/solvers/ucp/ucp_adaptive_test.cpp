@@ -7,8 +7,10 @@
 
 #include "exact/json_input.h"
 #include "solvers/ucp/certificate.h"
+#include "solvers/ucp/float_check.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/solve.h"
+#include "tests/solvers/ucp/random_problems.h"
 
 namespace contactcert::solvers::ucp {
 namespace {
@@ -41,13 +43,7 @@ void expect_certified_like_exact(const UcpProblem& p, const std::string& what) {
 TEST(UcpAdaptive, RandomProblemsGetTheExactVerdictWithACertificate) {
   std::map<std::string, int> rungs;
   for (int seed = 0; seed < 30; ++seed) {
-    std::mt19937_64 gen(seed);
-    RandomProblemOptions o;
-    o.nc = 2 + seed % 4;
-    o.mu_max = Q(1 + seed % 4, 2);
-    o.mu_max.canonicalize();
-    o.abar_size = seed % (o.nc + 1);
-    const UcpProblem p = generate_random_problem(o, gen);
+    const UcpProblem p = testing::random_problem(seed, 4);
     expect_certified_like_exact(p, "random seed " + std::to_string(seed));
     ++rungs[solve(p, Arith::kAdaptive).decided_by];
   }
@@ -96,6 +92,89 @@ TEST(UcpAdaptive, ClimbsPastARungThatTakesATinyGapForZero) {
       EXPECT_NE(a.decided_by, "double");
     }
   }
+}
+
+/// The exact search tree of tiny_gap(eps): branch on index 1; x_1 = 0 leaves x_0 = -eps (X empty, Farkas
+/// vector (1)), y_1 = 0 contradicts y_1 = 1 (Y empty, Farkas vector (-1)). `farkas` are the float vectors
+/// the leaves carry.
+FloatTree tiny_gap_tree(double fx, double fy) {
+  FloatTree t;
+  t.nodes.resize(3);
+  t.nodes[0].branch = 1, t.nodes[0].child_x_zero = 1, t.nodes[0].child_y_zero = 2;
+  t.nodes[1].side = Side::kX, t.nodes[2].side = Side::kY;
+  t.farkas = {Vec<double>(), Vec<double>::Constant(1, fx), Vec<double>::Constant(1, fy)};
+  return t;
+}
+
+void expect_valid_jammed_certificate(const UcpProblem& p, SearchResult<Q> proof) {
+  proof.status = UcpStatus::kJammed;
+  proof.reason = "search tree";
+  const CertificateCheck c =
+      check_ucp_certificate(exact::JsonInput::parse(jammed_certificate(p, proof), "certificate"));
+  EXPECT_EQ(c.verdict, CertificateVerdict::kValid) << c.reason;
+}
+
+TEST(UcpAdaptive, LeavesAreProvenByTheirRoundedFarkasVectorsElseByAnExactLp) {
+  const UcpProblem p = tiny_gap(Q(1, 3));
+  // Float Farkas vectors near exact ones: rounded and checked in integers, no LP.
+  ProvenTree good = prove_leaves(p.ucp, tiny_gap_tree(1.0000000000001, -1), std::nullopt);
+  ASSERT_EQ(good.result.status, UcpStatus::kJammed);
+  EXPECT_EQ(good.result.counters.lps, 0);
+  EXPECT_EQ(good.repaired_leaves, 0);
+  expect_valid_jammed_certificate(p, good.result);
+  // Float vectors that prove nothing (wrong sign): each leaf falls back to an exact face LP.
+  ProvenTree bad = prove_leaves(p.ucp, tiny_gap_tree(-1, 1), std::nullopt);
+  ASSERT_EQ(bad.result.status, UcpStatus::kJammed);
+  EXPECT_EQ(bad.result.counters.lps, 2);
+  EXPECT_EQ(bad.repaired_leaves, 0);
+  expect_valid_jammed_certificate(p, bad.result);
+}
+
+TEST(UcpAdaptive, ALeafWhoseFaceIsNotEmptyIsRepairedByAnExactSearchBelowIt) {
+  const UcpProblem jammed = tiny_gap(Q(1, 3));
+  // A float tree that calls the root a leaf with X empty: X is not empty, the float vector fails.
+  FloatTree root;
+  root.nodes.resize(1);
+  root.farkas = {Vec<double>::Constant(1, 1)};
+  EXPECT_EQ(prove_leaves(jammed.ucp, root, std::nullopt).result.status, UcpStatus::kUnknown);
+  ProvenTree repaired = prove_leaves(jammed.ucp, root, SearchOptions{});
+  ASSERT_EQ(repaired.result.status, UcpStatus::kJammed);
+  EXPECT_EQ(repaired.repaired_leaves, 1);
+  EXPECT_GE(repaired.result.tree.size(), 3u);
+  expect_valid_jammed_certificate(jammed, repaired.result);
+  // The same wrong leaf on a solvable problem (eps = -1/3: x = (1/3, 0), y = (0, 1)): the repair finds the
+  // exactly complementary pair.
+  const UcpProblem solvable = tiny_gap(Q(-1, 3));
+  ProvenTree found = prove_leaves(solvable.ucp, root, SearchOptions{});
+  ASSERT_EQ(found.result.status, UcpStatus::kSolvable);
+  EXPECT_EQ(found.repaired_leaves, 1);
+  EXPECT_EQ(solvable.ucp.X.A * found.result.x, solvable.ucp.X.b);
+  EXPECT_EQ(solvable.ucp.Y.A * found.result.y, solvable.ucp.Y.b);
+  EXPECT_EQ(found.result.x.dot(found.result.y), 0);
+}
+
+TEST(UcpAdaptive, IntegerChecksThatOverflow128BitsRestartInGmp) {
+  // X = {x in R^3_+ : a x_0 + a x_1 = 2^126} with a = 3 2^125 (fits in 128 bits): the rounded point
+  // (1/3, 1/3, 0) gives a 1 + a 1 = 3 2^126 = 3 (2^126), beyond 128 bits on both sides; Y = {y in R^3_+ : y_2 = 1}.
+  UcpProblem p;
+  Q a = 3, b = 1;
+  mpq_mul_2exp(a.get_mpq_t(), a.get_mpq_t(), 125);
+  mpq_mul_2exp(b.get_mpq_t(), b.get_mpq_t(), 126);
+  p.ucp.X.A = Mat<Q>(1, 3);
+  p.ucp.X.A << a, a, 0;
+  p.ucp.X.b = Vec<Q>::Constant(1, b);
+  p.ucp.Y.A = Mat<Q>(1, 3);
+  p.ucp.Y.A << 0, 0, 1;
+  p.ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  Vec<double> x(3), y(3);
+  x << 1.0 / 3, 1.0 / 3, 0;
+  y << 0, 0, 1;
+  LpCounters count;
+  const auto pair = exact_pair(p.ucp, x, y, {false, false, true}, {true, true, false}, count);
+  ASSERT_TRUE(pair);
+  EXPECT_EQ(count.lps, 0);  // checked in integers (in GMP after the 128-bit overflow), no LP
+  EXPECT_EQ(pair->first(0), Q(1, 3));
+  EXPECT_EQ(pair->first(1), Q(1, 3));
 }
 
 }  // namespace
