@@ -2,6 +2,7 @@
 
 #include <type_traits>
 
+#include "exact/ladder_numbers.h"
 #include "exact/simplex.h"
 #include "exact/verified_lp.h"
 
@@ -166,7 +167,7 @@ StrictSolver<T>::StrictSolver(const StrictSystem<T>& system, Arith arith) : syst
     system_.A = std::move(lp.A);
     if (integer_) hint_ = strict_lp<double>(integer_->to_double({}).A, system.is_free, strict_columns_);
   } else {
-    hint_ = strict_lp<double>(system.A, system.is_free, strict_columns_);
+    hint_ = strict_lp<T>(system.A, system.is_free, strict_columns_);
   }
 }
 
@@ -182,9 +183,9 @@ StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
     lp.b.head(m) = b;
     return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp) : solve_lp_verified(lp), m, n, has_strict);
   } else {
-    LpProblem<double> lp = hint_;
+    LpProblem<T> lp = hint_;
     lp.b.head(m) = b;
-    return read_strict(solve_lp<double>(lp), m, n, has_strict);
+    return read_strict(solve_lp<T>(lp), m, n, has_strict);
   }
 }
 
@@ -228,5 +229,9 @@ template class StrictSolver<double>;
 template class StrictSolver<Q>;
 template StrictFeasibility<double> strict_feasibility<double>(const StrictSystem<double>&, Arith);
 template StrictFeasibility<Q> strict_feasibility<Q>(const StrictSystem<Q>&, Arith);
+template class StrictSolver<Mpfr>;
+template class StrictSolver<Interval>;
+template StrictFeasibility<Mpfr> strict_feasibility<Mpfr>(const StrictSystem<Mpfr>&, Arith);
+template StrictFeasibility<Interval> strict_feasibility<Interval>(const StrictSystem<Interval>&, Arith);
 
 }  // namespace contactcert::exact

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/ladder_numbers.h"
 #include "geometry/canonical.h"
 
 namespace contactcert::geometry {
@@ -164,6 +165,8 @@ PointPosition<T> locate(const FaceCone<T>& cone, const Vec<T>& g) {
   template PointPosition<T> locate<T>(const FaceCone<T>&, const Vec<T>&);
 CONTACTCERT_NNC_INSTANTIATE(double)
 CONTACTCERT_NNC_INSTANTIATE(Q)
+CONTACTCERT_NNC_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_NNC_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_NNC_INSTANTIATE
 
 }  // namespace contactcert::geometry

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/ladder_numbers.h"
 #include "exact/linalg.h"
 #include "exact/simplex.h"
 #include "exact/verified_lp.h"
@@ -27,7 +28,7 @@ LpResult<T> solve(const LpProblem<T>& lp) {
   if constexpr (std::is_same_v<T, Q>) {
     return exact::solve_lp_verified(lp);
   } else {
-    return exact::solve_lp<double>(lp);
+    return exact::solve_lp<T>(lp);
   }
 }
 
@@ -252,6 +253,8 @@ AffineFace<T> theorem1(const Mat<T>& K, const Mat<T>& P, const Vec<T>& k, const 
   template AffineFace<T> theorem1<T>(const Mat<T>&, const Mat<T>&, const Vec<T>&, const DdBudget&);
 CONTACTCERT_PROJECTION_INSTANTIATE(double)
 CONTACTCERT_PROJECTION_INSTANTIATE(Q)
+CONTACTCERT_PROJECTION_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_PROJECTION_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_PROJECTION_INSTANTIATE
 
 }  // namespace contactcert::geometry

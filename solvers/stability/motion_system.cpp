@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "exact/ladder_numbers.h"
 #include "solvers/wrench_cone/contact_model.h"
 
 namespace contactcert::solvers {
@@ -165,5 +166,10 @@ template struct MotionSystem<double>;
 template struct MotionSystem<Q>;
 template MotionSystem<double> motion_system<double>(const geometry::PlanarScene&, const ModeString&, bool);
 template MotionSystem<Q> motion_system<Q>(const geometry::PlanarScene&, const ModeString&, bool);
+template struct MotionSystem<exact::Mpfr>;
+template struct MotionSystem<exact::Interval>;
+template MotionSystem<exact::Mpfr> motion_system<exact::Mpfr>(const geometry::PlanarScene&, const ModeString&, bool);
+template MotionSystem<exact::Interval> motion_system<exact::Interval>(const geometry::PlanarScene&, const ModeString&,
+                                                                      bool);
 
 }  // namespace contactcert::solvers

@@ -1,5 +1,7 @@
 #include "solvers/wrench_cone/cone_form.h"
 
+#include "exact/ladder_numbers.h"
+
 namespace contactcert::solvers {
 namespace {
 
@@ -156,6 +158,8 @@ ConeForm<T> cone_form(const geometry::PlanarScene& scene, const ContactModel<T>&
   template ConeForm<T> cone_form<T>(const geometry::PlanarScene&, const ContactModel<T>&, const ModeString&);
 CONTACTCERT_CONE_FORM_INSTANTIATE(double)
 CONTACTCERT_CONE_FORM_INSTANTIATE(Q)
+CONTACTCERT_CONE_FORM_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_CONE_FORM_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_CONE_FORM_INSTANTIATE
 
 }  // namespace contactcert::solvers

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/ladder_numbers.h"
 #include "exact/rational_text.h"
 
 namespace contactcert::solvers {
@@ -44,7 +45,8 @@ ContactModel<T> contact_model(const geometry::PlanarScene& scene) {
   if constexpr (!exact::NumberTraits<T>::is_exact) {
     const Eigen::Index n = n2 / 2;
     for (Eigen::Index i = 0; i < n; ++i) {
-      const T len = std::hypot(m.J(0, i), m.J(1, i));
+      using std::sqrt;  // and CGAL's sqrt for MPFR floats and intervals (found by ADL)
+      const T len = sqrt(T(m.J(0, i) * m.J(0, i) + m.J(1, i) * m.J(1, i)));
       m.J.col(i) /= len;
       m.J.col(n + i) /= len;
     }
@@ -83,5 +85,7 @@ ContactModel<T> contact_model(const geometry::PlanarScene& scene) {
 
 template ContactModel<double> contact_model<double>(const geometry::PlanarScene&);
 template ContactModel<Q> contact_model<Q>(const geometry::PlanarScene&);
+template ContactModel<exact::Mpfr> contact_model<exact::Mpfr>(const geometry::PlanarScene&);
+template ContactModel<exact::Interval> contact_model<exact::Interval>(const geometry::PlanarScene&);
 
 }  // namespace contactcert::solvers

@@ -45,23 +45,23 @@ Mat<Q> jacobian(const geometry::PlanarScene& scene);
 template <class T>
 ContactModel<T> contact_model(const geometry::PlanarScene& scene);
 
-/// An exact number in T (identity for Q, rounding to nearest for double).
+/// An exact number in T (identity for Q, else rounded: NumberTraits<T>::from_q).
 template <class T>
 T from_exact(const Q& x) {
   if constexpr (std::is_same_v<T, Q>) {
     return x;
   } else {
-    return x.get_d();
+    return exact::NumberTraits<T>::from_q(x);
   }
 }
 
-/// An exact matrix in T (identity for Q, rounding to nearest for double).
+/// An exact matrix in T (identity for Q, else rounded entry by entry).
 template <class T>
 Mat<T> from_exact(const Mat<Q>& M) {
   if constexpr (std::is_same_v<T, Q>) {
     return M;
   } else {
-    return exact::to_double(M);
+    return M.unaryExpr([](const Q& x) { return exact::NumberTraits<T>::from_q(x); });
   }
 }
 
