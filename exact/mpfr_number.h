@@ -64,13 +64,17 @@ inline bool is_negligible(const Mpfr& x) { return NumberTraits<Mpfr>::is_negligi
 
 /// q rounded to the nearest float of `bits` bits (bits >= 53, MPFR's default precision).
 Mpfr to_mpfr(const Q& q, long bits);
+/// The problem with every number rounded to `bits` bits.
+LpProblem<Mpfr> to_mpfr(const LpProblem<Q>& problem, long bits);
 /// x as the rational it is (every float is one).
 Q to_rational(const Mpfr& x);
 
 /// The working precision of the algorithms that read rational data (a scene) and convert it inside
 /// (NumberTraits<Mpfr>::from_q): for the lifetime of this object, MPFR's default precision (per thread)
-/// is `bits`, so that data, constants and every result carry `bits` bits; the previous one is restored
-/// after. (The UCP path converts its problem up front with to_mpfr and needs no scope.)
+/// is `bits`, so that the data and every result carry at least `bits` bits (a constant built from an int or a
+/// double carries 256 or 512, CGAL's choice); the previous one is restored after. (The UCP path rounds its problem up
+/// front with to_mpfr; it needs the scope only for the sign test's working precision, see
+/// NumberTraits<Mpfr>::precision.)
 class MpfrPrecision {
  public:
   explicit MpfrPrecision(long bits) : previous_(Mpfr::set_default_precision(bits)) {}
@@ -81,8 +85,6 @@ class MpfrPrecision {
  private:
   Mpfr::Precision_type previous_;
 };
-/// The problem with every number rounded to `bits` bits.
-LpProblem<Mpfr> to_mpfr(const LpProblem<Q>& problem, long bits);
 
 CONTACTCERT_LP_LAYER_EXTERN(Mpfr)
 
