@@ -130,8 +130,8 @@ void register_bench(CLI::App& app, Action& action) {
   sub->add_flag("--json", opts->json, "Machine output: one JSON object on stdout (also written to DIR/bench.json)");
   sub->add_option("--rungs", opts->rungs,
                   "Comma-separated rungs, run in ladder order (exact always added): float, interval, mpfr113, "
-                  "mpfr256, mpfr1024, verified, adaptive, exact. interval/mpfrN run the UCP families only (n/a "
-                  "elsewhere)")
+                  "mpfr256, mpfr1024, verified, adaptive, exact. interval/mpfrN answer every question unchecked in "
+                  "that number type (an uncertain interval sign: undecided)")
       ->capture_default_str();
   sub->add_option("--out", opts->out,
                   "Directory for report.txt, report.md, time_vs_error.svg, precision_ladder.svg, bench.json, index.html")

@@ -50,7 +50,6 @@ std::vector<Group> groups(const BenchRun& run, Key key, std::optional<bench::Fam
     ++g->n;
     for (std::size_t k = 0; k < R; ++k) {
       const RungRecord& rr = r.rungs[k];
-      if (rr.verdict == bench::kNotRun) continue;
       g->seconds[k].push_back(rr.median_seconds);
       g->wrong[k] += rr.errors.wrong_verdict;
       g->undecided[k] += rr.errors.undecided;
@@ -69,7 +68,7 @@ std::string fmt(const char* f, double x) {
 }
 
 std::string err_text(double x) { return std::isnan(x) ? "-" : (x == 0 ? "0" : fmt("%.1e", x)); }
-std::string ms_text(double seconds) { return std::isnan(seconds) ? bench::kNotRun : fmt("%.3g", 1e3 * seconds); }
+std::string ms_text(double seconds) { return std::isnan(seconds) ? "-" : fmt("%.3g", 1e3 * seconds); }
 
 struct Table {
   std::vector<std::string> header;
@@ -91,7 +90,7 @@ Table table(const BenchRun& run, Key key, std::optional<bench::Family> family = 
     for (std::size_t k = 0; k < R; ++k) row.push_back(ms_text(median(g.seconds[k])));
     for (std::size_t k = 1; k < R; ++k) {
       const double ratio = median(g.seconds[k]) / median(g.seconds[0]);
-      row.push_back(std::isnan(ratio) ? bench::kNotRun : fmt("%.2gx", ratio));
+      row.push_back(std::isnan(ratio) ? "-" : fmt("%.2gx", ratio));
     }
     for (std::size_t k = 0; k < exact_rung; ++k) {
       std::string wrong = std::to_string(g.wrong[k]);
@@ -155,7 +154,6 @@ struct Totals {
 Totals totals(const BenchRun& run, std::size_t k) {
   Totals t;
   for (const auto& r : run.instances) {
-    if (r.rungs[k].verdict == bench::kNotRun) continue;
     t.seconds += r.rungs[k].median_seconds;
     t.wrong += r.rungs[k].errors.wrong_verdict;
     t.undecided += r.rungs[k].errors.undecided;
@@ -267,9 +265,8 @@ std::string svg_plot(const std::vector<PlotSeries>& series, const std::string& x
 }
 
 /// One family on one rung (issue 9 item 3): median time, wrong verdicts, undecided, worst error of the decided
-/// answers (largest violation, |x^T y| or generator distance; NaN if none applies); ran = false: "n/a".
+/// answers (largest violation, |x^T y| or generator distance; NaN if none applies).
 struct LadderCell {
-  bool ran = false;
   long n = 0, wrong = 0, undecided = 0;
   double median_seconds = kNaN, worst = kNaN;
 };
@@ -278,9 +275,8 @@ LadderCell ladder_cell(const BenchRun& run, bench::Family f, std::size_t k) {
   LadderCell c;
   std::vector<double> seconds;
   for (const InstanceRecord& r : run.instances) {
-    if (r.family != f || r.rungs[k].verdict == bench::kNotRun) continue;
+    if (r.family != f) continue;
     const bench::Errors& e = r.rungs[k].errors;
-    c.ran = true;
     ++c.n;
     seconds.push_back(r.rungs[k].median_seconds);
     c.wrong += e.wrong_verdict;
@@ -302,10 +298,6 @@ Table ladder_table(const BenchRun& run, bench::Family f) {
                              : rung.precision_bits > 0                          ? std::to_string(rung.precision_bits)
                                                                                 : "exact";
     const LadderCell c = ladder_cell(run, f, k);
-    if (!c.ran) {
-      t.rows.push_back({rung.name, bits, "0", bench::kNotRun, bench::kNotRun, bench::kNotRun, bench::kNotRun});
-      continue;
-    }
     t.rows.push_back({rung.name, bits, std::to_string(c.n), ms_text(c.median_seconds), std::to_string(c.wrong),
                       std::to_string(c.undecided), err_text(c.worst)});
   }
@@ -317,7 +309,6 @@ std::string ladder_summary(const BenchRun& run, bench::Family f) {
   std::string right, wrong;
   for (std::size_t k = 0; k + 1 < run.rungs.size(); ++k) {
     const LadderCell c = ladder_cell(run, f, k);
-    if (!c.ran) continue;
     std::string& list = c.wrong == 0 ? right : wrong;
     list += (list.empty() ? "" : ", ") + run.rungs[k].name;
   }
@@ -328,7 +319,7 @@ std::string ladder_summary(const BenchRun& run, bench::Family f) {
 const char* kLadderLegend =
     "precision ladder: per family and rung, the median time over the family's instances, wrong verdicts against "
     "exact, undecided answers (unknown, failed, or an uncertain interval sign), and the worst error of the decided "
-    "answers. n/a: the question's algorithms are not instantiated for that number type (not run).";
+    "answers.";
 
 }  // namespace
 
@@ -342,9 +333,7 @@ double median(std::vector<double> v) {
 long disagreements(const BenchRun& run, std::size_t rung) {
   const std::size_t x = run.rungs.size() - 1;
   return std::count_if(run.instances.begin(), run.instances.end(),
-                       [&](const InstanceRecord& r) {
-                         return r.rungs[rung].verdict != bench::kNotRun && r.rungs[rung].verdict != r.rungs[x].verdict;
-                       });
+                       [&](const InstanceRecord& r) { return r.rungs[rung].verdict != r.rungs[x].verdict; });
 }
 
 json bench_json(const BenchRun& run) {
@@ -394,13 +383,11 @@ json bench_json(const BenchRun& run) {
   for (bench::Family f : families_in(run))
     for (std::size_t k = 0; k < run.rungs.size(); ++k) {
       const LadderCell c = ladder_cell(run, f, k);
-      j["precision_ladder"][bench::family_name(f)][run.rungs[k].name] =
-          c.ran ? json{{"n", c.n},
-                       {"median_seconds", c.median_seconds},
-                       {"wrong_verdicts", c.wrong},
-                       {"undecided", c.undecided},
-                       {"worst_error", c.worst}}
-                : json(bench::kNotRun);
+      j["precision_ladder"][bench::family_name(f)][run.rungs[k].name] = json{{"n", c.n},
+                                                                             {"median_seconds", c.median_seconds},
+                                                                             {"wrong_verdicts", c.wrong},
+                                                                             {"undecided", c.undecided},
+                                                                             {"worst_error", c.worst}};
     }
   j["instances"] = json::array();
   for (const auto& r : run.instances) {
@@ -448,8 +435,7 @@ std::string bench_svg(const BenchRun& run) {
   for (std::size_t k = 0; k < run.rungs.size(); ++k) {
     PlotSeries ser{run.rungs[k].name, {}, false};
     for (const auto& r : run.instances)
-      if (r.rungs[k].verdict != bench::kNotRun)
-        ser.points.push_back({r.rungs[k].median_seconds, bench::worst_error(r.rungs[k].errors), {}});
+      ser.points.push_back({r.rungs[k].median_seconds, bench::worst_error(r.rungs[k].errors), {}});
     series.push_back(std::move(ser));
   }
   return svg_plot(series, "time per instance (s, median of repeats)");
@@ -461,7 +447,6 @@ std::string ladder_svg(const BenchRun& run) {
     PlotSeries ser{bench::family_name(f), {}, true};
     for (std::size_t k = 0; k < run.rungs.size(); ++k) {
       const LadderCell c = ladder_cell(run, f, k);
-      if (!c.ran) continue;
       // A wrong or undecided answer anywhere in the family puts its rung on the "1 (wrong)" line.
       const double e = c.wrong + c.undecided > 0 ? 1.0 : (std::isnan(c.worst) ? 0.0 : c.worst);
       ser.points.push_back({c.median_seconds, e, run.rungs[k].name});
@@ -509,7 +494,7 @@ std::vector<std::string> write_bench_report(const BenchRun& run, const std::stri
   html.heading("precision ladder");
   html.figure(ladder,
               "One point per family and rung: the median time over the family's instances and the worst error of "
-              "its decided answers (any wrong or undecided answer: 1). Rungs not run (n/a) have no point.");
+              "its decided answers (any wrong or undecided answer: 1).");
   for (bench::Family f : families_in(run)) {
     const Table t = ladder_table(run, f);
     html.heading(std::string(bench::family_name(f)) + ": precision ladder");

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "exact/float_ring.h"  // the same operations for MPFR floats and intervals
 #include "exact/number.h"
 
 namespace contactcert::exact {
@@ -23,13 +24,13 @@ namespace contactcert::exact {
 /// Thrown by the std::int64_t ring when a result does not fit; the caller restarts in Z.
 struct RingOverflow {};
 
-/// The ring an algorithm over the field T runs in when it stays fraction-free: Z for Q, double for double.
+/// The ring an algorithm over the field T runs in when it stays fraction-free: Z for Q, T itself for a float T.
 /// (std::int64_t is the fast exact alternative to Z, see with_exact_ring.)
 template <class T>
-using Ring = std::conditional_t<std::is_same_v<T, Q>, Z, double>;
+using Ring = std::conditional_t<std::is_same_v<T, Q>, Z, T>;
 
 /// Runs `f.template operator()<R>()` in the ring R of T: for T = Q first in std::int64_t and, on
-/// RingOverflow, again in Z; for T = double in double.
+/// RingOverflow, again in Z; for a float T in T.
 template <class T, class F>
 auto with_exact_ring(F&& f) {
   if constexpr (std::is_same_v<T, Q>) {
@@ -39,7 +40,7 @@ auto with_exact_ring(F&& f) {
       return f.template operator()<Z>();
     }
   } else {
-    return f.template operator()<double>();
+    return f.template operator()<T>();
   }
 }
 

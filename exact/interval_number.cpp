@@ -6,6 +6,8 @@ namespace contactcert::exact {
 
 Interval to_interval(const Q& q) { return Interval(CGAL::to_interval(q)); }
 
+Q to_rational(const Interval& x) { return (Q(x.inf()) + Q(x.sup())) / 2; }
+
 LpProblem<Interval> to_interval(const LpProblem<Q>& problem) {
   return convert_lp<Interval>(problem, [](const Q& q) { return to_interval(q); });
 }

@@ -20,6 +20,9 @@ using Interval = CGAL::Interval_nt<true>;
 /// CGAL throws when an uncertain interval comparison is used as a bool.
 using UncertainSign = CGAL::Uncertain_conversion_exception;
 
+/// The smallest double interval that holds q.
+Interval to_interval(const Q& q);
+
 /// Intervals: a sign is -1, 0 (only the point 0) or +1 when the interval proves it; else UncertainSign.
 /// Pivot choice as for Q (the first candidate), so that the interval run takes the exact run's decisions.
 template <>
@@ -34,11 +37,21 @@ struct NumberTraits<Interval> {
   }
   static bool is_negligible(const Interval& x) { return x.inf() == 0 && x.sup() == 0; }
   static double to_double(const Interval& x) { return CGAL::to_double(x); }
+  /// The smallest double interval that holds q.
+  static Interval from_q(const Q& q) { return to_interval(q); }
   static bool better_pivot(const Interval&, const Interval&) { return false; }
 };
 
-/// The smallest double interval that holds q.
-Interval to_interval(const Q& q);
+/// The sign tests of exact/number.h for Interval as plain functions: unqualified calls in the templated algorithms
+/// pick them over CGAL's generic sign / is_zero / ..., which argument-dependent lookup also finds.
+inline int sign(const Interval& x) { return NumberTraits<Interval>::sign(x); }
+inline bool is_zero(const Interval& x) { return sign(x) == 0; }
+inline bool is_positive(const Interval& x) { return sign(x) > 0; }
+inline bool is_negative(const Interval& x) { return sign(x) < 0; }
+inline bool is_negligible(const Interval& x) { return NumberTraits<Interval>::is_negligible(x); }
+
+/// The midpoint of x as a rational (for error measures, not for proofs).
+Q to_rational(const Interval& x);
 /// The problem with every number enclosed in an interval.
 LpProblem<Interval> to_interval(const LpProblem<Q>& problem);
 

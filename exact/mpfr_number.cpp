@@ -11,6 +11,12 @@ Mpfr to_mpfr(const Q& q, long bits) {
   return x;
 }
 
+Q to_rational(const Mpfr& x) {
+  Q q;
+  mpfr_get_q(q.get_mpq_t(), x.fr());
+  return q;
+}
+
 LpProblem<Mpfr> to_mpfr(const LpProblem<Q>& problem, long bits) {
   return convert_lp<Mpfr>(problem, [bits](const Q& q) { return to_mpfr(q, bits); });
 }

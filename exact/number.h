@@ -65,6 +65,8 @@ struct NumberTraits<double> {
   static int sign(double x) { return x > tolerance ? 1 : (x < -tolerance ? -1 : 0); }
   static bool is_negligible(double x) { return sign(x) == 0; }
   static double to_double(double x) { return x; }
+  /// An exact number rounded to the nearest double.
+  static double from_q(const Q& x) { return x.get_d(); }
   /// Partial pivoting: prefer the entry of largest magnitude.
   static bool better_pivot(double candidate, double best) { return std::abs(candidate) > std::abs(best); }
 };

@@ -3,6 +3,7 @@
 #include <numeric>
 #include <type_traits>
 
+#include "exact/ladder_numbers.h"
 #include "exact/simplex.h"
 #include "exact/verified_lp.h"
 
@@ -224,7 +225,7 @@ void StrictSolver<T>::prepare(ForEachEntry&& for_each_entry) {
   if constexpr (std::is_same_v<T, Q>)
     A_ = std::move(A);
   else
-    hint_ = strict_lp<double>(A, is_free_, strict_columns_);
+    hint_ = strict_lp<T>(A, is_free_, strict_columns_);
 }
 
 template <class T>
@@ -266,9 +267,9 @@ StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
     for (Index i = 0; i < out.motzkin.size(); ++i) out.motzkin(i) *= Q(static_cast<long>(L[static_cast<size_t>(i)]));
     return out;
   } else {
-    LpProblem<double> lp = hint_;
+    LpProblem<T> lp = hint_;
     lp.b.head(m_) = b;
-    return read_strict(solve_lp<double>(lp), m_, n_, strict_columns_);
+    return read_strict(solve_lp<T>(lp), m_, n_, strict_columns_);
   }
 }
 
@@ -320,6 +321,8 @@ bool verify_motzkin(const StrictSystem<Q>& sys, const Vec<Q>& y) {
   template StrictFeasibility<T> strict_feasibility<T>(const SparseStrictSystem<T>&, Arith);
 CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(double)
 CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(Q)
+CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(Mpfr)
+CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(Interval)
 #undef CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE
 
 }  // namespace contactcert::exact

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "exact/arith.h"
@@ -84,7 +85,8 @@ class StrictSolver {
   std::vector<Eigen::Index> strict_columns_;
   Mat<T> A_;                          ///< T = Q: the rows as given, unless integer_ holds them
   std::optional<IntegerLp> integer_;  ///< T = Q, verified: row i of A times integer_->row_scale[i], in 64 bits
-  LpProblem<double> hint_;            ///< the LP in doubles (of the integer rows if T = Q); b set per solve
+  /// The LP in doubles (of the integer rows) if T = Q, else in T; b set per solve.
+  LpProblem<std::conditional_t<NumberTraits<T>::is_exact, double, T>> hint_;
 };
 
 /// Decides strict feasibility with one LP: StrictSolver(system, arith).solve(system.b). For T = Q, `arith`

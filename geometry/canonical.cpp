@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/ladder_numbers.h"
 #include "exact/linalg.h"
 
 namespace contactcert::geometry {
@@ -26,6 +27,11 @@ void normalize_row(std::vector<double>& v) {
   for (double x : v) m = std::max(m, std::abs(x));
   if (m > 0)
     for (double& x : v) x /= m;
+}
+// Other float types (MPFR, intervals): scaled by a power of two (exact/float_ring.h).
+template <class F>
+void normalize_row(std::vector<F>& v) {
+  exact::ring::normalize(v.data(), static_cast<Index>(v.size()));
 }
 
 template <class T>
@@ -124,6 +130,8 @@ bool identical(const SpanCone<T>& a, const SpanCone<T>& b) {
   template bool identical<T>(const SpanCone<T>&, const SpanCone<T>&);
 CONTACTCERT_CANONICAL_INSTANTIATE(double)
 CONTACTCERT_CANONICAL_INSTANTIATE(Q)
+CONTACTCERT_CANONICAL_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_CANONICAL_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_CANONICAL_INSTANTIATE
 
 }  // namespace contactcert::geometry

@@ -11,6 +11,7 @@
 
 #include "exact/fraction_free.h"
 #include "exact/input_error.h"
+#include "exact/ladder_numbers.h"
 #include "exact/linalg.h"
 
 namespace contactcert::geometry {
@@ -257,7 +258,7 @@ std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::ve
 template <class R>
 std::optional<std::vector<std::vector<R>>> pointed_extreme_rays(const std::vector<std::vector<R>>& rows, Index k,
                                                                 const DdBudget& budget) {
-  if constexpr (!std::is_same_v<R, double>)  // the float path keeps the DD's tolerances
+  if constexpr (std::is_integral_v<R> || std::is_same_v<R, Z>)  // exact rings; a float ring keeps the DD's tolerances
     if (k == 3) return pointed_extreme_rays_3d<R>(rows, budget);
   // Initial simplicial cone: k independent rows B (greedy, fraction-free elimination in the ring).
   std::vector<std::size_t> basis;
@@ -429,5 +430,9 @@ template FaceCone<double> to_face<double>(const SpanCone<double>&, const DdBudge
 template FaceCone<Q> to_face<Q>(const SpanCone<Q>&, const DdBudget&);
 template SpanCone<double> to_span<double>(const FaceCone<double>&, const DdBudget&);
 template SpanCone<Q> to_span<Q>(const FaceCone<Q>&, const DdBudget&);
+template FaceCone<exact::Mpfr> to_face<exact::Mpfr>(const SpanCone<exact::Mpfr>&, const DdBudget&);
+template FaceCone<exact::Interval> to_face<exact::Interval>(const SpanCone<exact::Interval>&, const DdBudget&);
+template SpanCone<exact::Mpfr> to_span<exact::Mpfr>(const FaceCone<exact::Mpfr>&, const DdBudget&);
+template SpanCone<exact::Interval> to_span<exact::Interval>(const FaceCone<exact::Interval>&, const DdBudget&);
 
 }  // namespace contactcert::geometry

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/ladder_numbers.h"
 #include "geometry/canonical.h"
 
 namespace contactcert::geometry {
@@ -252,6 +253,8 @@ template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const std::vector<std
   template PointPosition<T> locate<T>(const FaceCone<T>&, const Vec<T>&);
 CONTACTCERT_NNC_INSTANTIATE(double)
 CONTACTCERT_NNC_INSTANTIATE(Q)
+CONTACTCERT_NNC_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_NNC_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_NNC_INSTANTIATE
 
 }  // namespace contactcert::geometry

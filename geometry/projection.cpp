@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/ladder_numbers.h"
 #include "exact/linalg.h"
 #include "exact/simplex.h"
 #include "exact/verified_lp.h"
@@ -28,7 +29,7 @@ LpResult<T> solve(const LpProblem<T>& lp) {
   if constexpr (std::is_same_v<T, Q>) {
     return exact::solve_lp_verified(lp);
   } else {
-    return exact::solve_lp<double>(lp);
+    return exact::solve_lp<T>(lp);
   }
 }
 
@@ -172,7 +173,7 @@ FaceCone<T> project_by_polar_rows(const std::vector<std::vector<R>>& rows, Index
     (is_open ? open : closed).push_back(times_P(f));
   }
   for (const std::vector<R>& e : ke) E.push_back(times_P(e));
-  if constexpr (!std::is_same_v<R, double>)  // the float path keeps nnc_form's normal forms
+  if constexpr (exact::NumberTraits<T>::is_exact)  // the float paths keep nnc_form's normal forms
     if (E.empty())
       if (auto face = pointed_nnc_face<T, R>(closed, open, d, budget)) return std::move(*face);
   auto field = [&](const std::vector<std::vector<R>>& rs) {
@@ -301,6 +302,8 @@ template FaceCone<Q> project_by_polar_rows<Q, Z>(const std::vector<std::vector<Z
   template AffineFace<T> theorem1<T>(const Mat<T>&, const Mat<T>&, const Vec<T>&, const DdBudget&);
 CONTACTCERT_PROJECTION_INSTANTIATE(double)
 CONTACTCERT_PROJECTION_INSTANTIATE(Q)
+CONTACTCERT_PROJECTION_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_PROJECTION_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_PROJECTION_INSTANTIATE
 
 }  // namespace contactcert::geometry

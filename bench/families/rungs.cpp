@@ -5,10 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "solvers/stability/strong_stability.h"
+#include "solvers/scene_ladder.h"
 #include "solvers/ucp/solve.h"
-#include "solvers/wrench_cone/contact_model.h"
-#include "solvers/wrench_cone/wrench_cone.h"
 
 namespace contactcert::bench {
 
@@ -17,20 +15,21 @@ namespace {
 using exact::Arith;
 using exact::Mat;
 
+/// v in the rung's number type (MPFR: at the working precision of the run, see run_rung).
 template <class T>
 Vec<T> from_q(const Vec<Q>& v) {
-  if constexpr (std::is_same_v<T, Q>)
-    return v;
-  else
-    return exact::to_double(v);
+  return v.unaryExpr([](const Q& q) { return solvers::from_exact<T>(q); });
 }
 
-/// The rung's numbers as rationals, exactly (every double is a rational).
+/// A number of the rung as a rational: exactly (every double and MPFR float is one), an interval by its midpoint.
+Q as_rational(const Q& x) { return x; }
+Q as_rational(double x) { return Q(x); }
+Q as_rational(const exact::Mpfr& x) { return exact::to_rational(x); }
+Q as_rational(const exact::Interval& x) { return exact::to_rational(x); }
+
 template <class T>
 Vec<Q> to_q(const Vec<T>& v) {
-  Vec<Q> q(v.size());
-  for (Eigen::Index i = 0; i < v.size(); ++i) q(i) = Q(v(i));
-  return q;
+  return v.unaryExpr([](const T& x) { return as_rational(x); });
 }
 
 /// `contactcert ucp`'s default method: the bilinear algorithm, then the complete search (arith picks the path).
@@ -72,7 +71,8 @@ void append_unit_rows(const Mat<T>& M, double sign, std::vector<Vec<double>>& G)
 }
 
 /// The paper's route (F = K^F P, eq. 18). The cone layer has no float-proposal path yet, so the verified rung
-/// computes the cone in rationals, as `contactcert cone --arith verified` does.
+/// computes the cone in rationals, as `contactcert cone --arith verified` does; the float rungs compute it
+/// unchecked in their number type.
 template <class T>
 Answer answer(const ConeQuestion& q, const Rung&) {
   const auto c = solvers::wrench_cone<T>(q.scene, q.mode, solvers::Route::kPaper);
@@ -145,7 +145,7 @@ void measure_point(const ConeQuestion&, const Answer& a, const Answer& x, Errors
   e.generator_distance = a_empty && x_empty ? 0.0 : (a_empty || x_empty ? 2.0 : hausdorff(a.generators, x.generators));
 }
 
-bool decided(const std::string& verdict) { return verdict != "unknown" && verdict != "failed" && verdict != kNotRun; }
+bool decided(const std::string& verdict) { return verdict != "unknown" && verdict != "failed"; }
 
 }  // namespace
 
@@ -191,15 +191,31 @@ std::vector<Rung> parse_rungs(const std::string& list) {
 
 Answer run_rung(const Question& question, const Rung& rung) {
   try {
-    // Intervals and MPFR floats: only the UCP algorithms are instantiated for them.
-    if (rung.number.kind != exact::Rung::Kind::kDouble && !std::holds_alternative<UcpQuestion>(question)) {
-      Answer a;
-      a.verdict = kNotRun;
-      return a;
-    }
+    // Float rungs run unchecked in their number type (MPFR: the scene converted and every operation rounded
+    // at the rung's bits); the checked rungs answer in rationals.
+    using K = exact::Rung::Kind;
     return std::visit(
-        [&](const auto& q) { return rung.arith == Arith::kFloat ? answer<double>(q, rung) : answer<Q>(q, rung); },
+        [&](const auto& q) {
+          switch (rung.arith == Arith::kFloat ? rung.number.kind : K::kExact) {
+            case K::kInterval:
+              return answer<exact::Interval>(q, rung);
+            case K::kMpfr: {
+              const exact::MpfrPrecision precision(rung.number.bits);
+              return answer<exact::Mpfr>(q, rung);
+            }
+            case K::kDouble:
+              return answer<double>(q, rung);
+            case K::kExact:
+              break;
+          }
+          return answer<Q>(q, rung);
+        },
         question);
+  } catch (const exact::UncertainSign&) {  // an interval run that could not prove a sign: undecided
+    Answer a;
+    a.verdict = "unknown";
+    a.failure = "an interval sign is uncertain";
+    return a;
   } catch (const std::exception& ex) {
     Answer a;
     a.verdict = "failed";
@@ -210,7 +226,7 @@ Answer run_rung(const Question& question, const Rung& rung) {
 
 Errors measure(const Question& question, const Answer& answer, const Answer& exact_answer) {
   Errors e;
-  e.undecided = answer.verdict != kNotRun && !decided(answer.verdict) && decided(exact_answer.verdict);
+  e.undecided = !decided(answer.verdict) && decided(exact_answer.verdict);
   e.wrong_verdict = decided(answer.verdict) && decided(exact_answer.verdict) && answer.verdict != exact_answer.verdict;
   if (decided(answer.verdict)) std::visit([&](const auto& q) { measure_point(q, answer, exact_answer, e); }, question);
   return e;

@@ -18,8 +18,8 @@ struct Rung {
   std::string name;
   exact::Arith arith = exact::Arith::kExact;
   int precision_bits = 0;
-  /// kFloat rungs: the number type of the unchecked run (double; intervals; MPFR of `bits` bits). Only the UCP
-  /// algorithms are instantiated for intervals and MPFR: other questions answer "n/a" (not run) on those rungs.
+  /// kFloat rungs: the number type of the unchecked run (double; intervals; MPFR of `bits` bits), for every
+  /// question kind (UCP, stability, cone): the same algorithms instantiated for that type.
   exact::Rung number{};
 };
 
@@ -29,15 +29,12 @@ const std::vector<Rung>& default_rungs();
 
 /// Every rung `contactcert bench --rungs` knows, in ladder order: float, interval, mpfr113, mpfr256, mpfr1024,
 /// verified, adaptive, exact. interval and mpfrN are unchecked runs in that number type (intervals prove
-/// every sign they take, or stop as undecided; MPFR floats may be wrong).
+/// every sign they take, or stop as undecided: verdict "unknown"; MPFR floats may be wrong).
 const std::vector<Rung>& all_rungs();
 
 /// A comma-separated list of rung names -> those rungs in ladder order, exact always last (added if missing).
 /// Throws std::invalid_argument naming an unknown rung.
 std::vector<Rung> parse_rungs(const std::string& list);
-
-/// The verdict of a rung that does not apply to a question (not run).
-inline constexpr const char* kNotRun = "n/a";
 
 /// What one rung answered, exactly as it answered it (floats converted to rationals without rounding so
 /// that the error measures are exact).
@@ -58,7 +55,7 @@ Answer run_rung(const Question& question, const Rung& rung);
 struct Errors {
   static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
   bool wrong_verdict = false;         ///< both decided and different
-  bool undecided = false;             ///< the rung failed or said unknown where the exact path decided (not n/a)
+  bool undecided = false;             ///< the rung failed or said unknown where the exact path decided
   double violation = kNone;           ///< ucp, stability: largest constraint violation, relative to max(1, |rhs|)
   double xTy = kNone;                 ///< ucp: |x^T y| of the rung's pair
   double generator_distance = kNone;  ///< cone: Hausdorff distance of the unit generators; 2 if one is empty

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "exact/ladder_numbers.h"
 #include "solvers/wrench_cone/contact_model.h"
 
 namespace contactcert::solvers {
@@ -228,6 +229,8 @@ MotionSystem<T> motion_system(const MotionModel<T>& model, const ModeString& mod
 
 template struct MotionSystem<double>;
 template struct MotionSystem<Q>;
+template struct MotionSystem<exact::Mpfr>;
+template struct MotionSystem<exact::Interval>;
 #define CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(T)                                                       \
   template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                               \
   template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&); \
@@ -235,6 +238,8 @@ template struct MotionSystem<Q>;
   template MotionSystem<T> motion_system<T>(const geometry::PlanarScene&, const ModeString&, bool);
 CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(double)
 CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(Q)
+CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_MOTION_SYSTEM_INSTANTIATE
 
 }  // namespace contactcert::solvers

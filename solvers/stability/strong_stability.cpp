@@ -1,6 +1,7 @@
 #include "solvers/stability/strong_stability.h"
 
 #include "exact/input_error.h"
+#include "exact/ladder_numbers.h"
 
 namespace contactcert::solvers {
 
@@ -348,5 +349,12 @@ template class StabilityOracle<Q>;
 template StabilityResult<double> strong_stability<double>(const geometry::PlanarScene&, const Vec<double>&,
                                                           const StabilityOptions&);
 template StabilityResult<Q> strong_stability<Q>(const geometry::PlanarScene&, const Vec<Q>&, const StabilityOptions&);
+template class StabilityOracle<exact::Mpfr>;
+template class StabilityOracle<exact::Interval>;
+template StabilityResult<exact::Mpfr> strong_stability<exact::Mpfr>(const geometry::PlanarScene&,
+                                                                    const Vec<exact::Mpfr>&, const StabilityOptions&);
+template StabilityResult<exact::Interval> strong_stability<exact::Interval>(const geometry::PlanarScene&,
+                                                                            const Vec<exact::Interval>&,
+                                                                            const StabilityOptions&);
 
 }  // namespace contactcert::solvers

@@ -1,5 +1,7 @@
 #include "solvers/wrench_cone/cone_form.h"
 
+#include "exact/ladder_numbers.h"
+
 namespace contactcert::solvers {
 namespace {
 
@@ -218,9 +220,16 @@ RingForm<R> ring_form(const geometry::PlanarScene& scene, const ContactModel<T>&
   template ConeForm<T> cone_form<T>(const geometry::PlanarScene&, const ContactModel<T>&, const ModeString&);
 CONTACTCERT_CONE_FORM_INSTANTIATE(double)
 CONTACTCERT_CONE_FORM_INSTANTIATE(Q)
+CONTACTCERT_CONE_FORM_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_CONE_FORM_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_CONE_FORM_INSTANTIATE
 template RingForm<double> ring_form<double, double>(const geometry::PlanarScene&, const ContactModel<double>&,
                                                     const ModeString&);
+template RingForm<exact::Mpfr> ring_form<exact::Mpfr, exact::Mpfr>(const geometry::PlanarScene&,
+                                                                   const ContactModel<exact::Mpfr>&, const ModeString&);
+template RingForm<exact::Interval> ring_form<exact::Interval, exact::Interval>(const geometry::PlanarScene&,
+                                                                               const ContactModel<exact::Interval>&,
+                                                                               const ModeString&);
 template RingForm<std::int64_t> ring_form<std::int64_t, Q>(const geometry::PlanarScene&, const ContactModel<Q>&,
                                                            const ModeString&);
 template RingForm<exact::Z> ring_form<exact::Z, Q>(const geometry::PlanarScene&, const ContactModel<Q>&,

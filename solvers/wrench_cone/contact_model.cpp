@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/ladder_numbers.h"
 
 namespace contactcert::solvers {
 namespace {
@@ -98,27 +99,32 @@ ContactModel<T> contact_model(const geometry::PlanarScene& scene) {
       return out;
     });
   } else {
-    // Float path: unit normals and M^-1 = diag(1, 1, m/I), so that entries stay of order one for the
-    // tolerance of the sign test.
-    m.J = exact::to_double(jacobian(scene));
+    // Float path (double, MPFR, intervals): unit normals and M^-1 = diag(1, 1, m/I), so that entries stay of
+    // order one for the tolerance of the sign test.
+    Mat<T> Jf = from_exact<T>(jacobian(scene));
     const Eigen::Index n = w / 2;
     for (Eigen::Index i = 0; i < n; ++i) {
-      const double len = std::hypot(m.J(0, i), m.J(1, i));
-      m.J.col(i) /= len;
-      m.J.col(n + i) /= len;
+      using std::sqrt;  // and CGAL's sqrt for MPFR floats and intervals (found by ADL)
+      const T len = sqrt(T(Jf(0, i) * Jf(0, i) + Jf(1, i) * Jf(1, i)));
+      Jf.col(i) /= len;
+      Jf.col(n + i) /= len;
     }
-    const double rot = inertia.get_den().get_d() / inertia.get_num().get_d();
-    std::vector<double> J(static_cast<std::size_t>(3 * w)), B, A;
+    const T rot = from_exact<T>(Q(inertia.get_den(), inertia.get_num()));
+    std::vector<T> J(static_cast<std::size_t>(3 * w)), B, A;
     for (Eigen::Index k = 0; k < 3; ++k)
-      for (Eigen::Index i = 0; i < w; ++i) J[static_cast<std::size_t>(k * w + i)] = m.J(k, i);
-    products<double>(J, 1.0, rot, B, A);
-    m.B = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(B.data(), w, 3);
-    m.A = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(A.data(), w, w);
+      for (Eigen::Index i = 0; i < w; ++i) J[static_cast<std::size_t>(k * w + i)] = Jf(k, i);
+    products<T>(J, T(1), rot, B, A);
+    using RowMajor = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    m.J = std::move(Jf);
+    m.B = Eigen::Map<const RowMajor>(B.data(), w, 3);
+    m.A = Eigen::Map<const RowMajor>(A.data(), w, w);
   }
   return m;
 }
 
 template ContactModel<double> contact_model<double>(const geometry::PlanarScene&);
 template ContactModel<Q> contact_model<Q>(const geometry::PlanarScene&);
+template ContactModel<exact::Mpfr> contact_model<exact::Mpfr>(const geometry::PlanarScene&);
+template ContactModel<exact::Interval> contact_model<exact::Interval>(const geometry::PlanarScene&);
 
 }  // namespace contactcert::solvers

@@ -15,9 +15,9 @@ using exact::Q;
 using exact::Vec;
 
 /// A matrix of the model over the ring of T: integers for the exact path (held in machine integers
-/// when they fit, exact/fraction_free.h), doubles for the float path.
+/// when they fit, exact/fraction_free.h), T itself for the float types (double, MPFR, intervals).
 template <class T>
-using ModelMatrix = std::conditional_t<exact::NumberTraits<T>::is_exact, exact::ring::IntegerMatrix, Mat<double>>;
+using ModelMatrix = std::conditional_t<exact::NumberTraits<T>::is_exact, exact::ring::IntegerMatrix, Mat<T>>;
 
 /// A model matrix as a matrix over T.
 template <class T>
@@ -63,23 +63,23 @@ Mat<Q> jacobian(const geometry::PlanarScene& scene);
 template <class T>
 ContactModel<T> contact_model(const geometry::PlanarScene& scene);
 
-/// An exact number in T (identity for Q, rounding to nearest for double).
+/// An exact number in T (identity for Q, else rounded: NumberTraits<T>::from_q).
 template <class T>
 T from_exact(const Q& x) {
   if constexpr (std::is_same_v<T, Q>) {
     return x;
   } else {
-    return x.get_d();
+    return exact::NumberTraits<T>::from_q(x);
   }
 }
 
-/// An exact matrix in T (identity for Q, rounding to nearest for double).
+/// An exact matrix in T (identity for Q, else rounded entry by entry).
 template <class T>
 Mat<T> from_exact(const Mat<Q>& M) {
   if constexpr (std::is_same_v<T, Q>) {
     return M;
   } else {
-    return exact::to_double(M);
+    return M.unaryExpr([](const Q& x) { return exact::NumberTraits<T>::from_q(x); });
   }
 }
 

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/ladder_numbers.h"
 
 namespace contactcert::solvers {
 namespace {
@@ -172,6 +173,8 @@ geometry::AffineFace<T> wrench_set_with_minimum_acceleration(const geometry::Pla
       const geometry::PlanarScene&, const ModeString&, const Q&, const geometry::DdBudget&);
 CONTACTCERT_WRENCH_CONE_INSTANTIATE(double)
 CONTACTCERT_WRENCH_CONE_INSTANTIATE(Q)
+CONTACTCERT_WRENCH_CONE_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_WRENCH_CONE_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_WRENCH_CONE_INSTANTIATE
 
 }  // namespace contactcert::solvers
