@@ -56,14 +56,6 @@ void record_tree(FloatEvidence* ev, const std::vector<SearchNode<T>>& tree) {
   }
 }
 
-/// An MPFR float as the rational it is; an interval as its midpoint (bench error measures, not proofs).
-Q exact_value(const exact::Mpfr& v) {
-  Q q;
-  mpfr_get_q(q.get_mpq_t(), v.fr());
-  return q;
-}
-Q exact_value(const exact::Interval& v) { return (Q(v.inf()) + Q(v.sup())) / 2; }
-
 template <class T>
 void fill_pair(UcpReport& rep, const Vec<T>& x, const Vec<T>& y, const UcpProblem& problem) {
   if constexpr (std::is_same_v<T, Q>) {
@@ -76,8 +68,8 @@ void fill_pair(UcpReport& rep, const Vec<T>& x, const Vec<T>& y, const UcpProble
     (void)problem;
     rep.x_approx = approx(x), rep.y_approx = approx(y);
     if constexpr (!std::is_same_v<T, double>) {
-      rep.x_float = x.unaryExpr([](const T& e) { return exact_value(e); });
-      rep.y_float = y.unaryExpr([](const T& e) { return exact_value(e); });
+      rep.x_float = x.unaryExpr([](const T& e) { return exact::to_rational(e); });
+      rep.y_float = y.unaryExpr([](const T& e) { return exact::to_rational(e); });
     }
   }
 }
@@ -261,11 +253,13 @@ void solve_adaptive(const UcpProblem& problem, const UcpOptions& opts, const exa
             decide_at(problem, convert<exact::Interval>(problem.ucp, [](const Q& q) { return exact::to_interval(q); }),
                       opts, deadline, rep);
         break;
-      case exact::Rung::Kind::kMpfr:
+      case exact::Rung::Kind::kMpfr: {
+        const exact::MpfrPrecision precision(rung.bits);  // constants and sign tests at the rung's precision
         decided = decide_at(
             problem, convert<exact::Mpfr>(problem.ucp, [&rung](const Q& q) { return exact::to_mpfr(q, rung.bits); }),
             opts, deadline, rep);
         break;
+      }
       case exact::Rung::Kind::kExact:
         run<Q>(problem, problem.ucp, opts, deadline, rep);
         decided = true;
@@ -287,10 +281,12 @@ void run_float(const UcpProblem& problem, const UcpOptions& opts, const exact::D
         run(problem, convert<exact::Interval>(problem.ucp, [](const Q& q) { return exact::to_interval(q); }), opts,
             deadline, rep);
         return;
-      case exact::Rung::Kind::kMpfr:
+      case exact::Rung::Kind::kMpfr: {
+        const exact::MpfrPrecision precision(rung.bits);  // constants and sign tests at the rung's precision
         run(problem, convert<exact::Mpfr>(problem.ucp, [&rung](const Q& q) { return exact::to_mpfr(q, rung.bits); }),
             opts, deadline, rep);
         return;
+      }
       case exact::Rung::Kind::kDouble:
       case exact::Rung::Kind::kExact:
         run<double>(problem, convert<double>(problem.ucp), opts, deadline, rep);
