@@ -29,13 +29,14 @@ struct RingOverflow {};
 template <class T>
 using Ring = std::conditional_t<std::is_same_v<T, Q>, Z, T>;
 
-/// Runs `f.template operator()<R>()` in the ring R of T: for T = Q first in std::int64_t and, on
-/// RingOverflow, again in Z; for a float T in T.
-template <class T, class F>
+/// Runs `f.template operator()<R>()` in the ring R of T: for T = Q first in the fixed-width integers Fixed
+/// (std::int64_t, or a wider checked type such as exact::Int128) and, on RingOverflow, again in Z; for a float
+/// T in T. The answer is the same either way: the fixed width is only a speed-up.
+template <class T, class Fixed = std::int64_t, class F>
 auto with_exact_ring(F&& f) {
   if constexpr (std::is_same_v<T, Q>) {
     try {
-      return f.template operator()<std::int64_t>();
+      return f.template operator()<Fixed>();
     } catch (const RingOverflow&) {
       return f.template operator()<Z>();
     }

@@ -61,19 +61,8 @@ std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem);
 /// RingOverflow). 128 bits, not 64: the paper's data overflow 64 bits in the elimination of unique_solution.
 __extension__ typedef __int128 Int128;
 
-/// Runs f.template operator()<R>() with R = Int128 and, on RingOverflow, again with R = Z (unbounded): the
-/// answer is exact either way, the fixed width is only a speed-up (as with_exact_ring, one width up).
-template <class F>
-auto with_integer_ring(F&& f) {
-  try {
-    return f.template operator()<Int128>();
-  } catch (const RingOverflow&) {
-    return f.template operator()<Z>();
-  }
-}
-
 /// The rows of A x = b, each row of [A | b] multiplied by the lcm of its denominators (row_scale), as integers
-/// of the ring R (Int128 or Z, see with_integer_ring).
+/// of the ring R (Int128 or Z, see with_exact_ring<Q, Int128>).
 template <class R>
 struct IntegerSystem {
   Eigen::Index m = 0, n = 0;

@@ -12,25 +12,35 @@ namespace {
 using Index = Eigen::Index;
 
 /// A polyhedron's rows [A | b] as integers (exact::IntegerSystem), built on first use: run(check) runs
-/// check(system) in 128-bit integers and, if a number does not fit, again in Z (exact::with_integer_ring).
+/// check(system) in 128-bit integers and, if a number does not fit, again in Z (exact::with_exact_ring); rows
+/// that do not fit in 128 bits are built once and go straight to Z afterwards.
 class IntegerRows {
  public:
   explicit IntegerRows(const StandardPolyhedron<Q>& P) : P_(P) {}
 
   template <class F>
   auto run(F&& check) {
-    return exact::with_integer_ring([&]<class R>() { return check(system<R>()); });
+    if (too_wide_) return check(system<exact::Z>());
+    return exact::with_exact_ring<Q, exact::Int128>([&]<class R>() { return check(system<R>()); });
   }
 
  private:
   template <class R>
   const exact::IntegerSystem<R>& system() {
     std::optional<exact::IntegerSystem<R>>& s = std::get<std::optional<exact::IntegerSystem<R>>>(systems_);
-    if (!s) s = exact::integer_system<R>(P_.A, P_.b);
+    if (!s) {
+      try {
+        s = exact::integer_system<R>(P_.A, P_.b);
+      } catch (const exact::RingOverflow&) {
+        too_wide_ = true;
+        throw;
+      }
+    }
     return *s;
   }
 
   const StandardPolyhedron<Q>& P_;
+  bool too_wide_ = false;  ///< the rows do not fit in 128 bits
   std::tuple<std::optional<exact::IntegerSystem<exact::Int128>>, std::optional<exact::IntegerSystem<exact::Z>>>
       systems_;
 };

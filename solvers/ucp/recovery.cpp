@@ -25,7 +25,7 @@ std::optional<PhysicalSolution> recover(const QuasistaticProblem& p, const Vec<Q
   // elimination in Q.
   std::vector<Index> columns(static_cast<std::size_t>(p.P.cols()));
   for (Index j = 0; j < p.P.cols(); ++j) columns[static_cast<std::size_t>(j)] = j;
-  std::optional<Vec<Q>> b = exact::with_integer_ring(
+  std::optional<Vec<Q>> b = exact::with_exact_ring<Q, exact::Int128>(
       [&]<class R>() { return exact::unique_solution(exact::integer_system<R>(p.P, rhs), columns); });
   if (!b) b = exact::solve<Q>(p.P, rhs);
   if (!b) return std::nullopt;

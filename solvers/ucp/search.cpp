@@ -154,7 +154,7 @@ SearchResult<T> complete_search(const UcpInstance<T>& ucp, const SearchOptions& 
       out.tree.clear();
     } else {
       out.status = UcpStatus::kJammed;
-      out.reason = out.tree.size() == 1 ? (out.tree[0].side == Side::kX ? "X is empty" : "Y is empty") : "search tree";
+      out.reason = jammed_reason(out.tree);
     }
   } catch (const BudgetExhausted&) {
     out.nodes = static_cast<long>(out.tree.size());

@@ -55,6 +55,14 @@ struct SearchResult {
   LpCounters counters;
 };
 
+/// How a jammed verdict with this search tree is named: "X is empty" / "Y is empty" for a root leaf, else
+/// "search tree".
+template <class T>
+const char* jammed_reason(const std::vector<SearchNode<T>>& tree) {
+  if (tree.size() > 1) return "search tree";
+  return tree[0].side == Side::kX ? "X is empty" : "Y is empty";
+}
+
 /// Decides the UCP exactly for T = Q (the float path T = double mirrors it without proof).
 template <class T>
 SearchResult<T> complete_search(const UcpInstance<T>& ucp, const SearchOptions& opts, std::mt19937_64& rng);

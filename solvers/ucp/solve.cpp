@@ -221,9 +221,7 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOpti
       r.best_xTy = Q(0);
     } else if (proven.result.status == UcpStatus::kJammed) {
       // As complete_search names it (a repair may have grown a root leaf into a tree).
-      const std::vector<SearchNode<Q>>& t = proven.result.tree;
-      if (proven.repaired_leaves > 0)
-        r.reason = t.size() > 1 ? "search tree" : t[0].side == Side::kX ? "X is empty" : "Y is empty";
+      if (proven.repaired_leaves > 0) r.reason = jammed_reason(proven.result.tree);
       proven.result.reason = r.reason;
       r.nodes = proven.result.nodes;
       r.proof = std::move(proven.result);
