@@ -16,7 +16,7 @@
 #define CONTACTCERT_SCENE_LADDER_EXTERN(T)                                                                           \
   namespace contactcert::exact {                                                                                     \
   extern template class StrictSolver<T>;                                                                             \
-  extern template StrictFeasibility<T> strict_feasibility<T>(const StrictSystem<T>&, Arith);                         \
+  extern template StrictFeasibility<T> strict_feasibility<T>(const SparseStrictSystem<T>&, Arith);                   \
   }                                                                                                                  \
   namespace contactcert::geometry {                                                                                  \
   extern template FaceCone<T> to_face<T>(const SpanCone<T>&, const DdBudget&);                                       \
@@ -33,7 +33,7 @@
   extern template ConeForm<T> cone_form<T>(const geometry::PlanarScene&, const ContactModel<T>&, const ModeString&); \
   extern template WrenchCone<T> wrench_cone<T>(const geometry::PlanarScene&, const ModeString&, Route,               \
                                                const geometry::DdBudget&, Preconditioning);                          \
-  extern template MotionSystem<T> motion_system<T>(const geometry::PlanarScene&, const ModeString&, bool);           \
+  extern template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);                  \
   extern template class StabilityOracle<T>;                                                                          \
   extern template StabilityResult<T> strong_stability<T>(const geometry::PlanarScene&, const Vec<T>&,                \
                                                          const StabilityOptions&);                                   \

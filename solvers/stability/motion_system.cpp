@@ -68,11 +68,6 @@ MotionModel<T> motion_model(const geometry::PlanarScene& scene) {
   return m;
 }
 
-template <class T>
-MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeString& mode, bool zero_acceleration) {
-  return motion_system(motion_model<T>(scene), mode, zero_acceleration);
-}
-
 namespace {
 
 void check_letters(const ModeString& mode, Index k) {
@@ -234,8 +229,7 @@ template struct MotionSystem<exact::Interval>;
 #define CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(T)                                                       \
   template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                               \
   template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&); \
-  template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);           \
-  template MotionSystem<T> motion_system<T>(const geometry::PlanarScene&, const ModeString&, bool);
+  template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);
 CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(double)
 CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(Q)
 CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(exact::Mpfr)

@@ -72,16 +72,10 @@ exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const
 /// friction rows if it rolls; then the 3 dynamics rows.
 Eigen::Index motion_system_rows(const ModeString& mode);
 
-/// motion_system(motion_model<T>(scene), mode, zero_acceleration).
-template <class T>
-MotionSystem<T> motion_system(const geometry::PlanarScene& scene, const ModeString& mode,
-                              bool zero_acceleration = false);
-
 #define CONTACTCERT_MOTION_SYSTEM_EXTERN(T)                                                                   \
   extern template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                               \
   extern template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&); \
-  extern template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);           \
-  extern template MotionSystem<T> motion_system<T>(const geometry::PlanarScene&, const ModeString&, bool);
+  extern template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);
 CONTACTCERT_MOTION_SYSTEM_EXTERN(double)
 CONTACTCERT_MOTION_SYSTEM_EXTERN(Q)
 #undef CONTACTCERT_MOTION_SYSTEM_EXTERN

@@ -325,14 +325,14 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
     for (std::size_t i = 0; i < modes.size(); ++i) {
       const ModeProof<Q>& p = claim.proofs[i];
       if (p.mode.text() != modes[i].text()) return "proof " + std::to_string(i) + " is for the wrong mode";
-      const MotionSystem<Q> ms = motion_system(model, p.mode);
       if (p.kinematic) {
-        bool zero_tail = p.motzkin.size() == ms.system.rows;
-        for (Index j = ms.kinematic_rows; zero_tail && j < p.motzkin.size(); ++j) zero_tail = sgn(p.motzkin(j)) == 0;
-        if (!zero_tail ||
-            !exact::verify_motzkin(kinematic_system(model, p.mode).dense(), p.motzkin.head(ms.kinematic_rows)))
+        // The kinematic rows lead the mode's system: the certificate is zero on every other row.
+        const exact::SparseStrictSystem<Q> kin = kinematic_system(model, p.mode);
+        bool zero_tail = p.motzkin.size() == motion_system_rows(p.mode);
+        for (Index j = kin.rows; zero_tail && j < p.motzkin.size(); ++j) zero_tail = sgn(p.motzkin(j)) == 0;
+        if (!zero_tail || !exact::verify_motzkin(kin.dense(), p.motzkin.head(kin.rows)))
           return "the kinematic proof for mode " + p.mode.text() + " does not verify";
-      } else if (!exact::verify_motzkin(ms.with_wrench(g), p.motzkin)) {
+      } else if (!exact::verify_motzkin(motion_system(model, p.mode).with_wrench(g), p.motzkin)) {
         return "the proof for mode " + p.mode.text() + " does not verify";
       }
     }

@@ -339,7 +339,7 @@ TEST(StrongStability, MembershipLpsAgreeWithTheWrenchConeAlgorithm) {
   for (int t = 0; t < 60; ++t) {
     const Vec<Q> g = wrench(d(rng), d(rng), d(rng));
     for (std::size_t i = 0; i < modes.size(); ++i) {
-      const auto ms = motion_system<Q>(scene, modes[i]);
+      const auto ms = motion_system(motion_model<Q>(scene), modes[i]);
       const bool lp =
           exact::strict_feasibility(ms.with_wrench(g), exact::Arith::kExact).status == exact::StrictStatus::kFeasible;
       EXPECT_EQ(lp, geometry::contains_point<Q>(cones[i], g)) << "mode " << modes[i].text() << " g = " << g.transpose();
