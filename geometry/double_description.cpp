@@ -335,6 +335,10 @@ template std::optional<std::vector<std::vector<std::int64_t>>> pointed_cone_rays
     std::vector<std::vector<std::int64_t>>, Index, const DdBudget&);
 template std::optional<std::vector<std::vector<Z>>> pointed_cone_rays<Z>(std::vector<std::vector<Z>>, Index,
                                                                          const DdBudget&);
+template std::optional<std::vector<std::vector<exact::Mpfr>>> pointed_cone_rays<exact::Mpfr>(
+    std::vector<std::vector<exact::Mpfr>>, Index, const DdBudget&);
+template std::optional<std::vector<std::vector<exact::Interval>>> pointed_cone_rays<exact::Interval>(
+    std::vector<std::vector<exact::Interval>>, Index, const DdBudget&);
 
 namespace {
 

@@ -295,6 +295,10 @@ template FaceCone<Q> project_by_polar_rows<Q, std::int64_t>(const std::vector<st
                                                             const std::vector<bool>&, const DdBudget&);
 template FaceCone<Q> project_by_polar_rows<Q, Z>(const std::vector<std::vector<Z>>&, Index, Index,
                                                  const std::vector<bool>&, const DdBudget&);
+template FaceCone<exact::Mpfr> project_by_polar_rows<exact::Mpfr, exact::Mpfr>(
+    const std::vector<std::vector<exact::Mpfr>>&, Index, Index, const std::vector<bool>&, const DdBudget&);
+template FaceCone<exact::Interval> project_by_polar_rows<exact::Interval, exact::Interval>(
+    const std::vector<std::vector<exact::Interval>>&, Index, Index, const std::vector<bool>&, const DdBudget&);
 
 #define CONTACTCERT_PROJECTION_INSTANTIATE(T)                                             \
   template FaceCone<T> project_by_polar<T>(const ProjectionProblem<T>&, const DdBudget&); \
