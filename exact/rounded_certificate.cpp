@@ -1,5 +1,6 @@
 #include "exact/rounded_certificate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -216,7 +217,9 @@ namespace {
 
 // The ring operations the integer checks need, for R = Int128 (every operation overflow-checked: throws
 // RingOverflow) and R = Z.
+bool fits_64(i128 v) { return v == static_cast<i64>(v); }
 i128 times(i128 a, i128 b) {
+  if (fits_64(a) && fits_64(b)) return a * b;  // |a b| < 2^126: no check needed (the common case)
   i128 r;
   if (__builtin_mul_overflow(a, b, &r)) throw RingOverflow{};
   return r;
@@ -235,7 +238,19 @@ i128 minus(i128 a, i128 b) {
 }
 Z minus(const Z& a, const Z& b) { return a - b; }
 /// a / b, known to be exact (b != 0).
-i128 divide_exact(i128 a, i128 b) { return b == -1 ? minus(0, a) : a / b; }
+i128 divide_exact(i128 a, i128 b) {
+  if (b == -1) return minus(0, a);
+  return fits_64(a) && fits_64(b) ? static_cast<i64>(a) / static_cast<i64>(b) : a / b;  // 64-bit division is cheaper
+}
+/// gcd(x, y): Euclid while a number needs more than 64 bits, then std::gcd (binary) in 64 bits.
+u128 gcd_u128(u128 x, u128 y) {
+  while ((x | y) >> 64 != 0) {
+    if (y == 0) return x;
+    x = std::exchange(y, x % y);
+  }
+  return std::gcd(static_cast<std::uint64_t>(x), static_cast<std::uint64_t>(y));
+}
+u128 magnitude(i128 v) { return v < 0 ? -static_cast<u128>(v) : static_cast<u128>(v); }
 Z divide_exact(const Z& a, const Z& b) {
   Z q;
   mpz_divexact(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
@@ -254,9 +269,7 @@ void from_mpz(mpz_srcptr z, i128& out) {
 }
 void from_mpz(mpz_srcptr z, Z& out) { mpz_set(out.get_mpz_t(), z); }
 void lcm_with(i128& acc, i128 d) {
-  i128 a = acc, b = d;  // gcd of two positive numbers
-  while (b != 0) a = std::exchange(b, a % b);
-  acc = times(acc / a, d);
+  acc = times(divide_exact(acc, static_cast<i128>(gcd_u128(magnitude(acc), magnitude(d)))), d);
 }
 void lcm_with(i128& acc, mpz_srcptr d) {
   i128 v;
@@ -274,6 +287,39 @@ Q to_q(i128 v) {
   mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), 64);
   z += static_cast<unsigned long>(u);
   return v < 0 ? Q(-z) : Q(z);
+}
+
+/// gcd(|a|, |b|) (0 if both are 0).
+i128 gcd_of(i128 a, i128 b) {
+  const u128 x = gcd_u128(magnitude(a), magnitude(b));
+  if (x >> 127 != 0) throw RingOverflow{};
+  return static_cast<i128>(x);
+}
+Z gcd_of(const Z& a, const Z& b) {
+  Z r;
+  mpz_gcd(r.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  return r;
+}
+
+/// num / den in lowest terms (den != 0).
+Q quotient(const Z& num, const Z& den) {
+  Q q(num, den);
+  q.canonicalize();
+  return q;
+}
+Q quotient(i128 num, i128 den) {
+  if (num == 0) return Q(0);
+  if (den < 0) num = minus(0, num), den = minus(0, den);
+  const auto g = static_cast<i128>(gcd_u128(magnitude(num), magnitude(den)));
+  num = divide_exact(num, g), den = divide_exact(den, g);
+  Q q;
+  if (num >= INT64_MIN && num <= INT64_MAX && den <= INT64_MAX) {
+    mpq_set_si(q.get_mpq_t(), static_cast<long>(num), static_cast<unsigned long>(den));
+  } else {
+    mpq_set_num(q.get_mpq_t(), to_q(num).get_num_mpz_t());
+    mpq_set_den(q.get_mpq_t(), to_q(den).get_num_mpz_t());
+  }
+  return q;
 }
 
 /// v rounded entry by entry to fractions over their common denominator D: v ~ out / D. False if an entry has
@@ -296,16 +342,20 @@ bool over_common_denominator(const std::vector<double>& v, std::vector<R>& out, 
 
 }  // namespace
 
-template <class R>
-IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b) {
+namespace {
+
+/// The rows of [A_S | b] for the columns S = column(0 .. n-1) of A, each multiplied by the lcm of its
+/// denominators.
+template <class R, class Column>
+IntegerSystem<R> scaled_rows(const Mat<Q>& A, const Vec<Q>& b, Index n, Column column) {
   IntegerSystem<R> s;
-  s.m = A.rows(), s.n = A.cols();
+  s.m = A.rows(), s.n = n;
   s.A.resize(static_cast<std::size_t>(s.m * s.n));
   s.b.resize(static_cast<std::size_t>(s.m));
   s.row_scale.assign(static_cast<std::size_t>(s.m), R(1));
   R den;
   for (Index i = 0; i < s.m; ++i) {
-    auto entry = [&](Index j) -> const Q& { return j < s.n ? A(i, j) : b(i); };
+    auto entry = [&](Index j) -> const Q& { return j < s.n ? A(i, column(j)) : b(i); };
     R& L = s.row_scale[static_cast<std::size_t>(i)];
     for (Index j = 0; j <= s.n; ++j)
       if (!is_one(mpq_denref(entry(j).get_mpq_t()))) lcm_with(L, mpq_denref(entry(j).get_mpq_t()));
@@ -320,10 +370,28 @@ IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b) {
   return s;
 }
 
+}  // namespace
+
 template <class R>
-std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Index>& columns) {
+IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b) {
+  return scaled_rows<R>(A, b, A.cols(), [](Index j) { return j; });
+}
+
+template <class R>
+IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b, const std::vector<Index>& columns) {
+  return scaled_rows<R>(A, b, static_cast<Index>(columns.size()),
+                        [&columns](Index j) { return columns[static_cast<std::size_t>(j)]; });
+}
+
+namespace {
+
+/// The unique solution of A_S x_S = b as fractions x_c = num_c / den_c (see unique_solution); false if there
+/// is none or more than one.
+template <class R>
+bool solve_fraction_free(const IntegerSystem<R>& s, const std::vector<Index>& columns, std::vector<R>& num,
+                         std::vector<R>& den) {
   const auto k = static_cast<Index>(columns.size()), w = k + 1;
-  if (k > s.m) return std::nullopt;
+  if (k > s.m) return false;
   // M = [A_S | b], row-major m x (k + 1).
   std::vector<R> M(static_cast<std::size_t>(s.m * w));
   auto at = [&](Index i, Index j) -> R& { return M[static_cast<std::size_t>(i * w + j)]; };
@@ -332,16 +400,34 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vect
       at(i, c) = s.A[static_cast<std::size_t>(i * s.n + columns[static_cast<std::size_t>(c)])];
     at(i, k) = s.b[static_cast<std::size_t>(i)];
   }
-  // Bareiss: after step c every entry below row c is a minor of M, so the division by the previous pivot is
-  // exact.
+  // Columns of A_S divided by their contents g_c (x_c = x'_c / g_c), then rows of [A_S | b] by theirs: the
+  // minors below shrink by those factors (X's rows from the left null space of P share large ones).
+  std::vector<R> g(static_cast<std::size_t>(k));
+  for (Index c = 0; c < k; ++c) {
+    R& gc = g[static_cast<std::size_t>(c)];
+    for (Index i = 0; i < s.m; ++i) gc = gcd_of(gc, at(i, c));
+    if (sign_of(gc) == 0) return false;  // a zero column: A_S is rank deficient
+    for (Index i = 0; i < s.m; ++i) at(i, c) = divide_exact(at(i, c), gc);
+  }
+  for (Index i = 0; i < s.m; ++i) {
+    R gi(0);
+    for (Index j = 0; j < w; ++j) gi = gcd_of(gi, at(i, j));
+    if (gi > R(1))
+      for (Index j = 0; j < w; ++j) at(i, j) = divide_exact(at(i, j), gi);
+  }
+  // Fraction-free Gauss-Jordan (Bareiss applied above the pivot too): after step c every entry of the
+  // eliminated rows is a (c+1) x (c+1) minor of M, so the division by the previous pivot is exact and no
+  // intermediate exceeds a product of two minors (back substitution would multiply a k x k minor by another).
   R prev(1);
   for (Index c = 0; c < k; ++c) {
     Index p = c;
     while (p < s.m && sign_of(at(p, c)) == 0) ++p;
-    if (p == s.m) return std::nullopt;  // A_S is rank deficient
+    if (p == s.m) return false;  // A_S is rank deficient
     if (p != c)
       for (Index j = c; j < w; ++j) std::swap(at(p, j), at(c, j));
-    for (Index i = c + 1; i < s.m; ++i) {
+    for (Index i = 0; i < s.m; ++i) {
+      if (i == c) continue;
+      if (i < c) at(i, i) = at(c, c);  // (a_cc a_ii - a_ic a_ci) / prev with a_ci = 0, a_ii = prev
       for (Index j = c + 1; j < w; ++j)
         at(i, j) = divide_exact(minus(times(at(c, c), at(i, j)), times(at(i, c), at(c, j))), prev);
       at(i, c) = 0;
@@ -349,19 +435,107 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vect
     prev = at(c, c);
   }
   for (Index i = k; i < s.m; ++i)
-    if (sign_of(at(i, k)) != 0) return std::nullopt;  // inconsistent
-  // d = prev (the last pivot, a k x k minor of A_S); N_i = d x_i are integers (Cramer's rule), and
-  // a_ii N_i = d b_i - sum_{j > i} a_ij N_j row by row from the bottom.
-  std::vector<R> N(static_cast<std::size_t>(k));
-  for (Index i = k - 1; i >= 0; --i) {
-    R acc = times(prev, at(i, k));
-    for (Index j = i + 1; j < k; ++j) acc = minus(acc, times(at(i, j), N[static_cast<std::size_t>(j)]));
-    N[static_cast<std::size_t>(i)] = divide_exact(acc, at(i, i));
+    if (sign_of(at(i, k)) != 0) return false;  // inconsistent
+  // Now M = [d I | d x'_S] on its first k rows, d = prev a k x k minor (Cramer's rule); x_c = x'_c / g_c.
+  num.resize(static_cast<std::size_t>(k));
+  den.resize(static_cast<std::size_t>(k));
+  for (Index i = 0; i < k; ++i) {
+    num[static_cast<std::size_t>(i)] = at(i, k);
+    den[static_cast<std::size_t>(i)] = times(prev, g[static_cast<std::size_t>(i)]);
   }
-  Vec<Q> x(k);
-  const Q d = to_q(prev);
-  for (Index i = 0; i < k; ++i) x(i) = to_q(N[static_cast<std::size_t>(i)]) / d;
+  return true;
+}
+
+/// Y as a Farkas vector of the rows of s if it is one: Y^T b < 0 and Y^T A_j >= 0 unless j is in `zero`; the
+/// result is y_i = row_scale_i Y_i (for the rows before scaling) with its negative columns.
+template <class R>
+std::optional<FarkasVector> checked_farkas(const IntegerSystem<R>& s, const std::vector<R>& Y,
+                                           const std::vector<bool>& zero) {
+  R acc(0);
+  for (Index i = 0; i < s.m; ++i)
+    acc = plus(acc, times(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+  if (sign_of(acc) >= 0) return std::nullopt;
+  FarkasVector f;
+  for (Index j = 0; j < s.n; ++j) {  // column by column over the rows with Y_i != 0
+    acc = 0;
+    for (Index i = 0; i < s.m; ++i)
+      if (sign_of(Y[static_cast<std::size_t>(i)]) != 0)
+        acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + j)], Y[static_cast<std::size_t>(i)]));
+    if (sign_of(acc) >= 0) continue;
+    if (!zero[static_cast<std::size_t>(j)]) return std::nullopt;
+    f.negative.push_back(j);
+  }
+  f.y = Vec<Q>(s.m);
+  for (Index i = 0; i < s.m; ++i)
+    f.y(i) = to_q(times(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+  return f;
+}
+
+std::vector<Index> all_columns(Index n) {
+  std::vector<Index> all(static_cast<std::size_t>(n));
+  std::iota(all.begin(), all.end(), Index(0));
+  return all;
+}
+
+}  // namespace
+
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s) {
+  return unique_solution(s, all_columns(s.n));
+}
+
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Index>& columns) {
+  std::vector<R> num, den;
+  if (!solve_fraction_free(s, columns, num, den)) return std::nullopt;
+  Vec<Q> x(static_cast<Index>(num.size()));
+  for (std::size_t i = 0; i < num.size(); ++i) x(static_cast<Index>(i)) = quotient(num[i], den[i]);
   return x;
+}
+
+template <class R>
+std::optional<FarkasVector> basis_farkas(const IntegerSystem<R>& s, const Vec<double>& y_approx,
+                                         const std::vector<Index>& basis, const std::vector<bool>& zero) {
+  // Phase 1 ends with duals y, B^T y = c_B (cost 1 on artificials), and reports f = -y: f^T A_v = 0 for every
+  // structural v of the basis, and f_i = -sign(b_i) w_i for the artificial n + i of row i, where w_i = 1, or
+  // the power of two the float simplex scaled row i by. Those entries are taken from y_approx, rounded to
+  // signed powers of two; in the rows of s (row i times L_i) they read L_i f'_i = f_i.
+  const Index m = s.m;
+  if (y_approx.size() != m) return std::nullopt;
+  if (static_cast<Index>(basis.size()) != m) return std::nullopt;
+  IntegerSystem<R> t;
+  t.m = t.n = m;
+  t.A.assign(static_cast<std::size_t>(m * m), R(0));
+  t.b.assign(static_cast<std::size_t>(m), R(0));
+  for (Index r = 0; r < m; ++r) {
+    const Index v = basis[static_cast<std::size_t>(r)];
+    if (v < 0 || v >= s.n + m) return std::nullopt;
+    if (v < s.n) {
+      for (Index i = 0; i < m; ++i)
+        t.A[static_cast<std::size_t>(r * m + i)] = s.A[static_cast<std::size_t>(i * s.n + v)];
+    } else {
+      const Index i = v - s.n;
+      const double f = y_approx(i);
+      if (f == 0 || !std::isfinite(f)) return std::nullopt;
+      const int e = static_cast<int>(std::lround(std::log2(std::abs(f))));  // |f_i| = 2^e
+      if (e < -62 || e > 62) return std::nullopt;
+      const R power(std::int64_t(1) << (e < 0 ? -e : e));
+      const R& L = s.row_scale[static_cast<std::size_t>(i)];
+      t.A[static_cast<std::size_t>(r * m + i)] = e < 0 ? times(L, power) : L;
+      t.b[static_cast<std::size_t>(r)] = R(f < 0 ? -1 : 1) * (e < 0 ? R(1) : power);
+    }
+  }
+  std::vector<R> num, den;
+  if (!solve_fraction_free(t, all_columns(m), num, den)) return std::nullopt;
+  // f = F / G over the positive common denominator G.
+  R G(1);
+  for (std::size_t i = 0; i < num.size(); ++i) {
+    if (sign_of(den[i]) < 0) num[i] = minus(R(0), num[i]), den[i] = minus(R(0), den[i]);
+    G = times(divide_exact(G, gcd_of(G, den[i])), den[i]);
+  }
+  std::vector<R> F(num.size());
+  for (std::size_t i = 0; i < num.size(); ++i) F[i] = times(num[i], divide_exact(G, den[i]));
+  return checked_farkas(s, F, zero);
 }
 
 template <class R>
@@ -384,48 +558,40 @@ std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>
     if (acc != times(D, s.b[static_cast<std::size_t>(i)])) return std::nullopt;
   }
   Vec<Q> x = Vec<Q>::Zero(s.n);
-  const Q d = to_q(D);
   for (std::size_t t = 0; t < support.size(); ++t)
-    if (sign_of(X[t]) != 0) x(support[t]) = to_q(X[t]) / d;
+    if (sign_of(X[t]) != 0) x(support[t]) = quotient(X[t], D);
   return x;
 }
 
 template <class R>
 std::optional<FarkasVector> rounded_farkas(const IntegerSystem<R>& s, const Vec<double>& y_approx,
                                            const std::vector<bool>& zero) {
+  // A positive multiple of a Farkas vector is one: scaled to max-norm 1 before rounding, so that a float
+  // vector of tiny entries (rows equilibrated by the float simplex) does not round to 0.
   std::vector<double> ys(static_cast<std::size_t>(s.m));
-  for (Index i = 0; i < s.m; ++i)
+  double norm = 0;
+  for (Index i = 0; i < s.m; ++i) {
     ys[static_cast<std::size_t>(i)] = y_approx(i) / to_double(s.row_scale[static_cast<std::size_t>(i)]);
+    norm = std::max(norm, std::abs(ys[static_cast<std::size_t>(i)]));
+  }
+  if (!(norm > 0) || !std::isfinite(norm)) return std::nullopt;
+  for (double& v : ys) v /= norm;
   std::vector<R> Y;
   R E;
   if (!over_common_denominator(ys, Y, E)) return std::nullopt;
-  // Y^T b < 0, and Y^T A_j >= 0 unless j is in `zero`, column by column over the rows with Y_i != 0.
-  R acc(0);
-  for (Index i = 0; i < s.m; ++i)
-    acc = plus(acc, times(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
-  if (sign_of(acc) >= 0) return std::nullopt;
-  FarkasVector f;
-  for (Index j = 0; j < s.n; ++j) {
-    acc = 0;
-    for (Index i = 0; i < s.m; ++i)
-      if (sign_of(Y[static_cast<std::size_t>(i)]) != 0)
-        acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + j)], Y[static_cast<std::size_t>(i)]));
-    if (sign_of(acc) >= 0) continue;
-    if (!zero[static_cast<std::size_t>(j)]) return std::nullopt;
-    f.negative.push_back(j);
-  }
-  f.y = Vec<Q>(s.m);
-  for (Index i = 0; i < s.m; ++i)
-    f.y(i) = to_q(times(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
-  return f;
+  return checked_farkas(s, Y, zero);
 }
 
-#define CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(R)                                                        \
-  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                             \
-  template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Index>&); \
-  template std::optional<Vec<Q>> rounded_point<R>(const IntegerSystem<R>&, const Vec<double>&,           \
-                                                  const std::vector<bool>&);                             \
-  template std::optional<FarkasVector> rounded_farkas<R>(const IntegerSystem<R>&, const Vec<double>&,    \
+#define CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(R)                                                            \
+  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                                 \
+  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Index>&);      \
+  template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&);                                \
+  template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Index>&);     \
+  template std::optional<Vec<Q>> rounded_point<R>(const IntegerSystem<R>&, const Vec<double>&,               \
+                                                  const std::vector<bool>&);                                 \
+  template std::optional<FarkasVector> basis_farkas<R>(const IntegerSystem<R>&, const Vec<double>&,          \
+                                                       const std::vector<Index>&, const std::vector<bool>&); \
+  template std::optional<FarkasVector> rounded_farkas<R>(const IntegerSystem<R>&, const Vec<double>&,        \
                                                          const std::vector<bool>&);
 CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(i128)
 CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(Z)

@@ -71,12 +71,18 @@ struct IntegerSystem {
 
 template <class R>
 IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b);
+/// The rows of A_S x_S = b for the given columns S of A (in order; row scales from those entries only).
+template <class R>
+IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b, const std::vector<Eigen::Index>& columns);
 
-/// The unique solution x_S of A_S x_S = b (A_S: the given columns of A, in order), by fraction-free (Bareiss)
-/// elimination in R and fraction-free back substitution: x_S = N / d with d a minor of A_S. nullopt if A_S
-/// does not have full column rank or the system is inconsistent.
+/// The unique solution x_S of A_S x_S = b (A_S: the given columns of A, in order), by fraction-free
+/// Gauss-Jordan (Bareiss) elimination in R after dividing out column and row contents: x_S = N / d with d a
+/// minor of A_S. nullopt if A_S does not have full column rank or the system is inconsistent.
 template <class R>
 std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Eigen::Index>& columns);
+/// The same over all columns of s.
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s);
 
 /// A point of the face {x >= 0 : A x = b, x_j = 0 where zero[j]} near x_approx: the entries off `zero`
 /// rounded to fractions (continued-fraction convergents, denominators <= 2^30) over their common denominator
@@ -93,18 +99,32 @@ struct FarkasVector {
 
 /// A Farkas vector y proving that face empty, near y_approx (a float one for the rows of A x = b):
 /// y^T A_j >= 0 for every j off `zero` and y^T b < 0 (then no x >= 0 of the face has A x = b). The entries
-/// y_approx_i / row_scale_i are rounded to fractions Y_i / E and checked against the integer rows; the
+/// y_approx_i / row_scale_i, scaled to max-norm 1, are rounded to fractions Y_i / E and checked against the
+/// integer rows; the
 /// result is y_i = row_scale_i Y_i, a positive multiple of the rounded vector, with its negative columns
 /// (all in `zero`). nullopt if a rounding or the check fails.
 template <class R>
 std::optional<FarkasVector> rounded_farkas(const IntegerSystem<R>& s, const Vec<double>& y_approx,
                                            const std::vector<bool>& zero);
 
+/// The Farkas vector y_approx of a float phase-1 basis (columns of A, and n + i for the artificial of row i),
+/// recomputed exactly: f with f^T A_v = 0 on the basis' structural columns and, on its artificial rows, the
+/// entries of y_approx rounded to signed powers of two (the artificials' costs on rows the float simplex
+/// scaled by powers of two), solved by fraction-free elimination in R and checked as rounded_farkas checks.
+/// nullopt if the basis is singular or f is not a Farkas vector for `zero`.
+template <class R>
+std::optional<FarkasVector> basis_farkas(const IntegerSystem<R>& s, const Vec<double>& y_approx,
+                                         const std::vector<Eigen::Index>& basis, const std::vector<bool>& zero);
+
 #define CONTACTCERT_INTEGER_SYSTEM_EXTERN(R)                                                                           \
   extern template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                                    \
+  extern template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Eigen::Index>&);  \
+  extern template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&);                                   \
   extern template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Eigen::Index>&); \
   extern template std::optional<Vec<Q>> rounded_point<R>(const IntegerSystem<R>&, const Vec<double>&,                  \
                                                          const std::vector<bool>&);                                    \
+  extern template std::optional<FarkasVector> basis_farkas<R>(                                                         \
+      const IntegerSystem<R>&, const Vec<double>&, const std::vector<Eigen::Index>&, const std::vector<bool>&);        \
   extern template std::optional<FarkasVector> rounded_farkas<R>(const IntegerSystem<R>&, const Vec<double>&,           \
                                                                 const std::vector<bool>&);
 CONTACTCERT_INTEGER_SYSTEM_EXTERN(Int128)

@@ -25,7 +25,9 @@ exact::LpResult<T> run_lp(const exact::LpProblem<T>& lp, Arith arith) {
     if (arith == Arith::kAdaptive) return exact::solve_lp_ladder(lp, exact::adaptive_ladder());
   }
   (void)arith;
-  return exact::solve_lp<T>(lp);
+  exact::LpOptions options;
+  options.equilibrate = true;  // X's rows from the left null space of P can be of size 1e9 (Data Set 4)
+  return exact::solve_lp<T>(lp, options);
 }
 }  // namespace
 
@@ -60,6 +62,8 @@ FaceLpResult<T> minimize_on_face(const Face<T>& F, const Vec<T>& c, Arith arith,
   if (r.status == exact::LpStatus::kInfeasible) {
     out.status = FaceLpStatus::kEmpty;
     out.farkas = r.farkas;
+    for (Index v : r.basis)
+      out.farkas_basis.push_back(v < nr ? F.columns[static_cast<std::size_t>(v)] : F.n + (v - nr));
     return out;
   }
   if (r.status != exact::LpStatus::kOptimal)

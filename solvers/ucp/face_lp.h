@@ -49,6 +49,8 @@ struct FaceLpResult {
   FaceLpStatus status = FaceLpStatus::kEmpty;
   FaceVertex<T> vertex;
   Vec<T> farkas;
+  /// kEmpty: the phase-1 basis whose duals give `farkas`, in P's columns (n + i: the artificial of row i).
+  std::vector<Eigen::Index> farkas_basis;
 };
 
 /// Minimises c^T x (c in P's coordinates, c >= 0 so the LP is bounded) over the face; counts one LP.

@@ -100,9 +100,13 @@ class LeafProver {
     }
     const StandardPolyhedron<Q>& P = s == 0 ? ucp_.X : ucp_.Y;
     const Vec<double>& approx = farkas_[k];
+    const std::vector<Index>& basis = out_.result.tree[k].farkas_basis;
     if (approx.size() == P.A.rows()) {
-      std::optional<exact::FarkasVector> f =
-          rows_[s].run([&](const auto& system) { return exact::rounded_farkas(system, approx, zero); });
+      // The float vector rounded to fractions, else recomputed exactly from its LP's basis.
+      std::optional<exact::FarkasVector> f = rows_[s].run([&](const auto& system) {
+        std::optional<exact::FarkasVector> r = exact::rounded_farkas(system, approx, zero);
+        return r || basis.empty() ? r : exact::basis_farkas(system, approx, basis, zero);
+      });
       if (f) {
         proven_[s].push_back({f->y, std::move(f->negative)});
         return std::move(f->y);
@@ -135,21 +139,22 @@ std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, c
   for (std::size_t i = 0; i < x_zero.size(); ++i) assert(x_zero[i] || y_zero[i]);
   const auto point = [&](const StandardPolyhedron<Q>& P, const Vec<double>& approx,
                          const std::vector<bool>& zero) -> std::optional<Vec<Q>> {
-    IntegerRows rows(P);
-    // A vertex (the search's points are): its support columns are independent, so A_S x_S = b has one solution.
+    // A vertex (the search's points are): its support columns are independent, so A_S x_S = b has one solution
+    // (only those columns become integers).
     std::vector<Index> support;
     for (Index j = 0; j < ucp.n(); ++j)
       if (!zero[static_cast<std::size_t>(j)]) support.push_back(j);
-    if (std::optional<Vec<Q>> xs =
-            rows.run([&](const auto& system) { return exact::unique_solution(system, support); })) {
+    if (std::optional<Vec<Q>> xs = exact::with_exact_ring<Q, exact::Int128>(
+            [&]<class R>() { return exact::unique_solution(exact::integer_system<R>(P.A, P.b, support)); })) {
       Vec<Q> x = Vec<Q>::Zero(ucp.n());
       bool nonnegative = true;
       for (std::size_t t = 0; t < support.size(); ++t) {
         nonnegative = nonnegative && sgn((*xs)(static_cast<Index>(t))) >= 0;
-        x(support[t]) = (*xs)(static_cast<Index>(t));
+        swap(x(support[t]), (*xs)(static_cast<Index>(t)));
       }
       if (nonnegative) return x;
     }
+    IntegerRows rows(P);
     if (std::optional<Vec<Q>> x =
             rows.run([&](const auto& system) { return exact::rounded_point(system, approx, zero); }))
       return x;

@@ -16,14 +16,15 @@ namespace contactcert::solvers::ucp {
 /// where x_zero[i], y in Y with y_i = 0 where y_zero[i]. Every index must be in one pattern (then x^T y = 0).
 /// Each side is first the exact solution on the float point's support if it is unique and >= 0 (a vertex:
 /// exact::unique_solution), else the float point rounded to fractions and checked (exact::rounded_point), both
-/// in 128-bit integers with a restart in GMP on overflow, else an exact face LP. nullopt if one of the two faces is empty
-/// in exact arithmetic.
+/// in 128-bit integers with a restart in GMP on overflow, else an exact face LP. nullopt if one of the two faces is
+/// empty in exact arithmetic.
 std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, const Vec<double>& x_approx,
                                                     const Vec<double>& y_approx, const std::vector<bool>& x_zero,
                                                     const std::vector<bool>& y_zero, LpCounters& count);
 
-/// The search tree of a float "jammed" verdict: its shape (branches, children, the side of each leaf; no
-/// Farkas vectors) and, per node, the float Farkas vector of a leaf (empty where there is none).
+/// The search tree of a float "jammed" verdict: its shape (branches, children, the side of each leaf and the
+/// basis of its LP; no Farkas vectors) and, per node, the float Farkas vector of a leaf (empty where there is
+/// none).
 struct FloatTree {
   std::vector<SearchNode<Q>> nodes;
   std::vector<Vec<double>> farkas;
@@ -40,9 +41,10 @@ struct ProvenTree {
 
 /// Turns a float search tree into an exact proof: every leaf gets an exact Farkas vector for the face its
 /// path fixes on its side: an earlier leaf's vector if it covers the fixings (as the search's learning does),
-/// else the leaf's float vector rounded to fractions and checked in integers (exact::rounded_farkas), else
-/// that of an exact face LP. A leaf whose face is not empty in exact arithmetic is repaired when `repair`
-/// is given: the exact search continues below it with those options (search_subtree), and only there.
+/// else the leaf's float vector rounded to fractions and checked in integers (exact::rounded_farkas), else the
+/// duals of its float LP's basis solved exactly (exact::basis_farkas), else that of an exact face LP. A leaf whose face
+/// is not empty in exact arithmetic is repaired when `repair` is given: the exact search continues below it with those
+/// options (search_subtree), and only there.
 ProvenTree prove_leaves(const UcpInstance<Q>& ucp, FloatTree tree, const std::optional<SearchOptions>& repair);
 
 }  // namespace contactcert::solvers::ucp

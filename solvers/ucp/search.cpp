@@ -16,6 +16,7 @@ template <class T>
 struct Learned {
   std::vector<Index> negative;
   Vec<T> farkas;
+  std::vector<Index> farkas_basis;
 };
 
 /// Thrown out of the recursion when the node or time budget runs out.
@@ -85,6 +86,7 @@ class Search {
       if (covers) {
         node.side = side;
         node.farkas = l.farkas;
+        node.farkas_basis = l.farkas_basis;
         ++out_.learned_prunes;
         return std::nullopt;
       }
@@ -94,11 +96,13 @@ class Search {
     const StandardPolyhedron<T>& P = side == Side::kX ? ucp_.X : ucp_.Y;
     Learned<T> l;
     l.farkas = r.farkas;
+    l.farkas_basis = r.farkas_basis;
     const Vec<T> g = P.A.transpose() * r.farkas;
     for (Index j = 0; j < n_; ++j)
       if (exact::is_negative(g(j))) l.negative.push_back(j);
     out_.tree[static_cast<std::size_t>(id)].side = side;
     out_.tree[static_cast<std::size_t>(id)].farkas = r.farkas;
+    out_.tree[static_cast<std::size_t>(id)].farkas_basis = std::move(r.farkas_basis);
     learned.push_back(std::move(l));
     return std::nullopt;
   }

@@ -29,6 +29,9 @@ struct SearchNode {
   long child_x_zero = -1, child_y_zero = -1;
   Side side = Side::kX;
   Vec<T> farkas;
+  /// Leaf: the basis of the LP that found `farkas` (FaceLpResult::farkas_basis; empty if unknown). Lets a
+  /// float tree's leaf be proven exactly from its basis (float_check.h).
+  std::vector<Eigen::Index> farkas_basis;
   bool is_leaf() const { return branch < 0; }
 };
 

@@ -52,18 +52,19 @@ void record_tree(FloatEvidence* ev, const std::vector<SearchNode<T>>& tree) {
     ev->tree.nodes[k].child_x_zero = tree[k].child_x_zero;
     ev->tree.nodes[k].child_y_zero = tree[k].child_y_zero;
     ev->tree.nodes[k].side = tree[k].side;
+    ev->tree.nodes[k].farkas_basis = tree[k].farkas_basis;
     ev->tree.farkas[k] = approx(tree[k].farkas);
   }
 }
 
 template <class T>
-void fill_pair(UcpReport& rep, const Vec<T>& x, const Vec<T>& y, const UcpProblem& problem) {
+void fill_pair(UcpReport& rep, Vec<T> x, Vec<T> y, const UcpProblem& problem) {
   if constexpr (std::is_same_v<T, Q>) {
-    rep.x = x, rep.y = y;
     if (problem.quasistatic) {
       rep.physical = recover(*problem.quasistatic, x, y);
       if (rep.physical) rep.conditions = check_conditions(*problem.quasistatic, *rep.physical);
     }
+    rep.x = std::move(x), rep.y = std::move(y);
   } else {
     (void)problem;
     rep.x_approx = approx(x), rep.y_approx = approx(y);
@@ -122,8 +123,8 @@ void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& o
       case BilinearStatus::kComplementary:
         rep.status = UcpStatus::kSolvable;
         rep.reason = "x^T y = 0 reached by the bilinear algorithm";
-        fill_pair(rep, b.x.x, b.y.x, problem);
         record_pattern(ev, b.x.x, b.y.x);
+        fill_pair(rep, b.x.x, b.y.x, problem);
         set_best(rep, b.xTy);
         break;
       case BilinearStatus::kStopped:
@@ -170,8 +171,8 @@ void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& o
   rep.learned_prunes = s.learned_prunes;
   set_best(rep, s.xTy);
   if (s.status == UcpStatus::kSolvable) {
-    fill_pair(rep, s.x, s.y, problem);
     record_pattern(ev, s.x, s.y);
+    fill_pair(rep, std::move(s.x), std::move(s.y), problem);
   }
   if constexpr (std::is_same_v<T, Q>) {
     if (s.status == UcpStatus::kJammed) rep.proof = std::move(s);
@@ -197,10 +198,10 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOpti
   }
   LpCounters check;
   if (r.status == UcpStatus::kSolvable) {
-    const std::optional<std::pair<Vec<Q>, Vec<Q>>> pair =
+    std::optional<std::pair<Vec<Q>, Vec<Q>>> pair =
         exact_pair(problem.ucp, r.x_approx, r.y_approx, ev.x_zero, ev.y_zero, check);
     if (!pair) return false;
-    fill_pair(r, pair->first, pair->second, problem);
+    fill_pair(r, std::move(pair->first), std::move(pair->second), problem);
     r.x_approx = r.y_approx = Vec<double>();
     r.best_xTy = Q(0);
   } else if (r.status == UcpStatus::kJammed) {
@@ -217,7 +218,7 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOpti
     if (proven.result.status == UcpStatus::kSolvable) {
       r.status = UcpStatus::kSolvable;
       r.reason = "complete search (below a leaf of the float search tree whose face is not empty)";
-      fill_pair(r, proven.result.x, proven.result.y, problem);
+      fill_pair(r, std::move(proven.result.x), std::move(proven.result.y), problem);
       r.best_xTy = Q(0);
     } else if (proven.result.status == UcpStatus::kJammed) {
       // As complete_search names it (a repair may have grown a root leaf into a tree).
@@ -351,7 +352,7 @@ UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts) {
     else
       rep.reason = std::to_string(e.solutions) + " of " + std::to_string(e.lps) + " modes have a solution" +
                    (e.complete ? "" : " (" + deadline.reached_text() + " before all modes were tested)");
-    if (e.solutions > 0) fill_pair(rep, e.x, e.y, problem);
+    if (e.solutions > 0) fill_pair(rep, std::move(e.x), std::move(e.y), problem);
   } else if (opts.arith == Arith::kFloat) {
     run_float(problem, opts, deadline, rep);
   } else if (opts.arith == Arith::kAdaptive) {

@@ -6,7 +6,9 @@
 #include <random>
 
 #include "exact/json_input.h"
+#include "exact/rounded_certificate.h"
 #include "solvers/ucp/certificate.h"
+#include "solvers/ucp/face_lp.h"
 #include "solvers/ucp/float_check.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/solve.h"
@@ -175,6 +177,69 @@ TEST(UcpAdaptive, IntegerChecksThatOverflow128BitsRestartInGmp) {
   EXPECT_EQ(count.lps, 0);  // checked in integers (in GMP after the 128-bit overflow), no LP
   EXPECT_EQ(pair->first(0), Q(1, 3));
   EXPECT_EQ(pair->first(1), Q(1, 3));
+}
+
+TEST(UcpAdaptive, PaperDataSetsAreDecidedInDoubleWithoutARepairedLeaf) {
+  // Data Set 4's X has rows of size 1e9 (the left null space of P): before the float simplex equilibrated such
+  // rows, a phase-1 residual of rounding size called a non-empty face empty (with a zero Farkas vector) and
+  // the adaptive check had to repair that leaf with an exact search.
+  for (int k = 1; k <= 4; ++k) {
+    const UcpProblem p =
+        load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json");
+    const std::string what = "Data Set " + std::to_string(k);
+    expect_certified_like_exact(p, what);
+    const UcpReport a = solve(p, Arith::kAdaptive);
+    EXPECT_EQ(a.decided_by, "double") << what;
+    EXPECT_EQ(a.repaired_leaves, 0) << what;
+  }
+}
+
+TEST(UcpAdaptive, ALeafIsProvenFromItsFloatLpBasisWhenRoundingFails) {
+  // X = {x in R^2_+ : x0 + x1 = 1, x0 + x1 = 2} is empty, Farkas vector (1, -1); Y = {y in R^2_+ : y0 + y1 = 1}.
+  UcpProblem p;
+  p.ucp.X.A = Mat<Q>(2, 2);
+  p.ucp.X.A << 1, 1, 1, 1;
+  p.ucp.X.b = Vec<Q>(2);
+  p.ucp.X.b << 1, 2;
+  p.ucp.Y.A = Mat<Q>(1, 2);
+  p.ucp.Y.A << 1, 1;
+  p.ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  LpCounters count;
+  const FaceLpResult<double> f = minimize_on_face(make_face(convert<double>(p.ucp).X, {}),
+                                                  Vec<double>(Vec<double>::Zero(2)), Arith::kFloat, count);
+  ASSERT_EQ(f.status, FaceLpStatus::kEmpty);
+  ASSERT_EQ(f.farkas_basis.size(), 2u);
+  // A float vector 1e-7 off: its rounding has y^T A_0 < 0, so only the basis proves the leaf without an LP.
+  FloatTree root;
+  root.nodes.resize(1);
+  root.nodes[0].farkas_basis = f.farkas_basis;
+  root.farkas = {f.farkas};
+  root.farkas[0](1) *= 1 + 1e-7;
+  const ProvenTree proven = prove_leaves(p.ucp, root, std::nullopt);
+  ASSERT_EQ(proven.result.status, UcpStatus::kJammed);
+  EXPECT_EQ(proven.result.counters.lps, 0);
+  expect_valid_jammed_certificate(p, proven.result);
+  // Without the basis the leaf needs an exact face LP.
+  root.nodes[0].farkas_basis.clear();
+  const ProvenTree by_lp = prove_leaves(p.ucp, root, std::nullopt);
+  ASSERT_EQ(by_lp.result.status, UcpStatus::kJammed);
+  EXPECT_EQ(by_lp.result.counters.lps, 1);
+}
+
+TEST(UcpAdaptive, VertexOfDataSet1IsSolvedIn128BitsWithoutOverflow) {
+  // X of Data Set 1 has rows of size 3e8 (b scaled by 50): Cramer's rule by back substitution needed 136-bit
+  // products; after dividing out column contents the fraction-free Gauss-Jordan stays within 66 bits.
+  const UcpProblem p = load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset1.json");
+  const std::vector<Eigen::Index> support{2, 6, 8};
+  std::optional<Vec<Q>> x;
+  ASSERT_NO_THROW(x = exact::unique_solution(exact::integer_system<exact::Int128>(p.ucp.X.A, p.ucp.X.b, support)));
+  ASSERT_TRUE(x);
+  const auto z = exact::unique_solution(exact::integer_system<exact::Z>(p.ucp.X.A, p.ucp.X.b, support));
+  ASSERT_TRUE(z);
+  EXPECT_EQ(*x, *z);
+  Vec<Q> full = Vec<Q>::Zero(9);
+  for (std::size_t t = 0; t < support.size(); ++t) full(support[t]) = (*x)(static_cast<Eigen::Index>(t));
+  EXPECT_EQ(p.ucp.X.A * full, p.ucp.X.b);
 }
 
 }  // namespace
