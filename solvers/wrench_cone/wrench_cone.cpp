@@ -51,17 +51,7 @@ void reduce_rows(std::vector<std::vector<R>>& rows, Index d, Index k) {
 template <class T, class R>
 geometry::ProjectionProblem<T> to_problem(const std::vector<std::vector<R>>& rows, Index d, Index k,
                                           const std::vector<bool>& strict) {
-  geometry::ProjectionProblem<T> out;
-  const auto m = static_cast<Index>(rows.size());
-  out.K.resize(m, k);
-  out.P.resize(m, d);
-  for (Index i = 0; i < m; ++i) {
-    const std::vector<R>& row = rows[static_cast<std::size_t>(i)];
-    for (Index j = 0; j < d; ++j) out.P(i, j) = rg::to_field<T>(row[static_cast<std::size_t>(j)]);
-    for (Index j = 0; j < k; ++j) out.K(i, j) = rg::to_field<T>(row[static_cast<std::size_t>(d + j)]);
-  }
-  out.strict = strict;
-  return out;
+  return {rg::to_field_rows<T>(rows, k, d), rg::to_field_rows<T>(rows, d), strict};
 }
 
 // The RingForm of the mode, row-reduced.
@@ -84,16 +74,10 @@ geometry::FaceCone<T> run_route(const geometry::ProjectionProblem<T>& problem, R
 
 template <class T>
 geometry::ProjectionProblem<T> row_reduced(const ConeForm<T>& form) {
-  const Index m = form.K.rows(), k = form.K.cols(), d = form.P.cols(), w = d + k;
-  if (m == 0) return {form.K, form.P, form.strict};
+  const Index k = form.K.cols(), d = form.P.cols();
+  if (form.K.rows() == 0) return {form.K, form.P, form.strict};
   return exact::with_exact_ring<T>([&]<class R>() {
-    std::vector<std::vector<R>> rows(static_cast<std::size_t>(m), std::vector<R>(static_cast<std::size_t>(w)));
-    std::vector<T> buf(static_cast<std::size_t>(w));
-    for (Index i = 0; i < m; ++i) {
-      for (Index j = 0; j < d; ++j) buf[static_cast<std::size_t>(j)] = form.P(i, j);
-      for (Index j = 0; j < k; ++j) buf[static_cast<std::size_t>(d + j)] = form.K(i, j);
-      rg::to_ring(buf.data(), w, rows[static_cast<std::size_t>(i)].data());
-    }
+    std::vector<std::vector<R>> rows = rg::to_ring_rows<R>(form.P, form.K);
     reduce_rows<R>(rows, d, k);
     return to_problem<T, R>(rows, d, k, form.strict);
   });
