@@ -73,17 +73,6 @@ geometry::FaceCone<T> run_route(const geometry::ProjectionProblem<T>& problem, R
 }  // namespace
 
 template <class T>
-geometry::ProjectionProblem<T> row_reduced(const ConeForm<T>& form) {
-  const Index k = form.K.cols(), d = form.P.cols();
-  if (form.K.rows() == 0) return {form.K, form.P, form.strict};
-  return exact::with_exact_ring<T>([&]<class R>() {
-    std::vector<std::vector<R>> rows = rg::to_ring_rows<R>(form.P, form.K);
-    reduce_rows<R>(rows, d, k);
-    return to_problem<T, R>(rows, d, k, form.strict);
-  });
-}
-
-template <class T>
 geometry::FaceCone<T> wrench_cone_face(const geometry::PlanarScene& scene, const ContactModel<T>& model,
                                        const ModeString& mode, Route route, const geometry::DdBudget& budget,
                                        Preconditioning pre) {
@@ -91,9 +80,9 @@ geometry::FaceCone<T> wrench_cone_face(const geometry::PlanarScene& scene, const
     const ConeForm<T> form = cone_form(scene, model, mode);
     return run_route<T>({form.K, form.P, form.strict}, route, budget);
   }
-  // K z = P g read from the model in the ring and row-reduced there (the same cone as row_reduced of
-  // cone_form: the rows differ by positive factors, the columns of K by positive factors); the paper's
-  // route stays in the ring up to the canonical face form.
+  // K z = P g read from the model in the ring and row-reduced there (the same cone as row-reducing the
+  // rows [P | K] of cone_form: the rows differ by positive factors, the columns of K by positive
+  // factors); the paper's route stays in the ring up to the canonical face form.
   if (route == Route::kPaper)
     return exact::with_exact_ring<T>([&]<class R>() {
       const RingForm<R> form = reduced_form<R>(scene, model, mode);
@@ -114,10 +103,9 @@ WrenchCone<T> wrench_cone(const geometry::PlanarScene& scene, const ModeString& 
   out.route = route;
   const ContactModel<T> model = contact_model<T>(scene);
   out.form = cone_form(scene, model, mode);
-  const geometry::FaceCone<T> face = run_route<T>(
-      pre == Preconditioning::kRowReduce ? row_reduced(out.form)
-                                         : geometry::ProjectionProblem<T>{out.form.K, out.form.P, out.form.strict},
-      route, budget);
+  const geometry::FaceCone<T> face = pre == Preconditioning::kRowReduce
+                                         ? wrench_cone_face(scene, model, mode, route, budget, pre)
+                                         : run_route<T>({out.form.K, out.form.P, out.form.strict}, route, budget);
   out.cone = geometry::nnc_form(face, budget);
   out.status = out.cone.status == geometry::NncStatus::kEmpty ? ConeStatus::kEmpty : ConeStatus::kNonEmpty;
   return out;
@@ -146,7 +134,6 @@ geometry::AffineFace<T> wrench_set_with_minimum_acceleration(const geometry::Pla
 }
 
 #define CONTACTCERT_WRENCH_CONE_INSTANTIATE(T)                                                             \
-  template geometry::ProjectionProblem<T> row_reduced<T>(const ConeForm<T>&);                              \
   template geometry::FaceCone<T> wrench_cone_face<T>(const geometry::PlanarScene&, const ContactModel<T>&, \
                                                      const ModeString&, Route, const geometry::DdBudget&,  \
                                                      Preconditioning);                                     \
