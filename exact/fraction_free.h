@@ -8,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -175,21 +176,6 @@ inline void to_ring(const double* row, Index k, double* out) {
   normalize(out, k);
 }
 
-/// The rows of A (any Eigen expression over the field T) as ring rows, flat and row-major: row i is
-/// the positive multiple of A's row i that to_ring gives (a zero row stays zero).
-template <class R, class Derived>
-std::vector<R> to_ring_rows(const Eigen::MatrixBase<Derived>& A) {
-  using T = typename Derived::Scalar;
-  const Index k = A.cols();
-  std::vector<R> out(static_cast<std::size_t>(A.rows() * k));
-  std::vector<T> row(static_cast<std::size_t>(k));
-  for (Index i = 0; i < A.rows(); ++i) {
-    for (Index j = 0; j < k; ++j) row[static_cast<std::size_t>(j)] = A(i, j);
-    to_ring(row.data(), k, &out[static_cast<std::size_t>(i * k)]);
-  }
-  return out;
-}
-
 /// Value-returning ring arithmetic for short formulas (std::int64_t: checked, see above).
 inline Z mul(const Z& a, const Z& b) { return a * b; }
 inline Z add(const Z& a, const Z& b) { return a + b; }
@@ -298,6 +284,41 @@ T to_field(const Z& x) {
 template <class T>
 T to_field(double x) {
   return T(x);
+}
+
+/// The rows [A_1 | A_2 | ...] of field matrices with equal row counts (Eigen expressions over the same
+/// field T, e.g. [P | K]) as ring rows: row i is the positive multiple of the field row that to_ring gives
+/// (primitive integers for Q, unit max-norm rows for a float T; a zero row stays zero).
+template <class R, class D0, class... Ds>
+std::vector<std::vector<R>> to_ring_rows(const Eigen::MatrixBase<D0>& A0, const Eigen::MatrixBase<Ds>&... more) {
+  using T = typename D0::Scalar;
+  static_assert((std::is_same_v<T, typename Ds::Scalar> && ...), "to_ring_rows: blocks over different fields");
+  const Index m = A0.rows(), w = (A0.cols() + ... + more.cols());
+  assert(((more.rows() == m) && ...));
+  std::vector<std::vector<R>> rows(static_cast<std::size_t>(m), std::vector<R>(static_cast<std::size_t>(w)));
+  std::vector<T> buf(static_cast<std::size_t>(w));
+  for (Index i = 0; i < m; ++i) {
+    std::size_t at = 0;
+    auto append = [&](const auto& B) {
+      for (Index j = 0; j < B.cols(); ++j) buf[at++] = B(i, j);
+    };
+    append(A0);
+    (append(more), ...);
+    to_ring(buf.data(), w, rows[static_cast<std::size_t>(i)].data());
+  }
+  return rows;
+}
+
+/// Columns [first, first + cols) of ring rows as a matrix over the field T, entry by entry (to_field): the
+/// inverse of to_ring_rows up to the positive factor of each row. No rows give a 0 x cols matrix.
+template <class T, class R>
+Mat<T> to_field_rows(const std::vector<std::vector<R>>& rows, Index cols, Index first = 0) {
+  Mat<T> M(static_cast<Index>(rows.size()), cols);
+  for (Index i = 0; i < M.rows(); ++i) {
+    const std::vector<R>& row = rows[static_cast<std::size_t>(i)];
+    for (Index j = 0; j < cols; ++j) M(i, j) = to_field<T>(row[static_cast<std::size_t>(first + j)]);
+  }
+  return M;
 }
 
 }  // namespace ring

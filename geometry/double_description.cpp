@@ -154,19 +154,6 @@ class DoubleDescription {
   std::vector<std::uint64_t> common_;
 };
 
-// The rows of A as ring rows.
-template <class T, class R>
-std::vector<std::vector<R>> ring_rows(const Mat<T>& A) {
-  const Index k = A.cols();
-  std::vector<std::vector<R>> rows(static_cast<size_t>(A.rows()), std::vector<R>(static_cast<size_t>(k)));
-  std::vector<T> buf(static_cast<size_t>(k));
-  for (Index i = 0; i < A.rows(); ++i) {
-    for (Index j = 0; j < k; ++j) buf[static_cast<size_t>(j)] = A(i, j);
-    rg::to_ring(buf.data(), k, rows[static_cast<size_t>(i)].data());
-  }
-  return rows;
-}
-
 // The extreme rays of the simplicial cone { y : B y <= 0 } for k independent rows B (ray j is tight on
 // every row but j): y_j = -B^-1 e_j up to a positive factor, by fraction-free Gauss-Jordan elimination of
 // [B^T | I] in the ring. Each row of the result reads u^T B^T = d e_j^T, i.e. B u = d e_j, so
@@ -356,12 +343,9 @@ Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBu
   // Fast path: no equalities and rank A = n (pointed): no change of coordinates.
   if (E.rows() == 0) {
     std::optional<Mat<T>> rays = exact::with_exact_ring<T>([&]<class R>() -> std::optional<Mat<T>> {
-      const auto y = pointed_cone_rays<R>(ring_rows<T, R>(A), n, budget);
+      const auto y = pointed_cone_rays<R>(rg::to_ring_rows<R>(A), n, budget);
       if (!y) return std::nullopt;
-      Mat<T> M(static_cast<Index>(y->size()), n);
-      for (Index r = 0; r < M.rows(); ++r)
-        for (Index i = 0; i < n; ++i) M(r, i) = rg::to_field<T>((*y)[static_cast<size_t>(r)][static_cast<size_t>(i)]);
-      return M;
+      return rg::to_field_rows<T>(*y, n);
     });
     if (rays) {
       out.lines = Mat<T>(0, n);
@@ -386,7 +370,7 @@ Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBu
   normalize_columns<T>(M);
   const Mat<T> AM = multiply<T>(A, M);
   out.rays = exact::with_exact_ring<T>([&]<class R>() {
-    const auto rays = pointed_cone_rays<R>(ring_rows<T, R>(AM), k, budget);
+    const auto rays = pointed_cone_rays<R>(rg::to_ring_rows<R>(AM), k, budget);
     if (!rays) throw std::logic_error("double description: rank deficient after removing the lineality space");
     // Back to x = M y, as primitive (Q) / unit max-norm (double) rows.
     Mat<T> X(static_cast<Index>(rays->size()), n);

@@ -30,21 +30,13 @@ std::vector<std::vector<bool>> ring_zero_sets(const std::vector<std::vector<Rg>>
   return z;
 }
 
-// The rows of A as ring rows.
-template <class Rg, class T>
-std::vector<std::vector<Rg>> ring_rows(const Mat<T>& A) {
-  const std::vector<Rg> flat = exact::ring::to_ring_rows<Rg>(A);
-  std::vector<std::vector<Rg>> rows(static_cast<size_t>(A.rows()));
-  for (Index i = 0; i < A.rows(); ++i)
-    rows[static_cast<size_t>(i)].assign(flat.begin() + i * A.cols(), flat.begin() + (i + 1) * A.cols());
-  return rows;
-}
-
 // For every row s of S, the rays r (rows of R) with s . r == 0. Decided in the ring of T on rows and
 // rays scaled by positive factors (the same signs).
 template <class T>
 std::vector<std::vector<bool>> zero_sets(const Mat<T>& R, const Mat<T>& S) {
-  return exact::with_exact_ring<T>([&]<class Rg>() { return ring_zero_sets<Rg>(ring_rows<Rg>(R), ring_rows<Rg>(S)); });
+  return exact::with_exact_ring<T>([&]<class Rg>() {
+    return ring_zero_sets<Rg>(exact::ring::to_ring_rows<Rg>(R), exact::ring::to_ring_rows<Rg>(S));
+  });
 }
 
 bool subset(const std::vector<bool>& a, const std::vector<bool>& b) {
@@ -94,15 +86,6 @@ FaceCone<T> empty_face(Index d) {
   const Mat<T> all =
       canonical(FaceCone<T>::from_rows(d, Mat<T>(0, d), Mat<T>(Mat<T>::Identity(d, d)), Mat<T>(0, d))).equalities;
   return FaceCone<T>::from_rows(d, Mat<T>(0, d), all, Mat<T>(Mat<T>::Zero(1, d)));
-}
-
-template <class T, class Rg>
-Mat<T> to_matrix(const std::vector<std::vector<Rg>>& rows, Index d) {
-  Mat<T> M(static_cast<Index>(rows.size()), d);
-  for (Index i = 0; i < M.rows(); ++i)
-    for (Index j = 0; j < d; ++j)
-      M(i, j) = exact::ring::to_field<T>(rows[static_cast<size_t>(i)][static_cast<size_t>(j)]);
-  return M;
 }
 
 template <class T>
@@ -202,7 +185,7 @@ std::optional<FaceCone<T>> pointed_nnc_face(const std::vector<std::vector<R>>& F
   }
   std::sort(strict.begin(), strict.end());
   strict.erase(std::unique(strict.begin(), strict.end()), strict.end());
-  return FaceCone<T>::from_rows(d, to_matrix<T, R>(closed, d), Mat<T>(0, d), to_matrix<T, R>(strict, d));
+  return FaceCone<T>::from_rows(d, rg::to_field_rows<T>(closed, d), Mat<T>(0, d), rg::to_field_rows<T>(strict, d));
 }
 
 template <class T>

@@ -99,17 +99,11 @@ FaceCone<T> whole_space(Index d) {
 
 template <class T>
 FaceCone<T> project_by_polar(const ProjectionProblem<T>& problem, const DdBudget& budget) {
-  const Index m = problem.K.rows(), k = problem.K.cols(), d = problem.P.cols();
+  const Index k = problem.K.cols(), d = problem.P.cols();
   return exact::with_exact_ring<T>([&]<class R>() {
     // The rows [P | K] as ring rows (positive multiples: the same P g = K z).
-    std::vector<std::vector<R>> rows(static_cast<size_t>(m), std::vector<R>(static_cast<size_t>(d + k)));
-    std::vector<T> buf(static_cast<size_t>(d + k));
-    for (Index i = 0; i < m; ++i) {
-      for (Index j = 0; j < d; ++j) buf[static_cast<size_t>(j)] = problem.P(i, j);
-      for (Index j = 0; j < k; ++j) buf[static_cast<size_t>(d + j)] = problem.K(i, j);
-      exact::ring::to_ring(buf.data(), d + k, rows[static_cast<size_t>(i)].data());
-    }
-    return project_by_polar_rows<T, R>(rows, d, k, problem.strict, budget);
+    return project_by_polar_rows<T, R>(exact::ring::to_ring_rows<R>(problem.P, problem.K), d, k, problem.strict,
+                                       budget);
   });
 }
 
@@ -137,21 +131,9 @@ FaceCone<T> project_by_polar_rows(const std::vector<std::vector<R>>& rows, Index
   if (auto polar = pointed_cone_rays<R>(kc, m, budget)) {
     kf = std::move(*polar);
   } else {
-    Mat<T> Kt(k, m);
-    for (Index j = 0; j < k; ++j)
-      for (Index i = 0; i < m; ++i) Kt(j, i) = rg::to_field<T>(kc[static_cast<size_t>(j)][static_cast<size_t>(i)]);
-    const FaceCone<T> KF = to_face(SpanCone<T>::from_rows(m, Kt, Mat<T>(0, m)), budget);
-    auto ring = [&](const Mat<T>& M) {
-      std::vector<std::vector<R>> out(static_cast<size_t>(M.rows()), std::vector<R>(static_cast<size_t>(m)));
-      std::vector<T> b(static_cast<size_t>(m));
-      for (Index r = 0; r < M.rows(); ++r) {
-        for (Index i = 0; i < m; ++i) b[static_cast<size_t>(i)] = M(r, i);
-        rg::to_ring(b.data(), m, out[static_cast<size_t>(r)].data());
-      }
-      return out;
-    };
-    kf = ring(KF.inequalities);
-    ke = ring(KF.equalities);
+    const FaceCone<T> KF = to_face(SpanCone<T>::from_rows(m, rg::to_field_rows<T>(kc, m), Mat<T>(0, m)), budget);
+    kf = rg::to_ring_rows<R>(KF.inequalities);
+    ke = rg::to_ring_rows<R>(KF.equalities);
   }
   // A facet of pos(K) is open iff it misses a column k_i with z_i > 0: the relative interiors of the
   // faces of pos(K) that contain every such column make up { K z : z >= 0, z_i > 0 on strict }.
@@ -176,13 +158,10 @@ FaceCone<T> project_by_polar_rows(const std::vector<std::vector<R>>& rows, Index
   if constexpr (exact::NumberTraits<T>::is_exact)  // the float paths keep nnc_form's normal forms
     if (E.empty())
       if (auto face = pointed_nnc_face<T, R>(closed, open, d, budget)) return std::move(*face);
-  auto field = [&](const std::vector<std::vector<R>>& rs) {
-    Mat<T> M(static_cast<Index>(rs.size()), d);
-    for (Index i = 0; i < M.rows(); ++i)
-      for (Index j = 0; j < d; ++j) M(i, j) = rg::to_field<T>(rs[static_cast<size_t>(i)][static_cast<size_t>(j)]);
-    return M;
-  };
-  return nnc_form(FaceCone<T>::from_rows(d, field(closed), field(E), field(open)), budget).face;
+  return nnc_form(FaceCone<T>::from_rows(d, rg::to_field_rows<T>(closed, d), rg::to_field_rows<T>(E, d),
+                                         rg::to_field_rows<T>(open, d)),
+                  budget)
+      .face;
 }
 
 template <class T>

@@ -51,17 +51,7 @@ void reduce_rows(std::vector<std::vector<R>>& rows, Index d, Index k) {
 template <class T, class R>
 geometry::ProjectionProblem<T> to_problem(const std::vector<std::vector<R>>& rows, Index d, Index k,
                                           const std::vector<bool>& strict) {
-  geometry::ProjectionProblem<T> out;
-  const auto m = static_cast<Index>(rows.size());
-  out.K.resize(m, k);
-  out.P.resize(m, d);
-  for (Index i = 0; i < m; ++i) {
-    const std::vector<R>& row = rows[static_cast<std::size_t>(i)];
-    for (Index j = 0; j < d; ++j) out.P(i, j) = rg::to_field<T>(row[static_cast<std::size_t>(j)]);
-    for (Index j = 0; j < k; ++j) out.K(i, j) = rg::to_field<T>(row[static_cast<std::size_t>(d + j)]);
-  }
-  out.strict = strict;
-  return out;
+  return {rg::to_field_rows<T>(rows, k, d), rg::to_field_rows<T>(rows, d), strict};
 }
 
 // The RingForm of the mode, row-reduced.
@@ -83,23 +73,6 @@ geometry::FaceCone<T> run_route(const geometry::ProjectionProblem<T>& problem, R
 }  // namespace
 
 template <class T>
-geometry::ProjectionProblem<T> row_reduced(const ConeForm<T>& form) {
-  const Index m = form.K.rows(), k = form.K.cols(), d = form.P.cols(), w = d + k;
-  if (m == 0) return {form.K, form.P, form.strict};
-  return exact::with_exact_ring<T>([&]<class R>() {
-    std::vector<std::vector<R>> rows(static_cast<std::size_t>(m), std::vector<R>(static_cast<std::size_t>(w)));
-    std::vector<T> buf(static_cast<std::size_t>(w));
-    for (Index i = 0; i < m; ++i) {
-      for (Index j = 0; j < d; ++j) buf[static_cast<std::size_t>(j)] = form.P(i, j);
-      for (Index j = 0; j < k; ++j) buf[static_cast<std::size_t>(d + j)] = form.K(i, j);
-      rg::to_ring(buf.data(), w, rows[static_cast<std::size_t>(i)].data());
-    }
-    reduce_rows<R>(rows, d, k);
-    return to_problem<T, R>(rows, d, k, form.strict);
-  });
-}
-
-template <class T>
 geometry::FaceCone<T> wrench_cone_face(const geometry::PlanarScene& scene, const ContactModel<T>& model,
                                        const ModeString& mode, Route route, const geometry::DdBudget& budget,
                                        Preconditioning pre) {
@@ -107,9 +80,9 @@ geometry::FaceCone<T> wrench_cone_face(const geometry::PlanarScene& scene, const
     const ConeForm<T> form = cone_form(scene, model, mode);
     return run_route<T>({form.K, form.P, form.strict}, route, budget);
   }
-  // K z = P g read from the model in the ring and row-reduced there (the same cone as row_reduced of
-  // cone_form: the rows differ by positive factors, the columns of K by positive factors); the paper's
-  // route stays in the ring up to the canonical face form.
+  // K z = P g read from the model in the ring and row-reduced there (the same cone as row-reducing the
+  // rows [P | K] of cone_form: the rows differ by positive factors, the columns of K by positive
+  // factors); the paper's route stays in the ring up to the canonical face form.
   if (route == Route::kPaper)
     return exact::with_exact_ring<T>([&]<class R>() {
       const RingForm<R> form = reduced_form<R>(scene, model, mode);
@@ -130,10 +103,9 @@ WrenchCone<T> wrench_cone(const geometry::PlanarScene& scene, const ModeString& 
   out.route = route;
   const ContactModel<T> model = contact_model<T>(scene);
   out.form = cone_form(scene, model, mode);
-  const geometry::FaceCone<T> face = run_route<T>(
-      pre == Preconditioning::kRowReduce ? row_reduced(out.form)
-                                         : geometry::ProjectionProblem<T>{out.form.K, out.form.P, out.form.strict},
-      route, budget);
+  const geometry::FaceCone<T> face = pre == Preconditioning::kRowReduce
+                                         ? wrench_cone_face(scene, model, mode, route, budget, pre)
+                                         : run_route<T>({out.form.K, out.form.P, out.form.strict}, route, budget);
   out.cone = geometry::nnc_form(face, budget);
   out.status = out.cone.status == geometry::NncStatus::kEmpty ? ConeStatus::kEmpty : ConeStatus::kNonEmpty;
   return out;
@@ -162,7 +134,6 @@ geometry::AffineFace<T> wrench_set_with_minimum_acceleration(const geometry::Pla
 }
 
 #define CONTACTCERT_WRENCH_CONE_INSTANTIATE(T)                                                             \
-  template geometry::ProjectionProblem<T> row_reduced<T>(const ConeForm<T>&);                              \
   template geometry::FaceCone<T> wrench_cone_face<T>(const geometry::PlanarScene&, const ContactModel<T>&, \
                                                      const ModeString&, Route, const geometry::DdBudget&,  \
                                                      Preconditioning);                                     \

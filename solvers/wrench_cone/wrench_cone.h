@@ -23,18 +23,14 @@ enum class ConeStatus { kEmpty, kNonEmpty };
 /// 2n (for 'n...n' modes, K2 = 0 and the conversion is 3-dimensional). Same cone, exactly.
 enum class Preconditioning { kNone, kRowReduce };
 
-/// The equivalent row-reduced problem T K z = T P g described at Preconditioning::kRowReduce.
-template <class T>
-geometry::ProjectionProblem<T> row_reduced(const ConeForm<T>& form);
-
 /// The wrench cone of one mode with its evidence.
 template <class T>
 struct WrenchCone {
   ConeStatus status = ConeStatus::kEmpty;
   ModeString mode;
   Route route = Route::kPaper;
-  ConeForm<T> form;            ///< K, P and the strict components of z (eqs. 13-17)
-  geometry::NncForm<T> cone;   ///< face form (strict rows = open faces), closure generators, open faces
+  ConeForm<T> form;           ///< K, P and the strict components of z (eqs. 13-17)
+  geometry::NncForm<T> cone;  ///< face form (strict rows = open faces), closure generators, open faces
 };
 
 /// The face form of the wrench cone of `mode` (minimal; canonical for T = Q). An empty cone is
@@ -61,14 +57,13 @@ geometry::AffineFace<T> wrench_set_with_minimum_acceleration(const geometry::Pla
                                                              const Q& a_min, const geometry::DdBudget& budget = {});
 
 #define CONTACTCERT_WRENCH_CONE_EXTERN(T)                                                                         \
-  extern template geometry::ProjectionProblem<T> row_reduced<T>(const ConeForm<T>&);                             \
-  extern template geometry::FaceCone<T> wrench_cone_face<T>(const geometry::PlanarScene&, const ContactModel<T>&,  \
-                                                            const ModeString&, Route, const geometry::DdBudget&,   \
-                                                            Preconditioning);                                      \
-  extern template WrenchCone<T> wrench_cone<T>(const geometry::PlanarScene&, const ModeString&, Route,             \
-                                               const geometry::DdBudget&, Preconditioning);                        \
-  extern template bool is_empty_cone<T>(const geometry::FaceCone<T>&);                                             \
-  extern template geometry::AffineFace<T> wrench_set_with_minimum_acceleration<T>(                                 \
+  extern template geometry::FaceCone<T> wrench_cone_face<T>(const geometry::PlanarScene&, const ContactModel<T>&, \
+                                                            const ModeString&, Route, const geometry::DdBudget&,  \
+                                                            Preconditioning);                                     \
+  extern template WrenchCone<T> wrench_cone<T>(const geometry::PlanarScene&, const ModeString&, Route,            \
+                                               const geometry::DdBudget&, Preconditioning);                       \
+  extern template bool is_empty_cone<T>(const geometry::FaceCone<T>&);                                            \
+  extern template geometry::AffineFace<T> wrench_set_with_minimum_acceleration<T>(                                \
       const geometry::PlanarScene&, const ModeString&, const Q&, const geometry::DdBudget&);
 CONTACTCERT_WRENCH_CONE_EXTERN(double)
 CONTACTCERT_WRENCH_CONE_EXTERN(Q)
