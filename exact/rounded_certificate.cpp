@@ -12,7 +12,6 @@ namespace {
 using Index = Eigen::Index;
 using i64 = std::int64_t;
 using i128 = Int128;
-__extension__ typedef unsigned __int128 u128;
 
 /// Largest denominator tried when rounding a double to a fraction.
 constexpr i64 kMaxDenominator = i64(1) << 30;
@@ -214,67 +213,15 @@ std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& pr
 
 namespace {
 
-// The ring operations the integer checks need, for R = Int128 (every operation overflow-checked: throws
-// RingOverflow) and R = Z.
-i128 times(i128 a, i128 b) {
-  i128 r;
-  if (__builtin_mul_overflow(a, b, &r)) throw RingOverflow{};
-  return r;
-}
-Z times(const Z& a, const Z& b) { return a * b; }
-i128 plus(i128 a, i128 b) {
-  i128 r;
-  if (__builtin_add_overflow(a, b, &r)) throw RingOverflow{};
-  return r;
-}
-Z plus(const Z& a, const Z& b) { return a + b; }
-i128 minus(i128 a, i128 b) {
-  i128 r;
-  if (__builtin_sub_overflow(a, b, &r)) throw RingOverflow{};
-  return r;
-}
-Z minus(const Z& a, const Z& b) { return a - b; }
-/// a / b, known to be exact (b != 0).
-i128 divide_exact(i128 a, i128 b) { return b == -1 ? minus(0, a) : a / b; }
-Z divide_exact(const Z& a, const Z& b) {
-  Z q;
-  mpz_divexact(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
-  return q;
-}
-int sign_of(i128 v) { return (v > 0) - (v < 0); }
-int sign_of(const Z& v) { return sgn(v); }
-/// z as an Int128 (throws RingOverflow if it does not fit).
-void from_mpz(mpz_srcptr z, i128& out) {
-  const int size = z->_mp_size, limbs = size < 0 ? -size : size;
-  static_assert(sizeof(mp_limb_t) == 8);
-  if (limbs > 2 || (limbs == 2 && z->_mp_d[1] >> 63 != 0)) throw RingOverflow{};
-  u128 u = 0;
-  for (int k = limbs - 1; k >= 0; --k) u = (u << 64) | z->_mp_d[k];
-  out = size < 0 ? -static_cast<i128>(u) : static_cast<i128>(u);
-}
-void from_mpz(mpz_srcptr z, Z& out) { mpz_set(out.get_mpz_t(), z); }
-void lcm_with(i128& acc, i128 d) {
-  i128 a = acc, b = d;  // gcd of two positive numbers
-  while (b != 0) a = std::exchange(b, a % b);
-  acc = times(acc / a, d);
-}
-void lcm_with(i128& acc, mpz_srcptr d) {
-  i128 v;
-  from_mpz(d, v);
-  lcm_with(acc, v);
-}
-void lcm_with(Z& acc, i64 d) { mpz_lcm_ui(acc.get_mpz_t(), acc.get_mpz_t(), static_cast<unsigned long>(d)); }
-void lcm_with(Z& acc, mpz_srcptr d) { mpz_lcm(acc.get_mpz_t(), acc.get_mpz_t(), d); }
+// The ring operations of the integer checks, for R = Int128 (every operation overflow-checked: throws
+// RingOverflow) and R = Z: those of fraction_free.h.
+using ring::add;
+using ring::divexact;
+using ring::mul;
+using ring::sign;
+using ring::sub;
 double to_double(i128 v) { return static_cast<double>(v); }
 double to_double(const Z& v) { return v.get_d(); }
-Q to_q(const Z& v) { return Q(v); }
-Q to_q(i128 v) {
-  const u128 u = v < 0 ? -static_cast<u128>(v) : static_cast<u128>(v);
-  Z z = static_cast<unsigned long>(u >> 64);
-  mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), 64);
-  z += static_cast<unsigned long>(u);
-  return v < 0 ? Q(-z) : Q(z);
-}
 
 /// v rounded entry by entry to fractions over their common denominator D: v ~ out / D. False if an entry has
 /// no convergent with a denominator <= kMaxDenominator.
@@ -286,11 +233,11 @@ bool over_common_denominator(const std::vector<double>& v, std::vector<R>& out, 
   for (double x : v) {
     const std::optional<Fraction> r = round_to_fraction(x);
     if (!r) return false;
-    lcm_with(D, r->den);
+    D = ring::lcm(D, R(r->den));
     f.push_back(*r);
   }
   out.resize(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) out[i] = times(R(f[i].num), R(D / R(f[i].den)));
+  for (std::size_t i = 0; i < v.size(); ++i) out[i] = mul(R(f[i].num), divexact(D, R(f[i].den)));
   return true;
 }
 
@@ -302,65 +249,67 @@ IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b) {
   s.m = A.rows(), s.n = A.cols();
   s.A.resize(static_cast<std::size_t>(s.m * s.n));
   s.b.resize(static_cast<std::size_t>(s.m));
-  s.row_scale.assign(static_cast<std::size_t>(s.m), R(1));
-  R den;
+  s.row_scale.resize(static_cast<std::size_t>(s.m));
+  std::vector<R> row(static_cast<std::size_t>(s.n + 1));
   for (Index i = 0; i < s.m; ++i) {
-    auto entry = [&](Index j) -> const Q& { return j < s.n ? A(i, j) : b(i); };
-    R& L = s.row_scale[static_cast<std::size_t>(i)];
-    for (Index j = 0; j <= s.n; ++j)
-      if (!is_one(mpq_denref(entry(j).get_mpq_t()))) lcm_with(L, mpq_denref(entry(j).get_mpq_t()));
-    for (Index j = 0; j <= s.n; ++j) {
-      R& out = j < s.n ? s.A[static_cast<std::size_t>(i * s.n + j)] : s.b[static_cast<std::size_t>(i)];
-      from_mpz(mpq_numref(entry(j).get_mpq_t()), out);
-      if (L == 1) continue;
-      from_mpz(mpq_denref(entry(j).get_mpq_t()), den);
-      out = times(out, R(L / den));
-    }
+    s.row_scale[static_cast<std::size_t>(i)] = ring::to_common_denominator<R>(
+        s.n + 1, [&](Index j) -> const Q& { return j < s.n ? A(i, j) : b(i); }, row.data());
+    std::move(row.begin(), row.begin() + s.n, s.A.begin() + i * s.n);
+    s.b[static_cast<std::size_t>(i)] = std::move(row[static_cast<std::size_t>(s.n)]);
   }
   return s;
 }
 
 template <class R>
-std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Index>& columns) {
-  const auto k = static_cast<Index>(columns.size()), w = k + 1;
-  if (k > s.m) return std::nullopt;
-  // M = [A_S | b], row-major m x (k + 1).
-  std::vector<R> M(static_cast<std::size_t>(s.m * w));
-  auto at = [&](Index i, Index j) -> R& { return M[static_cast<std::size_t>(i * w + j)]; };
-  for (Index i = 0; i < s.m; ++i) {
-    for (Index c = 0; c < k; ++c)
-      at(i, c) = s.A[static_cast<std::size_t>(i * s.n + columns[static_cast<std::size_t>(c)])];
-    at(i, k) = s.b[static_cast<std::size_t>(i)];
-  }
+SolutionKind unique_solution(R* M, Index m, Index k, R* N, R& d) {
+  const Index w = k + 1;
+  if (k > m) return SolutionKind::kRankDeficient;
+  auto at = [&](Index i, Index j) -> R& { return M[i * w + j]; };
   // Bareiss: after step c every entry below row c is a minor of M, so the division by the previous pivot is
   // exact.
   R prev(1);
   for (Index c = 0; c < k; ++c) {
     Index p = c;
-    while (p < s.m && sign_of(at(p, c)) == 0) ++p;
-    if (p == s.m) return std::nullopt;  // A_S is rank deficient
+    while (p < m && sign(at(p, c)) == 0) ++p;
+    if (p == m) return SolutionKind::kRankDeficient;
     if (p != c)
       for (Index j = c; j < w; ++j) std::swap(at(p, j), at(c, j));
-    for (Index i = c + 1; i < s.m; ++i) {
+    for (Index i = c + 1; i < m; ++i) {
       for (Index j = c + 1; j < w; ++j)
-        at(i, j) = divide_exact(minus(times(at(c, c), at(i, j)), times(at(i, c), at(c, j))), prev);
+        at(i, j) = divexact(sub(mul(at(c, c), at(i, j)), mul(at(i, c), at(c, j))), prev);
       at(i, c) = 0;
     }
     prev = at(c, c);
   }
-  for (Index i = k; i < s.m; ++i)
-    if (sign_of(at(i, k)) != 0) return std::nullopt;  // inconsistent
+  for (Index i = k; i < m; ++i)
+    if (sign(at(i, k)) != 0) return SolutionKind::kInconsistent;
   // d = prev (the last pivot, a k x k minor of A_S); N_i = d x_i are integers (Cramer's rule), and
   // a_ii N_i = d b_i - sum_{j > i} a_ij N_j row by row from the bottom.
-  std::vector<R> N(static_cast<std::size_t>(k));
   for (Index i = k - 1; i >= 0; --i) {
-    R acc = times(prev, at(i, k));
-    for (Index j = i + 1; j < k; ++j) acc = minus(acc, times(at(i, j), N[static_cast<std::size_t>(j)]));
-    N[static_cast<std::size_t>(i)] = divide_exact(acc, at(i, i));
+    R acc = mul(prev, at(i, k));
+    for (Index j = i + 1; j < k; ++j) acc = sub(acc, mul(at(i, j), N[j]));
+    N[i] = divexact(acc, at(i, i));
   }
+  d = prev;
+  return SolutionKind::kUnique;
+}
+
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Index>& columns) {
+  const auto k = static_cast<Index>(columns.size()), w = k + 1;
+  // M = [A_S | b], row-major m x (k + 1).
+  std::vector<R> M(static_cast<std::size_t>(s.m * w)), N(static_cast<std::size_t>(k));
+  for (Index i = 0; i < s.m; ++i) {
+    for (Index c = 0; c < k; ++c)
+      M[static_cast<std::size_t>(i * w + c)] =
+          s.A[static_cast<std::size_t>(i * s.n + columns[static_cast<std::size_t>(c)])];
+    M[static_cast<std::size_t>(i * w + k)] = s.b[static_cast<std::size_t>(i)];
+  }
+  R d;
+  if (unique_solution(M.data(), s.m, k, N.data(), d) != SolutionKind::kUnique) return std::nullopt;
   Vec<Q> x(k);
-  const Q d = to_q(prev);
-  for (Index i = 0; i < k; ++i) x(i) = to_q(N[static_cast<std::size_t>(i)]) / d;
+  const Q dq = ring::to_field<Q>(d);
+  for (Index i = 0; i < k; ++i) x(i) = ring::to_field<Q>(N[static_cast<std::size_t>(i)]) / dq;
   return x;
 }
 
@@ -375,18 +324,18 @@ std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>
   R D;
   if (!over_common_denominator(xs, X, D)) return std::nullopt;
   for (const R& v : X)
-    if (sign_of(v) < 0) return std::nullopt;
+    if (sign(v) < 0) return std::nullopt;
   // A X = D b, row by row.
   for (Index i = 0; i < s.m; ++i) {
     R acc(0);
     for (std::size_t t = 0; t < support.size(); ++t)
-      acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + support[t])], X[t]));
-    if (acc != times(D, s.b[static_cast<std::size_t>(i)])) return std::nullopt;
+      acc = add(acc, mul(s.A[static_cast<std::size_t>(i * s.n + support[t])], X[t]));
+    if (acc != mul(D, s.b[static_cast<std::size_t>(i)])) return std::nullopt;
   }
   Vec<Q> x = Vec<Q>::Zero(s.n);
-  const Q d = to_q(D);
+  const Q d = ring::to_field<Q>(D);
   for (std::size_t t = 0; t < support.size(); ++t)
-    if (sign_of(X[t]) != 0) x(support[t]) = to_q(X[t]) / d;
+    if (sign(X[t]) != 0) x(support[t]) = ring::to_field<Q>(X[t]) / d;
   return x;
 }
 
@@ -401,28 +350,28 @@ std::optional<FarkasVector> rounded_farkas(const IntegerSystem<R>& s, const Vec<
   if (!over_common_denominator(ys, Y, E)) return std::nullopt;
   // Y^T b < 0, and Y^T A_j >= 0 unless j is in `zero`, column by column over the rows with Y_i != 0.
   R acc(0);
-  for (Index i = 0; i < s.m; ++i)
-    acc = plus(acc, times(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
-  if (sign_of(acc) >= 0) return std::nullopt;
+  for (Index i = 0; i < s.m; ++i) acc = add(acc, mul(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+  if (sign(acc) >= 0) return std::nullopt;
   FarkasVector f;
   for (Index j = 0; j < s.n; ++j) {
     acc = 0;
     for (Index i = 0; i < s.m; ++i)
-      if (sign_of(Y[static_cast<std::size_t>(i)]) != 0)
-        acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + j)], Y[static_cast<std::size_t>(i)]));
-    if (sign_of(acc) >= 0) continue;
+      if (sign(Y[static_cast<std::size_t>(i)]) != 0)
+        acc = add(acc, mul(s.A[static_cast<std::size_t>(i * s.n + j)], Y[static_cast<std::size_t>(i)]));
+    if (sign(acc) >= 0) continue;
     if (!zero[static_cast<std::size_t>(j)]) return std::nullopt;
     f.negative.push_back(j);
   }
   f.y = Vec<Q>(s.m);
   for (Index i = 0; i < s.m; ++i)
-    f.y(i) = to_q(times(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+    f.y(i) = ring::to_field<Q>(mul(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
   return f;
 }
 
 #define CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(R)                                                        \
   template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                             \
   template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Index>&); \
+  template SolutionKind unique_solution<R>(R*, Index, Index, R*, R&);                                    \
   template std::optional<Vec<Q>> rounded_point<R>(const IntegerSystem<R>&, const Vec<double>&,           \
                                                   const std::vector<bool>&);                             \
   template std::optional<FarkasVector> rounded_farkas<R>(const IntegerSystem<R>&, const Vec<double>&,    \
