@@ -2,6 +2,7 @@
 //   ucp_bench [--quick]
 //   ucp_bench --adaptive [REPEATS [FILTER]]   (only the --arith adaptive table of docs/precision.md; FILTER: the
 //                                            problems whose name contains it)
+//   ucp_bench --recovery [REPEATS]           (only the exact physical recovery and the check of (2)-(10))
 // Prints, for twenty random problems with the paper's nc, mu range, |alpha| and |abar| (section 5 generator,
 // seeded), the pairs, LPs, best x^T y, verdict and time of the paper algorithm, the modified algorithm and the
 // complete search (verified arithmetic); then the targets: nc = 40 solvable (verified), nc = 10 jammed,
@@ -115,9 +116,61 @@ void adaptive_table(int repeats, const std::string& filter) {
   }
 }
 
+/// CPU microseconds of recover and of check_conditions (recovery.h) on the adaptive pair of the paper's
+/// solvable data sets and of solvable random problems (section 5 generator), median of `repeats` batches.
+void recovery_table(int repeats) {
+  struct Case {
+    std::string name;
+    UcpProblem p;
+  };
+  std::vector<Case> cases;
+  for (int k = 1; k <= 3; ++k)
+    cases.push_back(
+        {"Data Set " + std::to_string(k),
+         load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json")});
+  for (auto [nc, abar] : {std::pair{10, 3}, std::pair{40, 0}})
+    for (std::uint64_t s = 1, found = 0; s < 60 && found < 2; ++s) {
+      UcpProblem p = make(nc, 10, abar, s);
+      if (run(p, Method::kComplete).status != UcpStatus::kSolvable) continue;
+      ++found;
+      cases.push_back(
+          {"nc " + std::to_string(nc) + " abar " + std::to_string(abar) + " seed " + std::to_string(s), std::move(p)});
+    }
+  std::printf("CPU us per call, median of %d batches\n", repeats);
+  std::printf("%-24s %10s %10s %10s\n", "problem", "recover", "check", "violations");
+  for (const Case& c : cases) {
+    const UcpReport r = run(c.p, Method::kComplete);
+    const QuasistaticProblem& q = *c.p.quasistatic;
+    const PhysicalSolution s = *recover(q, *r.x, *r.y);
+    auto median_us = [&](auto&& call) {
+      std::vector<double> us;
+      for (int k = 0; k < repeats; ++k) {
+        long calls = 0;
+        const double start = cpu_seconds();
+        double now = start;
+        do {
+          call();
+          ++calls;
+          now = cpu_seconds();
+        } while (now - start < 0.02);
+        us.push_back(1e6 * (now - start) / static_cast<double>(calls));
+      }
+      std::nth_element(us.begin(), us.begin() + static_cast<long>(us.size() / 2), us.end());
+      return us[us.size() / 2];
+    };
+    const double tr = median_us([&] { (void)recover(q, *r.x, *r.y); });
+    const double tc = median_us([&] { (void)check_conditions(q, s); });
+    std::printf("%-24s %10.2f %10.2f %10zu\n", c.name.c_str(), tr, tc, check_conditions(q, s).violations.size());
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::strcmp(argv[1], "--recovery") == 0) {
+    recovery_table(argc > 2 ? std::atoi(argv[2]) : 7);
+    return 0;
+  }
   if (argc > 1 && std::strcmp(argv[1], "--adaptive") == 0) {
     adaptive_table(argc > 2 ? std::atoi(argv[2]) : 7, argc > 3 ? argv[3] : "");
     return 0;

@@ -25,6 +25,11 @@ namespace contactcert::exact {
 /// Thrown by the std::int64_t ring when a result does not fit; the caller restarts in Z.
 struct RingOverflow {};
 
+/// The fixed-width ring of the exact integer checks (rounded_certificate.h, the UCP's physical recovery): exact,
+/// every operation overflow-checked (throws RingOverflow). 128 bits, not 64: the paper's data overflow 64 bits
+/// in the elimination of unique_solution.
+__extension__ typedef __int128 Int128;
+
 /// The ring an algorithm over the field T runs in when it stays fraction-free: Z for Q, T itself for a float T.
 /// (std::int64_t is the fast exact alternative to Z, see with_exact_ring.)
 template <class T>
@@ -176,7 +181,25 @@ inline void to_ring(const double* row, Index k, double* out) {
   normalize(out, k);
 }
 
-/// Value-returning ring arithmetic for short formulas (std::int64_t: checked, see above).
+/// Value-returning ring arithmetic for short formulas (std::int64_t, Int128: checked, see above).
+inline Int128 mul(Int128 a, Int128 b) {
+  constexpr Int128 lo = std::numeric_limits<std::int64_t>::min(), hi = std::numeric_limits<std::int64_t>::max();
+  if (a >= lo && a <= hi && b >= lo && b <= hi) return a * b;  // |a b| <= 2^126: no check (the common case)
+  Int128 r;
+  if (__builtin_mul_overflow(a, b, &r)) throw RingOverflow{};
+  return r;
+}
+inline Int128 add(Int128 a, Int128 b) {
+  Int128 r;
+  if (__builtin_add_overflow(a, b, &r)) throw RingOverflow{};
+  return r;
+}
+inline Int128 sub(Int128 a, Int128 b) {
+  Int128 r;
+  if (__builtin_sub_overflow(a, b, &r)) throw RingOverflow{};
+  return r;
+}
+inline int sign(Int128 x) { return (x > 0) - (x < 0); }
 inline Z mul(const Z& a, const Z& b) { return a * b; }
 inline Z add(const Z& a, const Z& b) { return a + b; }
 inline Z sub(const Z& a, const Z& b) { return a - b; }
@@ -197,6 +220,59 @@ inline Z divexact(const Z& a, const Z& b) {
   mpz_divexact(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
   return q;
 }
+/// Int128: the binary gcd, in 64 bits when both fit (the common case of the paper's data).
+inline Int128 gcd(Int128 a, Int128 b) {
+  __extension__ typedef unsigned __int128 U128;
+  U128 u = a < 0 ? -static_cast<U128>(a) : static_cast<U128>(a),
+       v = b < 0 ? -static_cast<U128>(b) : static_cast<U128>(b);
+  if ((u | v) >> 64 == 0)
+    return static_cast<Int128>(std::gcd(static_cast<std::uint64_t>(u), static_cast<std::uint64_t>(v)));
+  if (u == 0 || v == 0) {
+    const U128 g = u | v;
+    if (g >> 127 != 0) throw RingOverflow{};  // |INT128_MIN|
+    return static_cast<Int128>(g);
+  }
+  auto ctz = [](U128 x) {
+    const auto lo = static_cast<std::uint64_t>(x);
+    return lo != 0 ? __builtin_ctzll(lo) : 64 + __builtin_ctzll(static_cast<std::uint64_t>(x >> 64));
+  };
+  const int shift = std::min(ctz(u), ctz(v));
+  u >>= ctz(u);
+  do {
+    v >>= ctz(v);
+    if (u > v) std::swap(u, v);
+    v -= u;
+  } while (v != 0);
+  u <<= shift;
+  if (u >> 127 != 0) throw RingOverflow{};
+  return static_cast<Int128>(u);
+}
+/// Int128: a / b for b dividing a (b != 0), in 64 bits when both fit.
+inline Int128 divexact(Int128 a, Int128 b) {
+  constexpr Int128 lo = std::numeric_limits<std::int64_t>::min(), hi = std::numeric_limits<std::int64_t>::max();
+  if (a > lo && a <= hi && b > lo && b <= hi) return static_cast<std::int64_t>(a) / static_cast<std::int64_t>(b);
+  return b == -1 ? sub(0, a) : a / b;
+}
+/// The least common multiple of positive a and b (without a gcd when one divides the other, the common case
+/// of decimal data).
+inline Int128 lcm_by_gcd(Int128 a, Int128 b) {
+  if ((a | b) >> 63 == 0) {
+    const auto u = static_cast<std::uint64_t>(a), v = static_cast<std::uint64_t>(b);
+    if (u % v == 0) return a;
+    if (v % u == 0) return b;
+  }
+  return mul(divexact(a, gcd(a, b)), b);
+}
+inline Int128 lcm(Int128 a, Int128 b) {
+  if (a == b || b == 1) return a;
+  if (a == 1) return b;
+  return lcm_by_gcd(a, b);
+}
+inline Z lcm(const Z& a, const Z& b) {
+  Z l;
+  mpz_lcm(l.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  return l;
+}
 
 /// An integer as a ring element.
 inline void from_integer(const Z& x, std::int64_t& out) {
@@ -204,12 +280,36 @@ inline void from_integer(const Z& x, std::int64_t& out) {
   out = checked(mpz_get_si(x.get_mpz_t()));
 }
 inline void from_integer(const Z& x, Z& out) { out = x; }
+/// Int128: reads GMP's limbs directly (this runs once per rational read by the integer checks).
+inline void from_two_limbs(mpz_srcptr z, Int128& out) {
+  __extension__ typedef unsigned __int128 U128;
+  if ((z->_mp_size != 2 && z->_mp_size != -2) || z->_mp_d[1] >> 63 != 0) throw RingOverflow{};
+  const U128 u = static_cast<U128>(z->_mp_d[1]) << 64 | z->_mp_d[0];
+  out = z->_mp_size < 0 ? -static_cast<Int128>(u) : static_cast<Int128>(u);
+}
+inline void from_integer(const Z& x, Int128& out) {
+  static_assert(sizeof(mp_limb_t) == 8);
+  mpz_srcptr z = x.get_mpz_t();
+  if (z->_mp_size == 0)
+    out = 0;
+  else if (z->_mp_size == 1)
+    out = z->_mp_d[0];
+  else if (z->_mp_size == -1)
+    out = -static_cast<Int128>(z->_mp_d[0]);
+  else
+    from_two_limbs(z, out);
+}
 inline void from_integer(long x, std::int64_t& out) { out = checked(x); }
+inline void from_integer(long x, Int128& out) { out = x; }
 inline void from_integer(long x, Z& out) { out = x; }
 inline void from_integer(long x, double& out) { out = static_cast<double>(x); }
 
 /// A rational x = num / den (den > 0, lowest terms) in an exact ring; in double, x rounded and 1.
 inline void from_rational(const Q& x, std::int64_t& num, std::int64_t& den) {
+  from_integer(x.get_num(), num);
+  from_integer(x.get_den(), den);
+}
+inline void from_rational(const Q& x, Int128& num, Int128& den) {
   from_integer(x.get_num(), num);
   from_integer(x.get_den(), den);
 }
@@ -284,6 +384,75 @@ T to_field(const Z& x) {
 template <class T>
 T to_field(double x) {
   return T(x);
+}
+/// An Int128 as an integer of GMP.
+inline Z to_z(Int128 x) {
+  if (x >= std::numeric_limits<long>::min() && x <= std::numeric_limits<long>::max()) return Z(static_cast<long>(x));
+  __extension__ typedef unsigned __int128 U128;
+  const U128 u = x < 0 ? -static_cast<U128>(x) : static_cast<U128>(x);
+  Z z = static_cast<unsigned long>(u >> 64);
+  mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), 64);
+  z += static_cast<unsigned long>(u);
+  if (x < 0) mpz_neg(z.get_mpz_t(), z.get_mpz_t());
+  return z;
+}
+template <class T>
+T to_field(Int128 x) {
+  return T(to_z(x));
+}
+
+/// out = num / den (den != 0) in lowest terms, made without rational arithmetic (and without allocating when
+/// out's limbs suffice).
+inline void to_rational(Int128 num, Int128 den, Q& out) {
+  if (num == 0) {
+    out = 0;
+    return;
+  }
+  const Int128 g = gcd(num, den);
+  num = divexact(num, g), den = divexact(den, g);
+  if (den < 0) num = sub(0, num), den = sub(0, den);
+  if (num >= std::numeric_limits<long>::min() && num <= std::numeric_limits<long>::max() &&
+      den <= std::numeric_limits<long>::max()) {
+    mpq_set_si(out.get_mpq_t(), static_cast<long>(num), static_cast<unsigned long>(den));
+  } else {
+    mpz_set(mpq_numref(out.get_mpq_t()), to_z(num).get_mpz_t());
+    mpz_set(mpq_denref(out.get_mpq_t()), to_z(den).get_mpz_t());
+  }
+}
+inline void to_rational(const Z& num, const Z& den, Q& out) {
+  mpz_set(mpq_numref(out.get_mpq_t()), num.get_mpz_t());
+  mpz_set(mpq_denref(out.get_mpq_t()), den.get_mpz_t());
+  out.canonicalize();
+}
+
+/// True if the rational q (in lowest terms) is an integer.
+inline bool is_integer(const Q& q) {
+  mpz_srcptr den = mpq_denref(q.get_mpq_t());
+  return den->_mp_size == 1 && den->_mp_d[0] == 1;
+}
+
+/// The rationals q(0), ..., q(k-1) over their least common denominator L (returned, > 0) in the exact ring R:
+/// q(i) = out[i] / L.
+template <class R, class Get>
+R to_common_denominator(Index k, Get q, R* out) {
+  R L(1), den;
+  for (Index i = 0; i < k; ++i) {
+    const Q& v = q(i);
+    if (is_integer(v)) continue;
+    from_integer(v.get_den(), den);
+    L = lcm(L, den);
+  }
+  for (Index i = 0; i < k; ++i) {
+    const Q& v = q(i);
+    from_integer(v.get_num(), out[i]);
+    if (is_integer(v)) {
+      if (L != 1) out[i] = mul(out[i], L);
+    } else if (sign(out[i]) != 0) {
+      from_integer(v.get_den(), den);
+      if (den != L) out[i] = mul(out[i], divexact(L, den));
+    }
+  }
+  return L;
 }
 
 /// The rows [A_1 | A_2 | ...] of field matrices with equal row counts (Eigen expressions over the same

@@ -13,7 +13,6 @@ namespace {
 using Index = Eigen::Index;
 using i64 = std::int64_t;
 using i128 = Int128;
-__extension__ typedef unsigned __int128 u128;
 
 /// Largest denominator tried when rounding a double to a fraction.
 constexpr i64 kMaxDenominator = i64(1) << 30;
@@ -215,112 +214,16 @@ std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& pr
 
 namespace {
 
-// The ring operations the integer checks need, for R = Int128 (every operation overflow-checked: throws
-// RingOverflow) and R = Z.
-bool fits_64(i128 v) { return v == static_cast<i64>(v); }
-i128 times(i128 a, i128 b) {
-  if (fits_64(a) && fits_64(b)) return a * b;  // |a b| < 2^126: no check needed (the common case)
-  i128 r;
-  if (__builtin_mul_overflow(a, b, &r)) throw RingOverflow{};
-  return r;
-}
-Z times(const Z& a, const Z& b) { return a * b; }
-i128 plus(i128 a, i128 b) {
-  i128 r;
-  if (__builtin_add_overflow(a, b, &r)) throw RingOverflow{};
-  return r;
-}
-Z plus(const Z& a, const Z& b) { return a + b; }
-i128 minus(i128 a, i128 b) {
-  i128 r;
-  if (__builtin_sub_overflow(a, b, &r)) throw RingOverflow{};
-  return r;
-}
-Z minus(const Z& a, const Z& b) { return a - b; }
-/// a / b, known to be exact (b != 0).
-i128 divide_exact(i128 a, i128 b) {
-  if (b == -1) return minus(0, a);
-  return fits_64(a) && fits_64(b) ? static_cast<i64>(a) / static_cast<i64>(b) : a / b;  // 64-bit division is cheaper
-}
-/// gcd(x, y): Euclid while a number needs more than 64 bits, then std::gcd (binary) in 64 bits.
-u128 gcd_u128(u128 x, u128 y) {
-  while ((x | y) >> 64 != 0) {
-    if (y == 0) return x;
-    x = std::exchange(y, x % y);
-  }
-  return std::gcd(static_cast<std::uint64_t>(x), static_cast<std::uint64_t>(y));
-}
-u128 magnitude(i128 v) { return v < 0 ? -static_cast<u128>(v) : static_cast<u128>(v); }
-Z divide_exact(const Z& a, const Z& b) {
-  Z q;
-  mpz_divexact(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
-  return q;
-}
-int sign_of(i128 v) { return (v > 0) - (v < 0); }
-int sign_of(const Z& v) { return sgn(v); }
-/// z as an Int128 (throws RingOverflow if it does not fit).
-void from_mpz(mpz_srcptr z, i128& out) {
-  const int size = z->_mp_size, limbs = size < 0 ? -size : size;
-  static_assert(sizeof(mp_limb_t) == 8);
-  if (limbs > 2 || (limbs == 2 && z->_mp_d[1] >> 63 != 0)) throw RingOverflow{};
-  u128 u = 0;
-  for (int k = limbs - 1; k >= 0; --k) u = (u << 64) | z->_mp_d[k];
-  out = size < 0 ? -static_cast<i128>(u) : static_cast<i128>(u);
-}
-void from_mpz(mpz_srcptr z, Z& out) { mpz_set(out.get_mpz_t(), z); }
-void lcm_with(i128& acc, i128 d) {
-  acc = times(divide_exact(acc, static_cast<i128>(gcd_u128(magnitude(acc), magnitude(d)))), d);
-}
-void lcm_with(i128& acc, mpz_srcptr d) {
-  i128 v;
-  from_mpz(d, v);
-  lcm_with(acc, v);
-}
-void lcm_with(Z& acc, i64 d) { mpz_lcm_ui(acc.get_mpz_t(), acc.get_mpz_t(), static_cast<unsigned long>(d)); }
-void lcm_with(Z& acc, mpz_srcptr d) { mpz_lcm(acc.get_mpz_t(), acc.get_mpz_t(), d); }
-double to_double(i128 v) { return static_cast<double>(v); }
+// The ring operations of the integer checks, for R = Int128 (every operation overflow-checked: throws
+// RingOverflow) and R = Z: those of fraction_free.h.
+using ring::add;
+using ring::divexact;
+using ring::gcd;
+using ring::mul;
+using ring::sign;
+using ring::sub;
+double to_double(Int128 v) { return static_cast<double>(v); }
 double to_double(const Z& v) { return v.get_d(); }
-Q to_q(const Z& v) { return Q(v); }
-Q to_q(i128 v) {
-  const u128 u = v < 0 ? -static_cast<u128>(v) : static_cast<u128>(v);
-  Z z = static_cast<unsigned long>(u >> 64);
-  mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), 64);
-  z += static_cast<unsigned long>(u);
-  return v < 0 ? Q(-z) : Q(z);
-}
-
-/// gcd(|a|, |b|) (0 if both are 0).
-i128 gcd_of(i128 a, i128 b) {
-  const u128 x = gcd_u128(magnitude(a), magnitude(b));
-  if (x >> 127 != 0) throw RingOverflow{};
-  return static_cast<i128>(x);
-}
-Z gcd_of(const Z& a, const Z& b) {
-  Z r;
-  mpz_gcd(r.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
-  return r;
-}
-
-/// num / den in lowest terms (den != 0).
-Q quotient(const Z& num, const Z& den) {
-  Q q(num, den);
-  q.canonicalize();
-  return q;
-}
-Q quotient(i128 num, i128 den) {
-  if (num == 0) return Q(0);
-  if (den < 0) num = minus(0, num), den = minus(0, den);
-  const auto g = static_cast<i128>(gcd_u128(magnitude(num), magnitude(den)));
-  num = divide_exact(num, g), den = divide_exact(den, g);
-  Q q;
-  if (num >= INT64_MIN && num <= INT64_MAX && den <= INT64_MAX) {
-    mpq_set_si(q.get_mpq_t(), static_cast<long>(num), static_cast<unsigned long>(den));
-  } else {
-    mpq_set_num(q.get_mpq_t(), to_q(num).get_num_mpz_t());
-    mpq_set_den(q.get_mpq_t(), to_q(den).get_num_mpz_t());
-  }
-  return q;
-}
 
 /// v rounded entry by entry to fractions over their common denominator D: v ~ out / D. False if an entry has
 /// no convergent with a denominator <= kMaxDenominator.
@@ -332,11 +235,11 @@ bool over_common_denominator(const std::vector<double>& v, std::vector<R>& out, 
   for (double x : v) {
     const std::optional<Fraction> r = round_to_fraction(x);
     if (!r) return false;
-    lcm_with(D, r->den);
+    D = ring::lcm(D, R(r->den));
     f.push_back(*r);
   }
   out.resize(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) out[i] = times(R(f[i].num), R(D / R(f[i].den)));
+  for (std::size_t i = 0; i < v.size(); ++i) out[i] = mul(R(f[i].num), divexact(D, R(f[i].den)));
   return true;
 }
 
@@ -352,20 +255,13 @@ IntegerSystem<R> scaled_rows(const Mat<Q>& A, const Vec<Q>& b, Index n, Column c
   s.m = A.rows(), s.n = n;
   s.A.resize(static_cast<std::size_t>(s.m * s.n));
   s.b.resize(static_cast<std::size_t>(s.m));
-  s.row_scale.assign(static_cast<std::size_t>(s.m), R(1));
-  R den;
+  s.row_scale.resize(static_cast<std::size_t>(s.m));
+  std::vector<R> row(static_cast<std::size_t>(s.n + 1));
   for (Index i = 0; i < s.m; ++i) {
-    auto entry = [&](Index j) -> const Q& { return j < s.n ? A(i, column(j)) : b(i); };
-    R& L = s.row_scale[static_cast<std::size_t>(i)];
-    for (Index j = 0; j <= s.n; ++j)
-      if (!is_one(mpq_denref(entry(j).get_mpq_t()))) lcm_with(L, mpq_denref(entry(j).get_mpq_t()));
-    for (Index j = 0; j <= s.n; ++j) {
-      R& out = j < s.n ? s.A[static_cast<std::size_t>(i * s.n + j)] : s.b[static_cast<std::size_t>(i)];
-      from_mpz(mpq_numref(entry(j).get_mpq_t()), out);
-      if (L == 1) continue;
-      from_mpz(mpq_denref(entry(j).get_mpq_t()), den);
-      out = times(out, R(L / den));
-    }
+    s.row_scale[static_cast<std::size_t>(i)] = ring::to_common_denominator<R>(
+        s.n + 1, [&](Index j) -> const Q& { return j < s.n ? A(i, column(j)) : b(i); }, row.data());
+    std::move(row.begin(), row.begin() + s.n, s.A.begin() + i * s.n);
+    s.b[static_cast<std::size_t>(i)] = std::move(row[static_cast<std::size_t>(s.n)]);
   }
   return s;
 }
@@ -383,37 +279,25 @@ IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b, const std::vec
                         [&columns](Index j) { return columns[static_cast<std::size_t>(j)]; });
 }
 
-namespace {
-
-/// The unique solution of A_S x_S = b as fractions x_c = num_c / den_c (see unique_solution); false if there
-/// is none or more than one.
 template <class R>
-bool solve_fraction_free(const IntegerSystem<R>& s, const std::vector<Index>& columns, std::vector<R>& num,
-                         std::vector<R>& den) {
-  const auto k = static_cast<Index>(columns.size()), w = k + 1;
-  if (k > s.m) return false;
-  // M = [A_S | b], row-major m x (k + 1).
-  std::vector<R> M(static_cast<std::size_t>(s.m * w));
-  auto at = [&](Index i, Index j) -> R& { return M[static_cast<std::size_t>(i * w + j)]; };
-  for (Index i = 0; i < s.m; ++i) {
-    for (Index c = 0; c < k; ++c)
-      at(i, c) = s.A[static_cast<std::size_t>(i * s.n + columns[static_cast<std::size_t>(c)])];
-    at(i, k) = s.b[static_cast<std::size_t>(i)];
-  }
+SolutionKind unique_solution(R* M, Index m, Index k, R* N, R& d) {
+  const Index w = k + 1;
+  if (k > m) return SolutionKind::kRankDeficient;
+  auto at = [&](Index i, Index j) -> R& { return M[i * w + j]; };
   // Columns of A_S divided by their contents g_c (x_c = x'_c / g_c), then rows of [A_S | b] by theirs: the
   // minors below shrink by those factors (X's rows from the left null space of P share large ones).
   std::vector<R> g(static_cast<std::size_t>(k));
   for (Index c = 0; c < k; ++c) {
     R& gc = g[static_cast<std::size_t>(c)];
-    for (Index i = 0; i < s.m; ++i) gc = gcd_of(gc, at(i, c));
-    if (sign_of(gc) == 0) return false;  // a zero column: A_S is rank deficient
-    for (Index i = 0; i < s.m; ++i) at(i, c) = divide_exact(at(i, c), gc);
+    for (Index i = 0; i < m; ++i) gc = gcd(gc, at(i, c));
+    if (sign(gc) == 0) return SolutionKind::kRankDeficient;  // a zero column
+    for (Index i = 0; i < m; ++i) at(i, c) = divexact(at(i, c), gc);
   }
-  for (Index i = 0; i < s.m; ++i) {
+  for (Index i = 0; i < m; ++i) {
     R gi(0);
-    for (Index j = 0; j < w; ++j) gi = gcd_of(gi, at(i, j));
+    for (Index j = 0; j < w; ++j) gi = gcd(gi, at(i, j));
     if (gi > R(1))
-      for (Index j = 0; j < w; ++j) at(i, j) = divide_exact(at(i, j), gi);
+      for (Index j = 0; j < w; ++j) at(i, j) = divexact(at(i, j), gi);
   }
   // Fraction-free Gauss-Jordan (Bareiss applied above the pivot too): after step c every entry of the
   // eliminated rows is a (c+1) x (c+1) minor of M, so the division by the previous pivot is exact and no
@@ -421,30 +305,31 @@ bool solve_fraction_free(const IntegerSystem<R>& s, const std::vector<Index>& co
   R prev(1);
   for (Index c = 0; c < k; ++c) {
     Index p = c;
-    while (p < s.m && sign_of(at(p, c)) == 0) ++p;
-    if (p == s.m) return false;  // A_S is rank deficient
+    while (p < m && sign(at(p, c)) == 0) ++p;
+    if (p == m) return SolutionKind::kRankDeficient;
     if (p != c)
       for (Index j = c; j < w; ++j) std::swap(at(p, j), at(c, j));
-    for (Index i = 0; i < s.m; ++i) {
+    for (Index i = 0; i < m; ++i) {
       if (i == c) continue;
       if (i < c) at(i, i) = at(c, c);  // (a_cc a_ii - a_ic a_ci) / prev with a_ci = 0, a_ii = prev
       for (Index j = c + 1; j < w; ++j)
-        at(i, j) = divide_exact(minus(times(at(c, c), at(i, j)), times(at(i, c), at(c, j))), prev);
+        at(i, j) = divexact(sub(mul(at(c, c), at(i, j)), mul(at(i, c), at(c, j))), prev);
       at(i, c) = 0;
     }
     prev = at(c, c);
   }
-  for (Index i = k; i < s.m; ++i)
-    if (sign_of(at(i, k)) != 0) return false;  // inconsistent
-  // Now M = [d I | d x'_S] on its first k rows, d = prev a k x k minor (Cramer's rule); x_c = x'_c / g_c.
-  num.resize(static_cast<std::size_t>(k));
-  den.resize(static_cast<std::size_t>(k));
-  for (Index i = 0; i < k; ++i) {
-    num[static_cast<std::size_t>(i)] = at(i, k);
-    den[static_cast<std::size_t>(i)] = times(prev, g[static_cast<std::size_t>(i)]);
-  }
-  return true;
+  for (Index i = k; i < m; ++i)
+    if (sign(at(i, k)) != 0) return SolutionKind::kInconsistent;
+  // Now M = [prev I | prev x'_S] on its first k rows (Cramer's rule) and x_c = x'_c / g_c: over the common
+  // denominator d = prev G, G = lcm(g), N_c = at(c, k) G / g_c.
+  R G(1);
+  for (const R& gc : g) G = mul(divexact(G, gcd(G, gc)), gc);
+  for (Index c = 0; c < k; ++c) N[c] = mul(at(c, k), divexact(G, g[static_cast<std::size_t>(c)]));
+  d = mul(prev, G);
+  return SolutionKind::kUnique;
 }
+
+namespace {
 
 /// Y as a Farkas vector of the rows of s if it is one: Y^T b < 0 and Y^T A_j >= 0 unless j is in `zero`; the
 /// result is y_i = row_scale_i Y_i (for the rows before scaling) with its negative columns.
@@ -452,22 +337,21 @@ template <class R>
 std::optional<FarkasVector> checked_farkas(const IntegerSystem<R>& s, const std::vector<R>& Y,
                                            const std::vector<bool>& zero) {
   R acc(0);
-  for (Index i = 0; i < s.m; ++i)
-    acc = plus(acc, times(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
-  if (sign_of(acc) >= 0) return std::nullopt;
+  for (Index i = 0; i < s.m; ++i) acc = add(acc, mul(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+  if (sign(acc) >= 0) return std::nullopt;
   FarkasVector f;
   for (Index j = 0; j < s.n; ++j) {  // column by column over the rows with Y_i != 0
     acc = 0;
     for (Index i = 0; i < s.m; ++i)
-      if (sign_of(Y[static_cast<std::size_t>(i)]) != 0)
-        acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + j)], Y[static_cast<std::size_t>(i)]));
-    if (sign_of(acc) >= 0) continue;
+      if (sign(Y[static_cast<std::size_t>(i)]) != 0)
+        acc = add(acc, mul(s.A[static_cast<std::size_t>(i * s.n + j)], Y[static_cast<std::size_t>(i)]));
+    if (sign(acc) >= 0) continue;
     if (!zero[static_cast<std::size_t>(j)]) return std::nullopt;
     f.negative.push_back(j);
   }
   f.y = Vec<Q>(s.m);
   for (Index i = 0; i < s.m; ++i)
-    f.y(i) = to_q(times(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+    f.y(i) = ring::to_field<Q>(mul(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
   return f;
 }
 
@@ -486,10 +370,19 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s) {
 
 template <class R>
 std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Index>& columns) {
-  std::vector<R> num, den;
-  if (!solve_fraction_free(s, columns, num, den)) return std::nullopt;
-  Vec<Q> x(static_cast<Index>(num.size()));
-  for (std::size_t i = 0; i < num.size(); ++i) x(static_cast<Index>(i)) = quotient(num[i], den[i]);
+  const auto k = static_cast<Index>(columns.size()), w = k + 1;
+  // M = [A_S | b], row-major m x (k + 1).
+  std::vector<R> M(static_cast<std::size_t>(s.m * w)), N(static_cast<std::size_t>(k));
+  for (Index i = 0; i < s.m; ++i) {
+    for (Index c = 0; c < k; ++c)
+      M[static_cast<std::size_t>(i * w + c)] =
+          s.A[static_cast<std::size_t>(i * s.n + columns[static_cast<std::size_t>(c)])];
+    M[static_cast<std::size_t>(i * w + k)] = s.b[static_cast<std::size_t>(i)];
+  }
+  R d;
+  if (unique_solution(M.data(), s.m, k, N.data(), d) != SolutionKind::kUnique) return std::nullopt;
+  Vec<Q> x(k);
+  for (Index i = 0; i < k; ++i) ring::to_rational(N[static_cast<std::size_t>(i)], d, x(i));
   return x;
 }
 
@@ -503,16 +396,15 @@ std::optional<FarkasVector> basis_farkas(const IntegerSystem<R>& s, const Vec<do
   const Index m = s.m;
   if (y_approx.size() != m) return std::nullopt;
   if (static_cast<Index>(basis.size()) != m) return std::nullopt;
-  IntegerSystem<R> t;
-  t.m = t.n = m;
-  t.A.assign(static_cast<std::size_t>(m * m), R(0));
-  t.b.assign(static_cast<std::size_t>(m), R(0));
+  // M = [B^T-rows | rhs], row-major m x (m + 1): one equation per basis column, unknowns f'.
+  const Index w = m + 1;
+  std::vector<R> M(static_cast<std::size_t>(m * w), R(0)), F(static_cast<std::size_t>(m));
   for (Index r = 0; r < m; ++r) {
+    R* row = &M[static_cast<std::size_t>(r * w)];
     const Index v = basis[static_cast<std::size_t>(r)];
     if (v < 0 || v >= s.n + m) return std::nullopt;
     if (v < s.n) {
-      for (Index i = 0; i < m; ++i)
-        t.A[static_cast<std::size_t>(r * m + i)] = s.A[static_cast<std::size_t>(i * s.n + v)];
+      for (Index i = 0; i < m; ++i) row[i] = s.A[static_cast<std::size_t>(i * s.n + v)];
     } else {
       const Index i = v - s.n;
       const double f = y_approx(i);
@@ -521,20 +413,14 @@ std::optional<FarkasVector> basis_farkas(const IntegerSystem<R>& s, const Vec<do
       if (e < -62 || e > 62) return std::nullopt;
       const R power(std::int64_t(1) << (e < 0 ? -e : e));
       const R& L = s.row_scale[static_cast<std::size_t>(i)];
-      t.A[static_cast<std::size_t>(r * m + i)] = e < 0 ? times(L, power) : L;
-      t.b[static_cast<std::size_t>(r)] = R(f < 0 ? -1 : 1) * (e < 0 ? R(1) : power);
+      row[i] = e < 0 ? mul(L, power) : L;
+      row[m] = e < 0 ? R(f < 0 ? -1 : 1) : (f < 0 ? sub(R(0), power) : power);
     }
   }
-  std::vector<R> num, den;
-  if (!solve_fraction_free(t, all_columns(m), num, den)) return std::nullopt;
-  // f = F / G over the positive common denominator G.
-  R G(1);
-  for (std::size_t i = 0; i < num.size(); ++i) {
-    if (sign_of(den[i]) < 0) num[i] = minus(R(0), num[i]), den[i] = minus(R(0), den[i]);
-    G = times(divide_exact(G, gcd_of(G, den[i])), den[i]);
-  }
-  std::vector<R> F(num.size());
-  for (std::size_t i = 0; i < num.size(); ++i) F[i] = times(num[i], divide_exact(G, den[i]));
+  R d;
+  if (unique_solution(M.data(), m, m, F.data(), d) != SolutionKind::kUnique) return std::nullopt;
+  if (sign(d) < 0)  // f' = F / d: F is a positive multiple of f' once d > 0
+    for (R& v : F) v = sub(R(0), v);
   return checked_farkas(s, F, zero);
 }
 
@@ -549,17 +435,17 @@ std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>
   R D;
   if (!over_common_denominator(xs, X, D)) return std::nullopt;
   for (const R& v : X)
-    if (sign_of(v) < 0) return std::nullopt;
+    if (sign(v) < 0) return std::nullopt;
   // A X = D b, row by row.
   for (Index i = 0; i < s.m; ++i) {
     R acc(0);
     for (std::size_t t = 0; t < support.size(); ++t)
-      acc = plus(acc, times(s.A[static_cast<std::size_t>(i * s.n + support[t])], X[t]));
-    if (acc != times(D, s.b[static_cast<std::size_t>(i)])) return std::nullopt;
+      acc = add(acc, mul(s.A[static_cast<std::size_t>(i * s.n + support[t])], X[t]));
+    if (acc != mul(D, s.b[static_cast<std::size_t>(i)])) return std::nullopt;
   }
   Vec<Q> x = Vec<Q>::Zero(s.n);
   for (std::size_t t = 0; t < support.size(); ++t)
-    if (sign_of(X[t]) != 0) x(support[t]) = quotient(X[t], D);
+    if (sign(X[t]) != 0) ring::to_rational(X[t], D, x(support[t]));
   return x;
 }
 
@@ -587,6 +473,7 @@ std::optional<FarkasVector> rounded_farkas(const IntegerSystem<R>& s, const Vec<
   template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Index>&);      \
   template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&);                                \
   template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Index>&);     \
+  template SolutionKind unique_solution<R>(R*, Index, Index, R*, R&);                                        \
   template std::optional<Vec<Q>> rounded_point<R>(const IntegerSystem<R>&, const Vec<double>&,               \
                                                   const std::vector<bool>&);                                 \
   template std::optional<FarkasVector> basis_farkas<R>(const IntegerSystem<R>&, const Vec<double>&,          \

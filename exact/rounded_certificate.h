@@ -57,10 +57,6 @@ Q make_q(std::int64_t num, std::int64_t den);
 /// The integer-scaled LP, or nullopt if a scaled entry does not fit in 64 bits.
 std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem);
 
-/// The fixed-width ring of the integer checks below: exact, every operation overflow-checked (throws
-/// RingOverflow). 128 bits, not 64: the paper's data overflow 64 bits in the elimination of unique_solution.
-__extension__ typedef __int128 Int128;
-
 /// The rows of A x = b, each row of [A | b] multiplied by the lcm of its denominators (row_scale), as integers
 /// of the ring R (Int128 or Z, see with_exact_ring<Q, Int128>).
 template <class R>
@@ -83,6 +79,15 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vect
 /// The same over all columns of s.
 template <class R>
 std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s);
+
+/// How A_S x_S = b stands: one solution, or A_S without full column rank, or (full rank) no solution.
+enum class SolutionKind { kUnique, kRankDeficient, kInconsistent };
+
+/// unique_solution in integers, in place: M = [A_S | b] row-major m x (k + 1), overwritten by the elimination.
+/// For kUnique, x_S = N / d with N = N[0..k-1] and d != 0 (a k x k minor of A_S, either sign); N and d are
+/// unspecified otherwise.
+template <class R>
+SolutionKind unique_solution(R* M, Eigen::Index m, Eigen::Index k, R* N, R& d);
 
 /// A point of the face {x >= 0 : A x = b, x_j = 0 where zero[j]} near x_approx: the entries off `zero`
 /// rounded to fractions (continued-fraction convergents, denominators <= 2^30) over their common denominator
@@ -121,6 +126,7 @@ std::optional<FarkasVector> basis_farkas(const IntegerSystem<R>& s, const Vec<do
   extern template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Eigen::Index>&);  \
   extern template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&);                                   \
   extern template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Eigen::Index>&); \
+  extern template SolutionKind unique_solution<R>(R*, Eigen::Index, Eigen::Index, R*, R&);                             \
   extern template std::optional<Vec<Q>> rounded_point<R>(const IntegerSystem<R>&, const Vec<double>&,                  \
                                                          const std::vector<bool>&);                                    \
   extern template std::optional<FarkasVector> basis_farkas<R>(                                                         \
