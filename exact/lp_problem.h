@@ -45,11 +45,6 @@ struct LpOptions {
   /// Pivot budget (phase 1 + phase 2); exceeding it throws BudgetExceeded.
   long max_pivots = 1000000;
   PivotRule rule = PivotRule::kDantzigThenBland;
-  /// Float T only: rows of [A | b] far from unit size are first scaled by powers of two (exactly), because the
-  /// float sign test's tolerance is absolute; duals and Farkas vectors are returned for the rows as given
-  /// (then a multiple of a power of two per row, which callers that round duals to small fractions must
-  /// expect: solve_lp_verified does not ask for it).
-  bool equilibrate = false;
 };
 
 /// Result with evidence. Sign conventions (checked exactly by verify_* in simplex.h):
@@ -73,7 +68,7 @@ struct LpResult {
   Eigen::Index unbounded_column = -1;
   DecidedBy decided_by = DecidedBy::kExact;
   Rung proposed_by;  ///< the float rung whose basis was checked or continued from (solve_lp_ladder; else double)
-  long pivots = 0;   ///< simplex pivots done in this number type (0 if a float basis checked out)
+  long pivots = 0;  ///< simplex pivots done in this number type (0 if a float basis checked out)
 };
 
 /// The problem in doubles (for the float path).

@@ -289,13 +289,16 @@ SolutionKind unique_solution(R* M, Index m, Index k, R* N, R& d) {
   std::vector<R> g(static_cast<std::size_t>(k));
   for (Index c = 0; c < k; ++c) {
     R& gc = g[static_cast<std::size_t>(c)];
-    for (Index i = 0; i < m; ++i) gc = gcd(gc, at(i, c));
+    for (Index i = 0; i < m && !(gc == R(1)); ++i)
+      if (sign(at(i, c)) != 0) gc = gcd(gc, at(i, c));
     if (sign(gc) == 0) return SolutionKind::kRankDeficient;  // a zero column
+    if (gc == R(1)) continue;
     for (Index i = 0; i < m; ++i) at(i, c) = divexact(at(i, c), gc);
   }
   for (Index i = 0; i < m; ++i) {
     R gi(0);
-    for (Index j = 0; j < w; ++j) gi = gcd(gi, at(i, j));
+    for (Index j = 0; j < w && !(gi == R(1)); ++j)
+      if (sign(at(i, j)) != 0) gi = gcd(gi, at(i, j));
     if (gi > R(1))
       for (Index j = 0; j < w; ++j) at(i, j) = divexact(at(i, j), gi);
   }

@@ -1,7 +1,5 @@
 #include "exact/simplex.h"
 
-#include <algorithm>
-#include <cmath>
 #include <string>
 
 #include "exact/input_error.h"
@@ -42,8 +40,8 @@ bool row_is_free(const std::vector<bool>& is_free, Index basic, Index n) {
 /// The primal simplex loop on the tableau's current objective: pivots until no column prices out
 /// (optimal) or an improving column has no blocking row (unbounded). Free basic variables never leave.
 template <class T>
-LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_free, PivotRule rule, long max_pivots,
-                         long& pivots) {
+LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_free, PivotRule rule,
+                         long max_pivots, long& pivots) {
   const Index n = tab.cols();
   long degenerate_run = 0;
   for (;;) {
@@ -114,7 +112,8 @@ Vec<T> basis_duals(const Mat<T>& A, const Vec<T>& b, const std::vector<Index>& b
 }
 
 template <class T>
-LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out, long pivots) {
+LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out,
+                   long pivots) {
   LpResult<T> res;
   res.decided_by = NumberTraits<T>::is_exact ? DecidedBy::kExact : DecidedBy::kFloat;
   res.pivots = pivots;
@@ -139,29 +138,6 @@ LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, co
   return res;
 }
 
-/// The float sign tests have an absolute tolerance (NumberTraits), so rows of very different magnitudes do not
-/// share one meaning of "zero": with entries of 1e9 (X of the paper's Data Set 4) a phase-1 residual of
-/// rounding size passes for infeasibility. Rows of [A | b] whose max-norm is outside [2^-10, 2^10] get a
-/// factor 2^-e that brings it into [1/2, 1) (exact in any binary float type); empty: no row needs one.
-template <class T>
-std::vector<double> row_factors(const LpProblem<T>& p) {
-  std::vector<double> factor;
-  for (Index i = 0; i < p.rows(); ++i) {
-    double norm = std::abs(NumberTraits<T>::to_double(p.b(i)));
-    for (Index j = 0; j < p.cols(); ++j) norm = std::max(norm, std::abs(NumberTraits<T>::to_double(p.A(i, j))));
-    if (norm == 0 || (norm >= 0x1p-10 && norm <= 0x1p10)) continue;
-    if (factor.empty()) factor.assign(static_cast<size_t>(p.rows()), 1.0);
-    int e;
-    std::frexp(norm, &e);  // norm = f 2^e, f in [1/2, 1)
-    factor[static_cast<size_t>(i)] = std::ldexp(1.0, -e);
-  }
-  return factor;
-}
-
-/// The two-phase simplex (solve_lp) on the problem as given.
-template <class T>
-LpResult<T> two_phase(const LpProblem<T>& problem, const LpOptions& options);
-
 }  // namespace
 
 template <class T>
@@ -174,29 +150,6 @@ LpResult<T> solve_lp_from_tableau(const LpProblem<T>& problem, SimplexTableau<T>
 
 template <class T>
 LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options) {
-  if constexpr (!NumberTraits<T>::is_exact) {
-    const std::vector<double> factor = options.equilibrate ? row_factors(problem) : std::vector<double>();
-    if (!factor.empty()) {
-      LpProblem<T> scaled = problem;
-      for (Index i = 0; i < scaled.rows(); ++i) {
-        const T f(factor[static_cast<size_t>(i)]);
-        scaled.A.row(i) *= f;
-        scaled.b(i) *= f;
-      }
-      // Row i times f_i: y'^T (F A) = (F y')^T A, so the problem's duals and Farkas vector are F y'.
-      LpResult<T> res = two_phase(scaled, options);
-      for (Index i = 0; i < res.duals.size(); ++i) res.duals(i) *= T(factor[static_cast<size_t>(i)]);
-      for (Index i = 0; i < res.farkas.size(); ++i) res.farkas(i) *= T(factor[static_cast<size_t>(i)]);
-      return res;
-    }
-  }
-  return two_phase(problem, options);
-}
-
-namespace {
-
-template <class T>
-LpResult<T> two_phase(const LpProblem<T>& problem, const LpOptions& options) {
   const Index n = problem.cols();
   if (options.warm_basis) {
     std::optional<SimplexTableau<T>> tab = SimplexTableau<T>::from_basis(problem.A, problem.b, *options.warm_basis);
@@ -240,8 +193,6 @@ LpResult<T> two_phase(const LpProblem<T>& problem, const LpOptions& options) {
   const LoopOutcome out = simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
   return finish(problem, tab, out, pivots);
 }
-
-}  // namespace
 
 bool verify_farkas(const LpProblem<Q>& problem, const Vec<Q>& y) {
   if (y.size() != problem.rows()) return false;

@@ -25,9 +25,7 @@ exact::LpResult<T> run_lp(const exact::LpProblem<T>& lp, Arith arith) {
     if (arith == Arith::kAdaptive) return exact::solve_lp_ladder(lp, exact::adaptive_ladder());
   }
   (void)arith;
-  exact::LpOptions options;
-  options.equilibrate = true;  // X's rows from the left null space of P can be of size 1e9 (Data Set 4)
-  return exact::solve_lp<T>(lp, options);
+  return exact::solve_lp<T>(lp);
 }
 }  // namespace
 

@@ -2,6 +2,8 @@
 // section 2), and its uncoupled complementarity problem (UCP): find (x, y) in X x Y with x^T y = 0.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -93,6 +95,40 @@ UcpInstance<T> convert(const UcpInstance<Q>& u, F f) {
     return StandardPolyhedron<T>{P.A.unaryExpr(f), P.b.unaryExpr(f)};
   };
   return {conv(u.X), conv(u.Y)};
+}
+
+/// Per-row factors of X's and Y's rows from equilibrate (1 for a row left as it was).
+struct RowFactors {
+  std::vector<double> X, Y;
+};
+
+/// For a float T, whose sign test has an absolute tolerance: every row of [A | b] whose max-norm is outside
+/// [2^-10, 2^10] is multiplied by the power of two f_i that brings it into [1/2, 1): exact in binary floats,
+/// the same polyhedra. (X's rows come from the left null space of P and reach 1e9 on Data Set 4, where a
+/// phase-1 residual of rounding size passed for infeasibility.) A Farkas vector y' of the scaled rows is
+/// f_i y'_i for the rows as given.
+template <class T>
+RowFactors equilibrate(UcpInstance<T>& u) {
+  const auto scale = [](StandardPolyhedron<T>& P) {
+    std::vector<double> factor(static_cast<std::size_t>(P.A.rows()), 1.0);
+    for (Eigen::Index i = 0; i < P.A.rows(); ++i) {
+      double norm = std::abs(exact::NumberTraits<T>::to_double(P.b(i)));
+      for (Eigen::Index j = 0; j < P.A.cols(); ++j)
+        norm = std::max(norm, std::abs(exact::NumberTraits<T>::to_double(P.A(i, j))));
+      if (norm == 0 || (norm >= 0x1p-10 && norm <= 0x1p10)) continue;
+      int e;
+      std::frexp(norm, &e);  // norm = m 2^e, m in [1/2, 1)
+      factor[static_cast<std::size_t>(i)] = std::ldexp(1.0, -e);
+      const T f(factor[static_cast<std::size_t>(i)]);
+      P.A.row(i) *= f;
+      P.b(i) *= f;
+    }
+    return factor;
+  };
+  RowFactors r;
+  r.X = scale(u.X);
+  r.Y = scale(u.Y);
+  return r;
 }
 
 }  // namespace contactcert::solvers::ucp

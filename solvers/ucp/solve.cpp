@@ -185,7 +185,7 @@ void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& o
 /// True if the verdict checked out (rep then holds it with exact evidence); false for `unknown`, a verdict
 /// that does not check out, or an uncertain interval sign.
 template <class T>
-bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& opts,
+bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const RowFactors& factors, const UcpOptions& opts,
                const exact::Deadline& deadline, UcpReport& rep) {
   UcpReport r;
   r.method = rep.method;
@@ -195,6 +195,11 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOpti
     run<T>(problem, u, opts, deadline, r, &ev);
   } catch (const exact::UncertainSign&) {
     return false;
+  }
+  for (std::size_t k = 0; k < ev.tree.farkas.size(); ++k) {  // Farkas vectors of the rows as given
+    const std::vector<double>& f = ev.tree.nodes[k].side == Side::kX ? factors.X : factors.Y;
+    Vec<double>& y = ev.tree.farkas[k];
+    for (Eigen::Index i = 0; i < y.size(); ++i) y(i) *= f[static_cast<std::size_t>(i)];
   }
   LpCounters check;
   if (r.status == UcpStatus::kSolvable) {
@@ -237,33 +242,40 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOpti
   return true;
 }
 
+/// Calls f(u, factors) with the problem's instance in the number type of a float rung (double, intervals, or
+/// MPFR at the rung's precision, inside its MpfrPrecision scope), rows equilibrated.
+template <class F>
+auto with_float_instance(const UcpProblem& problem, const exact::Rung& rung, F&& f) {
+  const auto in = [&](auto u) {
+    const RowFactors factors = equilibrate(u);
+    return f(u, factors);
+  };
+  switch (rung.kind) {
+    case exact::Rung::Kind::kInterval:
+      return in(convert<exact::Interval>(problem.ucp, [](const Q& q) { return exact::to_interval(q); }));
+    case exact::Rung::Kind::kMpfr: {
+      const exact::MpfrPrecision precision(rung.bits);  // constants and sign tests at the rung's precision
+      return in(convert<exact::Mpfr>(problem.ucp, [&rung](const Q& q) { return exact::to_mpfr(q, rung.bits); }));
+    }
+    case exact::Rung::Kind::kDouble:
+    case exact::Rung::Kind::kExact:
+      break;
+  }
+  return in(convert<double>(problem.ucp));
+}
+
 /// --arith adaptive: the rungs of exact::adaptive_ladder() in order; the first float rung whose verdict
 /// checks out decides, else the exact rung (rational search, its LPs on the LP ladder) does.
 void solve_adaptive(const UcpProblem& problem, const UcpOptions& opts, const exact::Deadline& deadline,
                     UcpReport& rep) {
   for (const exact::Rung& rung : exact::adaptive_ladder()) {
-    bool decided = false;
-    switch (rung.kind) {
-      case exact::Rung::Kind::kDouble:
-        decided = decide_at(problem, convert<double>(problem.ucp), opts, deadline, rep);
-        break;
-      case exact::Rung::Kind::kInterval:
-        decided =
-            decide_at(problem, convert<exact::Interval>(problem.ucp, [](const Q& q) { return exact::to_interval(q); }),
-                      opts, deadline, rep);
-        break;
-      case exact::Rung::Kind::kMpfr: {
-        const exact::MpfrPrecision precision(rung.bits);  // constants and sign tests at the rung's precision
-        decided = decide_at(
-            problem, convert<exact::Mpfr>(problem.ucp, [&rung](const Q& q) { return exact::to_mpfr(q, rung.bits); }),
-            opts, deadline, rep);
-        break;
-      }
-      case exact::Rung::Kind::kExact:
-        run<Q>(problem, problem.ucp, opts, deadline, rep);
-        decided = true;
-        break;
-    }
+    bool decided = true;
+    if (rung.kind == exact::Rung::Kind::kExact)
+      run<Q>(problem, problem.ucp, opts, deadline, rep);
+    else
+      decided = with_float_instance(problem, rung, [&](const auto& u, const RowFactors& factors) {
+        return decide_at(problem, u, factors, opts, deadline, rep);
+      });
     if (decided) {
       rep.decided_by = exact::rung_name(rung);
       return;
@@ -273,24 +285,9 @@ void solve_adaptive(const UcpProblem& problem, const UcpOptions& opts, const exa
 
 /// --arith float: the method unchecked in the number type of opts.float_rung (an uncertain interval sign: unknown).
 void run_float(const UcpProblem& problem, const UcpOptions& opts, const exact::Deadline& deadline, UcpReport& rep) {
-  const exact::Rung& rung = opts.float_rung;
   try {
-    switch (rung.kind) {
-      case exact::Rung::Kind::kInterval:
-        run(problem, convert<exact::Interval>(problem.ucp, [](const Q& q) { return exact::to_interval(q); }), opts,
-            deadline, rep);
-        return;
-      case exact::Rung::Kind::kMpfr: {
-        const exact::MpfrPrecision precision(rung.bits);  // constants and sign tests at the rung's precision
-        run(problem, convert<exact::Mpfr>(problem.ucp, [&rung](const Q& q) { return exact::to_mpfr(q, rung.bits); }),
-            opts, deadline, rep);
-        return;
-      }
-      case exact::Rung::Kind::kDouble:
-      case exact::Rung::Kind::kExact:
-        run<double>(problem, convert<double>(problem.ucp), opts, deadline, rep);
-        return;
-    }
+    with_float_instance(problem, opts.float_rung,
+                        [&](const auto& u, const RowFactors&) { run(problem, u, opts, deadline, rep); });
   } catch (const exact::UncertainSign&) {
     rep.status = UcpStatus::kUnknown;
     rep.reason = "an interval sign is uncertain";
