@@ -62,38 +62,51 @@ double cpu_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-/// Median over `repeats` batches of the CPU ms of one solve_ucp call (a batch repeats the call until it has
-/// taken 20 ms, so that microsecond calls are timed over many calls).
-double median_ms(const UcpProblem& p, Arith a, int repeats, UcpReport& last) {
-  std::vector<double> ms;
+/// Median over `repeats` batches of the CPU seconds of one call() (a batch repeats the call until it has taken
+/// 20 ms, so that microsecond calls are timed over many calls).
+template <class F>
+double median_seconds(int repeats, F&& call) {
+  std::vector<double> t;
   for (int r = 0; r < repeats; ++r) {
     long calls = 0;
     const double start = cpu_seconds();
     double now = start;
     do {
-      last = run(p, Method::kComplete, a);
+      call();
       ++calls;
       now = cpu_seconds();
     } while (now - start < 0.02);
-    ms.push_back(1e3 * (now - start) / static_cast<double>(calls));
+    t.push_back((now - start) / static_cast<double>(calls));
   }
-  std::nth_element(ms.begin(), ms.begin() + static_cast<long>(ms.size() / 2), ms.end());
-  return ms[ms.size() / 2];
+  std::nth_element(t.begin(), t.begin() + static_cast<long>(t.size() / 2), t.end());
+  return t[t.size() / 2];
+}
+
+/// The median CPU ms of one solve_ucp call.
+double median_ms(const UcpProblem& p, Arith a, int repeats, UcpReport& last) {
+  return 1e3 * median_seconds(repeats, [&] { last = run(p, Method::kComplete, a); });
+}
+
+struct Case {
+  std::string name;
+  UcpProblem p;
+};
+
+/// The paper's Data Sets 1..last (scenes/pang1994_dataset*.json).
+std::vector<Case> paper_cases(int last) {
+  std::vector<Case> cases;
+  for (int k = 1; k <= last; ++k)
+    cases.push_back(
+        {"Data Set " + std::to_string(k),
+         load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json")});
+  return cases;
 }
 
 /// The --arith adaptive table of docs/precision.md: float, verified, adaptive and adaptive without the
 /// physical recovery (the same UCP as a generic problem) on the paper's data sets and the large jammed
 /// problems of `contactcert bench` (family large, nc 40: the section 5 generator, mt19937_64(seed)).
 void adaptive_table(int repeats, const std::string& filter) {
-  struct Case {
-    std::string name;
-    UcpProblem p;
-  };
-  std::vector<Case> cases;
-  for (int k = 1; k <= 4; ++k)
-    cases.push_back(
-        {"Data Set " + std::to_string(k),
-         load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json")});
+  std::vector<Case> cases = paper_cases(4);
   for (std::uint64_t s = 1; s <= 5; ++s) {
     std::mt19937_64 rng(s);
     RandomProblemOptions o;
@@ -119,15 +132,7 @@ void adaptive_table(int repeats, const std::string& filter) {
 /// CPU microseconds of recover and of check_conditions (recovery.h) on the adaptive pair of the paper's
 /// solvable data sets and of solvable random problems (section 5 generator), median of `repeats` batches.
 void recovery_table(int repeats) {
-  struct Case {
-    std::string name;
-    UcpProblem p;
-  };
-  std::vector<Case> cases;
-  for (int k = 1; k <= 3; ++k)
-    cases.push_back(
-        {"Data Set " + std::to_string(k),
-         load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json")});
+  std::vector<Case> cases = paper_cases(3);
   for (auto [nc, abar] : {std::pair{10, 3}, std::pair{40, 0}})
     for (std::uint64_t s = 1, found = 0; s < 60 && found < 2; ++s) {
       UcpProblem p = make(nc, 10, abar, s);
@@ -142,24 +147,8 @@ void recovery_table(int repeats) {
     const UcpReport r = run(c.p, Method::kComplete);
     const QuasistaticProblem& q = *c.p.quasistatic;
     const PhysicalSolution s = *recover(q, *r.x, *r.y);
-    auto median_us = [&](auto&& call) {
-      std::vector<double> us;
-      for (int k = 0; k < repeats; ++k) {
-        long calls = 0;
-        const double start = cpu_seconds();
-        double now = start;
-        do {
-          call();
-          ++calls;
-          now = cpu_seconds();
-        } while (now - start < 0.02);
-        us.push_back(1e6 * (now - start) / static_cast<double>(calls));
-      }
-      std::nth_element(us.begin(), us.begin() + static_cast<long>(us.size() / 2), us.end());
-      return us[us.size() / 2];
-    };
-    const double tr = median_us([&] { (void)recover(q, *r.x, *r.y); });
-    const double tc = median_us([&] { (void)check_conditions(q, s); });
+    const double tr = 1e6 * median_seconds(repeats, [&] { (void)recover(q, *r.x, *r.y); });
+    const double tc = 1e6 * median_seconds(repeats, [&] { (void)check_conditions(q, s); });
     std::printf("%-24s %10.2f %10.2f %10zu\n", c.name.c_str(), tr, tc, check_conditions(q, s).violations.size());
   }
 }
