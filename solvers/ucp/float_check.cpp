@@ -146,7 +146,7 @@ std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, c
       if (!zero[static_cast<std::size_t>(j)]) support.push_back(j);
     if (std::optional<Vec<Q>> xs = exact::with_exact_ring<Q, exact::Int128>(
             [&]<class R>() { return exact::unique_solution(exact::integer_system<R>(P.A, P.b, support)); })) {
-      Vec<Q> x = Vec<Q>::Zero(ucp.n());
+      Vec<Q> x(ucp.n());  // zeros (a default rational is 0, cheaper than Zero())
       bool nonnegative = true;
       for (std::size_t t = 0; t < support.size(); ++t) {
         nonnegative = nonnegative && sgn((*xs)(static_cast<Index>(t))) >= 0;
