@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -83,8 +84,27 @@ double median_seconds(int repeats, F&& call) {
 }
 
 /// The median CPU ms of one solve_ucp call.
-double median_ms(const UcpProblem& p, Arith a, int repeats, UcpReport& last) {
-  return 1e3 * median_seconds(repeats, [&] { last = run(p, Method::kComplete, a); });
+/// CPU seconds per call of each of `calls`, timed in `repeats` interleaved rounds (a round times one batch of
+/// each in turn, so that a change of machine speed during the run moves them alike): per call its median batch, and
+/// the median over rounds of its batch divided by that of calls[0] in the same round (a paired ratio, steadier than
+/// the ratio of medians on a shared machine).
+struct Interleaved {
+  std::vector<double> median, ratio;
+};
+Interleaved interleaved(int repeats, const std::vector<std::function<void()>>& calls) {
+  std::vector<std::vector<double>> t(calls.size()), r(calls.size());
+  for (int round = 0; round < repeats; ++round)
+    for (std::size_t k = 0; k < calls.size(); ++k) {
+      t[k].push_back(median_seconds(1, calls[k]));
+      r[k].push_back(t[k].back() / t[0].back());
+    }
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  Interleaved out;
+  for (std::size_t k = 0; k < calls.size(); ++k) out.median.push_back(median(t[k])), out.ratio.push_back(median(r[k]));
+  return out;
 }
 
 struct Case {
@@ -102,9 +122,10 @@ std::vector<Case> paper_cases(int last) {
   return cases;
 }
 
-/// The --arith adaptive table of docs/precision.md: float, verified, adaptive and adaptive without the
-/// physical recovery (the same UCP as a generic problem) on the paper's data sets and the large jammed
-/// problems of `contactcert bench` (family large, nc 40: the section 5 generator, mt19937_64(seed)).
+/// The --arith adaptive table of docs/precision.md: float, verified, adaptive, and adaptive on the same UCP as a
+/// generic problem (X's and Y's rows only: no physics, and the pair from the rows, not from the velocities and
+/// forces), on the paper's data sets and the large problems of `contactcert bench` (family large, nc 40: the
+/// section 5 generator, mt19937_64(seed)). Timed in interleaved rounds; the ratios are paired (interleaved()).
 void adaptive_table(int repeats, const std::string& filter) {
   std::vector<Case> cases = paper_cases(4);
   for (std::uint64_t s = 1; s <= 5; ++s) {
@@ -113,18 +134,21 @@ void adaptive_table(int repeats, const std::string& filter) {
     o.nc = 40;
     cases.push_back({"large nc 40 seed " + std::to_string(s), generate_random_problem(o, rng)});
   }
-  std::printf("CPU ms per solve_ucp call, median of %d batches\n", repeats);
-  std::printf("%-22s %-9s %9s %9s %9s %12s %-9s %8s %12s\n", "problem", "verdict", "float", "verified", "adaptive",
-              "adapt-nophys", "decided", "repaired", "adapt/float");
+  std::printf("CPU ms per solve_ucp call, median of %d interleaved rounds; ratios to float paired by round\n", repeats);
+  std::printf("%-22s %-9s %9s %9s %9s %9s %-9s %8s %11s %11s\n", "problem", "verdict", "float", "verified", "adaptive",
+              "generic", "decided", "repaired", "adapt/float", "gener/float");
   for (const Case& c : cases) {
     if (c.name.find(filter) == std::string::npos) continue;
     UcpProblem bare = c.p;
     bare.quasistatic.reset();
     UcpReport f, v, a, an;
-    const double tf = median_ms(c.p, Arith::kFloat, repeats, f), tv = median_ms(c.p, Arith::kVerified, repeats, v),
-                 ta = median_ms(c.p, Arith::kAdaptive, repeats, a), tn = median_ms(bare, Arith::kAdaptive, repeats, an);
-    std::printf("%-22s %-9s %9.4f %9.4f %9.4f %12.4f %-9s %8ld %12.1f%s\n", c.name.c_str(), status_name(a.status), tf,
-                tv, ta, tn, a.decided_by.c_str(), a.repaired_leaves, ta / tf,
+    const Interleaved t = interleaved(repeats, {[&] { f = run(c.p, Method::kComplete, Arith::kFloat); },
+                                                [&] { v = run(c.p, Method::kComplete, Arith::kVerified); },
+                                                [&] { a = run(c.p, Method::kComplete, Arith::kAdaptive); },
+                                                [&] { an = run(bare, Method::kComplete, Arith::kAdaptive); }});
+    std::printf("%-22s %-9s %9.4f %9.4f %9.4f %9.4f %-9s %8ld %11.2f %11.2f%s\n", c.name.c_str(), status_name(a.status),
+                1e3 * t.median[0], 1e3 * t.median[1], 1e3 * t.median[2], 1e3 * t.median[3], a.decided_by.c_str(),
+                a.repaired_leaves, t.ratio[2], t.ratio[3],
                 a.status == v.status ? "" : "  VERDICT DIFFERS FROM VERIFIED");
   }
 }

@@ -181,13 +181,19 @@ inline void to_ring(const double* row, Index k, double* out) {
   normalize(out, k);
 }
 
-/// Value-returning ring arithmetic for short formulas (std::int64_t, Int128: checked, see above).
-inline Int128 mul(Int128 a, Int128 b) {
-  constexpr Int128 lo = std::numeric_limits<std::int64_t>::min(), hi = std::numeric_limits<std::int64_t>::max();
-  if (a >= lo && a <= hi && b >= lo && b <= hi) return a * b;  // |a b| <= 2^126: no check (the common case)
+/// Int128: true if x fits in 64 bits (two instructions, against four 128-bit comparisons).
+inline bool fits_int64(Int128 x) { return static_cast<Int128>(static_cast<std::int64_t>(x)) == x; }
+/// The checked 128-bit product, out of line so that the common case of mul stays small enough to inline.
+[[gnu::noinline]] inline Int128 mul_wide(Int128 a, Int128 b) {
   Int128 r;
   if (__builtin_mul_overflow(a, b, &r)) throw RingOverflow{};
   return r;
+}
+
+/// Value-returning ring arithmetic for short formulas (std::int64_t, Int128: checked, see above).
+[[gnu::always_inline]] inline Int128 mul(Int128 a, Int128 b) {
+  if (fits_int64(a) && fits_int64(b)) return a * b;  // |a b| <= 2^126: no check (the common case)
+  return mul_wide(a, b);
 }
 inline Int128 add(Int128 a, Int128 b) {
   Int128 r;
@@ -249,8 +255,8 @@ inline Int128 gcd(Int128 a, Int128 b) {
 }
 /// Int128: a / b for b dividing a (b != 0), in 64 bits when both fit.
 inline Int128 divexact(Int128 a, Int128 b) {
-  constexpr Int128 lo = std::numeric_limits<std::int64_t>::min(), hi = std::numeric_limits<std::int64_t>::max();
-  if (a > lo && a <= hi && b > lo && b <= hi) return static_cast<std::int64_t>(a) / static_cast<std::int64_t>(b);
+  // INT64_MIN / -1 overflows in 64 bits: that case takes the 128-bit division.
+  if (fits_int64(a) && fits_int64(b) && b != -1) return static_cast<std::int64_t>(a) / static_cast<std::int64_t>(b);
   return b == -1 ? sub(0, a) : a / b;
 }
 /// The least common multiple of positive a and b (without a gcd when one divides the other, the common case
@@ -281,13 +287,13 @@ inline void from_integer(const Z& x, std::int64_t& out) {
 }
 inline void from_integer(const Z& x, Z& out) { out = x; }
 /// Int128: reads GMP's limbs directly (this runs once per rational read by the integer checks).
-inline void from_two_limbs(mpz_srcptr z, Int128& out) {
+[[gnu::noinline]] inline void from_two_limbs(mpz_srcptr z, Int128& out) {
   __extension__ typedef unsigned __int128 U128;
   if ((z->_mp_size != 2 && z->_mp_size != -2) || z->_mp_d[1] >> 63 != 0) throw RingOverflow{};
   const U128 u = static_cast<U128>(z->_mp_d[1]) << 64 | z->_mp_d[0];
   out = z->_mp_size < 0 ? -static_cast<Int128>(u) : static_cast<Int128>(u);
 }
-inline void from_integer(const Z& x, Int128& out) {
+[[gnu::always_inline]] inline void from_integer(const Z& x, Int128& out) {
   static_assert(sizeof(mp_limb_t) == 8);
   mpz_srcptr z = x.get_mpz_t();
   if (z->_mp_size == 0)

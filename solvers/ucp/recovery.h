@@ -23,6 +23,32 @@ struct PhysicalSolution {
 /// not in X (no q_dot, theta_dot_abar reproduce v).
 std::optional<PhysicalSolution> recover(const QuasistaticProblem& p, const Vec<Q>& x, const Vec<Q>& y);
 
+/// Fills the forces c_n, c_t = s_t^+ - U c_n and the efforts tau (3) of s from y = (c_n, s_t^+, s_t^-) in Y.
+void recover_forces(const QuasistaticProblem& p, const Vec<Q>& y, PhysicalSolution& s);
+
+// A vertex of X or Y from the zero pattern of a float one, through the physics: the pattern fixes components of
+// the contact velocities or forces, and the rest follows from a small system in P's entries, which are the
+// data's (11 bits on Data Set 1), where X's rows span the left null space of P (25 bits there) and Y's carry the
+// friction identities. Data Set 1's vertices take one 3 x 3 system each (64-bit products) instead of X's 3 x 3
+// in 128 bits and Y's 6 x 6. The point is exact and in X (Y) by construction; nullopt sends the caller to the
+// rows (float_check.h).
+
+/// The velocities (v_n, v_t, q_dot, theta_dot) at the point of X with the zero pattern x_zero (x_i = 0 where
+/// x_zero[i]): u = [q_dot; -theta_abar] solves the rows of (4), (5), P u = v + J_alpha theta_alpha, where the
+/// pattern fixes v to 0 (v_n,i, or v_t,i when v_t,i^+ and v_t,i^- are both fixed), then v = P u - J_alpha
+/// theta_alpha. nullopt unless those rows fix u and v fits the pattern (v_n >= 0, v_t <= 0 where v_t^+ is fixed,
+/// v_t >= 0 where v_t^- is). velocity_point(s) is then the point of X.
+std::optional<PhysicalSolution> pattern_velocities(const QuasistaticProblem& p, const std::vector<bool>& x_zero);
+
+/// x = (v_n, v_t^+, v_t^-) of recovered velocities with v_t^+ = max(v_t, 0), v_t^- = max(-v_t, 0).
+Vec<Q> velocity_point(const PhysicalSolution& s);
+
+/// The point y = (c_n, s_t^+, s_t^-) of Y with the zero pattern y_zero, and its forces c_n, c_t, tau in s: the
+/// pattern fixes c_n,i = 0 (then c_t,i = 0) or c_t,i = -mu_i c_n,i (s_t^+ = 0) or mu_i c_n,i (s_t^- = 0), and the
+/// other components solve (2), (3): P^T c + d' = 0 (d' = [g_obj; (g_man - tau)_abar]). nullopt unless those
+/// fix c and c is in the friction cones (c_n >= 0, |c_t| <= mu c_n).
+std::optional<Vec<Q>> pattern_forces(const QuasistaticProblem& p, const std::vector<bool>& y_zero, PhysicalSolution& s);
+
 enum class ConditionsStatus { kSatisfied, kViolated };
 
 /// The outcome of checking (2)-(10): which conditions fail, with the contact or row.

@@ -75,6 +75,34 @@ void fill_pair(UcpReport& rep, Vec<T> x, Vec<T> y, const UcpProblem& problem) {
   }
 }
 
+/// The float pair of rep made exact with the zero pattern of ev (float_check.h), with its physics. A quasistatic
+/// problem's pair comes from its velocities and forces (pattern_velocities, pattern_forces: small systems in P
+/// instead of X's and Y's rows, and the physics is then known), else from X's and Y's rows. False if a side's face
+/// is empty in exact arithmetic.
+bool exact_solution(const UcpProblem& problem, const FloatEvidence& ev, UcpReport& rep, LpCounters& count) {
+  if (problem.quasistatic) {
+    const QuasistaticProblem& p = *problem.quasistatic;
+    if (std::optional<PhysicalSolution> s = pattern_velocities(p, ev.x_zero)) {
+      std::optional<Vec<Q>> y = pattern_forces(p, ev.y_zero, *s);
+      if (!y) {
+        y = exact_point(problem.ucp.Y, rep.y_approx, ev.y_zero, count);
+        if (!y) return false;
+        recover_forces(p, *y, *s);
+      }
+      rep.conditions = check_conditions(p, *s);
+      rep.x = velocity_point(*s);
+      rep.y = std::move(*y);
+      rep.physical = std::move(s);
+      return true;
+    }
+  }
+  std::optional<std::pair<Vec<Q>, Vec<Q>>> pair =
+      exact_pair(problem.ucp, rep.x_approx, rep.y_approx, ev.x_zero, ev.y_zero, count);
+  if (!pair) return false;
+  fill_pair(rep, std::move(pair->first), std::move(pair->second), problem);
+  return true;
+}
+
 template <class T>
 void set_best(UcpReport& rep, const T& v) {
   if constexpr (std::is_same_v<T, Q>)
@@ -203,10 +231,7 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const RowFact
   }
   LpCounters check;
   if (r.status == UcpStatus::kSolvable) {
-    std::optional<std::pair<Vec<Q>, Vec<Q>>> pair =
-        exact_pair(problem.ucp, r.x_approx, r.y_approx, ev.x_zero, ev.y_zero, check);
-    if (!pair) return false;
-    fill_pair(r, std::move(pair->first), std::move(pair->second), problem);
+    if (!exact_solution(problem, ev, r, check)) return false;
     r.x_approx = r.y_approx = Vec<double>();
     r.best_xTy = Q(0);
   } else if (r.status == UcpStatus::kJammed) {

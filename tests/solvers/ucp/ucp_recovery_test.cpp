@@ -250,6 +250,123 @@ TEST(UcpRecovery, CorruptedSolutionsReportTheSameViolations) {
   EXPECT_FALSE(reference_recover(p, x_bad, y).has_value());
 }
 
+/// x in P = {x >= 0 : A x = b} with x_j = 0 where zero[j], exactly.
+void expect_in_face(const StandardPolyhedron<Q>& P, const Vec<Q>& x, const std::vector<bool>& zero,
+                    const std::string& where) {
+  ASSERT_EQ(x.size(), P.A.cols()) << where;
+  EXPECT_EQ(Vec<Q>(P.A * x), P.b) << where;
+  for (Index j = 0; j < x.size(); ++j) {
+    EXPECT_GE(sgn(x(j)), 0) << where << " entry " << j;
+    if (zero[static_cast<std::size_t>(j)]) {
+      EXPECT_EQ(sgn(x(j)), 0) << where << " entry " << j;
+    }
+  }
+}
+
+/// The zero patterns of a complementary pair as the adaptive path reads them off a float pair: x's zeros, and
+/// y's zeros plus every index where x is not zero.
+std::pair<std::vector<bool>, std::vector<bool>> patterns(const Vec<Q>& x, const Vec<Q>& y) {
+  std::vector<bool> xz(static_cast<std::size_t>(x.size())), yz = xz;
+  for (Index i = 0; i < x.size(); ++i) {
+    xz[static_cast<std::size_t>(i)] = sgn(x(i)) == 0;
+    yz[static_cast<std::size_t>(i)] = sgn(x(i)) != 0 || sgn(y(i)) == 0;
+  }
+  return {xz, yz};
+}
+
+/// pattern_velocities and pattern_forces on the patterns of (x, y): if both succeed, a complementary pair in X
+/// and Y with those patterns whose physics is recover's and satisfies (2)-(10). Returns whether both succeeded.
+bool expect_pattern_route(const UcpProblem& p, const Vec<Q>& x, const Vec<Q>& y, const std::string& where) {
+  const QuasistaticProblem& q = *p.quasistatic;
+  const auto [xz, yz] = patterns(x, y);
+  std::optional<PhysicalSolution> s = pattern_velocities(q, xz);
+  if (!s) return false;
+  const std::optional<Vec<Q>> yp = pattern_forces(q, yz, *s);
+  if (!yp) return false;
+  const Vec<Q> xp = velocity_point(*s);
+  expect_in_face(p.ucp.X, xp, xz, where + " x");
+  expect_in_face(p.ucp.Y, *yp, yz, where + " y");
+  EXPECT_EQ(xp.dot(*yp), 0) << where;
+  const std::optional<PhysicalSolution> want = recover(q, xp, *yp);
+  EXPECT_TRUE(want.has_value()) << where;
+  if (want) expect_same(*s, *want, where);
+  EXPECT_EQ(check_conditions(q, *s).violations, std::vector<std::string>()) << where;
+  return true;
+}
+
+TEST(UcpRecovery, PatternRouteGivesAComplementaryPairWithItsPhysics) {
+  for (int k = 1; k <= 3; ++k) {
+    const UcpProblem p = load_ucp_problem(scene(k));
+    const auto [x, y] = solved_pair(p, Arith::kExact);
+    EXPECT_TRUE(expect_pattern_route(p, x, y, "data set " + std::to_string(k)));
+  }
+  int solved = 0, routed = 0, with_abar = 0;
+  for (int seed = 0; seed < 60; ++seed) {
+    const UcpProblem p = testing::random_problem(seed, 5);
+    UcpOptions o;
+    o.arith = Arith::kVerified;
+    const UcpReport r = solve_ucp(p, o);
+    if (r.status != UcpStatus::kSolvable) continue;
+    ++solved;
+    const bool ok = expect_pattern_route(p, *r.x, *r.y, "seed " + std::to_string(seed));
+    routed += ok;
+    with_abar += ok && !p.quasistatic->abar.empty();
+  }
+  // The search's pairs are vertices: their patterns fix u and c (P of full column rank, no degenerate vertex).
+  EXPECT_GT(solved, 20);
+  EXPECT_GT(routed, solved * 3 / 4);
+  EXPECT_GT(with_abar, 0);
+}
+
+TEST(UcpRecovery, PatternRouteRefusesPatternsThatDoNotFixTheSolution) {
+  const UcpProblem p = load_ucp_problem(scene(1));
+  const QuasistaticProblem& q = *p.quasistatic;
+  const auto [x, y] = solved_pair(p, Arith::kExact);
+  const auto [xz, yz] = patterns(x, y);
+  const Index nc = q.nc;
+  // Nothing fixed: u is free.
+  EXPECT_FALSE(pattern_velocities(q, std::vector<bool>(xz.size(), false)).has_value());
+  // A sliding contact with the sign of its slip swapped in the pattern (v_t^+ fixed to 0 where v_t > 0, or v_t^-
+  // where v_t < 0): the same rows fix the same u, but v_t does not fit the pattern.
+  Index sliding = -1;
+  for (Index i = 0; i < nc; ++i)
+    if (sgn(x(nc + i)) != 0 || sgn(x(2 * nc + i)) != 0) sliding = i;
+  ASSERT_GE(sliding, 0);
+  std::vector<bool> wrong = xz;
+  wrong[static_cast<std::size_t>(nc + sliding)] = xz[static_cast<std::size_t>(2 * nc + sliding)];
+  wrong[static_cast<std::size_t>(2 * nc + sliding)] = xz[static_cast<std::size_t>(nc + sliding)];
+  ASSERT_TRUE(pattern_velocities(q, xz).has_value());
+  EXPECT_FALSE(pattern_velocities(q, wrong).has_value());
+  // Every contact force fixed to 0 under a load: (2) has no solution.
+  PhysicalSolution s = *pattern_velocities(q, xz);
+  std::vector<bool> no_force = yz;
+  for (Index i = 0; i < nc; ++i) no_force[static_cast<std::size_t>(i)] = true;
+  EXPECT_FALSE(pattern_forces(q, no_force, s).has_value());
+  // The pattern of the pair but with contact friction set free where it was on a cone edge: c_t then is a free
+  // unknown too, and (2) with nq = 3 rows cannot fix 2 nc = 6 unknowns.
+  std::vector<bool> free_friction = yz;
+  for (Index i = 0; i < nc; ++i)
+    free_friction[static_cast<std::size_t>(nc + i)] = free_friction[static_cast<std::size_t>(2 * nc + i)] = false;
+  EXPECT_FALSE(pattern_forces(q, free_friction, s).has_value());
+}
+
+TEST(UcpRecovery, PatternRouteBeyond128BitsTakesTheGmpRoute) {
+  const UcpProblem p1 = load_ucp_problem(scene(1));
+  const auto [x, y] = solved_pair(p1, Arith::kExact);
+  std::vector<Q> s;
+  for (unsigned long k = 0; k < 3; ++k) {
+    Z num, den;
+    mpz_ui_pow_ui(den.get_mpz_t(), 3, 45);
+    mpz_ui_pow_ui(num.get_mpz_t(), 2, 70);
+    s.push_back(Q(num + 2 * k + 1, den + k));
+    s.back().canonicalize();
+  }
+  UcpProblem p;
+  p.quasistatic = scale_object(*p1.quasistatic, s);
+  p.ucp = build_ucp(*p.quasistatic);
+  EXPECT_TRUE(expect_pattern_route(p, x, y, "scaled data set 1"));
+}
+
 TEST(UcpRecovery, RandomCorruptionsOfRandomSolutionsReportTheSameViolations) {
   std::mt19937_64 rng(7);
   int with_abar_effort = 0;
