@@ -3,7 +3,6 @@
 // and Data Sets 1-4 and a small Table 1 of the quasistatic paper, every verdict exact and every "no"
 // checked by the independent checker. Prints a summary and writes an HTML report with inline SVG.
 #include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -48,8 +47,9 @@ std::string rows_text(const exact::Mat<Q>& M) {
 /// Section 4 and Figure 4: the wrench cone of each bundled bt2002 scene's mode (named in the file name).
 void wrench_cones(const DemoOptions& o, HtmlReport& rep) {
   rep.heading("Wrench cones (Balkcom and Trinkle 2002, sections 4-6)");
-  rep.paragraph("Each cone is computed exactly (F = K^F P, strict rows of Table 2 as exact limits). Generators are "
-                "drawn as lines of force; the cone is the set of external wrenches consistent with the mode.");
+  rep.paragraph(
+      "Each cone is computed exactly (F = K^F P, strict rows of Table 2 as exact limits). Generators are "
+      "drawn as lines of force; the cone is the set of external wrenches consistent with the mode.");
   std::vector<std::vector<std::string>> rows;
   for (const char* name : {"bt2002_section4_disk.json:na", "bt2002_fig4a_lla.json:lla", "bt2002_fig4b_nnn.json:nnn",
                            "bt2002_fig4c_peg_lra.json:lra", "bt2002_fig4d_peg_nn.json:nn"}) {
@@ -66,8 +66,8 @@ void wrench_cones(const DemoOptions& o, HtmlReport& rep) {
     rep.figure(wrench_cone_svg(scene, empty ? exact::Mat<Q>(0, 3) : c.cone.closure.rays,
                                empty ? exact::Mat<Q>(0, 3) : c.cone.closure.lines, "mode '" + mode_text + "'"),
                file + ", mode '" + mode_text + "'");
-    std::cout << "  cone  " << file << " '" << mode_text << "': "
-              << (empty ? "empty" : "generators " + rows_text(c.cone.closure.rays)) << "\n";
+    std::cout << "  cone  " << file << " '" << mode_text
+              << "': " << (empty ? "empty" : "generators " + rows_text(c.cone.closure.rays)) << "\n";
   }
   rep.table({"scene", "mode", "dimension", "generators (closure)", "open faces"}, rows);
 }
@@ -85,32 +85,36 @@ void stability(const DemoOptions& o, HtmlReport& rep) {
     const std::string cert = solvers::stability_certificate(text, g, r);
     const auto check = solvers::check_stability_certificate(exact::JsonInput::parse(cert, "certificate"));
     rows.push_back({tuple_text(g), solvers::verdict_name(r.verdict),
-                    r.has_moving ? "moves in mode '" + r.moving.mode.text() + "', vdot = " + tuple_text(r.moving.acceleration)
-                                 : std::to_string(r.proofs.size()) + " mode proofs",
+                    r.has_moving
+                        ? "moves in mode '" + r.moving.mode.text() + "', vdot = " + tuple_text(r.moving.acceleration)
+                        : std::to_string(r.proofs.size()) + " mode proofs",
                     check.valid ? "valid" : "INVALID: " + check.reason, std::to_string(r.lps)});
-    std::cout << "  stability g = " << tuple_text(g) << ": " << solvers::verdict_name(r.verdict)
-              << " (certificate " << (check.valid ? "valid" : "INVALID") << ")\n";
+    std::cout << "  stability g = " << tuple_text(g) << ": " << solvers::verdict_name(r.verdict) << " (certificate "
+              << (check.valid ? "valid" : "INVALID") << ")\n";
   }
   rep.table({"wrench g", "verdict", "evidence", "contactcert check", "LPs"}, rows);
   const auto region = solvers::stable_region<Q>(scene);
   int strong3 = 0;
-  for (const auto& c : region.cells) strong3 += c.dimension == 3 && c.label == solvers::StabilityVerdict::kStronglyStable;
-  rep.figure(stability_sphere_svg(region), "Wrench directions for the disk on two fixels, mu = 1.2: " +
-                                               std::to_string(region.cells.size()) + " exact cells, " +
-                                               std::to_string(strong3) + " open strongly stable regions.");
+  for (const auto& c : region.cells)
+    strong3 += c.dimension == 3 && c.label == solvers::StabilityVerdict::kStronglyStable;
+  rep.figure(stability_sphere_svg(region),
+             "Wrench directions for the disk on two fixels, mu = 1.2: " + std::to_string(region.cells.size()) +
+                 " exact cells, " + std::to_string(strong3) + " open strongly stable regions.");
   std::cout << "  region: " << region.cells.size() << " exact cells, " << strong3 << " open strongly stable regions\n";
   const auto pushes = solvers::finger_pushes<Q>(scene, region);
   std::vector<std::vector<std::string>> prow;
   for (const auto& a : pushes.arcs)
     prow.push_back({primitive_json(a.from).dump(), primitive_json(a.to).dump(), solvers::verdict_name(a.label)});
-  rep.paragraph("Frictionless finger pushes along the inward normal, by arc of the boundary (directions from the "
-                "centre, counter-clockwise):");
+  rep.paragraph(
+      "Frictionless finger pushes along the inward normal, by arc of the boundary (directions from the "
+      "centre, counter-clockwise):");
   rep.table({"from direction", "to direction", "verdict"}, prow);
-  rep.figure(wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), "finger pushes",
-                             boundary_marks<solvers::StabilityVerdict>(
-                                 scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); })),
-             "Where a frictionless push along the inward normal is strongly stable (green), only weakly stable "
-             "(yellow) or unstable (red): the dark line of Figure 5.");
+  rep.figure(
+      wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), "finger pushes",
+                      boundary_marks<solvers::StabilityVerdict>(
+                          scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); })),
+      "Where a frictionless push along the inward normal is strongly stable (green), only weakly stable "
+      "(yellow) or unstable (red): the dark line of Figure 5.");
 }
 
 /// Sections 8-9: G_goal and the friction sweep of Figure 11.
@@ -125,12 +129,15 @@ void insertion(const DemoOptions& o, HtmlReport& rep) {
       const auto ins = solvers::insertion<Q>(scene);
       const auto p = solvers::insertion_pushes<Q>(scene, ins);
       if (std::string(mu) == "0.2")
-        rep.figure(wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), std::string(file) + ", mu = 0.2",
-                                   boundary_marks<bool>(scene, p, [](bool in) { return in ? std::string("#1b7837") : ""; })),
-                   std::string("Pushes that seat the workpiece from any contact state (green), mu = 0.2: ") + file);
+        rep.figure(
+            wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), std::string(file) + ", mu = 0.2",
+                            boundary_marks<bool>(scene, p, [](bool in) { return in ? std::string("#1b7837") : ""; })),
+            std::string("Pushes that seat the workpiece from any contact state (green), mu = 0.2: ") + file);
       std::string where;
       for (const auto& e : p.edges)
-        if (e.label) where += "edge " + std::to_string(e.edge) + " s in (" + exact::to_string(e.from) + ", " + exact::to_string(e.to) + ") ";
+        if (e.label)
+          where += "edge " + std::to_string(e.edge) + " s in (" + exact::to_string(e.from) + ", " +
+                   exact::to_string(e.to) + ") ";
       for (const auto& a : p.arcs)
         if (a.label) where += "arc " + primitive_json(a.from).dump() + " to " + primitive_json(a.to).dump() + " ";
       std::size_t needed = 0;
@@ -139,8 +146,9 @@ void insertion(const DemoOptions& o, HtmlReport& rep) {
                       where.empty() ? "none" : where});
     }
   }
-  rep.paragraph("Finger pushes that seat the workpiece from any contact state, by friction coefficient: the set "
-                "shrinks as friction grows (Figure 11).");
+  rep.paragraph(
+      "Finger pushes that seat the workpiece from any contact state, by friction coefficient: the set "
+      "shrinks as friction grows (Figure 11).");
   rep.table({"scene", "mu", "wrench cones in the union", "pushes in G_goal"}, rows);
   std::cout << "  insertion: " << rows.size() << " friction cases\n";
 }
@@ -158,13 +166,15 @@ void quasistatic(const DemoOptions& o, HtmlReport& rep) {
     const double secs = seconds_since(t0);
     std::string evidence;
     if (r.status == solvers::ucp::UcpStatus::kSolvable && r.physical) {
-      evidence = "c_n = " + tuple_text(r.physical->c_n) + ", q_dot = " + tuple_text(r.physical->q_dot) +
-                 (r.conditions && r.conditions->status == solvers::ucp::ConditionsStatus::kSatisfied ? "; (2)-(10) hold exactly" : "; (2)-(10) FAIL");
+      evidence = "c_n = " + tuple_text(r.physical->c_n.to_q()) + ", q_dot = " + tuple_text(r.physical->q_dot.to_q()) +
+                 (r.conditions && r.conditions->status == solvers::ucp::ConditionsStatus::kSatisfied
+                      ? "; (2)-(10) hold exactly"
+                      : "; (2)-(10) FAIL");
     } else if (r.status == solvers::ucp::UcpStatus::kJammed && r.proof) {
       const std::string cert = solvers::ucp::jammed_certificate(problem, *r.proof);
       const auto check = solvers::ucp::check_ucp_certificate(exact::JsonInput::parse(cert, "certificate"));
-      evidence = "certificate with " + std::to_string(r.proof->nodes) + " nodes: " +
-                 (check.verdict == solvers::ucp::CertificateVerdict::kValid ? "valid" : "INVALID");
+      evidence = "certificate with " + std::to_string(r.proof->nodes) +
+                 " nodes: " + (check.verdict == solvers::ucp::CertificateVerdict::kValid ? "valid" : "INVALID");
     } else {
       evidence = r.reason;
     }
@@ -175,8 +185,9 @@ void quasistatic(const DemoOptions& o, HtmlReport& rep) {
   }
   rep.table({"problem", "verdict", "x^T y", "pairs", "LPs", "evidence", "time"}, rows);
 
-  rep.paragraph("A small Table 1: random problems of section 5 (point fingers on a workpiece), the paper's algorithm "
-                "and its modification against the complete exact search.");
+  rep.paragraph(
+      "A small Table 1: random problems of section 5 (point fingers on a workpiece), the paper's algorithm "
+      "and its modification against the complete exact search.");
   std::vector<std::vector<std::string>> t1;
   std::mt19937_64 rng(1994);
   const int sizes[][3] = {{3, 10, 0}, {10, 10, 0}, {10, 20, 0}, {15, 12, 1}, {18, 8, 9}, {20, 10, 10}};
@@ -208,8 +219,9 @@ int run_demo(const DemoOptions& o) {
   create_output_dir(o.out);
   const auto t0 = std::chrono::steady_clock::now();
   HtmlReport rep("contactcert demo: both papers, exactly");
-  rep.paragraph("Every number below is exact (rational arithmetic); every 'no' carries a certificate that the "
-                "independent checker verified in this run.");
+  rep.paragraph(
+      "Every number below is exact (rational arithmetic); every 'no' carries a certificate that the "
+      "independent checker verified in this run.");
   std::cout << "contactcert demo on " << o.scenes << "\n";
   wrench_cones(o, rep);
   stability(o, rep);

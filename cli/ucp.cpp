@@ -121,9 +121,10 @@ int run_ucp(const UcpCliOptions& o) {
     j["best_xTy_approx"] = r.best_xTy_approx;
   if (r.physical) {
     const ucp::PhysicalSolution& s = *r.physical;
-    j["physical"] = {{"c_n", exact_json(s.c_n)}, {"c_t", exact_json(s.c_t)},     {"v_n", exact_json(s.v_n)},
-                     {"v_t", exact_json(s.v_t)}, {"q_dot", exact_json(s.q_dot)}, {"theta_dot", exact_json(s.theta_dot)},
-                     {"tau", exact_json(s.tau)}};
+    j["physical"] = {{"c_n", exact_json(s.c_n.to_q())},     {"c_t", exact_json(s.c_t.to_q())},
+                     {"v_n", exact_json(s.v_n.to_q())},     {"v_t", exact_json(s.v_t.to_q())},
+                     {"q_dot", exact_json(s.q_dot.to_q())}, {"theta_dot", exact_json(s.theta_dot.to_q())},
+                     {"tau", exact_json(s.tau.to_q())}};
     j["physical"]["tau_is"] = "tau - g_man (joint efforts net of gravity loads), all joints";
   }
   if (r.conditions) {
@@ -149,7 +150,8 @@ int run_ucp(const UcpCliOptions& o) {
   } else {
     std::cout << "ucp " << o.file << ": " << j["status"].get<std::string>() << " (" << r.reason << ")\n";
     std::cout << "  method " << j["method"].get<std::string>() << ", arith " << j["arith"].get<std::string>()
-              << (r.decided_by.empty() ? "" : " (decided by " + r.decided_by + ")") << ", pairs " << r.pairs << ", LPs " << r.lps;
+              << (r.decided_by.empty() ? "" : " (decided by " + r.decided_by + ")") << ", pairs " << r.pairs << ", LPs "
+              << r.lps;
     if (r.method == ucp::Method::kComplete) std::cout << ", nodes " << r.nodes;
     std::cout << ", " << r.seconds << " s\n";
     if (r.best_xTy && !r.x) std::cout << "  best x^T y = " << exact::to_string(*r.best_xTy) << "\n";

@@ -76,23 +76,16 @@ void fill_pair(UcpReport& rep, Vec<T> x, Vec<T> y, const UcpProblem& problem) {
 }
 
 /// The float pair of rep made exact with the zero pattern of ev (float_check.h), with its physics. A quasistatic
-/// problem's pair comes from its velocities and forces (pattern_velocities, pattern_forces: small systems in P
-/// instead of X's and Y's rows, and the physics is then known), else from X's and Y's rows. False if a side's face
-/// is empty in exact arithmetic.
+/// problem's pair comes from its velocities and forces (pattern_solution: small systems in P instead of X's and Y's
+/// rows, and the physics comes with it), else from X's and Y's rows. False if a side's face is empty in exact
+/// arithmetic.
 bool exact_solution(const UcpProblem& problem, const FloatEvidence& ev, UcpReport& rep, LpCounters& count) {
   if (problem.quasistatic) {
-    const QuasistaticProblem& p = *problem.quasistatic;
-    if (std::optional<PhysicalSolution> s = pattern_velocities(p, ev.x_zero)) {
-      std::optional<Vec<Q>> y = pattern_forces(p, ev.y_zero, *s);
-      if (!y) {
-        y = exact_point(problem.ucp.Y, rep.y_approx, ev.y_zero, count);
-        if (!y) return false;
-        recover_forces(p, *y, *s);
-      }
-      rep.conditions = check_conditions(p, *s);
-      rep.x = velocity_point(*s);
-      rep.y = std::move(*y);
-      rep.physical = std::move(s);
+    if (std::optional<PatternSolution> s = pattern_solution(*problem.quasistatic, ev.x_zero, ev.y_zero)) {
+      rep.conditions = check_conditions(*problem.quasistatic, s->physical);
+      rep.x = std::move(s->x);
+      rep.y = std::move(s->y);
+      rep.physical = std::move(s->physical);
       return true;
     }
   }

@@ -21,10 +21,36 @@ std::string scene(int k) {
   return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json";
 }
 
+/// PhysicalSolution's vectors as Eigen vectors over Q, for the reference and for corrupting solutions.
+struct Physics {
+  Vec<Q> c_n, c_t, v_n, v_t, q_dot, theta_dot, tau;
+  Physics() = default;
+  explicit Physics(const PhysicalSolution& s)
+      : c_n(s.c_n.to_q()),
+        c_t(s.c_t.to_q()),
+        v_n(s.v_n.to_q()),
+        v_t(s.v_t.to_q()),
+        q_dot(s.q_dot.to_q()),
+        theta_dot(s.theta_dot.to_q()),
+        tau(s.tau.to_q()) {}
+  PhysicalSolution exact() const {
+    using exact::RationalVector;
+    return {RationalVector(c_n),   RationalVector(c_t),       RationalVector(v_n), RationalVector(v_t),
+            RationalVector(q_dot), RationalVector(theta_dot), RationalVector(tau)};
+  }
+};
+
+/// v with entry i replaced by value.
+void change(exact::RationalVector& v, Index i, const Q& value) {
+  Vec<Q> q = v.to_q();
+  q(i) = value;
+  v = exact::RationalVector(q);
+}
+
 // The reference: the proof of Proposition 1 and conditions (2)-(10) written with Eigen products over Q.
 std::optional<PhysicalSolution> reference_recover(const QuasistaticProblem& p, const Vec<Q>& x, const Vec<Q>& y) {
   const Index nc = p.nc, nq = p.nq;
-  PhysicalSolution s;
+  Physics s;
   s.v_n = x.segment(0, nc);
   s.v_t = x.segment(nc, nc) - x.segment(2 * nc, nc);
   s.c_n = y.segment(0, nc);
@@ -38,10 +64,11 @@ std::optional<PhysicalSolution> reference_recover(const QuasistaticProblem& p, c
   s.theta_dot = p.theta_dot;
   for (std::size_t k = 0; k < p.abar.size(); ++k) s.theta_dot(p.abar[k]) = -(*b)(nq + static_cast<Index>(k));
   s.tau = p.Jn.transpose() * s.c_n + p.Jt.transpose() * s.c_t;
-  return s;
+  return s.exact();
 }
 
-std::vector<std::string> reference_violations(const QuasistaticProblem& p, const PhysicalSolution& s) {
+std::vector<std::string> reference_violations(const QuasistaticProblem& p, const PhysicalSolution& exact_s) {
+  const Physics s(exact_s);
   std::vector<std::string> out;
   const Index nc = p.nc;
   const Mat<Q> Wn = p.Wn(), Wt = p.Wt();
@@ -85,6 +112,10 @@ void expect_same(const Vec<Q>& got, const Vec<Q>& want, const std::string& what)
     EXPECT_EQ(mpz_cmp(got(i).get_num_mpz_t(), canonical.get_num_mpz_t()), 0) << what << "(" << i << ")";
     EXPECT_EQ(mpz_cmp(got(i).get_den_mpz_t(), canonical.get_den_mpz_t()), 0) << what << "(" << i << ")";
   }
+}
+
+void expect_same(const exact::RationalVector& got, const exact::RationalVector& want, const std::string& what) {
+  expect_same(got.to_q(), want.to_q(), what);
 }
 
 void expect_same(const PhysicalSolution& got, const PhysicalSolution& want, const std::string& where) {
@@ -195,14 +226,17 @@ TEST(UcpRecovery, NumbersBeyond128BitsTakeTheGmpRouteWithTheSameResult) {
   EXPECT_EQ(expect_as_reference(p, x, y, "scaled data set 1"), 0u);
   // Independently: q_dot' = S^-1 q_dot, and the rest as in the unscaled problem.
   const PhysicalSolution got = *recover(p, x, y);
-  for (Index k = 0; k < 3; ++k) EXPECT_EQ(got.q_dot(k), s1.q_dot(k) / s[static_cast<std::size_t>(k)]);
+  for (Index k = 0; k < 3; ++k) {
+    const Q want = s1.q_dot(k) / s[static_cast<std::size_t>(k)];
+    EXPECT_EQ(got.q_dot(k), want);
+  }
   expect_same(got.tau, s1.tau, "tau");
   expect_same(got.c_t, s1.c_t, "c_t");
   // Corrupted with a denominator beyond 128 bits: the check goes to GMP and reports the same violations.
   PhysicalSolution bad = got;
   Z big;
   mpz_ui_pow_ui(big.get_mpz_t(), 2, 130);
-  bad.c_t(1) += Q(1) / Q(big + 1);
+  change(bad.c_t, 1, bad.c_t(1) + Q(1) / Q(big + 1));
   const std::vector<std::string> want = reference_violations(p, bad);
   EXPECT_EQ(check_conditions(p, bad).violations, want);
   EXPECT_FALSE(want.empty());
@@ -222,23 +256,26 @@ TEST(UcpRecovery, CorruptedSolutionsReportTheSameViolations) {
       EXPECT_NE(std::find(c.violations.begin(), c.violations.end(), e), c.violations.end()) << e;
   };
   PhysicalSolution bad = s;
-  bad.v_n(1) = -1;
+  change(bad.v_n, 1, Q(-1));
   expect_violations(bad, {"(4) contact 1: v_n != Wn^T q_dot - Jn theta_dot", "(6) contact 1: v_n < 0"});
   bad = s;
-  bad.theta_dot(0) += Q(1, 3);
+  change(bad.theta_dot, 0, bad.theta_dot(0) + Q(1, 3));
   expect_violations(
       bad, {"theta_dot of joint 0 differs from its given value", "(4) contact 0: v_n != Wn^T q_dot - Jn theta_dot"});
   bad = s;
-  bad.tau(2) += 1;
+  change(bad.tau, 2, bad.tau(2) + 1);
   expect_violations(bad, {"(3) joint 2 equilibrium fails"});
   bad = s;
-  bad.c_t(0) += Q(1, 7);
+  change(bad.c_t, 0, bad.c_t(0) + Q(1, 7));
   expect_violations(bad, {"(2) equilibrium row 0 is not zero", "(3) joint 1 equilibrium fails"});
   bad = s;
-  bad.q_dot(0) += Q(2, 9);
+  change(bad.q_dot, 0, bad.q_dot(0) + Q(2, 9));
   expect_violations(bad, {"(4) contact 0: v_n != Wn^T q_dot - Jn theta_dot"});
   bad = s;
-  for (Index i = 0; i < p.nc; ++i) bad.c_t(i) = 2 * p.mu(i) * bad.c_n(i), bad.v_t(i) = 1 - 2 * (i % 2);
+  for (Index i = 0; i < p.nc; ++i) {
+    change(bad.c_t, i, 2 * p.mu(i) * bad.c_n(i));
+    change(bad.v_t, i, Q(1 - 2 * (i % 2)));
+  }
   expect_violations(bad, {"(7) contact 0: |c_t| > mu c_n"});
   // A pair whose y is not in Y: its forces miss (2); an x off X has no q_dot at all.
   Vec<Q> y_bad = y;
@@ -274,23 +311,20 @@ std::pair<std::vector<bool>, std::vector<bool>> patterns(const Vec<Q>& x, const 
   return {xz, yz};
 }
 
-/// pattern_velocities and pattern_forces on the patterns of (x, y): if both succeed, a complementary pair in X
-/// and Y with those patterns whose physics is recover's and satisfies (2)-(10). Returns whether both succeeded.
+/// pattern_solution on the patterns of (x, y): if it succeeds, a complementary pair in X and Y with those patterns
+/// whose physics is recover's and satisfies (2)-(10). Returns whether it succeeded.
 bool expect_pattern_route(const UcpProblem& p, const Vec<Q>& x, const Vec<Q>& y, const std::string& where) {
   const QuasistaticProblem& q = *p.quasistatic;
   const auto [xz, yz] = patterns(x, y);
-  std::optional<PhysicalSolution> s = pattern_velocities(q, xz);
+  const std::optional<PatternSolution> s = pattern_solution(q, xz, yz);
   if (!s) return false;
-  const std::optional<Vec<Q>> yp = pattern_forces(q, yz, *s);
-  if (!yp) return false;
-  const Vec<Q> xp = velocity_point(*s);
-  expect_in_face(p.ucp.X, xp, xz, where + " x");
-  expect_in_face(p.ucp.Y, *yp, yz, where + " y");
-  EXPECT_EQ(xp.dot(*yp), 0) << where;
-  const std::optional<PhysicalSolution> want = recover(q, xp, *yp);
+  expect_in_face(p.ucp.X, s->x, xz, where + " x");
+  expect_in_face(p.ucp.Y, s->y, yz, where + " y");
+  EXPECT_EQ(s->x.dot(s->y), 0) << where;
+  const std::optional<PhysicalSolution> want = recover(q, s->x, s->y);
   EXPECT_TRUE(want.has_value()) << where;
-  if (want) expect_same(*s, *want, where);
-  EXPECT_EQ(check_conditions(q, *s).violations, std::vector<std::string>()) << where;
+  if (want) expect_same(s->physical, *want, where);
+  EXPECT_EQ(check_conditions(q, s->physical).violations, std::vector<std::string>()) << where;
   return true;
 }
 
@@ -324,8 +358,9 @@ TEST(UcpRecovery, PatternRouteRefusesPatternsThatDoNotFixTheSolution) {
   const auto [x, y] = solved_pair(p, Arith::kExact);
   const auto [xz, yz] = patterns(x, y);
   const Index nc = q.nc;
+  ASSERT_TRUE(pattern_solution(q, xz, yz).has_value());
   // Nothing fixed: u is free.
-  EXPECT_FALSE(pattern_velocities(q, std::vector<bool>(xz.size(), false)).has_value());
+  EXPECT_FALSE(pattern_solution(q, std::vector<bool>(xz.size(), false), yz).has_value());
   // A sliding contact with the sign of its slip swapped in the pattern (v_t^+ fixed to 0 where v_t > 0, or v_t^-
   // where v_t < 0): the same rows fix the same u, but v_t does not fit the pattern.
   Index sliding = -1;
@@ -335,19 +370,17 @@ TEST(UcpRecovery, PatternRouteRefusesPatternsThatDoNotFixTheSolution) {
   std::vector<bool> wrong = xz;
   wrong[static_cast<std::size_t>(nc + sliding)] = xz[static_cast<std::size_t>(2 * nc + sliding)];
   wrong[static_cast<std::size_t>(2 * nc + sliding)] = xz[static_cast<std::size_t>(nc + sliding)];
-  ASSERT_TRUE(pattern_velocities(q, xz).has_value());
-  EXPECT_FALSE(pattern_velocities(q, wrong).has_value());
+  EXPECT_FALSE(pattern_solution(q, wrong, yz).has_value());
   // Every contact force fixed to 0 under a load: (2) has no solution.
-  PhysicalSolution s = *pattern_velocities(q, xz);
   std::vector<bool> no_force = yz;
   for (Index i = 0; i < nc; ++i) no_force[static_cast<std::size_t>(i)] = true;
-  EXPECT_FALSE(pattern_forces(q, no_force, s).has_value());
-  // The pattern of the pair but with contact friction set free where it was on a cone edge: c_t then is a free
-  // unknown too, and (2) with nq = 3 rows cannot fix 2 nc = 6 unknowns.
+  EXPECT_FALSE(pattern_solution(q, xz, no_force).has_value());
+  // Friction set free at every contact: c_t is then an unknown too, and (2) with nq = 3 rows cannot fix 2 nc = 6
+  // unknowns.
   std::vector<bool> free_friction = yz;
   for (Index i = 0; i < nc; ++i)
     free_friction[static_cast<std::size_t>(nc + i)] = free_friction[static_cast<std::size_t>(2 * nc + i)] = false;
-  EXPECT_FALSE(pattern_forces(q, free_friction, s).has_value());
+  EXPECT_FALSE(pattern_solution(q, xz, free_friction).has_value());
 }
 
 TEST(UcpRecovery, PatternRouteBeyond128BitsTakesTheGmpRoute) {
@@ -377,11 +410,12 @@ TEST(UcpRecovery, RandomCorruptionsOfRandomSolutionsReportTheSameViolations) {
     const PhysicalSolution s = *recover(q, x, y);
     for (int t = 0; t < 10; ++t) {
       PhysicalSolution bad = s;
-      Vec<Q>* parts[] = {&bad.c_n, &bad.c_t, &bad.v_n, &bad.v_t, &bad.q_dot, &bad.theta_dot, &bad.tau};
-      Vec<Q>& v = *parts[rng() % 7];
+      exact::RationalVector* parts[] = {&bad.c_n, &bad.c_t, &bad.v_n, &bad.v_t, &bad.q_dot, &bad.theta_dot, &bad.tau};
+      exact::RationalVector& v = *parts[rng() % 7];
       Q delta(static_cast<long>(rng() % 7) - 3, static_cast<unsigned long>(1 + rng() % 50));
       delta.canonicalize();
-      v(static_cast<Index>(rng() % static_cast<std::uint64_t>(v.size()))) += delta;
+      const auto at = static_cast<Index>(rng() % static_cast<std::uint64_t>(v.size()));
+      change(v, at, v(at) + delta);
       const std::vector<std::string> want = reference_violations(q, bad);
       const ConditionsCheck c = check_conditions(q, bad);
       EXPECT_EQ(c.violations, want) << "seed " << seed;

@@ -1,0 +1,45 @@
+// A vector of rationals held as integer numerators over one common denominator: the form the exact integer
+// routes compute in (the UCP's physical recovery, solvers/ucp/recovery.h). The numbers are kept in 128-bit
+// integers when they fit and in GMP integers otherwise; a GMP rational (two heap allocations) is made only when an
+// entry is read as one.
+#pragma once
+
+#include <vector>
+
+#include "exact/fraction_free.h"
+
+namespace contactcert::exact {
+
+class RationalVector {
+ public:
+  RationalVector() = default;
+  /// The entries of v.
+  explicit RationalVector(const Vec<Q>& v);
+  /// num[i] / den (den != 0, either sign; nothing needs to be in lowest terms).
+  RationalVector(std::vector<Int128> num, Int128 den);
+  RationalVector(std::vector<Z> num, Z den);
+
+  Eigen::Index size() const { return static_cast<Eigen::Index>(wide_ ? wide_num_.size() : num_.size()); }
+  /// Entry i in lowest terms.
+  Q operator()(Eigen::Index i) const;
+  /// The sign of entry i.
+  int sign(Eigen::Index i) const;
+  /// All entries.
+  Vec<Q> to_q() const;
+  /// The entries as out[i] / den with den > 0 (Int128: throws RingOverflow if they are held in GMP integers that do
+  /// not fit, so that with_exact_ring restarts in Z).
+  void numerators(Int128* out, Int128& den) const;
+  void numerators(Z* out, Z& den) const;
+
+  /// The same values.
+  friend bool operator==(const RationalVector& a, const RationalVector& b);
+
+ private:
+  std::vector<Int128> num_;
+  Int128 den_ = 1;
+  std::vector<Z> wide_num_;
+  Z wide_den_ = 1;
+  bool wide_ = false;  ///< held in wide_num_ / wide_den_
+};
+
+}  // namespace contactcert::exact
