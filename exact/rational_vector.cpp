@@ -15,15 +15,15 @@ RationalVector::RationalVector(const Vec<Q>& v) {
   }
 }
 
-RationalVector::RationalVector(std::vector<Int128> num, Int128 den) : num_(std::move(num)), den_(den) {
+RationalVector::RationalVector(const Int128* num, Eigen::Index k, Int128 den) : num_(num, num + k), den_(den) {
   if (den_ < 0) {
     den_ = ring::sub(0, den_);
     for (Int128& n : num_) n = ring::sub(0, n);
   }
 }
 
-RationalVector::RationalVector(std::vector<Z> num, Z den)
-    : wide_num_(std::move(num)), wide_den_(std::move(den)), wide_(true) {
+RationalVector::RationalVector(const Z* num, Eigen::Index k, Z den)
+    : wide_num_(num, num + k), wide_den_(std::move(den)), wide_(true) {
   if (sgn(wide_den_) < 0) {
     wide_den_ = -wide_den_;
     for (Z& n : wide_num_) n = -n;

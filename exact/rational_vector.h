@@ -4,6 +4,7 @@
 // entry is read as one.
 #pragma once
 
+#include <boost/container/small_vector.hpp>
 #include <vector>
 
 #include "exact/fraction_free.h"
@@ -15,9 +16,9 @@ class RationalVector {
   RationalVector() = default;
   /// The entries of v.
   explicit RationalVector(const Vec<Q>& v);
-  /// num[i] / den (den != 0, either sign; nothing needs to be in lowest terms).
-  RationalVector(std::vector<Int128> num, Int128 den);
-  RationalVector(std::vector<Z> num, Z den);
+  /// num[i] / den for i < k (den != 0, either sign; nothing needs to be in lowest terms).
+  RationalVector(const Int128* num, Eigen::Index k, Int128 den);
+  RationalVector(const Z* num, Eigen::Index k, Z den);
 
   Eigen::Index size() const { return static_cast<Eigen::Index>(wide_ ? wide_num_.size() : num_.size()); }
   /// Entry i in lowest terms.
@@ -35,10 +36,10 @@ class RationalVector {
   friend bool operator==(const RationalVector& a, const RationalVector& b);
 
  private:
-  std::vector<Int128> num_;
+  boost::container::small_vector<Int128, 8> num_;  ///< inline up to 8 entries: no heap allocation for small problems
   Int128 den_ = 1;
   std::vector<Z> wide_num_;
-  Z wide_den_ = 1;
+  Z wide_den_;         // unused (and unallocated: GMP 6.2 allocates on first assignment) unless wide_
   bool wide_ = false;  ///< held in wide_num_ / wide_den_
 };
 

@@ -33,10 +33,19 @@ std::optional<PhysicalSolution> recover(const QuasistaticProblem& p, const Vec<Q
 // 128 bits and Y's 6 x 6, and the physics comes with the pair. The pair is exact and in X and Y by construction;
 // nullopt sends the caller to the rows (float_check.h).
 
-/// A complementary pair with its physics.
+/// The outcome of checking (2)-(10): which conditions fail, with the contact or row.
+enum class ConditionsStatus { kSatisfied, kViolated };
+struct ConditionsCheck {
+  ConditionsStatus status = ConditionsStatus::kSatisfied;
+  std::vector<std::string> violations;  ///< e.g. "(8) contact 2: c_n > 0 but v_n > 0"
+};
+
+/// A complementary pair with its physics and the check of (2)-(10) on it (as check_conditions, from the same
+/// integer copy of the data).
 struct PatternSolution {
   Vec<Q> x, y;
   PhysicalSolution physical;
+  ConditionsCheck conditions;
 };
 
 /// The vertices x of X and y of Y with the zero patterns x_zero and y_zero (x_i = 0 where x_zero[i], y_i = 0 where
@@ -50,14 +59,6 @@ struct PatternSolution {
 /// |c_t| <= mu c_n).
 std::optional<PatternSolution> pattern_solution(const QuasistaticProblem& p, const std::vector<bool>& x_zero,
                                                 const std::vector<bool>& y_zero);
-
-enum class ConditionsStatus { kSatisfied, kViolated };
-
-/// The outcome of checking (2)-(10): which conditions fail, with the contact or row.
-struct ConditionsCheck {
-  ConditionsStatus status = ConditionsStatus::kSatisfied;
-  std::vector<std::string> violations;  ///< e.g. "(8) contact 2: c_n > 0 but v_n > 0"
-};
 
 /// Checks the paper's conditions (2)-(10) exactly on recovered quantities.
 ConditionsCheck check_conditions(const QuasistaticProblem& p, const PhysicalSolution& s);

@@ -82,7 +82,7 @@ void fill_pair(UcpReport& rep, Vec<T> x, Vec<T> y, const UcpProblem& problem) {
 bool exact_solution(const UcpProblem& problem, const FloatEvidence& ev, UcpReport& rep, LpCounters& count) {
   if (problem.quasistatic) {
     if (std::optional<PatternSolution> s = pattern_solution(*problem.quasistatic, ev.x_zero, ev.y_zero)) {
-      rep.conditions = check_conditions(*problem.quasistatic, s->physical);
+      rep.conditions = std::move(s->conditions);
       rep.x = std::move(s->x);
       rep.y = std::move(s->y);
       rep.physical = std::move(s->physical);

@@ -325,6 +325,8 @@ bool expect_pattern_route(const UcpProblem& p, const Vec<Q>& x, const Vec<Q>& y,
   EXPECT_TRUE(want.has_value()) << where;
   if (want) expect_same(s->physical, *want, where);
   EXPECT_EQ(check_conditions(q, s->physical).violations, std::vector<std::string>()) << where;
+  EXPECT_EQ(s->conditions.status, ConditionsStatus::kSatisfied) << where;
+  EXPECT_EQ(s->conditions.violations, std::vector<std::string>()) << where;
   return true;
 }
 
