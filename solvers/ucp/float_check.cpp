@@ -133,40 +133,39 @@ class LeafProver {
 
 }  // namespace
 
-std::optional<Vec<Q>> exact_point(const StandardPolyhedron<Q>& P, const Vec<double>& approx,
-                                  const std::vector<bool>& zero, LpCounters& count) {
-  const Index n = P.A.cols();
-  // A vertex (the search's points are): its support columns are independent, so A_S x_S = b has one solution
-  // (only those columns become integers).
-  std::vector<Index> support;
-  for (Index j = 0; j < n; ++j)
-    if (!zero[static_cast<std::size_t>(j)]) support.push_back(j);
-  if (std::optional<Vec<Q>> xs = exact::with_exact_ring<Q, exact::Int128>(
-          [&]<class R>() { return exact::unique_solution(exact::integer_system<R>(P.A, P.b, support)); })) {
-    Vec<Q> x(n);  // zeros (a default rational is 0, cheaper than Zero())
-    bool nonnegative = true;
-    for (std::size_t t = 0; t < support.size(); ++t) {
-      nonnegative = nonnegative && sgn((*xs)(static_cast<Index>(t))) >= 0;
-      swap(x(support[t]), (*xs)(static_cast<Index>(t)));
-    }
-    if (nonnegative) return x;
-  }
-  IntegerRows rows(P);
-  if (std::optional<Vec<Q>> x =
-          rows.run([&](const auto& system) { return exact::rounded_point(system, approx, zero); }))
-    return x;
-  const FaceLpResult<Q> r = minimize_on_face(make_face(P, zero), Vec<Q>(Vec<Q>::Zero(n)), Arith::kVerified, count);
-  if (r.status != FaceLpStatus::kOptimal) return std::nullopt;
-  return r.vertex.x;
-}
-
 std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, const Vec<double>& x_approx,
                                                     const Vec<double>& y_approx, const std::vector<bool>& x_zero,
                                                     const std::vector<bool>& y_zero, LpCounters& count) {
   for (std::size_t i = 0; i < x_zero.size(); ++i) assert(x_zero[i] || y_zero[i]);
-  std::optional<Vec<Q>> x = exact_point(ucp.X, x_approx, x_zero, count);
+  const auto point = [&](const StandardPolyhedron<Q>& P, const Vec<double>& approx,
+                         const std::vector<bool>& zero) -> std::optional<Vec<Q>> {
+    // A vertex (the search's points are): its support columns are independent, so A_S x_S = b has one solution
+    // (only those columns become integers).
+    std::vector<Index> support;
+    for (Index j = 0; j < ucp.n(); ++j)
+      if (!zero[static_cast<std::size_t>(j)]) support.push_back(j);
+    if (std::optional<Vec<Q>> xs = exact::with_exact_ring<Q, exact::Int128>(
+            [&]<class R>() { return exact::unique_solution(exact::integer_system<R>(P.A, P.b, support)); })) {
+      Vec<Q> x(ucp.n());  // zeros (a default rational is 0, cheaper than Zero())
+      bool nonnegative = true;
+      for (std::size_t t = 0; t < support.size(); ++t) {
+        nonnegative = nonnegative && sgn((*xs)(static_cast<Index>(t))) >= 0;
+        swap(x(support[t]), (*xs)(static_cast<Index>(t)));
+      }
+      if (nonnegative) return x;
+    }
+    IntegerRows rows(P);
+    if (std::optional<Vec<Q>> x =
+            rows.run([&](const auto& system) { return exact::rounded_point(system, approx, zero); }))
+      return x;
+    const FaceLpResult<Q> r =
+        minimize_on_face(make_face(P, zero), Vec<Q>(Vec<Q>::Zero(ucp.n())), Arith::kVerified, count);
+    if (r.status != FaceLpStatus::kOptimal) return std::nullopt;
+    return r.vertex.x;
+  };
+  std::optional<Vec<Q>> x = point(ucp.X, x_approx, x_zero);
   if (!x) return std::nullopt;
-  std::optional<Vec<Q>> y = exact_point(ucp.Y, y_approx, y_zero, count);
+  std::optional<Vec<Q>> y = point(ucp.Y, y_approx, y_zero);
   if (!y) return std::nullopt;
   return std::make_pair(std::move(*x), std::move(*y));
 }

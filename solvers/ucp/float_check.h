@@ -12,11 +12,6 @@
 
 namespace contactcert::solvers::ucp {
 
-/// An exact point of P with x_j = 0 where zero[j], found as exact_pair says from the float point `approx`; nullopt
-/// if that face of P is empty in exact arithmetic (count: the exact LPs run).
-std::optional<Vec<Q>> exact_point(const StandardPolyhedron<Q>& P, const Vec<double>& approx,
-                                  const std::vector<bool>& zero, LpCounters& count);
-
 /// An exact complementary pair with the zero pattern of a float one (x_approx, y_approx): x in X with x_i = 0
 /// where x_zero[i], y in Y with y_i = 0 where y_zero[i]. Every index must be in one pattern (then x^T y = 0).
 /// Each side is first the exact solution on the float point's support if it is unique and >= 0 (a vertex:

@@ -8,10 +8,11 @@
 #include "exact/linalg.h"
 #include "exact/rounded_certificate.h"
 
-// Both functions run in integers: every rational vector over one common denominator, every data row (of P,
-// Jn, Jt, d, mu) times the lcm of its denominators, so that each equality of (2)-(5) is an integer dot product
-// equal to 0 and each friction condition an integer comparison. They run in Int128 first and, when a number
-// does not fit (RingOverflow), again in Z (with_exact_ring): exact either way, 128 bits are only a speed-up.
+// Everything here runs in integers: the problem's data once per call (IntegerData: each row of P and of [Jn; Jt]
+// times the lcm of its denominators), every rational vector over one common denominator, so that each equality
+// of (2)-(5) is an integer dot product equal to 0 and each friction condition an integer comparison; the physics
+// stays in that form (exact::RationalVector). Int128 first and, when a number does not fit (RingOverflow), again in
+// Z (with_exact_ring): exact either way, 128 bits are only a speed-up.
 
 namespace contactcert::solvers::ucp {
 

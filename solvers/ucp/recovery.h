@@ -13,7 +13,7 @@ namespace contactcert::solvers::ucp {
 
 /// The quantities of the quasistatic contact problem recovered from (x, y) (proof of Proposition 1), exact. They
 /// are computed in integers over common denominators and kept so (exact::RationalVector: v(i) or v.to_q() give
-/// rationals), which spares an adaptive solve the 27 GMP rationals of Data Set 1 that nobody may read.
+/// rationals): an adaptive solve would otherwise build 27 GMP rationals (Data Set 1) for every report, read or not.
 struct PhysicalSolution {
   exact::RationalVector c_n, c_t;   ///< contact force intensities; c_t = s_t^+ - U c_n
   exact::RationalVector v_n, v_t;   ///< relative contact velocities; v_t = v_t^+ - v_t^-
@@ -26,19 +26,20 @@ struct PhysicalSolution {
 /// not in X (no q_dot, theta_dot_abar reproduce v).
 std::optional<PhysicalSolution> recover(const QuasistaticProblem& p, const Vec<Q>& x, const Vec<Q>& y);
 
+enum class ConditionsStatus { kSatisfied, kViolated };
+
+/// The outcome of checking (2)-(10): which conditions fail, with the contact or row.
+struct ConditionsCheck {
+  ConditionsStatus status = ConditionsStatus::kSatisfied;
+  std::vector<std::string> violations;  ///< e.g. "(8) contact 2: c_n > 0 but v_n > 0"
+};
+
 // A complementary pair from the zero patterns of a float one, through the physics: the patterns fix components
 // of the contact velocities and forces, and the rest follows from small systems in P's entries, which are the
 // data's (11 bits on Data Set 1), where X's rows span the left null space of P (25 bits there) and Y's carry the
 // friction identities. On Data Set 1 that is one 3 x 3 system per side in 64-bit products instead of X's 3 x 3 in
 // 128 bits and Y's 6 x 6, and the physics comes with the pair. The pair is exact and in X and Y by construction;
 // nullopt sends the caller to the rows (float_check.h).
-
-/// The outcome of checking (2)-(10): which conditions fail, with the contact or row.
-enum class ConditionsStatus { kSatisfied, kViolated };
-struct ConditionsCheck {
-  ConditionsStatus status = ConditionsStatus::kSatisfied;
-  std::vector<std::string> violations;  ///< e.g. "(8) contact 2: c_n > 0 but v_n > 0"
-};
 
 /// A complementary pair with its physics and the check of (2)-(10) on it (as check_conditions, from the same
 /// integer copy of the data).

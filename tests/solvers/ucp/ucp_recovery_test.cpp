@@ -205,11 +205,8 @@ QuasistaticProblem scale_object(QuasistaticProblem p, const std::vector<Q>& s) {
   return p;
 }
 
-TEST(UcpRecovery, NumbersBeyond128BitsTakeTheGmpRouteWithTheSameResult) {
-  const UcpProblem p1 = load_ucp_problem(scene(1));
-  const auto [x, y] = solved_pair(p1, Arith::kExact);
-  const PhysicalSolution s1 = *recover(*p1.quasistatic, x, y);
-  // Denominators near 2^71 in each of the three object coordinates.
+/// Scales of the three object coordinates with denominators near 2^71.
+std::vector<Q> wide_scales() {
   std::vector<Q> s;
   for (unsigned long k = 0; k < 3; ++k) {
     Z num, den;
@@ -218,6 +215,14 @@ TEST(UcpRecovery, NumbersBeyond128BitsTakeTheGmpRouteWithTheSameResult) {
     s.push_back(Q(num + 2 * k + 1, den + k));
     s.back().canonicalize();
   }
+  return s;
+}
+
+TEST(UcpRecovery, NumbersBeyond128BitsTakeTheGmpRouteWithTheSameResult) {
+  const UcpProblem p1 = load_ucp_problem(scene(1));
+  const auto [x, y] = solved_pair(p1, Arith::kExact);
+  const PhysicalSolution s1 = *recover(*p1.quasistatic, x, y);
+  const std::vector<Q> s = wide_scales();
   const QuasistaticProblem p = scale_object(*p1.quasistatic, s);
   // A row of P over its common denominator needs more than 128 bits: the Int128 route cannot hold it.
   Z lcm = 1;
@@ -388,14 +393,7 @@ TEST(UcpRecovery, PatternRouteRefusesPatternsThatDoNotFixTheSolution) {
 TEST(UcpRecovery, PatternRouteBeyond128BitsTakesTheGmpRoute) {
   const UcpProblem p1 = load_ucp_problem(scene(1));
   const auto [x, y] = solved_pair(p1, Arith::kExact);
-  std::vector<Q> s;
-  for (unsigned long k = 0; k < 3; ++k) {
-    Z num, den;
-    mpz_ui_pow_ui(den.get_mpz_t(), 3, 45);
-    mpz_ui_pow_ui(num.get_mpz_t(), 2, 70);
-    s.push_back(Q(num + 2 * k + 1, den + k));
-    s.back().canonicalize();
-  }
+  const std::vector<Q> s = wide_scales();
   UcpProblem p;
   p.quasistatic = scale_object(*p1.quasistatic, s);
   p.ucp = build_ucp(*p.quasistatic);
