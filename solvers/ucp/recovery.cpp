@@ -29,12 +29,13 @@ using Buffer = boost::container::small_vector<R, 64>;
 
 /// The data of the problem as integers, once per call: every row of P and of [Jn; Jt] over the lcm of its
 /// denominators, and mu, d' = d below its first nc entries (g_obj, (g_man - tau)_abar) and theta_dot each over a
-/// common denominator. Row-major matrices.
+/// common denominator. P is row-major; [Jn; Jt] keeps only its non-zero entries (a point finger's row has one).
 template <class R>
 struct IntegerData {
   Index nc, nq, nt, m;
   Buffer<R> P, Lp;  ///< P_r = P[r] / Lp_r (2nc x m)
-  Buffer<R> J, Lj;  ///< [Jn; Jt]_r = J[r] / Lj_r (2nc x nt)
+  Buffer<R> J, Lj;  ///< [Jn; Jt]_r: entries J[t] / Lj_r in columns Jcol[t], t in [Jstart[r], Jstart[r + 1])
+  Buffer<Index> Jcol, Jstart;
   Buffer<R> mu, d, theta;
   R Dmu, Dd, Dt;  ///< mu = mu / Dmu, d' = d / Dd, theta_dot = theta / Dt
 
@@ -45,19 +46,27 @@ struct IntegerData {
         m(p.P.cols()),
         P(static_cast<std::size_t>(2 * nc * m)),
         Lp(static_cast<std::size_t>(2 * nc)),
-        J(static_cast<std::size_t>(2 * nc * nt)),
         Lj(static_cast<std::size_t>(2 * nc)),
+        Jstart(static_cast<std::size_t>(2 * nc + 1)),
         mu(static_cast<std::size_t>(nc)),
         d(static_cast<std::size_t>(m)),
         theta(static_cast<std::size_t>(nt)) {
     for (Index r = 0; r < 2 * nc; ++r) {
-      Lp[static_cast<std::size_t>(r)] = ring::to_common_denominator<R>(
+      const auto k = static_cast<std::size_t>(r);
+      Lp[k] = ring::to_common_denominator<R>(
           m, [&](Index j) -> const Q& { return p.P(r, j); }, P.data() + r * m);
       const Mat<Q>& Jm = r < nc ? p.Jn : p.Jt;
       const Index i = r < nc ? r : r - nc;
-      Lj[static_cast<std::size_t>(r)] = ring::to_common_denominator<R>(
-          nt, [&](Index j) -> const Q& { return Jm(i, j); }, J.data() + r * nt);
+      const auto start = static_cast<Index>(Jcol.size());
+      Jstart[k] = start;
+      for (Index j = 0; j < nt; ++j)
+        if (sgn(Jm(i, j)) != 0) Jcol.push_back(j);
+      J.resize(Jcol.size());
+      Lj[k] = ring::to_common_denominator<R>(
+          static_cast<Index>(Jcol.size()) - start,
+          [&](Index t) -> const Q& { return Jm(i, Jcol[static_cast<std::size_t>(start + t)]); }, J.data() + start);
     }
+    Jstart.back() = static_cast<Index>(Jcol.size());
     Dmu = ring::to_common_denominator<R>(
         nc, [&](Index i) -> const Q& { return p.mu(i); }, mu.data());
     Dd = ring::to_common_denominator<R>(
@@ -66,7 +75,20 @@ struct IntegerData {
         nt, [&](Index j) -> const Q& { return p.theta_dot(j); }, theta.data());
   }
   const R* P_row(Index r) const { return P.data() + r * m; }
-  const R* J_row(Index r) const { return J.data() + r * nt; }
+  /// J[r] . x over the joints (times Lj_r: the row of [Jn; Jt] against x).
+  R J_dot(Index r, const R* x) const {
+    R sum(0);
+    for (Index t = Jstart[static_cast<std::size_t>(r)]; t < Jstart[static_cast<std::size_t>(r + 1)]; ++t)
+      sum = ring::add(sum, ring::mul(J[static_cast<std::size_t>(t)], x[Jcol[static_cast<std::size_t>(t)]]));
+    return sum;
+  }
+  /// out_j += J[r]_j c for every joint j (times Lj_r: c times the row of [Jn; Jt]).
+  void J_scatter(Index r, const R& c, R* out) const {
+    for (Index t = Jstart[static_cast<std::size_t>(r)]; t < Jstart[static_cast<std::size_t>(r + 1)]; ++t) {
+      R& o = out[Jcol[static_cast<std::size_t>(t)]];
+      o = ring::add(o, ring::mul(J[static_cast<std::size_t>(t)], c));
+    }
+  }
 };
 
 /// a . b over k entries.
@@ -90,7 +112,7 @@ void velocity_rows(const IntegerData<R>& g, const R* T, R* M, R* scale) {
     R* M_r = M + r * w;
     const R* P_r = g.P_row(r);
     for (Index j = 0; j < g.m; ++j) M_r[j] = g.Lj[k] != 1 ? ring::mul(P_r[j], g.Lj[k]) : P_r[j];
-    M_r[g.m] = ring::mul(g.Lp[k], dot(g.J_row(r), T, g.nt));
+    M_r[g.m] = ring::mul(g.Lp[k], g.J_dot(r, T));
     scale[r] = ring::mul(g.Lp[k], g.Lj[k]);
   }
 }
@@ -214,14 +236,9 @@ void set_forces(const IntegerData<R>& g, const R* C, const R& Dc, PhysicalSoluti
   // tau_j = sum_r J[r]_j factor_r C_r / (LJ Dc).
   Buffer<R> t(static_cast<std::size_t>(nt)), factor(static_cast<std::size_t>(2 * nc));
   const R LJ = common_J(g, factor.data());
-  for (Index r = 0; r < 2 * nc; ++r) {
-    if (ring::sign(C[r]) == 0) continue;
-    const R c = ring::mul(C[r], factor[static_cast<std::size_t>(r)]);
-    const R* J_r = g.J_row(r);
-    for (Index j = 0; j < nt; ++j)
-      if (ring::sign(J_r[j]) != 0)
-        t[static_cast<std::size_t>(j)] = ring::add(t[static_cast<std::size_t>(j)], ring::mul(J_r[j], c));
-  }
+  for (Index r = 0; r < 2 * nc; ++r)
+    if (ring::sign(C[r]) != 0) g.J_scatter(r, ring::mul(C[r], factor[static_cast<std::size_t>(r)]), t.data());
+
   s.tau = exact::RationalVector(t.data(), nt, ring::mul(LJ, Dc));
 }
 
@@ -358,8 +375,8 @@ ConditionsCheck check_in(const QuasistaticProblem& p, const IntegerData<R>& g, c
   };
   const Index nc = p.nc, nq = p.nq, nt = p.ntheta;
   // F = (c_n, c_t, tau) over Df, U = (q_dot, theta_dot, v_n, v_t) over Du.
-  Buffer<R> buf(static_cast<std::size_t>(2 * nc + nt + nq + nt + 2 * nc + 2 * nc));
-  R *F = buf.data(), *U = F + 2 * nc + nt, *factor = U + nq + nt + 2 * nc;
+  Buffer<R> buf(static_cast<std::size_t>(2 * nc + nt + nq + nt + 2 * nc + 2 * nc + nt));
+  R *F = buf.data(), *U = F + 2 * nc + nt, *factor = U + nq + nt + 2 * nc, *sums = factor + 2 * nc;
   const R Df = over_common_denominator<R>({&s.c_n, &s.c_t, &s.tau}, F);
   const R Du = over_common_denominator<R>({&s.q_dot, &s.theta_dot, &s.v_n, &s.v_t}, U);
   const R *Uq = U, *Ut = U + nq, *Uvn = Ut + nt, *Uvt = Uvn + nc;
@@ -379,14 +396,10 @@ ConditionsCheck check_in(const QuasistaticProblem& p, const IntegerData<R>& g, c
   }
   // (3) Jn^T c_n + Jt^T c_t = tau - g_man, over LJ Df: sum_r J[r]_j factor_r F_r = LJ tau_j.
   const R LJ = common_J(g, factor);
-  for (Index j = 0; j < nt; ++j) {
-    R sum(0);
-    for (Index r = 0; r < 2 * nc; ++r) {
-      const R a = g.J_row(r)[j];
-      if (ring::sign(a) != 0) sum = ring::add(sum, ring::mul(ring::mul(a, factor[r]), F[r]));
-    }
-    if (sum != ring::mul(LJ, F[2 * nc + j])) bad("(3) joint " + std::to_string(j) + " equilibrium fails");
-  }
+  for (Index r = 0; r < 2 * nc; ++r)
+    if (ring::sign(F[r]) != 0) g.J_scatter(r, ring::mul(factor[r], F[r]), sums);
+  for (Index j = 0; j < nt; ++j)
+    if (sums[j] != ring::mul(LJ, F[2 * nc + j])) bad("(3) joint " + std::to_string(j) + " equilibrium fails");
   // For the effort-controlled joints tau - g_man = -(d)_abar: -tau / Df = d' / Dd.
   for (std::size_t k = 0; k < p.abar.size(); ++k)
     if (ring::mul(ring::sub(R(0), F[2 * nc + p.abar[k]]), g.Dd) !=
@@ -402,7 +415,7 @@ ConditionsCheck check_in(const QuasistaticProblem& p, const IntegerData<R>& g, c
     // minus v_r, all over Du: times Lp_r Lj_r, Lj_r P[r] . Uq - Lp_r J[r] . Ut - Lp_r Lj_r v_r = 0.
     const auto residual = [&](Index r, const R& v) {
       const auto k = static_cast<std::size_t>(r);
-      const R a = ring::mul(g.Lj[k], dot(g.P_row(r), Uq, nq)), b = ring::mul(g.Lp[k], dot(g.J_row(r), Ut, nt));
+      const R a = ring::mul(g.Lj[k], dot(g.P_row(r), Uq, nq)), b = ring::mul(g.Lp[k], g.J_dot(r, Ut));
       return ring::sub(ring::sub(a, b), ring::mul(ring::mul(g.Lp[k], g.Lj[k]), v));
     };
     const auto c = [i] { return " contact " + std::to_string(i); };
