@@ -375,8 +375,8 @@ ConditionsCheck check_in(const QuasistaticProblem& p, const IntegerData<R>& g, c
   };
   const Index nc = p.nc, nq = p.nq, nt = p.ntheta;
   // F = (c_n, c_t, tau) over Df, U = (q_dot, theta_dot, v_n, v_t) over Du.
-  Buffer<R> buf(static_cast<std::size_t>(2 * nc + nt + nq + nt + 2 * nc + 2 * nc + nt));
-  R *F = buf.data(), *U = F + 2 * nc + nt, *factor = U + nq + nt + 2 * nc, *sums = factor + 2 * nc;
+  Buffer<R> buf(static_cast<std::size_t>(2 * nc + nt + nq + nt + 2 * nc + 2 * nc + nt + 2 * nc));
+  R *F = buf.data(), *U = F + 2 * nc + nt, *factor = U + nq + nt + 2 * nc, *sums = factor + 2 * nc, *wF = sums + nt;
   const R Df = over_common_denominator<R>({&s.c_n, &s.c_t, &s.tau}, F);
   const R Du = over_common_denominator<R>({&s.q_dot, &s.theta_dot, &s.v_n, &s.v_t}, U);
   const R *Uq = U, *Ut = U + nq, *Uvn = Ut + nt, *Uvt = Uvn + nc;
@@ -384,14 +384,14 @@ ConditionsCheck check_in(const QuasistaticProblem& p, const IntegerData<R>& g, c
   // LP Df Dd with LP the lcm of the rows' Lp, sum_r P[r]_k (LP / Lp_r) Dd F_r + LP d'_k Df = 0.
   R LP(1);
   for (Index r = 0; r < 2 * nc; ++r) LP = ring::lcm(LP, g.Lp[static_cast<std::size_t>(r)]);
+  for (Index r = 0; r < 2 * nc; ++r)  // wF_r = (LP / Lp_r) Dd F_r
+    wF[r] = ring::sign(F[r]) == 0
+                ? R(0)
+                : ring::mul(ring::divexact(LP, g.Lp[static_cast<std::size_t>(r)]), ring::mul(g.Dd, F[r]));
   for (Index k = 0; k < nq; ++k) {
     R sum = ring::mul(ring::mul(LP, g.d[static_cast<std::size_t>(k)]), Df);
-    for (Index r = 0; r < 2 * nc; ++r) {
-      const R a = g.P_row(r)[k];
-      if (ring::sign(a) != 0 && ring::sign(F[r]) != 0)
-        sum = ring::add(
-            sum, ring::mul(ring::mul(a, ring::divexact(LP, g.Lp[static_cast<std::size_t>(r)])), ring::mul(g.Dd, F[r])));
-    }
+    for (Index r = 0; r < 2 * nc; ++r)
+      if (ring::sign(wF[r]) != 0) sum = ring::add(sum, ring::mul(g.P_row(r)[k], wF[r]));
     if (ring::sign(sum) != 0) bad("(2) equilibrium row " + std::to_string(k) + " is not zero");
   }
   // (3) Jn^T c_n + Jt^T c_t = tau - g_man, over LJ Df: sum_r J[r]_j factor_r F_r = LJ tau_j.
