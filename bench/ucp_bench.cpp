@@ -170,8 +170,9 @@ void recovery_table(int repeats) {
   for (const Case& c : cases) {
     const UcpReport r = run(c.p, Method::kComplete);
     const QuasistaticProblem& q = *c.p.quasistatic;
-    const PhysicalSolution s = *recover(q, *r.x, *r.y);
-    const double tr = 1e6 * median_seconds(repeats, [&] { (void)recover(q, *r.x, *r.y); });
+    const Vec<Q> x = r.x->to_q(), y = r.y->to_q();
+    const PhysicalSolution s = *recover(q, x, y);
+    const double tr = 1e6 * median_seconds(repeats, [&] { (void)recover(q, x, y); });
     const double tc = 1e6 * median_seconds(repeats, [&] { (void)check_conditions(q, s); });
     std::printf("%-24s %10.2f %10.2f %10zu\n", c.name.c_str(), tr, tc, check_conditions(q, s).violations.size());
   }

@@ -97,7 +97,7 @@ int run_ucp(const UcpCliOptions& o) {
     if (r.status == ucp::UcpStatus::kJammed && r.proof)
       cert_text = ucp::jammed_certificate(problem, *r.proof);
     else if (r.status == ucp::UcpStatus::kSolvable && r.x)
-      cert_text = ucp::solvable_certificate(problem, *r.x, *r.y);
+      cert_text = ucp::solvable_certificate(problem, r.x->to_q(), r.y->to_q());
     if (!cert_text.empty()) write_text_file(o.certificate, cert_text);
   }
 
@@ -108,9 +108,10 @@ int run_ucp(const UcpCliOptions& o) {
   j["arith"] = exact::arith_name(r.arith);
   if (!r.decided_by.empty()) j["decided_by"] = r.decided_by;
   if (r.x) {
-    j["x"] = exact_json(*r.x);
-    j["y"] = exact_json(*r.y);
-    j["xTy"] = exact::to_string(Q(r.x->dot(*r.y)));
+    const exact::Vec<Q> x = r.x->to_q(), y = r.y->to_q();
+    j["x"] = exact_json(x);
+    j["y"] = exact_json(y);
+    j["xTy"] = exact::to_string(Q(x.dot(y)));
   } else if (r.x_approx.size() > 0) {
     j["x_approx"] = approx_json(r.x_approx);
     j["y_approx"] = approx_json(r.y_approx);

@@ -43,7 +43,7 @@ Answer answer(const UcpQuestion& q, const Rung& rung) {
   a.verdict = solvers::ucp::status_name(r.status);
   if (r.status != solvers::ucp::UcpStatus::kSolvable) return a;
   if constexpr (std::is_same_v<T, Q>)
-    a.x = *r.x, a.y = *r.y;
+    a.x = r.x->to_q(), a.y = r.y->to_q();
   else if (r.x_float.size() > 0)  // MPFR, intervals: the pair as the rung computed it, not rounded to double
     a.x = r.x_float, a.y = r.y_float;
   else

@@ -169,7 +169,7 @@ std::optional<PhysicalSolution> velocities_in(const QuasistaticProblem& p, const
 /// (pattern_solution).
 template <class R>
 bool pattern_velocities_in(const QuasistaticProblem& p, const IntegerData<R>& g, const std::vector<bool>& x_zero,
-                           Vec<Q>& x, PhysicalSolution& s) {
+                           exact::RationalVector& x, PhysicalSolution& s) {
   const Index nc = p.nc, m = p.P.cols(), w = m + 1;
   const auto zero = [&](Index i) { return x_zero[static_cast<std::size_t>(i)]; };
   // Row r < nc is v_n,r; row nc + i is v_t,i = v_t,i^+ - v_t,i^-, 0 when both are fixed to 0.
@@ -208,13 +208,15 @@ bool pattern_velocities_in(const QuasistaticProblem& p, const IntegerData<R>& g,
   s.v_n = exact::RationalVector(V, nc, D);
   s.v_t = exact::RationalVector(V + nc, nc, D);
   set_generalized_velocities(p, N, d, g.theta.data(), g.Dt, s);
-  x = Vec<Q>(3 * nc);  // zeros (a default rational is 0)
+  Buffer<R> X(static_cast<std::size_t>(3 * nc));  // (v_n, v_t^+, v_t^-) over D
   for (Index i = 0; i < nc; ++i) {
-    if (ring::sign(V[i]) != 0) ring::to_rational(V[i], D, x(i));
+    const auto k = static_cast<std::size_t>(i);
+    X[k] = V[i];
     const int st = ring::sign(V[nc + i]);
-    if (st > 0) ring::to_rational(V[nc + i], D, x(nc + i));
-    if (st < 0) ring::to_rational(ring::sub(R(0), V[nc + i]), D, x(2 * nc + i));
+    if (st > 0) X[k + static_cast<std::size_t>(nc)] = V[nc + i];
+    if (st < 0) X[k + static_cast<std::size_t>(2 * nc)] = ring::sub(R(0), V[nc + i]);
   }
+  x = exact::RationalVector(X.data(), 3 * nc, D);
   return true;
 }
 
@@ -268,8 +270,8 @@ struct ContactForce {
 /// c from the rows of (2), (3), P^T c + d' = 0, after y's pattern fixed c_n or c_t = -/+ mu c_n (pattern_solution);
 /// y = (c_n, s_t^+, s_t^-).
 template <class R>
-std::optional<Vec<Q>> pattern_forces_in(const QuasistaticProblem& p, const IntegerData<R>& g,
-                                        const std::vector<bool>& y_zero, PhysicalSolution& s) {
+std::optional<exact::RationalVector> pattern_forces_in(const QuasistaticProblem& p, const IntegerData<R>& g,
+                                                       const std::vector<bool>& y_zero, PhysicalSolution& s) {
   const Index nc = p.nc, m = p.P.cols();
   const auto zero = [&](Index i) { return y_zero[static_cast<std::size_t>(i)]; };
   std::vector<ContactForce> contact(static_cast<std::size_t>(nc));
@@ -318,7 +320,7 @@ std::optional<Vec<Q>> pattern_forces_in(const QuasistaticProblem& p, const Integ
   }
   // c_n = Cn / Den and C = (c_n, c_t) over Dc = Den Dmu; mu c_n = Mu Cn / Dc, s_t^+- = (Mu Cn +- c_t) / Dc.
   const R Dc = ring::mul(ring::mul(d, g.Dd), g.Dmu);
-  Vec<Q> y(3 * nc);  // zeros (a default rational is 0)
+  Buffer<R> Y(static_cast<std::size_t>(3 * nc));  // (c_n, s_t^+, s_t^-) over Dc
   j = 0;
   for (Index i = 0; i < nc; ++i) {
     const ContactForce& f = contact[static_cast<std::size_t>(i)];
@@ -331,13 +333,13 @@ std::optional<Vec<Q>> pattern_forces_in(const QuasistaticProblem& p, const Integ
                                                 : ring::mul(ring::mul(D[j + 1], N[j + 1]), g.Dmu);
     const R plus = ring::add(mu_cn, C[nc + i]), minus = ring::sub(mu_cn, C[nc + i]);
     if (ring::sign(plus) < 0 || ring::sign(minus) < 0) return std::nullopt;  // |c_t| > mu c_n
-    if (ring::sign(C[i]) != 0) ring::to_rational(C[i], Dc, y(i));
-    if (ring::sign(plus) != 0) ring::to_rational(plus, Dc, y(nc + i));
-    if (ring::sign(minus) != 0) ring::to_rational(minus, Dc, y(2 * nc + i));
+    Y[static_cast<std::size_t>(i)] = C[i];
+    Y[static_cast<std::size_t>(nc + i)] = plus;
+    Y[static_cast<std::size_t>(2 * nc + i)] = minus;
     j += f.kind == ContactForce::kZero ? 0 : f.kind == ContactForce::kEdge ? 1 : 2;
   }
   set_forces(g, C, Dc, s);
-  return y;
+  return exact::RationalVector(Y.data(), 3 * nc, Dc);
 }
 
 /// The vectors `parts` over one common denominator (returned) in R, one after the other in out.
@@ -441,7 +443,7 @@ std::optional<PatternSolution> pattern_solution_in(const QuasistaticProblem& p, 
   const IntegerData<R> g(p);
   PatternSolution out;
   if (!pattern_velocities_in(p, g, x_zero, out.x, out.physical)) return std::nullopt;
-  std::optional<Vec<Q>> y = pattern_forces_in(p, g, y_zero, out.physical);
+  std::optional<exact::RationalVector> y = pattern_forces_in(p, g, y_zero, out.physical);
   if (!y) return std::nullopt;
   out.y = std::move(*y);
   out.conditions = check_in(p, g, out.physical);

@@ -44,7 +44,7 @@ struct ConditionsCheck {
 /// A complementary pair with its physics and the check of (2)-(10) on it (as check_conditions, from the same
 /// integer copy of the data).
 struct PatternSolution {
-  Vec<Q> x, y;
+  exact::RationalVector x, y;
   PhysicalSolution physical;
   ConditionsCheck conditions;
 };

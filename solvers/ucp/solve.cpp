@@ -64,7 +64,7 @@ void fill_pair(UcpReport& rep, Vec<T> x, Vec<T> y, const UcpProblem& problem) {
       rep.physical = recover(*problem.quasistatic, x, y);
       if (rep.physical) rep.conditions = check_conditions(*problem.quasistatic, *rep.physical);
     }
-    rep.x = std::move(x), rep.y = std::move(y);
+    rep.x = exact::RationalVector(x), rep.y = exact::RationalVector(y);
   } else {
     (void)problem;
     rep.x_approx = approx(x), rep.y_approx = approx(y);

@@ -46,7 +46,9 @@ struct UcpReport {
   std::string reason;
   Method method = Method::kComplete;
   Arith arith = Arith::kVerified;
-  std::optional<Vec<Q>> x, y;      ///< the complementary pair (exact paths, kSolvable)
+  /// The complementary pair (exact paths, kSolvable), over a common denominator: x->to_q() or (*x)(i) give
+  /// rationals (an adaptive solve makes none).
+  std::optional<exact::RationalVector> x, y;
   std::optional<Q> best_xTy;       ///< smallest x^T y seen (exact paths)
   Vec<double> x_approx, y_approx;  ///< float path
   Vec<Q> x_float, y_float;         ///< float path in MPFR or intervals: the pair's values exactly (interval midpoints)

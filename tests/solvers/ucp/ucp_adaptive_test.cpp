@@ -32,7 +32,7 @@ void expect_certified_like_exact(const UcpProblem& p, const std::string& what) {
   std::string text;
   if (a.status == UcpStatus::kSolvable) {
     ASSERT_TRUE(a.x && a.y) << what;
-    text = solvable_certificate(p, *a.x, *a.y);
+    text = solvable_certificate(p, a.x->to_q(), a.y->to_q());
   } else {
     ASSERT_EQ(a.status, UcpStatus::kJammed) << what;
     ASSERT_TRUE(a.proof) << what;
