@@ -40,11 +40,6 @@ Q RationalVector::operator()(Eigen::Index i) const {
   return q;
 }
 
-int RationalVector::sign(Eigen::Index i) const {
-  const auto k = static_cast<std::size_t>(i);
-  return wide_ ? sgn(wide_num_[k]) : ring::sign(num_[k]);
-}
-
 Vec<Q> RationalVector::to_q() const {
   Vec<Q> v(size());
   for (Eigen::Index i = 0; i < size(); ++i) v(i) = (*this)(i);
@@ -69,13 +64,6 @@ void RationalVector::numerators(Z* out, Z& den) const {
     for (std::size_t k = 0; k < num_.size(); ++k) out[k] = ring::to_z(num_[k]);
     den = ring::to_z(den_);
   }
-}
-
-bool operator==(const RationalVector& a, const RationalVector& b) {
-  if (a.size() != b.size()) return false;
-  for (Eigen::Index i = 0; i < a.size(); ++i)
-    if (a(i) != b(i)) return false;
-  return true;
 }
 
 }  // namespace contactcert::exact

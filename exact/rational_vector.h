@@ -23,17 +23,12 @@ class RationalVector {
   Eigen::Index size() const { return static_cast<Eigen::Index>(wide_ ? wide_num_.size() : num_.size()); }
   /// Entry i in lowest terms.
   Q operator()(Eigen::Index i) const;
-  /// The sign of entry i.
-  int sign(Eigen::Index i) const;
   /// All entries.
   Vec<Q> to_q() const;
   /// The entries as out[i] / den with den > 0 (Int128: throws RingOverflow if they are held in GMP integers that do
   /// not fit, so that with_exact_ring restarts in Z).
   void numerators(Int128* out, Int128& den) const;
   void numerators(Z* out, Z& den) const;
-
-  /// The same values.
-  friend bool operator==(const RationalVector& a, const RationalVector& b);
 
  private:
   boost::container::small_vector<Int128, 8> num_;  ///< inline up to 8 entries: no heap allocation for small problems

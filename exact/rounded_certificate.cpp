@@ -1,10 +1,10 @@
 #include "exact/rounded_certificate.h"
 
 #include <algorithm>
+#include <boost/container/small_vector.hpp>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
-#include <span>
 #include <utility>
 
 namespace contactcert::exact {
@@ -287,12 +287,9 @@ SolutionKind unique_solution(R* M, Index m, Index k, R* N, R& d) {
   auto at = [&](Index i, Index j) -> R& { return M[i * w + j]; };
   // Columns of A_S divided by their contents g_c (x_c = x'_c / g_c), then rows of [A_S | b] by theirs: the
   // minors below shrink by those factors (X's rows from the left null space of P share large ones).
-  // g: on the stack for the small systems of the UCP's pairs (a heap allocation costs as much as their elimination).
-  constexpr Index kSmall = 16;
-  R small[kSmall]{};  // zeros, as the gcds below start from
-  std::vector<R> large(static_cast<std::size_t>(k > kSmall ? k : 0));
-  R* const g_begin = k > kSmall ? large.data() : small;
-  const std::span<R> g(g_begin, static_cast<std::size_t>(k));
+  // g (zeros, as the gcds below start from): on the stack for the small systems of the UCP's pairs (a heap
+  // allocation costs as much as their elimination).
+  boost::container::small_vector<R, 16> g(static_cast<std::size_t>(k));
   for (Index c = 0; c < k; ++c) {
     R& gc = g[static_cast<std::size_t>(c)];
     for (Index i = 0; i < m && !(gc == R(1)); ++i)
