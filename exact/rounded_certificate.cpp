@@ -332,6 +332,10 @@ SolutionKind unique_solution(R* M, Index m, Index k, R* N, R& d) {
   for (const R& gc : g) G = mul(divexact(G, gcd(G, gc)), gc);
   for (Index c = 0; c < k; ++c) N[c] = mul(at(c, k), divexact(G, g[static_cast<std::size_t>(c)]));
   d = mul(prev, G);
+  if (sign(d) < 0) {  // the same solution over a positive denominator
+    d = sub(R(0), d);
+    for (Index c = 0; c < k; ++c) N[c] = sub(R(0), N[c]);
+  }
   return SolutionKind::kUnique;
 }
 
@@ -425,9 +429,7 @@ std::optional<FarkasVector> basis_farkas(const IntegerSystem<R>& s, const Vec<do
   }
   R d;
   if (unique_solution(M.data(), m, m, F.data(), d) != SolutionKind::kUnique) return std::nullopt;
-  if (sign(d) < 0)  // f' = F / d: F is a positive multiple of f' once d > 0
-    for (R& v : F) v = sub(R(0), v);
-  return checked_farkas(s, F, zero);
+  return checked_farkas(s, F, zero);  // f' = F / d with d > 0: F is a positive multiple of f'
 }
 
 template <class R>

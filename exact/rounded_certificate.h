@@ -84,8 +84,8 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s);
 enum class SolutionKind { kUnique, kRankDeficient, kInconsistent };
 
 /// unique_solution in integers, in place: M = [A_S | b] row-major m x (k + 1), overwritten by the elimination.
-/// For kUnique, x_S = N / d with N = N[0..k-1] and d != 0 (a k x k minor of A_S, either sign); N and d are
-/// unspecified otherwise.
+/// For kUnique, x_S = N / d with N = N[0..k-1] and d > 0 (a k x k minor of A_S up to sign and the columns'
+/// contents); N and d are unspecified otherwise.
 template <class R>
 SolutionKind unique_solution(R* M, Eigen::Index m, Eigen::Index k, R* N, R& d);
 

@@ -99,17 +99,6 @@ R dot(const R* a, const R* b, Index k) {
   return sum;
 }
 
-/// exact::unique_solution of the m x (k + 1) system M, its solution N / d with d > 0; false unless unique.
-template <class R>
-bool positive_solution(R* M, Index m, Index k, R* N, R& d) {
-  if (exact::unique_solution(M, m, k, N, d) != exact::SolutionKind::kUnique) return false;
-  if (ring::sign(d) < 0) {
-    d = ring::sub(R(0), d);
-    for (Index j = 0; j < k; ++j) N[j] = ring::sub(R(0), N[j]);
-  }
-  return true;
-}
-
 /// Rows r of (4), (5), P_r u = v_r + h_r with u = [q_dot; -theta_abar] and h = J_alpha theta_alpha, in integers
 /// for v = 0 and the joint velocities T / D (those of abar 0): J_r . T / D = h'_r / (Lj_r D) with h'_r = J[r] . T,
 /// M_r = [Lj_r P[r] | Lp_r h'_r] (row-major, 2nc x (m + 1)), so that M_r (D u) - M_r[m] = scale_r D (P_r u - h_r)
@@ -194,7 +183,7 @@ bool pattern_velocities_in(const QuasistaticProblem& p, const IntegerData<R>& g,
   for (Index r = 0, e = 0; r < 2 * nc; ++r)
     if (fixed(r)) std::copy(M + r * w, M + (r + 1) * w, E + (e++) * w);
   R d;
-  if (!positive_solution(E, k, m, N, d)) return false;
+  if (exact::unique_solution(E, k, m, N, d) != exact::SolutionKind::kUnique) return false;  // d > 0
   // Dt u = N / d, so v_r = (M_r N - d M_r[m]) / (d scale_r Dt), 0 on the fixed rows: over D = d Dt L with L the
   // lcm of the free rows' scales.
   R L(1);
@@ -313,7 +302,7 @@ std::optional<exact::RationalVector> pattern_forces_in(const QuasistaticProblem&
   // K (Dd z) = -Dd d' with z_j = c_j / D_j: c_j = D_j N_j / (d Dd).
   R d;
   if (k > 0) {
-    if (!positive_solution(E, m, k, N, d)) return std::nullopt;
+    if (exact::unique_solution(E, m, k, N, d) != exact::SolutionKind::kUnique) return std::nullopt;  // d > 0
   } else {
     for (Index row = 0; row < m; ++row)
       if (ring::sign(g.d[static_cast<std::size_t>(row)]) != 0) return std::nullopt;  // no force, but a load
