@@ -6,6 +6,7 @@
 
 #include "cli/command.h"
 #include "exact/json_input.h"
+#include "solvers/stability/contact_modes.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/ucp/certificate.h"
 
@@ -35,13 +36,20 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
     if (kind == "ucp_jammed") out.details = {{"nodes", c.nodes}, {"leaves", c.leaves}};
     return out;
   }
+  if (kind == "modes") {
+    const auto c = solvers::check_modes_certificate(cert);
+    out.valid = c.valid;
+    out.reason = c.reason;
+    out.details = {{"modes", c.modes}, {"dead_prefixes", c.dead}};
+    return out;
+  }
   if (kind == "stability") {
     const auto c = solvers::check_stability_certificate(cert);
     out.valid = c.valid;
     out.reason = c.reason;
     return out;
   }
-  cert.at("kind").fail("expected a certificate kind: ucp_jammed, ucp_solvable or stability, found \"" + kind + "\"");
+  cert.at("kind").fail("expected a certificate kind: ucp_jammed, ucp_solvable, stability or modes, found \"" + kind + "\"");
 }
 
 int run_check(const CheckOptions& o) {

@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
   cli::register_check(app, action);
   cli::register_stability(app, action);
   cli::register_insert(app, action);
+  cli::register_modes(app, action);
   cli::register_cone(app, action);
   cli::register_convert(app, action);
   cli::register_bench(app, action);

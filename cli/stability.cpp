@@ -35,6 +35,20 @@ struct StabilityOptions {
   std::string svg;
 };
 
+// The mode tree's budget: --time-limit (the node budget is the default).
+solvers::ModeTreeOptions tree_budget(const StabilityOptions& o) {
+  solvers::ModeTreeOptions t;
+  t.deadline = exact::Deadline::after(o.common.time_limit);
+  return t;
+}
+
+solvers::StabilityOptions budget(const StabilityOptions& o, exact::Arith arith) {
+  solvers::StabilityOptions s;
+  s.arith = arith;
+  s.deadline = exact::Deadline::after(o.common.time_limit);
+  return s;
+}
+
 template <class T>
 json witness_json(const solvers::MotionWitness<T>& w) {
   json j;
@@ -74,6 +88,7 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
     j["lps"] = r.lps;
     j["modes_checked"] = r.modes_checked;
     j["modes_kinematically_feasible"] = r.modes_kinematically_feasible;
+    j["mode_tree"] = {{"nodes", r.tree_nodes}, {"dead_prefixes", r.dead_prefixes}};
     if (!o.certificate.empty()) j["certificate"] = o.certificate;
     if (margin && !margin->nearest.empty())
       j["margin"] = {{"squared_radius", exact_json(margin->squared_radius)},
@@ -91,8 +106,9 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
     std::cout << "  moves in mode '" << r.moving.mode.text() << "' with acceleration " << tuple_text(r.moving.acceleration)
               << ", forces " << tuple_text(r.moving.forces) << "\n";
   else if (r.has_resting)
-    std::cout << "  no moving mode admits g: " << r.proofs.size() << " proofs ("
-              << (r.modes_checked - r.modes_kinematically_feasible) << " modes kinematically impossible)\n";
+    std::cout << "  no moving mode admits g: " << r.modes_kinematically_feasible
+              << " kinematically feasible moving modes, each with a proof for g; every other mode extends one of "
+              << r.dead_prefixes << " infeasible prefixes (mode tree: " << r.tree_nodes << " prefixes)\n";
   if (margin && !margin->nearest.empty())
     std::cout << "  margin: squared radius " << exact::to_string(margin->squared_radius) << " (radius ~"
               << std::sqrt(margin->squared_radius.get_d()) << "), nearest: "
@@ -107,7 +123,7 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
 int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene) {
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "--region is computed exactly (use exact or verified)");
-  const auto region = solvers::stable_region<Q>(scene);
+  const auto region = solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o));
   if (!o.svg.empty()) write_text_file(o.svg, stability_sphere_svg(region));
   int count[3][4] = {};
   for (const auto& c : region.cells) ++count[static_cast<int>(c.label)][c.dimension];
@@ -151,7 +167,7 @@ double degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).ge
 int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "--finger is computed exactly (use exact or verified)");
-  const auto region = solvers::stable_region<Q>(scene);
+  const auto region = solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o));
   const auto pushes = solvers::finger_pushes<Q>(scene, region);
   if (!o.svg.empty()) {
     const auto marks = boundary_marks<solvers::StabilityVerdict>(
@@ -207,13 +223,13 @@ int run_stability(const StabilityOptions& options) {
   if (arith == exact::Arith::kFloat) {
     if (!o.certificate.empty())
       throw exact::InputError("command line", "--certificate", "certificates need --arith exact or verified");
-    return report(o, g, solvers::strong_stability<double>(scene, exact::to_double(g), {arith}));
+    return report(o, g, solvers::strong_stability<double>(scene, exact::to_double(g), budget(o, arith)));
   }
-  const auto r = solvers::strong_stability<Q>(scene, g, {arith});
+  const auto r = solvers::strong_stability<Q>(scene, g, budget(o, arith));
   if (!o.certificate.empty()) write_text_file(o.certificate, solvers::stability_certificate(text, g, r));
   std::optional<solvers::Margin<Q>> margin;
   if (o.margin && r.verdict == solvers::StabilityVerdict::kStronglyStable)
-    margin = solvers::stability_margin<Q>(solvers::stable_region<Q>(scene), g);
+    margin = solvers::stability_margin<Q>(solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o)), g);
   return report(o, g, r, margin);
 }
 
