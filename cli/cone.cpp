@@ -28,6 +28,7 @@ struct ConeOptions {
   std::string mode;
   std::string route = "paper";
   std::string svg;
+  std::string table2 = "strict";
 };
 
 const char* interaction_name(solvers::Interaction l) {
@@ -39,6 +40,7 @@ const char* interaction_name(solvers::Interaction l) {
     case solvers::Interaction::kSlideRight: return "slide right";
     case solvers::Interaction::kRoll: return "roll";
     case solvers::Interaction::kMaintain: return "maintain";
+    case solvers::Interaction::kSeparatePrinted: return "separate, a_n >= 0 as Table 2 prints it";
   }
   return "";
 }
@@ -225,8 +227,12 @@ int run_cone(const ConeOptions& o) {
   const geometry::PlanarScene scene = geometry::load_planar_scene(o.file);
   std::vector<bool> touching;
   for (const auto& f : scene.fixels) touching.push_back(f.frame.touching());
-  const solvers::ModeParse mode = solvers::parse_mode(o.mode, touching);
+  solvers::ModeParse mode = solvers::parse_mode(o.mode, touching);
   if (mode.status != solvers::ModeStatus::kValid) throw exact::InputError(o.file, "--mode", mode.message);
+  if (o.table2 == "printed")  // s at a touching fixel as Table 2 prints it: a_n >= 0 (the letter S)
+    for (std::size_t i = 0; i < touching.size(); ++i)
+      if (touching[i] && mode.mode.letters[i] == solvers::Interaction::kSeparate)
+        mode.mode.letters[i] = solvers::Interaction::kSeparatePrinted;
   const solvers::Route route = o.route == "paper" ? solvers::Route::kPaper : solvers::Route::kProject;
   // The verified path is the exact one here: the cone's combinatorics are decided in rationals.
   return o.common.arith == "float" ? run_float(o, scene, mode.mode, route) : run_exact(o, scene, mode.mode, route);
@@ -243,6 +249,10 @@ void register_cone(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"paper", "project"}))
       ->capture_default_str();
   sub->add_option("--svg", opts->svg, "Write a picture: workpiece, fixels, friction cones, lines of force");
+  sub->add_option("--table2", opts->table2,
+                  "strict: s at a touching fixel is a_n > 0 (seeds errata); printed: a_n >= 0 as Table 2 prints it")
+      ->check(CLI::IsMember({"strict", "printed"}))
+      ->default_str("strict");
   add_common_options(*sub, opts->common);
   sub->callback([opts, &action] { action = [opts] { return run_cone(*opts); }; });
 }

@@ -33,6 +33,8 @@ bool meets(const MotionModel<T>& model, const KinematicRules& rules, const Vec<T
   switch (L) {
     case Interaction::kSeparate:
       return n > 0 || (n == 0 && (!rules.touches(i) || rules.printed_separation));
+    case Interaction::kSeparatePrinted:
+      return n >= 0;
     case Interaction::kApproach:
       return n < 0;
     case Interaction::kUnconstrained:
@@ -56,6 +58,7 @@ enum class RowKind : char { kNone, kZero, kSlackMinus, kSlackMinusStrict, kSlack
 RowKind normal_row(Interaction L, bool strict_s) {
   switch (L) {
     case Interaction::kSeparate: return strict_s ? RowKind::kSlackMinusStrict : RowKind::kSlackMinus;
+    case Interaction::kSeparatePrinted: return RowKind::kSlackMinus;
     case Interaction::kApproach: return RowKind::kSlackPlusStrict;
     case Interaction::kUnconstrained: return RowKind::kNone;
     default: return RowKind::kZero;

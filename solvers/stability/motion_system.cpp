@@ -108,20 +108,22 @@ exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const
     const auto i = static_cast<Index>(u);
     const Interaction L = mode.letters[u];
     Index sigma = -1;  // the slack of the row with a sign (Table 2): a_n - sigma = 0, +-a_t - sigma = 0, ...
-    if (L == Interaction::kSeparate || L == Interaction::kApproach || L == Interaction::kSlideLeft ||
-        L == Interaction::kSlideRight) {
+    const bool separates = L == Interaction::kSeparate || L == Interaction::kSeparatePrinted;
+    if (separates || L == Interaction::kApproach || L == Interaction::kSlideLeft || L == Interaction::kSlideRight) {
       sigma = s.cols++;
       s.is_free.push_back(false);
-      // s is strict at a touching fixel (seeds/README.md), a_n >= 0 at a gap or as Table 2 prints it.
-      s.strict.push_back(L != Interaction::kSeparate || (rules.touches(u) && !rules.printed_separation));
+      // s is strict at a touching fixel (seeds/README.md), a_n >= 0 at a gap or as Table 2 prints it (S).
+      s.strict.push_back(!separates ||
+                         (L == Interaction::kSeparate && rules.touches(u) && !rules.printed_separation));
     }
     switch (L) {
       case Interaction::kUnconstrained:
         continue;
       case Interaction::kSeparate:  // a_n - sigma = 0
+      case Interaction::kSeparatePrinted:
       case Interaction::kApproach:  // a_n + sigma = 0, sigma > 0
         a_n(i);
-        add(sigma, T(L == Interaction::kSeparate ? -1 : 1));
+        add(sigma, T(separates ? -1 : 1));
         ++s.rows;
         continue;
       default:
