@@ -9,6 +9,7 @@
 #include "cli/command.h"
 #include "cli/json_out.h"
 #include "cli/progress_line.h"
+#include "cli/results.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
@@ -67,6 +68,33 @@ json pieces_json(const solvers::BoundaryPieces<Q, bool>& p) {
   return {{"edges", edges}, {"arcs", arcs}};
 }
 
+}  // namespace
+
+json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion<Q>& ins,
+                    const solvers::BoundaryPieces<Q, bool>& pushes) {
+  json sets = json::array();
+  for (std::size_t i = 0; i < ins.sets.size(); ++i)
+    sets.push_back({{"state", ins.sets[i].state_text()}, {"mode", ins.sets[i].mode.text()},
+                    {"redundant", static_cast<bool>(ins.redundant[i])},
+                    {"empty", solvers::is_empty_cone<Q>(ins.cones[i])},
+                    {"inequalities", exact_json(ins.cones[i].inequalities)},
+                    {"equalities", exact_json(ins.cones[i].equalities)},
+                    {"strict", exact_json(ins.cones[i].strict)}});
+  json j;
+  j["sets"] = sets;
+  j["pushes"] = pieces_json(pushes);
+  j["goal_boundary_fraction_approx"] = goal_fraction(scene, pushes);
+  return j;
+}
+
+std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<Q, bool>& pushes) {
+  const auto marks = boundary_marks<bool>(scene, pushes, [](bool in) { return in ? std::string("#1b7837") : ""; });
+  return wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
+                         "green: frictionless pushes that seat the workpiece from any state", marks);
+}
+
+namespace {
+
 int run_insert(const InsertOptions& o) {
   const geometry::PlanarScene scene = geometry::load_planar_scene(o.file);
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
@@ -85,11 +113,7 @@ int run_insert(const InsertOptions& o) {
     return std::make_pair(std::move(ins), std::move(pushes));
   };
   const auto [ins, pushes] = analyse(scene);
-  if (!o.svg.empty()) {
-    const auto marks = boundary_marks<bool>(scene, pushes, [](bool in) { return in ? std::string("#1b7837") : ""; });
-    write_text_file(o.svg, wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
-                                           "green: frictionless pushes that seat the workpiece from any state", marks));
-  }
+  if (!o.svg.empty()) write_text_file(o.svg, insertion_svg(scene, pushes));
   json sweep = json::array();
   std::vector<std::pair<std::string, double>> sweep_rows;
   ProgressLine progress("insert " + o.file + " --sweep-mu");
@@ -105,18 +129,7 @@ int run_insert(const InsertOptions& o) {
   }
   progress.finish();
   if (o.common.json) {
-    json sets = json::array();
-    for (std::size_t i = 0; i < ins.sets.size(); ++i)
-      sets.push_back({{"state", ins.sets[i].state_text()}, {"mode", ins.sets[i].mode.text()},
-                      {"redundant", static_cast<bool>(ins.redundant[i])},
-                      {"empty", solvers::is_empty_cone<Q>(ins.cones[i])},
-                      {"inequalities", exact_json(ins.cones[i].inequalities)},
-                      {"equalities", exact_json(ins.cones[i].equalities)},
-                      {"strict", exact_json(ins.cones[i].strict)}});
-    json j;
-    j["sets"] = sets;
-    j["pushes"] = pieces_json(pushes);
-    j["goal_boundary_fraction_approx"] = goal_fraction(scene, pushes);
+    json j = insertion_json(scene, ins, pushes);
     if (!mus.empty()) j["sweep"] = sweep;
     std::cout << j.dump() << "\n";
     return 0;
