@@ -141,7 +141,8 @@ nlohmann::json cone_json(const geometry::PlanarScene& scene, const solvers::Mode
   return j;
 }
 
-nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchCone<double>& c, const std::string& route) {
+nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchCone<double>& c,
+                         const std::string& route) {
   nlohmann::json j;
   j["mode"] = mode.text();
   j["empty"] = c.status == solvers::ConeStatus::kEmpty;
@@ -155,7 +156,8 @@ nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchC
   return j;
 }
 
-std::string cone_svg(const geometry::PlanarScene& scene, const solvers::ModeString& mode, const solvers::WrenchCone<Q>& c) {
+std::string cone_svg(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
+                     const solvers::WrenchCone<Q>& c) {
   const bool empty = c.status == solvers::ConeStatus::kEmpty;
   return wrench_cone_svg(scene, empty ? Mat<Q>(0, 3) : c.cone.closure.rays, empty ? Mat<Q>(0, 3) : c.cone.closure.lines,
                          "mode '" + mode.text() + "'" + (empty ? " (empty cone)" : ""));

@@ -74,7 +74,8 @@ json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion
                     const solvers::BoundaryPieces<Q, bool>& pushes) {
   json sets = json::array();
   for (std::size_t i = 0; i < ins.sets.size(); ++i)
-    sets.push_back({{"state", ins.sets[i].state_text()}, {"mode", ins.sets[i].mode.text()},
+    sets.push_back({{"state", ins.sets[i].state_text()},
+                    {"mode", ins.sets[i].mode.text()},
                     {"redundant", static_cast<bool>(ins.redundant[i])},
                     {"empty", solvers::is_empty_cone<Q>(ins.cones[i])},
                     {"inequalities", exact_json(ins.cones[i].inequalities)},

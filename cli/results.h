@@ -3,10 +3,9 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "cli/json_out.h"
 #include "exact/json_input.h"
@@ -36,7 +35,8 @@ std::string finger_svg(const geometry::PlanarScene& scene, const solvers::Finger
 solvers::ModeString cone_mode(const geometry::PlanarScene& scene, const std::string& file, const std::string& text);
 nlohmann::json cone_json(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
                          const solvers::WrenchCone<exact::Q>& c, const std::string& route, const std::string& arith);
-nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchCone<double>& c, const std::string& route);
+nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchCone<double>& c,
+                         const std::string& route);
 std::string cone_svg(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
                      const solvers::WrenchCone<exact::Q>& c);
 

@@ -6,14 +6,14 @@
 #include <iostream>
 #include <optional>
 
+#include "cli/boundary_marks.h"
 #include "cli/command.h"
 #include "cli/json_out.h"
+#include "cli/results.h"
+#include "cli/stability_svg.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
-#include "cli/boundary_marks.h"
-#include "cli/results.h"
-#include "cli/stability_svg.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stability_certificate.h"
@@ -81,7 +81,8 @@ json stability_json(const exact::Vec<Q>& g, const StabilityResult<T>& r, const s
   if (!certificate.empty()) j["certificate"] = certificate;
   if (margin && !margin->nearest.empty())
     j["margin"] = {{"squared_radius", exact_json(margin->squared_radius)},
-                   {"radius_approx", std::sqrt(margin->squared_radius.get_d())}, {"nearest", margin->nearest}};
+                   {"radius_approx", std::sqrt(margin->squared_radius.get_d())},
+                   {"nearest", margin->nearest}};
   return j;
 }
 template json stability_json(const exact::Vec<Q>&, const StabilityResult<Q>&, const std::string&, const std::string&,
@@ -92,8 +93,8 @@ template json stability_json(const exact::Vec<Q>&, const StabilityResult<double>
 json region_json(const solvers::StableRegion<Q>& region) {
   json cells = json::array();
   for (const auto& c : region.cells)
-    cells.push_back({{"dimension", c.dimension}, {"point", primitive_json(c.point)},
-                     {"label", solvers::verdict_name(c.label)}});
+    cells.push_back(
+        {{"dimension", c.dimension}, {"point", primitive_json(c.point)}, {"label", solvers::verdict_name(c.label)}});
   json modes = json::array();
   for (const auto& m : region.modes) modes.push_back(m.text());
   json j;
@@ -104,13 +105,19 @@ json region_json(const solvers::StableRegion<Q>& region) {
 json finger_json(const solvers::FingerPushes<Q>& pushes) {
   json edges = json::array(), arcs = json::array();
   for (const auto& p : pushes.edges)
-    edges.push_back({{"edge", p.edge}, {"from", exact_json(p.from)}, {"to", exact_json(p.to)},
-                     {"from_closed", p.from_closed}, {"to_closed", p.to_closed},
+    edges.push_back({{"edge", p.edge},
+                     {"from", exact_json(p.from)},
+                     {"to", exact_json(p.to)},
+                     {"from_closed", p.from_closed},
+                     {"to_closed", p.to_closed},
                      {"label", solvers::verdict_name(p.label)}});
   for (const auto& p : pushes.arcs)
-    arcs.push_back({{"from_direction", primitive_json(p.from)}, {"to_direction", primitive_json(p.to)},
-                    {"from_closed", p.from_closed}, {"to_closed", p.to_closed},
-                    {"from_degrees_approx", degrees(p.from)}, {"to_degrees_approx", degrees(p.to)},
+    arcs.push_back({{"from_direction", primitive_json(p.from)},
+                    {"to_direction", primitive_json(p.to)},
+                    {"from_closed", p.from_closed},
+                    {"to_closed", p.to_closed},
+                    {"from_degrees_approx", degrees(p.from)},
+                    {"to_degrees_approx", degrees(p.to)},
                     {"label", solvers::verdict_name(p.label)}});
   json j;
   j["finger"] = {{"edges", edges}, {"arcs", arcs}};

@@ -128,8 +128,8 @@ struct UcpCliOptions {
 };
 
 int run_generate(const UcpCliOptions& o) {
-  write_text_file(o.out, ucp::to_json_text(generated_problem(o.generate, o.seed, o.nc, o.mu_max, o.abar, o.rows, o.cols,
-                                                             o.planted)));
+  write_text_file(o.out, ucp::to_json_text(
+                             generated_problem(o.generate, o.seed, o.nc, o.mu_max, o.abar, o.rows, o.cols, o.planted)));
   return 0;
 }
 

@@ -47,7 +47,8 @@ solvers::Route parse_route(const std::string& route) {
 
 std::string cone(const Scene& s, const std::string& mode_text, const std::string& route, const std::string& arith) {
   const solvers::ModeString mode = cli::cone_mode(s.scene, s.name, mode_text);
-  if (arith == "float") return cli::cone_json(mode, solvers::wrench_cone<double>(s.scene, mode, parse_route(route)), route).dump();
+  if (arith == "float")
+    return cli::cone_json(mode, solvers::wrench_cone<double>(s.scene, mode, parse_route(route)), route).dump();
   return cli::cone_json(s.scene, mode, solvers::wrench_cone<Q>(s.scene, mode, parse_route(route)), route, arith).dump();
 }
 
@@ -87,16 +88,19 @@ class Oracle {
  public:
   Oracle(const Scene& s, std::string arith) : arith_(arith == "adaptive" ? "verified" : std::move(arith)) {
     const exact::Arith a = exact::parse_arith(arith_);
-    if (a == exact::Arith::kFloat) floating_.emplace(s.scene, solvers::StabilityOptions{a});
-    else exact_.emplace(s.scene, solvers::StabilityOptions{a});
+    if (a == exact::Arith::kFloat)
+      floating_.emplace(s.scene, solvers::StabilityOptions{a});
+    else
+      exact_.emplace(s.scene, solvers::StabilityOptions{a});
   }
   std::vector<std::string> verdicts(const std::vector<std::string>& wrenches) const {
     std::vector<std::string> out;
     out.reserve(wrenches.size());
     for (std::size_t i = 0; i < wrenches.size(); ++i) {
       const exact::Vec<Q> g = cli::parse_number_list(wrenches[i], "wrenches[" + std::to_string(i) + "]", 3);
-      out.push_back((floating_ ? cli::stability_json(g, floating_->verdict(exact::to_double(g)), arith_, "", std::nullopt)
-                               : cli::stability_json(g, exact_->verdict(g), arith_, "", std::nullopt))
+      out.push_back((floating_
+                         ? cli::stability_json(g, floating_->verdict(exact::to_double(g)), arith_, "", std::nullopt)
+                         : cli::stability_json(g, exact_->verdict(g), arith_, "", std::nullopt))
                         .dump());
     }
     return out;

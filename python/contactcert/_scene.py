@@ -6,6 +6,7 @@ import os
 from . import _core
 from ._numbers import vector_text
 from ._results import Cone, Finger, Insertion, Region, Stability
+from ._source import FromSource
 
 ARITHS = ("exact", "float", "verified", "adaptive")
 
@@ -17,24 +18,14 @@ def choice(value, allowed, option):
     return value
 
 
-class Scene:
+class Scene(FromSource):
     """A planar scene: a workpiece held by fixels. Queries run in C++ with the GIL released."""
 
+    _core_type = _core.Scene
+
     def __init__(self, core):
-        self._core = core
+        super().__init__(core)
         self._oracles = {}
-
-    @classmethod
-    def from_file(cls, path):
-        return cls(_core.Scene.load(os.fspath(path)))
-
-    @classmethod
-    def from_json(cls, text, name="<json>"):
-        return cls(_core.Scene.parse(text, name))
-
-    @classmethod
-    def from_dict(cls, data, name="<dict>"):
-        return cls(_core.Scene.parse(json.dumps(data), name))
 
     @property
     def name(self):

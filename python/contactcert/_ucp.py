@@ -8,6 +8,7 @@ from . import _core
 from ._numbers import number_text
 from ._results import CheckResult, UcpResult
 from ._scene import ARITHS, Scene, choice
+from ._source import FromSource
 
 BudgetExceeded = _core.BudgetExceeded
 
@@ -37,23 +38,10 @@ class Certificate:
         return f"Certificate({self.kind}{', ' + self.path if self.path else ''})"
 
 
-class Ucp:
+class Ucp(FromSource):
     """A quasistatic (or plain UCP) problem."""
 
-    def __init__(self, core):
-        self._core = core
-
-    @classmethod
-    def from_file(cls, path):
-        return cls(_core.Ucp.load(os.fspath(path)))
-
-    @classmethod
-    def from_json(cls, text, name="<json>"):
-        return cls(_core.Ucp.parse(text, name))
-
-    @classmethod
-    def from_dict(cls, data, name="<dict>"):
-        return cls(_core.Ucp.parse(json.dumps(data), name))
+    _core_type = _core.Ucp
 
     def to_json(self):
         """The problem file's text (what `ucp --generate` writes)."""
