@@ -1,4 +1,5 @@
-# cmake -DBUILD=... -DEXAMPLES=... -DWORK=... -DGENERATOR=... [-DLAUNCHER=ccache] -P consumer_test.cmake
+# cmake -DBUILD=... -DEXAMPLES=... -DWORK=... -DGENERATOR=... [-DLAUNCHER=ccache] [-DPYTHON=... -DPYTHON_DIR=...]
+#       -P consumer_test.cmake
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
@@ -21,4 +22,10 @@ execute_process(COMMAND ${prefix}/bin/contactcert demo --help OUTPUT_VARIABLE he
 string(FIND "${help}" "${prefix}/share/contactcert/scenes" at)
 if(NOT rc EQUAL 0 OR at EQUAL -1)
   message(FATAL_ERROR "the installed demo's default scenes are not ${prefix}/share/contactcert/scenes:\n${help}")
+endif()
+# The installed Python module imports from the prefix alone.
+if(PYTHON)
+  set(scene ${prefix}/share/contactcert/scenes/bt2002_section7_disk.json)
+  run(${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_DIR} ${PYTHON} -c
+      "import sys, contactcert; sys.exit(contactcert.Scene.from_file('${scene}').stability('1,-2,0').verdict != 'strongly_stable')")
 endif()
