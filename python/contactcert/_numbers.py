@@ -24,6 +24,8 @@ def vector_text(v, what):
     """A vector of exact numbers as "a,b,c" (a string is taken as already written so)."""
     if isinstance(v, str):
         return v
+    if all(type(x) is int for x in v):  # the common case, without the checks of number_text
+        return ",".join(map(str, v))
     return ",".join(number_text(x, f"{what}[{i}]") for i, x in enumerate(v))
 
 
