@@ -31,45 +31,37 @@ class Result:
         return self._svg() if self._svg else None
 
 
+def _field(key):
+    """A property: the --json object's member `key`."""
+    return property(lambda self: self._data[key])
+
+
+def _directions(form, key, doc):
+    """A property: the primitive integer rows `key` of the --json object's `form` as int tuples (() if absent)."""
+
+    def get(self):
+        d = self._data.get(form)
+        return tuple(tuple(int(x) for x in row) for row in d[key]) if d and key in d else ()
+
+    return property(get, doc=doc)
+
+
 class Cone(Result):
     """The wrench cone of an augmented contact mode (Balkcom-Trinkle 2002, eqs. 13-17): face form f . g <= 0
     (< 0 on strict rows, = 0 on equalities), span form of its closure (rays, lines) and the open faces."""
 
-    @property
-    def mode(self):
-        return self._data["mode"]
-
-    @property
-    def empty(self):
-        return self._data["empty"]
+    mode = _field("mode")
+    empty = _field("empty")
 
     @property
     def dimension(self):
         return self._data.get("dimension")
 
-    def _rows(self, form, key):
-        d = self._data.get(form)
-        return tuple(tuple(int(x) for x in row) for row in d[key]) if d and key in d else ()
-
-    @property
-    def inequalities(self):
-        return self._rows("face", "inequalities")
-
-    @property
-    def strict(self):
-        return self._rows("face", "strict")
-
-    @property
-    def equalities(self):
-        return self._rows("face", "equalities")
-
-    @property
-    def rays(self):
-        return self._rows("span", "rays")
-
-    @property
-    def lines(self):
-        return self._rows("span", "lines")
+    inequalities = _directions("face", "inequalities", "Rows f of the face form with f . g <= 0.")
+    strict = _directions("face", "strict", "Rows f with f . g < 0 (the open faces).")
+    equalities = _directions("face", "equalities", "Rows f with f . g = 0.")
+    rays = _directions("span", "rays", "Generators of the closure.")
+    lines = _directions("span", "lines", "Lines (both senses) of the closure.")
 
     @property
     def open_faces(self):
@@ -107,9 +99,7 @@ class Stability(Result):
         super().__init__(data)
         self.certificate = certificate  # a Certificate when one was written
 
-    @property
-    def verdict(self):
-        return self._data["verdict"]
+    verdict = _field("verdict")
 
     @property
     def wrench(self):
@@ -200,9 +190,7 @@ class UcpResult(Result):
         super().__init__(data)
         self.certificate = certificate
 
-    @property
-    def status(self):
-        return self._data["status"]
+    status = _field("status")
 
     @property
     def x(self):
@@ -225,17 +213,9 @@ class UcpResult(Result):
 class CheckResult(Result):
     """`contactcert check`'s answer: is the certificate valid, and why."""
 
-    @property
-    def valid(self):
-        return self._data["valid"]
-
-    @property
-    def kind(self):
-        return self._data["kind"]
-
-    @property
-    def reason(self):
-        return self._data["reason"]
+    valid = _field("valid")
+    kind = _field("kind")
+    reason = _field("reason")
 
     def __bool__(self):
         return self.valid
