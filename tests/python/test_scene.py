@@ -8,7 +8,8 @@ import contactcert as cc
 from conftest import SCENES, cli_json
 
 BT2002 = sorted(p.name for p in SCENES.glob("bt2002_*.json"))
-MODES = {"bt2002_section4_disk.json": ["na", "ns", "ss"], "bt2002_section7_disk.json": ["ss", "sl", "nn"]}
+MODES = {"bt2002_section4_disk.json": ["na", "ns", "ss"], "bt2002_section7_disk.json": ["ss", "sl", "nn"],
+         "bt2002_fig10_pentagon_insert.json": ["nnn", "snl"]}
 
 
 def mode_of(name):
