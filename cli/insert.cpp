@@ -88,6 +88,26 @@ json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion
   return j;
 }
 
+std::vector<Q> sweep_mus(const std::string& text) {
+  std::vector<Q> mus;
+  if (text.empty()) return mus;
+  const exact::Vec<Q> v = parse_number_list(text, "--sweep-mu", std::count(text.begin(), text.end(), ',') + 1);
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    if (sgn(v(i)) < 0) throw exact::InputError("command line", "--sweep-mu", "friction coefficients must be >= 0");
+    mus.push_back(v(i));
+  }
+  return mus;
+}
+
+json sweep_entry_json(const geometry::PlanarScene& scene, const Q& mu) {
+  geometry::PlanarScene s = scene;
+  for (auto& f : s.fixels) f.mu_s = f.mu_k = mu;
+  const auto ins = solvers::insertion<Q>(s);
+  const auto pushes = solvers::insertion_pushes<Q>(s, ins);
+  return {{"mu", exact_json(mu)}, {"goal_boundary_fraction_approx", goal_fraction(s, pushes)},
+          {"pushes", pieces_json(pushes)}};
+}
+
 std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<Q, bool>& pushes) {
   const auto marks = boundary_marks<bool>(scene, pushes, [](bool in) { return in ? std::string("#1b7837") : ""; });
   return wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
@@ -100,14 +120,7 @@ int run_insert(const InsertOptions& o) {
   const geometry::PlanarScene scene = geometry::load_planar_scene(o.file);
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "insert is computed exactly (use exact or verified)");
-  std::vector<Q> mus;
-  if (!o.sweep_mu.empty()) {
-    const exact::Vec<Q> v = parse_number_list(o.sweep_mu, "--sweep-mu", std::count(o.sweep_mu.begin(), o.sweep_mu.end(), ',') + 1);
-    for (Eigen::Index i = 0; i < v.size(); ++i) {
-      if (sgn(v(i)) < 0) throw exact::InputError("command line", "--sweep-mu", "friction coefficients must be >= 0");
-      mus.push_back(v(i));
-    }
-  }
+  const std::vector<Q> mus = sweep_mus(o.sweep_mu);
   auto analyse = [&](const geometry::PlanarScene& s) {
     auto ins = solvers::insertion<Q>(s);
     auto pushes = solvers::insertion_pushes<Q>(s, ins);
@@ -121,12 +134,8 @@ int run_insert(const InsertOptions& o) {
   for (const Q& mu : mus) {
     progress.update("mu = " + exact::to_string(mu) + " (" + std::to_string(sweep_rows.size() + 1) + " of " +
                     std::to_string(mus.size()) + ")");
-    geometry::PlanarScene s = scene;
-    for (auto& f : s.fixels) f.mu_s = f.mu_k = mu;
-    const auto [i2, p2] = analyse(s);
-    const double frac = goal_fraction(s, p2);
-    sweep.push_back({{"mu", exact_json(mu)}, {"goal_boundary_fraction_approx", frac}, {"pushes", pieces_json(p2)}});
-    sweep_rows.emplace_back(exact::to_string(mu), frac);
+    sweep.push_back(sweep_entry_json(scene, mu));
+    sweep_rows.emplace_back(exact::to_string(mu), sweep.back()["goal_boundary_fraction_approx"].get<double>());
   }
   progress.finish();
   if (o.common.json) {

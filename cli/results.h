@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/json_out.h"
 #include "exact/json_input.h"
@@ -40,9 +41,12 @@ nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchC
 std::string cone_svg(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
                      const solvers::WrenchCone<exact::Q>& c);
 
-// insert.cpp: G_goal without --sweep-mu, and the --svg picture.
+// insert.cpp: G_goal without --sweep-mu, the values of --sweep-mu (InputError unless each is >= 0), the
+// sweep's entry for one mu (every fixel's mu_s = mu_k = mu), and the --svg picture.
 json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion<exact::Q>& ins,
                     const solvers::BoundaryPieces<exact::Q, bool>& pushes);
+std::vector<exact::Q> sweep_mus(const std::string& text);
+json sweep_entry_json(const geometry::PlanarScene& scene, const exact::Q& mu);
 std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<exact::Q, bool>& pushes);
 
 // ucp.cpp: `ucp --generate random|reduction`, the certificate text of a verdict (empty if it has none) and the

@@ -122,9 +122,17 @@ std::string finger_svg(const Scene& s) {
   return cli::finger_svg(s.scene, solvers::finger_pushes<Q>(s.scene, solvers::stable_region<Q>(s.scene)));
 }
 
-std::string insertion(const Scene& s) {
+/// `insert FILE [--sweep-mu a,b,...]`.
+std::string insertion(const Scene& s, const std::string& sweep_mu) {
+  const std::vector<Q> mus = cli::sweep_mus(sweep_mu);
   const auto ins = solvers::insertion<Q>(s.scene);
-  return cli::insertion_json(s.scene, ins, solvers::insertion_pushes<Q>(s.scene, ins)).dump();
+  cli::json j = cli::insertion_json(s.scene, ins, solvers::insertion_pushes<Q>(s.scene, ins));
+  if (!mus.empty()) {
+    cli::json sweep = cli::json::array();
+    for (const Q& mu : mus) sweep.push_back(cli::sweep_entry_json(s.scene, mu));
+    j["sweep"] = sweep;
+  }
+  return j.dump();
 }
 std::string insertion_svg(const Scene& s) {
   return cli::insertion_svg(s.scene, solvers::insertion_pushes<Q>(s.scene, solvers::insertion<Q>(s.scene)));

@@ -177,6 +177,11 @@ class Insertion(Result):
     def goal_boundary_fraction(self):
         return self._data["goal_boundary_fraction_approx"]
 
+    @property
+    def sweep(self):
+        """With sweep_mu: (mu, fraction of the boundary whose pushes seat the part) per value (Figure 11)."""
+        return tuple((exact(e["mu"]), e["goal_boundary_fraction_approx"]) for e in self._data.get("sweep", []))
+
     def __repr__(self):
         return (f"Insertion({len(self._data['sets'])} contact states, "
                 f"boundary fraction in G_goal ~{self.goal_boundary_fraction:.4f})")

@@ -71,9 +71,11 @@ class Scene(FromSource):
         """`contactcert stability FILE --finger`: the boundary labelled by the verdict of a frictionless push."""
         return Finger(json.loads(self._core.finger()), self._core.finger_svg)
 
-    def insertion(self):
-        """`contactcert insert FILE`: G_goal and the pushes that seat the workpiece from any contact state."""
-        return Insertion(json.loads(self._core.insertion()), self._core.insertion_svg)
+    def insertion(self, sweep_mu=None):
+        """`contactcert insert FILE [--sweep-mu ...]`: G_goal and the pushes that seat the workpiece from any
+        contact state; `sweep_mu` (exact numbers) repeats the pushes with every fixel's mu set to each value."""
+        sweep = vector_text(sweep_mu, "--sweep-mu") if sweep_mu is not None else ""
+        return Insertion(json.loads(self._core.insertion(sweep)), self._core.insertion_svg)
 
     def __repr__(self):
         return f"Scene({self.name!r}, {self._core.fixels} fixels)"

@@ -1,11 +1,12 @@
 """Every Scene query on the bundled scenes agrees exactly with the CLI's --json."""
 
 import xml.etree.ElementTree as ET
+from fractions import Fraction
 
 import pytest
 
 import contactcert as cc
-from conftest import SCENES, cli_json
+from conftest import SCENES, cli_error, cli_json
 
 BT2002 = sorted(p.name for p in SCENES.glob("bt2002_*.json"))
 MODES = {"bt2002_section4_disk.json": ["na", "ns", "ss"], "bt2002_section7_disk.json": ["ss", "sl", "nn"],
@@ -88,6 +89,12 @@ def test_insertion_equals_cli():
     assert ins.to_dict() == cli_json("insert", f)
     assert 0 < ins.goal_boundary_fraction < 1
     assert ET.fromstring(ins._repr_svg_()).tag.endswith("svg")
+    swept = cc.Scene.from_file(f).insertion(sweep_mu=["0.01", Fraction(1, 5), 0])
+    assert swept.to_dict() == cli_json("insert", f, "--sweep-mu", "0.01,1/5,0")
+    assert [mu for mu, _ in swept.sweep] == [Fraction(1, 100), Fraction(1, 5), 0]
+    with pytest.raises(ValueError) as e:
+        cc.Scene.from_file(f).insertion(sweep_mu=["-1"])
+    assert str(e.value) == cli_error("insert", f, "--sweep-mu", "-1")
 
 
 def test_scene_from_json_and_dict_equal_from_file():
