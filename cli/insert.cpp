@@ -104,7 +104,8 @@ json sweep_entry_json(const geometry::PlanarScene& scene, const Q& mu) {
   for (auto& f : s.fixels) f.mu_s = f.mu_k = mu;
   const auto ins = solvers::insertion<Q>(s);
   const auto pushes = solvers::insertion_pushes<Q>(s, ins);
-  return {{"mu", exact_json(mu)}, {"goal_boundary_fraction_approx", goal_fraction(s, pushes)},
+  return {{"mu", exact_json(mu)},
+          {"goal_boundary_fraction_approx", goal_fraction(s, pushes)},
           {"pushes", pieces_json(pushes)}};
 }
 
