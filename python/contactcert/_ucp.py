@@ -62,7 +62,9 @@ class Ucp(FromSource):
         data, text = self._core.solve(method, arith, seed, max_nodes, max_bases, float(time_limit), path)
         result = UcpResult(json.loads(data), Certificate(text, path) if text else None)
         if result.status == "unknown":
-            e = BudgetExceeded(f"budget exceeded: {result['reason']}")
+            d = result.to_dict()
+            covered = ", ".join(f"{d[k]} {k}" for k in ("nodes", "pairs", "lps") if k in d)
+            e = BudgetExceeded(f"budget exceeded: {d['reason']} (covered: {covered})")
             e.result = result
             raise e
         return result
