@@ -3,6 +3,7 @@
 // Usage: consumer SCENES_DIR (the installed PREFIX/share/contactcert/scenes).
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "exact/input_error.h"
 #include "exact/json_input.h"
