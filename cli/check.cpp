@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
+#include "cli/results.h"
 #include "exact/json_input.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/stability_certificate.h"
@@ -52,18 +53,27 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
   cert.at("kind").fail("expected a certificate kind: ucp_jammed, ucp_solvable, stability or modes, found \"" + kind + "\"");
 }
 
+}  // namespace
+
+json check_json(const exact::JsonInput& certificate) {
+  const CheckOutcome c = check_any(certificate);
+  json j;
+  j["valid"] = c.valid;
+  j["kind"] = c.kind;
+  j["reason"] = c.reason;
+  for (auto it = c.details.begin(); it != c.details.end(); ++it) j[it.key()] = it.value();
+  return j;
+}
+
+namespace {
+
 int run_check(const CheckOptions& o) {
-  const CheckOutcome c = check_any(exact::JsonInput::load(o.file));
+  const json j = check_json(exact::JsonInput::load(o.file));
   if (o.common.json) {
-    nlohmann::ordered_json j;
-    j["valid"] = c.valid;
-    j["kind"] = c.kind;
-    j["reason"] = c.reason;
-    for (auto it = c.details.begin(); it != c.details.end(); ++it) j[it.key()] = it.value();
     std::cout << j.dump() << "\n";
   } else {
-    std::cout << "check " << o.file << ": " << c.kind << " certificate is " << (c.valid ? "VALID" : "INVALID") << "\n  "
-              << c.reason << "\n";
+    std::cout << "check " << o.file << ": " << j["kind"].get<std::string>() << " certificate is "
+              << (j["valid"].get<bool>() ? "VALID" : "INVALID") << "\n  " << j["reason"].get<std::string>() << "\n";
   }
   return 0;
 }

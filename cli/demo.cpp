@@ -33,8 +33,16 @@ namespace {
 namespace fs = std::filesystem;
 using exact::Q;
 
+/// The bundled scenes: beside an installed executable (../share/contactcert/scenes), else the source tree's.
+std::string default_scenes() {
+  std::error_code ec;
+  const fs::path installed =
+      fs::read_symlink("/proc/self/exe", ec).parent_path().parent_path() / "share/contactcert/scenes";
+  return !ec && fs::is_directory(installed, ec) ? installed.string() : CONTACTCERT_SCENES_DIR;
+}
+
 struct DemoOptions {
-  std::string scenes = CONTACTCERT_SCENES_DIR;
+  std::string scenes = default_scenes();
   std::string out = "contactcert-out";
 };
 

@@ -6,13 +6,14 @@
 #include <iostream>
 #include <optional>
 
+#include "cli/boundary_marks.h"
 #include "cli/command.h"
 #include "cli/json_out.h"
+#include "cli/results.h"
+#include "cli/stability_svg.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
-#include "cli/boundary_marks.h"
-#include "cli/stability_svg.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stability_certificate.h"
@@ -64,36 +65,94 @@ json witness_json(const solvers::MotionWitness<T>& w) {
   return j;
 }
 
+double degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
+
 template <class T>
 json forces_json(const exact::Vec<T>& c) {
   if constexpr (std::is_same_v<T, Q>) return exact_json(c);
   else return approx_json(c);
 }
 
+}  // namespace
+
+template <class T>
+json stability_json(const exact::Vec<Q>& g, const StabilityResult<T>& r, const std::string& arith,
+                    const std::string& certificate, const std::optional<solvers::Margin<Q>>& margin) {
+  json j;
+  j["verdict"] = solvers::verdict_name(r.verdict);
+  j["wrench"] = exact_json(g);
+  j["arith"] = arith;
+  json touching = json::array();
+  for (auto i : r.touching) touching.push_back(i);
+  j["touching_fixels"] = touching;
+  json w;
+  if (r.has_resting) w["resting_forces"] = forces_json(r.resting_forces);
+  if (r.has_moving) w["moving"] = witness_json(r.moving);
+  j["witness"] = w;
+  j["lps"] = r.lps;
+  j["modes_checked"] = r.modes_checked;
+  j["modes_kinematically_feasible"] = r.modes_kinematically_feasible;
+  j["mode_tree"] = {{"nodes", r.tree_nodes}, {"dead_prefixes", r.dead_prefixes}};
+  if (!certificate.empty()) j["certificate"] = certificate;
+  if (margin && !margin->nearest.empty())
+    j["margin"] = {{"squared_radius", exact_json(margin->squared_radius)},
+                   {"radius_approx", std::sqrt(margin->squared_radius.get_d())},
+                   {"nearest", margin->nearest}};
+  return j;
+}
+template json stability_json(const exact::Vec<Q>&, const StabilityResult<Q>&, const std::string&, const std::string&,
+                             const std::optional<solvers::Margin<Q>>&);
+template json stability_json(const exact::Vec<Q>&, const StabilityResult<double>&, const std::string&,
+                             const std::string&, const std::optional<solvers::Margin<Q>>&);
+
+json region_json(const solvers::StableRegion<Q>& region) {
+  json cells = json::array();
+  for (const auto& c : region.cells)
+    cells.push_back(
+        {{"dimension", c.dimension}, {"point", primitive_json(c.point)}, {"label", solvers::verdict_name(c.label)}});
+  json modes = json::array();
+  for (const auto& m : region.modes) modes.push_back(m.text());
+  json j;
+  j["region"] = {{"planes", region.planes.rows()}, {"nonempty_moving_modes", modes}, {"cells", cells}};
+  return j;
+}
+
+json finger_json(const solvers::FingerPushes<Q>& pushes) {
+  json edges = json::array(), arcs = json::array();
+  for (const auto& p : pushes.edges)
+    edges.push_back({{"edge", p.edge},
+                     {"from", exact_json(p.from)},
+                     {"to", exact_json(p.to)},
+                     {"from_closed", p.from_closed},
+                     {"to_closed", p.to_closed},
+                     {"label", solvers::verdict_name(p.label)}});
+  for (const auto& p : pushes.arcs)
+    arcs.push_back({{"from_direction", primitive_json(p.from)},
+                    {"to_direction", primitive_json(p.to)},
+                    {"from_closed", p.from_closed},
+                    {"to_closed", p.to_closed},
+                    {"from_degrees_approx", degrees(p.from)},
+                    {"to_degrees_approx", degrees(p.to)},
+                    {"label", solvers::verdict_name(p.label)}});
+  json j;
+  j["finger"] = {{"edges", edges}, {"arcs", arcs}};
+  return j;
+}
+
+std::string finger_svg(const geometry::PlanarScene& scene, const solvers::FingerPushes<Q>& pushes) {
+  const auto marks = boundary_marks<solvers::StabilityVerdict>(
+      scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); });
+  return wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
+                         "finger pushes: green strongly stable, yellow weakly, red unstable", marks);
+}
+
+namespace {
+
 template <class T>
 int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityResult<T>& r,
            const std::optional<solvers::Margin<Q>>& margin = std::nullopt) {
   if (o.common.json) {
-    json j;
-    j["verdict"] = solvers::verdict_name(r.verdict);
-    j["wrench"] = exact_json(g);
-    j["arith"] = o.common.arith;
-    json touching = json::array();
-    for (auto i : r.touching) touching.push_back(i);
-    j["touching_fixels"] = touching;
-    json w;
-    if (r.has_resting) w["resting_forces"] = forces_json(r.resting_forces);
-    if (r.has_moving) w["moving"] = witness_json(r.moving);
-    j["witness"] = w;
-    j["lps"] = r.lps;
-    j["modes_checked"] = r.modes_checked;
-    j["modes_kinematically_feasible"] = r.modes_kinematically_feasible;
-    j["mode_tree"] = {{"nodes", r.tree_nodes}, {"dead_prefixes", r.dead_prefixes}};
-    if (!o.certificate.empty()) j["certificate"] = o.certificate;
-    if (margin && !margin->nearest.empty())
-      j["margin"] = {{"squared_radius", exact_json(margin->squared_radius)},
-                     {"radius_approx", std::sqrt(margin->squared_radius.get_d())}, {"nearest", margin->nearest}};
-    std::cout << j.dump() << "\n";
+    std::cout << stability_json(g, r, o.common.arith, o.certificate, margin).dump() << "\n";
     return 0;
   }
   const std::size_t k = r.touching.size();
@@ -128,15 +187,7 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene) {
   int count[3][4] = {};
   for (const auto& c : region.cells) ++count[static_cast<int>(c.label)][c.dimension];
   if (o.common.json) {
-    json cells = json::array();
-    for (const auto& c : region.cells)
-      cells.push_back({{"dimension", c.dimension}, {"point", primitive_json(c.point)},
-                       {"label", solvers::verdict_name(c.label)}});
-    json modes = json::array();
-    for (const auto& m : region.modes) modes.push_back(m.text());
-    json j;
-    j["region"] = {{"planes", region.planes.rows()}, {"nonempty_moving_modes", modes}, {"cells", cells}};
-    std::cout << j.dump() << "\n";
+    std::cout << region_json(region).dump() << "\n";
     return 0;
   }
   std::cout << "stable region of " << o.file << ": " << region.cells.size() << " cells cut by " << region.planes.rows()
@@ -162,33 +213,14 @@ std::string interval_text(bool from_closed, const std::string& from, const std::
   return (from_closed ? "[" : "(") + from + ", " + to + (to_closed ? "]" : ")");
 }
 
-double degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
-
 int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "--finger is computed exactly (use exact or verified)");
   const auto region = solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o));
   const auto pushes = solvers::finger_pushes<Q>(scene, region);
-  if (!o.svg.empty()) {
-    const auto marks = boundary_marks<solvers::StabilityVerdict>(
-        scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); });
-    write_text_file(o.svg, wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
-                                           "finger pushes: green strongly stable, yellow weakly, red unstable", marks));
-  }
+  if (!o.svg.empty()) write_text_file(o.svg, finger_svg(scene, pushes));
   if (o.common.json) {
-    json edges = json::array(), arcs = json::array();
-    for (const auto& p : pushes.edges)
-      edges.push_back({{"edge", p.edge}, {"from", exact_json(p.from)}, {"to", exact_json(p.to)},
-                       {"from_closed", p.from_closed}, {"to_closed", p.to_closed},
-                       {"label", solvers::verdict_name(p.label)}});
-    for (const auto& p : pushes.arcs)
-      arcs.push_back({{"from_direction", primitive_json(p.from)}, {"to_direction", primitive_json(p.to)},
-                      {"from_closed", p.from_closed}, {"to_closed", p.to_closed},
-                      {"from_degrees_approx", degrees(p.from)}, {"to_degrees_approx", degrees(p.to)},
-                      {"label", solvers::verdict_name(p.label)}});
-    json j;
-    j["finger"] = {{"edges", edges}, {"arcs", arcs}};
-    std::cout << j.dump() << "\n";
+    std::cout << finger_json(pushes).dump() << "\n";
     return 0;
   }
   std::cout << "frictionless finger pushes along the inward normal of " << o.file << ":\n";

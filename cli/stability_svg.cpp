@@ -40,7 +40,7 @@ std::string stability_sphere_svg(const solvers::StableRegion<exact::Q>& region, 
           << "\" height=\"" << cell + 0.3 << "\" fill=\"" << verdict_colour(f.label(g)) << "\"/>";
       }
     s << "\n<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << R << "\" fill=\"none\" stroke=\"#333\"/>"
-      << "<text x=\"" << cx - R << "\" y=\"" << cy + R + 18 << "\">" << (side == 0 ? "torque > 0" : "torque < 0")
+      << "<text x=\"" << cx - R << "\" y=\"" << cy + R + 18 << "\">" << (side == 0 ? "torque &gt; 0" : "torque &lt; 0")
       << " (horizontal: f_x, vertical: f_y)</text>\n";
   }
   s << "<text x=\"" << pad << "\" y=\"18\"><tspan fill=\"" << verdict_colour(solvers::StabilityVerdict::kStronglyStable)
