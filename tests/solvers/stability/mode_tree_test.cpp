@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <random>
 #include <set>
 #include <sstream>
@@ -180,6 +181,38 @@ TEST(ModeTree, RandomStabilityVerdictsRegionsAndCertificatesEqualThe4ToTheKRoute
   EXPECT_GT(strong, 10);
   EXPECT_GT(weak, 10);
   EXPECT_GT(unstable, 10);
+}
+
+TEST(ModeTree, EveryBundledPlanarSceneGivesTheModesVerdictsAndRegionOfThe4ToTheKRoute) {
+  int planar = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(CONTACTCERT_SCENES_DIR)) {
+    const std::string text = exact::JsonInput::read_text(entry.path().string());
+    if (text.find("\"planar\"") == std::string::npos) continue;
+    const geometry::PlanarScene scene = parse(text);
+    ++planar;
+    for (bool printed : {false, true}) {
+      ContactModeOptions options;
+      options.printed_separation = printed;
+      const ContactModes m = contact_modes(scene, options);
+      std::set<std::string> tree;
+      for (const ModeString& s : m.tree.modes) tree.insert(s.text());
+      EXPECT_EQ(tree, feasible_by_brute_force(m.model, m.alphabet, scene.fixels.size())) << entry.path();
+    }
+    const geometry::PlanarScene touching = touching_scene(scene);
+    const auto region = stable_region<Q>(scene);
+    const ContactModel<Q> model = contact_model<Q>(touching);
+    std::set<std::string> nonempty, listed;
+    for (const ModeString& m : moving_modes(touching.fixels.size()))
+      if (!is_empty_cone<Q>(wrench_cone_face<Q>(touching, model, m, Route::kPaper))) nonempty.insert(m.text());
+    for (const ModeString& m : region.modes) listed.insert(m.text());
+    EXPECT_EQ(listed, nonempty) << entry.path();
+    for (const Vec<Q>& g : {(Vec<Q>(3) << 0, -1, 0).finished(), (Vec<Q>(3) << 1, -2, 1).finished()}) {
+      const auto r = strong_stability<Q>(scene, g);
+      EXPECT_EQ(r.verdict, verdict_by_brute_force(scene, g)) << entry.path();
+      EXPECT_EQ(check_stability(scene, g, r), "") << entry.path();
+    }
+  }
+  EXPECT_GE(planar, 7);
 }
 
 std::set<std::string> mode_set(const std::string& scene) {
