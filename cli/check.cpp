@@ -1,13 +1,18 @@
-// `contactcert check FILE`: independent verification of a certificate. The certificate's top-level "kind"
-// selects its checker; each checker re-derives everything from the embedded problem and trusts nothing else.
+// `contactcert check FILE [--problem PROBLEM]`: independent verification of a certificate. The certificate's
+// top-level "kind" selects its checker; each checker re-derives everything from the embedded problem and
+// trusts nothing else. The embedded problem's digest (problem_sha256) is printed; with --problem it must also
+// be the problem of the file given, compared as canonical text after exact parsing. Exit 0: VALID; exit 2:
+// INVALID (or a malformed certificate).
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
 #include "exact/json_input.h"
+#include "exact/sha256.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/ucp/certificate.h"
+#include "solvers/ucp/problem.h"
 
 namespace contactcert::cli {
 namespace {
@@ -15,14 +20,30 @@ namespace {
 struct CheckOptions {
   CommonOptions common;
   std::string file;
+  std::string problem;
 };
 
 /// A checker's answer in the common shape of all certificate kinds.
 struct CheckOutcome {
   bool valid = false;
-  std::string kind, reason;
+  std::string kind, reason, digest;
   nlohmann::ordered_json details = nlohmann::ordered_json::object();
 };
+
+/// The problem a certificate embeds: a UCP problem as JSON, a scene as JSON text.
+exact::JsonInput embedded_problem(const exact::JsonInput& cert, const std::string& kind) {
+  if (kind == "stability") return exact::JsonInput::parse(cert.at("scene").string(), cert.file() + " (embedded scene)");
+  return cert.at("problem");
+}
+
+/// The canonical text of the problem file `path` as the certificate kind reads it: a UCP problem through its
+/// reader and writer (so equal problems compare equal whatever their spelling), a scene as its canonical JSON.
+std::string problem_file_text(const std::string& path, const std::string& kind) {
+  const exact::JsonInput in = exact::JsonInput::load(path);
+  if (kind == "stability") return in.canonical_text();
+  const std::string text = solvers::ucp::to_json_text(solvers::ucp::read_ucp_problem(in));
+  return exact::JsonInput::parse(text, path).canonical_text();
+}
 
 CheckOutcome check_any(const exact::JsonInput& cert) {
   const std::string kind = cert.at("kind").string();
@@ -45,19 +66,33 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
 }
 
 int run_check(const CheckOptions& o) {
-  const CheckOutcome c = check_any(exact::JsonInput::load(o.file));
+  const exact::JsonInput cert = exact::JsonInput::load(o.file);
+  CheckOutcome c = check_any(cert);
+  const exact::JsonInput problem = embedded_problem(cert, c.kind);
+  c.digest = problem.canonical_sha256();
+  if (!o.problem.empty()) {
+    const std::string file_text = problem_file_text(o.problem, c.kind);
+    if (c.valid && file_text != problem.canonical_text()) {
+      c.valid = false;
+      c.reason = "the certificate is about another problem than " + o.problem + " (its problem_sha256 is " +
+                 c.digest + ", the file's " + exact::sha256_hex(file_text) + ")";
+    }
+  }
   if (o.common.json) {
     nlohmann::ordered_json j;
     j["valid"] = c.valid;
     j["kind"] = c.kind;
     j["reason"] = c.reason;
+    j["problem_sha256"] = c.digest;
+    if (!o.problem.empty()) j["problem"] = o.problem;
     for (auto it = c.details.begin(); it != c.details.end(); ++it) j[it.key()] = it.value();
     std::cout << j.dump() << "\n";
   } else {
-    std::cout << "check " << o.file << ": " << c.kind << " certificate is " << (c.valid ? "VALID" : "INVALID") << "\n  "
-              << c.reason << "\n";
+    std::cout << "check " << o.file << ": " << c.kind << " certificate is " << (c.valid ? "VALID" : "INVALID")
+              << (o.problem.empty() || !c.valid ? "" : " for " + o.problem) << "\n  " << c.reason
+              << "\n  problem sha256 " << c.digest << "\n";
   }
-  return 0;
+  return c.valid ? 0 : 2;
 }
 
 }  // namespace
@@ -67,6 +102,8 @@ void register_check(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("check", "Verify a certificate written by ucp (or stability) independently");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Certificate file")->required();
+  sub->add_option("--problem", o->problem,
+                  "Problem (or scene) file the certificate must be about: INVALID if its embedded problem differs");
   sub->callback([o, &action] { action = [o] { return run_check(*o); }; });
 }
 

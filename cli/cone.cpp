@@ -3,12 +3,12 @@
 // (which faces are open), the generators read as lines of force, and optionally an SVG picture.
 #include <CLI/CLI.hpp>
 
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
 #include "cli/cone_svg.h"
+#include "cli/json_out.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
@@ -107,10 +107,9 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
   const bool empty = c.status == solvers::ConeStatus::kEmpty;
   const geometry::Point2& com = scene.workpiece.com;
   if (!o.svg.empty()) {
-    std::ofstream out(o.svg);
-    if (!out) throw exact::InputError(o.svg, "", "a writable SVG file");
-    out << wrench_cone_svg(scene, empty ? Mat<Q>(0, 3) : f.closure.rays, empty ? Mat<Q>(0, 3) : f.closure.lines,
-                           "mode '" + mode.text() + "'" + (empty ? " (empty cone)" : ""));
+    write_text_file(o.svg, wrench_cone_svg(scene, empty ? Mat<Q>(0, 3) : f.closure.rays,
+                                           empty ? Mat<Q>(0, 3) : f.closure.lines,
+                                           "mode '" + mode.text() + "'" + (empty ? " (empty cone)" : "")));
   }
   if (o.common.json) {
     nlohmann::json j;

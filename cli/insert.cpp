@@ -154,7 +154,9 @@ void register_insert(CLI::App& app, Action& action) {
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Planar scene in its goal configuration (every fixel touching)")->required();
   sub->add_option("--svg", o->svg, "Picture of the workpiece with the seating pushes in green");
-  sub->add_option("--sweep-mu", o->sweep_mu, "Friction values to sweep, e.g. 0.01,0.2,0.4,0.6 (Figure 11)");
+  sub->add_option("--sweep-mu", o->sweep_mu, "Friction values to sweep, e.g. 0.01,0.2,0.4,0.6 (Figure 11)")
+      ->check(CLI::Validator([](std::string& s) { return s.empty() ? std::string("expected a list of numbers") : ""; },
+                             "LIST"));
   sub->callback([o, &action] { action = [o] { return run_insert(*o); }; });
 }
 

@@ -24,6 +24,9 @@ std::string PolygonCheck::message() const {
   switch (defect) {
     case PolygonDefect::kNone: return "a valid polygon";
     case PolygonDefect::kTooFewVertices: return "at least 3 vertices";
+    case PolygonDefect::kTooManyVertices:
+      return "at most " + std::to_string(kMaxPolygonVertices) + " vertices (the polygon has " + std::to_string(vertex) +
+             ")";
     case PolygonDefect::kRepeatedVertex: return v + " repeats the previous vertex; remove it";
     case PolygonDefect::kCollinearVertex:
       return v + " is collinear with its neighbours (degenerate polygon); remove it";
@@ -37,6 +40,7 @@ std::string PolygonCheck::message() const {
 PolygonCheck check_polygon(const std::vector<Point2>& V) {
   const std::size_t n = V.size();
   if (n < 3) return {PolygonDefect::kTooFewVertices, 0};
+  if (n > kMaxPolygonVertices) return {PolygonDefect::kTooManyVertices, n};
   for (std::size_t i = 0; i < n; ++i)
     if (V[i] == V[(i + n - 1) % n]) return {PolygonDefect::kRepeatedVertex, i};
   for (std::size_t i = 0; i < n; ++i)

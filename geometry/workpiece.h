@@ -52,7 +52,19 @@ struct Workpiece {
 };
 
 /// Why a vertex list is not a usable simple counter-clockwise polygon.
-enum class PolygonDefect { kNone, kTooFewVertices, kRepeatedVertex, kCollinearVertex, kSelfIntersecting, kNotCounterClockwise };
+enum class PolygonDefect {
+  kNone,
+  kTooFewVertices,
+  kTooManyVertices,
+  kRepeatedVertex,
+  kCollinearVertex,
+  kSelfIntersecting,
+  kNotCounterClockwise
+};
+
+/// Most vertices of a polygon accepted: the simple-polygon test compares every pair of edges (quadratic), so
+/// this bounds its time (about a second of exact orientation tests).
+inline constexpr std::size_t kMaxPolygonVertices = 1000;
 
 /// The first defect of a vertex list (kNone for a simple CCW polygon without collinear consecutive
 /// vertices), and the index of the offending vertex.

@@ -26,10 +26,12 @@ json rationals(const Vec<Q>& v) {
 }
 
 json header(const std::string& kind, const UcpProblem& problem) {
+  const std::string text = to_json_text(problem);
   json j;
   j["kind"] = kind;
-  j["format"] = 1;
-  j["problem"] = json::parse(to_json_text(problem));
+  j["format"] = 2;
+  j["problem_sha256"] = JsonInput::parse(text, "problem").canonical_sha256();
+  j["problem"] = json::parse(text);
   return j;
 }
 
@@ -279,10 +281,20 @@ CertificateCheck check_ucp_certificate(const JsonInput& cert) {
   // An unreadable embedded problem is bad input (exit 2); errors in the evidence make the certificate invalid.
   const UcpProblem problem = read_ucp_problem(cert.at("problem"));
   try {
+    if (kind == "ucp_jammed")
+      cert.expect_keys({"kind", "format", "problem_sha256", "problem", "reason", "nodes"});
+    else if (kind == "ucp_solvable")
+      cert.expect_keys({"kind", "format", "problem_sha256", "problem", "x", "y"});
+    else
+      cert.at("kind").fail("expected \"ucp_jammed\" or \"ucp_solvable\"");
+    cert.at("format").integer(2, 2);
+    if (cert.at("problem_sha256").string() != cert.at("problem").canonical_sha256()) {
+      out.reason = "problem_sha256 is not the digest of the embedded problem";
+      return out;
+    }
     const CheckData c = derive(problem);
     if (kind == "ucp_jammed") return check_jammed(cert, c);
-    if (kind == "ucp_solvable") return check_solvable(cert, c);
-    cert.at("kind").fail("expected \"ucp_jammed\" or \"ucp_solvable\"");
+    return check_solvable(cert, c);
   } catch (const InputError& e) {
     out.reason = std::string("malformed certificate: ") + e.what();
   }
