@@ -13,6 +13,7 @@
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/ucp/certificate.h"
 #include "solvers/ucp/problem.h"
+#include "solvers/wrench_cone/cone_certificate.h"
 
 namespace contactcert::cli {
 namespace {
@@ -32,7 +33,8 @@ struct CheckOutcome {
 
 /// The problem a certificate embeds: a UCP problem as JSON, a scene as JSON text.
 exact::JsonInput embedded_problem(const exact::JsonInput& cert, const std::string& kind) {
-  if (kind == "stability") return exact::JsonInput::parse(cert.at("scene").string(), cert.file() + " (embedded scene)");
+  if (kind == "stability" || solvers::is_cone_certificate_kind(kind))
+    return exact::JsonInput::parse(cert.at("scene").string(), cert.file() + " (embedded scene)");
   return cert.at("problem");
 }
 
@@ -40,7 +42,7 @@ exact::JsonInput embedded_problem(const exact::JsonInput& cert, const std::strin
 /// reader and writer (so equal problems compare equal whatever their spelling), a scene as its canonical JSON.
 std::string problem_file_text(const std::string& path, const std::string& kind) {
   const exact::JsonInput in = exact::JsonInput::load(path);
-  if (kind == "stability") return in.canonical_text();
+  if (kind == "stability" || solvers::is_cone_certificate_kind(kind)) return in.canonical_text();
   const std::string text = solvers::ucp::to_json_text(solvers::ucp::read_ucp_problem(in));
   return exact::JsonInput::parse(text, path).canonical_text();
 }
@@ -62,7 +64,14 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
     out.reason = c.reason;
     return out;
   }
-  cert.at("kind").fail("expected a certificate kind: ucp_jammed, ucp_solvable or stability, found \"" + kind + "\"");
+  if (solvers::is_cone_certificate_kind(kind)) {
+    const auto c = solvers::check_cone_certificate(cert);
+    out.valid = c.valid;
+    out.reason = c.reason;
+    return out;
+  }
+  cert.at("kind").fail("expected a certificate kind: ucp_jammed, ucp_solvable, stability, cone_empty or "
+                       "cone_nonempty, found \"" + kind + "\"");
 }
 
 int run_check(const CheckOptions& o) {
@@ -99,7 +108,7 @@ int run_check(const CheckOptions& o) {
 
 void register_check(CLI::App& app, Action& action) {
   auto o = std::make_shared<CheckOptions>();
-  CLI::App* sub = app.add_subcommand("check", "Verify a certificate written by ucp (or stability) independently");
+  CLI::App* sub = app.add_subcommand("check", "Verify a certificate written by ucp, stability or cone independently");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Certificate file")->required();
   sub->add_option("--problem", o->problem,

@@ -10,8 +10,10 @@
 #include "cli/cone_svg.h"
 #include "cli/json_out.h"
 #include "exact/input_error.h"
+#include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "solvers/wrench_cone/cone_certificate.h"
 #include "solvers/wrench_cone/line_of_force.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 
@@ -28,6 +30,7 @@ struct ConeOptions {
   std::string mode;
   std::string route = "paper";
   std::string svg;
+  std::string certificate;
 };
 
 const char* interaction_name(solvers::Interaction l) {
@@ -227,6 +230,11 @@ int run_cone(const ConeOptions& o) {
   const solvers::ModeParse mode = solvers::parse_mode(o.mode, touching);
   if (mode.status != solvers::ModeStatus::kValid) throw exact::InputError(o.file, "--mode", mode.message);
   const solvers::Route route = o.route == "paper" ? solvers::Route::kPaper : solvers::Route::kProject;
+  if (!o.certificate.empty()) {
+    if (o.common.arith == "float")
+      throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
+    write_text_file(o.certificate, solvers::cone_certificate(exact::JsonInput::read_text(o.file), scene, mode.mode));
+  }
   // The verified path is the exact one here: the cone's combinatorics are decided in rationals.
   return o.common.arith == "float" ? run_float(o, scene, mode.mode, route) : run_exact(o, scene, mode.mode, route);
 }
@@ -242,6 +250,8 @@ void register_cone(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"paper", "project"}))
       ->capture_default_str();
   sub->add_option("--svg", opts->svg, "Write a picture: workpiece, fixels, friction cones, lines of force");
+  sub->add_option("--certificate", opts->certificate,
+                  "Write the evidence for `contactcert check`: a Motzkin vector (empty cone) or a witness wrench");
   add_common_options(*sub, opts->common);
   sub->callback([opts, &action] { action = [opts] { return run_cone(*opts); }; });
 }

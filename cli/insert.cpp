@@ -80,7 +80,13 @@ int run_insert(const InsertOptions& o) {
     }
   }
   auto analyse = [&](const geometry::PlanarScene& s) {
-    auto ins = solvers::insertion<Q>(s);
+    auto ins = [&] {
+      try {
+        return solvers::insertion<Q>(s);
+      } catch (const exact::InputError& e) {  // the scene's fixels do not suit insertion: name the file
+        throw exact::InputError(o.file, e.json_path, e.expected);
+      }
+    }();
     auto pushes = solvers::insertion_pushes<Q>(s, ins);
     return std::make_pair(std::move(ins), std::move(pushes));
   };

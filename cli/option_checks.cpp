@@ -9,8 +9,9 @@ CLI::Validator seconds_in_range() {
   return CLI::Validator(
       [](std::string& s) -> std::string {
         char* end = nullptr;
-        const double v = s.empty() ? NAN : std::strtod(s.c_str(), &end);
-        if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v) || v < 0 || v > kMaxTimeLimit)
+        const double v = std::strtod(s.c_str(), &end);
+        const bool decimal = s.find_first_not_of("0123456789.eE+-") == std::string::npos;  // no hex, no "inf"
+        if (!decimal || end != s.c_str() + s.size() || !std::isfinite(v) || v < 0 || v > kMaxTimeLimit)
           return "expected a number of seconds from 0 to 1e7, found \"" + s + "\"";
         return "";
       },

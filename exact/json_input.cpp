@@ -1,7 +1,7 @@
 #include "exact/json_input.h"
 
 #include <algorithm>
-#include <cstdio>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -22,6 +22,7 @@ using json = nlohmann::json;
 // distinguishable. The handler also enforces the depth limit, rejects duplicate keys and keeps the JSON path of
 // the value being read so that its errors can name it.
 constexpr char kNumberTag = '\x01';
+constexpr const char* kInvalidNumber = "malformed JSON: not a JSON number (RFC 8259 section 6: e.g. 0.5, -3, 1e-9)";
 
 /// The text with its number tokens quoted; from_number[k] says whether the k-th string token (keys
 /// included) was a number, and quote_ends the offsets in `text` just past each added pair of quotes.
@@ -75,7 +76,8 @@ QuotedText quote_numbers(const std::string& in) {
       std::size_t j = i;
       while (j < in.size() && number_char(in[j])) ++j;
       const std::string_view token(in.data() + i, j - i);
-      if (is_json_number(token)) {
+      const bool glued = j < in.size() && std::isalnum(static_cast<unsigned char>(in[j]));  // "0x10", "1true"
+      if (is_json_number(token) && !glued) {
         q.text += '"';
         q.text += token;
         q.text += '"';
@@ -99,10 +101,10 @@ class LiteralNumberBuilder {
 
   bool null() { return put(json(nullptr)); }
   bool boolean(bool b) { return put(json(b)); }
-  // quote_numbers leaves no bare number for the parser.
-  bool number_integer(json::number_integer_t) { return fail("unexpected bare number"); }
-  bool number_unsigned(json::number_unsigned_t) { return fail("unexpected bare number"); }
-  bool number_float(json::number_float_t, const std::string&) { return fail("unexpected bare number"); }
+  // quote_numbers quotes every valid number token: a bare number is the valid head of an invalid token ("01").
+  bool number_integer(json::number_integer_t) { return fail(kInvalidNumber); }
+  bool number_unsigned(json::number_unsigned_t) { return fail(kInvalidNumber); }
+  bool number_float(json::number_float_t, const std::string&) { return fail(kInvalidNumber); }
   bool string(std::string& s) {
     if (next_from_number()) return put(json(kNumberTag + s));
     if (!s.empty() && s.front() == kNumberTag) return fail("a string may not start with a control character");

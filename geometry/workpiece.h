@@ -62,9 +62,8 @@ enum class PolygonDefect {
   kNotCounterClockwise
 };
 
-/// Most vertices of a polygon accepted: the simple-polygon test compares every pair of edges (quadratic), so
-/// this bounds its time (about a second of exact orientation tests).
-inline constexpr std::size_t kMaxPolygonVertices = 1000;
+/// Most vertices of a polygon accepted: bounds the time of its exact O(n log n) simple-polygon test.
+inline constexpr std::size_t kMaxPolygonVertices = 100000;
 
 /// The first defect of a vertex list (kNone for a simple CCW polygon without collinear consecutive
 /// vertices), and the index of the offending vertex.
