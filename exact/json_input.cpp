@@ -122,14 +122,17 @@ class LiteralNumberBuilder {
     return true;
   }
   bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
+    error_byte_ = quoted_.original(pos);
     std::string what = e.what();
     auto cut = what.find("syntax error");
-    return fail("malformed JSON at byte " + std::to_string(quoted_.original(pos)) + ": " +
+    return fail("malformed JSON at byte " + std::to_string(error_byte_) + ": " +
                 (cut == std::string::npos ? what : what.substr(cut)));
   }
 
   const std::string& error() const { return error_; }
   const std::string& error_path() const { return error_path_; }
+  /// The byte of the input where the JSON syntax error was found (0 if none).
+  std::size_t error_byte() const { return error_byte_; }
 
  private:
   bool next_from_number() {
@@ -194,6 +197,7 @@ class LiteralNumberBuilder {
   std::string key_;
   std::string error_;
   std::string error_path_;
+  std::size_t error_byte_ = 0;
 };
 
 bool is_number_text(const json& j) {
@@ -234,13 +238,14 @@ std::string JsonInput::canonical_sha256() const { return sha256_hex(canonical_te
 
 JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   if (text.size() > kMaxInputBytes) throw InputError(file, "", too_large_text());
-  if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
-    throw InputError(file, "", "a NUL byte at byte " + std::to_string(nul) + " (JSON text has none)");
   auto root = std::make_shared<json>();
   const QuotedText quoted = quote_numbers(text);
   LiteralNumberBuilder builder(*root, quoted);
   bool ok = json::sax_parse(quoted.text, &builder, json::input_format_t::json, /*strict=*/true);
   auto f = std::make_shared<const std::string>(file);
+  // The parser takes a NUL byte for the end of the input: report it unless an error comes before it.
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos && (ok || builder.error_byte() > nul))
+    throw InputError(file, "", "a NUL byte at byte " + std::to_string(nul) + " (JSON text has none)");
   if (!ok)
     throw InputError(file, builder.error_path(), builder.error().empty() ? "malformed JSON" : builder.error());
   return JsonInput(root, root.get(), f, "$");

@@ -98,7 +98,7 @@ check 2 'g.json: cannot open the file for writing' ucp --generate random --out "
 check 2 'c.json: cannot open the file for writing' ucp "$m/ucp_valid.json" --certificate "$work/garbage.bin/c.json"
 check 2 'garbage.bin/out: --out: a folder that can be created' demo --out "$work/garbage.bin/out"
 check 2 '--mu-max: "1/0" is not an exact number (zero denominator' ucp --generate random --mu-max 1/0 --out "$work/gen.json"
-check 2 '--nc/--abar/--mu-max' ucp --generate random --nc 0 --out "$work/gen.json"
+check 2 '--nc: expected a decimal integer from 1 to 1000' ucp --generate random --nc 0 --out "$work/gen.json"
 
 # ---- planar scenes (SPEC section 3): contactcert cone / stability / insert ----
 check 0 "" cone "$m/scene_valid.json" --mode nn
