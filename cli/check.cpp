@@ -70,8 +70,10 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
     out.reason = c.reason;
     return out;
   }
-  cert.at("kind").fail("expected a certificate kind: ucp_jammed, ucp_solvable, stability, cone_empty or "
-                       "cone_nonempty, found \"" + kind + "\"");
+  cert.at("kind").fail(
+      "expected a certificate kind: ucp_jammed, ucp_solvable, stability, cone_empty or "
+      "cone_nonempty, found \"" +
+      kind + "\"");
 }
 
 int run_check(const CheckOptions& o) {
@@ -83,8 +85,8 @@ int run_check(const CheckOptions& o) {
     const std::string file_text = problem_file_text(o.problem, c.kind);
     if (c.valid && file_text != problem.canonical_text()) {
       c.valid = false;
-      c.reason = "the certificate is about another problem than " + o.problem + " (its problem_sha256 is " +
-                 c.digest + ", the file's " + exact::sha256_hex(file_text) + ")";
+      c.reason = "the certificate is about another problem than " + o.problem + " (its problem_sha256 is " + c.digest +
+                 ", the file's " + exact::sha256_hex(file_text) + ")";
     }
   }
   if (o.common.json) {

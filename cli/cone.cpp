@@ -2,7 +2,6 @@
 // Trinkle 2002), exactly, with the face form (strict rows marked), the span form of its closure
 // (which faces are open), the generators read as lines of force, and optionally an SVG picture.
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -110,9 +109,9 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
   const bool empty = c.status == solvers::ConeStatus::kEmpty;
   const geometry::Point2& com = scene.workpiece.com;
   if (!o.svg.empty()) {
-    write_text_file(o.svg, wrench_cone_svg(scene, empty ? Mat<Q>(0, 3) : f.closure.rays,
-                                           empty ? Mat<Q>(0, 3) : f.closure.lines,
-                                           "mode '" + mode.text() + "'" + (empty ? " (empty cone)" : "")));
+    write_text_file(
+        o.svg, wrench_cone_svg(scene, empty ? Mat<Q>(0, 3) : f.closure.rays, empty ? Mat<Q>(0, 3) : f.closure.lines,
+                               "mode '" + mode.text() + "'" + (empty ? " (empty cone)" : "")));
   }
   if (o.common.json) {
     nlohmann::json j;

@@ -105,7 +105,8 @@ void write_text_file(const std::string& path, const std::string& text) {
   f << text;
   f.close();  // flushes: a full disk shows here
   if (f.fail())
-    throw exact::InputError(path, "", std::string("cannot write the file (") + (errno ? std::strerror(errno) : "write error") + ")");
+    throw exact::InputError(
+        path, "", std::string("cannot write the file (") + (errno ? std::strerror(errno) : "write error") + ")");
 }
 
 void create_output_dir(const std::string& dir) {

@@ -8,17 +8,16 @@
 // `unknown`, exit 3 and what they covered. As a backstop for every command, a watchdog thread ends the
 // process with exit 3 shortly after the limit (a 5% grace, at least one second, lets the loops report first).
 // Every subcommand takes the option: those that do not register it themselves get it here.
-#include <CLI/CLI.hpp>
 #include <gmp.h>
 
-#include <nlohmann/json.hpp>
-
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <new>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -122,7 +121,8 @@ int main(int argc, char** argv) {
   cli::register_bench(app, action);
   for (CLI::App* sub : app.get_subcommands({}))
     if (sub->get_option_no_throw("--time-limit") == nullptr)
-      sub->add_option("--time-limit", cli::no_time_limit, "Seconds of wall clock before the run stops with exit 3 (0 = none)")
+      sub->add_option("--time-limit", cli::no_time_limit,
+                      "Seconds of wall clock before the run stops with exit 3 (0 = none)")
           ->check(cli::seconds_in_range())
           ->default_str("0");
   int code = 0;

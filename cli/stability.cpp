@@ -225,9 +225,10 @@ void register_stability(CLI::App& app, Action& action) {
       "stability", "Is the workpiece strongly stable, only weakly stable, or unstable under a wrench?");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Planar scene file (SPEC section 3)")->required();
-  CLI::Option* wrench =
-      sub->add_option("--wrench", o->wrench, "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");
-  CLI::Option* region = sub->add_flag("--region", o->region, "The whole strongly stable set: labelled cells of wrench space");
+  CLI::Option* wrench = sub->add_option("--wrench", o->wrench,
+                                        "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");
+  CLI::Option* region =
+      sub->add_flag("--region", o->region, "The whole strongly stable set: labelled cells of wrench space");
   sub->add_flag("--margin", o->margin, "With --wrench: squared radius of the largest strongly stable ball around it")
       ->needs(wrench)
       ->excludes(region);

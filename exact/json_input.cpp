@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-
 #include <nlohmann/json.hpp>
 
 #include "exact/rational_text.h"
@@ -62,7 +61,9 @@ bool is_json_number(std::string_view t) {
 QuotedText quote_numbers(const std::string& in) {
   QuotedText q;
   q.text.reserve(in.size() + in.size() / 4);
-  const auto number_char = [](char c) { return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E'; };
+  const auto number_char = [](char c) {
+    return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
+  };
   for (std::size_t i = 0; i < in.size();) {
     const char c = in[i];
     if (c == '"') {  // a string token, copied up to its unescaped closing quote

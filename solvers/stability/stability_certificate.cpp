@@ -50,8 +50,7 @@ StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& c)
   const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
   if (c.at("problem_sha256").string() != embedded.canonical_sha256())
     return {false, "problem_sha256 is not the digest of the embedded scene"};
-  const geometry::PlanarScene scene =
-      geometry::read_planar_scene(embedded);
+  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
   const std::size_t k = touching_scene(scene).fixels.size();
   StabilityResult<Q> claim;
   const std::string verdict = c.at("verdict").string();

@@ -25,7 +25,8 @@ ConeForm<Q> system_of(const geometry::PlanarScene& scene, const ModeString& mode
 
 }  // namespace
 
-std::string cone_certificate(const std::string& scene_text, const geometry::PlanarScene& scene, const ModeString& mode) {
+std::string cone_certificate(const std::string& scene_text, const geometry::PlanarScene& scene,
+                             const ModeString& mode) {
   const ConeForm<Q> f = system_of(scene, mode);
   const Index k = f.K.cols(), d = f.P.cols();
   // (z, g) with [K | -P] (z, g) = 0, z >= 0, z strict > 0 where Table 2 says so, g free.
@@ -82,17 +83,20 @@ ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
       if (sgn(yP(i)) != 0) return {false, "y^T P is not zero in column " + std::to_string(i)};
     bool positive = false;
     for (Index j = 0; j < k; ++j) {
-      if (sgn(yK(j)) < 0) return {false, "(y^T K)_" + std::to_string(j) + " < 0 (" + f.names[static_cast<std::size_t>(j)] + ")"};
+      if (sgn(yK(j)) < 0)
+        return {false, "(y^T K)_" + std::to_string(j) + " < 0 (" + f.names[static_cast<std::size_t>(j)] + ")"};
       positive = positive || (sgn(yK(j)) > 0 && f.strict[static_cast<std::size_t>(j)]);
     }
     if (!positive) return {false, "y^T K is zero on every strict component"};
-    return {true, "the Motzkin vector proves that no wrench has the mode (y^T K >= 0, y^T P = 0, > 0 on a strict component)"};
+    return {true,
+            "the Motzkin vector proves that no wrench has the mode (y^T K >= 0, y^T P = 0, > 0 on a strict component)"};
   }
   const Vec<Q> g = c.at("wrench").rational_vector(3);
   const Vec<Q> z = c.at("z").rational_vector(static_cast<std::size_t>(k));
   const std::vector<exact::JsonInput> names = c.at("z_names").elements();
   for (Index j = 0; j < k; ++j) {
-    if (j >= static_cast<Index>(names.size()) || names[static_cast<std::size_t>(j)].string() != f.names[static_cast<std::size_t>(j)])
+    if (j >= static_cast<Index>(names.size()) ||
+        names[static_cast<std::size_t>(j)].string() != f.names[static_cast<std::size_t>(j)])
       return {false, "z_names differ from the mode's components"};
     const int s = sgn(z(j));
     if (s < 0 || (s == 0 && f.strict[static_cast<std::size_t>(j)]))

@@ -62,7 +62,8 @@ TEST(SimplePolygon, StarShapedPolygonsAreSimple) {
     for (long x = -6; x <= 6; ++x)
       for (long y = -6; y <= 6; ++y)
         if ((x || y) && std::gcd(x, y) == 1) dirs.push_back({x, y});
-    std::sort(dirs.begin(), dirs.end(), [](auto a, auto b) { return std::atan2(a.second, a.first) < std::atan2(b.second, b.first); });
+    std::sort(dirs.begin(), dirs.end(),
+              [](auto a, auto b) { return std::atan2(a.second, a.first) < std::atan2(b.second, b.first); });
     std::vector<Point2> V;
     for (auto [x, y] : dirs) {
       const long r = 1 + static_cast<long>(rng() % 4);
