@@ -15,42 +15,7 @@ mkdir -p "$work"
 mem=${HOSTILE_MEMORY:-2G}  # the issue's bound: no run over 2 GB
 secs=${HOSTILE_SECONDS:-20}
 
-failures=0
-cases=0
-# run WANT TEXT STDIN STDOUT ARGS...: contactcert ARGS with the given standard input and output; WANT is an
-# exit code or several separated by | ("0|3"); TEXT must occur in stderr (with stdout unless stdout is
-# redirected elsewhere).
-run() {
-  local want=$1 text=$2 in=$3 out=$4
-  shift 4
-  cases=$((cases + 1))
-  local t0=$SECONDS
-  timeout -s KILL "$secs" prlimit --as="$(numfmt --from=iec "$mem")" -- "$cc" "$@" > "$out" 2> "$work/err" < "$in"
-  local rc=$?
-  [ -n "${HOSTILE_TIMES:-}" ] && [ $((SECONDS - t0)) -ge 1 ] && echo "slow ($((SECONDS - t0)) s): $*"
-  local msg
-  msg="$(cat "$work/err")"
-  [ "$out" = "$work/out" ] && msg="$(cat "$work/out") $msg"
-  local why=""
-  if [ "$rc" -ge 124 ]; then
-    why="exit $rc (signal, time or memory cap)"
-  elif ! [[ "|$want|" == *"|$rc|"* ]]; then
-    why="exit $rc, expected $want"
-  elif ! grep -qF -- "$text" <<< "$msg"; then
-    why="message does not contain: $text"
-  fi
-  if [ -n "$why" ]; then
-    failures=$((failures + 1))
-    echo "FAIL: contactcert $*: $why"
-    echo "  output: $(head -c 400 <<< "$msg")"
-  fi
-}
-# check WANT TEXT ARGS...: as run, with no input and the output captured.
-check() {
-  local want=$1 text=$2
-  shift 2
-  run "$want" "$text" /dev/null "$work/out" "$@"
-}
+source "$(dirname "$0")/case_lib.sh"
 
 ds4=$s/pang1994_dataset4.json
 scene=$m/scene_valid.json
@@ -197,5 +162,4 @@ done
 # ---- 8. messages name the file ----
 check 2 'one_fixel.json' insert "$h/one_fixel.json"
 
-echo "hostile_inputs: $((cases - failures)) of $cases cases passed"
-[ "$failures" -eq 0 ]
+summary hostile_inputs
