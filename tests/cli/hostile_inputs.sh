@@ -134,7 +134,10 @@ check 2 'long_array.json: $: expected a cone object' convert "$work/long_array.j
 awk 'BEGIN { printf "{\"dim\":10000,\"rays\":[["; for (i = 0; i < 9999; i++) printf "0,"; printf "1]]}" }' > "$work/ray10000.json"
 mem_save=$mem
 mem=300M
-check 3 'out of memory' convert "$work/ray10000.json"
+check 3 'out of memory' convert "$work/ray10000.json"  # Eigen's allocation of the identity fails
+awk 'BEGIN { printf "{\"dim\":3000,\"rays\":[["; for (i = 0; i < 2999; i++) printf "0,"; printf "1]]}" }' > "$work/ray3000.json"
+mem=450M
+check 3 'out of memory' convert "$work/ray3000.json"  # the identity's array fits, a GMP mpq_init of it fails
 mem=$mem_save
 
 # ---- 6. writes are checked ----
