@@ -20,8 +20,8 @@ namespace contactcert::exact {
 
 /// Deepest nesting accepted; deeper input is rejected rather than recursed into.
 inline constexpr std::size_t kMaxJsonDepth = 64;
-/// Largest input file accepted (64 MiB); reading stops one byte past it.
-inline constexpr std::size_t kMaxInputBytes = std::size_t{64} << 20;
+/// Largest input file accepted (32 MiB: its JSON tree then stays well under 2 GB); reading stops one byte past it.
+inline constexpr std::size_t kMaxInputBytes = std::size_t{32} << 20;
 
 /// One node of a parsed input file, with its JSON path for error messages.
 class JsonInput {

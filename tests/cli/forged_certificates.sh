@@ -143,6 +143,21 @@ check 2 'unknown field' check "$work/kind_swap.json"
 forge kind_other 's/"kind":"ucp_jammed"/"kind":"ucp_unsolvable"/' "$jam"
 check 2 'expected a certificate kind' check "$work/kind_other.json"
 
+# ---- a deep tree over many columns: the checker's memory stays O(n + depth), not O(n * depth) ----
+awk -v n=60000 -v depth=200000 -v digest=0 'BEGIN {
+  printf "{\"kind\":\"ucp_jammed\",\"format\":2,\"problem_sha256\":\"%s\",\"problem\":{\"kind\":\"ucp\",\"n\":%d,", digest, n;
+  for (side = 0; side < 2; side++) {
+    printf "%s:{\"A\":[[", side ? ",\"Y\"" : "\"X\"";
+    for (j = 0; j < n; j++) printf "%s1", j ? "," : "";
+    printf "]],\"b\":[1]}";
+  }
+  printf "},\"nodes\":[";
+  for (k = 0; k < depth; k++)
+    printf "{\"branch\":%d,\"x_zero\":%d,\"y_zero\":%d},{\"empty\":\"Y\",\"farkas\":[\"-1\"]},", k % n, 2 * k + 2, 2 * k + 1;
+  printf "{\"empty\":\"X\",\"farkas\":[\"1\"]}]}\n" }' > "$work/deep.json"
+sed -i "s/\"problem_sha256\":\"[^\"]*\"/\"problem_sha256\":\"$(digest "$work/deep.json")\"/" "$work/deep.json"
+check 2 'node 400000: the Farkas vector for X fails' check "$work/deep.json"
+
 # ---- wrench cone certificates (cone --certificate): a Motzkin vector for an empty cone, a witness otherwise ----
 ce=$work/cone_empty.json
 cn=$work/cone_nonempty.json

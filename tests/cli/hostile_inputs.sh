@@ -108,8 +108,8 @@ printf '{"kind":"ucp","n":1, "X":{"A":[[1]],"b":[1]},"Y":{"A":[[1]],"b":[1]},"so
 check 2 'byte_offset.json: $: malformed JSON at byte 84' ucp "$work/byte_offset.json"
 
 # ---- 4. sizes: input bytes, polygon vertices ----
-check 2 '/dev/zero: larger than the input limit of 64 MiB' ucp /dev/zero
-run 2 'standard input: larger than the input limit of 64 MiB' /dev/zero "$work/out" ucp -
+check 2 '/dev/zero: larger than the input limit of 32 MiB' ucp /dev/zero
+run 2 'standard input: larger than the input limit of 32 MiB' /dev/zero "$work/out" ucp -
 check 2 '/dev/zero: larger than the input limit' check /dev/zero
 check 2 '/dev/urandom: larger than the input limit' convert /dev/urandom
 polygon() {  # polygon NAME N: a convex polygon with N vertices (i, i^2), counter-clockwise
