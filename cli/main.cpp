@@ -1,5 +1,6 @@
 // contactcert: exact answers for planar rigid bodies in frictional contact.
-// Exit codes (SPEC section 6): 0 success, 1 internal error, 2 bad input or usage, 3 budget exceeded.
+// Exit codes (SPEC section 6): 0 success, 1 internal error, 2 bad input or usage (also: an output that cannot be
+// written, an INVALID certificate), 3 budget exceeded (also: out of memory, a float run that cannot decide).
 //
 // Out of memory, in GMP as elsewhere, is exit 3 "out of memory": GMP allocates through functions that throw
 // std::bad_alloc (its default ones abort).
