@@ -145,6 +145,8 @@ check 2 '/dev/full: cannot write the file' ucp "$ds4" --certificate /dev/full
 check 2 '/dev/full: cannot write the file' ucp "$s/pang1994_dataset1.json" --certificate /dev/full
 check 2 '/dev/full: cannot write the file' ucp --generate random --out /dev/full
 check 2 '/dev/full: cannot write the file' cone "$scene" --mode nn --svg /dev/full
+check 2 '/dev/full: cannot write the file' cone "$scene" --mode nn --certificate /dev/full
+check 2 '--certificate: a certificate needs' cone "$scene" --mode nn --arith float --certificate "$work/c.json"
 check 2 '/dev/full: cannot write the file' stability "$scene" --wrench 0,-1,0 --certificate /dev/full
 check 2 '/dev/full: cannot write the file' stability "$scene" --region --svg /dev/full
 check 2 '/dev/full: cannot write the file' stability "$scene" --finger --svg /dev/full
