@@ -1,5 +1,8 @@
-// `contactcert check FILE`: independent verification of a certificate. The certificate's top-level "kind"
-// selects its checker; each checker re-derives everything from the embedded problem and trusts nothing else.
+// `contactcert check FILE [--problem PROBLEM]`: independent verification of a certificate. The certificate's
+// top-level "kind" selects its checker; each checker re-derives everything from the embedded problem and
+// trusts nothing else. The embedded problem's digest (problem_sha256) is printed; with --problem it must also
+// be the problem of the file given, compared as canonical text after exact parsing. Exit 0: VALID; exit 2:
+// INVALID (or a malformed certificate).
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -7,9 +10,12 @@
 #include "cli/command.h"
 #include "cli/results.h"
 #include "exact/json_input.h"
+#include "exact/sha256.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/ucp/certificate.h"
+#include "solvers/ucp/problem.h"
+#include "solvers/wrench_cone/cone_certificate.h"
 
 namespace contactcert::cli {
 namespace {
@@ -17,14 +23,36 @@ namespace {
 struct CheckOptions {
   CommonOptions common;
   std::string file;
+  std::string problem;
 };
 
 /// A checker's answer in the common shape of all certificate kinds.
 struct CheckOutcome {
   bool valid = false;
-  std::string kind, reason;
+  std::string kind, reason, digest;
   nlohmann::ordered_json details = nlohmann::ordered_json::object();
 };
+
+/// Whether a certificate of this kind embeds a planar scene (else a UCP problem).
+bool embeds_scene(const std::string& kind) {
+  return kind == "stability" || kind == "modes" || solvers::is_cone_certificate_kind(kind);
+}
+
+/// The problem a certificate embeds: a UCP problem as JSON, a scene as JSON text.
+exact::JsonInput embedded_problem(const exact::JsonInput& cert, const std::string& kind) {
+  if (embeds_scene(kind))
+    return exact::JsonInput::parse(cert.at("scene").string(), cert.file() + " (embedded scene)");
+  return cert.at("problem");
+}
+
+/// The canonical text of the problem file `path` as the certificate kind reads it: a UCP problem through its
+/// reader and writer (so equal problems compare equal whatever their spelling), a scene as its canonical JSON.
+std::string problem_file_text(const std::string& path, const std::string& kind) {
+  const exact::JsonInput in = exact::JsonInput::load(path);
+  if (embeds_scene(kind)) return in.canonical_text();
+  const std::string text = solvers::ucp::to_json_text(solvers::ucp::read_ucp_problem(in));
+  return exact::JsonInput::parse(text, path).canonical_text();
+}
 
 CheckOutcome check_any(const exact::JsonInput& cert) {
   const std::string kind = cert.at("kind").string();
@@ -37,6 +65,18 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
     if (kind == "ucp_jammed") out.details = {{"nodes", c.nodes}, {"leaves", c.leaves}};
     return out;
   }
+  if (kind == "stability") {
+    const auto c = solvers::check_stability_certificate(cert);
+    out.valid = c.valid;
+    out.reason = c.reason;
+    return out;
+  }
+  if (solvers::is_cone_certificate_kind(kind)) {
+    const auto c = solvers::check_cone_certificate(cert);
+    out.valid = c.valid;
+    out.reason = c.reason;
+    return out;
+  }
   if (kind == "modes") {
     const auto c = solvers::check_modes_certificate(cert);
     out.valid = c.valid;
@@ -44,47 +84,66 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
     out.details = {{"modes", c.modes}, {"dead_prefixes", c.dead}};
     return out;
   }
-  if (kind == "stability") {
-    const auto c = solvers::check_stability_certificate(cert);
-    out.valid = c.valid;
-    out.reason = c.reason;
-    return out;
-  }
-  cert.at("kind").fail("expected a certificate kind: ucp_jammed, ucp_solvable, stability or modes, found \"" + kind + "\"");
+  cert.at("kind").fail(
+      "expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, cone_empty or "
+      "cone_nonempty, found \"" +
+      kind + "\"");
 }
 
-}  // namespace
+/// The answer for one certificate, checked against `problem_path` too unless it is empty.
+CheckOutcome check_certificate(const exact::JsonInput& cert, const std::string& problem_path) {
+  CheckOutcome c = check_any(cert);
+  const exact::JsonInput problem = embedded_problem(cert, c.kind);
+  c.digest = problem.canonical_sha256();
+  if (!problem_path.empty()) {
+    const std::string file_text = problem_file_text(problem_path, c.kind);
+    if (c.valid && file_text != problem.canonical_text()) {
+      c.valid = false;
+      c.reason = "the certificate is about another problem than " + problem_path + " (its problem_sha256 is " +
+                 c.digest + ", the file's " + exact::sha256_hex(file_text) + ")";
+    }
+  }
+  return c;
+}
 
-json check_json(const exact::JsonInput& certificate) {
-  const CheckOutcome c = check_any(certificate);
+json outcome_json(const CheckOutcome& c, const std::string& problem_path) {
   json j;
   j["valid"] = c.valid;
   j["kind"] = c.kind;
   j["reason"] = c.reason;
+  j["problem_sha256"] = c.digest;
+  if (!problem_path.empty()) j["problem"] = problem_path;
   for (auto it = c.details.begin(); it != c.details.end(); ++it) j[it.key()] = it.value();
   return j;
 }
 
+}  // namespace
+
+json check_json(const exact::JsonInput& certificate) { return outcome_json(check_certificate(certificate, ""), ""); }
+
 namespace {
 
 int run_check(const CheckOptions& o) {
-  const json j = check_json(exact::JsonInput::load(o.file));
+  const CheckOutcome c = check_certificate(exact::JsonInput::load(o.file), o.problem);
   if (o.common.json) {
-    std::cout << j.dump() << "\n";
+    std::cout << outcome_json(c, o.problem).dump() << "\n";
   } else {
-    std::cout << "check " << o.file << ": " << j["kind"].get<std::string>() << " certificate is "
-              << (j["valid"].get<bool>() ? "VALID" : "INVALID") << "\n  " << j["reason"].get<std::string>() << "\n";
+    std::cout << "check " << o.file << ": " << c.kind << " certificate is " << (c.valid ? "VALID" : "INVALID")
+              << (o.problem.empty() || !c.valid ? "" : " for " + o.problem) << "\n  " << c.reason
+              << "\n  problem sha256 " << c.digest << "\n";
   }
-  return 0;
+  return c.valid ? 0 : 2;
 }
 
 }  // namespace
 
 void register_check(CLI::App& app, Action& action) {
   auto o = std::make_shared<CheckOptions>();
-  CLI::App* sub = app.add_subcommand("check", "Verify a certificate written by ucp (or stability) independently");
+  CLI::App* sub = app.add_subcommand("check", "Verify a certificate written by ucp, stability or cone independently");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Certificate file")->required();
+  sub->add_option("--problem", o->problem,
+                  "Problem (or scene) file the certificate must be about: INVALID if its embedded problem differs");
   sub->callback([o, &action] { action = [o] { return run_check(*o); }; });
 }
 

@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/option_checks.h"
+
 namespace contactcert::cli {
 
 void add_common_options(CLI::App& sub, CommonOptions& opts) {
@@ -15,7 +17,7 @@ void add_common_options(CLI::App& sub, CommonOptions& opts) {
       ->check(CLI::IsMember({"exact", "float", "verified", "adaptive"}))
       ->default_str("verified");
   sub.add_option("--time-limit", opts.time_limit, "Seconds of wall clock before the run stops with exit 3 (0 = none)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(seconds_in_range())
       ->default_str("0");
 }
 

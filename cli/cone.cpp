@@ -2,17 +2,18 @@
 // Trinkle 2002), exactly, with the face form (strict rows marked), the span form of its closure
 // (which faces are open), the generators read as lines of force, and optionally an SVG picture.
 #include <CLI/CLI.hpp>
-
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
 #include "cli/cone_svg.h"
 #include "cli/results.h"
+#include "cli/json_out.h"
 #include "exact/input_error.h"
+#include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "solvers/wrench_cone/cone_certificate.h"
 #include "solvers/wrench_cone/line_of_force.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 
@@ -30,6 +31,7 @@ struct ConeOptions {
   std::string route = "paper";
   std::string svg;
   std::string table2 = "strict";
+  std::string certificate;
 };
 
 const char* interaction_name(solvers::Interaction l) {
@@ -186,9 +188,7 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
   const bool empty = c.status == solvers::ConeStatus::kEmpty;
   const geometry::Point2& com = scene.workpiece.com;
   if (!o.svg.empty()) {
-    std::ofstream out(o.svg);
-    if (!out) throw exact::InputError(o.svg, "", "a writable SVG file");
-    out << cone_svg(scene, mode, c);
+    write_text_file(o.svg, cone_svg(scene, mode, c));
   }
   if (o.common.json) {
     std::cout << cone_json(scene, mode, c, o.route, o.common.arith).dump() << "\n";
@@ -264,6 +264,11 @@ int run_cone(const ConeOptions& o) {
   const geometry::PlanarScene scene = geometry::load_planar_scene(o.file);
   const solvers::ModeString mode = cone_mode(scene, o.file, o.mode, o.table2 == "printed");
   const solvers::Route route = o.route == "paper" ? solvers::Route::kPaper : solvers::Route::kProject;
+  if (!o.certificate.empty()) {
+    if (o.common.arith == "float")
+      throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
+    write_text_file(o.certificate, solvers::cone_certificate(exact::JsonInput::read_text(o.file), scene, mode));
+  }
   // The verified path is the exact one here: the cone's combinatorics are decided in rationals.
   return o.common.arith == "float" ? run_float(o, scene, mode, route) : run_exact(o, scene, mode, route);
 }
@@ -283,6 +288,8 @@ void register_cone(CLI::App& app, Action& action) {
                   "strict: s at a touching fixel is a_n > 0 (seeds errata); printed: a_n >= 0 as Table 2 prints it")
       ->check(CLI::IsMember({"strict", "printed"}))
       ->default_str("strict");
+  sub->add_option("--certificate", opts->certificate,
+                  "Write the evidence for `contactcert check`: a Motzkin vector (empty cone) or a witness wrench");
   add_common_options(*sub, opts->common);
   sub->callback([opts, &action] { action = [opts] { return run_cone(*opts); }; });
 }

@@ -1,8 +1,9 @@
 #include "cli/html_report.h"
 
 #include <filesystem>
-#include <fstream>
-#include <stdexcept>
+#include <sstream>
+
+#include "cli/json_out.h"
 
 namespace contactcert::cli {
 
@@ -46,8 +47,7 @@ void HtmlReport::figure(const std::string& svg, const std::string& caption) {
 std::string HtmlReport::write(const std::string& dir) const {
   std::filesystem::create_directories(dir);
   const std::string path = (std::filesystem::path(dir) / "index.html").string();
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
+  std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escape(title_)
       << "</title>\n<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}"
          "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:3px 8px;"
@@ -56,6 +56,7 @@ std::string HtmlReport::write(const std::string& dir) const {
          "figcaption{font-size:90%;max-width:420px}</style></head><body>\n<h1>"
       << html_escape(title_) << "</h1>\n"
       << body_ << "</body></html>\n";
+  write_text_file(path, out.str());
   return path;
 }
 

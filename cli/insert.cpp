@@ -123,7 +123,13 @@ int run_insert(const InsertOptions& o) {
     throw exact::InputError("command line", "--arith", "insert is computed exactly (use exact or verified)");
   const std::vector<Q> mus = sweep_mus(o.sweep_mu);
   auto analyse = [&](const geometry::PlanarScene& s) {
-    auto ins = solvers::insertion<Q>(s);
+    auto ins = [&] {
+      try {
+        return solvers::insertion<Q>(s);
+      } catch (const exact::InputError& e) {  // the scene's fixels do not suit insertion: name the file
+        throw exact::InputError(o.file, e.json_path, e.expected);
+      }
+    }();
     auto pushes = solvers::insertion_pushes<Q>(s, ins);
     return std::make_pair(std::move(ins), std::move(pushes));
   };
@@ -178,7 +184,9 @@ void register_insert(CLI::App& app, Action& action) {
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Planar scene in its goal configuration (every fixel touching)")->required();
   sub->add_option("--svg", o->svg, "Picture of the workpiece with the seating pushes in green");
-  sub->add_option("--sweep-mu", o->sweep_mu, "Friction values to sweep, e.g. 0.01,0.2,0.4,0.6 (Figure 11)");
+  sub->add_option("--sweep-mu", o->sweep_mu, "Friction values to sweep, e.g. 0.01,0.2,0.4,0.6 (Figure 11)")
+      ->check(CLI::Validator([](std::string& s) { return s.empty() ? std::string("expected a list of numbers") : ""; },
+                             "LIST"));
   sub->callback([o, &action] { action = [o] { return run_insert(*o); }; });
 }
 

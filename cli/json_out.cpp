@@ -1,5 +1,7 @@
 #include "cli/json_out.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -94,12 +96,17 @@ exact::Vec<Q> parse_number_list(const std::string& text, const std::string& opti
 
 void write_text_file(const std::string& path, const std::string& text) {
   if (path == "-") {
-    std::cout << text;
+    if (!(std::cout << text).flush()) throw exact::InputError("standard output", "", "cannot write the output");
     return;
   }
-  std::ofstream f(path);
+  std::ofstream f(path, std::ios::binary);
   if (!f) throw exact::InputError(path, "", "cannot open the file for writing");
+  errno = 0;
   f << text;
+  f.close();  // flushes: a full disk shows here
+  if (f.fail())
+    throw exact::InputError(
+        path, "", std::string("cannot write the file (") + (errno ? std::strerror(errno) : "write error") + ")");
 }
 
 void create_output_dir(const std::string& dir) {

@@ -30,7 +30,8 @@ std::string tuple_text(const exact::Vec<double>& v);
 std::string tuple_text(const std::vector<exact::Z>& v);
 /// Reads "a,b,c" (each an exact number, SPEC section 1) for option `option`; InputError names the option.
 exact::Vec<exact::Q> parse_number_list(const std::string& text, const std::string& option, long expected_size);
-/// Writes text to path ("-" = stdout); InputError if the file cannot be written.
+/// Writes text to path ("-" = stdout), flushed and checked: InputError naming the file if it cannot be opened
+/// or written (a full disk). Every file a command writes goes through here.
 void write_text_file(const std::string& path, const std::string& text);
 /// Creates the folder `dir` of a command's files (and its parents); InputError naming --out otherwise.
 void create_output_dir(const std::string& dir);

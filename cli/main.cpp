@@ -1,19 +1,30 @@
 // contactcert: exact answers for planar rigid bodies in frictional contact.
-// Exit codes (SPEC section 6): 0 success, 1 internal error, 2 bad input or usage, 3 budget exceeded.
+// Exit codes (SPEC section 6): 0 success, 1 internal error, 2 bad input or usage (also: an output that cannot be
+// written, an INVALID certificate), 3 budget exceeded (also: out of memory, a float run that cannot decide).
+//
+// Out of memory, in GMP as elsewhere, is exit 3 "out of memory": GMP allocates through functions that throw
+// std::bad_alloc (its default ones abort).
 //
 // --time-limit: commands with a search loop (ucp) test the deadline between units of work and end with
 // `unknown`, exit 3 and what they covered. As a backstop for every command, a watchdog thread ends the
 // process with exit 3 shortly after the limit (a 5% grace, at least one second, lets the loops report first).
-#include <CLI/CLI.hpp>
+// Every subcommand takes the option: those that do not register it themselves get it here.
+#include <gmp.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <new>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "cli/command.h"
+#include "cli/option_checks.h"
 #include "exact/input_error.h"
 
 #ifndef CONTACTCERT_VERSION
@@ -22,6 +33,43 @@
 
 namespace contactcert::cli {
 namespace {
+
+void* gmp_allocate(std::size_t n) {
+  void* p = std::malloc(n);
+  if (p == nullptr) throw std::bad_alloc();
+  return p;
+}
+
+void* gmp_reallocate(void* p, std::size_t, std::size_t n) {
+  void* q = std::realloc(p, n);
+  if (q == nullptr) throw std::bad_alloc();
+  return q;
+}
+
+void gmp_free(void* p, std::size_t) { std::free(p); }
+
+/// The subcommand ran with --arith float.
+bool float_arith(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands()) {
+    const CLI::Option* arith = sub->get_option_no_throw("--arith");
+    if (arith != nullptr && arith->count() > 0 && arith->as<std::string>() == "float") return true;
+  }
+  return false;
+}
+
+/// A float run whose rounded numbers contradict themselves (e.g. the double description finds the rank it was
+/// promised lacking): the float path cannot decide, which is an answer ("undecided", exit 3), not a bug.
+void report_float_undecided(const CLI::App& app, const std::string& what) {
+  const std::string reason = "the float computation is inconsistent after rounding (" + what + ")";
+  const CLI::App* sub = app.get_subcommands().front();
+  const CLI::Option* json = sub->get_option_no_throw("--json");
+  if (json != nullptr && json->count() > 0)
+    std::cout << nlohmann::json{{"status", "undecided"}, {"arith", "float"}, {"reason", reason}}.dump() << "\n";
+  std::cerr << "contactcert: " << sub->get_name() << ": undecided in floating point: " << reason
+            << "; rerun with --arith verified for an exact answer\n";
+}
+
+double no_time_limit = 0;  // --time-limit of the subcommands that do not register it themselves
 
 /// Ends the process with exit code 3 if the command is still running `limit` seconds (+ grace) from now.
 void start_watchdog(const std::string& command, double limit) {
@@ -40,6 +88,7 @@ void start_watchdog(const std::string& command, double limit) {
 
 int main(int argc, char** argv) {
   using namespace contactcert;
+  mp_set_memory_functions(cli::gmp_allocate, cli::gmp_reallocate, cli::gmp_free);
   CLI::App app{
       "contactcert " CONTACTCERT_VERSION
       ": exact answers for planar rigid bodies in frictional contact.\n"
@@ -58,6 +107,13 @@ int main(int argc, char** argv) {
   cli::register_cone(app, action);
   cli::register_convert(app, action);
   cli::register_bench(app, action);
+  for (CLI::App* sub : app.get_subcommands({}))
+    if (sub->get_option_no_throw("--time-limit") == nullptr)
+      sub->add_option("--time-limit", cli::no_time_limit,
+                      "Seconds of wall clock before the run stops with exit 3 (0 = none)")
+          ->check(cli::seconds_in_range())
+          ->default_str("0");
+  int code = 0;
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -79,7 +135,7 @@ int main(int argc, char** argv) {
       cli::start_watchdog(sub->get_name(), limit->as<double>());
   }
   try {
-    return action ? action() : 0;
+    code = action ? action() : 0;
   } catch (const exact::InputError& e) {
     std::cerr << "contactcert: " << e.what() << "\n";
     return 2;
@@ -89,8 +145,20 @@ int main(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     std::cerr << "contactcert: out of memory\n";
     return 3;
+  } catch (const std::logic_error& e) {
+    if (!cli::float_arith(app)) {
+      std::cerr << "contactcert: internal error: " << e.what() << "\n";
+      return 1;
+    }
+    cli::report_float_undecided(app, e.what());
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "contactcert: internal error: " << e.what() << "\n";
     return 1;
   }
+  if (!std::cout.flush()) {
+    std::cerr << "contactcert: standard output: cannot write the output\n";
+    return 2;
+  }
+  return code;
 }

@@ -273,9 +273,13 @@ void register_stability(CLI::App& app, Action& action) {
       "stability", "Is the workpiece strongly stable, only weakly stable, or unstable under a wrench?");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Planar scene file (SPEC section 3)")->required();
-  sub->add_option("--wrench", o->wrench, "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");
-  sub->add_flag("--region", o->region, "The whole strongly stable set: labelled cells of wrench space");
-  sub->add_flag("--margin", o->margin, "With --wrench: squared radius of the largest strongly stable ball around it");
+  CLI::Option* wrench = sub->add_option("--wrench", o->wrench,
+                                        "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");
+  CLI::Option* region =
+      sub->add_flag("--region", o->region, "The whole strongly stable set: labelled cells of wrench space");
+  sub->add_flag("--margin", o->margin, "With --wrench: squared radius of the largest strongly stable ball around it")
+      ->needs(wrench)
+      ->excludes(region);
   sub->add_flag("--finger", o->finger, "Where a frictionless finger push along the boundary normal is strongly stable");
   sub->add_option("--svg", o->svg,
                   "With --region: the sphere of wrench directions; with --finger: the boundary coloured by verdict");

@@ -8,6 +8,7 @@
 
 #include "cli/command.h"
 #include "cli/json_out.h"
+#include "cli/option_checks.h"
 #include "cli/progress_line.h"
 #include "cli/results.h"
 #include "exact/arith.h"
@@ -153,6 +154,10 @@ int run_ucp(const UcpCliOptions& o) {
     };
   if (!o.certificate.empty() && opts.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
+  if (!o.certificate.empty() && opts.method == ucp::Method::kEnumerate)
+    throw exact::InputError("command line", "--certificate",
+                            "--method enumerate writes no certificate (its jammed verdict has no proof tree); use "
+                            "--method complete");
   const ucp::UcpReport r = ucp::solve_ucp(problem, opts);
   progress.finish();
 
@@ -192,6 +197,7 @@ int run_ucp(const UcpCliOptions& o) {
                 << "\n";
     if (r.solutions >= 0) std::cout << "  solution modes: " << r.solutions << "\n";
     if (!cert_text.empty()) std::cout << "  certificate written to " << o.certificate << "\n";
+    if (!o.certificate.empty() && cert_text.empty()) std::cout << "  no certificate written: the verdict is unknown\n";
   }
   return r.status == ucp::UcpStatus::kUnknown ? 3 : 0;
 }
@@ -207,22 +213,30 @@ void register_ucp(CLI::App& app, Action& action) {
   sub->add_option("--method", o->method, "paper | modified | complete | enumerate")
       ->check(CLI::IsMember({"paper", "modified", "complete", "enumerate"}))
       ->capture_default_str();
-  sub->add_option("--seed", o->seed, "Seed of the random choices (Step 3) and of generators")->capture_default_str();
+  sub->add_option("--seed", o->seed, "Seed of the random choices (Step 3) and of generators")
+      ->check(whole_number<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()))
+      ->capture_default_str();
   sub->add_option("--certificate", o->certificate, "Write the certificate of the verdict to this file");
   sub->add_option("--max-nodes", o->max_nodes, "Node budget of the complete search")
-      ->check(CLI::Range(1L, std::numeric_limits<long>::max()))
+      ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
       ->capture_default_str();
   sub->add_option("--max-bases", o->max_bases, "Step 3: bases explored per degenerate vertex")
-      ->check(CLI::Range(1L, std::numeric_limits<long>::max()))
+      ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
       ->capture_default_str();
   sub->add_option("--generate", o->generate, "Write a problem instead: random (section 5) | reduction (Proposition 2)")
       ->check(CLI::IsMember({"random", "reduction"}));
   sub->add_option("--out", o->out, "Generated problem file (- = stdout)")->capture_default_str();
-  sub->add_option("--nc", o->nc, "random: number of contacts")->capture_default_str();
+  sub->add_option("--nc", o->nc, "random: number of contacts")->check(whole_number(1, 1000))->capture_default_str();
   sub->add_option("--mu-max", o->mu_max, "random: friction coefficients in (0, mu-max)")->capture_default_str();
-  sub->add_option("--abar", o->abar, "random: |abar|, effort-controlled joints")->capture_default_str();
-  sub->add_option("--rows", o->rows, "reduction: rows of the 0-1 problem")->capture_default_str();
-  sub->add_option("--cols", o->cols, "reduction: columns of the 0-1 problem")->capture_default_str();
+  sub->add_option("--abar", o->abar, "random: |abar|, effort-controlled joints")
+      ->check(whole_number(0, 2000))
+      ->capture_default_str();
+  sub->add_option("--rows", o->rows, "reduction: rows of the 0-1 problem")
+      ->check(whole_number(1, 1000))
+      ->capture_default_str();
+  sub->add_option("--cols", o->cols, "reduction: columns of the 0-1 problem")
+      ->check(whole_number(1, 60))
+      ->capture_default_str();
   sub->add_flag("--planted", o->planted, "reduction: plant a 0-1 solution (solvable)");
   sub->callback([o, &action] { action = [o] { return run_ucp(*o); }; });
 }

@@ -1,36 +1,113 @@
 #include "exact/json_input.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <iterator>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
 
 #include "exact/rational_text.h"
+#include "exact/sha256.h"
 
 namespace contactcert::exact {
 namespace {
 
 using json = nlohmann::json;
 
-// A SAX handler that builds the DOM but stores every number as its literal text (JSON numbers
-// become strings tagged by a leading '\x01' so that numbers and strings stay distinguishable).
-// Also enforces the depth limit, rejects duplicate keys and keeps the JSON path of the value being read
-// so that its errors can name it.
+// Numbers keep their literal text: a first pass (quote_numbers) rewrites every bare number token as a string
+// token, so the JSON parser never converts a number to double (where 1e400 would overflow); the SAX handler
+// below then stores those strings tagged by a leading '\x01', so that numbers and strings stay
+// distinguishable. The handler also enforces the depth limit, rejects duplicate keys and keeps the JSON path of
+// the value being read so that its errors can name it.
 constexpr char kNumberTag = '\x01';
+constexpr const char* kInvalidNumber = "malformed JSON: not a JSON number (RFC 8259 section 6: e.g. 0.5, -3, 1e-9)";
+
+/// The text with its number tokens quoted; from_number[k] says whether the k-th string token (keys
+/// included) was a number, and quote_ends the offsets in `text` just past each added pair of quotes.
+struct QuotedText {
+  std::string text;
+  std::vector<bool> from_number;
+  std::vector<std::size_t> quote_ends;
+  /// The offset in the original text of offset `pos` of the quoted text.
+  std::size_t original(std::size_t pos) const {
+    const auto before = std::upper_bound(quote_ends.begin(), quote_ends.end(), pos) - quote_ends.begin();
+    return pos - 2 * static_cast<std::size_t>(before);
+  }
+};
+
+/// True if t is a JSON number: -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)? (RFC 8259 section 6).
+bool is_json_number(std::string_view t) {
+  std::size_t i = 0;
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    return i > from;
+  };
+  if (i < t.size() && t[i] == '-') ++i;
+  if (i < t.size() && t[i] == '0')
+    ++i;
+  else if (!digits())
+    return false;
+  if (i < t.size() && t[i] == '.' && (++i, !digits())) return false;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    if (!digits()) return false;
+  }
+  return i == t.size();
+}
+
+QuotedText quote_numbers(const std::string& in) {
+  QuotedText q;
+  q.text.reserve(in.size() + in.size() / 4);
+  const auto number_char = [](char c) {
+    return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
+  };
+  for (std::size_t i = 0; i < in.size();) {
+    const char c = in[i];
+    if (c == '"') {  // a string token, copied up to its unescaped closing quote
+      std::size_t j = i + 1;
+      while (j < in.size() && in[j] != '"') j += in[j] == '\\' ? 2 : 1;
+      j = std::min(j + 1, in.size());
+      q.text.append(in, i, j - i);
+      q.from_number.push_back(false);
+      i = j;
+    } else if (c == '-' || (c >= '0' && c <= '9')) {
+      std::size_t j = i;
+      while (j < in.size() && number_char(in[j])) ++j;
+      const std::string_view token(in.data() + i, j - i);
+      const bool glued = j < in.size() && std::isalnum(static_cast<unsigned char>(in[j]));  // "0x10", "1true"
+      if (is_json_number(token) && !glued) {
+        q.text += '"';
+        q.text += token;
+        q.text += '"';
+        q.quote_ends.push_back(q.text.size());
+        q.from_number.push_back(true);
+      } else {
+        q.text += token;  // left for the parser to report
+      }
+      i = j;
+    } else {
+      q.text += c;
+      ++i;
+    }
+  }
+  return q;
+}
 
 class LiteralNumberBuilder {
  public:
-  explicit LiteralNumberBuilder(json& root) : root_(root) {}
+  LiteralNumberBuilder(json& root, const QuotedText& quoted) : root_(root), quoted_(quoted) {}
 
   bool null() { return put(json(nullptr)); }
   bool boolean(bool b) { return put(json(b)); }
-  bool number_integer(json::number_integer_t v) { return put(json(kNumberTag + std::to_string(v))); }
-  bool number_unsigned(json::number_unsigned_t v) { return put(json(kNumberTag + std::to_string(v))); }
-  bool number_float(json::number_float_t, const std::string& s) { return put(json(kNumberTag + s)); }
+  // quote_numbers quotes every valid number token: a bare number is the valid head of an invalid token ("01").
+  bool number_integer(json::number_integer_t) { return fail(kInvalidNumber); }
+  bool number_unsigned(json::number_unsigned_t) { return fail(kInvalidNumber); }
+  bool number_float(json::number_float_t, const std::string&) { return fail(kInvalidNumber); }
   bool string(std::string& s) {
+    if (next_from_number()) return put(json(kNumberTag + s));
     if (!s.empty() && s.front() == kNumberTag) return fail("a string may not start with a control character");
     return put(json(s));
   }
@@ -40,21 +117,29 @@ class LiteralNumberBuilder {
   bool start_array(std::size_t) { return open(json::array()); }
   bool end_array() { return close(); }
   bool key(std::string& k) {
+    if (next_from_number()) return fail("malformed JSON: an object key must be a string");
     key_ = k;
     if (stack_.back()->contains(k)) return fail("duplicate key \"" + k + "\"");
     return true;
   }
   bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
+    error_byte_ = quoted_.original(pos);
     std::string what = e.what();
     auto cut = what.find("syntax error");
-    return fail("malformed JSON at byte " + std::to_string(pos) + ": " +
+    return fail("malformed JSON at byte " + std::to_string(error_byte_) + ": " +
                 (cut == std::string::npos ? what : what.substr(cut)));
   }
 
   const std::string& error() const { return error_; }
   const std::string& error_path() const { return error_path_; }
+  /// The byte of the input where the JSON syntax error was found (0 if none).
+  std::size_t error_byte() const { return error_byte_; }
 
  private:
+  bool next_from_number() {
+    const std::size_t k = strings_++;
+    return k < quoted_.from_number.size() && quoted_.from_number[k];
+  }
   bool fail(std::string why) {
     if (error_.empty()) {
       error_ = std::move(why);
@@ -106,11 +191,14 @@ class LiteralNumberBuilder {
   }
 
   json& root_;
+  const QuotedText& quoted_;
+  std::size_t strings_ = 0;  // string tokens (keys included) read so far
   std::vector<json*> stack_;
   std::vector<std::string> segments_;  // path pieces of the open containers, e.g. ".P", "[1]"
   std::string key_;
   std::string error_;
   std::string error_path_;
+  std::size_t error_byte_ = 0;
 };
 
 bool is_number_text(const json& j) {
@@ -118,13 +206,47 @@ bool is_number_text(const json& j) {
          j.get_ref<const std::string&>().front() == kNumberTag;
 }
 
+json canonical(const json& j) {
+  if (j.is_object()) {
+    json out = json::object();
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      const std::string& k = it.key();
+      if (it->is_null() || k == "source" || k == "note" || k == "name" || k == "description") continue;
+      out[k] = canonical(*it);
+    }
+    return out;
+  }
+  if (j.is_array()) {
+    json out = json::array();
+    for (const json& e : j) out.push_back(canonical(e));
+    return out;
+  }
+  if (!j.is_string()) return j;
+  std::string s = j.get<std::string>();
+  if (is_number_text(j)) s.erase(0, 1);
+  try {
+    return to_string(parse_rational(s));
+  } catch (const NumberSyntaxError&) {
+    return s;
+  }
+}
+
 }  // namespace
 
+std::string JsonInput::canonical_text() const { return canonical(*node_).dump(); }
+
+std::string JsonInput::canonical_sha256() const { return sha256_hex(canonical_text()); }
+
 JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
+  if (text.size() > kMaxInputBytes) throw InputError(file, "", too_large_text());
   auto root = std::make_shared<json>();
-  LiteralNumberBuilder builder(*root);
-  bool ok = json::sax_parse(text, &builder, json::input_format_t::json, /*strict=*/true);
+  const QuotedText quoted = quote_numbers(text);
+  LiteralNumberBuilder builder(*root, quoted);
+  bool ok = json::sax_parse(quoted.text, &builder, json::input_format_t::json, /*strict=*/true);
   auto f = std::make_shared<const std::string>(file);
+  // The parser takes a NUL byte for the end of the input: report it unless an error comes before it.
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos && (ok || builder.error_byte() > nul))
+    throw InputError(file, "", "a NUL byte at byte " + std::to_string(nul) + " (JSON text has none)");
   if (!ok)
     throw InputError(file, builder.error_path(), builder.error().empty() ? "malformed JSON" : builder.error());
   return JsonInput(root, root.get(), f, "$");
@@ -133,19 +255,29 @@ JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
 JsonInput JsonInput::load(const std::string& path) { return parse(read_text(path), path); }
 
 std::string JsonInput::read_text(const std::string& path) {
-  std::string text;
-  if (path == "-") {
-    text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-  } else {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "is a directory; expected a JSON file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "", "cannot open the file for reading");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    text = ss.str();
+  std::error_code ec;
+  if (path != "-" && std::filesystem::is_directory(path, ec))
+    throw InputError(path, "", "is a directory; expected a JSON file");
+  std::ifstream file;
+  if (path != "-") {
+    file.open(path, std::ios::binary);
+    if (!file) throw InputError(path, "", "cannot open the file for reading");
   }
+  std::istream& in = path == "-" ? std::cin : file;
+  // Chunks up to one byte past the limit: an endless source (/dev/zero) stops there.
+  std::string text;
+  std::vector<char> chunk(1 << 20);
+  while (in && text.size() <= kMaxInputBytes) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  if (text.size() > kMaxInputBytes) throw InputError(path == "-" ? "standard input" : path, "", too_large_text());
+  if (in.bad()) throw InputError(path, "", "read error");
   return text;
+}
+
+std::string JsonInput::too_large_text() {
+  return "larger than the input limit of " + std::to_string(kMaxInputBytes >> 20) + " MiB";
 }
 
 bool JsonInput::is_object() const { return node_->is_object(); }

@@ -20,6 +20,8 @@ namespace contactcert::exact {
 
 /// Deepest nesting accepted; deeper input is rejected rather than recursed into.
 inline constexpr std::size_t kMaxJsonDepth = 64;
+/// Largest input file accepted (32 MiB: its JSON tree then stays well under 2 GB); reading stops one byte past it.
+inline constexpr std::size_t kMaxInputBytes = std::size_t{32} << 20;
 
 /// One node of a parsed input file, with its JSON path for error messages.
 class JsonInput {
@@ -30,6 +32,8 @@ class JsonInput {
   static JsonInput load(const std::string& path);
   /// The whole text of a file ("-" = standard input); InputError if it cannot be read.
   static std::string read_text(const std::string& path);
+  /// "larger than the input limit of 64 MiB".
+  static std::string too_large_text();
 
   const std::string& file() const { return *file_; }
   const std::string& path() const { return path_; }
@@ -54,6 +58,13 @@ class JsonInput {
   Vec<Q> rational_vector(std::optional<std::size_t> n = std::nullopt) const;
   Mat<Q> rational_matrix(std::optional<std::size_t> rows = std::nullopt,
                          std::optional<std::size_t> cols = std::nullopt) const;
+
+  /// The canonical text of this value, for comparing problems and for their digest: compact JSON with sorted
+  /// keys, every number and numeric string as its exact value in lowest terms ("0.50" and 1/2 both "1/2"),
+  /// null members and the free-text labels "source", "note", "name" and "description" left out.
+  std::string canonical_text() const;
+  /// SHA-256 (hex) of canonical_text(): the digest of a problem that every certificate carries.
+  std::string canonical_sha256() const;
 
   /// Throws InputError for this field: "<file>: <path>: <expected>".
   [[noreturn]] void fail(const std::string& expected) const;

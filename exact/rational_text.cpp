@@ -47,6 +47,7 @@ Q parse_integer_ratio(std::string_view text, std::string_view s) {
   bool neg = take_sign(num);
   bool neg_den = take_sign(den);
   if (!all_digits(num) || !all_digits(den)) bad(text, "a fraction needs integer numerator and denominator");
+  if (num.size() > kMaxDigits || den.size() > kMaxDigits) bad(text, "more than 4096 digits");
   Q q{Z(std::string(num), 10), Z(std::string(den), 10)};
   if (q.get_den() == 0) bad(text, "zero denominator");
   q.canonicalize();
@@ -82,6 +83,7 @@ Q parse_rational(std::string_view text) {
   if (int_part.empty() && frac_part.empty()) bad(text, "no digits");
   if ((!int_part.empty() && !all_digits(int_part)) || (!frac_part.empty() && !all_digits(frac_part)))
     bad(text, "unexpected character");
+  if (int_part.size() + frac_part.size() > kMaxDigits) bad(text, "more than 4096 digits");
   exponent -= static_cast<long>(frac_part.size());
   std::string digits = std::string(int_part) + std::string(frac_part);
   Z mantissa(digits, 10);

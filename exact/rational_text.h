@@ -20,6 +20,10 @@ struct NumberSyntaxError : std::invalid_argument {
 /// an input number can cause.
 inline constexpr long kMaxDecimalExponent = 4096;
 
+/// Most decimal digits accepted in a mantissa, a numerator or a denominator: with the exponent bound, the size
+/// of every input number (and so the arithmetic it can cause) is bounded.
+inline constexpr std::size_t kMaxDigits = 4096;
+
 /// Parses SPEC section 1 syntax exactly: integers ("-3"), decimals ("0.966" = 966/1000),
 /// scientific ("-2.5e-3" = -1/400) and fractions ("1/5", "-7/20"; non-zero denominator).
 Q parse_rational(std::string_view text);

@@ -27,6 +27,8 @@ Shape read_shape(const JsonInput& node) {
   if (type == "polygon") {
     node.expect_keys({"type", "vertices"});
     const JsonInput vs = node.at("vertices");
+    if (vs.size() > kMaxPolygonVertices)  // before reading them
+      vs.fail(PolygonCheck{PolygonDefect::kTooManyVertices, vs.size()}.message());
     PolygonShape poly;
     for (const JsonInput& v : vs.elements()) poly.vertices.push_back(read_point(v));
     const PolygonCheck check = check_polygon(poly.vertices);

@@ -1,29 +1,19 @@
 #include "geometry/workpiece.h"
 
 #include <algorithm>
+#include <optional>
+
+#include "geometry/simple_polygon.h"
 
 namespace contactcert::geometry {
-namespace {
-
-int orient(const Point2& a, const Point2& b, const Point2& c) { return sgn(Q(cross(b - a, c - a))); }
-
-bool on_segment(const Point2& a, const Point2& b, const Point2& p) {
-  return orient(a, b, p) == 0 && sgn(Q(dot(p - a, p - b))) <= 0;
-}
-
-bool segments_intersect(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
-}
-
-}  // namespace
-
 std::string PolygonCheck::message() const {
   const std::string v = "vertex " + std::to_string(vertex);
   switch (defect) {
     case PolygonDefect::kNone: return "a valid polygon";
     case PolygonDefect::kTooFewVertices: return "at least 3 vertices";
+    case PolygonDefect::kTooManyVertices:
+      return "at most " + std::to_string(kMaxPolygonVertices) + " vertices (the polygon has " + std::to_string(vertex) +
+             ")";
     case PolygonDefect::kRepeatedVertex: return v + " repeats the previous vertex; remove it";
     case PolygonDefect::kCollinearVertex:
       return v + " is collinear with its neighbours (degenerate polygon); remove it";
@@ -37,17 +27,14 @@ std::string PolygonCheck::message() const {
 PolygonCheck check_polygon(const std::vector<Point2>& V) {
   const std::size_t n = V.size();
   if (n < 3) return {PolygonDefect::kTooFewVertices, 0};
+  if (n > kMaxPolygonVertices) return {PolygonDefect::kTooManyVertices, n};
   for (std::size_t i = 0; i < n; ++i)
     if (V[i] == V[(i + n - 1) % n]) return {PolygonDefect::kRepeatedVertex, i};
   for (std::size_t i = 0; i < n; ++i)
     if (orient(V[(i + n - 1) % n], V[i], V[(i + 1) % n]) == 0) return {PolygonDefect::kCollinearVertex, i};
   // Non-adjacent edges must not meet (adjacent ones share exactly their common vertex, since no
   // vertex is collinear with its neighbours).
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) {
-      if (j == i + 1 || (i == 0 && j == n - 1)) continue;
-      if (segments_intersect(V[i], V[(i + 1) % n], V[j], V[(j + 1) % n])) return {PolygonDefect::kSelfIntersecting, i};
-    }
+  if (const std::optional<std::size_t> i = crossing_edge(V)) return {PolygonDefect::kSelfIntersecting, *i};
   if (sgn(shoelace_area2(V)) <= 0) return {PolygonDefect::kNotCounterClockwise, 0};
   return {};
 }

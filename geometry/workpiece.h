@@ -52,7 +52,18 @@ struct Workpiece {
 };
 
 /// Why a vertex list is not a usable simple counter-clockwise polygon.
-enum class PolygonDefect { kNone, kTooFewVertices, kRepeatedVertex, kCollinearVertex, kSelfIntersecting, kNotCounterClockwise };
+enum class PolygonDefect {
+  kNone,
+  kTooFewVertices,
+  kTooManyVertices,
+  kRepeatedVertex,
+  kCollinearVertex,
+  kSelfIntersecting,
+  kNotCounterClockwise
+};
+
+/// Most vertices of a polygon accepted: bounds the time of its exact O(n log n) simple-polygon test.
+inline constexpr std::size_t kMaxPolygonVertices = 100000;
 
 /// The first defect of a vertex list (kNone for a simple CCW polygon without collinear consecutive
 /// vertices), and the index of the offending vertex.

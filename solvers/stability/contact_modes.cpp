@@ -78,6 +78,7 @@ std::string modes_certificate(const std::string& scene_text, const ContactModes&
   json j;
   j["kind"] = "modes";
   j["scene"] = scene_text;
+  j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
   j["table2"] = m.alphabet.rules.printed_separation ? "printed" : "strict";
   j["unions"] = m.alphabet.unions;
   json modes = json::array();
@@ -91,9 +92,11 @@ std::string modes_certificate(const std::string& scene_text, const ContactModes&
 }
 
 ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
-  c.expect_keys({"kind", "scene", "table2", "unions", "modes", "dead"});
-  const geometry::PlanarScene scene =
-      geometry::read_planar_scene(exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)"));
+  c.expect_keys({"kind", "scene", "problem_sha256", "table2", "unions", "modes", "dead"});
+  const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
+  if (c.at("problem_sha256").string() != embedded.canonical_sha256())
+    return {false, "problem_sha256 is not the digest of the embedded scene", 0, 0};
+  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
   const std::string table2 = c.at("table2").string();
   if (table2 != "strict" && table2 != "printed") c.at("table2").fail("expected \"strict\" or \"printed\"");
   const ModeAlphabet alphabet = alphabet_of(scene, table2 == "printed", c.at("unions").boolean());

@@ -35,6 +35,7 @@ std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g
   j["verdict"] = verdict_name(r.verdict);
   j["wrench"] = strings(g);
   j["scene"] = scene_text;
+  j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
   if (r.has_resting) j["resting"] = {{"forces", strings(r.resting_forces)}};
   else j["resting"] = {{"motzkin", strings(r.resting_farkas)}};
   if (r.has_moving)
@@ -49,9 +50,11 @@ std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g
 }
 
 StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& c) {
-  c.expect_keys({"kind", "verdict", "wrench", "scene", "resting", "moving", "proofs"});
-  const geometry::PlanarScene scene =
-      geometry::read_planar_scene(exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)"));
+  c.expect_keys({"kind", "verdict", "wrench", "scene", "problem_sha256", "resting", "moving", "proofs"});
+  const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
+  if (c.at("problem_sha256").string() != embedded.canonical_sha256())
+    return {false, "problem_sha256 is not the digest of the embedded scene"};
+  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
   const std::size_t k = touching_scene(scene).fixels.size();
   StabilityResult<Q> claim;
   const std::string verdict = c.at("verdict").string();

@@ -26,10 +26,12 @@ json rationals(const Vec<Q>& v) {
 }
 
 json header(const std::string& kind, const UcpProblem& problem) {
+  const std::string text = to_json_text(problem);
   json j;
   j["kind"] = kind;
-  j["format"] = 1;
-  j["problem"] = json::parse(to_json_text(problem));
+  j["format"] = 2;
+  j["problem_sha256"] = JsonInput::parse(text, "problem").canonical_sha256();
+  j["problem"] = json::parse(text);
   return j;
 }
 
@@ -126,35 +128,50 @@ CertificateCheck check_jammed(const JsonInput& cert, const CheckData& c) {
     out.reason = "the tree has no nodes";
     return out;
   }
+  // Depth-first with one set of fixings, set on the way down and restored on the way up: memory O(n + depth),
+  // bounded by the certificate's size whatever the tree.
   std::vector<bool> seen(count, false);
-  struct Item {
+  std::vector<bool> zx(static_cast<std::size_t>(c.n), false), zy = zx;
+  struct Frame {
     std::size_t id;
-    std::vector<bool> zx, zy;
+    int stage = 0;  // 0: not entered; 1: x-child done; 2: y-child done
+    std::size_t branch = 0, y_child = 0;
+    bool was_x = false, was_y = false;  // zx[branch], zy[branch] before this node
   };
-  std::vector<Item> stack{{0, std::vector<bool>(static_cast<std::size_t>(c.n), false),
-                           std::vector<bool>(static_cast<std::size_t>(c.n), false)}};
+  std::vector<Frame> stack{{0}};
   while (!stack.empty()) {
-    Item it = std::move(stack.back());
-    stack.pop_back();
-    const std::string where = "node " + std::to_string(it.id) + ": ";
-    if (seen[it.id]) {
+    Frame& f = stack.back();
+    if (f.stage == 1) {  // x_i = 0 explored; now y_i = 0
+      zx[f.branch] = f.was_x;
+      f.was_y = zy[f.branch];
+      zy[f.branch] = true;
+      f.stage = 2;
+      stack.push_back({f.y_child});
+      continue;
+    }
+    if (f.stage == 2) {
+      zy[f.branch] = f.was_y;
+      stack.pop_back();
+      continue;
+    }
+    const std::string where = "node " + std::to_string(f.id) + ": ";
+    if (seen[f.id]) {
       out.reason = where + "reached twice (the nodes must form a tree)";
       return out;
     }
-    seen[it.id] = true;
+    seen[f.id] = true;
     ++out.nodes;
-    const JsonInput node = nodes.at(it.id);
+    const JsonInput node = nodes.at(f.id);
     if (node.find("branch")) {
       node.expect_keys({"branch", "x_zero", "y_zero"});
-      const auto i = static_cast<std::size_t>(node.at("branch").integer(0, static_cast<long>(c.n) - 1));
+      f.branch = static_cast<std::size_t>(node.at("branch").integer(0, static_cast<long>(c.n) - 1));
       const long limit = static_cast<long>(count) - 1;
       const auto a = static_cast<std::size_t>(node.at("x_zero").integer(0, limit));
-      const auto b = static_cast<std::size_t>(node.at("y_zero").integer(0, limit));
-      Item ca{a, it.zx, it.zy}, cb{b, it.zx, it.zy};
-      ca.zx[i] = true;  // x_i = 0
-      cb.zy[i] = true;  // y_i = 0
-      stack.push_back(std::move(ca));
-      stack.push_back(std::move(cb));
+      f.y_child = static_cast<std::size_t>(node.at("y_zero").integer(0, limit));
+      f.was_x = zx[f.branch];
+      zx[f.branch] = true;  // x_i = 0
+      f.stage = 1;
+      stack.push_back({a});  // invalidates f
       continue;
     }
     node.expect_keys({"empty", "farkas"});
@@ -163,15 +180,16 @@ CertificateCheck check_jammed(const JsonInput& cert, const CheckData& c) {
     const Vec<Q> u = read_vector(node.at("farkas"));
     std::string why;
     if (side == "X")
-      why = c.quasistatic ? check_velocity_farkas(c, it.zx, u) : check_farkas(c.AX, c.bX, it.zx, u);
+      why = c.quasistatic ? check_velocity_farkas(c, zx, u) : check_farkas(c.AX, c.bX, zx, u);
     else if (side == "Y")
-      why = check_farkas(c.AY, c.bY, it.zy, u);
+      why = check_farkas(c.AY, c.bY, zy, u);
     else
       node.at("empty").fail("expected \"X\" or \"Y\"");
     if (!why.empty()) {
       out.reason = where + "the Farkas vector for " + side + " fails: " + why;
       return out;
     }
+    stack.pop_back();
   }
   for (std::size_t k = 0; k < count; ++k)
     if (!seen[k]) {
@@ -279,10 +297,20 @@ CertificateCheck check_ucp_certificate(const JsonInput& cert) {
   // An unreadable embedded problem is bad input (exit 2); errors in the evidence make the certificate invalid.
   const UcpProblem problem = read_ucp_problem(cert.at("problem"));
   try {
+    if (kind == "ucp_jammed")
+      cert.expect_keys({"kind", "format", "problem_sha256", "problem", "reason", "nodes"});
+    else if (kind == "ucp_solvable")
+      cert.expect_keys({"kind", "format", "problem_sha256", "problem", "x", "y"});
+    else
+      cert.at("kind").fail("expected \"ucp_jammed\" or \"ucp_solvable\"");
+    cert.at("format").integer(2, 2);
+    if (cert.at("problem_sha256").string() != cert.at("problem").canonical_sha256()) {
+      out.reason = "problem_sha256 is not the digest of the embedded problem";
+      return out;
+    }
     const CheckData c = derive(problem);
     if (kind == "ucp_jammed") return check_jammed(cert, c);
-    if (kind == "ucp_solvable") return check_solvable(cert, c);
-    cert.at("kind").fail("expected \"ucp_jammed\" or \"ucp_solvable\"");
+    return check_solvable(cert, c);
   } catch (const InputError& e) {
     out.reason = std::string("malformed certificate: ") + e.what();
   }

@@ -122,34 +122,35 @@ SearchResult<T> complete_search(const UcpInstance<T>& ucp, const SearchOptions& 
   const Face<T> FX = make_face(ucp.X, {}), FY = make_face(ucp.Y, {});
   std::optional<FaceVertex<T>> x0, y0;
   Search<T> search(ucp, opts, out);
-  out.tree.clear();
-  search.new_node();
-  if (opts.bilinear_first) {
-    BilinearResult<T> b = bilinear(FX, FY, opts.heuristic, rng);
-    out.counters = b.counters;
-    out.pairs = b.pairs;
-    if (b.status == BilinearStatus::kXEmpty || b.status == BilinearStatus::kYEmpty) {
-      out.status = UcpStatus::kJammed;
-      out.reason = b.status == BilinearStatus::kXEmpty ? "X is empty" : "Y is empty";
-      out.tree[0].side = b.status == BilinearStatus::kXEmpty ? Side::kX : Side::kY;
-      out.tree[0].farkas = b.farkas;
-      out.nodes = 1;
-      return out;
-    }
-    out.xTy = b.xTy;
-    if (b.status == BilinearStatus::kComplementary) {
-      out.status = UcpStatus::kSolvable;
-      out.reason = "bilinear algorithm";
-      out.x = b.x.x, out.y = b.y.x;
-      out.nodes = 1;
-      out.tree.clear();
-      return out;
-    }
-    x0 = b.x, y0 = b.y;
-    search.have_best = true;
-  }
+  out.tree.assign(1, SearchNode<T>{});  // the root, which fixes nothing (inside every budget)
   std::vector<bool> zx(static_cast<std::size_t>(ucp.n()), false), zy = zx;
   try {
+    if (opts.bilinear_first) {
+      BilinearResult<T> b = bilinear(FX, FY, opts.heuristic, rng);
+      out.counters = b.counters;
+      out.pairs = b.pairs;
+      if (b.status == BilinearStatus::kXEmpty || b.status == BilinearStatus::kYEmpty) {
+        out.status = UcpStatus::kJammed;
+        out.reason = b.status == BilinearStatus::kXEmpty ? "X is empty" : "Y is empty";
+        out.tree[0].side = b.status == BilinearStatus::kXEmpty ? Side::kX : Side::kY;
+        out.tree[0].farkas = b.farkas;
+        out.nodes = 1;
+        return out;
+      }
+      out.xTy = b.xTy;
+      if (b.status == BilinearStatus::kComplementary) {
+        out.status = UcpStatus::kSolvable;
+        out.reason = "bilinear algorithm";
+        out.x = b.x.x, out.y = b.y.x;
+        out.nodes = 1;
+        out.tree.clear();
+        return out;
+      }
+      if (b.status == BilinearStatus::kTimeLimit) throw BudgetExhausted{};
+      x0 = b.x, y0 = b.y;
+      search.have_best = true;
+    }
+    if (opts.deadline.expired()) throw BudgetExhausted{};
     const bool found = search.visit(0, zx, zy, x0, y0);
     out.nodes = static_cast<long>(out.tree.size());
     if (found) {

@@ -61,5 +61,33 @@ TEST(JsonInput, DeepNestingIsRejectedNotRecursed) {
   EXPECT_NE(error_of(deep, [](const JsonInput&) {}).find("nesting deeper"), std::string::npos);
 }
 
+TEST(JsonInput, BareNumbersBeyondDoubleAreExact) {
+  JsonInput j = JsonInput::parse(R"({"big": 1e400, "tiny": -1E-400, "list": [1e4096, 0]})", "f.json");
+  EXPECT_EQ(j.at("big").rational(), Q(Z("1" + std::string(400, '0'), 10)));
+  EXPECT_EQ(j.at("tiny").rational(), Q(-1) / Q(Z("1" + std::string(400, '0'), 10)));
+  EXPECT_EQ(j.at("list").size(), 2u);
+  EXPECT_EQ(j.at("list").at(1).rational(), Q(0));
+}
+
+TEST(JsonInput, InvalidNumbersNulBytesAndNumericKeysAreRejected) {
+  const auto parse = [](const std::string& text) { (void)JsonInput::parse(text, "f.json"); };
+  for (const char* bad : {R"({"a": 01})", R"({"a": 1.})", R"({"a": .5})", R"({"a": 0x10})", R"({"a": 1e})"})
+    EXPECT_THROW(parse(bad), InputError) << bad;
+  EXPECT_THROW(parse(R"({1: 2})"), InputError);
+  EXPECT_THROW(parse(std::string("{\"a\": 1}\0{", 11)), InputError);
+  EXPECT_NE(error_of(std::string("{\"a\": 1}\0", 9), [](const JsonInput&) {}).find("a NUL byte at byte 8"),
+            std::string::npos);
+}
+
+TEST(JsonInput, CanonicalTextIgnoresSpellingOrderAndLabels) {
+  const JsonInput a = JsonInput::parse(R"({"mu": [0.50, "1/3"], "kind": "ucp", "source": "a", "x": null})", "a.json");
+  const JsonInput b = JsonInput::parse(R"({"kind": "ucp", "mu": ["1/2", "2/6"], "note": "b"})", "b.json");
+  const JsonInput c = JsonInput::parse(R"({"kind": "ucp", "mu": ["1/2", "1/4"]})", "c.json");
+  EXPECT_EQ(a.canonical_text(), R"({"kind":"ucp","mu":["1/2","1/3"]})");
+  EXPECT_EQ(a.canonical_text(), b.canonical_text());
+  EXPECT_EQ(a.canonical_sha256(), b.canonical_sha256());
+  EXPECT_NE(a.canonical_sha256(), c.canonical_sha256());
+}
+
 }  // namespace
 }  // namespace contactcert::exact

@@ -1,0 +1,110 @@
+#include "solvers/wrench_cone/cone_certificate.h"
+
+#include <nlohmann/json.hpp>
+
+#include "exact/rational_text.h"
+#include "exact/strict_feasibility.h"
+#include "geometry/scene_json.h"
+#include "solvers/wrench_cone/cone_form.h"
+#include "solvers/wrench_cone/contact_model.h"
+
+namespace contactcert::solvers {
+namespace {
+
+using Index = Eigen::Index;
+
+nlohmann::ordered_json strings(const Vec<Q>& v) {
+  nlohmann::ordered_json a = nlohmann::ordered_json::array();
+  for (Index i = 0; i < v.size(); ++i) a.push_back(exact::to_string(v(i)));
+  return a;
+}
+
+ConeForm<Q> system_of(const geometry::PlanarScene& scene, const ModeString& mode) {
+  return cone_form<Q>(scene, contact_model<Q>(scene), mode);
+}
+
+}  // namespace
+
+std::string cone_certificate(const std::string& scene_text, const geometry::PlanarScene& scene,
+                             const ModeString& mode) {
+  const ConeForm<Q> f = system_of(scene, mode);
+  const Index k = f.K.cols(), d = f.P.cols();
+  // (z, g) with [K | -P] (z, g) = 0, z >= 0, z strict > 0 where Table 2 says so, g free.
+  exact::StrictSystem<Q> s;
+  s.A = Mat<Q>(f.K.rows(), k + d);
+  s.A << f.K, Mat<Q>(-f.P);
+  s.b = Vec<Q>::Zero(f.K.rows());
+  s.is_free.assign(static_cast<std::size_t>(k + d), false);
+  s.strict.assign(static_cast<std::size_t>(k + d), false);
+  for (Index j = 0; j < k + d; ++j) {
+    s.is_free[static_cast<std::size_t>(j)] = j >= k;
+    s.strict[static_cast<std::size_t>(j)] = j < k && f.strict[static_cast<std::size_t>(j)];
+  }
+  const exact::StrictFeasibility<Q> r = exact::StrictSolver<Q>(s).solve(s.b);
+  nlohmann::ordered_json j;
+  const bool empty = r.status == exact::StrictStatus::kInfeasible;
+  j["kind"] = empty ? "cone_empty" : "cone_nonempty";
+  j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
+  j["mode"] = mode.text();
+  if (empty) {
+    j["motzkin"] = strings(r.motzkin);
+  } else {
+    j["wrench"] = strings(r.x.tail(d));
+    j["z"] = strings(r.x.head(k));
+    j["z_names"] = f.names;
+  }
+  j["scene"] = scene_text;
+  return j.dump(1) + "\n";
+}
+
+bool is_cone_certificate_kind(const std::string& kind) { return kind == "cone_empty" || kind == "cone_nonempty"; }
+
+ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
+  const std::string kind = c.at("kind").string();
+  const bool empty = kind == "cone_empty";
+  if (empty)
+    c.expect_keys({"kind", "problem_sha256", "mode", "motzkin", "scene"});
+  else
+    c.expect_keys({"kind", "problem_sha256", "mode", "wrench", "z", "z_names", "scene"});
+  const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
+  if (c.at("problem_sha256").string() != embedded.canonical_sha256())
+    return {false, "problem_sha256 is not the digest of the embedded scene"};
+  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
+  std::vector<bool> touching;
+  for (const auto& f : scene.fixels) touching.push_back(f.frame.touching());
+  const ModeParse mode = parse_mode(c.at("mode").string(), touching);
+  if (mode.status != ModeStatus::kValid) c.at("mode").fail(mode.message);
+  const ConeForm<Q> f = system_of(scene, mode.mode);
+  const Index k = f.K.cols();
+  if (empty) {
+    const Vec<Q> y = c.at("motzkin").rational_vector(static_cast<std::size_t>(f.K.rows()));
+    const Vec<Q> yK = f.K.transpose() * y, yP = f.P.transpose() * y;
+    for (Index i = 0; i < yP.size(); ++i)
+      if (sgn(yP(i)) != 0) return {false, "y^T P is not zero in column " + std::to_string(i)};
+    bool positive = false;
+    for (Index j = 0; j < k; ++j) {
+      if (sgn(yK(j)) < 0)
+        return {false, "(y^T K)_" + std::to_string(j) + " < 0 (" + f.names[static_cast<std::size_t>(j)] + ")"};
+      positive = positive || (sgn(yK(j)) > 0 && f.strict[static_cast<std::size_t>(j)]);
+    }
+    if (!positive) return {false, "y^T K is zero on every strict component"};
+    return {true,
+            "the Motzkin vector proves that no wrench has the mode (y^T K >= 0, y^T P = 0, > 0 on a strict component)"};
+  }
+  const Vec<Q> g = c.at("wrench").rational_vector(3);
+  const Vec<Q> z = c.at("z").rational_vector(static_cast<std::size_t>(k));
+  const std::vector<exact::JsonInput> names = c.at("z_names").elements();
+  for (Index j = 0; j < k; ++j) {
+    if (j >= static_cast<Index>(names.size()) ||
+        names[static_cast<std::size_t>(j)].string() != f.names[static_cast<std::size_t>(j)])
+      return {false, "z_names differ from the mode's components"};
+    const int s = sgn(z(j));
+    if (s < 0 || (s == 0 && f.strict[static_cast<std::size_t>(j)]))
+      return {false, "z_" + std::to_string(j) + " (" + f.names[static_cast<std::size_t>(j)] + ") violates its sign"};
+  }
+  if (names.size() != static_cast<std::size_t>(k)) return {false, "z_names differ from the mode's components"};
+  if (f.K * z != f.P * g) return {false, "K z != P g"};
+  return {true, "the wrench has the mode with the given forces and accelerations (K z = P g, signs of Table 2)"};
+}
+
+}  // namespace contactcert::solvers

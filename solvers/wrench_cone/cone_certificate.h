@@ -1,0 +1,34 @@
+// Certificates of a wrench cone's verdict (`cone --certificate F`) and their checker (`contactcert check`).
+// The wrench cone of a mode is { g : K z = P g for some z >= 0 with z_j > 0 on the strict components }
+// (Balkcom-Trinkle eqs. 13-17). Both kinds embed the scene (its text under "scene", its digest under
+// "problem_sha256") and the "mode":
+//   "cone_nonempty": a witness, "wrench" g and "z" (forces and accelerations, named in "z_names") with
+//     K z = P g, z >= 0 and z_j > 0 on the strict components;
+//   "cone_empty": a Motzkin vector y with y^T K >= 0, y^T P = 0 and (y^T K)_j > 0 on some strict component j
+//     (if some (z, g) solved the system, 0 = y^T P g = y^T K z > 0).
+// The checker rebuilds K, P and the strict components from the embedded scene and mode.
+#pragma once
+
+#include <string>
+
+#include "exact/json_input.h"
+#include "geometry/planar_scene.h"
+#include "solvers/wrench_cone/mode.h"
+
+namespace contactcert::solvers {
+
+/// The certificate of the wrench cone of `mode` in `scene` (read from `scene_text`) as JSON text.
+std::string cone_certificate(const std::string& scene_text, const geometry::PlanarScene& scene, const ModeString& mode);
+
+/// True if `kind` names a wrench cone certificate.
+bool is_cone_certificate_kind(const std::string& kind);
+
+struct ConeCertificateCheck {
+  bool valid = false;
+  std::string reason;
+};
+
+/// Verifies a "cone_empty" or "cone_nonempty" certificate exactly; a malformed one throws InputError.
+ConeCertificateCheck check_cone_certificate(const exact::JsonInput& certificate);
+
+}  // namespace contactcert::solvers
