@@ -32,5 +32,6 @@ void register_insert(CLI::App& app, Action& action);
 void register_cone(CLI::App& app, Action& action);
 void register_convert(CLI::App& app, Action& action);
 void register_bench(CLI::App& app, Action& action);
+void register_design(CLI::App& app, Action& action);
 
 }  // namespace contactcert::cli

@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
   cli::register_cone(app, action);
   cli::register_convert(app, action);
   cli::register_bench(app, action);
+  cli::register_design(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
