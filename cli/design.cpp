@@ -245,7 +245,7 @@ DesignProblem build_problem(const DesignOptions& o, const std::string& scene_tex
     throw InputError("command line", "--rank", "--rank goal-fraction needs --insertable");
   p.candidates = read_candidates(o, p.workpiece.shape, how);
   if (p.candidates.size() < 2 || static_cast<int>(p.candidates.size()) < p.fixels)
-    throw InputError(o.candidates.empty() ? "command line" : o.candidates,
+    throw InputError(o.candidates.find_first_not_of("0123456789") == std::string::npos ? "command line" : o.candidates,
                      o.candidates.empty() ? "--lattice" : "--candidates",
                      "at least " + std::to_string(std::max(2, p.fixels)) + " candidate points (got " +
                          std::to_string(p.candidates.size()) + ")");
