@@ -183,7 +183,9 @@ json report_placement(const DesignProblem& problem, const solvers::CandidateSymm
   for (int i : r.placement) cand += (cand.empty() ? "" : ", ") + std::to_string(i);
   text << "  " << position << ". candidates " << cand << " at " << where << "\n     "
        << solvers::rank_name(problem.rank) << " " << exact::to_string(r.figure) << " (~" << r.figure.get_d() << ")";
-  *caption = "candidates " + cand + ", " + solvers::rank_name(problem.rank) + " ~" + std::to_string(r.figure.get_d());
+  char approx[32];
+  std::snprintf(approx, sizeof approx, "%.4g", r.figure.get_d());
+  *caption = "candidates " + cand + ": " + (problem.rank == solvers::Rank::kMargin ? "margin^2 " : "goal ") + approx;
   if (problem.rank == solvers::Rank::kMargin && !ev.margins.empty()) {
     std::size_t worst = 0;
     for (std::size_t m = 1; m < ev.margins.size(); ++m)

@@ -59,8 +59,10 @@ std::string design_svg(const solvers::DesignProblem& problem, const std::vector<
   for (std::size_t p = 0; p < std::max<std::size_t>(1, best.size()); ++p) {
     const double ox = static_cast<double>(p % columns) * kPanel,
                  oy = kTop + static_cast<double>(p / columns) * (kPanel + kCaption);
-    auto X = [&](const exact::Q& x) { return ox + 30 + (x.get_d() - b.x0) * scale; };
-    auto Y = [&](const exact::Q& y) { return oy + kPanel - 30 - (y.get_d() - b.y0) * scale; };
+    // Centred in the panel.
+    const double mx = 30 + (extent - (b.x1 - b.x0)) * scale / 2, my = 30 + (extent - (b.y1 - b.y0)) * scale / 2;
+    auto X = [&](const exact::Q& x) { return ox + mx + (x.get_d() - b.x0) * scale; };
+    auto Y = [&](const exact::Q& y) { return oy + kPanel - my - (y.get_d() - b.y0) * scale; };
     s << "<g>\n";
     if (const auto* d = std::get_if<geometry::DiskShape>(&problem.workpiece.shape))
       s << "<circle cx=\"" << X(d->center.x) << "\" cy=\"" << Y(d->center.y) << "\" r=\"" << d->radius.get_d() * scale
@@ -89,7 +91,7 @@ std::string design_svg(const solvers::DesignProblem& problem, const std::vector<
           << "<text x=\"" << px - ux * 2.6 * fixel_r - 4 << "\" y=\"" << py - uy * 2.6 * fixel_r + 4
           << "\" font-size=\"11\" fill=\"#c0392b\">" << label++ << "</text>\n";
       }
-      s << "<text x=\"" << ox + 8 << "\" y=\"" << oy + kPanel + 4 << "\" font-size=\"11\">#" << p + 1 << ": "
+      s << "<text x=\"" << ox + 8 << "\" y=\"" << oy + kPanel + 4 << "\" font-size=\"10\">#" << p + 1 << ": "
         << escape(p < captions.size() ? captions[p] : "") << "</text>\n";
     } else {
       s << "<text x=\"" << ox + 8 << "\" y=\"" << oy + kPanel + 4
