@@ -32,6 +32,9 @@ using solvers::DesignProblem;
 using solvers::Placement;
 using solvers::PlacementStatus;
 
+/// Budget on the candidate set (each candidate is a few hundred bytes and one membership test per placement).
+constexpr long kMaxCandidates = 100000;
+
 struct DesignOptions {
   CommonOptions common;
   std::string file;
@@ -90,7 +93,8 @@ std::vector<solvers::Candidate> read_candidates(const DesignOptions& o, const ge
     return solvers::lattice_candidates(shape, pitch);
   }
   if (o.candidates.find_first_not_of("0123456789") == std::string::npos) {
-    if (o.candidates.size() > 7) throw InputError("command line", "--candidates", "at most 9999999 candidates");
+    if (o.candidates.size() > 6 || std::stol(o.candidates) > kMaxCandidates)
+      throw InputError("command line", "--candidates", "at most " + std::to_string(kMaxCandidates) + " candidates");
     *how = "equally spaced in arc length";
     return solvers::arc_length_candidates(shape, std::stol(o.candidates));
   }
@@ -246,6 +250,10 @@ DesignProblem build_problem(const DesignOptions& o, const std::string& scene_tex
   if (p.rank == solvers::Rank::kGoalFraction && !o.insertable)
     throw InputError("command line", "--rank", "--rank goal-fraction needs --insertable");
   p.candidates = read_candidates(o, p.workpiece.shape, how);
+  if (static_cast<long>(p.candidates.size()) > kMaxCandidates)
+    throw InputError(o.candidates.empty() ? "command line" : o.candidates,
+                     o.candidates.empty() ? "--lattice" : "$.candidates",
+                     "at most " + std::to_string(kMaxCandidates) + " candidates");
   if (p.candidates.size() < 2 || static_cast<int>(p.candidates.size()) < p.fixels)
     throw InputError(o.candidates.find_first_not_of("0123456789") == std::string::npos ? "command line" : o.candidates,
                      o.candidates.empty() ? "--lattice" : "--candidates",

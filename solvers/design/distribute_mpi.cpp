@@ -1,7 +1,9 @@
 // The MPI distributor: a master-worker protocol on MPI_COMM_WORLD with one chunk index per request.
-//   worker -> root  kReady (empty) once, then kResult ("chunk\n" + result text) after each chunk: both ask for more
-//   root -> worker  kWork (the chunk index) or kStop (0: all done, 3: stopped early); a busy worker polls for
-//                   kStop between placements and abandons its chunk
+//   worker -> root  kReady (empty) twice, then kResult ("chunk\n" + result text) after each chunk: each asks for
+//                   one more, so a worker always has its next chunk queued while it computes (the root answers
+//                   only between its own placements)
+//   root -> worker  kWork (the chunk index), kDone (no more chunks: finish the queued ones) or kStop (stopped
+//                   early: a busy worker polls for it between placements and abandons its chunk)
 //   worker -> root  kBye after kStop, its last message; the root returns when every worker has said it.
 #include <mpi.h>
 
@@ -13,7 +15,7 @@
 namespace contactcert::solvers {
 namespace {
 
-enum Tag { kReady = 1, kResult = 2, kWork = 3, kStop = 4, kBye = 5 };
+enum Tag { kReady = 1, kResult = 2, kWork = 3, kDone = 4, kStop = 5, kBye = 6 };
 
 /// Ranks beyond which the root only serves requests (its own chunks would delay every worker's next chunk).
 constexpr int kRootWorksBelow = 16;
@@ -73,13 +75,14 @@ class MpiDistributor : public Distributor {
   /// Worker side: ask, compute, answer, until kStop.
   bool work_loop(const ChunkWork& work) {
     send_text("", 0, kReady);
+    send_text("", 0, kReady);
     int code = 0;
-    for (;;) {
+    for (;;) {  // in order: the queued kWork messages come before kDone
       MPI_Status st;
       MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &st);
       const std::string text = receive_text(st);
-      if (st.MPI_TAG == kStop) {
-        code = std::atoi(text.c_str());
+      if (st.MPI_TAG == kDone || st.MPI_TAG == kStop) {
+        code = st.MPI_TAG == kDone ? 0 : 3;
         break;
       }
       const long chunk = std::atol(text.c_str());
@@ -105,7 +108,7 @@ class MpiDistributor : public Distributor {
 
   void send_stop(int r) {
     stop_sent_[static_cast<std::size_t>(r)] = true;
-    send_text(stopping_ ? "3" : "0", r, kStop);
+    send_text("", r, stopping_ ? kStop : kDone);
   }
 
   /// Root: answers every pending message (blocking for one when `wait`).
