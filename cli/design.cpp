@@ -275,20 +275,11 @@ struct RootState {
   long placements_done() const { return std::min(total, (done_before + done_now) * checkpoint.chunk_size); }
 };
 
-int run_design(const DesignOptions& o) {
-  const std::string scene_text = exact::JsonInput::read_text(o.file);
-  std::string how;
-  const DesignProblem problem = build_problem(o, scene_text, &how);
+/// The distributed search and, on the root, the report.
+int search(const DesignOptions& o, const DesignProblem& problem, const solvers::CandidateSymmetry& symmetry,
+           solvers::Distributor& dist, long total, long chunks, const std::string& key, const std::string& how) {
   const long n = static_cast<long>(problem.candidates.size());
-  const long total = solvers::placement_count(n, problem.fixels);
-  if (total < 0) throw InputError("command line", "--candidates", "fewer candidates (C(N, k) exceeds 2^62)");
-  const solvers::CandidateSymmetry symmetry = solvers::candidate_symmetry(problem);
-  const long chunks = (total + o.chunk_size - 1) / o.chunk_size;
   const std::size_t K = static_cast<std::size_t>(o.top);
-  const std::string key = problem_key(scene_text, o, problem);
-  if (!o.out.empty()) create_output_dir(o.out);
-
-  const std::unique_ptr<solvers::Distributor> dist = solvers::make_distributor();
   RootState st;
   st.total = total;
   st.deadline = exact::Deadline::after(o.common.time_limit);
@@ -296,7 +287,7 @@ int run_design(const DesignOptions& o) {
   st.checkpoint = {
       key, o.chunk_size, chunks, std::vector<bool>(static_cast<std::size_t>(chunks), false), {solvers::TopK(K), {}}};
   std::vector<long> todo;
-  if (dist->is_root()) {
+  if (dist.is_root()) {
     if (!o.checkpoint.empty())
       if (auto c = solvers::read_checkpoint(o.checkpoint, key, o.chunk_size, chunks, K)) st.checkpoint = std::move(*c);
     for (long c = 0; c < chunks; ++c)
@@ -323,7 +314,7 @@ int run_design(const DesignOptions& o) {
       const double rate = static_cast<double>(now) / t;
       const long left = total - st.placements_done();
       progress.update(std::to_string(st.placements_done()) + " of " + std::to_string(total) + " placements, " +
-                      std::to_string(static_cast<long>(rate)) + "/s on " + std::to_string(dist->size()) + " ranks" +
+                      std::to_string(static_cast<long>(rate)) + "/s on " + std::to_string(dist.size()) + " ranks" +
                       (rate > 0 ? ", about " + duration_text(static_cast<double>(left) / rate) + " left" : ""));
     }
     if (st.deadline.expired() || now >= st.max_placements) st.budget_hit = true;
@@ -336,8 +327,8 @@ int run_design(const DesignOptions& o) {
     if (!complete) return std::nullopt;
     return solvers::chunk_result_text(r);
   };
-  const bool finished = dist->run(todo, work, record, keep_going);
-  if (!dist->is_root()) return finished ? 0 : 3;
+  const bool finished = dist.run(todo, work, record, keep_going);
+  if (!dist.is_root()) return finished ? 0 : 3;
   progress.finish();
   save();
   const solvers::ChunkResult& result = st.checkpoint.result;
@@ -396,6 +387,33 @@ int run_design(const DesignOptions& o) {
     std::cout << "best " << result.top.items().size() << ":\n" << text.str();
   std::cout << "  picture: " << svg << "\n";
   return 0;
+}
+
+int run_design(const DesignOptions& o) {
+  const std::string scene_text = exact::JsonInput::read_text(o.file);
+  std::string how;
+  const DesignProblem problem = build_problem(o, scene_text, &how);
+  const long n = static_cast<long>(problem.candidates.size());
+  const long total = solvers::placement_count(n, problem.fixels);
+  if (total < 0) throw InputError("command line", "--candidates", "fewer candidates (C(N, k) exceeds 2^62)");
+  const solvers::CandidateSymmetry symmetry = solvers::candidate_symmetry(problem);
+  const long chunks = (total + o.chunk_size - 1) / o.chunk_size;
+  const std::string key = problem_key(scene_text, o, problem);
+  if (!o.out.empty()) create_output_dir(o.out);
+
+  const std::unique_ptr<solvers::Distributor> dist = solvers::make_distributor();
+  try {
+    return search(o, problem, symmetry, *dist, total, chunks, key, how);
+  } catch (const exact::InputError& e) {
+    dist->abort_all(e.what(), 2);
+    throw;
+  } catch (const exact::BudgetExceeded& e) {
+    dist->abort_all(std::string("budget exceeded: ") + e.what() + " (covered: " + e.covered + ")", 3);
+    throw;
+  } catch (const std::exception& e) {
+    dist->abort_all(std::string("internal error: ") + e.what(), 1);
+    throw;
+  }
 }
 
 }  // namespace

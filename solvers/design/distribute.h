@@ -28,6 +28,9 @@ class Distributor {
   /// between placements) returns false. Returns true on every rank when every chunk was recorded.
   virtual bool run(const std::vector<long>& todo, const ChunkWork& work, const ChunkRecord& record,
                    const std::function<bool()>& keep_going) = 0;
+  /// An error on one rank that the others cannot learn of: MPI prints `message` and ends every rank with `code`
+  /// (MPI_Abort; waiting ranks would otherwise hang); serial returns and the caller reports the error.
+  virtual void abort_all(const std::string& message, int code) = 0;
 };
 
 /// The serial distributor.

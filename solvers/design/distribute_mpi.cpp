@@ -7,6 +7,7 @@
 //   worker -> root  kBye after kStop, its last message; the root returns when every worker has said it.
 #include <mpi.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <deque>
 
@@ -42,6 +43,11 @@ class MpiDistributor : public Distributor {
   ~MpiDistributor() override { MPI_Finalize(); }
   int rank() const override { return rank_; }
   int size() const override { return size_; }
+  void abort_all(const std::string& message, int code) override {
+    std::fprintf(stderr, "contactcert: %s\n", message.c_str());
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, code);
+  }
 
   bool run(const std::vector<long>& todo, const ChunkWork& work, const ChunkRecord& record,
            const std::function<bool()>& keep_going) override {
