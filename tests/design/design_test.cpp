@@ -5,6 +5,7 @@
 #include "solvers/design/candidates.h"
 #include "solvers/design/ranking.h"
 #include "solvers/design/symmetry.h"
+#include "solvers/stability/strong_stability.h"
 
 namespace contactcert::solvers {
 namespace {
@@ -112,6 +113,70 @@ TEST(DesignSymmetry, SquareUnderGravityHasOnlyTheMirror) {
   // Candidates 0 (-1/2, -1) and 1 (1/2, -1) are mirror images: {1, 2} is the image of {0, 7}.
   EXPECT_TRUE(s.is_canonical({0, 7}));
   EXPECT_FALSE(s.is_canonical({1, 2}));
+}
+
+}  // namespace
+}  // namespace contactcert::solvers
+
+namespace contactcert::solvers {
+namespace {
+
+/// The pentagon of Figure 10 with mu = 1/5 and 8 candidates, strongly stable under gravity required.
+DesignProblem pentagon_problem() {
+  DesignProblem p;
+  const std::vector<geometry::Point2> V{{0, 0}, {2, 0}, {2, 1}, {1, 2}, {0, 2}};
+  p.workpiece.shape = geometry::PolygonShape{V};
+  p.workpiece.com = geometry::polygon_centroid(V);
+  p.workpiece.inertia_per_mass = geometry::polygon_inertia_per_mass(V, p.workpiece.com);
+  p.mu_s = p.mu_k = geometry::Q(1, 5);
+  p.candidates = arc_length_candidates(p.workpiece.shape, 8);
+  p.wrenches.kind = WrenchSet::Kind::kList;
+  p.wrenches.rows = exact::Mat<geometry::Q>(1, 3);
+  p.wrenches.rows << 0, -1, 0;
+  return p;
+}
+
+TEST(DesignEvaluate, VerdictsAgreeWithStrongStabilityOnEveryPlacement) {
+  const DesignProblem p = pentagon_problem();
+  const CandidateSymmetry none;
+  exact::Vec<geometry::Q> g(3);
+  g << 0, -1, 0;
+  int accepted = 0, pruned_weak = 0;
+  for (long i = 0; i < placement_count(8, 3); ++i) {
+    const Placement pl = placement_at(i, 8, 3);
+    const Evaluation e = evaluate_placement(p, none, pl);
+    const auto direct = strong_stability<geometry::Q>(placement_scene(p, pl), g);
+    EXPECT_EQ(e.status == PlacementStatus::kAccepted, direct.verdict == StabilityVerdict::kStronglyStable) << i;
+    // The cheap weak-cone test only rejects placements that have no resting solution at all.
+    if (e.status == PlacementStatus::kNotWeaklyStable) {
+      EXPECT_EQ(direct.verdict, StabilityVerdict::kUnstable) << i;
+      ++pruned_weak;
+    }
+    accepted += e.status == PlacementStatus::kAccepted;
+    if (e.status == PlacementStatus::kAccepted) EXPECT_GT(e.figure, 0);  // a strongly stable g has a margin
+  }
+  EXPECT_GT(accepted, 0);
+  EXPECT_GT(pruned_weak, 0);
+}
+
+TEST(DesignEvaluate, AcceptedConesAreStronglyStableInside) {
+  DesignProblem p = pentagon_problem();
+  p.wrenches.kind = WrenchSet::Kind::kCone;
+  p.wrenches.rows = exact::Mat<geometry::Q>(2, 3);
+  p.wrenches.rows << 0, -1, 0, 1, -6, 0;
+  const CandidateSymmetry none;
+  int accepted = 0;
+  for (long i = 0; i < placement_count(8, 3); ++i) {
+    const Placement pl = placement_at(i, 8, 3);
+    if (evaluate_placement(p, none, pl).status != PlacementStatus::kAccepted) continue;
+    ++accepted;
+    for (int w : {1, 3}) {  // interior wrenches g1 + w g2 of the cone
+      const exact::Vec<geometry::Q> g = (p.wrenches.rows.row(0) + w * p.wrenches.rows.row(1)).transpose();
+      EXPECT_EQ(strong_stability<geometry::Q>(placement_scene(p, pl), g).verdict, StabilityVerdict::kStronglyStable)
+          << i;
+    }
+  }
+  EXPECT_GT(accepted, 0);
 }
 
 }  // namespace
