@@ -40,7 +40,4 @@ std::unique_ptr<Distributor> serial_distributor();
 /// Initialises MPI on construction and finalises it on destruction.
 std::unique_ptr<Distributor> make_distributor();
 
-/// "MPI" or "serial": what make_distributor can give in this build.
-const char* distribution_support();
-
 }  // namespace contactcert::solvers

@@ -174,6 +174,4 @@ std::unique_ptr<Distributor> make_distributor() {
   return std::make_unique<MpiDistributor>();
 }
 
-const char* distribution_support() { return "MPI"; }
-
 }  // namespace contactcert::solvers

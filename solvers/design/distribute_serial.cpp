@@ -26,7 +26,6 @@ std::unique_ptr<Distributor> serial_distributor() { return std::make_unique<Seri
 
 #ifndef CONTACTCERT_HAVE_MPI
 std::unique_ptr<Distributor> make_distributor() { return serial_distributor(); }
-const char* distribution_support() { return "serial"; }
 #endif
 
 }  // namespace contactcert::solvers

@@ -35,7 +35,6 @@ class TopK {
   void offer(Ranked r);
   void merge(const TopK& other);
   const std::vector<Ranked>& items() const { return items_; }
-  std::size_t capacity() const { return k_; }
 
  private:
   std::size_t k_;
