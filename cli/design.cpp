@@ -286,6 +286,7 @@ int search(const DesignOptions& o, const DesignProblem& problem, const solvers::
   st.max_placements = o.max_placements;
   st.checkpoint = {
       key, o.chunk_size, chunks, std::vector<bool>(static_cast<std::size_t>(chunks), false), {solvers::TopK(K), {}}};
+  dist.agree(key);
   std::vector<long> todo;
   if (dist.is_root()) {
     if (!o.checkpoint.empty())

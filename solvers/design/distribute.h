@@ -24,6 +24,9 @@ class Distributor {
   virtual int rank() const = 0;
   virtual int size() const = 0;
   bool is_root() const { return rank() == 0; }
+  /// Every rank must call this with the text that identifies its problem (candidates, options): a rank whose text
+  /// differs from the root's (e.g. another scene file at the same path on its node) ends the run with exit 2.
+  virtual void agree(const std::string& problem) = 0;
   /// Runs the chunks of `todo` (read on the root only) until all are recorded or `keep_going` (root, polled
   /// between placements) returns false. Returns true on every rank when every chunk was recorded.
   virtual bool run(const std::vector<long>& todo, const ChunkWork& work, const ChunkRecord& record,

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
+#include <string>
 
 #include "solvers/design/distribute.h"
 
@@ -43,6 +44,17 @@ class MpiDistributor : public Distributor {
   ~MpiDistributor() override { MPI_Finalize(); }
   int rank() const override { return rank_; }
   int size() const override { return size_; }
+  void agree(const std::string& problem) override {
+    long length = static_cast<long>(problem.size());
+    MPI_Bcast(&length, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+    std::string root(static_cast<std::size_t>(length), '\0');
+    if (rank_ == 0) root = problem;
+    MPI_Bcast(root.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD);
+    if (root != problem)
+      abort_all("rank " + std::to_string(rank_) + " read another design problem than rank 0 (" + problem + " vs " +
+                    root + "): every node needs the same scene and candidate files",
+                2);
+  }
   void abort_all(const std::string& message, int code) override {
     std::fprintf(stderr, "contactcert: %s\n", message.c_str());
     std::fflush(stderr);

@@ -17,6 +17,7 @@ class SerialDistributor : public Distributor {
     }
     return true;
   }
+  void agree(const std::string&) override {}
   void abort_all(const std::string&, int) override {}
 };
 
