@@ -31,6 +31,7 @@ DesignProblem pawl(long n) {
   p.wrenches.rows = exact::Mat<exact::Q>(1, 3);
   p.wrenches.rows << 0, -1, 0;
   p.insertable = true;
+  p.pushes = solvers::arc_length_candidates(p.workpiece.shape, 120);
   p.rank = solvers::Rank::kGoalFraction;
   return p;
 }

@@ -48,6 +48,7 @@ struct DesignOptions {
   std::string out = "contactcert-design";
   std::string checkpoint;
   long chunk_size = 16;
+  long push_points = 120;
   long max_placements = 100000000;
   bool stable_under_given = false;
 };
@@ -116,7 +117,8 @@ std::vector<solvers::Candidate> read_candidates(const DesignOptions& o, const ge
 /// 64-bit FNV-1a of the problem's description: the identity a checkpoint must match.
 std::string problem_key(const std::string& scene_text, const DesignOptions& o, const DesignProblem& p) {
   std::string d = scene_text + "|" + std::to_string(p.fixels) + "|" + o.stable_under + "|" +
-                  std::to_string(p.insertable) + "|" + solvers::rank_name(p.rank) + "|" + std::to_string(o.top) + "|";
+                  std::to_string(p.insertable) + "|" + solvers::rank_name(p.rank) + "|" + std::to_string(o.top) + "|" +
+                  std::to_string(p.pushes.size()) + "|";
   for (const auto& c : p.candidates) d += exact::to_string(c.point.x) + "," + exact::to_string(c.point.y) + ";";
   std::uint64_t h = 1469598103934665603ull;
   for (unsigned char ch : d) h = (h ^ ch) * 1099511628211ull;
@@ -214,14 +216,14 @@ json report_placement(const DesignProblem& problem, const solvers::CandidateSymm
     text << "     the cone of these generators meets no moving mode's wrench cone (exact intersection)\n";
   j["verdicts"] = verdicts;
   if (problem.insertable) {
-    Q frac(ev.goal_candidates, static_cast<long>(problem.candidates.size()));
+    Q frac(ev.goal_pushes, static_cast<long>(problem.pushes.size()));
     frac.canonicalize();
     j["goal_witness"] = primitive_json(ev.goal_witness);
-    j["goal_candidates"] = ev.goal_candidates;
+    j["goal_pushes"] = ev.goal_pushes;
     j["goal_fraction"] = exact_json(frac);
     text << "     G_goal non-empty, e.g. g = " << tuple_text(exact::primitive(ev.goal_witness)) << "; pushes at "
-         << ev.goal_candidates << " of " << problem.candidates.size() << " candidate points seat it ("
-         << exact::to_string(frac) << ")\n";
+         << ev.goal_pushes << " of " << problem.pushes.size() << " push points seat it (" << exact::to_string(frac)
+         << ")\n";
   }
   text << "     scene: " << stem << ".json\n";
   return j;
@@ -260,6 +262,9 @@ DesignProblem build_problem(const DesignOptions& o, const std::string& scene_tex
                      "at least " + std::to_string(std::max(2, p.fixels)) + " candidate points (got " +
                          std::to_string(p.candidates.size()) + ")");
   if (o.top < 1) throw InputError("command line", "--top", "K >= 1");
+  if (o.push_points < 1 || o.push_points > kMaxCandidates)
+    throw InputError("command line", "--push-points", "1 to " + std::to_string(kMaxCandidates) + " push points");
+  if (p.insertable) p.pushes = solvers::arc_length_candidates(p.workpiece.shape, o.push_points);
   if (o.chunk_size < 1) throw InputError("command line", "--chunk-size", "a chunk size >= 1");
   return p;
 }
@@ -440,6 +445,9 @@ void register_design(CLI::App& app, Action& action) {
   sub->add_option("--out", o->out, "Folder of the placement scenes, certificates and design.svg")
       ->default_str("contactcert-design");
   sub->add_option("--checkpoint", o->checkpoint, "Resume from and save progress to this file (atomic writes)");
+  sub->add_option("--push-points", o->push_points,
+                  "With --insertable: the goal fraction counts the pushes at M points equally spaced in arc length")
+      ->default_str("120");
   sub->add_option("--chunk-size", o->chunk_size, "Placements per unit of work handed to a rank")->default_str("16");
   sub->add_option("--max-placements", o->max_placements, "Budget: placements evaluated in this run (exit 3 beyond)")
       ->default_str("100000000");

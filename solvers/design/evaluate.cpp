@@ -121,7 +121,7 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
     if (witness.size() == 0) return reject(PlacementStatus::kNotInsertable);
     long in_goal = 0;
     Vec<Q> push_witness;
-    for (const Candidate& c : problem.candidates) {
+    for (const Candidate& c : problem.pushes) {
       Vec<Q> p(2), n(2);
       p << c.point.x, c.point.y;
       n << c.normal.x, c.normal.y;
@@ -130,12 +130,12 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
       if (in_goal++ == 0) push_witness = g;
     }
     if (problem.rank == Rank::kGoalFraction) {
-      out.figure = Q(in_goal, static_cast<long>(problem.candidates.size()));
+      out.figure = Q(in_goal, static_cast<long>(problem.pushes.size()));
       out.figure.canonicalize();
     }
     if (evidence) {
       evidence->goal_witness = in_goal > 0 ? push_witness : witness;  // a finger push reads better
-      evidence->goal_candidates = in_goal;
+      evidence->goal_pushes = in_goal;
     }
   }
   return out;

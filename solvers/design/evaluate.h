@@ -35,7 +35,7 @@ struct PlacementEvidence {
   std::vector<StabilityResult<exact::Q>> stability;  ///< per wrench (generator), with its proofs
   std::vector<Margin<exact::Q>> margins;             ///< per wrench (generator), if ranked by margin
   exact::Vec<exact::Q> goal_witness;                 ///< a wrench in G_goal, if insertable was asked
-  long goal_candidates = 0;                          ///< candidates whose frictionless push lies in G_goal
+  long goal_pushes = 0;                              ///< push points whose frictionless push lies in G_goal
 };
 
 struct Evaluation {

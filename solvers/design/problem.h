@@ -18,8 +18,8 @@ struct WrenchSet {
 };
 
 /// The objective: margin = min over the set's wrenches (generators) of the squared stability margin
-/// (section 8, eq. 19's ball); goal_fraction = the fraction of the candidate points at which a frictionless
-/// push along the inward normal lies in G_goal (exact: a count over the candidates).
+/// (section 8, eq. 19's ball); goal_fraction = the fraction of the push points (DesignProblem::pushes) at which a
+/// frictionless push along the inward normal lies in G_goal (exact: a count).
 enum class Rank { kMargin, kGoalFraction };
 const char* rank_name(Rank r);
 
@@ -27,7 +27,8 @@ struct DesignProblem {
   geometry::Workpiece workpiece;
   exact::Q mu_s, mu_k;
   std::vector<Candidate> candidates;
-  int fixels = 3;  ///< 2 or 3
+  std::vector<Candidate> pushes;  ///< the boundary points whose frictionless pushes the goal fraction counts
+  int fixels = 3;                 ///< 2 or 3
   WrenchSet wrenches;
   bool insertable = false;  ///< require G_goal != {} (eq. 21 for 2 fixels, Table 5 for 3)
   Rank rank = Rank::kMargin;

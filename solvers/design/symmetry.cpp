@@ -46,6 +46,18 @@ bool maps_shape(const geometry::Shape& shape, const Point2& com, const Linear& A
   return true;
 }
 
+/// Does x -> com + A (x - com) map the points onto themselves?
+bool maps_points(const std::vector<Candidate>& points, const Point2& com, const Linear& A) {
+  std::vector<Point2> from, to;
+  for (const auto& c : points) {
+    from.push_back(c.point);
+    to.push_back(com + A(c.point - com));
+  }
+  std::sort(from.begin(), from.end(), PointLess());
+  std::sort(to.begin(), to.end(), PointLess());
+  return from == to;
+}
+
 bool maps_wrenches(const WrenchSet& w, const Linear& A) {
   auto key = [&](const exact::Vec<Q>& g) {
     Q s = 0;  // cones: compare rays up to a positive factor (normalise by the first non-zero entry's size)
@@ -108,7 +120,7 @@ CandidateSymmetry candidate_symmetry(const DesignProblem& problem) {
       if (it == index.end()) break;
       perm.push_back(it->second);
     }
-    if (perm.size() != problem.candidates.size()) continue;
+    if (perm.size() != problem.candidates.size() || !maps_points(problem.pushes, com, A)) continue;
     bool identity = true;
     for (std::size_t i = 0; i < perm.size(); ++i) identity = identity && perm[i] == static_cast<int>(i);
     if (identity || std::find(seen.begin(), seen.end(), perm) != seen.end()) continue;

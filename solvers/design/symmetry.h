@@ -1,5 +1,5 @@
 // Exact symmetries of a design problem: the isometries x -> com + A (x - com) (A a rational orthogonal 2x2
-// matrix) that map the workpiece onto itself, the candidate set onto itself and the wrench set onto itself
+// matrix) that map the workpiece, the candidate set, the push points and the wrench set onto themselves
 // (a wrench (f, tau) maps to (A f, det(A) tau)). Placements related by one are equivalent (same verdicts and
 // figures: the map is an isometry of wrench space), so only the lexicographically least image is evaluated.
 #pragma once
