@@ -280,10 +280,62 @@ struct RootState {
   long placements_done() const { return std::min(total, (done_before + done_now) * checkpoint.chunk_size); }
 };
 
+/// The report of a finished search: the top K re-decided with their evidence, files, text or JSON.
+int report_design(const DesignOptions& o, const DesignProblem& problem, const solvers::CandidateSymmetry& symmetry,
+                  const solvers::ChunkResult& result, long total, const std::string& how) {
+  const long n = static_cast<long>(problem.candidates.size());
+  std::ostringstream text;
+  json top = json::array();
+  std::vector<std::string> captions;
+  for (std::size_t i = 0; i < result.top.items().size(); ++i) {
+    std::string caption;
+    top.push_back(report_placement(problem, symmetry, o, i + 1, result.top.items()[i], &caption, text));
+    captions.push_back(caption);
+  }
+  const std::string svg = o.out + "/design.svg";
+  write_text_file(svg,
+                  design_svg(problem, result.top.items(), captions,
+                             "contactcert design " + o.file + ": best " + std::to_string(result.top.items().size()) +
+                                 " placements by " + solvers::rank_name(problem.rank)));
+  const std::string requirement =
+      (problem.wrenches.kind == solvers::WrenchSet::Kind::kNone ? std::string()
+                                                                : "strongly stable under " + o.stable_under) +
+      (problem.insertable ? std::string(problem.wrenches.kind == solvers::WrenchSet::Kind::kNone ? "" : ", ") +
+                                "insertable (G_goal non-empty)"
+                          : "");
+  if (o.common.json) {
+    json j;
+    j["scene"] = o.file;
+    j["fixels"] = problem.fixels;
+    json cands = json::array();
+    for (const auto& c : problem.candidates) cands.push_back(point_json(c.point));
+    j["candidates"] = {{"source", how}, {"count", n}, {"points", cands}};
+    j["requirements"] = {{"stable_under", o.stable_under_given ? json(o.stable_under) : json(nullptr)},
+                         {"insertable", problem.insertable}};
+    j["rank"] = solvers::rank_name(problem.rank);
+    j["placements"] = total;
+    j["symmetries"] = symmetry.permutations.size();
+    j["statistics"] = statistics_json(result.statistics);
+    j["top"] = top;
+    j["svg"] = svg;
+    std::cout << j.dump() << "\n";
+    return 0;
+  }
+  std::cout << "design " << o.file << ": " << problem.fixels << " fixels from " << n << " candidates (" << how << "), "
+            << requirement << ", ranked by " << solvers::rank_name(problem.rank) << "\n"
+            << "  " << total << " placements, " << symmetry.permutations.size() << " non-trivial symmetries; "
+            << statistics_text(result.statistics) << "\n";
+  if (result.top.items().empty())
+    std::cout << "  no placement meets the requirements\n";
+  else
+    std::cout << "best " << result.top.items().size() << ":\n" << text.str();
+  std::cout << "  picture: " << svg << "\n";
+  return 0;
+}
+
 /// The distributed search and, on the root, the report.
 int search(const DesignOptions& o, const DesignProblem& problem, const solvers::CandidateSymmetry& symmetry,
            solvers::Distributor& dist, long total, long chunks, const std::string& key, const std::string& how) {
-  const long n = static_cast<long>(problem.candidates.size());
   const std::size_t K = static_cast<std::size_t>(o.top);
   RootState st;
   st.total = total;
@@ -346,53 +398,7 @@ int search(const DesignOptions& o, const DesignProblem& problem, const solvers::
               << (o.checkpoint.empty() ? "" : "; resume with --checkpoint " + o.checkpoint) << ")\n";
     return 3;
   }
-  std::ostringstream text;
-  json top = json::array();
-  std::vector<std::string> captions;
-  for (std::size_t i = 0; i < result.top.items().size(); ++i) {
-    std::string caption;
-    top.push_back(report_placement(problem, symmetry, o, i + 1, result.top.items()[i], &caption, text));
-    captions.push_back(caption);
-  }
-  const std::string svg = o.out + "/design.svg";
-  write_text_file(svg,
-                  design_svg(problem, result.top.items(), captions,
-                             "contactcert design " + o.file + ": best " + std::to_string(result.top.items().size()) +
-                                 " placements by " + solvers::rank_name(problem.rank)));
-  const std::string requirement =
-      (problem.wrenches.kind == solvers::WrenchSet::Kind::kNone ? std::string()
-                                                                : "strongly stable under " + o.stable_under) +
-      (problem.insertable ? std::string(problem.wrenches.kind == solvers::WrenchSet::Kind::kNone ? "" : ", ") +
-                                "insertable (G_goal non-empty)"
-                          : "");
-  if (o.common.json) {
-    json j;
-    j["scene"] = o.file;
-    j["fixels"] = problem.fixels;
-    json cands = json::array();
-    for (const auto& c : problem.candidates) cands.push_back(point_json(c.point));
-    j["candidates"] = {{"source", how}, {"count", n}, {"points", cands}};
-    j["requirements"] = {{"stable_under", o.stable_under_given ? json(o.stable_under) : json(nullptr)},
-                         {"insertable", problem.insertable}};
-    j["rank"] = solvers::rank_name(problem.rank);
-    j["placements"] = total;
-    j["symmetries"] = symmetry.permutations.size();
-    j["statistics"] = statistics_json(result.statistics);
-    j["top"] = top;
-    j["svg"] = svg;
-    std::cout << j.dump() << "\n";
-    return 0;
-  }
-  std::cout << "design " << o.file << ": " << problem.fixels << " fixels from " << n << " candidates (" << how << "), "
-            << requirement << ", ranked by " << solvers::rank_name(problem.rank) << "\n"
-            << "  " << total << " placements, " << symmetry.permutations.size() << " non-trivial symmetries; "
-            << statistics_text(result.statistics) << "\n";
-  if (result.top.items().empty())
-    std::cout << "  no placement meets the requirements\n";
-  else
-    std::cout << "best " << result.top.items().size() << ":\n" << text.str();
-  std::cout << "  picture: " << svg << "\n";
-  return 0;
+  return report_design(o, problem, symmetry, result, total, how);
 }
 
 int run_design(const DesignOptions& o) {
