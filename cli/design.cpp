@@ -49,6 +49,7 @@ struct DesignOptions {
   std::string checkpoint;
   long chunk_size = 16;
   long push_points = 120;
+  std::string goal_wrench;
   long max_placements = 100000000;
   bool stable_under_given = false;
 };
@@ -118,7 +119,7 @@ std::vector<solvers::Candidate> read_candidates(const DesignOptions& o, const ge
 std::string problem_key(const std::string& scene_text, const DesignOptions& o, const DesignProblem& p) {
   std::string d = scene_text + "|" + std::to_string(p.fixels) + "|" + o.stable_under + "|" +
                   std::to_string(p.insertable) + "|" + solvers::rank_name(p.rank) + "|" + std::to_string(o.top) + "|" +
-                  std::to_string(p.pushes.size()) + "|";
+                  std::to_string(p.pushes.size()) + "|" + o.goal_wrench + "|";
   for (const auto& c : p.candidates) d += exact::to_string(c.point.x) + "," + exact::to_string(c.point.y) + ";";
   std::uint64_t h = 1469598103934665603ull;
   for (unsigned char ch : d) h = (h ^ ch) * 1099511628211ull;
@@ -241,15 +242,16 @@ DesignProblem build_problem(const DesignOptions& o, const std::string& scene_tex
   p.mu_s = scene.fixels.front().mu_s;
   p.mu_k = scene.fixels.front().mu_k;
   p.fixels = o.fixels;
-  p.insertable = o.insertable;
+  p.insertable = o.insertable || !o.goal_wrench.empty();
+  if (!o.goal_wrench.empty()) p.goal_wrench = parse_number_list(o.goal_wrench, "--goal-wrench", 3);
   if (o.stable_under_given) p.wrenches = parse_wrench_set(o.stable_under);
-  if (!o.stable_under_given && !o.insertable)
+  if (!o.stable_under_given && !p.insertable)
     throw InputError("command line", "--stable-under", "a requirement: --stable-under W and/or --insertable");
   const std::string rank = o.rank.empty() ? (o.stable_under_given ? "margin" : "goal-fraction") : o.rank;
   p.rank = rank == "margin" ? solvers::Rank::kMargin : solvers::Rank::kGoalFraction;
   if (p.rank == solvers::Rank::kMargin && !o.stable_under_given)
     throw InputError("command line", "--rank", "--rank margin needs --stable-under W");
-  if (p.rank == solvers::Rank::kGoalFraction && !o.insertable)
+  if (p.rank == solvers::Rank::kGoalFraction && !p.insertable)
     throw InputError("command line", "--rank", "--rank goal-fraction needs --insertable");
   p.candidates = read_candidates(o, p.workpiece.shape, how);
   if (static_cast<long>(p.candidates.size()) > kMaxCandidates)
@@ -300,9 +302,11 @@ int report_design(const DesignOptions& o, const DesignProblem& problem, const so
   const std::string requirement =
       (problem.wrenches.kind == solvers::WrenchSet::Kind::kNone ? std::string()
                                                                 : "strongly stable under " + o.stable_under) +
-      (problem.insertable ? std::string(problem.wrenches.kind == solvers::WrenchSet::Kind::kNone ? "" : ", ") +
-                                "insertable (G_goal non-empty)"
-                          : "");
+      (problem.insertable
+           ? std::string(problem.wrenches.kind == solvers::WrenchSet::Kind::kNone ? "" : ", ") +
+                 "insertable (G_goal non-empty" +
+                 (problem.goal_wrench.size() ? ", containing " + tuple_text(problem.goal_wrench) : "") + ")"
+           : "");
   if (o.common.json) {
     json j;
     j["scene"] = o.file;
@@ -311,7 +315,8 @@ int report_design(const DesignOptions& o, const DesignProblem& problem, const so
     for (const auto& c : problem.candidates) cands.push_back(point_json(c.point));
     j["candidates"] = {{"source", how}, {"count", n}, {"points", cands}};
     j["requirements"] = {{"stable_under", o.stable_under_given ? json(o.stable_under) : json(nullptr)},
-                         {"insertable", problem.insertable}};
+                         {"insertable", problem.insertable},
+                         {"goal_wrench", problem.goal_wrench.size() ? exact_json(problem.goal_wrench) : json(nullptr)}};
     j["rank"] = solvers::rank_name(problem.rank);
     j["placements"] = total;
     j["symmetries"] = symmetry.permutations.size();
@@ -451,6 +456,7 @@ void register_design(CLI::App& app, Action& action) {
   sub->add_option("--out", o->out, "Folder of the placement scenes, certificates and design.svg")
       ->default_str("contactcert-design");
   sub->add_option("--checkpoint", o->checkpoint, "Resume from and save progress to this file (atomic writes)");
+  sub->add_option("--goal-wrench", o->goal_wrench, "Require this wrench fx,fy,tz in G_goal (implies --insertable)");
   sub->add_option("--push-points", o->push_points,
                   "With --insertable: the goal fraction counts the pushes at M points equally spaced in arc length")
       ->default_str("120");

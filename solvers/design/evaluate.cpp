@@ -71,6 +71,8 @@ const char* placement_status_name(PlacementStatus s) {
       return "cone_meets_moving_mode";
     case PlacementStatus::kNotInsertable:
       return "not_insertable";
+    case PlacementStatus::kGoalMissesWrench:
+      return "goal_misses_wrench";
   }
   return "?";
 }
@@ -119,6 +121,8 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
     const Insertion<Q> ins = insertion<Q>(scene);
     const Vec<Q> witness = goal_witness(ins);
     if (witness.size() == 0) return reject(PlacementStatus::kNotInsertable);
+    if (problem.goal_wrench.size() > 0 && !ins.in_goal(problem.goal_wrench))
+      return reject(PlacementStatus::kGoalMissesWrench);
     long in_goal = 0;
     Vec<Q> push_witness;
     for (const Candidate& c : problem.pushes) {

@@ -6,7 +6,7 @@
 //   4. a cone of wrenches meets no moving mode's wrench cone except at 0 (eq. 19: then the whole cone is in
 //      G_strong, given 2-3);
 //   5. G_goal != {} (eq. 21 / Table 5): some cell of the arrangement of the insertion cones' planes lies in
-//      no cone.
+//      no cone; and G_goal holds the required wrench if one is given.
 // Fixels all touch by construction, so stability considers every fixel of the placement.
 #pragma once
 
@@ -26,8 +26,9 @@ enum class PlacementStatus {
   kNotStronglyStable,
   kConeMeetsMovingMode,
   kNotInsertable,
+  kGoalMissesWrench,
 };
-constexpr int kPlacementStatusCount = 6;
+constexpr int kPlacementStatusCount = 7;
 const char* placement_status_name(PlacementStatus s);
 
 /// The evidence behind an accepted placement's verdicts, for the report and its certificates.

@@ -30,7 +30,8 @@ struct DesignProblem {
   std::vector<Candidate> pushes;  ///< the boundary points whose frictionless pushes the goal fraction counts
   int fixels = 3;                 ///< 2 or 3
   WrenchSet wrenches;
-  bool insertable = false;  ///< require G_goal != {} (eq. 21 for 2 fixels, Table 5 for 3)
+  bool insertable = false;           ///< require G_goal != {} (eq. 21 for 2 fixels, Table 5 for 3)
+  exact::Vec<exact::Q> goal_wrench;  ///< if not empty: G_goal must contain this wrench (insertable implied)
   Rank rank = Rank::kMargin;
 };
 

@@ -10,12 +10,9 @@ namespace contactcert::solvers {
 
 long placement_count(long n, int k) {
   if (k < 0 || n < k) return 0;
-  unsigned __int128 c = 1;
-  for (int i = 1; i <= k; ++i) {
-    c = c * static_cast<unsigned __int128>(n - k + i) / static_cast<unsigned>(i);  // C(n-k+i, i), exact
-    if (c > (static_cast<unsigned __int128>(1) << 62)) return -1;
-  }
-  return static_cast<long>(c);
+  exact::Z c = 1;
+  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;  // C(n-k+i, i), exact at every step
+  return c > (exact::Z(1) << 62) ? -1 : c.get_si();
 }
 
 Placement placement_at(long index, long n, int k) {

@@ -41,6 +41,11 @@ for k in 1 2 3; do
 done
 xmllint --noout run/design.svg 2> /dev/null || [ ! -x "$(command -v xmllint)" ] || fail "design.svg is not valid XML"
 
+# --goal-wrench: G_goal must contain gravity; the placements whose G_goal misses it are counted.
+"$cc" design "$pentagon" --candidates 10 --stable-under 0,-1,0 --goal-wrench 0,-1,0 --top 1 --out goal > goal.txt ||
+  fail "goal-wrench run exit $?"
+grep -qE "goal_misses_wrench [1-9]" goal.txt || fail "no placement rejected for missing the goal wrench"
+
 # A cone of wrenches and two fixels on a disk: each generator's certificate checks.
 "$cc" design "$disk" --fixels 2 --candidates 12 --stable-under "cone:0,-1,0;1,-4,0" --top 2 --out cone > cone.txt ||
   fail "cone run exit $?"

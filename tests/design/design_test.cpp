@@ -153,7 +153,9 @@ TEST(DesignEvaluate, VerdictsAgreeWithStrongStabilityOnEveryPlacement) {
       ++pruned_weak;
     }
     accepted += e.status == PlacementStatus::kAccepted;
-    if (e.status == PlacementStatus::kAccepted) EXPECT_GT(e.figure, 0);  // a strongly stable g has a margin
+    if (e.status == PlacementStatus::kAccepted) {
+      EXPECT_GT(e.figure, 0);  // a strongly stable g has a margin
+    }
   }
   EXPECT_GT(accepted, 0);
   EXPECT_GT(pruned_weak, 0);
