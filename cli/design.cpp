@@ -450,7 +450,9 @@ void register_design(CLI::App& app, Action& action) {
       "--stable-under", o->stable_under,
       "Wrenches to hold strongly stable: fx,fy,tz[;...] (a list) or cone:fx,fy,tz;... (a cone's generators)");
   sub->add_flag("--insertable", o->insertable, "Require a non-empty G_goal (sensorless insertion, Table 5)");
-  sub->add_option("--rank", o->rank, "margin (squared stability margin) or goal-fraction (candidate pushes in G_goal)")
+  sub->add_option(
+         "--rank", o->rank,
+         "margin (least squared stability margin) or goal-fraction (share of the push points whose push is in G_goal)")
       ->check(CLI::IsMember({"margin", "goal-fraction"}));
   sub->add_option("--top", o->top, "Report the K best placements")->default_str("5");
   sub->add_option("--out", o->out, "Folder of the placement scenes, certificates and design.svg")
