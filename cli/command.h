@@ -33,5 +33,6 @@ void register_cone(CLI::App& app, Action& action);
 void register_modes(CLI::App& app, Action& action);
 void register_convert(CLI::App& app, Action& action);
 void register_bench(CLI::App& app, Action& action);
+void register_design(CLI::App& app, Action& action);
 
 }  // namespace contactcert::cli

@@ -1,0 +1,148 @@
+#include "solvers/design/evaluate.h"
+
+#include "geometry/double_description.h"
+#include "geometry/set_ops.h"
+#include "geometry/sphere_arrangement.h"
+#include "solvers/insertion/insertion.h"
+#include "solvers/stability/finger_push.h"
+#include "solvers/stability/stable_region.h"
+#include "solvers/wrench_cone/contact_model.h"
+
+namespace contactcert::solvers {
+namespace {
+
+using exact::Mat;
+using exact::Q;
+using exact::Vec;
+
+/// The weak cone and every moving mode's non-empty wrench cone (the StableRegion of stable_region without its
+/// arrangement: the margin and the cone test need only the cones).
+StableRegion<Q> mode_cones(const geometry::PlanarScene& scene) {
+  StableRegion<Q> region;
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(scene.fixels.size()); ++i) region.touching.push_back(i);
+  region.weak = weakly_stable_cone<Q>(scene);
+  const ContactModel<Q> model = contact_model<Q>(scene);
+  for (const ModeString& m : moving_modes(scene.fixels.size())) {
+    geometry::FaceCone<Q> c = wrench_cone_face<Q>(scene, model, m, Route::kPaper);
+    if (is_empty_cone<Q>(c)) continue;
+    region.modes.push_back(m);
+    region.cones.push_back(std::move(c));
+  }
+  return region;
+}
+
+/// Does pos(generators) meet the cone at a point other than 0?
+bool meets_beyond_origin(const geometry::FaceCone<Q>& generated, const geometry::FaceCone<Q>& cone) {
+  const geometry::NncForm<Q> both = geometry::nnc_form<Q>(geometry::intersection<Q>(generated, cone));
+  return both.status == geometry::NncStatus::kNonEmpty && both.dimension() > 0;
+}
+
+/// A wrench of G_goal (the complement of the union of the insertion cones), or an empty vector: G_goal is a
+/// union of cells of the arrangement of the cones' planes, so testing one point per cell decides it.
+Vec<Q> goal_witness(const Insertion<Q>& ins) {
+  std::vector<const geometry::FaceCone<Q>*> cones;
+  for (std::size_t i = 0; i < ins.cones.size(); ++i)
+    if (!ins.redundant[i] && !is_empty_cone<Q>(ins.cones[i])) cones.push_back(&ins.cones[i]);
+  const std::vector<Vec<Q>> rows = cone_rows<Q>(cones);
+  Mat<Q> normals(static_cast<Eigen::Index>(rows.size()), 3);
+  for (std::size_t r = 0; r < rows.size(); ++r) normals.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
+  const auto arrangement = geometry::sphere_arrangement<Q>(normals);
+  for (int dimension = 3; dimension >= 1; --dimension)
+    for (const auto& cell : arrangement.cells)
+      if (cell.dimension == dimension && ins.in_goal(cell.point)) return cell.point;
+  return {};
+}
+
+Vec<Q> row_vector(const Mat<Q>& M, Eigen::Index r) { return M.row(r).transpose(); }
+
+}  // namespace
+
+const char* placement_status_name(PlacementStatus s) {
+  switch (s) {
+    case PlacementStatus::kAccepted:
+      return "accepted";
+    case PlacementStatus::kSymmetricDuplicate:
+      return "symmetric_duplicate";
+    case PlacementStatus::kNotWeaklyStable:
+      return "not_weakly_stable";
+    case PlacementStatus::kNotStronglyStable:
+      return "not_strongly_stable";
+    case PlacementStatus::kConeMeetsMovingMode:
+      return "cone_meets_moving_mode";
+    case PlacementStatus::kNotInsertable:
+      return "not_insertable";
+    case PlacementStatus::kGoalMissesWrench:
+      return "goal_misses_wrench";
+  }
+  return "?";
+}
+
+Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymmetry& symmetry,
+                              const Placement& placement, PlacementEvidence* evidence) {
+  Evaluation out;
+  auto reject = [&](PlacementStatus s) {
+    out.status = s;
+    return out;
+  };
+  if (!symmetry.is_canonical(placement)) return reject(PlacementStatus::kSymmetricDuplicate);
+  const geometry::PlanarScene scene = placement_scene(problem, placement);
+  const Mat<Q>& W = problem.wrenches.rows;
+  const bool stable_under = problem.wrenches.kind != WrenchSet::Kind::kNone;
+  if (stable_under) {
+    const geometry::FaceCone<Q> weak = weakly_stable_cone<Q>(scene);
+    for (Eigen::Index r = 0; r < W.rows(); ++r)
+      if (!geometry::contains_point<Q>(weak, row_vector(W, r))) return reject(PlacementStatus::kNotWeaklyStable);
+    const StabilityOracle<Q> oracle(scene, {exact::Arith::kVerified});
+    out.lps += oracle.preparation_lps();
+    for (Eigen::Index r = 0; r < W.rows(); ++r) {
+      StabilityResult<Q> v = oracle.verdict(row_vector(W, r));
+      out.lps += v.lps;
+      if (v.verdict != StabilityVerdict::kStronglyStable) return reject(PlacementStatus::kNotStronglyStable);
+      if (evidence) evidence->stability.push_back(std::move(v));
+    }
+    const bool cone = problem.wrenches.kind == WrenchSet::Kind::kCone;
+    if (cone || problem.rank == Rank::kMargin) {
+      const StableRegion<Q> region = mode_cones(scene);
+      if (cone) {
+        const geometry::FaceCone<Q> generated =
+            geometry::to_face<Q>(geometry::SpanCone<Q>::from_rows(3, W, Mat<Q>(0, 3)));
+        for (const auto& c : region.cones)
+          if (meets_beyond_origin(generated, c)) return reject(PlacementStatus::kConeMeetsMovingMode);
+      }
+      if (problem.rank == Rank::kMargin)
+        for (Eigen::Index r = 0; r < W.rows(); ++r) {
+          const Margin<Q> m = stability_margin<Q>(region, row_vector(W, r));
+          if (r == 0 || m.squared_radius < out.figure) out.figure = m.squared_radius;
+          if (evidence) evidence->margins.push_back(m);
+        }
+    }
+  }
+  if (problem.insertable) {
+    const Insertion<Q> ins = insertion<Q>(scene);
+    const Vec<Q> witness = goal_witness(ins);
+    if (witness.size() == 0) return reject(PlacementStatus::kNotInsertable);
+    if (problem.goal_wrench.size() > 0 && !ins.in_goal(problem.goal_wrench))
+      return reject(PlacementStatus::kGoalMissesWrench);
+    long in_goal = 0;
+    Vec<Q> push_witness;
+    for (const Candidate& c : problem.pushes) {
+      Vec<Q> p(2), n(2);
+      p << c.point.x, c.point.y;
+      n << c.normal.x, c.normal.y;
+      const Vec<Q> g = push_wrench<Q>(problem.workpiece.com, p, n);
+      if (!ins.in_goal(g)) continue;
+      if (in_goal++ == 0) push_witness = g;
+    }
+    if (problem.rank == Rank::kGoalFraction) {
+      out.figure = Q(in_goal, static_cast<long>(problem.pushes.size()));
+      out.figure.canonicalize();
+    }
+    if (evidence) {
+      evidence->goal_witness = in_goal > 0 ? push_witness : witness;  // a finger push reads better
+      evidence->goal_pushes = in_goal;
+    }
+  }
+  return out;
+}
+
+}  // namespace contactcert::solvers

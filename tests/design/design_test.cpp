@@ -1,0 +1,185 @@
+// The pieces of fixture design: candidates exactly on the boundary, lexicographic placements, the total order
+// of the top K (independent of how the placements were split), symmetry, chunk results as text.
+#include <gtest/gtest.h>
+
+#include "solvers/design/candidates.h"
+#include "solvers/design/ranking.h"
+#include "solvers/design/symmetry.h"
+#include "solvers/stability/strong_stability.h"
+
+namespace contactcert::solvers {
+namespace {
+
+using geometry::Point2;
+using geometry::PolygonShape;
+using geometry::Q;
+
+geometry::Shape pawl() { return PolygonShape{{{0, 0}, {7, 0}, {10, -2}, {9, 1}, {7, 2}, {1, 2}, {0, 1}}}; }
+
+TEST(DesignCandidates, ArcLengthPointsLieOnTheBoundaryWithInwardNormals) {
+  for (const geometry::Shape& shape : {pawl(), geometry::Shape(geometry::DiskShape{{Q(1), Q(-2)}, Q(3)}),
+                                       geometry::Shape(PolygonShape{{{0, 0}, {3, 0}, {3, 4}, {0, 4}}})}) {
+    const auto c = arc_length_candidates(shape, 36);
+    EXPECT_EQ(c.size(), 36u);
+    for (const auto& k : c) {
+      EXPECT_EQ(geometry::locate_in_shape(shape, k.point), geometry::ShapeLocation::kBoundary);
+      const CandidateCheck again = candidate_at(shape, k.point);
+      ASSERT_TRUE(again.message.empty()) << again.message;
+      EXPECT_EQ(geometry::cross(again.candidate.normal, k.normal), 0);  // the same inward direction
+      EXPECT_GT(geometry::dot(again.candidate.normal, k.normal), 0);
+    }
+  }
+}
+
+TEST(DesignCandidates, RationalPerimeterIsSplitExactly) {
+  // A 3 x 4 rectangle, perimeter 14: points at arc lengths 1/2, 3/2, ... (half a step from (0, 0)); with 7
+  // points, arc lengths 3 and 7 are the vertices (3, 0) and (3, 4) and are dropped.
+  const PolygonShape rectangle{{{0, 0}, {3, 0}, {3, 4}, {0, 4}}};
+  const auto c = arc_length_candidates(rectangle, 14);
+  ASSERT_EQ(c.size(), 14u);
+  EXPECT_EQ(c[0].point, (Point2{Q(1, 2), 0}));
+  EXPECT_EQ(c[3].point, (Point2{3, Q(1, 2)}));
+  EXPECT_EQ(arc_length_candidates(rectangle, 7).size(), 5u);
+}
+
+TEST(DesignCandidates, OffBoundaryAndVertexPointsAreRejected) {
+  EXPECT_FALSE(candidate_at(pawl(), {Q(1), Q(1)}).message.empty());  // inside
+  EXPECT_FALSE(candidate_at(pawl(), {Q(7), Q(0)}).message.empty());  // a vertex
+  EXPECT_TRUE(candidate_at(pawl(), {Q(7, 2), Q(0)}).message.empty());
+}
+
+TEST(DesignCandidates, LatticePointsOfACircle) {
+  // x^2 + y^2 = 25 has 12 integer points.
+  const auto c = lattice_candidates(geometry::DiskShape{{Q(0), Q(0)}, Q(5)}, Q(1));
+  EXPECT_EQ(c.size(), 12u);
+  EXPECT_EQ(c[0].point, (Point2{5, 0}));  // counter-clockwise from angle 0
+  EXPECT_EQ(c[1].point, (Point2{4, 3}));
+}
+
+TEST(DesignPlacements, UnrankingIsLexicographic) {
+  EXPECT_EQ(placement_count(100, 3), 161700);
+  EXPECT_EQ(placement_count(5, 6), 0);
+  EXPECT_EQ(placement_count(5000000, 3), -1);
+  long i = 0;
+  for (int a = 0; a < 7; ++a)
+    for (int b = a + 1; b < 7; ++b)
+      for (int c = b + 1; c < 7; ++c) EXPECT_EQ(placement_at(i++, 7, 3), (Placement{a, b, c}));
+}
+
+TEST(DesignRanking, TopKIsTheSameForEverySplit) {
+  std::vector<Ranked> all;
+  for (int i = 0; i < 40; ++i) {
+    Q figure(i % 7, 3);
+    figure.canonicalize();
+    all.push_back({{i, i + 1}, figure});
+  }
+  TopK whole(5);
+  for (const auto& r : all) whole.offer(r);
+  TopK merged(5);
+  for (int part = 0; part < 4; ++part) {
+    TopK t(5);
+    for (int i = part; i < 40; i += 4) t.offer(all[static_cast<std::size_t>(i)]);
+    merged.merge(t);
+  }
+  ASSERT_EQ(whole.items().size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(whole.items()[i].placement, merged.items()[i].placement);
+  EXPECT_EQ(whole.items()[0].figure, Q(2));
+  EXPECT_EQ(whole.items()[0].placement, (Placement{6, 7}));  // ties: the least indices first
+}
+
+TEST(DesignRanking, ChunkResultTextRoundTrips) {
+  ChunkResult r{TopK(3), {}};
+  r.top.offer({{1, 4, 9}, Q(-7, 20)});
+  r.statistics.by_status = {1, 2, 3, 4, 5, 6};
+  r.statistics.lps = 99;
+  const ChunkResult back = parse_chunk_result(chunk_result_text(r), 3);
+  ASSERT_EQ(back.top.items().size(), 1u);
+  EXPECT_EQ(back.top.items()[0].figure, Q(-7, 20));
+  EXPECT_EQ(back.statistics.by_status, r.statistics.by_status);
+  EXPECT_EQ(back.statistics.lps, 99);
+}
+
+TEST(DesignSymmetry, SquareUnderGravityHasOnlyTheMirror) {
+  DesignProblem p;
+  p.workpiece.shape = PolygonShape{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
+  p.workpiece.com = {0, 0};
+  p.candidates = arc_length_candidates(p.workpiece.shape, 8);
+  EXPECT_EQ(candidate_symmetry(p).permutations.size(), 7u);  // the dihedral group of order 8, no wrenches
+  p.wrenches.kind = WrenchSet::Kind::kList;
+  p.wrenches.rows = exact::Mat<Q>(1, 3);
+  p.wrenches.rows << 0, -1, 0;
+  const CandidateSymmetry s = candidate_symmetry(p);
+  ASSERT_EQ(s.permutations.size(), 1u);  // x -> -x maps (0, -1, 0) to itself
+  // Candidates 0 (-1/2, -1) and 1 (1/2, -1) are mirror images: {1, 2} is the image of {0, 7}.
+  EXPECT_TRUE(s.is_canonical({0, 7}));
+  EXPECT_FALSE(s.is_canonical({1, 2}));
+}
+
+}  // namespace
+}  // namespace contactcert::solvers
+
+namespace contactcert::solvers {
+namespace {
+
+/// The pentagon of Figure 10 with mu = 1/5 and 8 candidates, strongly stable under gravity required.
+DesignProblem pentagon_problem() {
+  DesignProblem p;
+  const std::vector<geometry::Point2> V{{0, 0}, {2, 0}, {2, 1}, {1, 2}, {0, 2}};
+  p.workpiece.shape = geometry::PolygonShape{V};
+  p.workpiece.com = geometry::polygon_centroid(V);
+  p.workpiece.inertia_per_mass = geometry::polygon_inertia_per_mass(V, p.workpiece.com);
+  p.mu_s = p.mu_k = geometry::Q(1, 5);
+  p.candidates = arc_length_candidates(p.workpiece.shape, 8);
+  p.wrenches.kind = WrenchSet::Kind::kList;
+  p.wrenches.rows = exact::Mat<geometry::Q>(1, 3);
+  p.wrenches.rows << 0, -1, 0;
+  return p;
+}
+
+TEST(DesignEvaluate, VerdictsAgreeWithStrongStabilityOnEveryPlacement) {
+  const DesignProblem p = pentagon_problem();
+  const CandidateSymmetry none;
+  exact::Vec<geometry::Q> g(3);
+  g << 0, -1, 0;
+  int accepted = 0, pruned_weak = 0;
+  for (long i = 0; i < placement_count(8, 3); ++i) {
+    const Placement pl = placement_at(i, 8, 3);
+    const Evaluation e = evaluate_placement(p, none, pl);
+    const auto direct = strong_stability<geometry::Q>(placement_scene(p, pl), g);
+    EXPECT_EQ(e.status == PlacementStatus::kAccepted, direct.verdict == StabilityVerdict::kStronglyStable) << i;
+    // The cheap weak-cone test only rejects placements that have no resting solution at all.
+    if (e.status == PlacementStatus::kNotWeaklyStable) {
+      EXPECT_EQ(direct.verdict, StabilityVerdict::kUnstable) << i;
+      ++pruned_weak;
+    }
+    accepted += e.status == PlacementStatus::kAccepted;
+    if (e.status == PlacementStatus::kAccepted) {
+      EXPECT_GT(e.figure, 0);  // a strongly stable g has a margin
+    }
+  }
+  EXPECT_GT(accepted, 0);
+  EXPECT_GT(pruned_weak, 0);
+}
+
+TEST(DesignEvaluate, AcceptedConesAreStronglyStableInside) {
+  DesignProblem p = pentagon_problem();
+  p.wrenches.kind = WrenchSet::Kind::kCone;
+  p.wrenches.rows = exact::Mat<geometry::Q>(2, 3);
+  p.wrenches.rows << 0, -1, 0, 1, -6, 0;
+  const CandidateSymmetry none;
+  int accepted = 0;
+  for (long i = 0; i < placement_count(8, 3); ++i) {
+    const Placement pl = placement_at(i, 8, 3);
+    if (evaluate_placement(p, none, pl).status != PlacementStatus::kAccepted) continue;
+    ++accepted;
+    for (int w : {1, 3}) {  // interior wrenches g1 + w g2 of the cone
+      const exact::Vec<geometry::Q> g = (p.wrenches.rows.row(0) + w * p.wrenches.rows.row(1)).transpose();
+      EXPECT_EQ(strong_stability<geometry::Q>(placement_scene(p, pl), g).verdict, StabilityVerdict::kStronglyStable)
+          << i;
+    }
+  }
+  EXPECT_GT(accepted, 0);
+}
+
+}  // namespace
+}  // namespace contactcert::solvers
