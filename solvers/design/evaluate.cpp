@@ -15,22 +15,6 @@ using exact::Mat;
 using exact::Q;
 using exact::Vec;
 
-/// The weak cone and every moving mode's non-empty wrench cone (the StableRegion of stable_region without its
-/// arrangement: the margin and the cone test need only the cones).
-StableRegion<Q> mode_cones(const geometry::PlanarScene& scene) {
-  StableRegion<Q> region;
-  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(scene.fixels.size()); ++i) region.touching.push_back(i);
-  region.weak = weakly_stable_cone<Q>(scene);
-  const ContactModel<Q> model = contact_model<Q>(scene);
-  for (const ModeString& m : moving_modes(scene.fixels.size())) {
-    geometry::FaceCone<Q> c = wrench_cone_face<Q>(scene, model, m, Route::kPaper);
-    if (is_empty_cone<Q>(c)) continue;
-    region.modes.push_back(m);
-    region.cones.push_back(std::move(c));
-  }
-  return region;
-}
-
 /// Does pos(generators) meet the cone at a point other than 0?
 bool meets_beyond_origin(const geometry::FaceCone<Q>& generated, const geometry::FaceCone<Q>& cone) {
   const geometry::NncForm<Q> both = geometry::nnc_form<Q>(geometry::intersection<Q>(generated, cone));
@@ -102,7 +86,7 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
     }
     const bool cone = problem.wrenches.kind == WrenchSet::Kind::kCone;
     if (cone || problem.rank == Rank::kMargin) {
-      const StableRegion<Q> region = mode_cones(scene);
+      const StableRegion<Q> region = mode_cones<Q>(scene);
       if (cone) {
         const geometry::FaceCone<Q> generated =
             geometry::to_face<Q>(geometry::SpanCone<Q>::from_rows(3, W, Mat<Q>(0, 3)));

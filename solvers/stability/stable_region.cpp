@@ -64,11 +64,27 @@ bool cell_in_cone(const geometry::SphereArrangement<T>& arr, const std::vector<i
 }  // namespace
 
 template <class T>
-StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route, const ModeTreeOptions& tree_options) {
+StableRegion<T> mode_cones(const geometry::PlanarScene& full, Route route, const ModeTreeOptions& tree_options) {
   StableRegion<T> out;
   const geometry::PlanarScene scene = touching_scene(full, &out.touching);
   out.weak = weakly_stable_cone<T>(scene);
   const ContactModel<T> model = contact_model<T>(scene);
+  const std::size_t k = scene.fixels.size();
+  const ModeTree<T> tree = walk_modes(motion_model<T>(scene), moving_alphabet(k), tree_options);
+  out.tree_nodes = tree.nodes;
+  for (const ModeString& m : tree.modes) {
+    if (m.text() == std::string(k, 'n')) continue;  // n..n is not a moving mode (strong_stability.h)
+    geometry::FaceCone<T> c = wrench_cone_face<T>(scene, model, m, route);
+    if (is_empty_cone<T>(c)) continue;
+    out.modes.push_back(m);
+    out.cones.push_back(std::move(c));
+  }
+  return out;
+}
+
+template <class T>
+StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route, const ModeTreeOptions& tree_options) {
+  StableRegion<T> out = mode_cones<T>(full, route, tree_options);
   std::vector<Mat<T>> rows;
   std::vector<RowBlock> blocks;  // the weak cone, then each moving mode's cone
   Index total = 0;
@@ -80,17 +96,7 @@ StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route, co
     }
   };
   add_rows(out.weak);
-  const std::size_t k = scene.fixels.size();
-  const ModeTree<T> tree = walk_modes(motion_model<T>(scene), moving_alphabet(k), tree_options);
-  out.tree_nodes = tree.nodes;
-  for (const ModeString& m : tree.modes) {
-    if (m.text() == std::string(k, 'n')) continue;  // n..n is not a moving mode (strong_stability.h)
-    geometry::FaceCone<T> c = wrench_cone_face<T>(scene, model, m, route);
-    if (is_empty_cone<T>(c)) continue;
-    out.modes.push_back(m);
-    add_rows(c);
-    out.cones.push_back(std::move(c));
-  }
+  for (const auto& c : out.cones) add_rows(c);
   Mat<T> normals(total, 3);
   Index at = 0;
   for (const auto& r : rows) {
@@ -115,6 +121,7 @@ StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route, co
 #define CONTACTCERT_STABLE_REGION_INSTANTIATE(T)                                      \
   template struct StableRegion<T>;                                                    \
   template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&); \
+  template StableRegion<T> mode_cones<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);           \
   template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);
 CONTACTCERT_STABLE_REGION_INSTANTIATE(double)
 CONTACTCERT_STABLE_REGION_INSTANTIATE(Q)

@@ -38,6 +38,12 @@ struct StableRegion {
 template <class T>
 geometry::FaceCone<T> weakly_stable_cone(const geometry::PlanarScene& touching_scene);
 
+/// The weak cone and the non-empty wrench cones of the moving modes of the touching fixels (a StableRegion without
+/// its arrangement: planes and cells empty), from the mode tree as stable_region.
+template <class T>
+StableRegion<T> mode_cones(const geometry::PlanarScene& scene, Route route = Route::kPaper,
+                           const ModeTreeOptions& tree = {});
+
 /// The wrench cones of every moving mode of the touching fixels and the labelled cells of wrench space. Only
 /// the kinematically feasible modes (mode_tree.h) have a non-empty cone (forces c = 0 put M vdot in it), so
 /// only theirs are computed.
@@ -48,6 +54,7 @@ StableRegion<T> stable_region(const geometry::PlanarScene& scene, Route route = 
 #define CONTACTCERT_STABLE_REGION_EXTERN(T)                                                       \
   extern template struct StableRegion<T>;                                                         \
   extern template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&);       \
+  extern template StableRegion<T> mode_cones<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);    \
   extern template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);
 CONTACTCERT_STABLE_REGION_EXTERN(double)
 CONTACTCERT_STABLE_REGION_EXTERN(Q)
