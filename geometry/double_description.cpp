@@ -48,14 +48,36 @@ void normalize_columns(Mat<T>& M) {
   }
 }
 
+// The adjacency work of a conversion against DdBudget::max_work and its deadline, checked every 2^20
+// units; `covered()` says how far the run got when a limit is hit.
+class WorkMeter {
+ public:
+  explicit WorkMeter(const DdBudget& budget) : budget_(budget) {}
+  template <class Covered>
+  void charge(std::uint64_t units, Covered covered) {
+    work_ += units;
+    if (work_ < next_check_) return;
+    next_check_ = work_ + (std::uint64_t{1} << 20);
+    if (work_ > budget_.max_work)
+      throw exact::BudgetExceeded(
+          "double description: more than " + std::to_string(budget_.max_work) + " units of adjacency work", covered());
+    if (budget_.deadline.expired())
+      throw exact::BudgetExceeded("double description: " + budget_.deadline.reached_text(), covered());
+  }
+
+ private:
+  const DdBudget& budget_;
+  std::uint64_t work_ = 0, next_check_ = 0;
+};
+
 // The double description iteration on a pointed cone { y in R^k : a_t . y <= 0 } whose rows have rank k,
 // in the ring R (exact/fraction_free.h). Rays and their zero sets (bitsets over processed rows) are kept
 // in flat arrays; the scratch lists are reused from row to row.
 template <class R>
 class DoubleDescription {
  public:
-  DoubleDescription(Index k, std::size_t rows, std::size_t max_rays)
-      : k_(k), words_((rows + 63) / 64), max_rays_(max_rays), common_(words_) {}
+  DoubleDescription(Index k, std::size_t rows, const DdBudget& budget)
+      : k_(k), rows_(rows), words_((rows + 63) / 64), budget_(budget), common_(words_) {}
 
   void add_initial_ray(const R* y, const std::vector<std::size_t>& zero_rows) {
     const std::size_t id = push_ray();
@@ -65,6 +87,7 @@ class DoubleDescription {
 
   // Intersects the current cone with { a . y <= 0 }; `t` is the row's position (its bit).
   void add_row(const R* a, std::size_t t) {
+    current_row_ = t;
     const std::size_t n = count_;
     if (values_.size() < n) values_.resize(n);
     plus_.clear();
@@ -88,6 +111,7 @@ class DoubleDescription {
     const std::size_t need = k_ >= 2 ? static_cast<std::size_t>(k_ - 2) : 0;
     const std::size_t first_created = count_;
     for (auto p : plus_) {
+      charge(minus_.size(), t);
       for (auto m : minus_) {
         // (bits_ may grow below: index it afresh for every pair.)
         const std::uint64_t* bp = &bits_[p * words_];
@@ -99,13 +123,15 @@ class DoubleDescription {
         }
         if (pop < need) continue;
         bool adjacent = true;
-        for (std::size_t r = 0; r < n && adjacent; ++r) {
+        std::size_t r = 0;
+        for (; r < n && adjacent; ++r) {
           if (r == p || r == m) continue;
           const std::uint64_t* br = &bits_[r * words_];
           bool subset = true;
           for (std::size_t w = 0; w < words_ && subset; ++w) subset = (common_[w] & ~br[w]) == 0;
           if (subset) adjacent = false;
         }
+        charge(r, t);
         if (!adjacent) continue;
         const std::size_t id = push_ray();
         rg::combine(&coord_[p * static_cast<size_t>(k_)], values_[p], &coord_[m * static_cast<size_t>(k_)], values_[m],
@@ -132,10 +158,17 @@ class DoubleDescription {
   const R* ray(std::size_t r) const { return &coord_[r * static_cast<size_t>(k_)]; }
 
  private:
+  void charge(std::size_t units, std::size_t t) {
+    meter_.charge(units, [&] { return covered(t); });
+  }
+  std::string covered(std::size_t t) const {
+    return std::to_string(t) + " of " + std::to_string(rows_) + " rows processed, " + std::to_string(count_) + " rays";
+  }
+
   std::size_t push_ray() {
-    if (count_ >= max_rays_)
-      throw exact::BudgetExceeded("double description: more than " + std::to_string(max_rays_) + " rays",
-                                  std::to_string(count_) + " rays");
+    if (count_ >= budget_.max_rays)
+      throw exact::BudgetExceeded("double description: more than " + std::to_string(budget_.max_rays) + " rays",
+                                  covered(current_row_));
     const std::size_t id = count_++;
     if (coord_.size() < count_ * static_cast<size_t>(k_)) coord_.resize(count_ * static_cast<size_t>(k_) * 2);
     if (bits_.size() < count_ * words_) bits_.resize(count_ * words_ * 2);
@@ -144,8 +177,11 @@ class DoubleDescription {
   }
 
   Index k_;
+  std::size_t rows_;
   std::size_t words_;
-  std::size_t max_rays_;
+  const DdBudget& budget_;
+  WorkMeter meter_{budget_};
+  std::size_t current_row_ = 0;
   std::size_t count_ = 0;
   std::vector<R> coord_;
   std::vector<std::uint64_t> bits_;
@@ -207,8 +243,11 @@ std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::ve
   std::vector<R> c(3);
   R x;
   bool full_rank = false;
+  WorkMeter meter(budget);
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (std::size_t j = i + 1; j < rows.size(); ++j) {
+      meter.charge(rows.size(),
+                   [&] { return std::to_string(i) + " of " + std::to_string(rows.size()) + " rows paired"; });
       const std::vector<R>&a = rows[i], &b = rows[j];
       for (std::size_t t = 0; t < 3; ++t) {  // c_t = a_{t+1} b_{t+2} - a_{t+2} b_{t+1}
         const std::size_t u = (t + 1) % 3, v = (t + 2) % 3;
@@ -289,7 +328,7 @@ std::optional<std::vector<std::vector<R>>> pointed_extreme_rays(const std::vecto
   const auto initial = simplicial_rays<R>(B, k);
   if (!initial) return std::nullopt;  // float path only: independent for the ring test, singular for the elimination
 
-  DoubleDescription<R> dd(k, rows.size(), budget.max_rays);
+  DoubleDescription<R> dd(k, rows.size(), budget);
   for (Index j = 0; j < k; ++j) {
     std::vector<std::size_t> zero_rows;
     for (Index i = 0; i < k; ++i)

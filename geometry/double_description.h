@@ -11,15 +11,22 @@
 #include <optional>
 #include <vector>
 
+#include "exact/deadline.h"
 #include "geometry/face_cone.h"
 #include "geometry/span_cone.h"
 
 namespace contactcert::geometry {
 
-/// Work limit of one conversion: the largest number of intermediate rays. Exceeding it throws
-/// exact::BudgetExceeded.
+/// Work limits of one conversion, checked inside the iteration where rays and work grow; exceeding
+/// one throws exact::BudgetExceeded (exit 3), saying how many rows were processed.
 struct DdBudget {
+  /// The largest number of intermediate rays.
   std::size_t max_rays = 2'000'000;
+  /// The largest adjacency work: candidate (plus, minus) pairs tested plus rays scanned by the
+  /// combinatorial test, summed over the run (some 10^8 per second: 2^33 is about half a minute).
+  std::uint64_t max_work = std::uint64_t{1} << 33;
+  /// Wall clock (--time-limit).
+  exact::Deadline deadline;
 };
 
 /// F^F of the paper's notation: a minimal face form of pos(rays) + span(lines). Each inequality row is

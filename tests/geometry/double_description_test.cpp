@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdint>
 #include <random>
 #include <type_traits>
@@ -12,6 +13,7 @@
 #include "exact/input_error.h"
 #include "exact/linalg.h"
 #include "geometry/canonical.h"
+#include "tests/geometry/polytope_cones.h"
 #include "tests/geometry/random_cones.h"
 #include "tests/reference/cdd_cone.h"
 
@@ -224,7 +226,32 @@ TEST(DoubleDescription, HugeCoordinatesAgainstCddlib) {
 TEST(DoubleDescription, BudgetIsEnforced) {
   std::mt19937_64 rng(3);
   const SpanCone<Q> C = random_span(rng, 8, 30, 0);
-  EXPECT_THROW(to_face(C, DdBudget{10}), exact::BudgetExceeded);
+  DdBudget budget;
+  budget.max_rays = 10;
+  EXPECT_THROW(to_face(C, budget), exact::BudgetExceeded);
+}
+
+// The 30-dimensional cross-polytope and cube (2^30 facets / rays): the work budget and the deadline
+// are checked inside the iteration, so both limits bite within a fraction of a second of being reached.
+TEST(DoubleDescription, GrowthBudgetsBiteOnThirtyDimensions) {
+  using Clock = std::chrono::steady_clock;
+  auto seconds_of = [](auto&& f) {
+    const auto start = Clock::now();
+    EXPECT_THROW(f(), exact::BudgetExceeded);
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  };
+  DdBudget timed;
+  timed.deadline = exact::Deadline::after(0.2);
+  EXPECT_LT(seconds_of([&] { to_face(testing::cross_polytope_span(30), timed); }), 2.0);
+  timed.deadline = exact::Deadline::after(0.2);
+  EXPECT_LT(seconds_of([&] { to_span(testing::cube_face(30), timed); }), 2.0);
+  DdBudget work;
+  work.max_work = std::uint64_t{1} << 24;
+  EXPECT_LT(seconds_of([&] { to_face(testing::cross_polytope_span(30), work); }), 2.0);
+  EXPECT_LT(seconds_of([&] { to_span(testing::cube_face(30), work); }), 2.0);
+  DdBudget rays;
+  rays.max_rays = 1000;
+  EXPECT_LT(seconds_of([&] { to_span(testing::cube_face(30), rays); }), 2.0);
 }
 
 }  // namespace
