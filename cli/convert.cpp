@@ -82,8 +82,8 @@ int run_convert(const ConvertOptions& opts) {
   budget.deadline = exact::Deadline::after(opts.common.time_limit);  // checked inside the conversion: exit 3
   if (opts.common.arith == "float") return run_float(in, opts, budget);
   // Exact (the verified path has nothing to check here: the conversion is exact and cheap in R^d).
-  FaceCone<Q> face = in.form == geometry::ConeInput::Form::kSpan ? geometry::to_face(in.span, budget) : in.face;
-  const geometry::NncForm<Q> n = geometry::nnc_form(face, budget);
+  const geometry::NncForm<Q> n = in.form == geometry::ConeInput::Form::kSpan ? geometry::nnc_form(in.span, budget)
+                                                                             : geometry::nnc_form(in.face, budget);
   if (opts.common.json) {
     nlohmann::json j = geometry::nnc_to_json(n);
     j["input"] = in.form == geometry::ConeInput::Form::kSpan ? "span" : "face";
@@ -91,7 +91,7 @@ int run_convert(const ConvertOptions& opts) {
     return 0;
   }
   std::ostream& os = std::cout;
-  os << "cone in R^" << face.dim << ", given in " << (in.form == geometry::ConeInput::Form::kSpan ? "span" : "face")
+  os << "cone in R^" << n.face.dim << ", given in " << (in.form == geometry::ConeInput::Form::kSpan ? "span" : "face")
      << " form\n";
   if (n.status == geometry::NncStatus::kEmpty) {
     os << "empty\n";

@@ -22,12 +22,16 @@ bool segments_intersect(const Point2& a, const Point2& b, const Point2& c, const
 std::string PolygonCheck::message() const {
   const std::string v = "vertex " + std::to_string(vertex);
   switch (defect) {
-    case PolygonDefect::kNone: return "a valid polygon";
-    case PolygonDefect::kTooFewVertices: return "at least 3 vertices";
-    case PolygonDefect::kRepeatedVertex: return v + " repeats the previous vertex; remove it";
+    case PolygonDefect::kNone:
+      return "a valid polygon";
+    case PolygonDefect::kTooFewVertices:
+      return "at least 3 vertices";
+    case PolygonDefect::kRepeatedVertex:
+      return v + " repeats the previous vertex; remove it";
     case PolygonDefect::kCollinearVertex:
       return v + " is collinear with its neighbours (degenerate polygon); remove it";
-    case PolygonDefect::kSelfIntersecting: return "a simple polygon, but the edge from " + v + " crosses another edge";
+    case PolygonDefect::kSelfIntersecting:
+      return "a simple polygon, but the edge from " + v + " crosses another edge";
     case PolygonDefect::kNotCounterClockwise:
       return "vertices in counter-clockwise order (the signed area is negative); reverse them";
   }

@@ -52,7 +52,14 @@ struct Workpiece {
 };
 
 /// Why a vertex list is not a usable simple counter-clockwise polygon.
-enum class PolygonDefect { kNone, kTooFewVertices, kRepeatedVertex, kCollinearVertex, kSelfIntersecting, kNotCounterClockwise };
+enum class PolygonDefect {
+  kNone,
+  kTooFewVertices,
+  kRepeatedVertex,
+  kCollinearVertex,
+  kSelfIntersecting,
+  kNotCounterClockwise
+};
 
 /// The first defect of a vertex list (kNone for a simple CCW polygon without collinear consecutive
 /// vertices), and the index of the offending vertex.
