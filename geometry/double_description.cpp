@@ -171,6 +171,15 @@ class DoubleDescription {
   [[gnu::always_inline]] inline void new_rays(std::size_t t, std::size_t n) {
     const std::size_t free_dim = static_cast<std::size_t>(k_) - lines_.size();
     const std::size_t need = free_dim >= 2 ? free_dim - 2 : 0;
+    // For each earlier row, the rays tight on it (row t is tight on no plus or minus ray).
+    tight_.resize(t);
+    for (auto& list : tight_) list.clear();
+    for (std::size_t r = 0; r < n; ++r)
+      for (std::size_t w = 0; w < words_; ++w)
+        for (std::uint64_t b = bits_[r * words_ + w]; b != 0; b &= b - 1) {
+          const std::size_t u = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
+          if (u < t) tight_[u].push_back(static_cast<std::uint32_t>(r));
+        }
     for (auto p : plus_) {
       charge(minus_.size(), t);
       for (auto m : minus_) {
@@ -183,16 +192,26 @@ class DoubleDescription {
           pop += static_cast<std::size_t>(std::popcount(common_[w]));
         }
         if (pop < need) continue;
+        // A ray whose zero set holds the common one is tight on each common row: only the rays tight on
+        // the common row with the fewest such rays need a look (every ray if there is no common row).
+        const std::vector<std::uint32_t>* scan = nullptr;
+        for (std::size_t w = 0; w < words_; ++w)
+          for (std::uint64_t b = common_[w]; b != 0; b &= b - 1) {
+            const std::vector<std::uint32_t>& list = tight_[w * 64 + static_cast<std::size_t>(std::countr_zero(b))];
+            if (scan == nullptr || list.size() < scan->size()) scan = &list;
+          }
         bool adjacent = true;
-        std::size_t r = 0;
-        for (; r < n && adjacent; ++r) {
+        std::size_t looked = 0;
+        const std::size_t candidates = scan != nullptr ? scan->size() : n;
+        for (; looked < candidates && adjacent; ++looked) {
+          const std::size_t r = scan != nullptr ? (*scan)[looked] : looked;
           if (r == p || r == m) continue;
           const std::uint64_t* br = &bits_[r * words_];
           bool subset = true;
           for (std::size_t w = 0; w < words_ && subset; ++w) subset = (common_[w] & ~br[w]) == 0;
           if (subset) adjacent = false;
         }
-        charge(r, t);
+        charge(looked, t);
         if (!adjacent) continue;
         const std::size_t id = push_ray(t);
         rg::combine(&coord_[p * static_cast<size_t>(k_)], values_[p], &coord_[m * static_cast<size_t>(k_)], values_[m],
@@ -227,7 +246,7 @@ class DoubleDescription {
   }
 
   std::size_t push_ray(std::size_t t) {
-    if (count_ >= budget_.max_rays)
+    if (count_ >= budget_.max_rays || count_ >= UINT32_MAX)  // (tight_ holds 32-bit ray indices)
       throw exact::BudgetExceeded("double description: more than " + std::to_string(budget_.max_rays) + " rays",
                                   covered(t));
     const std::size_t id = count_++;
@@ -251,6 +270,7 @@ class DoubleDescription {
   std::vector<R> values_;
   std::vector<std::size_t> plus_, minus_, keep_;
   std::vector<std::uint64_t> common_;
+  std::vector<std::vector<std::uint32_t>> tight_;
   std::vector<R> tmp_;
 };
 
