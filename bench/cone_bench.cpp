@@ -37,20 +37,28 @@ namespace testing = contactcert::geometry::testing;
 
 constexpr int kInstances = 20;
 
-std::vector<SpanCone<Q>> random_cones(long dim, long gens) {
-  std::mt19937_64 rng(static_cast<unsigned long>(1000 * dim + gens));
+// kInstances random integer matrices (entries in [-20, 20]) with first column sign * (|x| + 1): for
+// sign 1 generators of pointed cones over random polytopes (otherwise most random cones with many
+// generators are the whole space), for sign -1 facets of a cone with (1, 0, ..., 0) inside.
+std::vector<Mat<Q>> random_rows(long dim, long rows, unsigned long seed, long sign) {
+  std::mt19937_64 rng(seed);
   std::uniform_int_distribution<long> u(-20, 20);
-  std::vector<SpanCone<Q>> out;
+  std::vector<Mat<Q>> out;
   for (int i = 0; i < kInstances; ++i) {
-    Mat<Q> R(gens, dim);
-    // Pointed cones over random polytopes: first coordinate in [1, 20] (otherwise most random cones
-    // with many generators are the whole space).
-    for (long r = 0; r < gens; ++r) {
-      for (long j = 0; j < dim; ++j) R(r, j) = Q(u(rng));
-      R(r, 0) = abs(R(r, 0)) + 1;
+    Mat<Q> M(rows, dim);
+    for (long r = 0; r < rows; ++r) {
+      for (long j = 0; j < dim; ++j) M(r, j) = Q(u(rng));
+      M(r, 0) = sign * (abs(M(r, 0)) + 1);
     }
-    out.push_back(SpanCone<Q>::from_rows(dim, R, Mat<Q>(0, dim)));
+    out.push_back(M);
   }
+  return out;
+}
+
+std::vector<SpanCone<Q>> random_cones(long dim, long gens) {
+  std::vector<SpanCone<Q>> out;
+  for (const Mat<Q>& R : random_rows(dim, gens, static_cast<unsigned long>(1000 * dim + gens), 1))
+    out.push_back(SpanCone<Q>::from_rows(dim, R, Mat<Q>(0, dim)));
   return out;
 }
 
@@ -96,17 +104,9 @@ struct Workload {
 };
 
 std::vector<FaceCone<Q>> random_facets(long dim, long rows) {
-  std::mt19937_64 rng(static_cast<unsigned long>(7 * dim + rows));
-  std::uniform_int_distribution<long> u(-20, 20);
   std::vector<FaceCone<Q>> out;
-  for (int i = 0; i < kInstances; ++i) {
-    Mat<Q> F(rows, dim);
-    for (long r = 0; r < rows; ++r) {
-      for (long j = 0; j < dim; ++j) F(r, j) = Q(u(rng));
-      F(r, 0) = -abs(F(r, 0)) - 1;  // (1, 0, ..., 0) is interior: a full-dimensional pointed cone, mostly
-    }
+  for (const Mat<Q>& F : random_rows(dim, rows, static_cast<unsigned long>(7 * dim + rows), -1))
     out.push_back(FaceCone<Q>::from_rows(dim, F, Mat<Q>(0, dim), Mat<Q>(0, dim)));
-  }
   return out;
 }
 

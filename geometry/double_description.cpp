@@ -430,6 +430,32 @@ CONTACTCERT_DD_RING_INSTANTIATE(exact::Mpfr)
 CONTACTCERT_DD_RING_INSTANTIATE(exact::Interval)
 #undef CONTACTCERT_DD_RING_INSTANTIATE
 
+namespace {
+
+// One side of a cone given by rows G (generators, or inequalities) and L (lines, or equalities): the
+// other side's minimal form by the double description, and the minimal form of this side picked from
+// the given rows by incidence (rows vanishing on every dual generator join L).
+template <class R>
+struct RingPair {
+  RingGenerators<R> dual;
+  std::vector<std::vector<R>> extreme, lineal;
+};
+
+template <class R>
+RingPair<R> ring_pair(std::vector<std::vector<R>> G, std::vector<std::vector<R>> L, Index n, const DdBudget& budget) {
+  sort_rows(G);
+  sort_rows(L);
+  RingPair<R> out;
+  out.dual = cone_generators<R>(G, L, n, budget);
+  const Incidence inc = sort_by_incidence<R>(G, out.dual.rays, n, budget);
+  out.extreme = pick(G, inc.extreme);
+  out.lineal = std::move(L);
+  for (auto i : inc.lineal) out.lineal.push_back(G[i]);
+  return out;
+}
+
+}  // namespace
+
 // Facets of C = pos(rays) + span(lines) are the extreme rays of its polar { f : R f <= 0, L f = 0 }; the
 // polar's lineality space is the orthogonal complement of C's linear hull (the equalities). The
 // iteration runs in std::int64_t and restarts in Z if a number outgrows it (T = Q), in T for a float T.
@@ -459,17 +485,11 @@ template <class T>
 ConePair<T> both_forms(const SpanCone<T>& cone, const DdBudget& budget) {
   const Index n = cone.dim;
   return exact::with_exact_ring<T>([&]<class R>() {
-    std::vector<std::vector<R>> G = rg::to_ring_rows<R>(cone.rays), L = rg::to_ring_rows<R>(cone.lines);
-    sort_rows(G);
-    sort_rows(L);
-    const RingGenerators<R> polar = cone_generators<R>(G, L, n, budget);
-    // The minimal generators are among the given ones; rays vanishing on every facet are lines.
-    const Incidence inc = sort_by_incidence<R>(G, polar.rays, n, budget);
-    for (auto i : inc.lineal) L.push_back(G[i]);
+    const RingPair<R> p = ring_pair<R>(rg::to_ring_rows<R>(cone.rays), rg::to_ring_rows<R>(cone.lines), n, budget);
     ConePair<T> out;
-    out.face = FaceCone<T>::from_rows(n, rg::to_field_rows<T>(polar.rays, n), rg::to_field_rows<T>(polar.lines, n),
+    out.face = FaceCone<T>::from_rows(n, rg::to_field_rows<T>(p.dual.rays, n), rg::to_field_rows<T>(p.dual.lines, n),
                                       Mat<T>(0, n));
-    out.span = SpanCone<T>::from_rows(n, rg::to_field_rows<T>(pick(G, inc.extreme), n), rg::to_field_rows<T>(L, n));
+    out.span = SpanCone<T>::from_rows(n, rg::to_field_rows<T>(p.extreme, n), rg::to_field_rows<T>(p.lineal, n));
     return out;
   });
 }
@@ -478,19 +498,13 @@ template <class T>
 ConePair<T> both_forms(const FaceCone<T>& cone, const DdBudget& budget) {
   const Index n = cone.dim;
   return exact::with_exact_ring<T>([&]<class R>() {
-    std::vector<std::vector<R>> A = rg::to_ring_rows<R>(cone.inequalities), S = rg::to_ring_rows<R>(cone.strict),
-                                E = rg::to_ring_rows<R>(cone.equalities);
+    std::vector<std::vector<R>> A = rg::to_ring_rows<R>(cone.inequalities), S = rg::to_ring_rows<R>(cone.strict);
     A.insert(A.end(), S.begin(), S.end());
-    sort_rows(A);
-    sort_rows(E);
-    const RingGenerators<R> g = cone_generators<R>(A, E, n, budget);
-    // The facets are among the given rows; rows vanishing on every extreme ray are implicit equalities.
-    const Incidence inc = sort_by_incidence<R>(A, g.rays, n, budget);
-    for (auto i : inc.lineal) E.push_back(A[i]);
+    const RingPair<R> p = ring_pair<R>(std::move(A), rg::to_ring_rows<R>(cone.equalities), n, budget);
     ConePair<T> out;
-    out.span = SpanCone<T>::from_rows(n, rg::to_field_rows<T>(g.rays, n), rg::to_field_rows<T>(g.lines, n));
-    out.face = FaceCone<T>::from_rows(n, rg::to_field_rows<T>(pick(A, inc.extreme), n), rg::to_field_rows<T>(E, n),
-                                      Mat<T>(0, n));
+    out.span = SpanCone<T>::from_rows(n, rg::to_field_rows<T>(p.dual.rays, n), rg::to_field_rows<T>(p.dual.lines, n));
+    out.face =
+        FaceCone<T>::from_rows(n, rg::to_field_rows<T>(p.extreme, n), rg::to_field_rows<T>(p.lineal, n), Mat<T>(0, n));
     return out;
   });
 }
