@@ -1,6 +1,8 @@
 // Conversion between span and face forms by the double description method (Motzkin et al.; the
 // Fukuda-Prodon variant with the combinatorial adjacency test). One algorithm for both directions:
-// the facets of C are the extreme rays of its polar {f : f . g <= 0 for all g in C}.
+// the facets of C are the extreme rays of its polar {f : f . g <= 0 for all g in C}. The iteration
+// starts from the whole space (lines only) and removes a line per independent row, so equalities,
+// lineality and a lower dimension are found exactly on the way, in the original coordinates.
 // Exact path (T = Q): the iteration runs on primitive integer rows (fraction-free), in checked 64-bit
 // integers and again in GMP integers if a number outgrows them (exact/fraction_free.h); float path
 // (T = double): the same code on doubles with the tolerance sign test of NumberTraits<double>.
