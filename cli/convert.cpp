@@ -47,12 +47,12 @@ void print_rows(std::ostream& os, const char* title, const Mat<Q>& M, const char
   }
 }
 
-int run_float(const geometry::ConeInput& in, const ConvertOptions& opts) {
+int run_float(const geometry::ConeInput& in, const ConvertOptions& opts, const geometry::DdBudget& budget) {
   nlohmann::json j;
   if (in.form == geometry::ConeInput::Form::kSpan) {
     const auto s =
         SpanCone<double>::from_rows(in.span.dim, exact::to_double(in.span.rays), exact::to_double(in.span.lines));
-    const FaceCone<double> f = geometry::canonical(geometry::to_face(s));
+    const FaceCone<double> f = geometry::canonical(geometry::to_face(s, budget));
     j = {{"input", "span"},
          {"arith", "float"},
          {"dim", f.dim},
@@ -60,7 +60,7 @@ int run_float(const geometry::ConeInput& in, const ConvertOptions& opts) {
   } else {
     const auto c = FaceCone<double>::from_rows(in.face.dim, exact::to_double(in.face.inequalities),
                                                exact::to_double(in.face.equalities), exact::to_double(in.face.strict));
-    const geometry::NncForm<double> n = geometry::nnc_form(c);
+    const geometry::NncForm<double> n = geometry::nnc_form(c, budget);
     j = {{"input", "face"},
          {"arith", "float"},
          {"dim", c.dim},
@@ -78,10 +78,12 @@ int run_float(const geometry::ConeInput& in, const ConvertOptions& opts) {
 
 int run_convert(const ConvertOptions& opts) {
   const geometry::ConeInput in = geometry::read_cone(exact::JsonInput::load(opts.file));
-  if (opts.common.arith == "float") return run_float(in, opts);
+  geometry::DdBudget budget;
+  budget.deadline = exact::Deadline::after(opts.common.time_limit);  // checked inside the conversion: exit 3
+  if (opts.common.arith == "float") return run_float(in, opts, budget);
   // Exact (the verified path has nothing to check here: the conversion is exact and cheap in R^d).
-  FaceCone<Q> face = in.form == geometry::ConeInput::Form::kSpan ? geometry::to_face(in.span) : in.face;
-  const geometry::NncForm<Q> n = geometry::nnc_form(face);
+  const geometry::NncForm<Q> n = in.form == geometry::ConeInput::Form::kSpan ? geometry::nnc_form(in.span, budget)
+                                                                             : geometry::nnc_form(in.face, budget);
   if (opts.common.json) {
     nlohmann::json j = geometry::nnc_to_json(n);
     j["input"] = in.form == geometry::ConeInput::Form::kSpan ? "span" : "face";
@@ -89,7 +91,7 @@ int run_convert(const ConvertOptions& opts) {
     return 0;
   }
   std::ostream& os = std::cout;
-  os << "cone in R^" << face.dim << ", given in " << (in.form == geometry::ConeInput::Form::kSpan ? "span" : "face")
+  os << "cone in R^" << n.face.dim << ", given in " << (in.form == geometry::ConeInput::Form::kSpan ? "span" : "face")
      << " form\n";
   if (n.status == geometry::NncStatus::kEmpty) {
     os << "empty\n";

@@ -5,7 +5,9 @@
 namespace contactcert::geometry {
 namespace {
 
-std::string text(const Point2& p) { return std::string("(") + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")"; }
+std::string text(const Point2& p) {
+  return std::string("(") + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")";
+}
 
 FrameResult failure(FrameStatus s, std::string message) { return {s, {}, std::move(message)}; }
 
@@ -26,7 +28,9 @@ FrameResult disk_frame(const DiskShape& disk, const Point2& f) {
   const Q d2 = norm2(d);
   const Q r2 = disk.radius * disk.radius;
   const int s = sgn(Q(d2 - r2));
-  if (s < 0) return failure(FrameStatus::kInsideWorkpiece, "fixel at " + text(f) + " lies inside the disk; move it onto or outside the boundary");
+  if (s < 0)
+    return failure(FrameStatus::kInsideWorkpiece,
+                   "fixel at " + text(f) + " lies inside the disk; move it onto or outside the boundary");
   if (s == 0) return {FrameStatus::kOk, {f, disk.center - f, Q(0)}, {}};
   Q len;
   if (!rational_sqrt(d2, len))
@@ -43,7 +47,8 @@ FrameResult polygon_frame(const std::vector<Point2>& V, const Point2& f) {
   const std::size_t n = V.size();
   const ShapeLocation where = locate_in_shape(PolygonShape{V}, f);
   if (where == ShapeLocation::kInside)
-    return failure(FrameStatus::kInsideWorkpiece, "fixel at " + text(f) + " lies inside the polygon; move it onto or outside the boundary");
+    return failure(FrameStatus::kInsideWorkpiece,
+                   "fixel at " + text(f) + " lies inside the polygon; move it onto or outside the boundary");
   if (where == ShapeLocation::kBoundary) {
     for (std::size_t i = 0; i < n; ++i)
       if (V[i] == f)
@@ -77,8 +82,9 @@ FrameResult polygon_frame(const std::vector<Point2>& V, const Point2& f) {
   }
   if (!unique)
     return failure(FrameStatus::kClosestNotUnique,
-                   "fixel at " + text(f) + " is equally close to two points of the polygon, so its frame is not "
-                   "defined; move it or give an explicit contact {point, normal, gap}");
+                   "fixel at " + text(f) +
+                       " is equally close to two points of the polygon, so its frame is not "
+                       "defined; move it or give an explicit contact {point, normal, gap}");
   return {FrameStatus::kOk, {p, p - f, best}, {}};
 }
 
@@ -103,7 +109,8 @@ std::string check_polygon_normal(const std::vector<Point2>& V, const Point2& p, 
     if (sgn(Q(cross(e, p - V[i]))) != 0) continue;
     const Point2 in = perp(e);
     if (sgn(Q(cross(in, nrm))) != 0 || sgn(Q(dot(in, nrm))) <= 0)
-      return "a normal perpendicular to edge " + std::to_string(i) + " and pointing into the polygon, a positive multiple of " + text(in);
+      return "a normal perpendicular to edge " + std::to_string(i) +
+             " and pointing into the polygon, a positive multiple of " + text(in);
     return {};
   }
   return "a point on the polygon boundary";
@@ -124,7 +131,8 @@ FrameResult frame_from_contact(const Shape& shape, const Point2& point, const Po
   if (const auto* d = std::get_if<DiskShape>(&shape)) {
     const Point2 in = d->center - point;
     if (sgn(Q(cross(in, normal))) != 0 || sgn(Q(dot(in, normal))) <= 0)
-      return failure(FrameStatus::kNormalNotUnique, "a normal pointing at the disk centre, a positive multiple of " + text(in));
+      return failure(FrameStatus::kNormalNotUnique,
+                     "a normal pointing at the disk centre, a positive multiple of " + text(in));
   } else {
     const std::string why = check_polygon_normal(std::get<PolygonShape>(shape).vertices, point, normal);
     if (!why.empty()) return failure(FrameStatus::kNormalNotUnique, why);

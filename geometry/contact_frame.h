@@ -12,9 +12,9 @@ namespace contactcert::geometry {
 
 /// One contact frame: the workpiece point, the (non-unit) inward normal, and the squared gap.
 struct ContactFrame {
-  Point2 point;      ///< p_i, on the workpiece boundary
-  Point2 normal;     ///< n_i, pointing into the workpiece; any positive length
-  Q gap_squared;     ///< (distance from the fixel to p_i)^2; exact even when the gap is irrational
+  Point2 point;   ///< p_i, on the workpiece boundary
+  Point2 normal;  ///< n_i, pointing into the workpiece; any positive length
+  Q gap_squared;  ///< (distance from the fixel to p_i)^2; exact even when the gap is irrational
   bool touching() const { return sgn(gap_squared) == 0; }
   Point2 tangent() const { return perp(normal); }  ///< t_i = (-n_iy, n_ix)
 };

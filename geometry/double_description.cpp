@@ -4,7 +4,6 @@
 #include <bit>
 #include <cstdint>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -12,7 +11,6 @@
 #include "exact/fraction_free.h"
 #include "exact/input_error.h"
 #include "exact/ladder_numbers.h"
-#include "exact/linalg.h"
 
 namespace contactcert::geometry {
 namespace {
@@ -23,48 +21,102 @@ using exact::is_zero;
 namespace rg = exact::ring;
 using exact::Ring;
 
-template <class T>
-Mat<T> multiply(const Mat<T>& A, const Mat<T>& B) {
-  Mat<T> C = Mat<T>::Zero(A.rows(), B.cols());
-  for (Index i = 0; i < A.rows(); ++i)
-    for (Index l = 0; l < A.cols(); ++l) {
-      if (is_zero(A(i, l))) continue;
-      for (Index j = 0; j < B.cols(); ++j) C(i, j) += A(i, l) * B(l, j);
-    }
-  return C;
+// -x, without a negative zero in a float ring (0 - x).
+template <class R>
+R negated(const R& x) {
+  return R(0) - x;
 }
 
-// Scales the columns of M to primitive integers (Q) or unit max-norm (double); the cone described in
-// the new coordinates is unchanged up to positive scaling of each coordinate.
-template <class T>
-void normalize_columns(Mat<T>& M) {
-  using R = Ring<T>;
-  std::vector<T> col(static_cast<size_t>(M.rows()));
-  std::vector<R> r(static_cast<size_t>(M.rows()));
-  for (Index j = 0; j < M.cols(); ++j) {
-    for (Index i = 0; i < M.rows(); ++i) col[static_cast<size_t>(i)] = M(i, j);
-    rg::to_ring(col.data(), M.rows(), r.data());
-    for (Index i = 0; i < M.rows(); ++i) M(i, j) = rg::to_field<T>(r[static_cast<size_t>(i)]);
+// The adjacency work of a conversion against DdBudget::max_work and its deadline, checked every 2^20
+// units; `covered()` says how far the run got when a limit is hit.
+class WorkMeter {
+ public:
+  explicit WorkMeter(const DdBudget& budget) : budget_(budget) {}
+  template <class Covered>
+  void charge(std::uint64_t units, Covered covered) {
+    work_ += units;
+    if (work_ < next_check_) return;
+    next_check_ = work_ + (std::uint64_t{1} << 20);
+    if (work_ > budget_.max_work)
+      throw exact::BudgetExceeded(
+          "double description: more than " + std::to_string(budget_.max_work) + " units of adjacency work", covered());
+    if (budget_.deadline.expired())
+      throw exact::BudgetExceeded("double description: " + budget_.deadline.reached_text(), covered());
   }
-}
 
-// The double description iteration on a pointed cone { y in R^k : a_t . y <= 0 } whose rows have rank k,
-// in the ring R (exact/fraction_free.h). Rays and their zero sets (bitsets over processed rows) are kept
-// in flat arrays; the scratch lists are reused from row to row.
+ private:
+  const DdBudget& budget_;
+  std::uint64_t work_ = 0, next_check_ = 0;
+};
+
+// The double description iteration on { y in R^k : a . y <= 0 (inequality rows), a . y = 0 (equality
+// rows) } in the ring R (exact/fraction_free.h), started from R^k itself: k lines, no rays. A row that is
+// not orthogonal to every line removes one line l (reduce_lineality): the other lines and the rays move
+// along l onto the row's hyperplane (their values on earlier rows stay: l is orthogonal to those rows),
+// and for an inequality -sign(a . l) l becomes a ray, tight on every earlier row. A row orthogonal to
+// every line is a step of Motzkin's iteration on the rays (add_row), new rays from adjacent (plus, minus)
+// pairs by the combinatorial test (Fukuda-Prodon). Rays and their zero sets (bitsets over processed rows)
+// are kept in flat arrays; the scratch lists are reused from row to row.
 template <class R>
 class DoubleDescription {
  public:
-  DoubleDescription(Index k, std::size_t rows, std::size_t max_rays)
-      : k_(k), words_((rows + 63) / 64), max_rays_(max_rays), common_(words_) {}
-
-  void add_initial_ray(const R* y, const std::vector<std::size_t>& zero_rows) {
-    const std::size_t id = push_ray();
-    std::copy(y, y + k_, &coord_[id * static_cast<size_t>(k_)]);
-    for (auto t : zero_rows) bits_[id * words_ + t / 64] |= std::uint64_t{1} << (t % 64);
+  DoubleDescription(Index k, std::size_t rows, const DdBudget& budget)
+      : k_(k), rows_(rows), words_((rows + 63) / 64), budget_(budget), common_(words_), tmp_(static_cast<size_t>(k)) {
+    for (Index i = 0; i < k; ++i) {
+      lines_.emplace_back(static_cast<size_t>(k), R(0));
+      lines_.back()[static_cast<size_t>(i)] = R(1);
+    }
   }
 
-  // Intersects the current cone with { a . y <= 0 }; `t` is the row's position (its bit).
-  void add_row(const R* a, std::size_t t) {
+  // If some line l has a . l != 0: intersects the cone with { a . y <= 0 } (or = 0) by removing l, and
+  // returns true; false (nothing done) if a is orthogonal to every line.
+  bool reduce_lineality(const R* a, bool equality) {
+    line_values_.resize(lines_.size());
+    std::size_t piv = lines_.size();
+    for (std::size_t i = 0; i < lines_.size(); ++i) {
+      rg::dot(a, lines_[i].data(), k_, line_values_[i]);
+      if (rg::sign(line_values_[i]) != 0 &&
+          (piv == lines_.size() || rg::better_pivot(line_values_[i], line_values_[piv])))
+        piv = i;
+    }
+    if (piv == lines_.size()) return false;
+    const std::size_t t = processed_++;
+    std::vector<R> l = std::move(lines_[piv]);
+    const R al = line_values_[piv];
+    lines_.erase(lines_.begin() + static_cast<std::ptrdiff_t>(piv));
+    line_values_.erase(line_values_.begin() + static_cast<std::ptrdiff_t>(piv));
+    // y <- (a . l) y - (a . y) l: a . y = 0 afterwards (times -1 for a ray when a . l < 0).
+    for (std::size_t i = 0; i < lines_.size(); ++i) {
+      if (rg::sign(line_values_[i]) == 0) continue;
+      rg::combine(l.data(), al, lines_[i].data(), line_values_[i], tmp_.data(), k_);
+      lines_[i].swap(tmp_);
+      rg::normalize(lines_[i].data(), k_);
+    }
+    R v;
+    for (std::size_t r = 0; r < count_; ++r) {
+      R* y = &coord_[r * static_cast<size_t>(k_)];
+      rg::dot(a, y, k_, v);
+      set_bit(r, t);
+      if (rg::sign(v) == 0) continue;
+      rg::combine(l.data(), al, y, v, tmp_.data(), k_);
+      if (rg::sign(al) < 0)
+        for (R& x : tmp_) x = negated(x);
+      std::copy(tmp_.begin(), tmp_.end(), y);
+      rg::normalize(y, k_);
+    }
+    if (!equality) {
+      const std::size_t id = push_ray(t);
+      R* y = &coord_[id * static_cast<size_t>(k_)];
+      for (Index j = 0; j < k_; ++j)
+        y[j] = rg::sign(al) > 0 ? negated(l[static_cast<size_t>(j)]) : l[static_cast<size_t>(j)];
+      for (std::size_t u = 0; u < t; ++u) set_bit(id, u);  // l is orthogonal to every earlier row
+    }
+    return true;
+  }
+
+  // Intersects the current cone with { a . y <= 0 } (or = 0) for a row orthogonal to every line.
+  void add_row(const R* a, bool equality) {
+    const std::size_t t = processed_++;
     const std::size_t n = count_;
     if (values_.size() < n) values_.resize(n);
     plus_.clear();
@@ -75,19 +127,61 @@ class DoubleDescription {
       const int s = rg::sign(values_[r]);
       if (s > 0) {
         plus_.push_back(r);
+      } else if (s < 0) {
+        minus_.push_back(r);
+        if (!equality) keep_.push_back(r);
       } else {
-        if (s < 0)
-          minus_.push_back(r);
-        else
-          bits_[r * words_ + t / 64] |= std::uint64_t{1} << (t % 64);
+        set_bit(r, t);
         keep_.push_back(r);
       }
     }
-    if (plus_.empty()) return;
-    // New rays from adjacent (plus, minus) pairs: combinatorial test (Fukuda-Prodon).
-    const std::size_t need = k_ >= 2 ? static_cast<std::size_t>(k_ - 2) : 0;
+    if (plus_.empty() && (!equality || minus_.empty())) return;
     const std::size_t first_created = count_;
+    if (has_popcnt())
+      new_rays_popcnt(t, n);
+    else
+      new_rays(t, n);
+    compact(first_created);
+  }
+
+  std::size_t count() const { return count_; }
+  const R* ray(std::size_t r) const { return &coord_[r * static_cast<size_t>(k_)]; }
+  const std::vector<std::vector<R>>& lines() const { return lines_; }
+
+ private:
+  // The CPU's popcount instruction (x86-64 before SSE4.2 lacks it: the generic build calls a software
+  // routine, 3/4 of the time on degenerate inputs), checked once.
+  static bool has_popcnt() {
+#if defined(__x86_64__) && defined(__GNUC__)
+    static const bool yes = (__builtin_cpu_init(), __builtin_cpu_supports("popcnt"));
+    return yes;
+#else
+    return false;
+#endif
+  }
+#if defined(__x86_64__) && defined(__GNUC__)
+  [[gnu::target("popcnt")]] void new_rays_popcnt(std::size_t t, std::size_t n) { new_rays(t, n); }
+#else
+  void new_rays_popcnt(std::size_t t, std::size_t n) { new_rays(t, n); }
+#endif
+
+  // New rays from adjacent (plus, minus) pairs of the n rays before row t: combinatorial test
+  // (Fukuda-Prodon). The 2-face of an adjacent pair has dimension 2 + #lines, so its rows have rank
+  // k - 2 - #lines at least. (Inlined into both CPU variants.)
+  [[gnu::always_inline]] inline void new_rays(std::size_t t, std::size_t n) {
+    const std::size_t free_dim = static_cast<std::size_t>(k_) - lines_.size();
+    const std::size_t need = free_dim >= 2 ? free_dim - 2 : 0;
+    // For each earlier row, the rays tight on it (row t is tight on no plus or minus ray).
+    tight_.resize(t);
+    for (auto& list : tight_) list.clear();
+    for (std::size_t r = 0; r < n; ++r)
+      for (std::size_t w = 0; w < words_; ++w)
+        for (std::uint64_t b = bits_[r * words_ + w]; b != 0; b &= b - 1) {
+          const std::size_t u = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
+          if (u < t) tight_[u].push_back(static_cast<std::uint32_t>(r));
+        }
     for (auto p : plus_) {
+      charge(minus_.size(), t);
       for (auto m : minus_) {
         // (bits_ may grow below: index it afresh for every pair.)
         const std::uint64_t* bp = &bits_[p * words_];
@@ -98,24 +192,39 @@ class DoubleDescription {
           pop += static_cast<std::size_t>(std::popcount(common_[w]));
         }
         if (pop < need) continue;
+        // A ray whose zero set holds the common one is tight on each common row: only the rays tight on
+        // the common row with the fewest such rays need a look (every ray if there is no common row).
+        const std::vector<std::uint32_t>* scan = nullptr;
+        for (std::size_t w = 0; w < words_; ++w)
+          for (std::uint64_t b = common_[w]; b != 0; b &= b - 1) {
+            const std::vector<std::uint32_t>& list = tight_[w * 64 + static_cast<std::size_t>(std::countr_zero(b))];
+            if (scan == nullptr || list.size() < scan->size()) scan = &list;
+          }
         bool adjacent = true;
-        for (std::size_t r = 0; r < n && adjacent; ++r) {
+        std::size_t looked = 0;
+        const std::size_t candidates = scan != nullptr ? scan->size() : n;
+        for (; looked < candidates && adjacent; ++looked) {
+          const std::size_t r = scan != nullptr ? (*scan)[looked] : looked;
           if (r == p || r == m) continue;
           const std::uint64_t* br = &bits_[r * words_];
           bool subset = true;
           for (std::size_t w = 0; w < words_ && subset; ++w) subset = (common_[w] & ~br[w]) == 0;
           if (subset) adjacent = false;
         }
+        charge(looked, t);
         if (!adjacent) continue;
-        const std::size_t id = push_ray();
+        const std::size_t id = push_ray(t);
         rg::combine(&coord_[p * static_cast<size_t>(k_)], values_[p], &coord_[m * static_cast<size_t>(k_)], values_[m],
                     &coord_[id * static_cast<size_t>(k_)], k_);
         rg::normalize(&coord_[id * static_cast<size_t>(k_)], k_);
         for (std::size_t w = 0; w < words_; ++w) bits_[id * words_ + w] = common_[w];
-        bits_[id * words_ + t / 64] |= std::uint64_t{1} << (t % 64);
+        set_bit(id, t);
       }
     }
-    // Compact: kept rays, then created rays.
+  }
+
+  // Keeps the rays listed in keep_, then the rays created from first_created on.
+  void compact(std::size_t first_created) {
     for (std::size_t id = first_created; id < count_; ++id) keep_.push_back(id);
     for (std::size_t i = 0; i < keep_.size(); ++i) {
       const std::size_t from = keep_[i];
@@ -128,14 +237,18 @@ class DoubleDescription {
     count_ = keep_.size();
   }
 
-  std::size_t count() const { return count_; }
-  const R* ray(std::size_t r) const { return &coord_[r * static_cast<size_t>(k_)]; }
+  void set_bit(std::size_t r, std::size_t t) { bits_[r * words_ + t / 64] |= std::uint64_t{1} << (t % 64); }
+  void charge(std::size_t units, std::size_t t) {
+    meter_.charge(units, [&] { return covered(t); });
+  }
+  std::string covered(std::size_t t) const {
+    return std::to_string(t) + " of " + std::to_string(rows_) + " rows processed, " + std::to_string(count_) + " rays";
+  }
 
- private:
-  std::size_t push_ray() {
-    if (count_ >= max_rays_)
-      throw exact::BudgetExceeded("double description: more than " + std::to_string(max_rays_) + " rays",
-                                  std::to_string(count_) + " rays");
+  std::size_t push_ray(std::size_t t) {
+    if (count_ >= budget_.max_rays || count_ >= UINT32_MAX)  // (tight_ holds 32-bit ray indices)
+      throw exact::BudgetExceeded("double description: more than " + std::to_string(budget_.max_rays) + " rays",
+                                  covered(t));
     const std::size_t id = count_++;
     if (coord_.size() < count_ * static_cast<size_t>(k_)) coord_.resize(count_ * static_cast<size_t>(k_) * 2);
     if (bits_.size() < count_ * words_) bits_.resize(count_ * words_ * 2);
@@ -144,58 +257,22 @@ class DoubleDescription {
   }
 
   Index k_;
+  std::size_t rows_;
   std::size_t words_;
-  std::size_t max_rays_;
+  const DdBudget& budget_;
+  WorkMeter meter_{budget_};
+  std::size_t processed_ = 0;
   std::size_t count_ = 0;
   std::vector<R> coord_;
   std::vector<std::uint64_t> bits_;
+  std::vector<std::vector<R>> lines_;
+  std::vector<R> line_values_;
   std::vector<R> values_;
   std::vector<std::size_t> plus_, minus_, keep_;
   std::vector<std::uint64_t> common_;
+  std::vector<std::vector<std::uint32_t>> tight_;
+  std::vector<R> tmp_;
 };
-
-// The extreme rays of the simplicial cone { y : B y <= 0 } for k independent rows B (ray j is tight on
-// every row but j): y_j = -B^-1 e_j up to a positive factor, by fraction-free Gauss-Jordan elimination of
-// [B^T | I] in the ring. Each row of the result reads u^T B^T = d e_j^T, i.e. B u = d e_j, so
-// y_j = -sign(d) u. nullopt if a pivot vanishes (float path: B singular within the tolerance).
-template <class R>
-std::optional<std::vector<std::vector<R>>> simplicial_rays(const std::vector<const std::vector<R>*>& B, Index k) {
-  const auto uk = static_cast<std::size_t>(k);
-  std::vector<std::vector<R>> w(uk, std::vector<R>(2 * uk, R(0)));
-  for (std::size_t i = 0; i < uk; ++i) {
-    for (std::size_t j = 0; j < uk; ++j) w[i][j] = (*B[j])[i];
-    w[i][uk + i] = R(1);
-  }
-  std::vector<std::size_t> pivot_row(uk);
-  std::vector<bool> used(uk, false);
-  std::vector<R> tmp(2 * uk);
-  for (std::size_t c = 0; c < uk; ++c) {
-    std::size_t p = uk;
-    for (std::size_t i = 0; i < uk; ++i)
-      if (!used[i] && rg::sign(w[i][c]) != 0 && (p == uk || rg::better_pivot(w[i][c], w[p][c]))) p = i;
-    if (p == uk) return std::nullopt;
-    used[p] = true;
-    pivot_row[c] = p;
-    for (std::size_t i = 0; i < uk; ++i) {
-      if (i == p || rg::sign(w[i][c]) == 0) continue;
-      // w_i <- piv * w_i - w_i[c] * w_p: zero in column c.
-      const R piv = w[p][c], f = w[i][c];
-      rg::combine(w[p].data(), piv, w[i].data(), f, tmp.data(), 2 * k);
-      w[i].swap(tmp);
-      w[i][c] = R(0);
-      rg::normalize(w[i].data(), 2 * k);
-    }
-  }
-  std::vector<std::vector<R>> rays(uk);
-  for (std::size_t j = 0; j < uk; ++j) {
-    const std::vector<R>& row = w[pivot_row[j]];
-    rays[j].assign(row.begin() + k, row.end());
-    if (rg::sign(row[j]) > 0)
-      for (R& x : rays[j]) x = -x;
-    rg::normalize(rays[j].data(), k);
-  }
-  return rays;
-}
 
 // R^3 (exact rings): an extreme ray of the pointed cone { y : a . y <= 0 } is tight on two independent
 // rows, so it is +-(a_i x a_j) for a pair that keeps every row <= 0; no simplicial start, no DD.
@@ -207,8 +284,11 @@ std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::ve
   std::vector<R> c(3);
   R x;
   bool full_rank = false;
+  WorkMeter meter(budget);
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (std::size_t j = i + 1; j < rows.size(); ++j) {
+      meter.charge(rows.size(),
+                   [&] { return std::to_string(i) + " of " + std::to_string(rows.size()) + " rows paired"; });
       const std::vector<R>&a = rows[i], &b = rows[j];
       for (std::size_t t = 0; t < 3; ++t) {  // c_t = a_{t+1} b_{t+2} - a_{t+2} b_{t+1}
         const std::size_t u = (t + 1) % 3, v = (t + 2) % 3;
@@ -240,187 +320,204 @@ std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::ve
   return out;
 }
 
-// Extreme rays of { y in R^k : a . y <= 0 for every row a } if the rows have rank k (the cone is
-// pointed), as ring vectors; nullopt if the rank is smaller.
+// Zero rows and duplicates dropped, lexicographic order (a fixed processing order).
 template <class R>
-std::optional<std::vector<std::vector<R>>> pointed_extreme_rays(const std::vector<std::vector<R>>& rows, Index k,
-                                                                const DdBudget& budget) {
-  if constexpr (std::is_integral_v<R> || std::is_same_v<R, Z>)  // exact rings; a float ring keeps the DD's tolerances
-    if (k == 3) return pointed_extreme_rays_3d<R>(rows, budget);
-  // Initial simplicial cone: k independent rows B (greedy, fraction-free elimination in the ring).
-  std::vector<std::size_t> basis;
-  {
-    std::vector<std::vector<R>> reduced;
-    std::vector<Index> pivot;
-    std::vector<R> v(static_cast<size_t>(k)), tmp(static_cast<size_t>(k));
-    for (std::size_t i = 0; i < rows.size() && static_cast<Index>(basis.size()) < k; ++i) {
-      v = rows[i];
-      for (std::size_t b = 0; b < reduced.size(); ++b) {
-        const R& vp = v[static_cast<size_t>(pivot[b])];
-        if (rg::sign(vp) == 0) continue;
-        // v <- piv_b * v - v_p * row_b (zero in column p), kept small.
-        const R pb = reduced[b][static_cast<size_t>(pivot[b])];
-        const R vpc = vp;
-        rg::combine(reduced[b].data(), pb, v.data(), vpc, tmp.data(), k);
-        v.swap(tmp);
-        rg::normalize(v.data(), k);
-      }
-      Index p = -1;
-      for (Index j = 0; j < k; ++j)
-        if (rg::sign(v[static_cast<size_t>(j)]) != 0 &&
-            (p < 0 || rg::better_pivot(v[static_cast<size_t>(j)], v[static_cast<size_t>(p)])))
-          p = j;
-      if (p < 0) continue;
-      reduced.push_back(v);
-      pivot.push_back(p);
-      basis.push_back(i);
-    }
-  }
-  if (static_cast<Index>(basis.size()) < k) return std::nullopt;
-  std::vector<std::size_t> order = basis;  // processing order: basis first
-  {
-    std::vector<bool> in_basis(rows.size(), false);
-    for (auto b : basis) in_basis[b] = true;
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      if (!in_basis[i]) order.push_back(i);
-  }
-  std::vector<const std::vector<R>*> B;
-  for (auto b : basis) B.push_back(&rows[b]);
-  const auto initial = simplicial_rays<R>(B, k);
-  if (!initial) return std::nullopt;  // float path only: independent for the ring test, singular for the elimination
-
-  DoubleDescription<R> dd(k, rows.size(), budget.max_rays);
-  for (Index j = 0; j < k; ++j) {
-    std::vector<std::size_t> zero_rows;
-    for (Index i = 0; i < k; ++i)
-      if (i != j) zero_rows.push_back(static_cast<std::size_t>(i));
-    dd.add_initial_ray((*initial)[static_cast<size_t>(j)].data(), zero_rows);
-  }
-  for (std::size_t t = static_cast<std::size_t>(k); t < order.size(); ++t) dd.add_row(rows[order[t]].data(), t);
-  std::vector<std::vector<R>> out;
-  for (std::size_t r = 0; r < dd.count(); ++r) out.emplace_back(dd.ray(r), dd.ray(r) + k);
-  return out;
-}
-
-}  // namespace
-
-template <class R>
-std::optional<std::vector<std::vector<R>>> pointed_cone_rays(std::vector<std::vector<R>> rows, Index k,
-                                                             const DdBudget& budget) {
-  // Zero rows and duplicates dropped, lexicographic order (a fixed processing order).
+void sort_rows(std::vector<std::vector<R>>& rows) {
   std::erase_if(rows, [](const std::vector<R>& r) {
     return std::all_of(r.begin(), r.end(), [](const R& x) { return rg::sign(x) == 0; });
   });
   std::sort(rows.begin(), rows.end());
   rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-  return pointed_extreme_rays<R>(rows, k, budget);
 }
 
-template std::optional<std::vector<std::vector<double>>> pointed_cone_rays<double>(std::vector<std::vector<double>>,
-                                                                                   Index, const DdBudget&);
-template std::optional<std::vector<std::vector<std::int64_t>>> pointed_cone_rays<std::int64_t>(
-    std::vector<std::vector<std::int64_t>>, Index, const DdBudget&);
-template std::optional<std::vector<std::vector<Z>>> pointed_cone_rays<Z>(std::vector<std::vector<Z>>, Index,
-                                                                         const DdBudget&);
-template std::optional<std::vector<std::vector<exact::Mpfr>>> pointed_cone_rays<exact::Mpfr>(
-    std::vector<std::vector<exact::Mpfr>>, Index, const DdBudget&);
-template std::optional<std::vector<std::vector<exact::Interval>>> pointed_cone_rays<exact::Interval>(
-    std::vector<std::vector<exact::Interval>>, Index, const DdBudget&);
+// The double description of { y : A y <= 0, E y = 0 } for sorted rows: the equalities first, then the
+// inequalities that lower the lineality (a basis of what is left, the greedy choice in order), then the
+// others in order.
+template <class R>
+RingGenerators<R> generators_of_sorted(const std::vector<std::vector<R>>& A, const std::vector<std::vector<R>>& E,
+                                       Index k, const DdBudget& budget) {
+  DoubleDescription<R> dd(k, A.size() + E.size(), budget);
+  for (const auto& e : E)
+    if (!dd.reduce_lineality(e.data(), true)) dd.add_row(e.data(), true);
+  std::vector<std::size_t> later;
+  for (std::size_t i = 0; i < A.size(); ++i)
+    if (!dd.reduce_lineality(A[i].data(), false)) later.push_back(i);
+  for (auto i : later) dd.add_row(A[i].data(), false);
+  RingGenerators<R> out;
+  out.lines = dd.lines();
+  for (std::size_t r = 0; r < dd.count(); ++r) out.rays.emplace_back(dd.ray(r), dd.ray(r) + k);
+  return out;
+}
 
-namespace {
-
-template <class T>
-struct Generators {
-  Mat<T> rays;
-  Mat<T> lines;
+// Rows of one side of a cone C sorted out by their zero sets over the minimal generators D of the other
+// side (C's facets for generators, C's extreme rays for inequality rows): a row vanishing on all of D
+// lies in the lineality space (is an implicit equality); otherwise it is extreme (a facet) iff no other
+// row's zero set strictly contains its own (a face is determined by its zero set), and of rows with
+// equal zero sets one is kept.
+struct Incidence {
+  std::vector<std::size_t> lineal, extreme;
 };
 
-// Extreme rays and lineality of { x in R^n : A x <= 0, E x = 0 }. The iteration runs in the exact ring
-// std::int64_t and restarts in Z if a number outgrows it (T = Q), in double for T = double.
-template <class T>
-Generators<T> extreme_rays(const Mat<T>& A, const Mat<T>& E, Index n, const DdBudget& budget) {
-  Generators<T> out;
-  // Fast path: no equalities and rank A = n (pointed): no change of coordinates.
-  if (E.rows() == 0) {
-    std::optional<Mat<T>> rays = exact::with_exact_ring<T>([&]<class R>() -> std::optional<Mat<T>> {
-      const auto y = pointed_cone_rays<R>(rg::to_ring_rows<R>(A), n, budget);
-      if (!y) return std::nullopt;
-      return rg::to_field_rows<T>(*y, n);
-    });
-    if (rays) {
-      out.lines = Mat<T>(0, n);
-      out.rays = std::move(*rays);
-      return out;
+template <class R>
+Incidence sort_by_incidence(const std::vector<std::vector<R>>& G, const std::vector<std::vector<R>>& D, Index k,
+                            const DdBudget& budget) {
+  const std::size_t words = (D.size() + 63) / 64;
+  std::vector<std::uint64_t> z(G.size() * words, 0);
+  std::vector<std::size_t> pop(G.size(), 0);
+  R x;
+  for (std::size_t i = 0; i < G.size(); ++i)
+    for (std::size_t j = 0; j < D.size(); ++j) {
+      rg::dot(G[i].data(), D[j].data(), k, x);
+      if (rg::sign(x) != 0) continue;
+      z[i * words + j / 64] |= std::uint64_t{1} << (j % 64);
+      ++pop[i];
     }
+  Incidence out;
+  WorkMeter meter(budget);
+  std::vector<std::size_t> candidates;
+  for (std::size_t i = 0; i < G.size(); ++i) (pop[i] == D.size() ? out.lineal : candidates).push_back(i);
+  for (std::size_t i : candidates) {
+    meter.charge(candidates.size(), [&] { return std::to_string(out.extreme.size()) + " extreme rows found"; });
+    bool keep = true;
+    for (std::size_t j : candidates) {
+      if (j == i || pop[j] < pop[i] || (pop[j] == pop[i] && j > i)) continue;  // equal sets: the first is kept
+      bool contains = true;
+      for (std::size_t w = 0; w < words && contains; ++w) contains = (z[i * words + w] & ~z[j * words + w]) == 0;
+      if ((keep = !contains) == false) break;
+    }
+    if (keep) out.extreme.push_back(i);
   }
-  // Restrict to the subspace E x = 0, then split off the lineality space {x : A x = 0, E x = 0}.
-  const Mat<T> V = E.rows() > 0 ? exact::null_space<T>(E) : Mat<T>(Mat<T>::Identity(n, n));
-  const Mat<T> A1 = multiply<T>(A, V);
-  const Index n1 = V.cols();
-  const Mat<T> L1 = A1.rows() > 0 ? exact::null_space<T>(A1) : Mat<T>(Mat<T>::Identity(n1, n1));
-  Mat<T> lines_by_column = multiply<T>(V, L1);
-  normalize_columns<T>(lines_by_column);
-  out.lines = lines_by_column.transpose();
-  const Index k = n1 - L1.cols();
-  out.rays = Mat<T>(0, n);
-  if (k == 0) return out;
-  // Coordinates y of a complement of the lineality space: x = M y, and { y : (A M) y <= 0 } is pointed.
-  const Mat<T> W = L1.cols() > 0 ? exact::null_space<T>(Mat<T>(L1.transpose())) : Mat<T>(Mat<T>::Identity(n1, n1));
-  Mat<T> M = multiply<T>(V, W);
-  normalize_columns<T>(M);
-  const Mat<T> AM = multiply<T>(A, M);
-  out.rays = exact::with_exact_ring<T>([&]<class R>() {
-    const auto rays = pointed_cone_rays<R>(rg::to_ring_rows<R>(AM), k, budget);
-    if (!rays) throw std::logic_error("double description: rank deficient after removing the lineality space");
-    // Back to x = M y, as primitive (Q) / unit max-norm (double) rows.
-    Mat<T> X(static_cast<Index>(rays->size()), n);
-    std::vector<T> x(static_cast<size_t>(n));
-    std::vector<Ring<T>> xr(static_cast<size_t>(n));
-    for (std::size_t r = 0; r < rays->size(); ++r) {
-      const std::vector<R>& y = (*rays)[r];
-      for (Index i = 0; i < n; ++i) {
-        T s = T(0);
-        for (Index j = 0; j < k; ++j)
-          if (rg::sign(y[static_cast<size_t>(j)]) != 0) s += M(i, j) * rg::to_field<T>(y[static_cast<size_t>(j)]);
-        x[static_cast<size_t>(i)] = s;
-      }
-      rg::to_ring(x.data(), n, xr.data());
-      for (Index i = 0; i < n; ++i) X(static_cast<Index>(r), i) = rg::to_field<T>(xr[static_cast<size_t>(i)]);
-    }
-    return X;
-  });
+  return out;
+}
+
+template <class R>
+std::vector<std::vector<R>> pick(const std::vector<std::vector<R>>& rows, const std::vector<std::size_t>& which) {
+  std::vector<std::vector<R>> out;
+  for (auto i : which) out.push_back(rows[i]);
   return out;
 }
 
 }  // namespace
 
+template <class R>
+RingGenerators<R> cone_generators(std::vector<std::vector<R>> A, std::vector<std::vector<R>> E, Index k,
+                                  const DdBudget& budget) {
+  sort_rows(A);
+  sort_rows(E);
+  if constexpr (std::is_integral_v<R> || std::is_same_v<R, Z>)  // exact rings; a float ring keeps the DD's tolerances
+    if (k == 3 && E.empty())
+      if (auto rays = pointed_extreme_rays_3d<R>(A, budget)) return {std::move(*rays), {}};
+  return generators_of_sorted<R>(A, E, k, budget);
+}
+
+template <class R>
+std::optional<std::vector<std::vector<R>>> pointed_cone_rays(std::vector<std::vector<R>> rows, Index k,
+                                                             const DdBudget& budget) {
+  RingGenerators<R> g = cone_generators<R>(std::move(rows), {}, k, budget);
+  if (!g.lines.empty()) return std::nullopt;
+  return std::move(g.rays);
+}
+
+#define CONTACTCERT_DD_RING_INSTANTIATE(R)                                                                       \
+  template RingGenerators<R> cone_generators<R>(std::vector<std::vector<R>>, std::vector<std::vector<R>>, Index, \
+                                                const DdBudget&);                                                \
+  template std::optional<std::vector<std::vector<R>>> pointed_cone_rays<R>(std::vector<std::vector<R>>, Index,   \
+                                                                           const DdBudget&);
+CONTACTCERT_DD_RING_INSTANTIATE(double)
+CONTACTCERT_DD_RING_INSTANTIATE(std::int64_t)
+CONTACTCERT_DD_RING_INSTANTIATE(Z)
+CONTACTCERT_DD_RING_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_DD_RING_INSTANTIATE(exact::Interval)
+#undef CONTACTCERT_DD_RING_INSTANTIATE
+
+namespace {
+
+// One side of a cone given by rows G (generators, or inequalities) and L (lines, or equalities): the
+// other side's minimal form by the double description, and the minimal form of this side picked from
+// the given rows by incidence (rows vanishing on every dual generator join L).
+template <class R>
+struct RingPair {
+  RingGenerators<R> dual;
+  std::vector<std::vector<R>> extreme, lineal;
+};
+
+template <class R>
+RingPair<R> ring_pair(std::vector<std::vector<R>> G, std::vector<std::vector<R>> L, Index n, const DdBudget& budget) {
+  sort_rows(G);
+  sort_rows(L);
+  RingPair<R> out;
+  out.dual = cone_generators<R>(G, L, n, budget);
+  const Incidence inc = sort_by_incidence<R>(G, out.dual.rays, n, budget);
+  out.extreme = pick(G, inc.extreme);
+  out.lineal = std::move(L);
+  for (auto i : inc.lineal) out.lineal.push_back(G[i]);
+  return out;
+}
+
+}  // namespace
+
+// Facets of C = pos(rays) + span(lines) are the extreme rays of its polar { f : R f <= 0, L f = 0 }; the
+// polar's lineality space is the orthogonal complement of C's linear hull (the equalities). The
+// iteration runs in std::int64_t and restarts in Z if a number outgrows it (T = Q), in T for a float T.
 template <class T>
 FaceCone<T> to_face(const SpanCone<T>& cone, const DdBudget& budget) {
-  // Facets of C are the extreme rays of its polar { f : R f <= 0, L f = 0 }; the polar's lineality
-  // space is the orthogonal complement of C's linear hull (the equalities).
-  const Mat<T> lines = cone.lines.rows() == 0 ? Mat<T>(0, cone.dim) : cone.lines;
-  const Mat<T> rays = cone.rays.rows() == 0 ? Mat<T>(0, cone.dim) : cone.rays;
-  Generators<T> g = extreme_rays<T>(rays, lines, cone.dim, budget);
-  return FaceCone<T>::from_rows(cone.dim, g.rays, g.lines, Mat<T>(0, cone.dim));
+  const Index n = cone.dim;
+  return exact::with_exact_ring<T>([&]<class R>() {
+    const RingGenerators<R> polar =
+        cone_generators<R>(rg::to_ring_rows<R>(cone.rays), rg::to_ring_rows<R>(cone.lines), n, budget);
+    return FaceCone<T>::from_rows(n, rg::to_field_rows<T>(polar.rays, n), rg::to_field_rows<T>(polar.lines, n),
+                                  Mat<T>(0, n));
+  });
 }
 
 template <class T>
 SpanCone<T> to_span(const FaceCone<T>& cone, const DdBudget& budget) {
-  Mat<T> A(cone.inequalities.rows() + cone.strict.rows(), cone.dim);
-  for (Index i = 0; i < cone.inequalities.rows(); ++i) A.row(i) = cone.inequalities.row(i);
-  for (Index i = 0; i < cone.strict.rows(); ++i) A.row(cone.inequalities.rows() + i) = cone.strict.row(i);
-  const Mat<T> E = cone.equalities.rows() == 0 ? Mat<T>(0, cone.dim) : cone.equalities;
-  Generators<T> g = extreme_rays<T>(A, E, cone.dim, budget);
-  return SpanCone<T>::from_rows(cone.dim, g.rays, g.lines);
+  const Index n = cone.dim;
+  return exact::with_exact_ring<T>([&]<class R>() {
+    std::vector<std::vector<R>> A = rg::to_ring_rows<R>(cone.inequalities), S = rg::to_ring_rows<R>(cone.strict);
+    A.insert(A.end(), S.begin(), S.end());
+    const RingGenerators<R> g = cone_generators<R>(std::move(A), rg::to_ring_rows<R>(cone.equalities), n, budget);
+    return SpanCone<T>::from_rows(n, rg::to_field_rows<T>(g.rays, n), rg::to_field_rows<T>(g.lines, n));
+  });
 }
 
-template FaceCone<double> to_face<double>(const SpanCone<double>&, const DdBudget&);
-template FaceCone<Q> to_face<Q>(const SpanCone<Q>&, const DdBudget&);
-template SpanCone<double> to_span<double>(const FaceCone<double>&, const DdBudget&);
-template SpanCone<Q> to_span<Q>(const FaceCone<Q>&, const DdBudget&);
-template FaceCone<exact::Mpfr> to_face<exact::Mpfr>(const SpanCone<exact::Mpfr>&, const DdBudget&);
-template FaceCone<exact::Interval> to_face<exact::Interval>(const SpanCone<exact::Interval>&, const DdBudget&);
-template SpanCone<exact::Mpfr> to_span<exact::Mpfr>(const FaceCone<exact::Mpfr>&, const DdBudget&);
-template SpanCone<exact::Interval> to_span<exact::Interval>(const FaceCone<exact::Interval>&, const DdBudget&);
+template <class T>
+ConePair<T> both_forms(const SpanCone<T>& cone, const DdBudget& budget) {
+  const Index n = cone.dim;
+  return exact::with_exact_ring<T>([&]<class R>() {
+    const RingPair<R> p = ring_pair<R>(rg::to_ring_rows<R>(cone.rays), rg::to_ring_rows<R>(cone.lines), n, budget);
+    ConePair<T> out;
+    out.face = FaceCone<T>::from_rows(n, rg::to_field_rows<T>(p.dual.rays, n), rg::to_field_rows<T>(p.dual.lines, n),
+                                      Mat<T>(0, n));
+    out.span = SpanCone<T>::from_rows(n, rg::to_field_rows<T>(p.extreme, n), rg::to_field_rows<T>(p.lineal, n));
+    return out;
+  });
+}
+
+template <class T>
+ConePair<T> both_forms(const FaceCone<T>& cone, const DdBudget& budget) {
+  const Index n = cone.dim;
+  return exact::with_exact_ring<T>([&]<class R>() {
+    std::vector<std::vector<R>> A = rg::to_ring_rows<R>(cone.inequalities), S = rg::to_ring_rows<R>(cone.strict);
+    A.insert(A.end(), S.begin(), S.end());
+    const RingPair<R> p = ring_pair<R>(std::move(A), rg::to_ring_rows<R>(cone.equalities), n, budget);
+    ConePair<T> out;
+    out.span = SpanCone<T>::from_rows(n, rg::to_field_rows<T>(p.dual.rays, n), rg::to_field_rows<T>(p.dual.lines, n));
+    out.face =
+        FaceCone<T>::from_rows(n, rg::to_field_rows<T>(p.extreme, n), rg::to_field_rows<T>(p.lineal, n), Mat<T>(0, n));
+    return out;
+  });
+}
+
+#define CONTACTCERT_DD_INSTANTIATE(T)                                      \
+  template FaceCone<T> to_face<T>(const SpanCone<T>&, const DdBudget&);    \
+  template SpanCone<T> to_span<T>(const FaceCone<T>&, const DdBudget&);    \
+  template ConePair<T> both_forms<T>(const SpanCone<T>&, const DdBudget&); \
+  template ConePair<T> both_forms<T>(const FaceCone<T>&, const DdBudget&);
+CONTACTCERT_DD_INSTANTIATE(double)
+CONTACTCERT_DD_INSTANTIATE(Q)
+CONTACTCERT_DD_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_DD_INSTANTIATE(exact::Interval)
+#undef CONTACTCERT_DD_INSTANTIATE
 
 }  // namespace contactcert::geometry

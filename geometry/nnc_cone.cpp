@@ -107,8 +107,9 @@ template <class T>
 NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
   const Index d = cone.dim;
   NncForm<T> out;
-  // K' = { F g <= 0, S g <= 0, E g = 0 }: minimal generators and facets.
-  out.closure = canonical(to_span(cone, budget));
+  // K' = { F g <= 0, S g <= 0, E g = 0 }: minimal generators and facets, from one conversion.
+  ConePair<T> closure = both_forms(cone, budget);
+  out.closure = canonical(closure.span);
   const Mat<T>& R = out.closure.rays;
   // Z_s for every strict row; the cone is empty iff some Z_s holds every ray (s vanishes on K').
   const std::vector<std::vector<bool>> zs = zero_sets<T>(R, cone.strict);
@@ -123,7 +124,7 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
     return out;
   }
   out.status = NncStatus::kNonEmpty;
-  out.closure_face = canonical(to_face(out.closure, budget));
+  out.closure_face = canonical(closure.face);
   const Mat<T>& F = out.closure_face.inequalities;
 
   const MissingFaces missing = missing_faces(zs, zero_sets<T>(R, F));
@@ -149,6 +150,19 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
     if (!out.open_facets[static_cast<size_t>(f)]) closed_rows.push_back(F.row(f).transpose());
   out.face = canonical(
       FaceCone<T>::from_rows(d, stack<T>(closed_rows, d), out.closure_face.equalities, stack<T>(strict_rows, d)));
+  return out;
+}
+
+template <class T>
+NncForm<T> nnc_form(const SpanCone<T>& cone, const DdBudget& budget) {
+  // Closed and not empty: the cone is its closure.
+  const ConePair<T> pair = both_forms(cone, budget);
+  NncForm<T> out;
+  out.status = NncStatus::kNonEmpty;
+  out.closure = canonical(pair.span);
+  out.closure_face = canonical(pair.face);
+  out.face = out.closure_face;
+  out.open_facets.assign(static_cast<size_t>(out.closure_face.inequalities.rows()), false);
   return out;
 }
 
@@ -232,6 +246,7 @@ template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const std::vector<std
 #define CONTACTCERT_NNC_INSTANTIATE(T)                                  \
   template struct NncForm<T>;                                           \
   template NncForm<T> nnc_form<T>(const FaceCone<T>&, const DdBudget&); \
+  template NncForm<T> nnc_form<T>(const SpanCone<T>&, const DdBudget&); \
   template bool contains_point<T>(const FaceCone<T>&, const Vec<T>&);   \
   template PointPosition<T> locate<T>(const FaceCone<T>&, const Vec<T>&);
 CONTACTCERT_NNC_INSTANTIATE(double)

@@ -38,6 +38,10 @@ struct NncForm {
 template <class T>
 NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget = {});
 
+/// The same for a span cone pos(rays) + span(lines) (closed, never empty), from one conversion.
+template <class T>
+NncForm<T> nnc_form(const SpanCone<T>& cone, const DdBudget& budget = {});
+
 /// nnc_form(...).face of { F g <= 0, S g < 0 } for rows F, S (d entries each) in an exact ring R of
 /// exact/fraction_free.h, computed in R and turned into T = Q once, when the closure is pointed and
 /// full-dimensional or the cone is empty (the common case of a wrench cone); nullopt otherwise, and
@@ -79,6 +83,7 @@ PointPosition<T> locate(const FaceCone<T>& cone, const Vec<T>& g);
 #define CONTACTCERT_NNC_EXTERN(T)                                              \
   extern template struct NncForm<T>;                                           \
   extern template NncForm<T> nnc_form<T>(const FaceCone<T>&, const DdBudget&); \
+  extern template NncForm<T> nnc_form<T>(const SpanCone<T>&, const DdBudget&); \
   extern template bool contains_point<T>(const FaceCone<T>&, const Vec<T>&);   \
   extern template PointPosition<T> locate<T>(const FaceCone<T>&, const Vec<T>&);
 CONTACTCERT_NNC_EXTERN(double)

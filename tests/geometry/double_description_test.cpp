@@ -3,15 +3,23 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdint>
 #include <random>
+#include <string>
 #include <type_traits>
 #include <vector>
 
 #include "exact/fraction_free.h"
 #include "exact/input_error.h"
+#include "exact/json_input.h"
 #include "exact/linalg.h"
 #include "geometry/canonical.h"
+#include "geometry/scene_json.h"
+#include "solvers/wrench_cone/cone_form.h"
+#include "solvers/wrench_cone/contact_model.h"
+#include "solvers/wrench_cone/mode.h"
+#include "tests/geometry/polytope_cones.h"
 #include "tests/geometry/random_cones.h"
 #include "tests/reference/cdd_cone.h"
 
@@ -224,7 +232,98 @@ TEST(DoubleDescription, HugeCoordinatesAgainstCddlib) {
 TEST(DoubleDescription, BudgetIsEnforced) {
   std::mt19937_64 rng(3);
   const SpanCone<Q> C = random_span(rng, 8, 30, 0);
-  EXPECT_THROW(to_face(C, DdBudget{10}), exact::BudgetExceeded);
+  DdBudget budget;
+  budget.max_rays = 10;
+  EXPECT_THROW(to_face(C, budget), exact::BudgetExceeded);
+}
+
+// The 30-dimensional cross-polytope and cube (2^30 facets / rays): the work budget and the deadline
+// are checked inside the iteration, so both limits bite within a fraction of a second of being reached.
+TEST(DoubleDescription, GrowthBudgetsBiteOnThirtyDimensions) {
+  using Clock = std::chrono::steady_clock;
+  auto seconds_of = [](auto&& f) {
+    const auto start = Clock::now();
+    EXPECT_THROW(f(), exact::BudgetExceeded);
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  };
+  DdBudget timed;
+  timed.deadline = exact::Deadline::after(0.2);
+  EXPECT_LT(seconds_of([&] { to_face(testing::cross_polytope_span(30), timed); }), 2.0);
+  timed.deadline = exact::Deadline::after(0.2);
+  EXPECT_LT(seconds_of([&] { to_span(testing::cube_face(30), timed); }), 2.0);
+  DdBudget work;
+  work.max_work = std::uint64_t{1} << 24;
+  EXPECT_LT(seconds_of([&] { to_face(testing::cross_polytope_span(30), work); }), 2.0);
+  EXPECT_LT(seconds_of([&] { to_span(testing::cube_face(30), work); }), 2.0);
+  DdBudget rays;
+  rays.max_rays = 1000;
+  EXPECT_LT(seconds_of([&] { to_span(testing::cube_face(30), rays); }), 2.0);
+}
+
+// The degenerate polytope families both ways against cddlib: cubes and cross-polytopes of dimension
+// 2-6 (up to 64 rays / facets, many rows through every vertex).
+TEST(DoubleDescription, CubesAndCrossPolytopesAgainstCddlib) {
+  for (Eigen::Index n = 2; n <= 6; ++n) {
+    for (const SpanCone<Q>& C : {testing::cube_span(n), testing::cross_polytope_span(n)}) {
+      const FaceCone<Q> F = canonical(to_face(C));
+      ASSERT_TRUE(identical(F, canonical(reference::cdd_to_face(C)))) << "n " << n;
+      EXPECT_EQ(F.inequalities.rows(), C.rays.rows() == 2 * n ? Eigen::Index{1} << n : 2 * n);
+    }
+    for (const FaceCone<Q>& F : {testing::cube_face(n), testing::cross_polytope_face(n)}) {
+      const SpanCone<Q> S = canonical(to_span(F));
+      ASSERT_TRUE(identical(S, canonical(reference::cdd_to_span(F)))) << "n " << n;
+    }
+  }
+}
+
+// Lower-dimensional and non-pointed inputs (equalities, lines, rays in a hyperplane, implicit
+// equalities from opposite rows) are converted by one run in the ring; both_forms' second side (picked
+// by incidence) is the canonical form of the other conversion, and cddlib agrees.
+TEST(DoubleDescription, BothFormsFromOneConversionAgainstCddlib) {
+  std::mt19937_64 rng(20261201);
+  for (Eigen::Index dim = 3; dim <= 7; ++dim)
+    for (int rep = 0; rep < 12; ++rep) {
+      SpanCone<Q> C = random_span(rng, dim, dim + 3, rep % 3, rep % 2 == 0 ? dim + 3 : 0);
+      if (rep % 4 == 1)  // every generator in x_last = x_0: a lower-dimensional cone
+        for (Eigen::Index r = 0; r < C.rays.rows(); ++r) C.rays(r, dim - 1) = C.rays(r, 0);
+      const ConePair<Q> pair = both_forms(C);
+      const FaceCone<Q> F = canonical(pair.face);
+      ASSERT_TRUE(identical(F, canonical(reference::cdd_to_face(C))));
+      const SpanCone<Q> S = canonical(to_span(F));
+      ASSERT_TRUE(identical(canonical(pair.span), S));
+      FaceCone<Q> G = random_face(rng, dim, dim + rep % 5, rep % 3 == 0 ? 1 : 0, 0);
+      if (rep % 2 == 1 && G.inequalities.rows() > 1) G.inequalities.row(1) = -G.inequalities.row(0);
+      const ConePair<Q> back = both_forms(G);
+      const SpanCone<Q> GS = canonical(back.span);
+      ASSERT_TRUE(identical(GS, canonical(reference::cdd_to_span(G))));
+      ASSERT_TRUE(identical(canonical(back.face), canonical(to_face(GS))));
+    }
+}
+
+// The K matrices of the wrench cone algorithm (eq. 15), pos(K) often not full-dimensional: a unit disk
+// with 1-6 fixels, every mode of one letter and a seeded mixed mode each.
+TEST(DoubleDescription, WrenchConeKMatricesAgainstCddlib) {
+  const char* points[] = {"[0, -1]", "[1, 0]", "[0, 1]", "[-1, 0]", "[\"3/5\", \"4/5\"]", "[\"-4/5\", \"-3/5\"]"};
+  std::mt19937_64 rng(15);
+  const auto letters = solvers::letters_for(true);
+  for (int fixels = 1; fixels <= 6; ++fixels) {
+    std::string text = R"({"kind": "planar", "workpiece": {"shape": {"type": "disk", "center": [0, 0], "radius": 1},
+        "mass": 1, "inertia": "1/2"}, "mu_s": "1/5", "mu_k": "1/5", "fixels": [)";
+    for (int i = 0; i < fixels; ++i) text += std::string(i ? ", " : "") + "{\"position\": " + points[i] + "}";
+    const auto scene = read_planar_scene(exact::JsonInput::parse(text + "]}", "test"));
+    const auto model = solvers::contact_model<Q>(scene);
+    std::vector<std::string> modes;
+    for (solvers::Interaction c : letters) modes.emplace_back(static_cast<std::size_t>(fixels), static_cast<char>(c));
+    std::string mixed;
+    for (int i = 0; i < fixels; ++i) mixed += static_cast<char>(letters[rng() % letters.size()]);
+    modes.push_back(mixed);
+    for (const std::string& mode : modes) {
+      const auto parsed = solvers::parse_mode(mode, std::vector<bool>(static_cast<std::size_t>(fixels), true));
+      if (parsed.status != solvers::ModeStatus::kValid) continue;
+      const SpanCone<Q> K = SpanCone<Q>::from_columns(solvers::cone_form<Q>(scene, model, parsed.mode).K);
+      ASSERT_TRUE(identical(canonical(to_face(K)), canonical(reference::cdd_to_face(K)))) << mode;
+    }
+  }
 }
 
 }  // namespace

@@ -212,5 +212,22 @@ TEST(NncCone, FloatPathAgreesOnThePaperExample) {
   EXPECT_EQ(n.face.strict.rows(), 1);
 }
 
+// nnc_form of a span cone (one conversion) equals nnc_form of its face form (the route through both
+// conversions), lower-dimensional and non-pointed cones included.
+TEST(NncCone, SpanInputConvertsOnce) {
+  std::mt19937_64 rng(23);
+  for (Eigen::Index dim = 2; dim <= 6; ++dim)
+    for (int rep = 0; rep < 10; ++rep) {
+      SpanCone<Q> C = testing::random_span(rng, dim, rep % 7, rep % 3, rep % 2 == 0 ? rep % 7 : 0);
+      const NncForm<Q> once = nnc_form(C);
+      const NncForm<Q> twice = nnc_form(canonical(to_face(C)));
+      ASSERT_TRUE(identical(once.face, twice.face));
+      ASSERT_TRUE(identical(once.closure, twice.closure));
+      ASSERT_TRUE(identical(once.closure_face, twice.closure_face));
+      EXPECT_EQ(once.open_facets, twice.open_facets);
+      EXPECT_TRUE(once.open_faces.empty());
+    }
+}
+
 }  // namespace
 }  // namespace contactcert::geometry
