@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "cli/html_report.h"
 #include "solvers/wrench_cone/line_of_force.h"
 
 namespace contactcert::cli {
@@ -29,17 +30,6 @@ struct View {
   std::string x(double v) const { return num(margin + (v - xmin) * scale); }
   std::string y(double v) const { return num(margin + (ymax - v) * scale); }
 };
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
-}
 
 P2 unit(P2 v) {
   const double l = std::hypot(v.x, v.y);
@@ -134,12 +124,13 @@ std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat
     const P2 q = fixel_at[i];
     s << "<circle cx=\"" << v.x(q.x) << "\" cy=\"" << v.y(q.y) << "\" r=\"4\" stroke=\"black\" fill=\""
       << (f.frame.touching() ? "black" : "white") << "\"/>\n";
-    s << "<text x=\"" << num(std::stod(v.x(q.x)) + 6) << "\" y=\"" << num(std::stod(v.y(q.y)) + 14) << "\">"
-      << (i + 1) << "</text>\n";
+    s << "<text x=\"" << num(std::stod(v.x(q.x)) + 6) << "\" y=\"" << num(std::stod(v.y(q.y)) + 14) << "\">" << (i + 1)
+      << "</text>\n";
   }
   // Generators as directed lines of force.
   std::vector<std::pair<exact::Vec<exact::Q>, std::string>> gens;
-  for (Eigen::Index r = 0; r < rays.rows(); ++r) gens.push_back({rays.row(r).transpose(), std::string("g") + std::to_string(r + 1)});
+  for (Eigen::Index r = 0; r < rays.rows(); ++r)
+    gens.push_back({rays.row(r).transpose(), std::string("g") + std::to_string(r + 1)});
   for (Eigen::Index r = 0; r < lines.rows(); ++r) {
     gens.push_back({lines.row(r).transpose(), std::string("+l") + std::to_string(r + 1)});
     gens.push_back({exact::Vec<exact::Q>(-lines.row(r).transpose()), std::string("-l") + std::to_string(r + 1)});
@@ -167,7 +158,7 @@ std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat
         << "</text>\n";
     }
   }
-  s << "<text x=\"10\" y=\"" << num(height - 10) << "\">" << escape(title) << "</text>\n";
+  s << "<text x=\"10\" y=\"" << num(height - 10) << "\">" << html_escape(title) << "</text>\n";
   s << "</svg>\n";
   return s.str();
 }

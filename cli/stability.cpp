@@ -1,22 +1,22 @@
 // `contactcert stability FILE --wrench fx,fy,tz`: strongly stable, only weakly stable, or unstable
 // (wrench cone paper, section 7; SPEC sections 6-7), with a witness or a certificate.
 #include <CLI/CLI.hpp>
-
 #include <cmath>
 #include <iostream>
 #include <optional>
 
+#include "cli/boundary_marks.h"
 #include "cli/command.h"
 #include "cli/json_out.h"
+#include "cli/stability_svg.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
-#include "cli/boundary_marks.h"
-#include "cli/stability_svg.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
+#include "solvers/stability/world_forces.h"
 
 namespace contactcert::cli {
 namespace {
@@ -36,7 +36,60 @@ struct StabilityOptions {
 };
 
 template <class T>
-json witness_json(const solvers::MotionWitness<T>& w) {
+json number_json(const T& x) {
+  if constexpr (std::is_same_v<T, Q>)
+    return exact_json(x);
+  else
+    return x;
+}
+
+template <class T>
+json forces_json(const exact::Vec<T>& c) {
+  if constexpr (std::is_same_v<T, Q>)
+    return exact_json(c);
+  else
+    return approx_json(c);
+}
+
+/// Each touching fixel's force in world coordinates, with its components against the frame it states.
+template <class T>
+json contacts_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                   const exact::Vec<T>& c) {
+  json out = json::array();
+  for (const auto& w : solvers::world_forces<T>(scene, touching, c))
+    out.push_back({{"fixel", w.fixel},
+                   {"point", forces_json(w.point)},
+                   {"normal", forces_json(w.normal)},
+                   {"tangent", forces_json(w.tangent)},
+                   {"c_n", number_json(w.c_n)},
+                   {"c_t", number_json(w.c_t)},
+                   {"force", forces_json(w.force)},
+                   {"torque", number_json(w.torque)}});
+  return out;
+}
+
+template <class T>
+std::string number_text(const T& x) {
+  if constexpr (std::is_same_v<T, Q>)
+    return exact::to_string(x);
+  else
+    return std::to_string(x);
+}
+
+/// One line per touching fixel: f = c_n n + c_t t in world coordinates, and the frame (n, t).
+template <class T>
+void print_contacts(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                    const exact::Vec<T>& c) {
+  for (const auto& w : solvers::world_forces<T>(scene, touching, c))
+    std::cout << "    fixel " << w.fixel << " at " << tuple_text(w.point) << ": force " << tuple_text(w.force)
+              << ", torque " << number_text(w.torque) << "  (c_n = " << number_text(w.c_n)
+              << " along n = " << tuple_text(w.normal) << ", c_t = " << number_text(w.c_t)
+              << " along t = " << tuple_text(w.tangent) << ")\n";
+}
+
+template <class T>
+json witness_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                  const solvers::MotionWitness<T>& w) {
   json j;
   j["mode"] = w.mode.text();
   if constexpr (std::is_same_v<T, Q>) {
@@ -47,18 +100,13 @@ json witness_json(const solvers::MotionWitness<T>& w) {
     j["forces_approx"] = approx_json(w.forces);
     j["acceleration_approx"] = approx_json(w.acceleration);
   }
+  j["contacts"] = contacts_json(scene, touching, w.forces);
   return j;
 }
 
 template <class T>
-json forces_json(const exact::Vec<T>& c) {
-  if constexpr (std::is_same_v<T, Q>) return exact_json(c);
-  else return approx_json(c);
-}
-
-template <class T>
-int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityResult<T>& r,
-           const std::optional<solvers::Margin<Q>>& margin = std::nullopt) {
+int report(const StabilityOptions& o, const geometry::PlanarScene& scene, const exact::Vec<Q>& g,
+           const StabilityResult<T>& r, const std::optional<solvers::Margin<Q>>& margin = std::nullopt) {
   if (o.common.json) {
     json j;
     j["verdict"] = solvers::verdict_name(r.verdict);
@@ -68,8 +116,11 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
     for (auto i : r.touching) touching.push_back(i);
     j["touching_fixels"] = touching;
     json w;
-    if (r.has_resting) w["resting_forces"] = forces_json(r.resting_forces);
-    if (r.has_moving) w["moving"] = witness_json(r.moving);
+    if (r.has_resting) {
+      w["resting_forces"] = forces_json(r.resting_forces);
+      w["resting_contacts"] = contacts_json(scene, r.touching, r.resting_forces);
+    }
+    if (r.has_moving) w["moving"] = witness_json(scene, r.touching, r.moving);
     j["witness"] = w;
     j["lps"] = r.lps;
     j["modes_checked"] = r.modes_checked;
@@ -77,7 +128,8 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
     if (!o.certificate.empty()) j["certificate"] = o.certificate;
     if (margin && !margin->nearest.empty())
       j["margin"] = {{"squared_radius", exact_json(margin->squared_radius)},
-                     {"radius_approx", std::sqrt(margin->squared_radius.get_d())}, {"nearest", margin->nearest}};
+                     {"radius_approx", std::sqrt(margin->squared_radius.get_d())},
+                     {"nearest", margin->nearest}};
     std::cout << j.dump() << "\n";
     return 0;
   }
@@ -85,12 +137,17 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
   std::cout << "verdict: " << solvers::verdict_name(r.verdict) << "\n"
             << "  wrench g = " << tuple_text(g) << " on " << o.file << " (" << k << " touching fixels, "
             << o.common.arith << " arithmetic)\n";
-  if (r.has_resting) std::cout << "  at rest with contact forces (c_n..., c_t...) = " << tuple_text(r.resting_forces) << "\n";
-  else std::cout << "  no contact forces in the friction cones balance g (Motzkin certificate found)\n";
-  if (r.has_moving)
-    std::cout << "  moves in mode '" << r.moving.mode.text() << "' with acceleration " << tuple_text(r.moving.acceleration)
-              << ", forces " << tuple_text(r.moving.forces) << "\n";
-  else if (r.has_resting)
+  if (r.has_resting) {
+    std::cout << "  at rest with contact forces (world coordinates; they balance g):\n";
+    print_contacts(scene, r.touching, r.resting_forces);
+  } else {
+    std::cout << "  no contact forces in the friction cones balance g (Motzkin certificate found)\n";
+  }
+  if (r.has_moving) {
+    std::cout << "  moves in mode '" << r.moving.mode.text() << "' with acceleration "
+              << tuple_text(r.moving.acceleration) << " (eq. 4: M vdot = g + the contact wrenches), contact forces:\n";
+    print_contacts(scene, r.touching, r.moving.forces);
+  } else if (r.has_resting)
     std::cout << "  no moving mode admits g: " << r.proofs.size() << " proofs ("
               << (r.modes_checked - r.modes_kinematically_feasible) << " modes kinematically impossible)\n";
   if (margin && !margin->nearest.empty())
@@ -104,22 +161,23 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
   return 0;
 }
 
-int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene) {
+int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene, const std::optional<exact::Vec<Q>>& g) {
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "--region is computed exactly (use exact or verified)");
   const auto region = solvers::stable_region<Q>(scene);
-  if (!o.svg.empty()) write_text_file(o.svg, stability_sphere_svg(region));
+  if (!o.svg.empty()) write_text_file(o.svg, stability_sphere_svg(region, g));
   int count[3][4] = {};
   for (const auto& c : region.cells) ++count[static_cast<int>(c.label)][c.dimension];
   if (o.common.json) {
     json cells = json::array();
     for (const auto& c : region.cells)
-      cells.push_back({{"dimension", c.dimension}, {"point", primitive_json(c.point)},
-                       {"label", solvers::verdict_name(c.label)}});
+      cells.push_back(
+          {{"dimension", c.dimension}, {"point", primitive_json(c.point)}, {"label", solvers::verdict_name(c.label)}});
     json modes = json::array();
     for (const auto& m : region.modes) modes.push_back(m.text());
     json j;
     j["region"] = {{"planes", region.planes.rows()}, {"nonempty_moving_modes", modes}, {"cells", cells}};
+    if (g) j["region"]["wrench"] = {{"g", exact_json(*g)}, {"label", solvers::verdict_name(region.label(*g))}};
     std::cout << j.dump() << "\n";
     return 0;
   }
@@ -138,6 +196,9 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene) {
     if (c.dimension == 3 && c.label == solvers::StabilityVerdict::kStronglyStable && shown++ < 5)
       std::cout << "  strongly stable open region through g = " << tuple_text(exact::primitive(c.point)) << "\n";
   if (shown > 5) std::cout << "  ... (" << shown - 5 << " more; --json lists every cell)\n";
+  if (g)
+    std::cout << "  the wrench g = " << tuple_text(*g) << " is " << solvers::verdict_name(region.label(*g))
+              << (o.svg.empty() ? "" : " (marked in the picture)") << "\n";
   if (!o.svg.empty()) std::cout << "  picture: " << o.svg << "\n";
   return 0;
 }
@@ -162,13 +223,19 @@ int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
   if (o.common.json) {
     json edges = json::array(), arcs = json::array();
     for (const auto& p : pushes.edges)
-      edges.push_back({{"edge", p.edge}, {"from", exact_json(p.from)}, {"to", exact_json(p.to)},
-                       {"from_closed", p.from_closed}, {"to_closed", p.to_closed},
+      edges.push_back({{"edge", p.edge},
+                       {"from", exact_json(p.from)},
+                       {"to", exact_json(p.to)},
+                       {"from_closed", p.from_closed},
+                       {"to_closed", p.to_closed},
                        {"label", solvers::verdict_name(p.label)}});
     for (const auto& p : pushes.arcs)
-      arcs.push_back({{"from_direction", primitive_json(p.from)}, {"to_direction", primitive_json(p.to)},
-                      {"from_closed", p.from_closed}, {"to_closed", p.to_closed},
-                      {"from_degrees_approx", degrees(p.from)}, {"to_degrees_approx", degrees(p.to)},
+      arcs.push_back({{"from_direction", primitive_json(p.from)},
+                      {"to_direction", primitive_json(p.to)},
+                      {"from_closed", p.from_closed},
+                      {"to_closed", p.to_closed},
+                      {"from_degrees_approx", degrees(p.from)},
+                      {"to_degrees_approx", degrees(p.to)},
                       {"label", solvers::verdict_name(p.label)}});
     json j;
     j["finger"] = {{"edges", edges}, {"arcs", arcs}};
@@ -185,9 +252,10 @@ int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
       std::cout << "  the whole boundary: " << solvers::verdict_name(p.label) << "\n";
     else
       std::cout << "  arc from direction " << primitive_json(p.from).dump() << " to " << primitive_json(p.to).dump()
-              << " counter-clockwise, angles "
-              << interval_text(p.from_closed, std::to_string(degrees(p.from)), std::to_string(degrees(p.to)), p.to_closed)
-              << " deg (approx): " << solvers::verdict_name(p.label) << "\n";
+                << " counter-clockwise, angles "
+                << interval_text(p.from_closed, std::to_string(degrees(p.from)), std::to_string(degrees(p.to)),
+                                 p.to_closed)
+                << " deg (approx): " << solvers::verdict_name(p.label) << "\n";
   return 0;
 }
 
@@ -198,23 +266,25 @@ int run_stability(const StabilityOptions& options) {
   if (o.common.arith == "adaptive") o.common.arith = "verified";
   const std::string text = exact::JsonInput::read_text(o.file);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
-  if (int(o.region) + int(o.finger) + int(!o.wrench.empty()) != 1)
+  if (int(o.region) + int(o.finger) + int(!o.wrench.empty() && !o.region) != 1)
     throw exact::InputError("command line", "--wrench", "give exactly one of --wrench fx,fy,tz, --region or --finger");
-  if (o.region) return run_region(o, scene);
+  if (o.region)
+    return run_region(o, scene,
+                      o.wrench.empty() ? std::nullopt : std::optional(parse_number_list(o.wrench, "--wrench", 3)));
   if (o.finger) return run_finger(o, scene);
   const exact::Vec<Q> g = parse_number_list(o.wrench, "--wrench", 3);
   const exact::Arith arith = exact::parse_arith(o.common.arith);
   if (arith == exact::Arith::kFloat) {
     if (!o.certificate.empty())
       throw exact::InputError("command line", "--certificate", "certificates need --arith exact or verified");
-    return report(o, g, solvers::strong_stability<double>(scene, exact::to_double(g), {arith}));
+    return report(o, scene, g, solvers::strong_stability<double>(scene, exact::to_double(g), {arith}));
   }
   const auto r = solvers::strong_stability<Q>(scene, g, {arith});
   if (!o.certificate.empty()) write_text_file(o.certificate, solvers::stability_certificate(text, g, r));
   std::optional<solvers::Margin<Q>> margin;
   if (o.margin && r.verdict == solvers::StabilityVerdict::kStronglyStable)
     margin = solvers::stability_margin<Q>(solvers::stable_region<Q>(scene), g);
-  return report(o, g, r, margin);
+  return report(o, scene, g, r, margin);
 }
 
 }  // namespace
