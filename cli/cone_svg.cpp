@@ -124,7 +124,7 @@ std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat
     const P2 q = fixel_at[i];
     s << "<circle cx=\"" << v.x(q.x) << "\" cy=\"" << v.y(q.y) << "\" r=\"4\" stroke=\"black\" fill=\""
       << (f.frame.touching() ? "black" : "white") << "\"/>\n";
-    s << "<text x=\"" << num(std::stod(v.x(q.x)) + 6) << "\" y=\"" << num(std::stod(v.y(q.y)) + 14) << "\">" << (i + 1)
+    s << "<text x=\"" << num(std::stod(v.x(q.x)) + 6) << "\" y=\"" << num(std::stod(v.y(q.y)) + 14) << "\">" << i
       << "</text>\n";
   }
   // Generators as directed lines of force.

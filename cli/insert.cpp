@@ -1,12 +1,13 @@
 // `contactcert insert FILE`: the wrenches G_goal that seat the workpiece from any contact state
 // (wrench cone paper, sections 8-9, eq. 21 and Table 5) and the frictionless finger pushes inside it.
 #include <CLI/CLI.hpp>
-
 #include <cmath>
 #include <iostream>
 
 #include "cli/boundary_marks.h"
+#include "cli/boundary_text.h"
 #include "cli/command.h"
+#include "cli/contact_notes.h"
 #include "cli/json_out.h"
 #include "cli/progress_line.h"
 #include "exact/input_error.h"
@@ -58,12 +59,17 @@ json pieces_json(const solvers::BoundaryPieces<Q, bool>& p) {
   json edges = json::array(), arcs = json::array();
   for (const auto& e : p.edges)
     if (e.label)
-      edges.push_back({{"edge", e.edge}, {"from", exact_json(e.from)}, {"to", exact_json(e.to)},
-                       {"from_closed", e.from_closed}, {"to_closed", e.to_closed}});
+      edges.push_back({{"edge", e.edge},
+                       {"from", exact_json(e.from)},
+                       {"to", exact_json(e.to)},
+                       {"from_closed", e.from_closed},
+                       {"to_closed", e.to_closed}});
   for (const auto& a : p.arcs)
     if (a.label)
-      arcs.push_back({{"from_direction", primitive_json(a.from)}, {"to_direction", primitive_json(a.to)},
-                      {"from_closed", a.from_closed}, {"to_closed", a.to_closed}});
+      arcs.push_back({{"from_direction", primitive_json(a.from)},
+                      {"to_direction", primitive_json(a.to)},
+                      {"from_closed", a.from_closed},
+                      {"to_closed", a.to_closed}});
   return {{"edges", edges}, {"arcs", arcs}};
 }
 
@@ -73,7 +79,8 @@ int run_insert(const InsertOptions& o) {
     throw exact::InputError("command line", "--arith", "insert is computed exactly (use exact or verified)");
   std::vector<Q> mus;
   if (!o.sweep_mu.empty()) {
-    const exact::Vec<Q> v = parse_number_list(o.sweep_mu, "--sweep-mu", std::count(o.sweep_mu.begin(), o.sweep_mu.end(), ',') + 1);
+    const exact::Vec<Q> v =
+        parse_number_list(o.sweep_mu, "--sweep-mu", std::count(o.sweep_mu.begin(), o.sweep_mu.end(), ',') + 1);
     for (Eigen::Index i = 0; i < v.size(); ++i) {
       if (sgn(v(i)) < 0) throw exact::InputError("command line", "--sweep-mu", "friction coefficients must be >= 0");
       mus.push_back(v(i));
@@ -107,7 +114,8 @@ int run_insert(const InsertOptions& o) {
   if (o.common.json) {
     json sets = json::array();
     for (std::size_t i = 0; i < ins.sets.size(); ++i)
-      sets.push_back({{"state", ins.sets[i].state_text()}, {"mode", ins.sets[i].mode.text()},
+      sets.push_back({{"state", ins.sets[i].state_text()},
+                      {"mode", ins.sets[i].mode.text()},
                       {"redundant", static_cast<bool>(ins.redundant[i])},
                       {"empty", solvers::is_empty_cone<Q>(ins.cones[i])},
                       {"inequalities", exact_json(ins.cones[i].inequalities)},
@@ -124,21 +132,16 @@ int run_insert(const InsertOptions& o) {
   std::size_t needed = 0;
   for (bool r : ins.redundant) needed += !r;
   std::cout << "G_goal of " << o.file << ": complement of the union of " << ins.sets.size() << " wrench cones ("
-            << needed << " non-redundant)\n";
+            << needed << " non-redundant)\n"
+            << tiny_gap_notes(scene, "  ");
   for (std::size_t i = 0; i < ins.sets.size(); ++i)
     std::cout << "  state " << ins.sets[i].state_text() << "  mode " << ins.sets[i].mode.text()
-              << (solvers::is_empty_cone<Q>(ins.cones[i]) ? "  empty" : "")
-              << (ins.redundant[i] ? "  (redundant)" : "") << "\n";
+              << (solvers::is_empty_cone<Q>(ins.cones[i]) ? "  empty" : "") << (ins.redundant[i] ? "  (redundant)" : "")
+              << "\n";
   std::cout << "finger pushes that seat the workpiece from any state (fraction of the boundary ~"
             << goal_fraction(scene, pushes) << "):\n";
-  for (const auto& e : pushes.edges)
-    if (e.label)
-      std::cout << "  edge " << e.edge << ", s in " << (e.from_closed ? "[" : "(") << exact::to_string(e.from) << ", "
-                << exact::to_string(e.to) << (e.to_closed ? "]" : ")") << "\n";
-  for (const auto& a : pushes.arcs)
-    if (a.label)
-      std::cout << "  arc from direction " << primitive_json(a.from).dump() << " to " << primitive_json(a.to).dump()
-                << " counter-clockwise\n";
+  std::cout << pieces_text(
+      scene, pushes, "  ", [](bool in) { return in; }, [](bool) { return std::string(); });
   if (!sweep_rows.empty()) {
     std::cout << "friction sweep (Figure 11):\n      mu   boundary fraction in G_goal\n";
     for (const auto& [mu, frac] : sweep_rows) std::printf("  %6s   %.4f\n", mu.c_str(), frac);

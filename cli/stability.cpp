@@ -6,7 +6,9 @@
 #include <optional>
 
 #include "cli/boundary_marks.h"
+#include "cli/boundary_text.h"
 #include "cli/command.h"
+#include "cli/contact_notes.h"
 #include "cli/json_out.h"
 #include "cli/stability_svg.h"
 #include "exact/json_input.h"
@@ -136,7 +138,8 @@ int report(const StabilityOptions& o, const geometry::PlanarScene& scene, const 
   const std::size_t k = r.touching.size();
   std::cout << "verdict: " << solvers::verdict_name(r.verdict) << "\n"
             << "  wrench g = " << tuple_text(g) << " on " << o.file << " (" << k << " touching fixels, "
-            << o.common.arith << " arithmetic)\n";
+            << o.common.arith << " arithmetic)\n"
+            << tiny_gap_notes(scene, "  ");
   if (r.has_resting) {
     std::cout << "  at rest with contact forces (world coordinates; they balance g):\n";
     print_contacts(scene, r.touching, r.resting_forces);
@@ -182,7 +185,8 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene, co
     return 0;
   }
   std::cout << "stable region of " << o.file << ": " << region.cells.size() << " cells cut by " << region.planes.rows()
-            << " planes (" << region.modes.size() << " moving modes with non-empty wrench cones)\n";
+            << " planes (" << region.modes.size() << " moving modes with non-empty wrench cones)\n"
+            << tiny_gap_notes(scene, "  ");
   static const char* kind[4] = {"origin", "rays", "2-d sectors", "open regions"};
   for (int l = 0; l < 3; ++l) {
     std::cout << "  " << solvers::verdict_name(static_cast<solvers::StabilityVerdict>(l)) << ":";
@@ -201,10 +205,6 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene, co
               << (o.svg.empty() ? "" : " (marked in the picture)") << "\n";
   if (!o.svg.empty()) std::cout << "  picture: " << o.svg << "\n";
   return 0;
-}
-
-std::string interval_text(bool from_closed, const std::string& from, const std::string& to, bool to_closed) {
-  return (from_closed ? "[" : "(") + from + ", " + to + (to_closed ? "]" : ")");
 }
 
 double degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
@@ -242,20 +242,11 @@ int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
     std::cout << j.dump() << "\n";
     return 0;
   }
-  std::cout << "frictionless finger pushes along the inward normal of " << o.file << ":\n";
-  for (const auto& p : pushes.edges)
-    std::cout << "  edge " << p.edge << ", s in "
-              << interval_text(p.from_closed, exact::to_string(p.from), exact::to_string(p.to), p.to_closed) << ": "
-              << solvers::verdict_name(p.label) << "\n";
-  for (const auto& p : pushes.arcs)
-    if (p.from == p.to && !p.from_closed && !p.to_closed)
-      std::cout << "  the whole boundary: " << solvers::verdict_name(p.label) << "\n";
-    else
-      std::cout << "  arc from direction " << primitive_json(p.from).dump() << " to " << primitive_json(p.to).dump()
-                << " counter-clockwise, angles "
-                << interval_text(p.from_closed, std::to_string(degrees(p.from)), std::to_string(degrees(p.to)),
-                                 p.to_closed)
-                << " deg (approx): " << solvers::verdict_name(p.label) << "\n";
+  std::cout << "frictionless finger pushes along the inward normal of " << o.file << ":\n"
+            << tiny_gap_notes(scene, "  ")
+            << pieces_text(
+                   scene, pushes, "  ", [](solvers::StabilityVerdict) { return true; },
+                   [](solvers::StabilityVerdict v) { return std::string(": ") + solvers::verdict_name(v); });
   return 0;
 }
 
@@ -294,7 +285,7 @@ void register_stability(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand(
       "stability", "Is the workpiece strongly stable, only weakly stable, or unstable under a wrench?");
   add_common_options(*sub, o->common);
-  sub->add_option("file", o->file, "Planar scene file (SPEC section 3)")->required();
+  sub->add_option("file", o->file, "Planar scene file (format: docs/formats.md, section 3)")->required();
   sub->add_option("--wrench", o->wrench, "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");
   sub->add_flag("--region", o->region, "The whole strongly stable set: labelled cells of wrench space");
   sub->add_flag("--margin", o->margin, "With --wrench: squared radius of the largest strongly stable ball around it");
