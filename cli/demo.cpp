@@ -11,12 +11,14 @@
 #include <random>
 #include <sstream>
 
+#include "cli/boundary_fraction.h"
 #include "cli/boundary_marks.h"
 #include "cli/boundary_text.h"
 #include "cli/command.h"
 #include "cli/cone_svg.h"
 #include "cli/html_report.h"
 #include "cli/json_out.h"
+#include "cli/line_plot.h"
 #include "cli/stability_svg.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -148,7 +150,9 @@ void stability(const DemoOptions& o, HtmlReport& rep) {
 void insertion(const DemoOptions& o, HtmlReport& rep) {
   rep.heading("Sensorless insertion (sections 8-9, Figures 6, 10, 11)");
   std::vector<std::vector<std::string>> rows;
+  std::vector<LineSeries> sweep;
   for (const char* file : {"bt2002_section7_disk.json", "bt2002_fig10_pentagon_insert.json"}) {
+    sweep.push_back({file, {}});
     const auto base = geometry::load_planar_scene((fs::path(o.scenes) / file).string());
     for (const char* mu : {"0.01", "0.2", "0.4", "0.6"}) {
       auto scene = base;
@@ -167,6 +171,7 @@ void insertion(const DemoOptions& o, HtmlReport& rep) {
               (where.empty() ? "" : "; ") + edge_piece_text(scene, e.edge, e.from, e.to, e.from_closed, e.to_closed);
       for (const auto& a : p.arcs)
         if (a.label) where += (where.empty() ? "" : "; ") + arc_piece_text(a.from, a.to, a.from_closed, a.to_closed);
+      sweep.back().points.emplace_back(exact::parse_rational(mu).get_d(), boundary_fraction(scene, p));
       std::size_t needed = 0;
       for (bool r : ins.redundant) needed += !r;
       rows.push_back({file, mu, std::to_string(ins.sets.size()) + " (" + std::to_string(needed) + " non-redundant)",
@@ -176,6 +181,10 @@ void insertion(const DemoOptions& o, HtmlReport& rep) {
   rep.paragraph(
       "Finger pushes that seat the workpiece from any contact state, by friction coefficient: the set "
       "shrinks as friction grows (Figure 11).");
+  rep.figure(line_plot_svg(sweep, "Figure 11: pushes that seat the part, by friction", "friction coefficient mu",
+                           "fraction of the boundary"),
+             "The fraction of the boundary (by length; by angle on the disk) where a frictionless push seats the "
+             "workpiece from any contact state, against mu.");
   rep.table({"scene", "mu", "wrench cones in the union", "pushes in G_goal"}, rows);
   std::cout << "  insertion: " << rows.size() << " friction cases\n";
 }

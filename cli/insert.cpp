@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "cli/boundary_fraction.h"
 #include "cli/boundary_marks.h"
 #include "cli/boundary_text.h"
 #include "cli/command.h"
@@ -26,34 +27,6 @@ struct InsertOptions {
   std::string sweep_mu;
   std::string svg;
 };
-
-double angle(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()); }
-
-/// The fraction of the boundary (by length, in doubles: a summary, not a verdict) whose pushes seat the part.
-double goal_fraction(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<Q, bool>& p) {
-  double in = 0, total = 0;
-  if (const auto* poly = std::get_if<geometry::PolygonShape>(&scene.workpiece.shape)) {
-    const auto& V = poly->vertices;
-    std::vector<double> len(V.size());
-    for (std::size_t e = 0; e < V.size(); ++e) {
-      const auto& a = V[e];
-      const auto& b = V[(e + 1) % V.size()];
-      len[e] = std::hypot(Q(b.x - a.x).get_d(), Q(b.y - a.y).get_d());
-      total += len[e];
-    }
-    for (const auto& piece : p.edges)
-      if (piece.label) in += Q(piece.to - piece.from).get_d() * len[piece.edge];
-  } else {
-    total = 2 * M_PI;
-    for (const auto& piece : p.arcs) {
-      if (!piece.label) continue;
-      double d = angle(piece.to) - angle(piece.from);
-      if (d < 0 || (d == 0 && !(piece.from_closed && piece.to_closed))) d += 2 * M_PI;
-      in += d;
-    }
-  }
-  return total > 0 ? in / total : 0;
-}
 
 json pieces_json(const solvers::BoundaryPieces<Q, bool>& p) {
   json edges = json::array(), arcs = json::array();
@@ -106,7 +79,7 @@ int run_insert(const InsertOptions& o) {
     geometry::PlanarScene s = scene;
     for (auto& f : s.fixels) f.mu_s = f.mu_k = mu;
     const auto [i2, p2] = analyse(s);
-    const double frac = goal_fraction(s, p2);
+    const double frac = boundary_fraction(s, p2);
     sweep.push_back({{"mu", exact_json(mu)}, {"goal_boundary_fraction_approx", frac}, {"pushes", pieces_json(p2)}});
     sweep_rows.emplace_back(exact::to_string(mu), frac);
   }
@@ -124,7 +97,7 @@ int run_insert(const InsertOptions& o) {
     json j;
     j["sets"] = sets;
     j["pushes"] = pieces_json(pushes);
-    j["goal_boundary_fraction_approx"] = goal_fraction(scene, pushes);
+    j["goal_boundary_fraction_approx"] = boundary_fraction(scene, pushes);
     if (!mus.empty()) j["sweep"] = sweep;
     std::cout << j.dump() << "\n";
     return 0;
@@ -139,7 +112,7 @@ int run_insert(const InsertOptions& o) {
               << (solvers::is_empty_cone<Q>(ins.cones[i]) ? "  empty" : "") << (ins.redundant[i] ? "  (redundant)" : "")
               << "\n";
   std::cout << "finger pushes that seat the workpiece from any state (fraction of the boundary ~"
-            << goal_fraction(scene, pushes) << "):\n";
+            << boundary_fraction(scene, pushes) << "):\n";
   std::cout << pieces_text(
       scene, pushes, "  ", [](bool in) { return in; }, [](bool) { return std::string(); });
   if (!sweep_rows.empty()) {
