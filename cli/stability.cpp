@@ -10,6 +10,7 @@
 #include "cli/command.h"
 #include "cli/contact_notes.h"
 #include "cli/json_out.h"
+#include "cli/region_data.h"
 #include "cli/stability_svg.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -35,6 +36,7 @@ struct StabilityOptions {
   bool finger = false;
   bool margin = false;
   std::string svg;
+  std::string wrenches;
 };
 
 template <class T>
@@ -172,14 +174,11 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene, co
   int count[3][4] = {};
   for (const auto& c : region.cells) ++count[static_cast<int>(c.label)][c.dimension];
   if (o.common.json) {
-    json cells = json::array();
-    for (const auto& c : region.cells)
-      cells.push_back(
-          {{"dimension", c.dimension}, {"point", primitive_json(c.point)}, {"label", solvers::verdict_name(c.label)}});
     json modes = json::array();
     for (const auto& m : region.modes) modes.push_back(m.text());
     json j;
-    j["region"] = {{"planes", region.planes.rows()}, {"nonempty_moving_modes", modes}, {"cells", cells}};
+    j["region"] = region_data_json(region);
+    j["region"]["nonempty_moving_modes"] = modes;
     if (g) j["region"]["wrench"] = {{"g", exact_json(*g)}, {"label", solvers::verdict_name(region.label(*g))}};
     std::cout << j.dump() << "\n";
     return 0;
@@ -250,6 +249,39 @@ int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
   return 0;
 }
 
+/// One verdict per wrench of a file, from one StabilityOracle prepared for the scene.
+template <class T>
+int run_wrenches(const StabilityOptions& o, const geometry::PlanarScene& scene, const exact::Arith arith) {
+  const std::vector<exact::Vec<Q>> gs = read_wrenches(o.wrenches);
+  const solvers::StabilityOracle<T> oracle(scene, {arith});
+  json rows = json::array();
+  long count[3] = {}, lps = oracle.preparation_lps();
+  for (const auto& g : gs) {
+    exact::Vec<T> gt(3);
+    for (int k = 0; k < 3; ++k) gt(k) = solvers::from_exact<T>(g(k));
+    const auto r = oracle.verdict(gt);
+    ++count[static_cast<int>(r.verdict)];
+    lps += r.lps;
+    if (o.common.json)
+      rows.push_back({{"wrench", exact_json(g)}, {"verdict", solvers::verdict_name(r.verdict)}});
+    else
+      std::cout << "  g = " << tuple_text(g) << ": " << solvers::verdict_name(r.verdict) << "\n";
+  }
+  if (o.common.json) {
+    std::cout << json{{"wrenches", rows},
+                      {"counts", {{"strongly_stable", count[0]}, {"weakly_stable", count[1]}, {"unstable", count[2]}}},
+                      {"arith", o.common.arith},
+                      {"lps", lps}}
+                     .dump()
+              << "\n";
+  } else {
+    std::cout << gs.size() << " wrenches on " << o.file << ": " << count[0] << " strongly stable, " << count[1]
+              << " weakly stable, " << count[2] << " unstable (" << lps << " LPs, " << o.common.arith
+              << " arithmetic)\n";
+  }
+  return 0;
+}
+
 int run_stability(const StabilityOptions& options) {
   // The precision ladder is the UCP's (--arith adaptive); stability's verified path already settles each LP
   // from a float answer checked exactly, so adaptive runs (and is reported) as verified here.
@@ -257,8 +289,13 @@ int run_stability(const StabilityOptions& options) {
   if (o.common.arith == "adaptive") o.common.arith = "verified";
   const std::string text = exact::JsonInput::read_text(o.file);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
-  if (int(o.region) + int(o.finger) + int(!o.wrench.empty() && !o.region) != 1)
-    throw exact::InputError("command line", "--wrench", "give exactly one of --wrench fx,fy,tz, --region or --finger");
+  if (int(o.region) + int(o.finger) + int(!o.wrench.empty() && !o.region) + int(!o.wrenches.empty()) != 1)
+    throw exact::InputError("command line", "--wrench",
+                            "give exactly one of --wrench fx,fy,tz, --wrenches FILE, --region or --finger");
+  if (!o.wrenches.empty())
+    return exact::parse_arith(o.common.arith) == exact::Arith::kFloat
+               ? run_wrenches<double>(o, scene, exact::Arith::kFloat)
+               : run_wrenches<Q>(o, scene, exact::parse_arith(o.common.arith));
   if (o.region)
     return run_region(o, scene,
                       o.wrench.empty() ? std::nullopt : std::optional(parse_number_list(o.wrench, "--wrench", 3)));
@@ -287,6 +324,8 @@ void register_stability(CLI::App& app, Action& action) {
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Planar scene file (format: docs/formats.md, section 3)")->required();
   sub->add_option("--wrench", o->wrench, "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");
+  sub->add_option("--wrenches", o->wrenches,
+                  "Many wrenches, one verdict each: a JSON array of [fx, fy, tz] or one fx,fy,tz per line");
   sub->add_flag("--region", o->region, "The whole strongly stable set: labelled cells of wrench space");
   sub->add_flag("--margin", o->margin, "With --wrench: squared radius of the largest strongly stable ball around it");
   sub->add_flag("--finger", o->finger, "Where a frictionless finger push along the boundary normal is strongly stable");
