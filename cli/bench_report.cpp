@@ -441,7 +441,10 @@ std::string bench_text(const BenchRun& run) {
 std::string bench_markdown(const BenchRun& run) {
   const auto tables = [&](const Table& t) {
     std::string out;
-    for (const Table& part : split(t, run.rungs.size())) out += (out.empty() ? "" : "\n") + markdown(part);
+    for (const Table& part : split(t, run.rungs.size())) {
+      if (!out.empty()) out += "\n";
+      out += markdown(part);
+    }
     return out;
   };
   std::string s =

@@ -126,9 +126,11 @@ void stability(const DemoOptions& o, HtmlReport& rep) {
   int strong3 = 0;
   for (const auto& c : region.cells)
     strong3 += c.dimension == 3 && c.label == solvers::StabilityVerdict::kStronglyStable;
-  rep.figure(stability_sphere_svg(region),
+  exact::Vec<Q> gravity(3);
+  gravity << 0, -1, 0;
+  rep.figure(stability_sphere_svg(region, gravity),
              "Wrench directions for the disk on two fixels, mu = 1.2: " + std::to_string(region.cells.size()) +
-                 " exact cells, " + std::to_string(strong3) + " open strongly stable regions.");
+                 " exact cells, " + std::to_string(strong3) + " open strongly stable regions; g = (0, -1, 0) marked.");
   std::cout << "  region: " << region.cells.size() << " exact cells, " << strong3 << " open strongly stable regions\n";
   const auto pushes = solvers::finger_pushes<Q>(scene, region);
   std::vector<std::vector<std::string>> prow;
