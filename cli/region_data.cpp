@@ -58,23 +58,35 @@ json primitive_rows(const exact::Mat<Q>& M) {
 
 }  // namespace
 
+std::vector<Vec<Q>> cell_representatives(const solvers::StableRegion<Q>& region) {
+  const auto small = small_representatives(region.planes, 24);
+  std::vector<Vec<Q>> out;
+  for (const auto& c : region.cells) {
+    if (const auto it = small.find(solvers::sign_vector(region, c.point)); it != small.end()) {
+      Vec<Q> v(3);
+      v << Q(it->second[0]), Q(it->second[1]), Q(it->second[2]);
+      out.push_back(v);
+    } else {
+      const auto z = exact::primitive(c.point);
+      Vec<Q> v(3);
+      for (int k = 0; k < 3; ++k) v(k) = Q(z[static_cast<std::size_t>(k)]);
+      out.push_back(v);
+    }
+  }
+  return out;
+}
+
 json region_data_json(const solvers::StableRegion<Q>& region) {
   json planes = json::array();
   for (Eigen::Index j = 0; j < region.planes.rows(); ++j)
     planes.push_back(primitive_json(Vec<Q>(region.planes.row(j).transpose())));
-  const auto small = small_representatives(region.planes, 24);
+  const auto reps = cell_representatives(region);
   json cells = json::array();
-  for (const auto& c : region.cells) {
-    const std::string signs = solvers::sign_vector(region, c.point);
-    json rep;
-    if (const auto it = small.find(signs); it != small.end()) {
-      for (long v : it->second) rep.push_back(std::to_string(v));
-    } else {
-      rep = primitive_json(c.point);
-    }
+  for (std::size_t i = 0; i < region.cells.size(); ++i) {
+    const auto& c = region.cells[i];
     cells.push_back({{"dimension", c.dimension},
-                     {"signs", signs},
-                     {"representative", rep},
+                     {"signs", solvers::sign_vector(region, c.point)},
+                     {"representative", primitive_json(reps[i])},
                      {"point", primitive_json(c.point)},
                      {"label", solvers::verdict_name(c.label)}});
   }

@@ -11,6 +11,10 @@
 
 namespace contactcert::cli {
 
+/// Per cell of the region, in order: an integer vector of the cell with smallest max-norm up to 24 where one
+/// exists, else the primitive integer multiple of the cell's exact point.
+std::vector<exact::Vec<exact::Q>> cell_representatives(const solvers::StableRegion<exact::Q>& region);
+
 /// The "region" object: `planes` (primitive integer rows), `cells` (dimension, sign vector, a representative
 /// of smallest max-norm found among integer vectors with entries in [-24, 24], else the primitive exact point;
 /// label) and `strongly_stable_cones`: the strongly stable cells merged (two cells whose sign vectors differ only

@@ -195,9 +195,11 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene, co
     std::cout << (cells == 0 ? " none\n" : "\n");
   }
   int shown = 0;
-  for (const auto& c : region.cells)
-    if (c.dimension == 3 && c.label == solvers::StabilityVerdict::kStronglyStable && shown++ < 5)
-      std::cout << "  strongly stable open region through g = " << tuple_text(exact::primitive(c.point)) << "\n";
+  const auto reps = cell_representatives(region);
+  for (std::size_t i = 0; i < region.cells.size(); ++i)
+    if (region.cells[i].dimension == 3 && region.cells[i].label == solvers::StabilityVerdict::kStronglyStable &&
+        shown++ < 5)
+      std::cout << "  strongly stable open region through g = " << tuple_text(reps[i]) << "\n";
   if (shown > 5) std::cout << "  ... (" << shown - 5 << " more; --json lists every cell)\n";
   if (g)
     std::cout << "  the wrench g = " << tuple_text(*g) << " is " << solvers::verdict_name(region.label(*g))
