@@ -1,5 +1,5 @@
 # `contactcert bench` (issue 8): included from cli/CMakeLists.txt. The families library is built with the CLI
 # whatever CONTACTCERT_BENCH says, since the command is part of the product.
 add_subdirectory(${CMAKE_SOURCE_DIR}/bench/families ${CMAKE_BINARY_DIR}/bench/families)
-target_sources(contactcert PRIVATE bench.cpp bench_report.cpp)
-target_link_libraries(contactcert PRIVATE contactcert_bench_families)
+target_sources(contactcert_cli PRIVATE bench.cpp bench_report.cpp)
+target_link_libraries(contactcert_cli PRIVATE contactcert_bench_families)

@@ -5,7 +5,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
+#include "cli/results.h"
 #include "exact/json_input.h"
+#include "solvers/stability/contact_modes.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/ucp/certificate.h"
 
@@ -35,27 +37,43 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
     if (kind == "ucp_jammed") out.details = {{"nodes", c.nodes}, {"leaves", c.leaves}};
     return out;
   }
+  if (kind == "modes") {
+    const auto c = solvers::check_modes_certificate(cert);
+    out.valid = c.valid;
+    out.reason = c.reason;
+    out.details = {{"modes", c.modes}, {"dead_prefixes", c.dead}};
+    return out;
+  }
   if (kind == "stability") {
     const auto c = solvers::check_stability_certificate(cert);
     out.valid = c.valid;
     out.reason = c.reason;
     return out;
   }
-  cert.at("kind").fail("expected a certificate kind: ucp_jammed, ucp_solvable or stability, found \"" + kind + "\"");
+  cert.at("kind").fail("expected a certificate kind: ucp_jammed, ucp_solvable, stability or modes, found \"" + kind + "\"");
 }
 
+}  // namespace
+
+json check_json(const exact::JsonInput& certificate) {
+  const CheckOutcome c = check_any(certificate);
+  json j;
+  j["valid"] = c.valid;
+  j["kind"] = c.kind;
+  j["reason"] = c.reason;
+  for (auto it = c.details.begin(); it != c.details.end(); ++it) j[it.key()] = it.value();
+  return j;
+}
+
+namespace {
+
 int run_check(const CheckOptions& o) {
-  const CheckOutcome c = check_any(exact::JsonInput::load(o.file));
+  const json j = check_json(exact::JsonInput::load(o.file));
   if (o.common.json) {
-    nlohmann::ordered_json j;
-    j["valid"] = c.valid;
-    j["kind"] = c.kind;
-    j["reason"] = c.reason;
-    for (auto it = c.details.begin(); it != c.details.end(); ++it) j[it.key()] = it.value();
     std::cout << j.dump() << "\n";
   } else {
-    std::cout << "check " << o.file << ": " << c.kind << " certificate is " << (c.valid ? "VALID" : "INVALID") << "\n  "
-              << c.reason << "\n";
+    std::cout << "check " << o.file << ": " << j["kind"].get<std::string>() << " certificate is "
+              << (j["valid"].get<bool>() ? "VALID" : "INVALID") << "\n  " << j["reason"].get<std::string>() << "\n";
   }
   return 0;
 }

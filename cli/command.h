@@ -30,6 +30,7 @@ void register_check(CLI::App& app, Action& action);
 void register_stability(CLI::App& app, Action& action);
 void register_insert(CLI::App& app, Action& action);
 void register_cone(CLI::App& app, Action& action);
+void register_modes(CLI::App& app, Action& action);
 void register_convert(CLI::App& app, Action& action);
 void register_bench(CLI::App& app, Action& action);
 

@@ -9,6 +9,7 @@
 
 #include "cli/command.h"
 #include "cli/cone_svg.h"
+#include "cli/results.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
@@ -28,6 +29,7 @@ struct ConeOptions {
   std::string mode;
   std::string route = "paper";
   std::string svg;
+  std::string table2 = "strict";
 };
 
 const char* interaction_name(solvers::Interaction l) {
@@ -39,6 +41,7 @@ const char* interaction_name(solvers::Interaction l) {
     case solvers::Interaction::kSlideRight: return "slide right";
     case solvers::Interaction::kRoll: return "roll";
     case solvers::Interaction::kMaintain: return "maintain";
+    case solvers::Interaction::kSeparatePrinted: return "separate, a_n >= 0 as Table 2 prints it";
   }
   return "";
 }
@@ -101,6 +104,82 @@ nlohmann::json line_of_force_json(const exact::Vec<Q>& g, const geometry::Point2
   return j;
 }
 
+}  // namespace
+
+nlohmann::json cone_json(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
+                         const solvers::WrenchCone<Q>& c, const std::string& route, const std::string& arith) {
+  const geometry::NncForm<Q>& f = c.cone;
+  const bool empty = c.status == solvers::ConeStatus::kEmpty;
+  nlohmann::json j;
+  j["mode"] = mode.text();
+  j["empty"] = empty;
+  j["route"] = route;
+  j["arith"] = arith;
+  j["decided_by"] = "exact";
+  if (empty) {
+    j["face"] = {{"dim", 3}, {"empty", true}};
+    j["span"] = nullptr;
+  } else {
+    // SPEC section 4; the exact cone is canonical, so its rows are primitive integer vectors.
+    j["face"] = {{"dim", 3},
+                 {"inequalities", directions_json(f.face.inequalities)},
+                 {"strict", directions_json(f.face.strict)},
+                 {"equalities", directions_json(f.face.equalities)}};
+    j["span"] = {{"dim", 3}, {"rays", directions_json(f.closure.rays)}, {"lines", directions_json(f.closure.lines)}};
+  }
+  nlohmann::json open = nlohmann::json::array();
+  for (const auto& face : f.open_faces) open.push_back(face);
+  j["open_faces"] = open;
+  j["dimension"] = f.dimension();
+  j["K"] = matrix_json(c.form.K);
+  j["P"] = matrix_json(c.form.P);
+  j["z"] = c.form.names;
+  j["z_strict"] = c.form.strict;
+  nlohmann::json lof = nlohmann::json::array();
+  if (!empty)
+    for (Eigen::Index r = 0; r < f.closure.rays.rows(); ++r)
+      lof.push_back(line_of_force_json(f.closure.rays.row(r).transpose(), scene.workpiece.com));
+  j["lines_of_force"] = lof;
+  return j;
+}
+
+nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchCone<double>& c,
+                         const std::string& route) {
+  nlohmann::json j;
+  j["mode"] = mode.text();
+  j["empty"] = c.status == solvers::ConeStatus::kEmpty;
+  j["route"] = route;
+  j["arith"] = "float";
+  j["decided_by"] = "float";
+  j["face_approx"] = {{"inequalities", matrix_json(c.cone.face.inequalities)},
+                      {"strict", matrix_json(c.cone.face.strict)},
+                      {"equalities", matrix_json(c.cone.face.equalities)}};
+  j["span_approx"] = {{"rays", matrix_json(c.cone.closure.rays)}, {"lines", matrix_json(c.cone.closure.lines)}};
+  return j;
+}
+
+std::string cone_svg(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
+                     const solvers::WrenchCone<Q>& c) {
+  const bool empty = c.status == solvers::ConeStatus::kEmpty;
+  return wrench_cone_svg(scene, empty ? Mat<Q>(0, 3) : c.cone.closure.rays, empty ? Mat<Q>(0, 3) : c.cone.closure.lines,
+                         "mode '" + mode.text() + "'" + (empty ? " (empty cone)" : ""));
+}
+
+solvers::ModeString cone_mode(const geometry::PlanarScene& scene, const std::string& file, const std::string& text,
+                              bool printed_separation) {
+  std::vector<bool> touching;
+  for (const auto& f : scene.fixels) touching.push_back(f.frame.touching());
+  solvers::ModeParse mode = solvers::parse_mode(text, touching);
+  if (mode.status != solvers::ModeStatus::kValid) throw exact::InputError(file, "--mode", mode.message);
+  if (printed_separation)  // s at a touching fixel as Table 2 prints it: a_n >= 0 (the letter S)
+    for (std::size_t i = 0; i < touching.size(); ++i)
+      if (touching[i] && mode.mode.letters[i] == solvers::Interaction::kSeparate)
+        mode.mode.letters[i] = solvers::Interaction::kSeparatePrinted;
+  return mode.mode;
+}
+
+namespace {
+
 int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const solvers::ModeString& mode, solvers::Route route) {
   const solvers::WrenchCone<Q> c = solvers::wrench_cone<Q>(scene, mode, route);
   const geometry::NncForm<Q>& f = c.cone;
@@ -109,40 +188,10 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
   if (!o.svg.empty()) {
     std::ofstream out(o.svg);
     if (!out) throw exact::InputError(o.svg, "", "a writable SVG file");
-    out << wrench_cone_svg(scene, empty ? Mat<Q>(0, 3) : f.closure.rays, empty ? Mat<Q>(0, 3) : f.closure.lines,
-                           "mode '" + mode.text() + "'" + (empty ? " (empty cone)" : ""));
+    out << cone_svg(scene, mode, c);
   }
   if (o.common.json) {
-    nlohmann::json j;
-    j["mode"] = mode.text();
-    j["empty"] = empty;
-    j["route"] = o.route;
-    j["arith"] = o.common.arith;
-    j["decided_by"] = "exact";
-    if (empty) {
-      j["face"] = {{"dim", 3}, {"empty", true}};
-      j["span"] = nullptr;
-    } else {
-      // SPEC section 4; the exact cone is canonical, so its rows are primitive integer vectors.
-      j["face"] = {{"dim", 3},
-                   {"inequalities", directions_json(f.face.inequalities)},
-                   {"strict", directions_json(f.face.strict)},
-                   {"equalities", directions_json(f.face.equalities)}};
-      j["span"] = {{"dim", 3}, {"rays", directions_json(f.closure.rays)}, {"lines", directions_json(f.closure.lines)}};
-    }
-    nlohmann::json open = nlohmann::json::array();
-    for (const auto& face : f.open_faces) open.push_back(face);
-    j["open_faces"] = open;
-    j["dimension"] = f.dimension();
-    j["K"] = matrix_json(c.form.K);
-    j["P"] = matrix_json(c.form.P);
-    j["z"] = c.form.names;
-    j["z_strict"] = c.form.strict;
-    nlohmann::json lof = nlohmann::json::array();
-    if (!empty)
-      for (Eigen::Index r = 0; r < f.closure.rays.rows(); ++r) lof.push_back(line_of_force_json(f.closure.rays.row(r).transpose(), com));
-    j["lines_of_force"] = lof;
-    std::cout << j.dump() << "\n";
+    std::cout << cone_json(scene, mode, c, o.route, o.common.arith).dump() << "\n";
     return 0;
   }
   std::cout << "contactcert cone: " << o.file << ", mode '" << mode.text() << "' (route " << o.route << ", exact)\n";
@@ -194,17 +243,7 @@ int run_float(const ConeOptions& o, const geometry::PlanarScene& scene, const so
   const solvers::WrenchCone<double> c = solvers::wrench_cone<double>(scene, mode, route);
   const bool empty = c.status == solvers::ConeStatus::kEmpty;
   if (o.common.json) {
-    nlohmann::json j;
-    j["mode"] = mode.text();
-    j["empty"] = empty;
-    j["route"] = o.route;
-    j["arith"] = "float";
-    j["decided_by"] = "float";
-    j["face_approx"] = {{"inequalities", matrix_json(c.cone.face.inequalities)},
-                        {"strict", matrix_json(c.cone.face.strict)},
-                        {"equalities", matrix_json(c.cone.face.equalities)}};
-    j["span_approx"] = {{"rays", matrix_json(c.cone.closure.rays)}, {"lines", matrix_json(c.cone.closure.lines)}};
-    std::cout << j.dump() << "\n";
+    std::cout << cone_json(mode, c, o.route).dump() << "\n";
     return 0;
   }
   std::cout << "contactcert cone: " << o.file << ", mode '" << mode.text() << "' (route " << o.route
@@ -223,13 +262,10 @@ int run_float(const ConeOptions& o, const geometry::PlanarScene& scene, const so
 
 int run_cone(const ConeOptions& o) {
   const geometry::PlanarScene scene = geometry::load_planar_scene(o.file);
-  std::vector<bool> touching;
-  for (const auto& f : scene.fixels) touching.push_back(f.frame.touching());
-  const solvers::ModeParse mode = solvers::parse_mode(o.mode, touching);
-  if (mode.status != solvers::ModeStatus::kValid) throw exact::InputError(o.file, "--mode", mode.message);
+  const solvers::ModeString mode = cone_mode(scene, o.file, o.mode, o.table2 == "printed");
   const solvers::Route route = o.route == "paper" ? solvers::Route::kPaper : solvers::Route::kProject;
   // The verified path is the exact one here: the cone's combinatorics are decided in rationals.
-  return o.common.arith == "float" ? run_float(o, scene, mode.mode, route) : run_exact(o, scene, mode.mode, route);
+  return o.common.arith == "float" ? run_float(o, scene, mode, route) : run_exact(o, scene, mode, route);
 }
 
 }  // namespace
@@ -243,6 +279,10 @@ void register_cone(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"paper", "project"}))
       ->capture_default_str();
   sub->add_option("--svg", opts->svg, "Write a picture: workpiece, fixels, friction cones, lines of force");
+  sub->add_option("--table2", opts->table2,
+                  "strict: s at a touching fixel is a_n > 0 (seeds errata); printed: a_n >= 0 as Table 2 prints it")
+      ->check(CLI::IsMember({"strict", "printed"}))
+      ->default_str("strict");
   add_common_options(*sub, opts->common);
   sub->callback([opts, &action] { action = [opts] { return run_cone(*opts); }; });
 }

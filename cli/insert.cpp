@@ -11,6 +11,7 @@
 #include "cli/contact_notes.h"
 #include "cli/json_out.h"
 #include "cli/progress_line.h"
+#include "cli/results.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
@@ -46,58 +47,79 @@ json pieces_json(const solvers::BoundaryPieces<Q, bool>& p) {
   return {{"edges", edges}, {"arcs", arcs}};
 }
 
+}  // namespace
+
+json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion<Q>& ins,
+                    const solvers::BoundaryPieces<Q, bool>& pushes) {
+  json sets = json::array();
+  for (std::size_t i = 0; i < ins.sets.size(); ++i)
+    sets.push_back({{"state", ins.sets[i].state_text()},
+                    {"mode", ins.sets[i].mode.text()},
+                    {"redundant", static_cast<bool>(ins.redundant[i])},
+                    {"empty", solvers::is_empty_cone<Q>(ins.cones[i])},
+                    {"inequalities", exact_json(ins.cones[i].inequalities)},
+                    {"equalities", exact_json(ins.cones[i].equalities)},
+                    {"strict", exact_json(ins.cones[i].strict)}});
+  json j;
+  j["sets"] = sets;
+  j["pushes"] = pieces_json(pushes);
+  j["goal_boundary_fraction_approx"] = boundary_fraction(scene, pushes);
+  return j;
+}
+
+std::vector<Q> sweep_mus(const std::string& text) {
+  std::vector<Q> mus;
+  if (text.empty()) return mus;
+  const exact::Vec<Q> v = parse_number_list(text, "--sweep-mu", std::count(text.begin(), text.end(), ',') + 1);
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    if (sgn(v(i)) < 0) throw exact::InputError("command line", "--sweep-mu", "friction coefficients must be >= 0");
+    mus.push_back(v(i));
+  }
+  return mus;
+}
+
+json sweep_entry_json(const geometry::PlanarScene& scene, const Q& mu) {
+  geometry::PlanarScene s = scene;
+  for (auto& f : s.fixels) f.mu_s = f.mu_k = mu;
+  const auto ins = solvers::insertion<Q>(s);
+  const auto pushes = solvers::insertion_pushes<Q>(s, ins);
+  return {{"mu", exact_json(mu)},
+          {"goal_boundary_fraction_approx", boundary_fraction(s, pushes)},
+          {"pushes", pieces_json(pushes)}};
+}
+
+std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<Q, bool>& pushes) {
+  const auto marks = boundary_marks<bool>(scene, pushes, [](bool in) { return in ? std::string("#1b7837") : ""; });
+  return wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
+                         "green: frictionless pushes that seat the workpiece from any state", marks);
+}
+
+namespace {
+
 int run_insert(const InsertOptions& o) {
   const geometry::PlanarScene scene = geometry::load_planar_scene(o.file);
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "insert is computed exactly (use exact or verified)");
-  std::vector<Q> mus;
-  if (!o.sweep_mu.empty()) {
-    const exact::Vec<Q> v =
-        parse_number_list(o.sweep_mu, "--sweep-mu", std::count(o.sweep_mu.begin(), o.sweep_mu.end(), ',') + 1);
-    for (Eigen::Index i = 0; i < v.size(); ++i) {
-      if (sgn(v(i)) < 0) throw exact::InputError("command line", "--sweep-mu", "friction coefficients must be >= 0");
-      mus.push_back(v(i));
-    }
-  }
+  const std::vector<Q> mus = sweep_mus(o.sweep_mu);
   auto analyse = [&](const geometry::PlanarScene& s) {
     auto ins = solvers::insertion<Q>(s);
     auto pushes = solvers::insertion_pushes<Q>(s, ins);
     return std::make_pair(std::move(ins), std::move(pushes));
   };
   const auto [ins, pushes] = analyse(scene);
-  if (!o.svg.empty()) {
-    const auto marks = boundary_marks<bool>(scene, pushes, [](bool in) { return in ? std::string("#1b7837") : ""; });
-    write_text_file(o.svg, wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
-                                           "green: frictionless pushes that seat the workpiece from any state", marks));
-  }
+  if (!o.svg.empty()) write_text_file(o.svg, insertion_svg(scene, pushes));
   json sweep = json::array();
   std::vector<std::pair<std::string, double>> sweep_rows;
   ProgressLine progress("insert " + o.file + " --sweep-mu");
   for (const Q& mu : mus) {
     progress.update("mu = " + exact::to_string(mu) + " (" + std::to_string(sweep_rows.size() + 1) + " of " +
                     std::to_string(mus.size()) + ")");
-    geometry::PlanarScene s = scene;
-    for (auto& f : s.fixels) f.mu_s = f.mu_k = mu;
-    const auto [i2, p2] = analyse(s);
-    const double frac = boundary_fraction(s, p2);
-    sweep.push_back({{"mu", exact_json(mu)}, {"goal_boundary_fraction_approx", frac}, {"pushes", pieces_json(p2)}});
-    sweep_rows.emplace_back(exact::to_string(mu), frac);
+    sweep.push_back(sweep_entry_json(scene, mu));
+    sweep_rows.emplace_back(exact::to_string(mu), sweep.back()["goal_boundary_fraction_approx"].get<double>());
   }
   progress.finish();
   if (o.common.json) {
-    json sets = json::array();
-    for (std::size_t i = 0; i < ins.sets.size(); ++i)
-      sets.push_back({{"state", ins.sets[i].state_text()},
-                      {"mode", ins.sets[i].mode.text()},
-                      {"redundant", static_cast<bool>(ins.redundant[i])},
-                      {"empty", solvers::is_empty_cone<Q>(ins.cones[i])},
-                      {"inequalities", exact_json(ins.cones[i].inequalities)},
-                      {"equalities", exact_json(ins.cones[i].equalities)},
-                      {"strict", exact_json(ins.cones[i].strict)}});
-    json j;
-    j["sets"] = sets;
-    j["pushes"] = pieces_json(pushes);
-    j["goal_boundary_fraction_approx"] = boundary_fraction(scene, pushes);
+    json j = insertion_json(scene, ins, pushes);
     if (!mus.empty()) j["sweep"] = sweep;
     std::cout << j.dump() << "\n";
     return 0;

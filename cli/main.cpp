@@ -21,20 +21,6 @@
 #endif
 
 namespace contactcert::cli {
-
-void add_common_options(CLI::App& sub, CommonOptions& opts) {
-  sub.add_flag("--json", opts.json, "Machine output: one JSON object on stdout");
-  sub.add_option("--arith", opts.arith,
-                 "exact: rationals only; float: doubles only, unchecked; verified: float checked and "
-                 "if need be redone exactly; adaptive: double, intervals, MPFR, exact, climbed only as far as "
-                 "needed (ucp; the other commands treat it as verified)")
-      ->check(CLI::IsMember({"exact", "float", "verified", "adaptive"}))
-      ->default_str("verified");
-  sub.add_option("--time-limit", opts.time_limit, "Seconds of wall clock before the run stops with exit 3 (0 = none)")
-      ->check(CLI::NonNegativeNumber)
-      ->default_str("0");
-}
-
 namespace {
 
 /// Ends the process with exit code 3 if the command is still running `limit` seconds (+ grace) from now.
@@ -68,6 +54,7 @@ int main(int argc, char** argv) {
   cli::register_check(app, action);
   cli::register_stability(app, action);
   cli::register_insert(app, action);
+  cli::register_modes(app, action);
   cli::register_cone(app, action);
   cli::register_convert(app, action);
   cli::register_bench(app, action);

@@ -11,6 +11,7 @@
 #include "cli/contact_notes.h"
 #include "cli/json_out.h"
 #include "cli/region_data.h"
+#include "cli/results.h"
 #include "cli/stability_svg.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -38,6 +39,20 @@ struct StabilityOptions {
   std::string svg;
   std::string wrenches;
 };
+
+// The mode tree's budget: --time-limit (the node budget is the default).
+solvers::ModeTreeOptions tree_budget(const StabilityOptions& o) {
+  solvers::ModeTreeOptions t;
+  t.deadline = exact::Deadline::after(o.common.time_limit);
+  return t;
+}
+
+solvers::StabilityOptions budget(const StabilityOptions& o, exact::Arith arith) {
+  solvers::StabilityOptions s;
+  s.arith = arith;
+  s.deadline = exact::Deadline::after(o.common.time_limit);
+  return s;
+}
 
 template <class T>
 json number_json(const T& x) {
@@ -92,8 +107,7 @@ void print_contacts(const geometry::PlanarScene& scene, const std::vector<Eigen:
 }
 
 template <class T>
-json witness_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
-                  const solvers::MotionWitness<T>& w) {
+json witness_json(const solvers::MotionWitness<T>& w) {
   json j;
   j["mode"] = w.mode.text();
   if constexpr (std::is_same_v<T, Q>) {
@@ -104,36 +118,90 @@ json witness_json(const geometry::PlanarScene& scene, const std::vector<Eigen::I
     j["forces_approx"] = approx_json(w.forces);
     j["acceleration_approx"] = approx_json(w.acceleration);
   }
-  j["contacts"] = contacts_json(scene, touching, w.forces);
   return j;
 }
+
+double degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
+
+}  // namespace
+
+template <class T>
+json stability_json(const exact::Vec<Q>& g, const StabilityResult<T>& r, const std::string& arith,
+                    const std::string& certificate, const std::optional<solvers::Margin<Q>>& margin) {
+  json j;
+  j["verdict"] = solvers::verdict_name(r.verdict);
+  j["wrench"] = exact_json(g);
+  j["arith"] = arith;
+  json touching = json::array();
+  for (auto i : r.touching) touching.push_back(i);
+  j["touching_fixels"] = touching;
+  json w;
+  if (r.has_resting) w["resting_forces"] = forces_json(r.resting_forces);
+  if (r.has_moving) w["moving"] = witness_json(r.moving);
+  j["witness"] = w;
+  j["lps"] = r.lps;
+  j["modes_checked"] = r.modes_checked;
+  j["modes_kinematically_feasible"] = r.modes_kinematically_feasible;
+  j["mode_tree"] = {{"nodes", r.tree_nodes}, {"dead_prefixes", r.dead_prefixes}};
+  if (!certificate.empty()) j["certificate"] = certificate;
+  if (margin && !margin->nearest.empty())
+    j["margin"] = {{"squared_radius", exact_json(margin->squared_radius)},
+                   {"radius_approx", std::sqrt(margin->squared_radius.get_d())},
+                   {"nearest", margin->nearest}};
+  return j;
+}
+template json stability_json(const exact::Vec<Q>&, const StabilityResult<Q>&, const std::string&, const std::string&,
+                             const std::optional<solvers::Margin<Q>>&);
+template json stability_json(const exact::Vec<Q>&, const StabilityResult<double>&, const std::string&,
+                             const std::string&, const std::optional<solvers::Margin<Q>>&);
+
+json region_json(const solvers::StableRegion<Q>& region) {
+  json modes = json::array();
+  for (const auto& m : region.modes) modes.push_back(m.text());
+  json j;
+  j["region"] = region_data_json(region);
+  j["region"]["nonempty_moving_modes"] = modes;
+  return j;
+}
+
+json finger_json(const solvers::FingerPushes<Q>& pushes) {
+  json edges = json::array(), arcs = json::array();
+  for (const auto& p : pushes.edges)
+    edges.push_back({{"edge", p.edge},
+                     {"from", exact_json(p.from)},
+                     {"to", exact_json(p.to)},
+                     {"from_closed", p.from_closed},
+                     {"to_closed", p.to_closed},
+                     {"label", solvers::verdict_name(p.label)}});
+  for (const auto& p : pushes.arcs)
+    arcs.push_back({{"from_direction", primitive_json(p.from)},
+                    {"to_direction", primitive_json(p.to)},
+                    {"from_closed", p.from_closed},
+                    {"to_closed", p.to_closed},
+                    {"from_degrees_approx", degrees(p.from)},
+                    {"to_degrees_approx", degrees(p.to)},
+                    {"label", solvers::verdict_name(p.label)}});
+  json j;
+  j["finger"] = {{"edges", edges}, {"arcs", arcs}};
+  return j;
+}
+
+std::string finger_svg(const geometry::PlanarScene& scene, const solvers::FingerPushes<Q>& pushes) {
+  const auto marks = boundary_marks<solvers::StabilityVerdict>(
+      scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); });
+  return wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
+                         "finger pushes: green strongly stable, yellow weakly, red unstable", marks);
+}
+
+namespace {
 
 template <class T>
 int report(const StabilityOptions& o, const geometry::PlanarScene& scene, const exact::Vec<Q>& g,
            const StabilityResult<T>& r, const std::optional<solvers::Margin<Q>>& margin = std::nullopt) {
   if (o.common.json) {
-    json j;
-    j["verdict"] = solvers::verdict_name(r.verdict);
-    j["wrench"] = exact_json(g);
-    j["arith"] = o.common.arith;
-    json touching = json::array();
-    for (auto i : r.touching) touching.push_back(i);
-    j["touching_fixels"] = touching;
-    json w;
-    if (r.has_resting) {
-      w["resting_forces"] = forces_json(r.resting_forces);
-      w["resting_contacts"] = contacts_json(scene, r.touching, r.resting_forces);
-    }
-    if (r.has_moving) w["moving"] = witness_json(scene, r.touching, r.moving);
-    j["witness"] = w;
-    j["lps"] = r.lps;
-    j["modes_checked"] = r.modes_checked;
-    j["modes_kinematically_feasible"] = r.modes_kinematically_feasible;
-    if (!o.certificate.empty()) j["certificate"] = o.certificate;
-    if (margin && !margin->nearest.empty())
-      j["margin"] = {{"squared_radius", exact_json(margin->squared_radius)},
-                     {"radius_approx", std::sqrt(margin->squared_radius.get_d())},
-                     {"nearest", margin->nearest}};
+    json j = stability_json(g, r, o.common.arith, o.certificate, margin);
+    if (r.has_resting) j["witness"]["resting_contacts"] = contacts_json(scene, r.touching, r.resting_forces);
+    if (r.has_moving) j["witness"]["moving"]["contacts"] = contacts_json(scene, r.touching, r.moving.forces);
     std::cout << j.dump() << "\n";
     return 0;
   }
@@ -152,9 +220,11 @@ int report(const StabilityOptions& o, const geometry::PlanarScene& scene, const 
     std::cout << "  moves in mode '" << r.moving.mode.text() << "' with acceleration "
               << tuple_text(r.moving.acceleration) << " (eq. 4: M vdot = g + the contact wrenches), contact forces:\n";
     print_contacts(scene, r.touching, r.moving.forces);
-  } else if (r.has_resting)
-    std::cout << "  no moving mode admits g: " << r.proofs.size() << " proofs ("
-              << (r.modes_checked - r.modes_kinematically_feasible) << " modes kinematically impossible)\n";
+  } else if (r.has_resting) {
+    std::cout << "  no moving mode admits g: " << r.modes_kinematically_feasible
+              << " kinematically feasible moving modes, each with a proof for g; every other mode extends one of "
+              << r.dead_prefixes << " infeasible prefixes (mode tree: " << r.tree_nodes << " prefixes)\n";
+  }
   if (margin && !margin->nearest.empty())
     std::cout << "  margin: squared radius " << exact::to_string(margin->squared_radius) << " (radius ~"
               << std::sqrt(margin->squared_radius.get_d()) << "), nearest: "
@@ -169,16 +239,12 @@ int report(const StabilityOptions& o, const geometry::PlanarScene& scene, const 
 int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene, const std::optional<exact::Vec<Q>>& g) {
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "--region is computed exactly (use exact or verified)");
-  const auto region = solvers::stable_region<Q>(scene);
+  const auto region = solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o));
   if (!o.svg.empty()) write_text_file(o.svg, stability_sphere_svg(region, g));
   int count[3][4] = {};
   for (const auto& c : region.cells) ++count[static_cast<int>(c.label)][c.dimension];
   if (o.common.json) {
-    json modes = json::array();
-    for (const auto& m : region.modes) modes.push_back(m.text());
-    json j;
-    j["region"] = region_data_json(region);
-    j["region"]["nonempty_moving_modes"] = modes;
+    json j = region_json(region);
     if (g) j["region"]["wrench"] = {{"g", exact_json(*g)}, {"label", solvers::verdict_name(region.label(*g))}};
     std::cout << j.dump() << "\n";
     return 0;
@@ -208,39 +274,14 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene, co
   return 0;
 }
 
-double degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
-
 int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "--finger is computed exactly (use exact or verified)");
-  const auto region = solvers::stable_region<Q>(scene);
+  const auto region = solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o));
   const auto pushes = solvers::finger_pushes<Q>(scene, region);
-  if (!o.svg.empty()) {
-    const auto marks = boundary_marks<solvers::StabilityVerdict>(
-        scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); });
-    write_text_file(o.svg, wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
-                                           "finger pushes: green strongly stable, yellow weakly, red unstable", marks));
-  }
+  if (!o.svg.empty()) write_text_file(o.svg, finger_svg(scene, pushes));
   if (o.common.json) {
-    json edges = json::array(), arcs = json::array();
-    for (const auto& p : pushes.edges)
-      edges.push_back({{"edge", p.edge},
-                       {"from", exact_json(p.from)},
-                       {"to", exact_json(p.to)},
-                       {"from_closed", p.from_closed},
-                       {"to_closed", p.to_closed},
-                       {"label", solvers::verdict_name(p.label)}});
-    for (const auto& p : pushes.arcs)
-      arcs.push_back({{"from_direction", primitive_json(p.from)},
-                      {"to_direction", primitive_json(p.to)},
-                      {"from_closed", p.from_closed},
-                      {"to_closed", p.to_closed},
-                      {"from_degrees_approx", degrees(p.from)},
-                      {"to_degrees_approx", degrees(p.to)},
-                      {"label", solvers::verdict_name(p.label)}});
-    json j;
-    j["finger"] = {{"edges", edges}, {"arcs", arcs}};
-    std::cout << j.dump() << "\n";
+    std::cout << finger_json(pushes).dump() << "\n";
     return 0;
   }
   std::cout << "frictionless finger pushes along the inward normal of " << o.file << ":\n"
@@ -255,7 +296,7 @@ int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
 template <class T>
 int run_wrenches(const StabilityOptions& o, const geometry::PlanarScene& scene, const exact::Arith arith) {
   const std::vector<exact::Vec<Q>> gs = read_wrenches(o.wrenches);
-  const solvers::StabilityOracle<T> oracle(scene, {arith});
+  const solvers::StabilityOracle<T> oracle(scene, budget(o, arith));
   json rows = json::array();
   long count[3] = {}, lps = oracle.preparation_lps();
   for (const auto& g : gs) {
@@ -307,13 +348,13 @@ int run_stability(const StabilityOptions& options) {
   if (arith == exact::Arith::kFloat) {
     if (!o.certificate.empty())
       throw exact::InputError("command line", "--certificate", "certificates need --arith exact or verified");
-    return report(o, scene, g, solvers::strong_stability<double>(scene, exact::to_double(g), {arith}));
+    return report(o, scene, g, solvers::strong_stability<double>(scene, exact::to_double(g), budget(o, arith)));
   }
-  const auto r = solvers::strong_stability<Q>(scene, g, {arith});
+  const auto r = solvers::strong_stability<Q>(scene, g, budget(o, arith));
   if (!o.certificate.empty()) write_text_file(o.certificate, solvers::stability_certificate(text, g, r));
   std::optional<solvers::Margin<Q>> margin;
   if (o.margin && r.verdict == solvers::StabilityVerdict::kStronglyStable)
-    margin = solvers::stability_margin<Q>(solvers::stable_region<Q>(scene), g);
+    margin = solvers::stability_margin<Q>(solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o)), g);
   return report(o, scene, g, r, margin);
 }
 

@@ -9,6 +9,7 @@
 #include "cli/command.h"
 #include "cli/json_out.h"
 #include "cli/progress_line.h"
+#include "cli/results.h"
 #include "exact/arith.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
@@ -23,84 +24,42 @@ namespace ucp = solvers::ucp;
 using exact::Q;
 using exact::Vec;
 
-struct UcpCliOptions {
-  CommonOptions common;
-  std::string file;
-  std::string method = "complete";
-  std::uint64_t seed = 1;
-  std::string certificate;
-  long max_nodes = 200000;
-  long max_bases = 100000;
-  // --generate
-  std::string generate;
-  std::string out = "-";
-  int nc = 3;
-  std::string mu_max = "1";
-  int abar = 0;
-  int rows = 2, cols = 6;
-  bool planted = false;
-};
+}  // namespace
 
-int run_generate(const UcpCliOptions& o) {
-  std::mt19937_64 rng(o.seed);
+ucp::UcpProblem generated_problem(const std::string& kind, std::uint64_t seed, int nc, const std::string& mu_max,
+                                  int abar, int rows, int cols, bool planted) {
+  std::mt19937_64 rng(seed);
   ucp::UcpProblem p;
-  if (o.generate == "random") {
+  if (kind == "random") {
     ucp::RandomProblemOptions r;
-    r.nc = o.nc;
-    r.abar_size = o.abar;
+    r.nc = nc;
+    r.abar_size = abar;
     try {
-      r.mu_max = exact::parse_rational(o.mu_max);
+      r.mu_max = exact::parse_rational(mu_max);
     } catch (const exact::NumberSyntaxError& e) {
       throw exact::InputError("command line", "--mu-max", e.what());
     }
-    if (o.nc < 1 || o.abar < 0 || o.abar > 2 * o.nc || sgn(r.mu_max) <= 0)
+    if (nc < 1 || abar < 0 || abar > 2 * nc || sgn(r.mu_max) <= 0)
       throw exact::InputError("command line", "--nc/--abar/--mu-max", "expected nc >= 1, 0 <= abar <= 2nc, mu-max > 0");
     p = ucp::generate_random_problem(r, rng);
   } else {
-    if (o.rows < 1 || o.cols < 1 || o.cols > 60)
+    if (rows < 1 || cols < 1 || cols > 60)
       throw exact::InputError("command line", "--rows/--cols", "expected rows >= 1 and 1 <= cols <= 60");
-    const ucp::ZeroOneProblem zo = ucp::random_zero_one(o.rows, o.cols, o.planted, rng);
+    const ucp::ZeroOneProblem zo = ucp::random_zero_one(rows, cols, planted, rng);
     p = ucp::reduction_problem(zo);
-    if (o.cols <= 20)
-      p.source += ucp::zero_one_feasible(zo) ? " (0-1 feasible: solvable)" : " (0-1 infeasible: jammed)";
+    if (cols <= 20) p.source += ucp::zero_one_feasible(zo) ? " (0-1 feasible: solvable)" : " (0-1 infeasible: jammed)";
   }
-  p.source += ", seed " + std::to_string(o.seed);
-  write_text_file(o.out, ucp::to_json_text(p));
-  return 0;
+  p.source += ", seed " + std::to_string(seed);
+  return p;
 }
 
-int run_ucp(const UcpCliOptions& o) {
-  if (!o.generate.empty()) return run_generate(o);
-  if (o.file.empty()) throw exact::InputError("command line", "FILE", "expected a problem file (or --generate)");
-  const ucp::UcpProblem problem = ucp::load_ucp_problem(o.file);
-  ucp::UcpOptions opts;
-  opts.method = ucp::parse_method(o.method);
-  opts.arith = exact::parse_arith(o.common.arith);
-  opts.seed = o.seed;
-  opts.max_nodes = o.max_nodes;
-  opts.max_bases = o.max_bases;
-  opts.time_limit = o.common.time_limit;
-  ProgressLine progress("ucp " + o.file);
-  if (progress.enabled())
-    opts.progress = [&progress, &opts](long units, long lps) {
-      progress.update(opts.method == ucp::Method::kEnumerate
-                          ? std::to_string(units) + " modes tested"
-                          : std::to_string(units) + " nodes, " + std::to_string(lps) + " LPs");
-    };
-  if (!o.certificate.empty() && opts.arith == exact::Arith::kFloat)
-    throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
-  const ucp::UcpReport r = ucp::solve_ucp(problem, opts);
-  progress.finish();
+std::string ucp_certificate_text(const ucp::UcpProblem& problem, const ucp::UcpReport& r) {
+  if (r.status == ucp::UcpStatus::kJammed && r.proof) return ucp::jammed_certificate(problem, *r.proof);
+  if (r.status == ucp::UcpStatus::kSolvable && r.x) return ucp::solvable_certificate(problem, r.x->to_q(), r.y->to_q());
+  return "";
+}
 
-  std::string cert_text;
-  if (!o.certificate.empty()) {
-    if (r.status == ucp::UcpStatus::kJammed && r.proof)
-      cert_text = ucp::jammed_certificate(problem, *r.proof);
-    else if (r.status == ucp::UcpStatus::kSolvable && r.x)
-      cert_text = ucp::solvable_certificate(problem, r.x->to_q(), r.y->to_q());
-    if (!cert_text.empty()) write_text_file(o.certificate, cert_text);
-  }
-
+json ucp_json(const ucp::UcpReport& r, const std::string& certificate) {
   json j;
   j["status"] = ucp::status_name(r.status);
   j["reason"] = r.reason;
@@ -143,8 +102,67 @@ int run_ucp(const UcpCliOptions& o) {
     j["solutions"] = r.solutions;
     j["solution_modes"] = r.solution_modes;
   }
-  if (!cert_text.empty()) j["certificate"] = o.certificate;
+  if (!certificate.empty()) j["certificate"] = certificate;
   j["seconds"] = r.seconds;
+  return j;
+}
+
+namespace {
+
+struct UcpCliOptions {
+  CommonOptions common;
+  std::string file;
+  std::string method = "complete";
+  std::uint64_t seed = 1;
+  std::string certificate;
+  long max_nodes = 200000;
+  long max_bases = 100000;
+  // --generate
+  std::string generate;
+  std::string out = "-";
+  int nc = 3;
+  std::string mu_max = "1";
+  int abar = 0;
+  int rows = 2, cols = 6;
+  bool planted = false;
+};
+
+int run_generate(const UcpCliOptions& o) {
+  write_text_file(o.out, ucp::to_json_text(
+                             generated_problem(o.generate, o.seed, o.nc, o.mu_max, o.abar, o.rows, o.cols, o.planted)));
+  return 0;
+}
+
+int run_ucp(const UcpCliOptions& o) {
+  if (!o.generate.empty()) return run_generate(o);
+  if (o.file.empty()) throw exact::InputError("command line", "FILE", "expected a problem file (or --generate)");
+  const ucp::UcpProblem problem = ucp::load_ucp_problem(o.file);
+  ucp::UcpOptions opts;
+  opts.method = ucp::parse_method(o.method);
+  opts.arith = exact::parse_arith(o.common.arith);
+  opts.seed = o.seed;
+  opts.max_nodes = o.max_nodes;
+  opts.max_bases = o.max_bases;
+  opts.time_limit = o.common.time_limit;
+  ProgressLine progress("ucp " + o.file);
+  if (progress.enabled())
+    opts.progress = [&progress, &opts](long units, long lps) {
+      progress.update(opts.method == ucp::Method::kEnumerate
+                          ? std::to_string(units) + " modes tested"
+                          : std::to_string(units) + " nodes, " + std::to_string(lps) + " LPs");
+    };
+  if (!o.certificate.empty() && opts.arith == exact::Arith::kFloat)
+    throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
+  const ucp::UcpReport r = ucp::solve_ucp(problem, opts);
+  progress.finish();
+
+  std::string cert_text;
+  if (!o.certificate.empty()) {
+    cert_text = ucp_certificate_text(problem, r);
+    if (!cert_text.empty()) write_text_file(o.certificate, cert_text);
+  }
+
+  const json j = ucp_json(r, cert_text.empty() ? "" : o.certificate);
 
   if (o.common.json) {
     std::cout << j.dump() << "\n";

@@ -87,32 +87,52 @@ Index motion_system_rows(const ModeString& mode) {
 }
 
 template <class T>
-exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const ModeString& mode) {
+exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const ModeString& mode,
+                                              const KinematicRules& rules) {
   const Index k = model.J.cols() / 2;
-  check_letters(mode, k);
+  if (static_cast<Index>(mode.letters.size()) > k) throw std::invalid_argument("kinematic_system: mode length");
   exact::SparseStrictSystem<T> s{0, 3, {}, {true, true, true}, {false, false, false}};
-  s.entries.reserve(static_cast<size_t>(8 * k));
+  s.entries.reserve(8 * mode.letters.size());
   const T zero(0);
   auto add = [&s, &zero](Index col, const T& value) {
     if (value != zero) s.entries.push_back({s.rows, col, value});
   };
-  for (Index i = 0; i < k; ++i) {
-    const Interaction L = mode.letters[static_cast<size_t>(i)];
-    Index sigma = -1;
-    if (L != Interaction::kRoll) {
+  // a_n = J_n^T vdot and a_t = J_t^T vdot (eq. 6 from rest, velocity products neglected).
+  auto a_n = [&](Index i) {
+    for (Index d = 0; d < 3; ++d) add(d, model.J(d, i));
+  };
+  auto a_t = [&](Index i) {
+    for (Index d = 0; d < 3; ++d) add(d, model.J(d, k + i));
+  };
+  for (std::size_t u = 0; u < mode.letters.size(); ++u) {
+    const auto i = static_cast<Index>(u);
+    const Interaction L = mode.letters[u];
+    Index sigma = -1;  // the slack of the row with a sign (Table 2): a_n - sigma = 0, +-a_t - sigma = 0, ...
+    const bool separates = L == Interaction::kSeparate || L == Interaction::kSeparatePrinted;
+    if (separates || L == Interaction::kApproach || L == Interaction::kSlideLeft || L == Interaction::kSlideRight) {
       sigma = s.cols++;
       s.is_free.push_back(false);
-      s.strict.push_back(true);
+      // s is strict at a touching fixel (seeds/README.md), a_n >= 0 at a gap or as Table 2 prints it (S).
+      s.strict.push_back(!separates ||
+                         (L == Interaction::kSeparate && rules.touches(u) && !rules.printed_separation));
     }
-    // a_n = J_n^T vdot and a_t = J_t^T vdot (eq. 6 from rest, velocity products neglected).
-    for (Index d = 0; d < 3; ++d) add(d, model.J(d, i));
-    if (L == Interaction::kSeparate) {  // a_n - sigma = 0, sigma > 0
-      add(sigma, T(-1));
-      ++s.rows;
-      continue;
+    switch (L) {
+      case Interaction::kUnconstrained:
+        continue;
+      case Interaction::kSeparate:  // a_n - sigma = 0
+      case Interaction::kSeparatePrinted:
+      case Interaction::kApproach:  // a_n + sigma = 0, sigma > 0
+        a_n(i);
+        add(sigma, T(separates ? -1 : 1));
+        ++s.rows;
+        continue;
+      default:
+        break;
     }
-    ++s.rows;  // a_n = 0
-    for (Index d = 0; d < 3; ++d) add(d, model.J(d, k + i));
+    a_n(i);  // a_n = 0
+    ++s.rows;
+    if (L == Interaction::kMaintain) continue;
+    a_t(i);
     if (L == Interaction::kSlideLeft) add(sigma, T(-1));  // a_t = sigma > 0
     if (L == Interaction::kSlideRight) add(sigma, T(1));  // a_t = -sigma < 0
     ++s.rows;
@@ -170,7 +190,7 @@ MotionSystem<T> motion_system(const MotionModel<T>& model, const ModeString& mod
   };
   if (!zero_acceleration) {
     // The kinematic rows first, their sigma columns (compact 3, 4, ...) moved to the fixels' sigma columns.
-    exact::SparseStrictSystem<T> kin = kinematic_system(model, mode);
+    exact::SparseStrictSystem<T> kin = kinematic_system(model, mode, {});
     std::vector<Index> column{0, 1, 2};
     for (Index i = 0; i < k; ++i)
       if (sigma[static_cast<size_t>(i)] >= 0) column.push_back(sigma[static_cast<size_t>(i)]);
@@ -228,7 +248,8 @@ template struct MotionSystem<exact::Mpfr>;
 template struct MotionSystem<exact::Interval>;
 #define CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(T)                                                       \
   template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                               \
-  template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&); \
+  template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&,   \
+                                                            const KinematicRules&);                    \
   template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);
 CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(double)
 CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(Q)

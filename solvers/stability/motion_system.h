@@ -61,12 +61,23 @@ MotionModel<T> motion_model(const geometry::PlanarScene& scene);
 template <class T>
 MotionSystem<T> motion_system(const MotionModel<T>& model, const ModeString& mode, bool zero_acceleration = false);
 
-/// The kinematic rows of motion_system(model, mode) alone, on the only columns they involve (vdot, then the
-/// strict slack sigma of each fixel that does not roll, in fixel order): feasible iff the mode is kinematically
-/// feasible; a Motzkin certificate of it is one for those rows of the whole system (the other columns are zero
-/// there). Does not depend on g.
+/// How Table 2's kinematic rows read at each fixel of a mode.
+struct KinematicRules {
+  std::vector<bool> touching;       ///< per fixel; empty: every fixel touches
+  bool printed_separation = false;  ///< Table 2 as printed: `s` is a_n >= 0 also at a touching fixel
+  bool touches(std::size_t i) const { return touching.empty() || touching[i]; }
+};
+
+/// The kinematic rows of `mode` (any Table 2 letters) or of a prefix of it (letters for the first fixels only),
+/// on the only columns they involve: vdot, then the slack sigma of each fixel whose letter signs a row (s a l r;
+/// strict but for `s` at a gap or printed), in fixel order. Per fixel: s a m one row (a_n - sigma, a_n + sigma,
+/// a_n), l r n two (a_n; a_t - sigma, a_t + sigma, a_t), u none. Feasible iff some vdot realises the letters; for
+/// a mode over s l r n of a scene whose fixels all touch, these are the leading rows of motion_system(model,
+/// mode), so a Motzkin certificate of them is one for the whole system (the other columns are zero there). Does
+/// not depend on g.
 template <class T>
-exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const ModeString& mode);
+exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const ModeString& mode,
+                                              const KinematicRules& rules = {});
 
 /// The number of rows of motion_system(model, mode): per fixel 1 kinematic row if it separates, else 2, plus 2
 /// friction rows if it rolls; then the 3 dynamics rows.
@@ -74,7 +85,8 @@ Eigen::Index motion_system_rows(const ModeString& mode);
 
 #define CONTACTCERT_MOTION_SYSTEM_EXTERN(T)                                                                   \
   extern template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                               \
-  extern template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&); \
+  extern template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&,   \
+                                                                   const KinematicRules&);                    \
   extern template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);
 CONTACTCERT_MOTION_SYSTEM_EXTERN(double)
 CONTACTCERT_MOTION_SYSTEM_EXTERN(Q)

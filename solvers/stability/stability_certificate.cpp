@@ -17,8 +17,12 @@ json strings(const Vec<Q>& v) {
   return a;
 }
 
-ModeString read_mode(const exact::JsonInput& j, std::size_t k) {
-  const ModeParse p = parse_mode(j.string(), std::vector<bool>(k, true));
+// A mode of the k touching fixels, or with `prefix` one of its prefixes (1 to k letters).
+ModeString read_mode(const exact::JsonInput& j, std::size_t k, bool prefix = false) {
+  const std::string text = j.string();
+  if (prefix && (text.empty() || text.size() > k))
+    j.fail("a mode prefix: 1 to " + std::to_string(k) + " letters from s l r n");
+  const ModeParse p = parse_mode(text, std::vector<bool>(prefix ? text.size() : k, true));
   if (p.status != ModeStatus::kValid) j.fail(p.message);
   return p.mode;
 }
@@ -69,8 +73,10 @@ StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& c)
                     m->at("acceleration").rational_vector(3)};
   }
   if (auto ps = c.find("proofs"))
-    for (const auto& p : ps->elements())
-      claim.proofs.push_back({read_mode(p.at("mode"), k), p.at("kinematic").boolean(), p.at("motzkin").rational_vector()});
+    for (const auto& p : ps->elements()) {
+      const bool kinematic = p.at("kinematic").boolean();
+      claim.proofs.push_back({read_mode(p.at("mode"), k, kinematic), kinematic, p.at("motzkin").rational_vector()});
+    }
   const std::string why = check_stability(scene, g, claim);
   return {why.empty(), why.empty() ? std::string("every vector of the evidence verifies exactly: ") + verdict : why};
 }

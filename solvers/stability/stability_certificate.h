@@ -3,7 +3,8 @@
 // re-reads the problem itself), "wrench" [fx, fy, tz], "verdict", and the evidence (exact strings):
 //   "resting": {"forces": [c_1n..c_kn, c_1t..c_kt]}  or  {"motzkin": [...]}   (J c + g = 0 in the cones, or not)
 //   "moving":  {"mode", "forces", "acceleration"}                               (a solution with vdot != 0)
-//   "proofs":  [{"mode", "kinematic", "motzkin": [...]}, ...]                  (strongly stable: one per mode)
+//   "proofs":  [{"mode", "kinematic", "motzkin": [...]}, ...]    (strongly stable: the mode tree's dead prefixes,
+//              "kinematic": true, "mode" a prefix; then each feasible moving mode's proof for g; mode_tree.h)
 // The checker rebuilds every system from the scene (motion_system.h) and verifies each vector exactly.
 #pragma once
 

@@ -64,7 +64,7 @@ bool cell_in_cone(const geometry::SphereArrangement<T>& arr, const std::vector<i
 }  // namespace
 
 template <class T>
-StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route) {
+StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route, const ModeTreeOptions& tree_options) {
   StableRegion<T> out;
   const geometry::PlanarScene scene = touching_scene(full, &out.touching);
   out.weak = weakly_stable_cone<T>(scene);
@@ -80,7 +80,11 @@ StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route) {
     }
   };
   add_rows(out.weak);
-  for (const ModeString& m : moving_modes(scene.fixels.size())) {
+  const std::size_t k = scene.fixels.size();
+  const ModeTree<T> tree = walk_modes(motion_model<T>(scene), moving_alphabet(k), tree_options);
+  out.tree_nodes = tree.nodes;
+  for (const ModeString& m : tree.modes) {
+    if (m.text() == std::string(k, 'n')) continue;  // n..n is not a moving mode (strong_stability.h)
     geometry::FaceCone<T> c = wrench_cone_face<T>(scene, model, m, route);
     if (is_empty_cone<T>(c)) continue;
     out.modes.push_back(m);
@@ -111,7 +115,7 @@ StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route) {
 #define CONTACTCERT_STABLE_REGION_INSTANTIATE(T)                                      \
   template struct StableRegion<T>;                                                    \
   template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&); \
-  template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route);
+  template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);
 CONTACTCERT_STABLE_REGION_INSTANTIATE(double)
 CONTACTCERT_STABLE_REGION_INSTANTIATE(Q)
 

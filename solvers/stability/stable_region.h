@@ -24,7 +24,8 @@ template <class T>
 struct StableRegion {
   std::vector<Eigen::Index> touching;     ///< the touching fixels the analysis uses
   geometry::FaceCone<T> weak;             ///< wrenches with a resting solution: -pos(friction cone edges)
-  std::vector<ModeString> modes;          ///< the moving modes with a non-empty wrench cone
+  std::vector<ModeString> modes;          ///< the moving modes with a non-empty wrench cone, in mode tree order
+  long tree_nodes = 0;                    ///< prefixes the mode tree visited to find them
   std::vector<geometry::FaceCone<T>> cones;  ///< their wrench cones
   Mat<T> planes;                          ///< the arrangement's planes
   std::vector<LabelledCell<T>> cells;
@@ -37,14 +38,17 @@ struct StableRegion {
 template <class T>
 geometry::FaceCone<T> weakly_stable_cone(const geometry::PlanarScene& touching_scene);
 
-/// The wrench cones of every moving mode of the touching fixels and the labelled cells of wrench space.
+/// The wrench cones of every moving mode of the touching fixels and the labelled cells of wrench space. Only
+/// the kinematically feasible modes (mode_tree.h) have a non-empty cone (forces c = 0 put M vdot in it), so
+/// only theirs are computed.
 template <class T>
-StableRegion<T> stable_region(const geometry::PlanarScene& scene, Route route = Route::kPaper);
+StableRegion<T> stable_region(const geometry::PlanarScene& scene, Route route = Route::kPaper,
+                              const ModeTreeOptions& tree = {});
 
 #define CONTACTCERT_STABLE_REGION_EXTERN(T)                                                       \
   extern template struct StableRegion<T>;                                                         \
   extern template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&);       \
-  extern template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route);
+  extern template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);
 CONTACTCERT_STABLE_REGION_EXTERN(double)
 CONTACTCERT_STABLE_REGION_EXTERN(Q)
 #undef CONTACTCERT_STABLE_REGION_EXTERN

@@ -33,9 +33,9 @@ geometry::PlanarScene touching_scene(const geometry::PlanarScene& scene, std::ve
 std::vector<ModeString> moving_modes(std::size_t k) {
   static constexpr Interaction kLetters[] = {Interaction::kSeparate, Interaction::kSlideLeft, Interaction::kSlideRight,
                                              Interaction::kRoll};
+  if (k > 12) throw std::length_error("moving_modes: 4^" + std::to_string(k) + " strings (a test oracle, k <= 12)");
   std::vector<ModeString> out;
-  std::size_t total = 1;
-  for (std::size_t i = 0; i < k; ++i) total *= 4;
+  const std::size_t total = std::size_t{1} << (2 * k);
   for (std::size_t code = 0; code + 1 < total; ++code) {  // the last code is n..n
     ModeString m;
     std::size_t c = code;
@@ -45,9 +45,17 @@ std::vector<ModeString> moving_modes(std::size_t k) {
   return out;
 }
 
+ModeAlphabet moving_alphabet(std::size_t k) { return ModeAlphabet{{std::vector<bool>(k, true), false}, false}; }
+
 namespace {
 
 ModeString all_rolling(std::size_t k) { return ModeString{std::vector<Interaction>(k, Interaction::kRoll)}; }
+
+bool is_all_rolling(const ModeString& m) {
+  for (Interaction L : m.letters)
+    if (L != Interaction::kRoll) return false;
+  return true;
+}
 
 template <class T>
 bool nonzero(const Vec<T>& v) {
@@ -56,134 +64,24 @@ bool nonzero(const Vec<T>& v) {
   return false;
 }
 
-// The touching fixels of the scene, within the budget on 4^k modes.
-geometry::PlanarScene budgeted_touching_scene(const geometry::PlanarScene& full, const StabilityOptions& options,
-                                              std::vector<Index>& touching) {
-  geometry::PlanarScene scene = touching_scene(full, &touching);
-  const std::size_t k = scene.fixels.size();
-  if (k > 8 || (std::size_t{1} << (2 * k)) > static_cast<std::size_t>(options.max_modes))
-    throw exact::BudgetExceeded(
-        "strong stability over " + std::to_string(k) + " touching fixels needs 4^" + std::to_string(k) + " modes",
-        "no mode checked");
-  return scene;
-}
+ModeTreeOptions tree_options(const StabilityOptions& o) { return {o.arith, o.max_nodes, o.deadline}; }
 
-// A moving mode prepared for verdicts: its system and LP if it is kinematically feasible (n..n always is);
-// else only its Motzkin certificate on the kinematic rows, padded with zeros to every row of its system (it
-// holds for all g; the system itself is not built).
-template <class T>
-struct PreparedMode {
-  MotionSystem<T> ms;
-  std::optional<exact::StrictSolver<T>> solver;
-  Vec<T> kinematic_proof;
-  long lps = 0, lps_checked_from_float = 0;  // the kinematic LP's
-};
-
-// Prepares the modes of a scene one by one, in the order a verdict visits them. A kinematic proof y of one mode
-// also proves every later mode that has each row y weighs: per fixel, the normal row is the same for the letters
-// l, r, n (a_n = 0) and another for s (a_n - sigma = 0); the tangent row is its letter's own (l, r, n). Column by
-// column the conditions of strict_feasibility.h on y then hold as before (vdot: the same rows; a sigma column:
-// the same entries where y weighs, zero elsewhere), so such a mode gets y, moved to its rows, without an LP.
-template <class T>
-class ModePreparer {
- public:
-  ModePreparer(const MotionModel<T>& model, exact::Arith arith) : model_(model), arith_(arith) {}
-
-  PreparedMode<T> operator()(const ModeString& mode, bool rolling) {
-    PreparedMode<T> p;
-    if (!rolling) {
-      if (reuse(mode, p.kinematic_proof)) return p;
-      auto kin = exact::strict_feasibility(kinematic_system(model_, mode), arith_);
-      p.lps = kin.lps;
-      if (kin.rounded_float_checked) p.lps_checked_from_float = kin.lps;
-      if (kin.status != StrictStatus::kFeasible) {
-        p.kinematic_proof = Vec<T>::Zero(motion_system_rows(mode));
-        p.kinematic_proof.head(kin.motzkin.size()) = kin.motzkin;
-        remember(mode, std::move(kin.motzkin));
-        return p;
-      }
-    }
-    p.ms = motion_system(model_, mode);
-    p.solver.emplace(p.ms.system, arith_);
-    return p;
-  }
-
- private:
-  struct Known {
-    ModeString mode;
-    std::vector<bool> normal, tangent;  // per fixel: y is non-zero on its normal / tangent row
-    Vec<T> y;                           // on the kinematic rows of `mode`
-  };
-
-  // The first kinematic row of each fixel (its normal row; l r n have a tangent row after it).
-  static std::vector<Index> first_rows(const ModeString& mode) {
-    std::vector<Index> first;
-    Index r = 0;
-    for (Interaction L : mode.letters) {
-      first.push_back(r);
-      r += L == Interaction::kSeparate ? 1 : 2;
-    }
-    return first;
-  }
-
-  void remember(const ModeString& mode, Vec<T> y) {
-    const std::vector<Index> first = first_rows(mode);
-    const std::size_t k = first.size();
-    std::vector<bool> normal(k), tangent(k, false);
-    for (std::size_t i = 0; i < k; ++i) {
-      normal[i] = !exact::is_zero(y(first[i]));
-      if (mode.letters[i] != Interaction::kSeparate) tangent[i] = !exact::is_zero(y(first[i] + 1));
-    }
-    known_.push_back({mode, std::move(normal), std::move(tangent), std::move(y)});
-  }
-
-  bool reuse(const ModeString& mode, Vec<T>& proof) const {
-    auto separates = [](Interaction L) { return L == Interaction::kSeparate; };
-    for (const Known& known : known_) {
-      bool same = true;
-      for (std::size_t i = 0; same && i < known.normal.size(); ++i) {
-        const Interaction was = known.mode.letters[i], is = mode.letters[i];
-        same = (!known.normal[i] || separates(was) == separates(is)) && (!known.tangent[i] || was == is);
-      }
-      if (!same) continue;
-      const std::vector<Index> from = first_rows(known.mode), to = first_rows(mode);
-      proof = Vec<T>::Zero(motion_system_rows(mode));
-      for (std::size_t i = 0; i < known.normal.size(); ++i) {
-        if (known.normal[i]) proof(to[i]) = known.y(from[i]);
-        if (known.tangent[i]) proof(to[i] + 1) = known.y(from[i] + 1);
-      }
-      return true;
-    }
-    return false;
-  }
-
-  const MotionModel<T>& model_;
-  exact::Arith arith_;
-  std::vector<Known> known_;
-};
-
-// The modes a verdict visits: moving_modes(k), then n..n (it moves only if vdot != 0).
-std::vector<ModeString> verdict_modes(std::size_t k) {
-  std::vector<ModeString> modes = moving_modes(k);
-  modes.push_back(all_rolling(k));
-  return modes;
-}
-
-// Mode i as the verdict sees it: its system, and its LP or none (kinematically infeasible).
+// One feasible mode as the verdict sees it: its name, system and LP.
 template <class T>
 struct ModeLp {
-  const MotionSystem<T>* ms;
-  const exact::StrictSolver<T>* solver;
+  const ModeString& name;
+  const MotionSystem<T>& ms;
+  const exact::StrictSolver<T>& solver;
 };
 
-// The verdict for g (SPEC section 7): the resting LP, then the modes of verdict_modes in order until one moves.
-// mode_at(i, out) gives mode i; for a kinematically infeasible one it appends the mode's proof to out.proofs if
-// out.has_resting (only then is it evidence). Every other moving mode gets its proof from its LP here; at most
-// `own_proofs` proofs are the result's own (the others are shared).
-template <class T, class ModeAt>
+// The verdict for g (SPEC section 7), in three steps: the resting LP; each kinematically feasible moving mode
+// but n..n in tree order until one moves (for_each_mode(visit) calls visit(ModeLp) per mode, stopping when it
+// returns false); and if no resting solution exists, n..n, which moves only if vdot != 0 (rolling() gives it).
+// kinematic_proofs(out) adds the dead prefixes to out.proofs once a resting solution makes them evidence.
+template <class T, class ForEachMode, class Rolling, class KinematicProofs>
 StabilityResult<T> decide(const std::vector<Index>& touching, const MotionSystem<T>& rest,
-                          const exact::StrictSolver<T>& rest_solver, const std::vector<ModeString>& modes,
-                          const Vec<T>& g, std::size_t own_proofs, ModeAt&& mode_at) {
+                          const exact::StrictSolver<T>& rest_solver, const Vec<T>& g, ForEachMode&& for_each_mode,
+                          Rolling&& rolling, KinematicProofs&& kinematic_proofs) {
   StabilityResult<T> out;
   out.touching = touching;
   auto count = [&out](const exact::StrictFeasibility<T>& f) {
@@ -195,34 +93,42 @@ StabilityResult<T> decide(const std::vector<Index>& touching, const MotionSystem
   auto r = rest_solver.solve(rest.rhs(g));
   count(r);
   out.has_resting = r.status == StrictStatus::kFeasible;
-  if (out.has_resting) {
+  if (out.has_resting)
     out.resting_forces = rest.forces(r.x);
-    out.proofs.reserve(modes.size() - 1, own_proofs);
-  } else {
+  else
     out.resting_farkas = std::move(r.motzkin);
-  }
 
-  // Moving solutions: every mode but n..n, then n..n, which moves only if vdot != 0 (null space of J^T).
-  for (std::size_t i = 0; i < modes.size(); ++i) {
-    const bool rolling = i + 1 == modes.size();
-    if (rolling && out.has_resting) break;  // then every all-rolling solution has vdot = 0
+  // A moving solution in mode m, or its proof that there is none (evidence only beside a resting solution).
+  auto try_mode = [&](const ModeLp<T>& m, bool rolling_mode) {
     ++out.modes_checked;
-    const ModeLp<T> m = mode_at(i, out);
-    if (!m.solver) continue;
-    if (!rolling) ++out.modes_kinematically_feasible;
-    auto f = m.solver->solve(m.ms->rhs(g));
+    auto f = m.solver.solve(m.ms.rhs(g));
     count(f);
-    if (f.status == StrictStatus::kFeasible && (!rolling || nonzero<T>(m.ms->acceleration(f.x)))) {
+    if (f.status == StrictStatus::kFeasible && (!rolling_mode || nonzero<T>(m.ms.acceleration(f.x)))) {
       out.has_moving = true;
-      out.moving = {modes[i], m.ms->forces(f.x), m.ms->acceleration(f.x)};
-      break;
+      out.moving = {m.name, m.ms.forces(f.x), m.ms.acceleration(f.x)};
+      return false;
     }
-    if (!rolling && out.has_resting) out.proofs.push_back({modes[i], false, std::move(f.motzkin)});
-  }
-  if (out.has_moving) out.proofs.clear();  // no longer evidence of anything
+    if (!rolling_mode && out.has_resting) out.proofs.push_back({m.name, false, std::move(f.motzkin)});
+    return true;
+  };
+  for_each_mode([&](const ModeLp<T>& m) { return try_mode(m, false); });
+  if (!out.has_moving && !out.has_resting) try_mode(rolling(), true);
+  if (out.has_moving)
+    out.proofs.clear();  // no longer evidence of anything
+  else if (out.has_resting)
+    kinematic_proofs(out);
   out.verdict = !out.has_resting ? StabilityVerdict::kUnstable
                 : out.has_moving ? StabilityVerdict::kWeaklyStable
                                  : StabilityVerdict::kStronglyStable;
+  return out;
+}
+
+// The kinematic proofs of a tree's dead prefixes.
+template <class T>
+std::vector<ModeProof<T>> dead_prefix_proofs(std::vector<DeadPrefix<T>> dead) {
+  std::vector<ModeProof<T>> out;
+  out.reserve(dead.size());
+  for (DeadPrefix<T>& d : dead) out.push_back({std::move(d.prefix), true, std::move(d.motzkin)});
   return out;
 }
 
@@ -230,53 +136,82 @@ StabilityResult<T> decide(const std::vector<Index>& touching, const MotionSystem
 
 template <class T>
 StabilityOracle<T>::StabilityOracle(const geometry::PlanarScene& full, const StabilityOptions& options)
-    : model_(motion_model<T>(budgeted_touching_scene(full, options, touching_))),
+    : model_(motion_model<T>(touching_scene(full, &touching_))),
       rest_(motion_system(model_, all_rolling(model_.mu_s.size()), /*zero_acceleration=*/true)),
       rest_solver_(rest_.system, options.arith),
-      mode_names_(verdict_modes(model_.mu_s.size())) {
-  // Kinematic feasibility of each moving mode: its kinematic rows alone (they do not involve g).
-  auto proofs = std::make_shared<std::vector<ModeProof<T>>>();
-  ModePreparer<T> prepare(model_, options.arith);
-  modes_.reserve(mode_names_.size());
-  for (std::size_t i = 0; i < mode_names_.size(); ++i) {
-    PreparedMode<T> p = prepare(mode_names_[i], i + 1 == mode_names_.size());
-    preparation_lps_ += p.lps;
-    preparation_lps_checked_from_float_ += p.lps_checked_from_float;
-    modes_.push_back({std::move(p.ms), std::move(p.solver), proofs->size()});
-    if (!modes_.back().solver) proofs->push_back({mode_names_[i], true, std::move(p.kinematic_proof)});
+      tree_(walk_modes(model_, moving_alphabet(model_.mu_s.size()), tree_options(options))) {
+  // The systems of the feasible moving modes (n..n last), and the dead prefixes as shared proofs.
+  for (const ModeString& m : tree_.modes) {
+    if (is_all_rolling(m)) continue;
+    MotionSystem<T> ms = motion_system(model_, m);
+    exact::StrictSolver<T> solver(ms.system, options.arith);
+    modes_.push_back({m, std::move(ms), std::move(solver)});
   }
-  kinematic_proofs_ = std::move(proofs);
+  const ModeString rolling = all_rolling(model_.mu_s.size());
+  MotionSystem<T> ms = motion_system(model_, rolling);
+  exact::StrictSolver<T> solver(ms.system, options.arith);
+  modes_.push_back({rolling, std::move(ms), std::move(solver)});
+  kinematic_proofs_ = std::make_shared<const std::vector<ModeProof<T>>>(dead_prefix_proofs(std::move(tree_.dead)));
+  tree_.dead.clear();
 }
 
 template <class T>
 StabilityResult<T> StabilityOracle<T>::verdict(const Vec<T>& g) const {
-  const std::size_t own = mode_names_.size() - 1 - kinematic_proofs_->size();  // the LPs' proofs
-  return decide(touching_, rest_, rest_solver_, mode_names_, g, own, [this](std::size_t i, StabilityResult<T>& out) {
-    const Mode& m = modes_[i];
-    if (!m.solver && out.has_resting) out.proofs.push_shared(kinematic_proofs_, m.kinematic_proof);
-    return ModeLp<T>{&m.ms, m.solver ? &*m.solver : nullptr};
-  });
+  StabilityResult<T> out = decide(
+      touching_, rest_, rest_solver_, g,
+      [this](auto&& visit) {
+        for (std::size_t i = 0; i + 1 < modes_.size(); ++i)
+          if (!visit(ModeLp<T>{modes_[i].name, modes_[i].ms, modes_[i].solver})) return;
+      },
+      [this] { return ModeLp<T>{modes_.back().name, modes_.back().ms, modes_.back().solver}; },
+      [this](StabilityResult<T>& r) {
+        for (std::size_t j = 0; j < kinematic_proofs_->size(); ++j) r.proofs.push_shared(kinematic_proofs_, j);
+      });
+  out.modes_kinematically_feasible = static_cast<long>(modes_.size()) - 1;
+  out.tree_nodes = tree_.nodes;
+  out.dead_prefixes = static_cast<long>(kinematic_proofs_->size());
+  return out;
 }
 
 template <class T>
 StabilityResult<T> strong_stability(const geometry::PlanarScene& full, const Vec<T>& g,
                                     const StabilityOptions& options) {
   std::vector<Index> touching;
-  const MotionModel<T> model = motion_model<T>(budgeted_touching_scene(full, options, touching));
+  const MotionModel<T> model = motion_model<T>(touching_scene(full, &touching));
   const std::size_t k = model.mu_s.size();
   const MotionSystem<T> rest = motion_system(model, all_rolling(k), /*zero_acceleration=*/true);
   const exact::StrictSolver<T> rest_solver(rest.system, options.arith);
-  const std::vector<ModeString> modes = verdict_modes(k);
-  ModePreparer<T> prepare(model, options.arith);
-  std::optional<PreparedMode<T>> current;  // the mode being decided
-  return decide(touching, rest, rest_solver, modes, g, modes.size() - 1, [&](std::size_t i, StabilityResult<T>& out) {
-    current.emplace(prepare(modes[i], i + 1 == modes.size()));
-    out.lps += current->lps;
-    out.lps_checked_from_float += current->lps_checked_from_float;
-    if (!current->solver && out.has_resting)
-      out.proofs.push_back({modes[i], true, std::move(current->kinematic_proof)});
-    return ModeLp<T>{&current->ms, current->solver ? &*current->solver : nullptr};
-  });
+  // The mode tree is walked as the verdict goes: a verdict with a moving witness stops it there.
+  ModeTree<T> tree;
+  long dead = 0;
+  const ModeString rolling_name = all_rolling(k);
+  std::optional<MotionSystem<T>> rolling_ms;
+  std::optional<exact::StrictSolver<T>> rolling_solver;
+  StabilityResult<T> out = decide(
+      touching, rest, rest_solver, g,
+      [&](auto&& visit) {
+        tree = walk_modes<T>(model, moving_alphabet(k), tree_options(options), [&](const ModeString& m, const Vec<T>&) {
+          if (is_all_rolling(m)) return true;
+          const MotionSystem<T> ms = motion_system(model, m);
+          return visit(ModeLp<T>{m, ms, exact::StrictSolver<T>(ms.system, options.arith)});
+        });
+        dead = static_cast<long>(tree.dead.size());
+      },
+      [&] {
+        rolling_ms.emplace(motion_system(model, rolling_name));
+        rolling_solver.emplace(rolling_ms->system, options.arith);
+        return ModeLp<T>{rolling_name, *rolling_ms, *rolling_solver};
+      },
+      [&](StabilityResult<T>& r) {
+        for (ModeProof<T>& p : dead_prefix_proofs(std::move(tree.dead))) r.proofs.push_back(std::move(p));
+      });
+  out.lps += tree.lps;
+  out.lps_checked_from_float += tree.lps_checked_from_float;
+  out.modes_kinematically_feasible = 0;
+  for (const ModeString& m : tree.modes) out.modes_kinematically_feasible += !is_all_rolling(m);
+  out.tree_nodes = tree.nodes;
+  out.dead_prefixes = dead;
+  return out;
 }
 
 std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, const StabilityResult<Q>& claim) {
@@ -320,22 +255,30 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
     if (!exact::verify_strict_point(ms.with_wrench(g), x)) return "the moving witness violates its mode";
     moving = true;
   } else if (resting) {
-    const std::vector<ModeString> modes = moving_modes(k);
-    if (claim.proofs.size() != modes.size()) return "expected one proof per moving mode";
-    for (std::size_t i = 0; i < modes.size(); ++i) {
-      const ModeProof<Q>& p = claim.proofs[i];
-      if (p.mode.text() != modes[i].text()) return "proof " + std::to_string(i) + " is for the wrong mode";
+    // Every moving mode is covered: it extends a dead prefix (kinematic proof, any g) or has its own proof for
+    // g; n..n needs none beside a resting solution. Each proof's system is rebuilt from the scene.
+    std::vector<std::string> dead, leaves{all_rolling(k).text()};
+    for (const ModeProof<Q>& p : claim.proofs) {
+      const std::string text = p.mode.text();
+      for (Interaction L : p.mode.letters)
+        if (L != Interaction::kSeparate && L != Interaction::kSlideLeft && L != Interaction::kSlideRight &&
+            L != Interaction::kRoll)
+          return "proof for '" + text + "': only the letters s l r n describe motion from rest";
       if (p.kinematic) {
-        // The kinematic rows lead the mode's system: the certificate is zero on every other row.
-        const exact::SparseStrictSystem<Q> kin = kinematic_system(model, p.mode);
-        bool zero_tail = p.motzkin.size() == motion_system_rows(p.mode);
-        for (Index j = kin.rows; zero_tail && j < p.motzkin.size(); ++j) zero_tail = sgn(p.motzkin(j)) == 0;
-        if (!zero_tail || !exact::verify_motzkin(kin.dense(), p.motzkin.head(kin.rows)))
-          return "the kinematic proof for mode " + p.mode.text() + " does not verify";
-      } else if (!exact::verify_motzkin(motion_system(model, p.mode).with_wrench(g), p.motzkin)) {
-        return "the proof for mode " + p.mode.text() + " does not verify";
+        if (p.mode.letters.empty() || p.mode.letters.size() > k) return "a dead prefix of the wrong length: '" + text + "'";
+        if (!exact::verify_motzkin(kinematic_system(model, p.mode).dense(), p.motzkin))
+          return "the kinematic proof for prefix " + text + " does not verify";
+        dead.push_back(text);
+      } else {
+        if (p.mode.letters.size() != k) return "proof for '" + text + "': a mode has one letter per touching fixel";
+        if (text == leaves.front()) return "a proof for n..n is not evidence (it moves only without a resting solution)";
+        if (!exact::verify_motzkin(motion_system(model, p.mode).with_wrench(g), p.motzkin))
+          return "the proof for mode " + text + " does not verify";
+        leaves.push_back(text);
       }
     }
+    if (auto gap = mode_coverage(k, moving_alphabet(k), dead, leaves))
+      return "no proof covers the moving modes that start with '" + *gap + "'";
   }
   const StabilityVerdict v = !resting ? StabilityVerdict::kUnstable
                              : moving ? StabilityVerdict::kWeaklyStable

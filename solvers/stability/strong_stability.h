@@ -6,7 +6,9 @@
 // A zero-acceleration solution is a c in the static friction cones with J c + g = 0 (one LP). A moving
 // solution lies in some mode other than n..n (each has a strict row, so vdot != 0), or in n..n with
 // vdot != 0 in the null space of J^T; the latter cannot coexist with a zero-acceleration solution (vdot is
-// the same for every all-rolling solution), so only the 4^k - 1 other modes need a proof.
+// the same for every all-rolling solution), so only the other modes need a proof. They are not listed one by
+// one (4^k - 1 strings): the prefix tree of mode_tree.h finds the kinematically feasible ones, each dead
+// prefix with a Motzkin certificate for every mode that extends it, and only the feasible ones get an LP in g.
 #pragma once
 
 #include <cassert>
@@ -18,6 +20,7 @@
 
 #include "exact/arith.h"
 #include "geometry/planar_scene.h"
+#include "solvers/stability/mode_tree.h"
 #include "solvers/stability/motion_system.h"
 
 namespace contactcert::solvers {
@@ -25,8 +28,10 @@ namespace contactcert::solvers {
 enum class StabilityVerdict { kStronglyStable, kWeaklyStable, kUnstable };
 const char* verdict_name(StabilityVerdict v);
 
-/// Why one moving mode admits no solution: a Motzkin certificate of its system (motion_system.h); when
-/// `kinematic`, the certificate lives on the kinematic rows only (zero elsewhere) and holds for every g.
+/// Why moving modes admit no solution. When `kinematic`, `mode` is a prefix (letters for the first fixels) and
+/// `motzkin` a Motzkin certificate of kinematic_system(model, prefix): no mode that extends it is kinematically
+/// feasible, for any g. Otherwise `mode` is a whole mode and `motzkin` a certificate of its system for g
+/// (motion_system.h).
 template <class T>
 struct ModeProof {
   ModeString mode;
@@ -34,7 +39,8 @@ struct ModeProof {
   Vec<T> motzkin;
 };
 
-/// The proofs of a strongly stable verdict, one per moving mode in the order of moving_modes(k). A kinematic
+/// The proofs of a strongly stable verdict: the dead prefixes of the mode tree (kinematic), then one proof per
+/// kinematically feasible moving mode; together they cover every moving mode (mode_coverage). A kinematic
 /// proof holds for every g, so a StabilityOracle finds those once and its verdicts refer to that immutable set
 /// (kept alive by shared ownership, also after the oracle is gone) instead of copying it into every result.
 template <class T>
@@ -105,55 +111,62 @@ struct StabilityResult {
   Vec<T> resting_farkas;  ///< unstable: Motzkin certificate that no resting solution exists
   bool has_moving = false;
   MotionWitness<T> moving;  ///< a moving solution, if has_moving
-  ModeProofs<T> proofs;     ///< strongly stable: one proof per moving mode (4^k - 1)
+  ModeProofs<T> proofs;     ///< strongly stable: the dead prefixes, then one proof per feasible moving mode
   long lps = 0;             ///< LPs solved (for strong_stability: including the kinematic ones)
   /// Of these, decided by a float LP's rounded answer checked exactly (no rational LP).
   long lps_checked_from_float = 0;
-  long modes_checked = 0;
-  long modes_kinematically_feasible = 0;
+  long modes_checked = 0;                  ///< moving modes whose system in g was solved (n..n included)
+  long modes_kinematically_feasible = 0;   ///< feasible moving modes the mode tree found (all, if it finished)
+  long tree_nodes = 0;                     ///< prefixes the mode tree visited
+  long dead_prefixes = 0;                  ///< prefixes it proved kinematically infeasible
 };
 
 struct StabilityOptions {
   exact::Arith arith = exact::Arith::kVerified;
-  long max_modes = 1 << 16;  ///< budget on 4^k (k touching fixels); beyond it BudgetExceeded
+  long max_nodes = 1L << 22;  ///< budget on the prefixes of the mode tree; beyond it BudgetExceeded
+  exact::Deadline deadline;   ///< tested at every prefix; expired: BudgetExceeded
 };
 
 /// The scene restricted to its touching fixels (stability considers only those).
 geometry::PlanarScene touching_scene(const geometry::PlanarScene& scene, std::vector<Eigen::Index>* kept = nullptr);
 
-/// All mode strings over {s, l, r, n}^k except n..n, in a fixed order.
+/// All 4^k - 1 mode strings over {s, l, r, n}^k except n..n, in a fixed order: a test oracle for small k
+/// (k <= 12; larger k throws std::length_error rather than wrap the count).
 std::vector<ModeString> moving_modes(std::size_t k);
 
+/// The alphabet of the moving modes of k touching fixels: s l r n each, s strict (SPEC section 5).
+ModeAlphabet moving_alphabet(std::size_t k);
+
 /// Strong stability of one scene under many wrenches (a planner's question). Prepared once per scene: the
-/// touching fixels, which moving modes are kinematically feasible (their kinematic rows do not involve g; the
-/// others get their g-independent proof here, shared by every verdict) and the motion system and LP
-/// (exact::StrictSolver) of each remaining mode. A verdict then solves 1 + (kinematically feasible modes
-/// visited) LPs.
+/// touching fixels, the mode tree (its dead prefixes are g-independent proofs, shared by every verdict) and the
+/// motion system and LP (exact::StrictSolver) of each kinematically feasible moving mode. A verdict then solves
+/// 1 + (feasible modes visited) LPs.
 template <class T>
 class StabilityOracle {
  public:
   explicit StabilityOracle(const geometry::PlanarScene& scene, const StabilityOptions& options = {});
   /// The verdict for wrench g, as strong_stability; its lps count only the LPs solved for g.
   StabilityResult<T> verdict(const Vec<T>& g) const;
-  /// LPs solved while preparing (the kinematic feasibility of every moving mode), and how many of them were
-  /// decided by a float LP's rounded answer checked exactly.
-  long preparation_lps() const { return preparation_lps_; }
-  long preparation_lps_checked_from_float() const { return preparation_lps_checked_from_float_; }
+  /// LPs solved while preparing (the mode tree's), and how many of them were decided by a float LP's rounded
+  /// answer checked exactly.
+  long preparation_lps() const { return tree_.lps; }
+  long preparation_lps_checked_from_float() const { return tree_.lps_checked_from_float; }
+  /// The mode tree of the touching fixels (alphabet moving_alphabet(k)): its feasible modes include n..n.
+  const ModeTree<T>& mode_tree() const { return tree_; }
 
  private:
   struct Mode {
+    ModeString name;
     MotionSystem<T> ms;
-    std::optional<exact::StrictSolver<T>> solver;  ///< none if kinematically infeasible
-    std::size_t kinematic_proof = 0;               ///< then: its proof in kinematic_proofs_
+    exact::StrictSolver<T> solver;
   };
   std::vector<Eigen::Index> touching_;
   MotionModel<T> model_;  ///< of the touching fixels only
   MotionSystem<T> rest_;
   exact::StrictSolver<T> rest_solver_;
-  std::vector<ModeString> mode_names_;  ///< moving_modes(k), then n..n (it moves only if vdot != 0)
-  std::vector<Mode> modes_;             ///< in the order of mode_names_
-  typename ModeProofs<T>::Shared kinematic_proofs_;
-  long preparation_lps_ = 0, preparation_lps_checked_from_float_ = 0;
+  ModeTree<T> tree_;
+  std::vector<Mode> modes_;  ///< the feasible moving modes in tree order, then n..n (moves only if vdot != 0)
+  typename ModeProofs<T>::Shared kinematic_proofs_;  ///< the dead prefixes
 };
 
 /// The verdict for wrench g = (f_x, f_y, torque about the com), with witness or certificate: the verdict and

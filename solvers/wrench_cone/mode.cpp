@@ -19,13 +19,15 @@ InteractionConstraints table2(Interaction letter, bool touching) {
     case Interaction::kSlideRight: return {S::kZero, S::kNegative, S::kNonNegative, F::kRightEdge};
     case Interaction::kRoll: return {S::kZero, S::kZero, S::kNonNegative, F::kStaticCone};
     case Interaction::kMaintain: return {S::kZero, S::kFree, S::kNonNegative, F::kStaticCone};
+    case Interaction::kSeparatePrinted: return {S::kNonNegative, S::kFree, S::kZero, F::kZero};
   }
   return {S::kFree, S::kFree, S::kZero, F::kZero};
 }
 
 bool letter_fits(Interaction letter, bool touching) {
   switch (letter) {
-    case Interaction::kSeparate: return true;
+    case Interaction::kSeparate:
+    case Interaction::kSeparatePrinted: return true;
     case Interaction::kApproach:
     case Interaction::kUnconstrained: return !touching;
     default: return touching;
@@ -51,9 +53,9 @@ ModeParse parse_mode(std::string_view text, const std::vector<bool>& touching) {
   }
   for (std::size_t i = 0; i < text.size(); ++i) {
     out.fixel = i;
-    if (std::string_view("saulrnm").find(text[i]) == std::string_view::npos) {
+    if (std::string_view("saulrnmS").find(text[i]) == std::string_view::npos) {
       out.status = ModeStatus::kUnknownLetter;
-      out.message = "letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "') is not one of s a u l r n m";
+      out.message = "letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "') is not one of s a u l r n m (or S)";
       return out;
     }
     const auto l = static_cast<Interaction>(text[i]);

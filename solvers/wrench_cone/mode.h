@@ -17,6 +17,7 @@ enum class Interaction : char {
   kSlideRight = 'r',     ///< a_n = 0, a_t < 0, c_n >= 0, c_t = mu_k c_n; needs contact
   kRoll = 'n',           ///< a_n = a_t = 0, |c_t| <= mu_s c_n; needs contact
   kMaintain = 'm',       ///< a_n = 0, |c_t| <= mu_s c_n; needs contact
+  kSeparatePrinted = 'S',  ///< s as Table 2 prints it: a_n >= 0 also when touching, c = 0 (`--table2 printed`)
 };
 
 /// An augmented contact mode: one interaction per fixel, in fixel order.
@@ -56,7 +57,7 @@ struct ModeParse {
   std::string message;    ///< what was expected, for the user
 };
 
-/// Parses a mode string against the touching state of each fixel (SPEC section 5).
+/// Parses a mode string against the touching state of each fixel (SPEC section 5); S is s as Table 2 prints it.
 ModeParse parse_mode(std::string_view text, const std::vector<bool>& touching);
 
 }  // namespace contactcert::solvers

@@ -1,0 +1,123 @@
+// `contactcert modes FILE`: every kinematically feasible augmented contact mode of a planar scene from rest
+// (wrench cone paper, Table 2), each with a witness, found by the prefix tree of solvers/stability/mode_tree.h,
+// and with --certificate the tree as a completeness proof for `contactcert check`.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <iostream>
+#include <map>
+
+#include "cli/command.h"
+#include "cli/json_out.h"
+#include "exact/json_input.h"
+#include "geometry/scene_json.h"
+#include "solvers/stability/contact_modes.h"
+
+namespace contactcert::cli {
+namespace {
+
+using exact::Q;
+
+struct ModesOptions {
+  CommonOptions common;
+  std::string file;
+  bool kinematic = false;
+  bool unions = false;
+  std::string table2 = "strict";
+  long max_nodes = 1L << 22;
+  std::string certificate;
+};
+
+std::vector<bool> touching_of(const geometry::PlanarScene& scene) {
+  std::vector<bool> t;
+  for (const auto& f : scene.fixels) t.push_back(f.frame.touching());
+  return t;
+}
+
+int report(const ModesOptions& o, const geometry::PlanarScene& scene, const solvers::ContactModes& m) {
+  const std::vector<bool> touching = touching_of(scene);
+  const auto& tree = m.tree;
+  std::map<std::string, long> groups;
+  for (const auto& mode : tree.modes) ++groups[solvers::mode_group(mode, touching)];
+  if (o.common.json) {
+    json modes = json::array();
+    for (std::size_t i = 0; i < tree.modes.size(); ++i) {
+      json e{{"mode", tree.modes[i].text()},
+             {"group", solvers::mode_group(tree.modes[i], touching)},
+             {"acceleration", exact_json(tree.accelerations[i])}};
+      if (!o.kinematic) {
+        e["wrench"] = exact_json(m.wrench(i));
+        e["forces"] = exact_json(exact::Vec<Q>(exact::Vec<Q>::Zero(2 * static_cast<Eigen::Index>(touching.size()))));
+      }
+      modes.push_back(e);
+    }
+    json j;
+    j["fixels"] = touching.size();
+    j["touching"] = std::count(touching.begin(), touching.end(), true);
+    j["table2"] = o.table2;
+    j["list"] = o.kinematic ? "kinematic" : "dynamic";
+    j["modes"] = modes;
+    j["counts"] = groups;
+    j["tree"] = {{"nodes", tree.nodes}, {"dead_prefixes", tree.dead.size()}, {"lps", tree.lps}};
+    if (!o.certificate.empty()) j["certificate"] = o.certificate;
+    std::cout << j.dump() << "\n";
+    return 0;
+  }
+  const long k = static_cast<long>(touching.size()), t = std::count(touching.begin(), touching.end(), true);
+  std::cout << "contact modes of " << o.file << ": " << tree.modes.size() << " feasible modes of " << k << " fixels ("
+            << t << " touching, " << k - t << " with a gap), from rest, s "
+            << (o.table2 == "printed" ? "as Table 2 prints it (a_n >= 0)" : "strictly separating (a_n > 0)") << "\n"
+            << "  prefix tree: " << tree.nodes << " prefixes visited, " << tree.dead.size()
+            << " proven infeasible, " << tree.lps << " LPs (of 4^" << t << " x 2^" << k - t << " mode strings)\n";
+  if (!o.kinematic)
+    std::cout << "  each mode's wrench cone contains M vdot (all contact forces zero fit every letter), so the\n"
+                 "  dynamic list equals the kinematic one\n";
+  for (const auto& [group, count] : groups) {
+    std::cout << "  " << group << " (" << count << "):\n";
+    for (std::size_t i = 0; i < tree.modes.size(); ++i) {
+      if (solvers::mode_group(tree.modes[i], touching) != group) continue;
+      std::cout << "    " << tree.modes[i].text() << "  vdot = " << tuple_text(tree.accelerations[i]);
+      if (!o.kinematic) std::cout << ", wrench " << tuple_text(m.wrench(i));
+      std::cout << "\n";
+    }
+  }
+  if (tree.modes.empty()) std::cout << "  none\n";
+  if (!o.certificate.empty()) std::cout << "  certificate written to " << o.certificate << "\n";
+  return 0;
+}
+
+int run_modes(const ModesOptions& o) {
+  if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
+    throw exact::InputError("command line", "--arith", "modes are enumerated exactly (use exact or verified)");
+  const std::string text = exact::JsonInput::read_text(o.file);
+  const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
+  solvers::ContactModeOptions options;
+  options.printed_separation = o.table2 == "printed";
+  options.unions = o.unions;
+  options.tree = {exact::parse_arith(o.common.arith), o.max_nodes, exact::Deadline::after(o.common.time_limit)};
+  const solvers::ContactModes m = solvers::contact_modes(scene, options);
+  if (!o.certificate.empty()) write_text_file(o.certificate, solvers::modes_certificate(text, m));
+  return report(o, scene, m);
+}
+
+}  // namespace
+
+void register_modes(CLI::App& app, Action& action) {
+  auto o = std::make_shared<ModesOptions>();
+  CLI::App* sub = app.add_subcommand("modes", "Every kinematically feasible contact mode of a scene, with a proof");
+  add_common_options(*sub, o->common);
+  sub->add_option("file", o->file, "Planar scene file (docs/formats.md)")->required();
+  sub->add_flag("--kinematic", o->kinematic, "List the modes with their accelerations only (no witness wrench)");
+  sub->add_flag("--unions", o->unions, "Also the letters m (l, r or n) and u (s or a), whose modes overlap");
+  sub->add_option("--table2", o->table2,
+                  "strict: s at a touching fixel is a_n > 0 (the physical modes); printed: a_n >= 0 as Table 2 prints it")
+      ->check(CLI::IsMember({"strict", "printed"}))
+      ->default_str("strict");
+  sub->add_option("--max-nodes", o->max_nodes, "Budget on the prefixes the tree visits (exit 3 beyond it)")
+      ->check(CLI::PositiveNumber)
+      ->default_str("4194304");
+  sub->add_option("--certificate", o->certificate, "Write the completeness proof for `contactcert check` here");
+  sub->callback([o, &action] { action = [o] { return run_modes(*o); }; });
+}
+
+}  // namespace contactcert::cli

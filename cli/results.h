@@ -1,0 +1,63 @@
+// The JSON results the subcommands print with --json, built apart from the printing so that the Python module
+// (python/) returns the same objects from the same code.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/json_out.h"
+#include "exact/json_input.h"
+#include "geometry/planar_scene.h"
+#include "solvers/insertion/insertion.h"
+#include "solvers/stability/finger_push.h"
+#include "solvers/stability/margin.h"
+#include "solvers/stability/stable_region.h"
+#include "solvers/stability/strong_stability.h"
+#include "solvers/ucp/problem.h"
+#include "solvers/ucp/solve.h"
+#include "solvers/wrench_cone/wrench_cone.h"
+
+namespace contactcert::cli {
+
+// stability.cpp: `stability --wrench` (T = Q on the exact and verified paths, double with --arith float),
+// `--region` and `--finger`, and the --finger picture.
+template <class T>
+json stability_json(const exact::Vec<exact::Q>& g, const solvers::StabilityResult<T>& r, const std::string& arith,
+                    const std::string& certificate, const std::optional<solvers::Margin<exact::Q>>& margin);
+json region_json(const solvers::StableRegion<exact::Q>& region);
+json finger_json(const solvers::FingerPushes<exact::Q>& pushes);
+std::string finger_svg(const geometry::PlanarScene& scene, const solvers::FingerPushes<exact::Q>& pushes);
+
+// cone.cpp: the mode named by --mode (InputError naming `file` and --mode otherwise), the exact and the
+// float cone, and the --svg picture.
+solvers::ModeString cone_mode(const geometry::PlanarScene& scene, const std::string& file, const std::string& text,
+                              bool printed_separation = false);
+nlohmann::json cone_json(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
+                         const solvers::WrenchCone<exact::Q>& c, const std::string& route, const std::string& arith);
+nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchCone<double>& c,
+                         const std::string& route);
+std::string cone_svg(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
+                     const solvers::WrenchCone<exact::Q>& c);
+
+// insert.cpp: G_goal without --sweep-mu, the values of --sweep-mu (InputError unless each is >= 0), the
+// sweep's entry for one mu (every fixel's mu_s = mu_k = mu), and the --svg picture.
+json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion<exact::Q>& ins,
+                    const solvers::BoundaryPieces<exact::Q, bool>& pushes);
+std::vector<exact::Q> sweep_mus(const std::string& text);
+json sweep_entry_json(const geometry::PlanarScene& scene, const exact::Q& mu);
+std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<exact::Q, bool>& pushes);
+
+// ucp.cpp: `ucp --generate random|reduction`, the certificate text of a verdict (empty if it has none) and the
+// report (`certificate`: the file it was written to, or empty).
+solvers::ucp::UcpProblem generated_problem(const std::string& kind, std::uint64_t seed, int nc,
+                                           const std::string& mu_max, int abar, int rows, int cols, bool planted);
+std::string ucp_certificate_text(const solvers::ucp::UcpProblem& problem, const solvers::ucp::UcpReport& r);
+json ucp_json(const solvers::ucp::UcpReport& r, const std::string& certificate);
+
+// check.cpp: `check` of a parsed certificate.
+json check_json(const exact::JsonInput& certificate);
+
+}  // namespace contactcert::cli

@@ -1,0 +1,23 @@
+# `cmake --install BUILD --prefix P`: the libraries and their headers as the CMake package contactcert
+# (find_package(contactcert) gives contactcert::contactcert; docs/cpp.md), the CLI and the bundled scenes.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+set(CONTACTCERT_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/contactcert)
+
+install(TARGETS contactcert_lib contactcert_solvers contactcert_geometry contactcert_exact
+        EXPORT contactcertTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# Headers keep their source paths ("solvers/stability/strong_stability.h") under include/contactcert.
+foreach(dir exact geometry solvers)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/contactcert/${dir}
+          FILES_MATCHING PATTERN "*.h")
+endforeach()
+install(EXPORT contactcertTargets NAMESPACE contactcert:: DESTINATION ${CONTACTCERT_CMAKE_DIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/contactcertConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/contactcertConfig.cmake INSTALL_DESTINATION ${CONTACTCERT_CMAKE_DIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/contactcertConfigVersion.cmake VERSION ${PROJECT_VERSION}
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/contactcertConfig.cmake ${PROJECT_BINARY_DIR}/contactcertConfigVersion.cmake
+        DESTINATION ${CONTACTCERT_CMAKE_DIR})
+
+install(TARGETS contactcert RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes/ DESTINATION ${CMAKE_INSTALL_DATADIR}/contactcert/scenes)

@@ -1,0 +1,229 @@
+"""Result classes: each holds the object the CLI prints with --json (to_dict() returns it unchanged), with
+exact numbers as Fractions, float views as numpy arrays and, where the CLI draws one, a picture."""
+
+import copy
+import json
+
+from ._numbers import exact, floats
+
+
+class Result:
+    """A result as the CLI's --json object."""
+
+    def __init__(self, data, svg=None):
+        self._data = data
+        self._svg = svg  # a function drawing the picture, or None
+
+    def to_dict(self):
+        """The CLI's --json object for the same query."""
+        return copy.deepcopy(self._data)
+
+    def to_json(self):
+        return json.dumps(self._data)
+
+    def __getitem__(self, key):
+        return self._data[key]
+
+    def __eq__(self, other):
+        return type(self) is type(other) and self._data == other._data
+
+    def _repr_svg_(self):
+        return self._svg() if self._svg else None
+
+
+def _field(key):
+    """A property: the --json object's member `key`."""
+    return property(lambda self: self._data[key])
+
+
+def _directions(form, key, doc):
+    """A property: the primitive integer rows `key` of the --json object's `form` as int tuples (() if absent)."""
+
+    def get(self):
+        d = self._data.get(form)
+        return tuple(tuple(int(x) for x in row) for row in d[key]) if d and key in d else ()
+
+    return property(get, doc=doc)
+
+
+class Cone(Result):
+    """The wrench cone of an augmented contact mode (Balkcom-Trinkle 2002, eqs. 13-17): face form f . g <= 0
+    (< 0 on strict rows, = 0 on equalities), span form of its closure (rays, lines) and the open faces."""
+
+    mode = _field("mode")
+    empty = _field("empty")
+
+    @property
+    def dimension(self):
+        return self._data.get("dimension")
+
+    inequalities = _directions("face", "inequalities", "Rows f of the face form with f . g <= 0.")
+    strict = _directions("face", "strict", "Rows f with f . g < 0 (the open faces).")
+    equalities = _directions("face", "equalities", "Rows f with f . g = 0.")
+    rays = _directions("span", "rays", "Generators of the closure.")
+    lines = _directions("span", "lines", "Lines (both senses) of the closure.")
+
+    @property
+    def open_faces(self):
+        return tuple(tuple(f) for f in self._data.get("open_faces", []))
+
+    @property
+    def K(self):
+        return exact(self._data["K"]) if "K" in self._data else None
+
+    @property
+    def P(self):
+        return exact(self._data["P"]) if "P" in self._data else None
+
+    @property
+    def rays_approx(self):
+        """The closure's generators as doubles (rows)."""
+        if "span_approx" in self._data:
+            return floats(self._data["span_approx"]["rays"], 3)
+        return floats([list(r) for r in self.rays], 3)
+
+    def __repr__(self):
+        if self.empty:
+            return f"Cone(mode={self.mode!r}, empty)"
+        if "dimension" not in self._data:
+            return f"Cone(mode={self.mode!r}, float, {len(self._data['span_approx']['rays'])} rays)"
+        return (f"Cone(mode={self.mode!r}, dimension {self.dimension}, {len(self.rays)} rays, "
+                f"{len(self.lines)} lines, {len(self.open_faces)} open faces)")
+
+
+class Stability(Result):
+    """Strong stability under one wrench (Balkcom-Trinkle 2002, section 7): the verdict with a resting and
+    a moving solution where they exist."""
+
+    def __init__(self, data, certificate=None):
+        super().__init__(data)
+        self.certificate = certificate  # a Certificate when one was written
+
+    verdict = _field("verdict")
+
+    @property
+    def wrench(self):
+        return exact(self._data["wrench"])
+
+    @property
+    def touching_fixels(self):
+        return tuple(self._data["touching_fixels"])
+
+    @property
+    def resting_forces(self):
+        """Contact forces (c_n..., c_t...) balancing g at rest: Fractions (doubles on the float path), or None."""
+        f = self._data["witness"].get("resting_forces")
+        if f is None:
+            return None
+        return exact(f) if self._data["arith"] != "float" else tuple(f)
+
+    @property
+    def moving_mode(self):
+        m = self._data["witness"].get("moving")
+        return m["mode"] if m else None
+
+    @property
+    def acceleration(self):
+        """The moving solution's acceleration vdot (Fractions), or None."""
+        m = self._data["witness"].get("moving")
+        return exact(m["acceleration"]) if m and "acceleration" in m else None
+
+    @property
+    def acceleration_approx(self):
+        m = self._data["witness"].get("moving")
+        return floats(m["acceleration_approx"]) if m else None
+
+    @property
+    def squared_margin(self):
+        """With margin=True on a strongly stable verdict: the squared radius of the largest strongly stable
+        ball around g (Fraction), else None."""
+        m = self._data.get("margin")
+        return exact(m["squared_radius"]) if m else None
+
+    def __repr__(self):
+        w = ", ".join(str(x) for x in self.wrench)
+        extra = f", moving mode {self.moving_mode!r}" if self.moving_mode else ""
+        return f"Stability({self.verdict}, wrench=({w}), {len(self.touching_fixels)} touching fixels{extra})"
+
+
+class Region(Result):
+    """The labelled cells of wrench space (section 7, Figure 5): every g is in exactly one cell."""
+
+    @property
+    def cells(self):
+        return self._data["region"]["cells"]
+
+    def count(self, label, dimension=None):
+        return sum(1 for c in self.cells if c["label"] == label and dimension in (None, c["dimension"]))
+
+    def __repr__(self):
+        r = self._data["region"]
+        return (f"Region({len(r['cells'])} cells, {r['planes']} planes, "
+                f"{self.count('strongly_stable', 3)} strongly stable open regions)")
+
+
+class Finger(Result):
+    """Where a frictionless finger push along the inward normal is strongly stable, weakly or unstable."""
+
+    def __repr__(self):
+        f = self._data["finger"]
+        return f"Finger({len(f['edges'])} edge pieces, {len(f['arcs'])} arcs)"
+
+
+class Insertion(Result):
+    """G_goal (sections 8-9, eq. 21): the wrenches that seat the workpiece from any contact state."""
+
+    @property
+    def goal_boundary_fraction(self):
+        return self._data["goal_boundary_fraction_approx"]
+
+    @property
+    def sweep(self):
+        """With sweep_mu: (mu, fraction of the boundary whose pushes seat the part) per value (Figure 11)."""
+        return tuple((exact(e["mu"]), e["goal_boundary_fraction_approx"]) for e in self._data.get("sweep", []))
+
+    def __repr__(self):
+        return (f"Insertion({len(self._data['sets'])} contact states, "
+                f"boundary fraction in G_goal ~{self.goal_boundary_fraction:.4f})")
+
+
+class UcpResult(Result):
+    """The quasistatic problem's verdict (Pang-Trinkle-Lo 1994): solvable with a pair x, y (x^T y = 0) and its
+    physical reading, or jammed."""
+
+    def __init__(self, data, certificate=None):
+        super().__init__(data)
+        self.certificate = certificate
+
+    status = _field("status")
+
+    @property
+    def x(self):
+        return exact(self._data["x"]) if "x" in self._data else None
+
+    @property
+    def y(self):
+        return exact(self._data["y"]) if "y" in self._data else None
+
+    @property
+    def physical(self):
+        """c_n, c_t, v_n, v_t, q_dot, theta_dot, tau as Fractions, or None."""
+        p = self._data.get("physical")
+        return {k: exact(v) for k, v in p.items() if isinstance(v, list)} if p else None
+
+    def __repr__(self):
+        return f"UcpResult({self.status}, {self._data['reason']!r}, method {self._data['method']})"
+
+
+class CheckResult(Result):
+    """`contactcert check`'s answer: is the certificate valid, and why."""
+
+    valid = _field("valid")
+    kind = _field("kind")
+    reason = _field("reason")
+
+    def __bool__(self):
+        return self.valid
+
+    def __repr__(self):
+        return f"CheckResult({self.kind}, {'VALID' if self.valid else 'INVALID'}: {self.reason})"

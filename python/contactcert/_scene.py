@@ -1,0 +1,81 @@
+"""Planar fixture scenes (SPEC section 3) and the Balkcom-Trinkle queries on them."""
+
+import json
+import os
+
+from . import _core
+from ._numbers import vector_text
+from ._results import Cone, Finger, Insertion, Region, Stability
+from ._source import FromSource
+
+ARITHS = ("exact", "float", "verified", "adaptive")
+
+
+def choice(value, allowed, option):
+    """`value` if it is one of `allowed`, else ValueError naming the CLI option."""
+    if value not in allowed:
+        raise ValueError(f"{option}: {value!r} not in {{{', '.join(allowed)}}}")
+    return value
+
+
+class Scene(FromSource):
+    """A planar scene: a workpiece held by fixels. Queries run in C++ with the GIL released."""
+
+    _core_type = _core.Scene
+
+    def __init__(self, core):
+        super().__init__(core)
+        self._oracles = {}
+
+    @property
+    def name(self):
+        return self._core.name
+
+    def to_dict(self):
+        return json.loads(self._core.text)
+
+    def cone(self, mode, route="paper", arith="verified"):
+        """`contactcert cone FILE --mode MODE`: the wrench cone of an augmented contact mode (Table 2 letters)."""
+        choice(route, ("paper", "project"), "--route")
+        choice(arith, ARITHS, "--arith")
+        data = json.loads(self._core.cone(mode, route, arith))
+        svg = None if arith == "float" else (lambda: self._core.cone_svg(mode, route))
+        return Cone(data, svg)
+
+    def stability(self, wrench, margin=False, arith="verified", certificate=None):
+        """`contactcert stability FILE --wrench fx,fy,tz [--margin] [--certificate PATH]`: strongly stable,
+        weakly stable or unstable; `certificate` is the file the evidence is written to."""
+        from ._ucp import Certificate
+
+        choice(arith, ARITHS, "--arith")
+        path = os.fspath(certificate) if certificate is not None else ""
+        data, text = self._core.stability(vector_text(wrench, "--wrench"), arith, bool(margin), path)
+        return Stability(json.loads(data), Certificate(text, path) if text else None)
+
+    def stability_many(self, wrenches, arith="verified"):
+        """The verdicts for many wrenches, from a StabilityOracle prepared once per scene and arithmetic. Each
+        equals stability(g)'s except `lps`, which counts only the LPs solved for g."""
+        choice(arith, ARITHS, "--arith")
+        oracle = self._oracles.get(arith)
+        if oracle is None:
+            oracle = self._oracles[arith] = _core.Oracle(self._core, arith)
+        texts = [vector_text(w, f"wrenches[{i}]") for i, w in enumerate(wrenches)]
+        return [Stability(json.loads(d)) for d in oracle.verdicts(texts)]
+
+    def region(self):
+        """`contactcert stability FILE --region`: the strongly stable set as labelled cells (picture: the sphere
+        of wrench directions)."""
+        return Region(json.loads(self._core.region()), self._core.region_svg)
+
+    def finger(self):
+        """`contactcert stability FILE --finger`: the boundary labelled by the verdict of a frictionless push."""
+        return Finger(json.loads(self._core.finger()), self._core.finger_svg)
+
+    def insertion(self, sweep_mu=None):
+        """`contactcert insert FILE [--sweep-mu ...]`: G_goal and the pushes that seat the workpiece from any
+        contact state; `sweep_mu` (exact numbers) repeats the pushes with every fixel's mu set to each value."""
+        sweep = vector_text(sweep_mu, "--sweep-mu") if sweep_mu is not None else ""
+        return Insertion(json.loads(self._core.insertion(sweep)), self._core.insertion_svg)
+
+    def __repr__(self):
+        return f"Scene({self.name!r}, {self._core.fixels} fixels)"

@@ -1,0 +1,130 @@
+#include "solvers/stability/contact_modes.h"
+
+#include <nlohmann/json.hpp>
+
+#include "exact/rational_text.h"
+#include "geometry/scene_json.h"
+
+namespace contactcert::solvers {
+
+using json = nlohmann::ordered_json;
+using Index = Eigen::Index;
+
+namespace {
+
+std::vector<bool> touching_flags(const geometry::PlanarScene& scene) {
+  std::vector<bool> t;
+  for (const geometry::Fixel& f : scene.fixels) t.push_back(f.frame.touching());
+  return t;
+}
+
+ModeAlphabet alphabet_of(const geometry::PlanarScene& scene, bool printed_separation, bool unions) {
+  return ModeAlphabet{{touching_flags(scene), printed_separation}, unions};
+}
+
+json strings(const Vec<Q>& v) {
+  json a = json::array();
+  for (Index i = 0; i < v.size(); ++i) a.push_back(exact::to_string(v(i)));
+  return a;
+}
+
+// A mode or prefix over the alphabet's letters for its fixels (1 to k letters; exactly k for a mode).
+ModeString read_letters(const exact::JsonInput& j, const ModeAlphabet& alphabet, std::size_t k, bool prefix) {
+  const std::string text = j.string();
+  if (text.size() > k || (prefix ? text.empty() : text.size() != k))
+    j.fail(prefix ? "a mode prefix of 1 to " + std::to_string(k) + " letters" : "one letter per fixel (" +
+                                                                                   std::to_string(k) + ")");
+  ModeString m;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    bool known = false;
+    for (Interaction L : alphabet.letters(i)) known = known || static_cast<char>(L) == text[i];
+    if (!known) j.fail("letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "') is not a letter of fixel " +
+                       std::to_string(i + 1) + " in this alphabet");
+    m.letters.push_back(static_cast<Interaction>(text[i]));
+  }
+  return m;
+}
+
+}  // namespace
+
+Vec<Q> ContactModes::wrench(std::size_t i) const {
+  Vec<Q> g = tree.accelerations[i];
+  g(2) *= model.inertia_per_mass;  // M = diag(1, 1, I/m) per unit mass, as in motion_system.h
+  return g;
+}
+
+ContactModes contact_modes(const geometry::PlanarScene& scene, const ContactModeOptions& options) {
+  ContactModes out{alphabet_of(scene, options.printed_separation, options.unions), motion_model<Q>(scene), {}};
+  out.tree = walk_modes(out.model, out.alphabet, options.tree);
+  return out;
+}
+
+const char* mode_group(const ModeString& mode, const std::vector<bool>& touching) {
+  bool separates = false, slides = false, rolls = false;
+  for (std::size_t i = 0; i < mode.letters.size(); ++i) {
+    if (!touching[i]) continue;
+    const Interaction L = mode.letters[i];
+    separates = separates || L == Interaction::kSeparate;
+    slides = slides || L == Interaction::kSlideLeft || L == Interaction::kSlideRight;
+    rolls = rolls || L == Interaction::kRoll || L == Interaction::kMaintain;
+  }
+  const int kinds = separates + slides + rolls;
+  if (kinds == 0) return "free";
+  if (kinds > 1) return "mixed";
+  return separates ? "separating" : slides ? "sliding" : "rolling";
+}
+
+std::string modes_certificate(const std::string& scene_text, const ContactModes& m) {
+  json j;
+  j["kind"] = "modes";
+  j["scene"] = scene_text;
+  j["table2"] = m.alphabet.rules.printed_separation ? "printed" : "strict";
+  j["unions"] = m.alphabet.unions;
+  json modes = json::array();
+  for (std::size_t i = 0; i < m.tree.modes.size(); ++i)
+    modes.push_back({{"mode", m.tree.modes[i].text()}, {"acceleration", strings(m.tree.accelerations[i])}});
+  j["modes"] = modes;
+  json dead = json::array();
+  for (const DeadPrefix<Q>& d : m.tree.dead) dead.push_back({{"prefix", d.prefix.text()}, {"motzkin", strings(d.motzkin)}});
+  j["dead"] = dead;
+  return j.dump(1) + "\n";
+}
+
+ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
+  c.expect_keys({"kind", "scene", "table2", "unions", "modes", "dead"});
+  const geometry::PlanarScene scene =
+      geometry::read_planar_scene(exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)"));
+  const std::string table2 = c.at("table2").string();
+  if (table2 != "strict" && table2 != "printed") c.at("table2").fail("expected \"strict\" or \"printed\"");
+  const ModeAlphabet alphabet = alphabet_of(scene, table2 == "printed", c.at("unions").boolean());
+  const std::size_t k = scene.fixels.size();
+  const MotionModel<Q> model = motion_model<Q>(scene);
+  ModesCertificateCheck out;
+  std::vector<std::string> leaves, dead;
+  for (const auto& e : c.at("modes").elements()) {
+    e.expect_keys({"mode", "acceleration"});
+    const ModeString m = read_letters(e.at("mode"), alphabet, k, false);
+    if (!realises(model, alphabet.rules, e.at("acceleration").rational_vector(3), m))
+      return {false, "the acceleration listed for mode " + m.text() + " does not realise it (Table 2)", 0, 0};
+    leaves.push_back(m.text());
+  }
+  for (const auto& e : c.at("dead").elements()) {
+    e.expect_keys({"prefix", "motzkin"});
+    const ModeString p = read_letters(e.at("prefix"), alphabet, k, true);
+    if (!exact::verify_motzkin(kinematic_system(model, p, alphabet.rules).dense(), e.at("motzkin").rational_vector()))
+      return {false, "the certificate of dead prefix " + p.text() + " does not verify", 0, 0};
+    dead.push_back(p.text());
+  }
+  out.modes = static_cast<long>(leaves.size());
+  out.dead = static_cast<long>(dead.size());
+  if (auto gap = mode_coverage(k, alphabet, dead, leaves)) {
+    out.reason = "the modes starting with '" + *gap + "' are neither listed nor proven infeasible";
+    return out;
+  }
+  out.valid = true;
+  out.reason = "every listed mode is realised by its acceleration and every other mode extends a proven dead prefix: " +
+               std::to_string(out.modes) + " feasible modes, " + std::to_string(out.dead) + " dead prefixes";
+  return out;
+}
+
+}  // namespace contactcert::solvers

@@ -1,0 +1,268 @@
+#include "solvers/stability/mode_tree.h"
+
+#include <string_view>
+#include <unordered_set>
+
+#include "exact/input_error.h"
+#include "exact/ladder_numbers.h"
+
+namespace contactcert::solvers {
+
+using Index = Eigen::Index;
+
+std::vector<Interaction> ModeAlphabet::letters(std::size_t fixel) const {
+  using I = Interaction;
+  if (rules.touches(fixel)) {
+    if (unions) return {I::kSeparate, I::kSlideLeft, I::kSlideRight, I::kRoll, I::kMaintain};
+    return {I::kSeparate, I::kSlideLeft, I::kSlideRight, I::kRoll};
+  }
+  if (unions) return {I::kSeparate, I::kApproach, I::kUnconstrained};
+  return {I::kSeparate, I::kApproach};
+}
+
+namespace {
+
+// Whether acceleration vdot meets letter L's rows at fixel i (Table 2), by the sign test of T.
+template <class T>
+bool meets(const MotionModel<T>& model, const KinematicRules& rules, const Vec<T>& vdot, std::size_t i,
+           Interaction L) {
+  const Index k = model.J.cols() / 2, c = static_cast<Index>(i);
+  const T a_n = model.J.col(c).dot(vdot);
+  const int n = exact::sign(a_n);
+  auto t = [&] { return exact::sign(T(model.J.col(k + c).dot(vdot))); };
+  switch (L) {
+    case Interaction::kSeparate:
+      return n > 0 || (n == 0 && (!rules.touches(i) || rules.printed_separation));
+    case Interaction::kSeparatePrinted:
+      return n >= 0;
+    case Interaction::kApproach:
+      return n < 0;
+    case Interaction::kUnconstrained:
+      return true;
+    case Interaction::kSlideLeft:
+      return n == 0 && t() > 0;
+    case Interaction::kSlideRight:
+      return n == 0 && t() < 0;
+    case Interaction::kRoll:
+      return n == 0 && t() == 0;
+    case Interaction::kMaintain:
+      return n == 0;
+  }
+  return false;
+}
+
+// What row a letter puts on a fixel's a_n and on its a_t (kinematic_system): a Motzkin certificate that weighs
+// only rows of the same kinds is one for any prefix with those kinds at those fixels.
+enum class RowKind : char { kNone, kZero, kSlackMinus, kSlackMinusStrict, kSlackPlusStrict };
+
+RowKind normal_row(Interaction L, bool strict_s) {
+  switch (L) {
+    case Interaction::kSeparate: return strict_s ? RowKind::kSlackMinusStrict : RowKind::kSlackMinus;
+    case Interaction::kSeparatePrinted: return RowKind::kSlackMinus;
+    case Interaction::kApproach: return RowKind::kSlackPlusStrict;
+    case Interaction::kUnconstrained: return RowKind::kNone;
+    default: return RowKind::kZero;
+  }
+}
+
+RowKind tangent_row(Interaction L) {
+  switch (L) {
+    case Interaction::kSlideLeft: return RowKind::kSlackMinusStrict;
+    case Interaction::kSlideRight: return RowKind::kSlackPlusStrict;
+    case Interaction::kRoll: return RowKind::kZero;
+    default: return RowKind::kNone;
+  }
+}
+
+// A dead prefix's certificate by the rows it weighs: per fixel of its support, the kinds and the weights.
+template <class T>
+struct KnownProof {
+  struct Weight {
+    std::size_t fixel;
+    RowKind normal, tangent;  // kNone where the certificate does not weigh the row
+    T y_normal, y_tangent;
+  };
+  std::vector<Weight> support;  // in fixel order; the last is the prefix's last fixel
+};
+
+template <class T>
+class Walker {
+ public:
+  Walker(const MotionModel<T>& model, const ModeAlphabet& alphabet, const ModeTreeOptions& options,
+         const OnMode<T>& on_mode, ModeTree<T>& out)
+      : model_(model), alphabet_(alphabet), options_(options), on_mode_(on_mode), out_(out),
+        k_(static_cast<std::size_t>(model.J.cols() / 2)), known_(k_) {}
+
+  // Visits the live prefix (vdot realises it) and its subtree; false once on_mode stopped the walk.
+  bool visit(ModeString& prefix, const Vec<T>& vdot) {
+    const std::size_t i = prefix.letters.size();
+    if (i == k_) {
+      out_.modes.push_back(prefix);
+      out_.accelerations.push_back(vdot);
+      return !on_mode_ || on_mode_(prefix, vdot);
+    }
+    for (Interaction L : alphabet_.letters(i)) {
+      count_node();
+      prefix.letters.push_back(L);
+      bool go_on = true;
+      if (meets(model_, alphabet_.rules, vdot, i, L)) {
+        go_on = visit(prefix, vdot);
+      } else if (Vec<T> y = reuse(prefix); y.size()) {
+        out_.dead.push_back({prefix, std::move(y)});
+      } else {
+        auto kin = exact::strict_feasibility(kinematic_system(model_, prefix, alphabet_.rules), options_.arith);
+        out_.lps += kin.lps;
+        if (kin.rounded_float_checked) out_.lps_checked_from_float += kin.lps;
+        if (kin.status == exact::StrictStatus::kFeasible) {
+          go_on = visit(prefix, Vec<T>(kin.x.head(3)));
+        } else {
+          remember(prefix, kin.motzkin);
+          out_.dead.push_back({prefix, std::move(kin.motzkin)});
+        }
+      }
+      prefix.letters.pop_back();
+      if (!go_on) return false;
+    }
+    return true;
+  }
+
+  void count_node() {
+    ++out_.nodes;
+    if (out_.nodes > options_.max_nodes || options_.deadline.expired())
+      throw exact::BudgetExceeded(
+          out_.nodes > options_.max_nodes ? "mode enumeration: node budget of " + std::to_string(options_.max_nodes) +
+                                                " prefixes exhausted"
+                                          : "mode enumeration: " + options_.deadline.reached_text(),
+          std::to_string(out_.nodes - 1) + " prefixes visited, " + std::to_string(out_.modes.size()) +
+              " feasible modes found");
+  }
+
+ private:
+  bool strict_s(std::size_t fixel) const {
+    return alphabet_.rules.touches(fixel) && !alphabet_.rules.printed_separation;
+  }
+
+  // The first row of each fixel of the prefix in kinematic_system's layout, and the row count.
+  static std::vector<Index> first_rows(const ModeString& prefix, Index& rows) {
+    std::vector<Index> first;
+    rows = 0;
+    for (Interaction L : prefix.letters) {
+      first.push_back(rows);
+      rows += normal_row(L, true) != RowKind::kNone;
+      rows += tangent_row(L) != RowKind::kNone;
+    }
+    return first;
+  }
+
+  // Keeps the rows a new dead prefix's certificate weighs, under its last fixel (every certificate weighs it:
+  // else the parent prefix would be dead).
+  void remember(const ModeString& prefix, const Vec<T>& y) {
+    Index rows = 0;
+    const std::vector<Index> first = first_rows(prefix, rows);
+    KnownProof<T> known;
+    for (std::size_t f = 0; f < prefix.letters.size(); ++f) {
+      const Interaction L = prefix.letters[f];
+      typename KnownProof<T>::Weight w{f, RowKind::kNone, RowKind::kNone, T(0), T(0)};
+      Index r = first[f];
+      if (normal_row(L, true) != RowKind::kNone) {
+        if (!exact::is_zero(y(r))) w.normal = normal_row(L, strict_s(f)), w.y_normal = y(r);
+        ++r;
+      }
+      if (tangent_row(L) != RowKind::kNone && !exact::is_zero(y(r))) w.tangent = tangent_row(L), w.y_tangent = y(r);
+      if (w.normal != RowKind::kNone || w.tangent != RowKind::kNone) known.support.push_back(std::move(w));
+    }
+    if (!known.support.empty()) known_[known.support.back().fixel].push_back(std::move(known));
+  }
+
+  // A certificate for the prefix moved from a known one that weighs only rows of the same kinds, or empty.
+  Vec<T> reuse(const ModeString& prefix) const {
+    const std::size_t last = prefix.letters.size() - 1;
+    for (const KnownProof<T>& known : known_[last]) {
+      bool same = true;
+      for (const auto& w : known.support) {
+        const Interaction L = prefix.letters[w.fixel];
+        same = same && (w.normal == RowKind::kNone || w.normal == normal_row(L, strict_s(w.fixel))) &&
+               (w.tangent == RowKind::kNone || w.tangent == tangent_row(L));
+      }
+      if (!same) continue;
+      Index rows = 0;
+      const std::vector<Index> first = first_rows(prefix, rows);
+      Vec<T> y = Vec<T>::Zero(rows);
+      for (const auto& w : known.support) {
+        if (w.normal != RowKind::kNone) y(first[w.fixel]) = w.y_normal;
+        if (w.tangent != RowKind::kNone) y(first[w.fixel] + 1) = w.y_tangent;  // l r n: after the a_n row
+      }
+      return y;
+    }
+    return Vec<T>();
+  }
+
+  const MotionModel<T>& model_;
+  const ModeAlphabet& alphabet_;
+  const ModeTreeOptions& options_;
+  const OnMode<T>& on_mode_;
+  ModeTree<T>& out_;
+  std::size_t k_;
+  std::vector<std::vector<KnownProof<T>>> known_;  ///< by the last fixel of their support
+};
+
+}  // namespace
+
+template <class T>
+bool realises(const MotionModel<T>& model, const KinematicRules& rules, const Vec<T>& vdot, const ModeString& mode) {
+  if (vdot.size() != 3 || static_cast<Eigen::Index>(mode.letters.size()) > model.J.cols() / 2) return false;
+  for (std::size_t i = 0; i < mode.letters.size(); ++i)
+    if (!meets(model, rules, vdot, i, mode.letters[i])) return false;
+  return true;
+}
+
+template <class T>
+ModeTree<T> walk_modes(const MotionModel<T>& model, const ModeAlphabet& alphabet, const ModeTreeOptions& options,
+                       const OnMode<T>& on_mode) {
+  ModeTree<T> out;
+  Walker<T> walker(model, alphabet, options, on_mode, out);
+  walker.count_node();  // the empty prefix: no rows, realised by vdot = 0
+  ModeString prefix;
+  out.complete = walker.visit(prefix, Vec<T>::Zero(3));
+  return out;
+}
+
+std::optional<std::string> mode_coverage(std::size_t k, const ModeAlphabet& alphabet, const std::vector<std::string>& dead,
+                          const std::vector<std::string>& leaves) {
+  // A prefix is accounted for if it is listed (dead, or a full-length leaf); the walk descends only into
+  // proper prefixes of listed strings, so it never expands more than the lists spell out.
+  std::unordered_set<std::string> listed, inner;
+  auto add = [&](const std::string& s, bool full) {
+    if (s.size() > k || (full && s.size() != k)) return;
+    listed.insert(s);
+    for (std::size_t n = 0; n < s.size(); ++n) inner.insert(s.substr(0, n));
+  };
+  for (const auto& s : dead) add(s, false);
+  for (const auto& s : leaves) add(s, true);
+  if (listed.count("")) return std::nullopt;  // the empty prefix itself is listed: every mode is covered
+  std::vector<std::string> stack{""};
+  while (!stack.empty()) {
+    const std::string p = std::move(stack.back());
+    stack.pop_back();
+    if (p.size() == k) return p;  // a full mode that nothing lists
+    for (Interaction L : alphabet.letters(p.size())) {
+      std::string child = p + static_cast<char>(L);
+      if (listed.count(child)) continue;
+      if (!inner.count(child)) return child;
+      stack.push_back(std::move(child));
+    }
+  }
+  return std::nullopt;
+}
+
+#define CONTACTCERT_MODE_TREE_INSTANTIATE(T) \
+  template ModeTree<T> walk_modes<T>(const MotionModel<T>&, const ModeAlphabet&, const ModeTreeOptions&, \
+                                     const OnMode<T>&);                                                 \
+  template bool realises<T>(const MotionModel<T>&, const KinematicRules&, const Vec<T>&, const ModeString&);
+CONTACTCERT_MODE_TREE_INSTANTIATE(double)
+CONTACTCERT_MODE_TREE_INSTANTIATE(Q)
+CONTACTCERT_MODE_TREE_INSTANTIATE(exact::Mpfr)
+CONTACTCERT_MODE_TREE_INSTANTIATE(exact::Interval)
+#undef CONTACTCERT_MODE_TREE_INSTANTIATE
+
+}  // namespace contactcert::solvers

@@ -1,0 +1,36 @@
+"""Shared fixtures: the bundled scenes and the built CLI (CONTACTCERT_CLI, set by CTest)."""
+
+import json
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+SCENES = ROOT / "scenes"
+CLI = os.environ.get("CONTACTCERT_CLI", str(ROOT / "build" / "cli" / "contactcert"))
+
+
+def run_cli(*args, expect=0):
+    """The CLI's (exit code, stdout, stderr); asserts the exit code."""
+    p = subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=60)
+    assert p.returncode == expect, p.stderr
+    return p
+
+
+def cli_json(*args):
+    """The CLI's --json object for the same query."""
+    return json.loads(run_cli(*args, "--json").stdout)
+
+
+def cli_error(*args):
+    """The CLI's message for bad input (exit 2), without its "contactcert: " prefix."""
+    err = run_cli(*args, expect=2).stderr.strip()
+    assert err.startswith("contactcert: ")
+    return err[len("contactcert: "):]
+
+
+@pytest.fixture
+def scenes():
+    return SCENES
