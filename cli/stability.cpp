@@ -126,8 +126,9 @@ double degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).ge
 }  // namespace
 
 template <class T>
-json stability_json(const exact::Vec<Q>& g, const StabilityResult<T>& r, const std::string& arith,
-                    const std::string& certificate, const std::optional<solvers::Margin<Q>>& margin) {
+json stability_json(const geometry::PlanarScene& scene, const exact::Vec<Q>& g, const StabilityResult<T>& r,
+                    const std::string& arith, const std::string& certificate,
+                    const std::optional<solvers::Margin<Q>>& margin) {
   json j;
   j["verdict"] = solvers::verdict_name(r.verdict);
   j["wrench"] = exact_json(g);
@@ -136,8 +137,14 @@ json stability_json(const exact::Vec<Q>& g, const StabilityResult<T>& r, const s
   for (auto i : r.touching) touching.push_back(i);
   j["touching_fixels"] = touching;
   json w;
-  if (r.has_resting) w["resting_forces"] = forces_json(r.resting_forces);
-  if (r.has_moving) w["moving"] = witness_json(r.moving);
+  if (r.has_resting) {
+    w["resting_forces"] = forces_json(r.resting_forces);
+    w["resting_contacts"] = contacts_json(scene, r.touching, r.resting_forces);
+  }
+  if (r.has_moving) {
+    w["moving"] = witness_json(r.moving);
+    w["moving"]["contacts"] = contacts_json(scene, r.touching, r.moving.forces);
+  }
   j["witness"] = w;
   j["lps"] = r.lps;
   j["modes_checked"] = r.modes_checked;
@@ -150,10 +157,10 @@ json stability_json(const exact::Vec<Q>& g, const StabilityResult<T>& r, const s
                    {"nearest", margin->nearest}};
   return j;
 }
-template json stability_json(const exact::Vec<Q>&, const StabilityResult<Q>&, const std::string&, const std::string&,
-                             const std::optional<solvers::Margin<Q>>&);
-template json stability_json(const exact::Vec<Q>&, const StabilityResult<double>&, const std::string&,
-                             const std::string&, const std::optional<solvers::Margin<Q>>&);
+template json stability_json(const geometry::PlanarScene&, const exact::Vec<Q>&, const StabilityResult<Q>&,
+                             const std::string&, const std::string&, const std::optional<solvers::Margin<Q>>&);
+template json stability_json(const geometry::PlanarScene&, const exact::Vec<Q>&, const StabilityResult<double>&,
+                             const std::string&, const std::string&, const std::optional<solvers::Margin<Q>>&);
 
 json region_json(const solvers::StableRegion<Q>& region) {
   json modes = json::array();
@@ -199,10 +206,7 @@ template <class T>
 int report(const StabilityOptions& o, const geometry::PlanarScene& scene, const exact::Vec<Q>& g,
            const StabilityResult<T>& r, const std::optional<solvers::Margin<Q>>& margin = std::nullopt) {
   if (o.common.json) {
-    json j = stability_json(g, r, o.common.arith, o.certificate, margin);
-    if (r.has_resting) j["witness"]["resting_contacts"] = contacts_json(scene, r.touching, r.resting_forces);
-    if (r.has_moving) j["witness"]["moving"]["contacts"] = contacts_json(scene, r.touching, r.moving.forces);
-    std::cout << j.dump() << "\n";
+    std::cout << stability_json(scene, g, r, o.common.arith, o.certificate, margin).dump() << "\n";
     return 0;
   }
   const std::size_t k = r.touching.size();
