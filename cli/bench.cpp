@@ -122,7 +122,7 @@ int run_bench(const BenchOptions& o) {
 void register_bench(CLI::App& app, Action& action) {
   auto opts = std::make_shared<BenchOptions>();
   CLI::App* sub = app.add_subcommand(
-      "bench", "Speed against error: hard-case families on the float, verified and exact paths (issue 8)");
+      "bench", "Speed against error: hard-case families on the float, verified and exact paths (docs/bench.md)");
   std::vector<std::string> suites = {"all"};
   for (bench::Family f : bench::all_families()) suites.push_back(bench::family_name(f));
   sub->add_option("--suite", opts->suite, "all, or one family")->check(CLI::IsMember(suites))->capture_default_str();

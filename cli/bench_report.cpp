@@ -103,6 +103,28 @@ Table table(const BenchRun& run, Key key, std::optional<bench::Family> family = 
   return t;
 }
 
+/// A wide table of table() as tables that fit a page: each repeats the 3 key columns; the first holds the times
+/// and ratios (2R - 1 columns), the others the error columns of two inexact rungs each (4 per rung).
+std::vector<Table> split(const Table& t, std::size_t rungs) {
+  constexpr std::size_t kKey = 3, kPerRung = 4;
+  std::vector<std::pair<std::size_t, std::size_t>> chunks = {{kKey, kKey + 2 * rungs - 1}};
+  for (std::size_t c = chunks[0].second; c < t.header.size(); c += 2 * kPerRung)
+    chunks.emplace_back(c, std::min(t.header.size(), c + 2 * kPerRung));
+  std::vector<Table> out;
+  for (const auto& [a, b] : chunks) {
+    Table part;
+    const auto take = [&](const std::vector<std::string>& r) {
+      std::vector<std::string> x(r.begin(), r.begin() + kKey);
+      x.insert(x.end(), r.begin() + static_cast<std::ptrdiff_t>(a), r.begin() + static_cast<std::ptrdiff_t>(b));
+      return x;
+    };
+    part.header = take(t.header);
+    for (const auto& r : t.rows) part.rows.push_back(take(r));
+    out.push_back(std::move(part));
+  }
+  return out;
+}
+
 std::string aligned(const Table& t) {
   std::vector<std::size_t> w(t.header.size());
   for (std::size_t c = 0; c < w.size(); ++c) {
@@ -253,8 +275,8 @@ std::string svg_plot(const std::vector<PlotSeries>& series, const std::string& x
       s << "<circle cx=\"" << X(p.seconds) << "\" cy=\"" << Y(p.error) << "\" r=\"3\" fill=\"" << c
         << "\" fill-opacity=\"0.55\"/>\n";
       if (!p.label.empty())
-        s << "<text x=\"" << X(p.seconds) + 4 << "\" y=\"" << Y(p.error) - 4 << "\" font-size=\"8\" fill=\"" << c
-          << "\">" << html_escape(p.label) << "</text>\n";
+        s << "<text x=\"" << X(p.seconds) + 4 << "\" y=\"" << Y(p.error) - 4 << "\" font-size=\"10\" fill=\"" << c
+          << "\" paint-order=\"stroke\" stroke=\"white\" stroke-width=\"3\">" << html_escape(p.label) << "</text>\n";
     }
     s << "<circle cx=\"" << W - right + 15 << "\" cy=\"" << top + 10 + 18 * k << "\" r=\"4\" fill=\"" << c
       << "\"/><text x=\"" << W - right + 24 << "\" y=\"" << top + 14 + 18 * k << "\">" << html_escape(ser.name)
@@ -295,8 +317,8 @@ Table ladder_table(const BenchRun& run, bench::Family f) {
   for (std::size_t k = 0; k < run.rungs.size(); ++k) {
     const bench::Rung& rung = run.rungs[k];
     const std::string bits = rung.number.kind == exact::Rung::Kind::kInterval ? "53 (interval)"
-                             : rung.precision_bits > 0                          ? std::to_string(rung.precision_bits)
-                                                                                : "exact";
+                             : rung.precision_bits > 0                        ? std::to_string(rung.precision_bits)
+                                                                              : "exact";
     const LadderCell c = ladder_cell(run, f, k);
     t.rows.push_back({rung.name, bits, std::to_string(c.n), ms_text(c.median_seconds), std::to_string(c.wrong),
                       std::to_string(c.undecided), err_text(c.worst)});
@@ -417,18 +439,25 @@ std::string bench_text(const BenchRun& run) {
 }
 
 std::string bench_markdown(const BenchRun& run) {
+  const auto tables = [&](const Table& t) {
+    std::string out;
+    for (const Table& part : split(t, run.rungs.size())) {
+      if (!out.empty()) out += "\n";
+      out += markdown(part);
+    }
+    return out;
+  };
   std::string s =
-      "```\n" + header_text(run) + "```\n\n### summary by family\n\n" + markdown(table(run, Key::kFamilyQuestion));
+      "```\n" + header_text(run) + "```\n\n### summary by family\n\n" + tables(table(run, Key::kFamilyQuestion));
   for (bench::Family f : families_in(run))
     s += std::string("\n### ") + bench::family_name(f) + "\n" + bench::family_description(f) + "\n\n" +
-         markdown(table(run, Key::kQuestionKnob, f));
+         tables(table(run, Key::kQuestionKnob, f));
   s += std::string("\n") + kLegend + "\n\n## precision ladder\n";
   for (bench::Family f : families_in(run))
     s += std::string("\n### ") + bench::family_name(f) + "\n" + ladder_summary(run, f) + "\n\n" +
          markdown(ladder_table(run, f));
   return s + "\n" + kLadderLegend + "\n";
 }
-
 
 std::string bench_svg(const BenchRun& run) {
   std::vector<PlotSeries> series;
@@ -481,14 +510,12 @@ std::vector<std::string> write_bench_report(const BenchRun& run, const std::stri
   html.figure(svg,
               "Each dot is one instance on one rung: its median time and its largest error against the exact "
               "answer (a wrong verdict counts as 1; an error of exactly 0 sits on the bottom line).");
-  const Table summary = table(run, Key::kFamilyQuestion);
   html.heading("summary by family");
-  html.table(summary.header, summary.rows);
+  for (const Table& t : split(table(run, Key::kFamilyQuestion), run.rungs.size())) html.table(t.header, t.rows);
   for (bench::Family f : families_in(run)) {
-    const Table t = table(run, Key::kQuestionKnob, f);
     html.heading(bench::family_name(f));
     html.paragraph(bench::family_description(f));
-    html.table(t.header, t.rows);
+    for (const Table& t : split(table(run, Key::kQuestionKnob, f), run.rungs.size())) html.table(t.header, t.rows);
   }
   html.paragraph(kLegend);
   html.heading("precision ladder");

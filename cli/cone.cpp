@@ -278,7 +278,7 @@ int run_cone(const ConeOptions& o) {
 void register_cone(CLI::App& app, Action& action) {
   auto opts = std::make_shared<ConeOptions>();
   CLI::App* sub = app.add_subcommand("cone", "Wrench cone of an augmented contact mode (Balkcom, Trinkle 2002)");
-  sub->add_option("FILE", opts->file, "Planar scene (SPEC section 3)")->required();
+  sub->add_option("FILE", opts->file, "Planar scene file (format: docs/formats.md, section 3)")->required();
   sub->add_option("--mode", opts->mode, "One letter per fixel from s a u l r n m (Table 2)")->required();
   sub->add_option("--route", opts->route, "paper: F = K^F P; project: facets by exact LPs in wrench space")
       ->check(CLI::IsMember({"paper", "project"}))

@@ -3,6 +3,7 @@
 // and Data Sets 1-4 and a small Table 1 of the quasistatic paper, every verdict exact and every "no"
 // checked by the independent checker. Prints a summary and writes an HTML report with inline SVG.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -10,11 +11,14 @@
 #include <random>
 #include <sstream>
 
+#include "cli/boundary_fraction.h"
 #include "cli/boundary_marks.h"
+#include "cli/boundary_text.h"
 #include "cli/command.h"
 #include "cli/cone_svg.h"
 #include "cli/html_report.h"
 #include "cli/json_out.h"
+#include "cli/line_plot.h"
 #include "cli/stability_svg.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -33,18 +37,35 @@ namespace {
 namespace fs = std::filesystem;
 using exact::Q;
 
-/// The bundled scenes: beside an installed executable (../share/contactcert/scenes), else the source tree's.
-std::string default_scenes() {
-  std::error_code ec;
-  const fs::path installed =
-      fs::read_symlink("/proc/self/exe", ec).parent_path().parent_path() / "share/contactcert/scenes";
-  return !ec && fs::is_directory(installed, ec) ? installed.string() : CONTACTCERT_SCENES_DIR;
-}
-
 struct DemoOptions {
-  std::string scenes = default_scenes();
+  std::string scenes;  ///< empty: the bundled scenes (bundled_scenes_dir)
   std::string out = "contactcert-out";
 };
+
+/// The bundled paper scenes: an installed data folder beside the executable (<prefix>/bin/contactcert ->
+/// <prefix>/share/contactcert/scenes), else the source tree's scenes/ the executable was built from.
+std::string bundled_scenes_dir() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec)
+    for (const char* rel : {"../share/contactcert/scenes", "scenes"}) {
+      const fs::path p = (exe.parent_path() / rel).lexically_normal();
+      if (fs::exists(p / "pang1994_dataset1.json", ec)) return p.string();
+    }
+  return CONTACTCERT_SCENES_DIR;
+}
+
+/// True when every named file is in the scenes folder (a section of the paper report runs only then).
+bool has(const DemoOptions& o, std::initializer_list<const char*> files) {
+  for (const char* f : files)
+    if (!fs::exists(fs::path(o.scenes) / f)) return false;
+  return true;
+}
+
+/// The scene files of the bundled paper examples (every other .json in the folder is the user's own).
+bool is_paper_scene(const std::string& name) {
+  return name.rfind("bt2002_", 0) == 0 || name.rfind("pang1994_dataset", 0) == 0;
+}
 
 std::string rows_text(const exact::Mat<Q>& M) {
   std::string s;
@@ -105,18 +126,20 @@ void stability(const DemoOptions& o, HtmlReport& rep) {
   int strong3 = 0;
   for (const auto& c : region.cells)
     strong3 += c.dimension == 3 && c.label == solvers::StabilityVerdict::kStronglyStable;
-  rep.figure(stability_sphere_svg(region),
+  exact::Vec<Q> gravity(3);
+  gravity << 0, -1, 0;
+  rep.figure(stability_sphere_svg(region, gravity),
              "Wrench directions for the disk on two fixels, mu = 1.2: " + std::to_string(region.cells.size()) +
-                 " exact cells, " + std::to_string(strong3) + " open strongly stable regions.");
+                 " exact cells, " + std::to_string(strong3) + " open strongly stable regions; g = (0, -1, 0) marked.");
   std::cout << "  region: " << region.cells.size() << " exact cells, " << strong3 << " open strongly stable regions\n";
   const auto pushes = solvers::finger_pushes<Q>(scene, region);
   std::vector<std::vector<std::string>> prow;
   for (const auto& a : pushes.arcs)
-    prow.push_back({primitive_json(a.from).dump(), primitive_json(a.to).dump(), solvers::verdict_name(a.label)});
+    prow.push_back({arc_piece_text(a.from, a.to, a.from_closed, a.to_closed), solvers::verdict_name(a.label)});
   rep.paragraph(
       "Frictionless finger pushes along the inward normal, by arc of the boundary (directions from the "
       "centre, counter-clockwise):");
-  rep.table({"from direction", "to direction", "verdict"}, prow);
+  rep.table({"piece of the boundary", "verdict"}, prow);
   rep.figure(
       wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), "finger pushes",
                       boundary_marks<solvers::StabilityVerdict>(
@@ -129,7 +152,9 @@ void stability(const DemoOptions& o, HtmlReport& rep) {
 void insertion(const DemoOptions& o, HtmlReport& rep) {
   rep.heading("Sensorless insertion (sections 8-9, Figures 6, 10, 11)");
   std::vector<std::vector<std::string>> rows;
+  std::vector<LineSeries> sweep;
   for (const char* file : {"bt2002_section7_disk.json", "bt2002_fig10_pentagon_insert.json"}) {
+    sweep.push_back({file, {}});
     const auto base = geometry::load_planar_scene((fs::path(o.scenes) / file).string());
     for (const char* mu : {"0.01", "0.2", "0.4", "0.6"}) {
       auto scene = base;
@@ -144,10 +169,11 @@ void insertion(const DemoOptions& o, HtmlReport& rep) {
       std::string where;
       for (const auto& e : p.edges)
         if (e.label)
-          where += "edge " + std::to_string(e.edge) + " s in (" + exact::to_string(e.from) + ", " +
-                   exact::to_string(e.to) + ") ";
+          where +=
+              (where.empty() ? "" : "; ") + edge_piece_text(scene, e.edge, e.from, e.to, e.from_closed, e.to_closed);
       for (const auto& a : p.arcs)
-        if (a.label) where += "arc " + primitive_json(a.from).dump() + " to " + primitive_json(a.to).dump() + " ";
+        if (a.label) where += (where.empty() ? "" : "; ") + arc_piece_text(a.from, a.to, a.from_closed, a.to_closed);
+      sweep.back().points.emplace_back(exact::parse_rational(mu).get_d(), boundary_fraction(scene, p));
       std::size_t needed = 0;
       for (bool r : ins.redundant) needed += !r;
       rows.push_back({file, mu, std::to_string(ins.sets.size()) + " (" + std::to_string(needed) + " non-redundant)",
@@ -157,6 +183,10 @@ void insertion(const DemoOptions& o, HtmlReport& rep) {
   rep.paragraph(
       "Finger pushes that seat the workpiece from any contact state, by friction coefficient: the set "
       "shrinks as friction grows (Figure 11).");
+  rep.figure(line_plot_svg(sweep, "Figure 11: pushes that seat the part, by friction", "friction coefficient mu",
+                           "fraction of the boundary"),
+             "The fraction of the boundary (by length; by angle on the disk) where a frictionless push seats the "
+             "workpiece from any contact state, against mu.");
   rep.table({"scene", "mu", "wrench cones in the union", "pushes in G_goal"}, rows);
   std::cout << "  insertion: " << rows.size() << " friction cases\n";
 }
@@ -187,8 +217,9 @@ void quasistatic(const DemoOptions& o, HtmlReport& rep) {
       evidence = r.reason;
     }
     rows.push_back({"Data Set " + std::to_string(ds), solvers::ucp::status_name(r.status),
-                    r.best_xTy ? exact::to_string(*r.best_xTy) : "-", std::to_string(r.pairs), std::to_string(r.lps),
-                    evidence, std::to_string(secs * 1000).substr(0, 6) + " ms"});
+                    r.status == solvers::ucp::UcpStatus::kSolvable && r.best_xTy ? exact::to_string(*r.best_xTy) : "-",
+                    std::to_string(r.pairs), std::to_string(r.lps), evidence,
+                    std::to_string(secs * 1000).substr(0, 6) + " ms"});
     std::cout << "  Data Set " << ds << ": " << solvers::ucp::status_name(r.status) << " (" << evidence << ")\n";
   }
   rep.table({"problem", "verdict", "x^T y", "pairs", "LPs", "evidence", "time"}, rows);
@@ -222,7 +253,60 @@ void quasistatic(const DemoOptions& o, HtmlReport& rep) {
   std::cout << "  Table 1: " << t1.size() << " random problems\n";
 }
 
-int run_demo(const DemoOptions& o) {
+/// Every scene of the folder that is not one of the papers' examples: a planar scene gets its verdict under
+/// gravity g = (0, -1, 0) with a checked certificate, its region picture and its finger pushes; a quasistatic or
+/// UCP problem its status with the evidence. A file that cannot be read is listed with the reason.
+void own_scenes(const DemoOptions& o, HtmlReport& rep) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(o.scenes))
+    if (e.path().extension() == ".json" && !is_paper_scene(e.path().filename().string())) files.push_back(e.path());
+  if (files.empty()) return;
+  std::sort(files.begin(), files.end());
+  rep.heading("Your scenes");
+  rep.paragraph(
+      "Planar scenes under gravity g = (0, -1, 0) (torque about the centre of mass); quasistatic "
+      "problems solved exactly.");
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& path : files) {
+    const std::string name = path.filename().string();
+    try {
+      const std::string text = exact::JsonInput::read_text(path.string());
+      const auto in = exact::JsonInput::parse(text, path.string());
+      if (in.at("kind").string() == "planar") {
+        const auto scene = geometry::read_planar_scene(in);
+        exact::Vec<Q> g(3);
+        g << 0, -1, 0;
+        const auto r = solvers::strong_stability<Q>(scene, g);
+        const auto check = solvers::check_stability_certificate(
+            exact::JsonInput::parse(solvers::stability_certificate(text, g, r), "certificate"));
+        const auto region = solvers::stable_region<Q>(scene);
+        rep.figure(stability_sphere_svg(region, g), name + ": wrench directions, g = (0, -1, 0) marked");
+        const auto pushes = solvers::finger_pushes<Q>(scene, region);
+        rep.figure(wrench_cone_svg(
+                       scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), name,
+                       boundary_marks<solvers::StabilityVerdict>(
+                           scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); })),
+                   name + ": frictionless finger pushes (green strongly stable, yellow weakly, red unstable)");
+        rows.push_back({name, "planar", solvers::verdict_name(r.verdict),
+                        std::string("certificate ") + (check.valid ? "valid" : "INVALID: " + check.reason)});
+      } else {
+        const auto problem = solvers::ucp::read_ucp_problem(in);
+        const auto r = solvers::ucp::solve_ucp(problem, solvers::ucp::UcpOptions{});
+        rows.push_back({name, in.at("kind").string(), solvers::ucp::status_name(r.status), r.reason});
+      }
+    } catch (const exact::InputError& e) {
+      rows.push_back({name, "-", "not read", e.what()});
+    } catch (const exact::BudgetExceeded& e) {
+      rows.push_back({name, "-", "budget exhausted", e.what()});
+    }
+    std::cout << "  your scene " << name << ": " << rows.back()[2] << "\n";
+  }
+  rep.table({"file", "kind", "verdict", "evidence"}, rows);
+}
+
+int run_demo(const DemoOptions& options) {
+  DemoOptions o = options;
+  if (o.scenes.empty()) o.scenes = bundled_scenes_dir();
   if (!fs::is_directory(o.scenes)) throw exact::InputError(o.scenes, "", "the scenes folder does not exist");
   create_output_dir(o.out);
   const auto t0 = std::chrono::steady_clock::now();
@@ -231,10 +315,14 @@ int run_demo(const DemoOptions& o) {
       "Every number below is exact (rational arithmetic); every 'no' carries a certificate that the "
       "independent checker verified in this run.");
   std::cout << "contactcert demo on " << o.scenes << "\n";
-  wrench_cones(o, rep);
-  stability(o, rep);
-  insertion(o, rep);
-  quasistatic(o, rep);
+  if (has(o, {"bt2002_section4_disk.json", "bt2002_fig4a_lla.json", "bt2002_fig4b_nnn.json",
+              "bt2002_fig4c_peg_lra.json", "bt2002_fig4d_peg_nn.json"}))
+    wrench_cones(o, rep);
+  if (has(o, {"bt2002_section7_disk.json"})) stability(o, rep);
+  if (has(o, {"bt2002_section7_disk.json", "bt2002_fig10_pentagon_insert.json"})) insertion(o, rep);
+  if (has(o, {"pang1994_dataset1.json", "pang1994_dataset2.json", "pang1994_dataset3.json", "pang1994_dataset4.json"}))
+    quasistatic(o, rep);
+  own_scenes(o, rep);
   const std::string path = rep.write(o.out);
   std::cout << "report: " << path << " (" << std::to_string(seconds_since(t0)).substr(0, 5) << " s)\n";
   return 0;
@@ -245,7 +333,9 @@ int run_demo(const DemoOptions& o) {
 void register_demo(CLI::App& app, Action& action) {
   auto opts = std::make_shared<DemoOptions>();
   CLI::App* sub = app.add_subcommand("demo", "Reproduce both papers' worked examples on the bundled scenes");
-  sub->add_option("--scenes", opts->scenes, "Folder of scene files")->capture_default_str();
+  sub->add_option("--scenes", opts->scenes,
+                  "Folder of scene files: the papers' examples it holds, and every other scene in it (default: the "
+                  "bundled scenes)");
   sub->add_option("--out", opts->out, "Folder for the report and pictures")->capture_default_str();
   sub->callback([opts, &action] { action = [opts] { return run_demo(*opts); }; });
 }

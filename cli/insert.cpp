@@ -1,12 +1,14 @@
 // `contactcert insert FILE`: the wrenches G_goal that seat the workpiece from any contact state
 // (wrench cone paper, sections 8-9, eq. 21 and Table 5) and the frictionless finger pushes inside it.
 #include <CLI/CLI.hpp>
-
 #include <cmath>
 #include <iostream>
 
+#include "cli/boundary_fraction.h"
 #include "cli/boundary_marks.h"
+#include "cli/boundary_text.h"
 #include "cli/command.h"
+#include "cli/contact_notes.h"
 #include "cli/json_out.h"
 #include "cli/progress_line.h"
 #include "cli/results.h"
@@ -27,44 +29,21 @@ struct InsertOptions {
   std::string svg;
 };
 
-double angle(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()); }
-
-/// The fraction of the boundary (by length, in doubles: a summary, not a verdict) whose pushes seat the part.
-double goal_fraction(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<Q, bool>& p) {
-  double in = 0, total = 0;
-  if (const auto* poly = std::get_if<geometry::PolygonShape>(&scene.workpiece.shape)) {
-    const auto& V = poly->vertices;
-    std::vector<double> len(V.size());
-    for (std::size_t e = 0; e < V.size(); ++e) {
-      const auto& a = V[e];
-      const auto& b = V[(e + 1) % V.size()];
-      len[e] = std::hypot(Q(b.x - a.x).get_d(), Q(b.y - a.y).get_d());
-      total += len[e];
-    }
-    for (const auto& piece : p.edges)
-      if (piece.label) in += Q(piece.to - piece.from).get_d() * len[piece.edge];
-  } else {
-    total = 2 * M_PI;
-    for (const auto& piece : p.arcs) {
-      if (!piece.label) continue;
-      double d = angle(piece.to) - angle(piece.from);
-      if (d < 0 || (d == 0 && !(piece.from_closed && piece.to_closed))) d += 2 * M_PI;
-      in += d;
-    }
-  }
-  return total > 0 ? in / total : 0;
-}
-
 json pieces_json(const solvers::BoundaryPieces<Q, bool>& p) {
   json edges = json::array(), arcs = json::array();
   for (const auto& e : p.edges)
     if (e.label)
-      edges.push_back({{"edge", e.edge}, {"from", exact_json(e.from)}, {"to", exact_json(e.to)},
-                       {"from_closed", e.from_closed}, {"to_closed", e.to_closed}});
+      edges.push_back({{"edge", e.edge},
+                       {"from", exact_json(e.from)},
+                       {"to", exact_json(e.to)},
+                       {"from_closed", e.from_closed},
+                       {"to_closed", e.to_closed}});
   for (const auto& a : p.arcs)
     if (a.label)
-      arcs.push_back({{"from_direction", primitive_json(a.from)}, {"to_direction", primitive_json(a.to)},
-                      {"from_closed", a.from_closed}, {"to_closed", a.to_closed}});
+      arcs.push_back({{"from_direction", primitive_json(a.from)},
+                      {"to_direction", primitive_json(a.to)},
+                      {"from_closed", a.from_closed},
+                      {"to_closed", a.to_closed}});
   return {{"edges", edges}, {"arcs", arcs}};
 }
 
@@ -84,7 +63,7 @@ json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion
   json j;
   j["sets"] = sets;
   j["pushes"] = pieces_json(pushes);
-  j["goal_boundary_fraction_approx"] = goal_fraction(scene, pushes);
+  j["goal_boundary_fraction_approx"] = boundary_fraction(scene, pushes);
   return j;
 }
 
@@ -105,7 +84,7 @@ json sweep_entry_json(const geometry::PlanarScene& scene, const Q& mu) {
   const auto ins = solvers::insertion<Q>(s);
   const auto pushes = solvers::insertion_pushes<Q>(s, ins);
   return {{"mu", exact_json(mu)},
-          {"goal_boundary_fraction_approx", goal_fraction(s, pushes)},
+          {"goal_boundary_fraction_approx", boundary_fraction(s, pushes)},
           {"pushes", pieces_json(pushes)}};
 }
 
@@ -154,21 +133,16 @@ int run_insert(const InsertOptions& o) {
   std::size_t needed = 0;
   for (bool r : ins.redundant) needed += !r;
   std::cout << "G_goal of " << o.file << ": complement of the union of " << ins.sets.size() << " wrench cones ("
-            << needed << " non-redundant)\n";
+            << needed << " non-redundant)\n"
+            << tiny_gap_notes(scene, "  ");
   for (std::size_t i = 0; i < ins.sets.size(); ++i)
     std::cout << "  state " << ins.sets[i].state_text() << "  mode " << ins.sets[i].mode.text()
-              << (solvers::is_empty_cone<Q>(ins.cones[i]) ? "  empty" : "")
-              << (ins.redundant[i] ? "  (redundant)" : "") << "\n";
+              << (solvers::is_empty_cone<Q>(ins.cones[i]) ? "  empty" : "") << (ins.redundant[i] ? "  (redundant)" : "")
+              << "\n";
   std::cout << "finger pushes that seat the workpiece from any state (fraction of the boundary ~"
-            << goal_fraction(scene, pushes) << "):\n";
-  for (const auto& e : pushes.edges)
-    if (e.label)
-      std::cout << "  edge " << e.edge << ", s in " << (e.from_closed ? "[" : "(") << exact::to_string(e.from) << ", "
-                << exact::to_string(e.to) << (e.to_closed ? "]" : ")") << "\n";
-  for (const auto& a : pushes.arcs)
-    if (a.label)
-      std::cout << "  arc from direction " << primitive_json(a.from).dump() << " to " << primitive_json(a.to).dump()
-                << " counter-clockwise\n";
+            << boundary_fraction(scene, pushes) << "):\n";
+  std::cout << pieces_text(
+      scene, pushes, "  ", [](bool in) { return in; }, [](bool) { return std::string(); });
   if (!sweep_rows.empty()) {
     std::cout << "friction sweep (Figure 11):\n      mu   boundary fraction in G_goal\n";
     for (const auto& [mu, frac] : sweep_rows) std::printf("  %6s   %.4f\n", mu.c_str(), frac);

@@ -24,9 +24,12 @@ namespace contactcert::cli {
 
 // stability.cpp: `stability --wrench` (T = Q on the exact and verified paths, double with --arith float),
 // `--region` and `--finger`, and the --finger picture.
+// The witness's contact forces are also given in world coordinates (solvers/stability/world_forces.h), which
+// needs the scene.
 template <class T>
-json stability_json(const exact::Vec<exact::Q>& g, const solvers::StabilityResult<T>& r, const std::string& arith,
-                    const std::string& certificate, const std::optional<solvers::Margin<exact::Q>>& margin);
+json stability_json(const geometry::PlanarScene& scene, const exact::Vec<exact::Q>& g,
+                    const solvers::StabilityResult<T>& r, const std::string& arith, const std::string& certificate,
+                    const std::optional<solvers::Margin<exact::Q>>& margin);
 json region_json(const solvers::StableRegion<exact::Q>& region);
 json finger_json(const solvers::FingerPushes<exact::Q>& pushes);
 std::string finger_svg(const geometry::PlanarScene& scene, const solvers::FingerPushes<exact::Q>& pushes);

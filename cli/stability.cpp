@@ -1,14 +1,16 @@
 // `contactcert stability FILE --wrench fx,fy,tz`: strongly stable, only weakly stable, or unstable
 // (wrench cone paper, section 7; SPEC sections 6-7), with a witness or a certificate.
 #include <CLI/CLI.hpp>
-
 #include <cmath>
 #include <iostream>
 #include <optional>
 
 #include "cli/boundary_marks.h"
+#include "cli/boundary_text.h"
 #include "cli/command.h"
+#include "cli/contact_notes.h"
 #include "cli/json_out.h"
+#include "cli/region_data.h"
 #include "cli/results.h"
 #include "cli/stability_svg.h"
 #include "exact/json_input.h"
@@ -18,6 +20,7 @@
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
+#include "solvers/stability/world_forces.h"
 
 namespace contactcert::cli {
 namespace {
@@ -34,6 +37,7 @@ struct StabilityOptions {
   bool finger = false;
   bool margin = false;
   std::string svg;
+  std::string wrenches;
 };
 
 // The mode tree's budget: --time-limit (the node budget is the default).
@@ -48,6 +52,58 @@ solvers::StabilityOptions budget(const StabilityOptions& o, exact::Arith arith) 
   s.arith = arith;
   s.deadline = exact::Deadline::after(o.common.time_limit);
   return s;
+}
+
+template <class T>
+json number_json(const T& x) {
+  if constexpr (std::is_same_v<T, Q>)
+    return exact_json(x);
+  else
+    return x;
+}
+
+template <class T>
+json forces_json(const exact::Vec<T>& c) {
+  if constexpr (std::is_same_v<T, Q>)
+    return exact_json(c);
+  else
+    return approx_json(c);
+}
+
+/// Each touching fixel's force in world coordinates, with its components against the frame it states.
+template <class T>
+json contacts_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                   const exact::Vec<T>& c) {
+  json out = json::array();
+  for (const auto& w : solvers::world_forces<T>(scene, touching, c))
+    out.push_back({{"fixel", w.fixel},
+                   {"point", forces_json(w.point)},
+                   {"normal", forces_json(w.normal)},
+                   {"tangent", forces_json(w.tangent)},
+                   {"c_n", number_json(w.c_n)},
+                   {"c_t", number_json(w.c_t)},
+                   {"force", forces_json(w.force)},
+                   {"torque", number_json(w.torque)}});
+  return out;
+}
+
+template <class T>
+std::string number_text(const T& x) {
+  if constexpr (std::is_same_v<T, Q>)
+    return exact::to_string(x);
+  else
+    return std::to_string(x);
+}
+
+/// One line per touching fixel: f = c_n n + c_t t in world coordinates, and the frame (n, t).
+template <class T>
+void print_contacts(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                    const exact::Vec<T>& c) {
+  for (const auto& w : solvers::world_forces<T>(scene, touching, c))
+    std::cout << "    fixel " << w.fixel << " at " << tuple_text(w.point) << ": force " << tuple_text(w.force)
+              << ", torque " << number_text(w.torque) << "  (c_n = " << number_text(w.c_n)
+              << " along n = " << tuple_text(w.normal) << ", c_t = " << number_text(w.c_t)
+              << " along t = " << tuple_text(w.tangent) << ")\n";
 }
 
 template <class T>
@@ -67,17 +123,12 @@ json witness_json(const solvers::MotionWitness<T>& w) {
 
 double degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
 
-template <class T>
-json forces_json(const exact::Vec<T>& c) {
-  if constexpr (std::is_same_v<T, Q>) return exact_json(c);
-  else return approx_json(c);
-}
-
 }  // namespace
 
 template <class T>
-json stability_json(const exact::Vec<Q>& g, const StabilityResult<T>& r, const std::string& arith,
-                    const std::string& certificate, const std::optional<solvers::Margin<Q>>& margin) {
+json stability_json(const geometry::PlanarScene& scene, const exact::Vec<Q>& g, const StabilityResult<T>& r,
+                    const std::string& arith, const std::string& certificate,
+                    const std::optional<solvers::Margin<Q>>& margin) {
   json j;
   j["verdict"] = solvers::verdict_name(r.verdict);
   j["wrench"] = exact_json(g);
@@ -86,8 +137,14 @@ json stability_json(const exact::Vec<Q>& g, const StabilityResult<T>& r, const s
   for (auto i : r.touching) touching.push_back(i);
   j["touching_fixels"] = touching;
   json w;
-  if (r.has_resting) w["resting_forces"] = forces_json(r.resting_forces);
-  if (r.has_moving) w["moving"] = witness_json(r.moving);
+  if (r.has_resting) {
+    w["resting_forces"] = forces_json(r.resting_forces);
+    w["resting_contacts"] = contacts_json(scene, r.touching, r.resting_forces);
+  }
+  if (r.has_moving) {
+    w["moving"] = witness_json(r.moving);
+    w["moving"]["contacts"] = contacts_json(scene, r.touching, r.moving.forces);
+  }
   j["witness"] = w;
   j["lps"] = r.lps;
   j["modes_checked"] = r.modes_checked;
@@ -100,20 +157,17 @@ json stability_json(const exact::Vec<Q>& g, const StabilityResult<T>& r, const s
                    {"nearest", margin->nearest}};
   return j;
 }
-template json stability_json(const exact::Vec<Q>&, const StabilityResult<Q>&, const std::string&, const std::string&,
-                             const std::optional<solvers::Margin<Q>>&);
-template json stability_json(const exact::Vec<Q>&, const StabilityResult<double>&, const std::string&,
-                             const std::string&, const std::optional<solvers::Margin<Q>>&);
+template json stability_json(const geometry::PlanarScene&, const exact::Vec<Q>&, const StabilityResult<Q>&,
+                             const std::string&, const std::string&, const std::optional<solvers::Margin<Q>>&);
+template json stability_json(const geometry::PlanarScene&, const exact::Vec<Q>&, const StabilityResult<double>&,
+                             const std::string&, const std::string&, const std::optional<solvers::Margin<Q>>&);
 
 json region_json(const solvers::StableRegion<Q>& region) {
-  json cells = json::array();
-  for (const auto& c : region.cells)
-    cells.push_back(
-        {{"dimension", c.dimension}, {"point", primitive_json(c.point)}, {"label", solvers::verdict_name(c.label)}});
   json modes = json::array();
   for (const auto& m : region.modes) modes.push_back(m.text());
   json j;
-  j["region"] = {{"planes", region.planes.rows()}, {"nonempty_moving_modes", modes}, {"cells", cells}};
+  j["region"] = region_data_json(region);
+  j["region"]["nonempty_moving_modes"] = modes;
   return j;
 }
 
@@ -149,25 +203,32 @@ std::string finger_svg(const geometry::PlanarScene& scene, const solvers::Finger
 namespace {
 
 template <class T>
-int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityResult<T>& r,
-           const std::optional<solvers::Margin<Q>>& margin = std::nullopt) {
+int report(const StabilityOptions& o, const geometry::PlanarScene& scene, const exact::Vec<Q>& g,
+           const StabilityResult<T>& r, const std::optional<solvers::Margin<Q>>& margin = std::nullopt) {
   if (o.common.json) {
-    std::cout << stability_json(g, r, o.common.arith, o.certificate, margin).dump() << "\n";
+    std::cout << stability_json(scene, g, r, o.common.arith, o.certificate, margin).dump() << "\n";
     return 0;
   }
   const std::size_t k = r.touching.size();
   std::cout << "verdict: " << solvers::verdict_name(r.verdict) << "\n"
             << "  wrench g = " << tuple_text(g) << " on " << o.file << " (" << k << " touching fixels, "
-            << o.common.arith << " arithmetic)\n";
-  if (r.has_resting) std::cout << "  at rest with contact forces (c_n..., c_t...) = " << tuple_text(r.resting_forces) << "\n";
-  else std::cout << "  no contact forces in the friction cones balance g (Motzkin certificate found)\n";
-  if (r.has_moving)
-    std::cout << "  moves in mode '" << r.moving.mode.text() << "' with acceleration " << tuple_text(r.moving.acceleration)
-              << ", forces " << tuple_text(r.moving.forces) << "\n";
-  else if (r.has_resting)
+            << o.common.arith << " arithmetic)\n"
+            << tiny_gap_notes(scene, "  ");
+  if (r.has_resting) {
+    std::cout << "  at rest with contact forces (world coordinates; they balance g):\n";
+    print_contacts(scene, r.touching, r.resting_forces);
+  } else {
+    std::cout << "  no contact forces in the friction cones balance g (Motzkin certificate found)\n";
+  }
+  if (r.has_moving) {
+    std::cout << "  moves in mode '" << r.moving.mode.text() << "' with acceleration "
+              << tuple_text(r.moving.acceleration) << " (eq. 4: M vdot = g + the contact wrenches), contact forces:\n";
+    print_contacts(scene, r.touching, r.moving.forces);
+  } else if (r.has_resting) {
     std::cout << "  no moving mode admits g: " << r.modes_kinematically_feasible
               << " kinematically feasible moving modes, each with a proof for g; every other mode extends one of "
               << r.dead_prefixes << " infeasible prefixes (mode tree: " << r.tree_nodes << " prefixes)\n";
+  }
   if (margin && !margin->nearest.empty())
     std::cout << "  margin: squared radius " << exact::to_string(margin->squared_radius) << " (radius ~"
               << std::sqrt(margin->squared_radius.get_d()) << "), nearest: "
@@ -179,19 +240,22 @@ int report(const StabilityOptions& o, const exact::Vec<Q>& g, const StabilityRes
   return 0;
 }
 
-int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene) {
+int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene, const std::optional<exact::Vec<Q>>& g) {
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "--region is computed exactly (use exact or verified)");
   const auto region = solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o));
-  if (!o.svg.empty()) write_text_file(o.svg, stability_sphere_svg(region));
+  if (!o.svg.empty()) write_text_file(o.svg, stability_sphere_svg(region, g));
   int count[3][4] = {};
   for (const auto& c : region.cells) ++count[static_cast<int>(c.label)][c.dimension];
   if (o.common.json) {
-    std::cout << region_json(region).dump() << "\n";
+    json j = region_json(region);
+    if (g) j["region"]["wrench"] = {{"g", exact_json(*g)}, {"label", solvers::verdict_name(region.label(*g))}};
+    std::cout << j.dump() << "\n";
     return 0;
   }
   std::cout << "stable region of " << o.file << ": " << region.cells.size() << " cells cut by " << region.planes.rows()
-            << " planes (" << region.modes.size() << " moving modes with non-empty wrench cones)\n";
+            << " planes (" << region.modes.size() << " moving modes with non-empty wrench cones)\n"
+            << tiny_gap_notes(scene, "  ");
   static const char* kind[4] = {"origin", "rays", "2-d sectors", "open regions"};
   for (int l = 0; l < 3; ++l) {
     std::cout << "  " << solvers::verdict_name(static_cast<solvers::StabilityVerdict>(l)) << ":";
@@ -201,16 +265,17 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene) {
     std::cout << (cells == 0 ? " none\n" : "\n");
   }
   int shown = 0;
-  for (const auto& c : region.cells)
-    if (c.dimension == 3 && c.label == solvers::StabilityVerdict::kStronglyStable && shown++ < 5)
-      std::cout << "  strongly stable open region through g = " << tuple_text(exact::primitive(c.point)) << "\n";
+  const auto reps = cell_representatives(region);
+  for (std::size_t i = 0; i < region.cells.size(); ++i)
+    if (region.cells[i].dimension == 3 && region.cells[i].label == solvers::StabilityVerdict::kStronglyStable &&
+        shown++ < 5)
+      std::cout << "  strongly stable open region through g = " << tuple_text(reps[i]) << "\n";
   if (shown > 5) std::cout << "  ... (" << shown - 5 << " more; --json lists every cell)\n";
+  if (g)
+    std::cout << "  the wrench g = " << tuple_text(*g) << " is " << solvers::verdict_name(region.label(*g))
+              << (o.svg.empty() ? "" : " (marked in the picture)") << "\n";
   if (!o.svg.empty()) std::cout << "  picture: " << o.svg << "\n";
   return 0;
-}
-
-std::string interval_text(bool from_closed, const std::string& from, const std::string& to, bool to_closed) {
-  return (from_closed ? "[" : "(") + from + ", " + to + (to_closed ? "]" : ")");
 }
 
 int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
@@ -223,19 +288,44 @@ int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
     std::cout << finger_json(pushes).dump() << "\n";
     return 0;
   }
-  std::cout << "frictionless finger pushes along the inward normal of " << o.file << ":\n";
-  for (const auto& p : pushes.edges)
-    std::cout << "  edge " << p.edge << ", s in "
-              << interval_text(p.from_closed, exact::to_string(p.from), exact::to_string(p.to), p.to_closed) << ": "
-              << solvers::verdict_name(p.label) << "\n";
-  for (const auto& p : pushes.arcs)
-    if (p.from == p.to && !p.from_closed && !p.to_closed)
-      std::cout << "  the whole boundary: " << solvers::verdict_name(p.label) << "\n";
+  std::cout << "frictionless finger pushes along the inward normal of " << o.file << ":\n"
+            << tiny_gap_notes(scene, "  ")
+            << pieces_text(
+                   scene, pushes, "  ", [](solvers::StabilityVerdict) { return true; },
+                   [](solvers::StabilityVerdict v) { return std::string(": ") + solvers::verdict_name(v); });
+  return 0;
+}
+
+/// One verdict per wrench of a file, from one StabilityOracle prepared for the scene.
+template <class T>
+int run_wrenches(const StabilityOptions& o, const geometry::PlanarScene& scene, const exact::Arith arith) {
+  const std::vector<exact::Vec<Q>> gs = read_wrenches(o.wrenches);
+  const solvers::StabilityOracle<T> oracle(scene, budget(o, arith));
+  json rows = json::array();
+  long count[3] = {}, lps = oracle.preparation_lps();
+  for (const auto& g : gs) {
+    exact::Vec<T> gt(3);
+    for (int k = 0; k < 3; ++k) gt(k) = solvers::from_exact<T>(g(k));
+    const auto r = oracle.verdict(gt);
+    ++count[static_cast<int>(r.verdict)];
+    lps += r.lps;
+    if (o.common.json)
+      rows.push_back({{"wrench", exact_json(g)}, {"verdict", solvers::verdict_name(r.verdict)}});
     else
-      std::cout << "  arc from direction " << primitive_json(p.from).dump() << " to " << primitive_json(p.to).dump()
-              << " counter-clockwise, angles "
-              << interval_text(p.from_closed, std::to_string(degrees(p.from)), std::to_string(degrees(p.to)), p.to_closed)
-              << " deg (approx): " << solvers::verdict_name(p.label) << "\n";
+      std::cout << "  g = " << tuple_text(g) << ": " << solvers::verdict_name(r.verdict) << "\n";
+  }
+  if (o.common.json) {
+    std::cout << json{{"wrenches", rows},
+                      {"counts", {{"strongly_stable", count[0]}, {"weakly_stable", count[1]}, {"unstable", count[2]}}},
+                      {"arith", o.common.arith},
+                      {"lps", lps}}
+                     .dump()
+              << "\n";
+  } else {
+    std::cout << gs.size() << " wrenches on " << o.file << ": " << count[0] << " strongly stable, " << count[1]
+              << " weakly stable, " << count[2] << " unstable (" << lps << " LPs, " << o.common.arith
+              << " arithmetic)\n";
+  }
   return 0;
 }
 
@@ -246,23 +336,30 @@ int run_stability(const StabilityOptions& options) {
   if (o.common.arith == "adaptive") o.common.arith = "verified";
   const std::string text = exact::JsonInput::read_text(o.file);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
-  if (int(o.region) + int(o.finger) + int(!o.wrench.empty()) != 1)
-    throw exact::InputError("command line", "--wrench", "give exactly one of --wrench fx,fy,tz, --region or --finger");
-  if (o.region) return run_region(o, scene);
+  if (int(o.region) + int(o.finger) + int(!o.wrench.empty() && !o.region) + int(!o.wrenches.empty()) != 1)
+    throw exact::InputError("command line", "--wrench",
+                            "give exactly one of --wrench fx,fy,tz, --wrenches FILE, --region or --finger");
+  if (!o.wrenches.empty())
+    return exact::parse_arith(o.common.arith) == exact::Arith::kFloat
+               ? run_wrenches<double>(o, scene, exact::Arith::kFloat)
+               : run_wrenches<Q>(o, scene, exact::parse_arith(o.common.arith));
+  if (o.region)
+    return run_region(o, scene,
+                      o.wrench.empty() ? std::nullopt : std::optional(parse_number_list(o.wrench, "--wrench", 3)));
   if (o.finger) return run_finger(o, scene);
   const exact::Vec<Q> g = parse_number_list(o.wrench, "--wrench", 3);
   const exact::Arith arith = exact::parse_arith(o.common.arith);
   if (arith == exact::Arith::kFloat) {
     if (!o.certificate.empty())
       throw exact::InputError("command line", "--certificate", "certificates need --arith exact or verified");
-    return report(o, g, solvers::strong_stability<double>(scene, exact::to_double(g), budget(o, arith)));
+    return report(o, scene, g, solvers::strong_stability<double>(scene, exact::to_double(g), budget(o, arith)));
   }
   const auto r = solvers::strong_stability<Q>(scene, g, budget(o, arith));
   if (!o.certificate.empty()) write_text_file(o.certificate, solvers::stability_certificate(text, g, r));
   std::optional<solvers::Margin<Q>> margin;
   if (o.margin && r.verdict == solvers::StabilityVerdict::kStronglyStable)
     margin = solvers::stability_margin<Q>(solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o)), g);
-  return report(o, g, r, margin);
+  return report(o, scene, g, r, margin);
 }
 
 }  // namespace
@@ -272,9 +369,11 @@ void register_stability(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand(
       "stability", "Is the workpiece strongly stable, only weakly stable, or unstable under a wrench?");
   add_common_options(*sub, o->common);
-  sub->add_option("file", o->file, "Planar scene file (SPEC section 3)")->required();
+  sub->add_option("file", o->file, "Planar scene file (format: docs/formats.md, section 3)")->required();
   CLI::Option* wrench = sub->add_option("--wrench", o->wrench,
                                         "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");
+  sub->add_option("--wrenches", o->wrenches,
+                  "Many wrenches, one verdict each: a JSON array of [fx, fy, tz] or one fx,fy,tz per line");
   CLI::Option* region =
       sub->add_flag("--region", o->region, "The whole strongly stable set: labelled cells of wrench space");
   sub->add_flag("--margin", o->margin, "With --wrench: squared radius of the largest strongly stable ball around it")

@@ -178,7 +178,9 @@ int run_ucp(const UcpCliOptions& o) {
               << r.lps;
     if (r.method == ucp::Method::kComplete) std::cout << ", nodes " << r.nodes;
     std::cout << ", " << r.seconds << " s\n";
-    if (r.best_xTy && !r.x) std::cout << "  best x^T y = " << exact::to_string(*r.best_xTy) << "\n";
+    // On a jammed problem no pair has x^T y = 0 and the smallest value seen says nothing more: not printed.
+    if (r.best_xTy && !r.x && r.status == ucp::UcpStatus::kUnknown)
+      std::cout << "  smallest x^T y reached (a solution needs 0): " << exact::to_string(*r.best_xTy) << "\n";
     for (const char* k : {"x", "y"})
       if (j.contains(k)) {
         std::cout << "  " << k << " =";
@@ -209,7 +211,7 @@ void register_ucp(CLI::App& app, Action& action) {
   CLI::App* sub =
       app.add_subcommand("ucp", "Solve the quasistatic contact problem (Pang, Trinkle, Lo) or prove it jammed");
   add_common_options(*sub, o->common);
-  sub->add_option("file", o->file, "Problem file (SPEC section 2, or \"kind\": \"ucp\")");
+  sub->add_option("file", o->file, "Problem file (format: docs/formats.md, section 2)");
   sub->add_option("--method", o->method, "paper | modified | complete | enumerate")
       ->check(CLI::IsMember({"paper", "modified", "complete", "enumerate"}))
       ->capture_default_str();

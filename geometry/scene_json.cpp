@@ -42,6 +42,8 @@ Shape read_shape(const JsonInput& node) {
   node.at("type").fail("\"polygon\" or \"disk\"");
 }
 
+}  // namespace
+
 Workpiece read_workpiece(const JsonInput& node) {
   node.expect_keys({"shape", "com", "mass", "inertia"});
   Workpiece w;
@@ -59,8 +61,6 @@ Workpiece read_workpiece(const JsonInput& node) {
   }
   return w;
 }
-
-}  // namespace
 
 PlanarScene read_planar_scene(const JsonInput& root) {
   if (root.at("kind").string() != "planar") root.at("kind").fail("\"planar\" (a planar fixture scene)");

@@ -15,6 +15,10 @@ namespace contactcert::geometry {
 /// distance from the centre, negative friction, a negative gap, unknown keys.
 PlanarScene read_planar_scene(const exact::JsonInput& root);
 
+/// Parses a workpiece ({"shape", "com", "mass", "inertia"}, SPEC section 3): com defaults to the centroid, I/m
+/// to uniform density. Throws exact::InputError on an invalid field.
+Workpiece read_workpiece(const exact::JsonInput& node);
+
 /// Loads and parses a planar scene file.
 PlanarScene load_planar_scene(const std::string& path);
 

@@ -66,8 +66,8 @@ WithCertificate stability(const Scene& s, const std::string& wrench, std::string
   if (a == exact::Arith::kFloat) {
     if (!certificate.empty())
       throw exact::InputError("command line", "--certificate", "certificates need --arith exact or verified");
-    return {cli::stability_json(g, solvers::strong_stability<double>(s.scene, exact::to_double(g), {a}), arith, "",
-                                std::nullopt)
+    return {cli::stability_json(s.scene, g, solvers::strong_stability<double>(s.scene, exact::to_double(g), {a}), arith,
+                                "", std::nullopt)
                 .dump(),
             ""};
   }
@@ -80,13 +80,14 @@ WithCertificate stability(const Scene& s, const std::string& wrench, std::string
   std::optional<solvers::Margin<Q>> m;
   if (margin && r.verdict == solvers::StabilityVerdict::kStronglyStable)
     m = solvers::stability_margin<Q>(solvers::stable_region<Q>(s.scene), g);
-  return {cli::stability_json(g, r, arith, certificate, m).dump(), text};
+  return {cli::stability_json(s.scene, g, r, arith, certificate, m).dump(), text};
 }
 
 /// Many verdicts on one scene: a StabilityOracle prepared once (exact and verified in Q, float in double).
 class Oracle {
  public:
-  Oracle(const Scene& s, std::string arith) : arith_(arith == "adaptive" ? "verified" : std::move(arith)) {
+  Oracle(const Scene& s, std::string arith)
+      : scene_(s.scene), arith_(arith == "adaptive" ? "verified" : std::move(arith)) {
     const exact::Arith a = exact::parse_arith(arith_);
     if (a == exact::Arith::kFloat)
       floating_.emplace(s.scene, solvers::StabilityOptions{a});
@@ -98,15 +99,16 @@ class Oracle {
     out.reserve(wrenches.size());
     for (std::size_t i = 0; i < wrenches.size(); ++i) {
       const exact::Vec<Q> g = cli::parse_number_list(wrenches[i], "wrenches[" + std::to_string(i) + "]", 3);
-      out.push_back((floating_
-                         ? cli::stability_json(g, floating_->verdict(exact::to_double(g)), arith_, "", std::nullopt)
-                         : cli::stability_json(g, exact_->verdict(g), arith_, "", std::nullopt))
-                        .dump());
+      out.push_back(
+          (floating_ ? cli::stability_json(scene_, g, floating_->verdict(exact::to_double(g)), arith_, "", std::nullopt)
+                     : cli::stability_json(scene_, g, exact_->verdict(g), arith_, "", std::nullopt))
+              .dump());
     }
     return out;
   }
 
  private:
+  geometry::PlanarScene scene_;  ///< for the witnesses' world forces
   std::string arith_;
   std::optional<solvers::StabilityOracle<Q>> exact_;
   std::optional<solvers::StabilityOracle<double>> floating_;

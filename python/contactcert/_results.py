@@ -158,7 +158,7 @@ class Region(Result):
 
     def __repr__(self):
         r = self._data["region"]
-        return (f"Region({len(r['cells'])} cells, {r['planes']} planes, "
+        return (f"Region({len(r['cells'])} cells, {len(r['planes'])} planes, "
                 f"{self.count('strongly_stable', 3)} strongly stable open regions)")
 
 

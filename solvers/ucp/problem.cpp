@@ -5,6 +5,7 @@
 
 #include "exact/linalg.h"
 #include "exact/rational_text.h"
+#include "solvers/ucp/scene_builder.h"
 
 namespace contactcert::solvers::ucp {
 
@@ -127,13 +128,16 @@ UcpProblem read_ucp_problem(const JsonInput& in) {
   if (kind == "quasistatic") {
     out.quasistatic = read_quasistatic(in);
     out.ucp = build_ucp(*out.quasistatic);
+  } else if (kind == "quasistatic_scene") {
+    out.quasistatic = build_quasistatic_scene(in);
+    out.ucp = build_ucp(*out.quasistatic);
   } else if (kind == "ucp") {
     in.expect_keys({"kind", "n", "X", "Y", "source", "note"});
     const auto n = static_cast<std::size_t>(in.at("n").integer(1, 100000));
     out.ucp.X = read_polyhedron(in.at("X"), n);
     out.ucp.Y = read_polyhedron(in.at("Y"), n);
   } else {
-    in.at("kind").fail("expected \"quasistatic\" or \"ucp\", found \"" + kind + "\"");
+    in.at("kind").fail("expected \"quasistatic\", \"quasistatic_scene\" or \"ucp\", found \"" + kind + "\"");
   }
   if (auto s = in.find("source")) out.source = s->string();
   return out;

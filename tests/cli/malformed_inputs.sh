@@ -79,12 +79,13 @@ check 2 'ucp_negative_mu.json: $.mu[0]: expected a friction coefficient >= 0' uc
 check 2 'ucp_huge_exponent_string.json: $.mu[0]: "1e99999" is not an exact number (exponent out of range' ucp "$m/ucp_huge_exponent_string.json"
 check 2 'ucp_huge_exponent_bare.json: $.mu[0]: "1e99999" is not an exact number (exponent out of range' ucp "$m/ucp_huge_exponent_bare.json"
 check 2 'ucp_huge_negative_exponent.json: $.mu[0]: "1e-99999" is not an exact number (exponent out of range' ucp "$m/ucp_huge_negative_exponent.json"
-check 2 'ucp_wrong_kind.json: $.kind: expected "quasistatic" or "ucp", found "quasi"' ucp "$m/ucp_wrong_kind.json"
+check 2 'ucp_wrong_kind.json: $.kind: expected "quasistatic", "quasistatic_scene" or "ucp", found "quasi"' ucp "$m/ucp_wrong_kind.json"
 check 2 'ucp_d_block.json: $.d[0]: expected 0' ucp "$m/ucp_d_block.json"
 check 2 'ucp_alpha_range.json: $.alpha[0]: expected an integer from 0 to 0, found 3' ucp "$m/ucp_alpha_range.json"
 check 2 'ucp_form_X_ragged.json: $.X.A[1]: expected a row of 2 numbers' ucp "$m/ucp_form_X_ragged.json"
 check 2 'ucp_form_b_length.json: $.X.b: expected an array of 1 numbers, found 2' ucp "$m/ucp_form_b_length.json"
-check 2 'bt2002_section7_disk.json: $.kind: expected "quasistatic" or "ucp", found "planar"' ucp "$s/bt2002_section7_disk.json"
+check 2 'bt2002_section7_disk.json: $.kind: expected "quasistatic", "quasistatic_scene" or "ucp", found "planar"' ucp "$s/bt2002_section7_disk.json"
+check 2 'qs_scene_bad_finger.json: $.contacts[0].finger: exactly one of "velocity"' ucp "$m/qs_scene_bad_finger.json"
 # ---- command-line options of ucp; the node budget ends in exit 3 with what it covered ----
 check 3 'unknown (node budget of 1 exhausted)' ucp "$s/pang1994_dataset4.json" --method complete --max-nodes 1
 check 3 '"status":"unknown","reason":"node budget of 1 exhausted"' ucp "$s/pang1994_dataset4.json" --method complete --max-nodes 1 --json
@@ -137,7 +138,7 @@ check 2 '--wrench: "1/0" is not an exact number (zero denominator' stability "$m
 check 2 '--wrench: "1e99999" is not an exact number (exponent out of range' stability "$m/scene_valid.json" --wrench 1e99999,0,0
 check 2 '--wrench: "" is not an exact number (empty' stability "$m/scene_valid.json" --wrench ,,
 check 2 '--wrench: "0x10" is not an exact number' stability "$m/scene_valid.json" --wrench 0x10,0,0
-check 2 '--wrench' stability "$m/scene_valid.json" --wrench 0,-1,0 --region
+check 2 '--wrench' stability "$m/scene_valid.json" --wrench 0,-1,0 --finger
 check 2 '--wrench' stability "$m/scene_valid.json" --wrench
 check 2 '--sweep-mu: "x" is not an exact number' insert "$s/bt2002_fig10_pentagon_insert.json" --sweep-mu 0.1,x
 check 2 '--sweep-mu: friction coefficients must be >= 0' insert "$s/bt2002_fig10_pentagon_insert.json" --sweep-mu -1

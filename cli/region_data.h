@@ -1,0 +1,30 @@
+// The stable region as data a program can use (`stability --region --json`): the arrangement's planes, each
+// cell's sign vector and a small-integer representative, and the strongly stable set as a union of merged cones
+// in face form; and the batch query `stability --wrenches FILE`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/json_out.h"
+#include "solvers/stability/stable_region.h"
+
+namespace contactcert::cli {
+
+/// Per cell of the region, in order: an integer vector of the cell with smallest max-norm up to 24 where one
+/// exists, else the primitive integer multiple of the cell's exact point.
+std::vector<exact::Vec<exact::Q>> cell_representatives(const solvers::StableRegion<exact::Q>& region);
+
+/// The "region" object: `planes` (primitive integer rows), `cells` (dimension, sign vector, a representative
+/// of smallest max-norm found among integer vectors with entries in [-24, 24], else the primitive exact point;
+/// label) and `strongly_stable_cones`: the strongly stable cells merged (two cells whose sign vectors differ only
+/// at plane k, + and -, merge with the cell between them when all three are strongly stable: plane k is then
+/// free), each as a face cone (strict rows for + and -, equalities for 0; not minimal). g is strongly stable iff
+/// it lies in one of them.
+json region_data_json(const solvers::StableRegion<exact::Q>& region);
+
+/// The wrenches of a file: a JSON array of [fx, fy, tz], or text with one "fx,fy,tz" per line (blank lines and
+/// lines starting with # skipped). InputError names the file and the entry.
+std::vector<exact::Vec<exact::Q>> read_wrenches(const std::string& path);
+
+}  // namespace contactcert::cli

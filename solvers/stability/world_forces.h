@@ -1,0 +1,42 @@
+// Contact forces of the rigid-body model in world coordinates (wrench cone paper, eq. 4). The model's force
+// vector c = (c_1n..c_kn, c_1t..c_kt) is measured against frames (n_i, t_i) that the exact model scales by a
+// positive factor (contact_model.h, jacobian); the world force f_i = c_n,i n_i + c_t,i t_i and its torque
+// about the centre of mass p_i x f_i do not depend on that scale, so they are what a user reads.
+#pragma once
+
+#include <vector>
+
+#include "exact/number.h"
+#include "geometry/planar_scene.h"
+
+namespace contactcert::solvers {
+
+using exact::Vec;
+
+/// One touching fixel's contact force: the frame it is measured against, its components and the world vector.
+template <class T>
+struct WorldForce {
+  Eigen::Index fixel = 0;  ///< index of the fixel in the scene (0-based, the scene's order)
+  Vec<T> point;            ///< p_i, the contact point (x, y)
+  Vec<T> normal;           ///< n_i as scaled by the model (x, y), pointing into the workpiece
+  Vec<T> tangent;          ///< t_i = (-n_iy, n_ix)
+  T c_n, c_t;              ///< the components against (n_i, t_i)
+  Vec<T> force;            ///< f_i = c_n n_i + c_t t_i, world coordinates (x, y)
+  T torque;                ///< (p_i - com) x f_i
+};
+
+/// The world forces of `c` (the layout of StabilityResult: normals then tangents of the touching fixels
+/// `touching`, in that order). Then sum_i (f_i, torque_i) = J c, so a resting solution has
+/// sum_i f_i + (g_x, g_y) = 0 and sum_i torque_i + g_tau = 0 (eq. 4 with zero acceleration).
+template <class T>
+std::vector<WorldForce<T>> world_forces(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                                        const Vec<T>& c);
+
+extern template std::vector<WorldForce<double>> world_forces<double>(const geometry::PlanarScene&,
+                                                                     const std::vector<Eigen::Index>&,
+                                                                     const Vec<double>&);
+extern template std::vector<WorldForce<exact::Q>> world_forces<exact::Q>(const geometry::PlanarScene&,
+                                                                         const std::vector<Eigen::Index>&,
+                                                                         const Vec<exact::Q>&);
+
+}  // namespace contactcert::solvers

@@ -1,0 +1,21 @@
+// A geometric front end for the quasistatic problem of Pang, Trinkle and Lo (section 2): a workpiece, contacts
+// with fixed obstacles or point fingers (each velocity- or force-controlled), gravity and mu per contact, from
+// which P = [W^T  J_abar], Jn, Jt, theta_dot, alpha and d are built exactly (docs/formats.md, section 2).
+#pragma once
+
+#include "exact/json_input.h"
+#include "solvers/ucp/problem.h"
+
+namespace contactcert::solvers::ucp {
+
+/// The problem of a `"kind": "quasistatic_scene"` file. Per contact i (point r_i on the workpiece boundary,
+/// inward normal n_i as written, t_i = (-n_iy, n_ix)): the wrench columns w_in = (n_i, r_i x n_i) and
+/// w_it = (t_i, r_i x t_i) of eq. (1), torques about the world origin. Each finger adds two joints, in contact
+/// order: along n_i and t_i ("axes": "frame", the paper's Data Sets) or along x and y ("axes": "world"), so
+/// J_n and J_t of eqs. (3)-(5) are selection rows or n_i^T, t_i^T; an obstacle adds none (zero rows). A
+/// velocity-controlled finger's joints are in alpha with theta_dot its velocity; a force-controlled finger's
+/// are in abar with tau its force (g_man = 0). g_obj = (gravity, com x gravity). Throws exact::InputError
+/// naming the field.
+QuasistaticProblem build_quasistatic_scene(const exact::JsonInput& root);
+
+}  // namespace contactcert::solvers::ucp
