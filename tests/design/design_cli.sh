@@ -37,7 +37,7 @@ for k in 1 2 3; do
   "$cc" stability "run/placement_$k.json" --wrench 0,-1,0 | grep -q "verdict: strongly_stable" ||
     fail "placement $k: stability does not confirm strongly_stable"
   "$cc" check "run/placement_${k}_wrench_1.cert.json" | grep -q "is VALID" || fail "placement $k: certificate not VALID"
-  "$cc" insert "run/placement_$k.json" | grep -qE "^  edge [0-9]+, s in" || fail "placement $k: insert lists no seating push"
+  "$cc" insert "run/placement_$k.json" | grep -qE "^ +edge [0-9]+, s in" || fail "placement $k: insert lists no seating push"
 done
 xmllint --noout run/design.svg 2> /dev/null || [ ! -x "$(command -v xmllint)" ] || fail "design.svg is not valid XML"
 

@@ -19,9 +19,9 @@ def run_cli(*args, expect=0):
     return p
 
 
-def cli_json(*args):
-    """The CLI's --json object for the same query."""
-    return json.loads(run_cli(*args, "--json").stdout)
+def cli_json(*args, expect=0):
+    """The CLI's --json object for the same query (`expect`: its exit code; check exits 2 on INVALID)."""
+    return json.loads(run_cli(*args, "--json", expect=expect).stdout)
 
 
 def cli_error(*args):
