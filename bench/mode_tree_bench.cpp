@@ -76,9 +76,7 @@ void BM_TreeVerdict(benchmark::State& state) {
   state.counters["strong"] = r.verdict == solvers::StabilityVerdict::kStronglyStable;
   state.SetLabel(std::string(shape == 0 ? "disk" : "block") + " k=" + std::to_string(k));
 }
-BENCHMARK(BM_TreeVerdict)
-    ->ArgsProduct({{0, 1}, {2, 4, 6, 8, 12, 16, 24, 32}})
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TreeVerdict)->ArgsProduct({{0, 1}, {2, 4, 6, 8, 12, 16, 24, 32}})->Unit(benchmark::kMillisecond);
 
 // The 4^k route: the resting LP, then every moving mode string in turn - its kinematic LP and, when feasible,
 // its LP in g - as the engine did before the tree (without its certificate).

@@ -2,7 +2,6 @@
 // (wrench cone paper, Table 2), each with a witness, found by the prefix tree of solvers/stability/mode_tree.h,
 // and with --certificate the tree as a completeness proof for `contactcert check`.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <iostream>
 #include <map>
@@ -67,8 +66,8 @@ int report(const ModesOptions& o, const geometry::PlanarScene& scene, const solv
   std::cout << "contact modes of " << o.file << ": " << tree.modes.size() << " feasible modes of " << k << " fixels ("
             << t << " touching, " << k - t << " with a gap), from rest, s "
             << (o.table2 == "printed" ? "as Table 2 prints it (a_n >= 0)" : "strictly separating (a_n > 0)") << "\n"
-            << "  prefix tree: " << tree.nodes << " prefixes visited, " << tree.dead.size()
-            << " proven infeasible, " << tree.lps << " LPs (of 4^" << t << " x 2^" << k - t << " mode strings)\n";
+            << "  prefix tree: " << tree.nodes << " prefixes visited, " << tree.dead.size() << " proven infeasible, "
+            << tree.lps << " LPs (of 4^" << t << " x 2^" << k - t << " mode strings)\n";
   if (!o.kinematic)
     std::cout << "  each mode's wrench cone contains M vdot (all contact forces zero fit every letter), so the\n"
                  "  dynamic list equals the kinematic one\n";
@@ -109,8 +108,9 @@ void register_modes(CLI::App& app, Action& action) {
   sub->add_option("file", o->file, "Planar scene file (docs/formats.md)")->required();
   sub->add_flag("--kinematic", o->kinematic, "List the modes with their accelerations only (no witness wrench)");
   sub->add_flag("--unions", o->unions, "Also the letters m (l, r or n) and u (s or a), whose modes overlap");
-  sub->add_option("--table2", o->table2,
-                  "strict: s at a touching fixel is a_n > 0 (the physical modes); printed: a_n >= 0 as Table 2 prints it")
+  sub->add_option(
+         "--table2", o->table2,
+         "strict: s at a touching fixel is a_n > 0 (the physical modes); printed: a_n >= 0 as Table 2 prints it")
       ->check(CLI::IsMember({"strict", "printed"}))
       ->default_str("strict");
   sub->add_option("--max-nodes", o->max_nodes, "Budget on the prefixes the tree visits (exit 3 beyond it)")

@@ -32,14 +32,15 @@ json strings(const Vec<Q>& v) {
 ModeString read_letters(const exact::JsonInput& j, const ModeAlphabet& alphabet, std::size_t k, bool prefix) {
   const std::string text = j.string();
   if (text.size() > k || (prefix ? text.empty() : text.size() != k))
-    j.fail(prefix ? "a mode prefix of 1 to " + std::to_string(k) + " letters" : "one letter per fixel (" +
-                                                                                   std::to_string(k) + ")");
+    j.fail(prefix ? "a mode prefix of 1 to " + std::to_string(k) + " letters"
+                  : "one letter per fixel (" + std::to_string(k) + ")");
   ModeString m;
   for (std::size_t i = 0; i < text.size(); ++i) {
     bool known = false;
     for (Interaction L : alphabet.letters(i)) known = known || static_cast<char>(L) == text[i];
-    if (!known) j.fail("letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "') is not a letter of fixel " +
-                       std::to_string(i + 1) + " in this alphabet");
+    if (!known)
+      j.fail("letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "') is not a letter of fixel " +
+             std::to_string(i + 1) + " in this alphabet");
     m.letters.push_back(static_cast<Interaction>(text[i]));
   }
   return m;
@@ -86,7 +87,8 @@ std::string modes_certificate(const std::string& scene_text, const ContactModes&
     modes.push_back({{"mode", m.tree.modes[i].text()}, {"acceleration", strings(m.tree.accelerations[i])}});
   j["modes"] = modes;
   json dead = json::array();
-  for (const DeadPrefix<Q>& d : m.tree.dead) dead.push_back({{"prefix", d.prefix.text()}, {"motzkin", strings(d.motzkin)}});
+  for (const DeadPrefix<Q>& d : m.tree.dead)
+    dead.push_back({{"prefix", d.prefix.text()}, {"motzkin", strings(d.motzkin)}});
   j["dead"] = dead;
   return j.dump(1) + "\n";
 }

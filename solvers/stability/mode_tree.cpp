@@ -24,8 +24,7 @@ namespace {
 
 // Whether acceleration vdot meets letter L's rows at fixel i (Table 2), by the sign test of T.
 template <class T>
-bool meets(const MotionModel<T>& model, const KinematicRules& rules, const Vec<T>& vdot, std::size_t i,
-           Interaction L) {
+bool meets(const MotionModel<T>& model, const KinematicRules& rules, const Vec<T>& vdot, std::size_t i, Interaction L) {
   const Index k = model.J.cols() / 2, c = static_cast<Index>(i);
   const T a_n = model.J.col(c).dot(vdot);
   const int n = exact::sign(a_n);
@@ -57,20 +56,29 @@ enum class RowKind : char { kNone, kZero, kSlackMinus, kSlackMinusStrict, kSlack
 
 RowKind normal_row(Interaction L, bool strict_s) {
   switch (L) {
-    case Interaction::kSeparate: return strict_s ? RowKind::kSlackMinusStrict : RowKind::kSlackMinus;
-    case Interaction::kSeparatePrinted: return RowKind::kSlackMinus;
-    case Interaction::kApproach: return RowKind::kSlackPlusStrict;
-    case Interaction::kUnconstrained: return RowKind::kNone;
-    default: return RowKind::kZero;
+    case Interaction::kSeparate:
+      return strict_s ? RowKind::kSlackMinusStrict : RowKind::kSlackMinus;
+    case Interaction::kSeparatePrinted:
+      return RowKind::kSlackMinus;
+    case Interaction::kApproach:
+      return RowKind::kSlackPlusStrict;
+    case Interaction::kUnconstrained:
+      return RowKind::kNone;
+    default:
+      return RowKind::kZero;
   }
 }
 
 RowKind tangent_row(Interaction L) {
   switch (L) {
-    case Interaction::kSlideLeft: return RowKind::kSlackMinusStrict;
-    case Interaction::kSlideRight: return RowKind::kSlackPlusStrict;
-    case Interaction::kRoll: return RowKind::kZero;
-    default: return RowKind::kNone;
+    case Interaction::kSlideLeft:
+      return RowKind::kSlackMinusStrict;
+    case Interaction::kSlideRight:
+      return RowKind::kSlackPlusStrict;
+    case Interaction::kRoll:
+      return RowKind::kZero;
+    default:
+      return RowKind::kNone;
   }
 }
 
@@ -90,8 +98,13 @@ class Walker {
  public:
   Walker(const MotionModel<T>& model, const ModeAlphabet& alphabet, const ModeTreeOptions& options,
          const OnMode<T>& on_mode, ModeTree<T>& out)
-      : model_(model), alphabet_(alphabet), options_(options), on_mode_(on_mode), out_(out),
-        k_(static_cast<std::size_t>(model.J.cols() / 2)), known_(k_) {}
+      : model_(model),
+        alphabet_(alphabet),
+        options_(options),
+        on_mode_(on_mode),
+        out_(out),
+        k_(static_cast<std::size_t>(model.J.cols() / 2)),
+        known_(k_) {}
 
   // Visits the live prefix (vdot realises it) and its subtree; false once on_mode stopped the walk.
   bool visit(ModeString& prefix, const Vec<T>& vdot) {
@@ -130,9 +143,9 @@ class Walker {
     ++out_.nodes;
     if (out_.nodes > options_.max_nodes || options_.deadline.expired())
       throw exact::BudgetExceeded(
-          out_.nodes > options_.max_nodes ? "mode enumeration: node budget of " + std::to_string(options_.max_nodes) +
-                                                " prefixes exhausted"
-                                          : "mode enumeration: " + options_.deadline.reached_text(),
+          out_.nodes > options_.max_nodes
+              ? "mode enumeration: node budget of " + std::to_string(options_.max_nodes) + " prefixes exhausted"
+              : "mode enumeration: " + options_.deadline.reached_text(),
           std::to_string(out_.nodes - 1) + " prefixes visited, " + std::to_string(out_.modes.size()) +
               " feasible modes found");
   }
@@ -227,8 +240,8 @@ ModeTree<T> walk_modes(const MotionModel<T>& model, const ModeAlphabet& alphabet
   return out;
 }
 
-std::optional<std::string> mode_coverage(std::size_t k, const ModeAlphabet& alphabet, const std::vector<std::string>& dead,
-                          const std::vector<std::string>& leaves) {
+std::optional<std::string> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
+                                         const std::vector<std::string>& dead, const std::vector<std::string>& leaves) {
   // A prefix is accounted for if it is listed (dead, or a full-length leaf); the walk descends only into
   // proper prefixes of listed strings, so it never expands more than the lists spell out.
   std::unordered_set<std::string> listed, inner;
@@ -255,9 +268,9 @@ std::optional<std::string> mode_coverage(std::size_t k, const ModeAlphabet& alph
   return std::nullopt;
 }
 
-#define CONTACTCERT_MODE_TREE_INSTANTIATE(T) \
+#define CONTACTCERT_MODE_TREE_INSTANTIATE(T)                                                             \
   template ModeTree<T> walk_modes<T>(const MotionModel<T>&, const ModeAlphabet&, const ModeTreeOptions&, \
-                                     const OnMode<T>&);                                                 \
+                                     const OnMode<T>&);                                                  \
   template bool realises<T>(const MotionModel<T>&, const KinematicRules&, const Vec<T>&, const ModeString&);
 CONTACTCERT_MODE_TREE_INSTANTIATE(double)
 CONTACTCERT_MODE_TREE_INSTANTIATE(Q)

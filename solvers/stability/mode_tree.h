@@ -52,9 +52,9 @@ struct ModeTree {
   std::vector<Vec<T>> accelerations;  ///< per mode: a vdot that realises it
   std::vector<DeadPrefix<T>> dead;    ///< depth first
   long nodes = 0;                     ///< prefixes visited, the empty one included
-  long lps = 0;                       ///< kinematic LPs (a child whose letter the parent's vdot already meets needs none)
-  long lps_checked_from_float = 0;    ///< of these, decided by a float LP's answer checked exactly
-  bool complete = true;               ///< false if on_mode stopped the walk
+  long lps = 0;                     ///< kinematic LPs (a child whose letter the parent's vdot already meets needs none)
+  long lps_checked_from_float = 0;  ///< of these, decided by a float LP's answer checked exactly
+  bool complete = true;             ///< false if on_mode stopped the walk
 };
 
 /// Called with each feasible mode and its acceleration as the walk finds it; false stops the walk.
@@ -76,12 +76,12 @@ bool realises(const MotionModel<T>& model, const KinematicRules& rules, const Ve
 /// prefix or equals some `leaves` mode. Walks only the prefixes of listed strings, at most (total length of the
 /// lists) x (letters per fixel) of them, so a forged list is rejected in time linear in its size. Returns nullopt
 /// if covered, else a mode prefix that no listed string accounts for (as text).
-std::optional<std::string> mode_coverage(std::size_t k, const ModeAlphabet& alphabet, const std::vector<std::string>& dead,
-                          const std::vector<std::string>& leaves);
+std::optional<std::string> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
+                                         const std::vector<std::string>& dead, const std::vector<std::string>& leaves);
 
-#define CONTACTCERT_MODE_TREE_EXTERN(T) \
+#define CONTACTCERT_MODE_TREE_EXTERN(T)                                                                         \
   extern template ModeTree<T> walk_modes<T>(const MotionModel<T>&, const ModeAlphabet&, const ModeTreeOptions&, \
-                                            const OnMode<T>&);                                                 \
+                                            const OnMode<T>&);                                                  \
   extern template bool realises<T>(const MotionModel<T>&, const KinematicRules&, const Vec<T>&, const ModeString&);
 CONTACTCERT_MODE_TREE_EXTERN(double)
 CONTACTCERT_MODE_TREE_EXTERN(Q)

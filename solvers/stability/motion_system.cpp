@@ -113,8 +113,7 @@ exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const
       sigma = s.cols++;
       s.is_free.push_back(false);
       // s is strict at a touching fixel (seeds/README.md), a_n >= 0 at a gap or as Table 2 prints it (S).
-      s.strict.push_back(!separates ||
-                         (L == Interaction::kSeparate && rules.touches(u) && !rules.printed_separation));
+      s.strict.push_back(!separates || (L == Interaction::kSeparate && rules.touches(u) && !rules.printed_separation));
     }
     switch (L) {
       case Interaction::kUnconstrained:
@@ -246,10 +245,10 @@ template struct MotionSystem<double>;
 template struct MotionSystem<Q>;
 template struct MotionSystem<exact::Mpfr>;
 template struct MotionSystem<exact::Interval>;
-#define CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(T)                                                       \
-  template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                               \
-  template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&,   \
-                                                            const KinematicRules&);                    \
+#define CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(T)                                                      \
+  template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                              \
+  template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&, \
+                                                            const KinematicRules&);                   \
   template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);
 CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(double)
 CONTACTCERT_MOTION_SYSTEM_INSTANTIATE(Q)

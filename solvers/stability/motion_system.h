@@ -83,10 +83,10 @@ exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const
 /// friction rows if it rolls; then the 3 dynamics rows.
 Eigen::Index motion_system_rows(const ModeString& mode);
 
-#define CONTACTCERT_MOTION_SYSTEM_EXTERN(T)                                                                   \
-  extern template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                               \
-  extern template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&,   \
-                                                                   const KinematicRules&);                    \
+#define CONTACTCERT_MOTION_SYSTEM_EXTERN(T)                                                                  \
+  extern template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                              \
+  extern template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&, \
+                                                                   const KinematicRules&);                   \
   extern template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);
 CONTACTCERT_MOTION_SYSTEM_EXTERN(double)
 CONTACTCERT_MOTION_SYSTEM_EXTERN(Q)

@@ -36,8 +36,10 @@ std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g
   j["wrench"] = strings(g);
   j["scene"] = scene_text;
   j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
-  if (r.has_resting) j["resting"] = {{"forces", strings(r.resting_forces)}};
-  else j["resting"] = {{"motzkin", strings(r.resting_farkas)}};
+  if (r.has_resting)
+    j["resting"] = {{"forces", strings(r.resting_forces)}};
+  else
+    j["resting"] = {{"motzkin", strings(r.resting_farkas)}};
   if (r.has_moving)
     j["moving"] = {{"mode", r.moving.mode.text()},
                    {"forces", strings(r.moving.forces)},
@@ -58,10 +60,14 @@ StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& c)
   const std::size_t k = touching_scene(scene).fixels.size();
   StabilityResult<Q> claim;
   const std::string verdict = c.at("verdict").string();
-  if (verdict == "strongly_stable") claim.verdict = StabilityVerdict::kStronglyStable;
-  else if (verdict == "weakly_stable") claim.verdict = StabilityVerdict::kWeaklyStable;
-  else if (verdict == "unstable") claim.verdict = StabilityVerdict::kUnstable;
-  else c.at("verdict").fail("expected strongly_stable, weakly_stable or unstable");
+  if (verdict == "strongly_stable")
+    claim.verdict = StabilityVerdict::kStronglyStable;
+  else if (verdict == "weakly_stable")
+    claim.verdict = StabilityVerdict::kWeaklyStable;
+  else if (verdict == "unstable")
+    claim.verdict = StabilityVerdict::kUnstable;
+  else
+    c.at("verdict").fail("expected strongly_stable, weakly_stable or unstable");
   const Vec<Q> g = c.at("wrench").rational_vector(3);
   const exact::JsonInput resting = c.at("resting");
   if (auto f = resting.find("forces")) {

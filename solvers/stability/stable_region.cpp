@@ -118,10 +118,10 @@ StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route, co
   return out;
 }
 
-#define CONTACTCERT_STABLE_REGION_INSTANTIATE(T)                                      \
-  template struct StableRegion<T>;                                                    \
-  template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&); \
-  template StableRegion<T> mode_cones<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);           \
+#define CONTACTCERT_STABLE_REGION_INSTANTIATE(T)                                                       \
+  template struct StableRegion<T>;                                                                     \
+  template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&);                  \
+  template StableRegion<T> mode_cones<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&); \
   template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);
 CONTACTCERT_STABLE_REGION_INSTANTIATE(double)
 CONTACTCERT_STABLE_REGION_INSTANTIATE(Q)

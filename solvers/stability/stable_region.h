@@ -22,12 +22,12 @@ struct LabelledCell {
 
 template <class T>
 struct StableRegion {
-  std::vector<Eigen::Index> touching;     ///< the touching fixels the analysis uses
-  geometry::FaceCone<T> weak;             ///< wrenches with a resting solution: -pos(friction cone edges)
-  std::vector<ModeString> modes;          ///< the moving modes with a non-empty wrench cone, in mode tree order
-  long tree_nodes = 0;                    ///< prefixes the mode tree visited to find them
+  std::vector<Eigen::Index> touching;        ///< the touching fixels the analysis uses
+  geometry::FaceCone<T> weak;                ///< wrenches with a resting solution: -pos(friction cone edges)
+  std::vector<ModeString> modes;             ///< the moving modes with a non-empty wrench cone, in mode tree order
+  long tree_nodes = 0;                       ///< prefixes the mode tree visited to find them
   std::vector<geometry::FaceCone<T>> cones;  ///< their wrench cones
-  Mat<T> planes;                          ///< the arrangement's planes
+  Mat<T> planes;                             ///< the arrangement's planes
   std::vector<LabelledCell<T>> cells;
   /// The label of wrench g from the cones (the same verdict strong_stability gives, without LPs).
   StabilityVerdict label(const Vec<T>& g) const;
@@ -51,10 +51,10 @@ template <class T>
 StableRegion<T> stable_region(const geometry::PlanarScene& scene, Route route = Route::kPaper,
                               const ModeTreeOptions& tree = {});
 
-#define CONTACTCERT_STABLE_REGION_EXTERN(T)                                                       \
-  extern template struct StableRegion<T>;                                                         \
-  extern template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&);       \
-  extern template StableRegion<T> mode_cones<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);    \
+#define CONTACTCERT_STABLE_REGION_EXTERN(T)                                                                   \
+  extern template struct StableRegion<T>;                                                                     \
+  extern template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&);                  \
+  extern template StableRegion<T> mode_cones<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&); \
   extern template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);
 CONTACTCERT_STABLE_REGION_EXTERN(double)
 CONTACTCERT_STABLE_REGION_EXTERN(Q)

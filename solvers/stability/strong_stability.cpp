@@ -163,7 +163,9 @@ StabilityResult<T> StabilityOracle<T>::verdict(const Vec<T>& g) const {
         for (std::size_t i = 0; i + 1 < modes_.size(); ++i)
           if (!visit(ModeLp<T>{modes_[i].name, modes_[i].ms, modes_[i].solver})) return;
       },
-      [this] { return ModeLp<T>{modes_.back().name, modes_.back().ms, modes_.back().solver}; },
+      [this] {
+        return ModeLp<T>{modes_.back().name, modes_.back().ms, modes_.back().solver};
+      },
       [this](StabilityResult<T>& r) {
         for (std::size_t j = 0; j < kinematic_proofs_->size(); ++j) r.proofs.push_shared(kinematic_proofs_, j);
       });
@@ -265,13 +267,15 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
             L != Interaction::kRoll)
           return "proof for '" + text + "': only the letters s l r n describe motion from rest";
       if (p.kinematic) {
-        if (p.mode.letters.empty() || p.mode.letters.size() > k) return "a dead prefix of the wrong length: '" + text + "'";
+        if (p.mode.letters.empty() || p.mode.letters.size() > k)
+          return "a dead prefix of the wrong length: '" + text + "'";
         if (!exact::verify_motzkin(kinematic_system(model, p.mode).dense(), p.motzkin))
           return "the kinematic proof for prefix " + text + " does not verify";
         dead.push_back(text);
       } else {
         if (p.mode.letters.size() != k) return "proof for '" + text + "': a mode has one letter per touching fixel";
-        if (text == leaves.front()) return "a proof for n..n is not evidence (it moves only without a resting solution)";
+        if (text == leaves.front())
+          return "a proof for n..n is not evidence (it moves only without a resting solution)";
         if (!exact::verify_motzkin(motion_system(model, p.mode).with_wrench(g), p.motzkin))
           return "the proof for mode " + text + " does not verify";
         leaves.push_back(text);

@@ -115,10 +115,10 @@ struct StabilityResult {
   long lps = 0;             ///< LPs solved (for strong_stability: including the kinematic ones)
   /// Of these, decided by a float LP's rounded answer checked exactly (no rational LP).
   long lps_checked_from_float = 0;
-  long modes_checked = 0;                  ///< moving modes whose system in g was solved (n..n included)
-  long modes_kinematically_feasible = 0;   ///< feasible moving modes the mode tree found (all, if it finished)
-  long tree_nodes = 0;                     ///< prefixes the mode tree visited
-  long dead_prefixes = 0;                  ///< prefixes it proved kinematically infeasible
+  long modes_checked = 0;                 ///< moving modes whose system in g was solved (n..n included)
+  long modes_kinematically_feasible = 0;  ///< feasible moving modes the mode tree found (all, if it finished)
+  long tree_nodes = 0;                    ///< prefixes the mode tree visited
+  long dead_prefixes = 0;                 ///< prefixes it proved kinematically infeasible
 };
 
 struct StabilityOptions {

@@ -12,14 +12,22 @@ InteractionConstraints table2(Interaction letter, bool touching) {
   using S = SignConstraint;
   using F = FrictionConstraint;
   switch (letter) {
-    case Interaction::kSeparate: return {touching ? S::kPositive : S::kNonNegative, S::kFree, S::kZero, F::kZero};
-    case Interaction::kApproach: return {S::kNegative, S::kFree, S::kZero, F::kZero};
-    case Interaction::kUnconstrained: return {S::kFree, S::kFree, S::kZero, F::kZero};
-    case Interaction::kSlideLeft: return {S::kZero, S::kPositive, S::kNonNegative, F::kLeftEdge};
-    case Interaction::kSlideRight: return {S::kZero, S::kNegative, S::kNonNegative, F::kRightEdge};
-    case Interaction::kRoll: return {S::kZero, S::kZero, S::kNonNegative, F::kStaticCone};
-    case Interaction::kMaintain: return {S::kZero, S::kFree, S::kNonNegative, F::kStaticCone};
-    case Interaction::kSeparatePrinted: return {S::kNonNegative, S::kFree, S::kZero, F::kZero};
+    case Interaction::kSeparate:
+      return {touching ? S::kPositive : S::kNonNegative, S::kFree, S::kZero, F::kZero};
+    case Interaction::kApproach:
+      return {S::kNegative, S::kFree, S::kZero, F::kZero};
+    case Interaction::kUnconstrained:
+      return {S::kFree, S::kFree, S::kZero, F::kZero};
+    case Interaction::kSlideLeft:
+      return {S::kZero, S::kPositive, S::kNonNegative, F::kLeftEdge};
+    case Interaction::kSlideRight:
+      return {S::kZero, S::kNegative, S::kNonNegative, F::kRightEdge};
+    case Interaction::kRoll:
+      return {S::kZero, S::kZero, S::kNonNegative, F::kStaticCone};
+    case Interaction::kMaintain:
+      return {S::kZero, S::kFree, S::kNonNegative, F::kStaticCone};
+    case Interaction::kSeparatePrinted:
+      return {S::kNonNegative, S::kFree, S::kZero, F::kZero};
   }
   return {S::kFree, S::kFree, S::kZero, F::kZero};
 }
@@ -27,10 +35,13 @@ InteractionConstraints table2(Interaction letter, bool touching) {
 bool letter_fits(Interaction letter, bool touching) {
   switch (letter) {
     case Interaction::kSeparate:
-    case Interaction::kSeparatePrinted: return true;
+    case Interaction::kSeparatePrinted:
+      return true;
     case Interaction::kApproach:
-    case Interaction::kUnconstrained: return !touching;
-    default: return touching;
+    case Interaction::kUnconstrained:
+      return !touching;
+    default:
+      return touching;
   }
 }
 
@@ -55,14 +66,16 @@ ModeParse parse_mode(std::string_view text, const std::vector<bool>& touching) {
     out.fixel = i;
     if (std::string_view("saulrnmS").find(text[i]) == std::string_view::npos) {
       out.status = ModeStatus::kUnknownLetter;
-      out.message = "letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "') is not one of s a u l r n m (or S)";
+      out.message =
+          "letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "') is not one of s a u l r n m (or S)";
       return out;
     }
     const auto l = static_cast<Interaction>(text[i]);
     if (!letter_fits(l, touching[i])) {
       out.status = touching[i] ? ModeStatus::kNeedsGap : ModeStatus::kNeedsContact;
       out.message = "letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "'): fixel " +
-                    std::to_string(i + 1) + (touching[i] ? " touches, so use one of s l r n m" : " does not touch, so use one of s a u");
+                    std::to_string(i + 1) +
+                    (touching[i] ? " touches, so use one of s l r n m" : " does not touch, so use one of s a u");
       return out;
     }
     out.mode.letters.push_back(l);

@@ -10,13 +10,13 @@ namespace contactcert::solvers {
 
 /// One contact interaction of Table 2.
 enum class Interaction : char {
-  kSeparate = 's',       ///< a_n >= 0 (> 0 when touching: strictly separating, seeds/README.md), c = 0
-  kApproach = 'a',       ///< a_n < 0, c = 0; needs a gap
-  kUnconstrained = 'u',  ///< c = 0; needs a gap
-  kSlideLeft = 'l',      ///< a_n = 0, a_t > 0, c_n >= 0, c_t = -mu_k c_n; needs contact
-  kSlideRight = 'r',     ///< a_n = 0, a_t < 0, c_n >= 0, c_t = mu_k c_n; needs contact
-  kRoll = 'n',           ///< a_n = a_t = 0, |c_t| <= mu_s c_n; needs contact
-  kMaintain = 'm',       ///< a_n = 0, |c_t| <= mu_s c_n; needs contact
+  kSeparate = 's',         ///< a_n >= 0 (> 0 when touching: strictly separating, seeds/README.md), c = 0
+  kApproach = 'a',         ///< a_n < 0, c = 0; needs a gap
+  kUnconstrained = 'u',    ///< c = 0; needs a gap
+  kSlideLeft = 'l',        ///< a_n = 0, a_t > 0, c_n >= 0, c_t = -mu_k c_n; needs contact
+  kSlideRight = 'r',       ///< a_n = 0, a_t < 0, c_n >= 0, c_t = mu_k c_n; needs contact
+  kRoll = 'n',             ///< a_n = a_t = 0, |c_t| <= mu_s c_n; needs contact
+  kMaintain = 'm',         ///< a_n = 0, |c_t| <= mu_s c_n; needs contact
   kSeparatePrinted = 'S',  ///< s as Table 2 prints it: a_n >= 0 also when touching, c = 0 (`--table2 printed`)
 };
 

@@ -79,7 +79,8 @@ std::vector<bool> touching_of(const geometry::PlanarScene& scene) {
 }
 
 // The 4^k route: every mode string over the alphabet, each decided by its own LP.
-std::set<std::string> feasible_by_brute_force(const MotionModel<Q>& model, const ModeAlphabet& alphabet, std::size_t k) {
+std::set<std::string> feasible_by_brute_force(const MotionModel<Q>& model, const ModeAlphabet& alphabet,
+                                              std::size_t k) {
   std::set<std::string> out;
   ModeString m;
   std::function<void()> all = [&] {
@@ -104,13 +105,31 @@ StabilityVerdict verdict_by_brute_force(const geometry::PlanarScene& full, const
   const std::size_t k = scene.fixels.size();
   const MotionModel<Q> model = motion_model<Q>(scene);
   const ModeString rolling{std::vector<Interaction>(k, Interaction::kRoll)};
-  const auto rest = exact::strict_feasibility(motion_system(model, rolling, true).with_wrench(g), exact::Arith::kVerified);
+  const auto rest =
+      exact::strict_feasibility(motion_system(model, rolling, true).with_wrench(g), exact::Arith::kVerified);
   if (rest.status != exact::StrictStatus::kFeasible) return StabilityVerdict::kUnstable;
   for (const ModeString& m : moving_modes(k))
     if (exact::strict_feasibility(motion_system(model, m).with_wrench(g), exact::Arith::kVerified).status ==
         exact::StrictStatus::kFeasible)
       return StabilityVerdict::kWeaklyStable;
   return StabilityVerdict::kStronglyStable;
+}
+
+// The moving modes of the touching fixels whose wrench cone is non-empty, among all 4^k - 1 strings.
+std::set<std::string> nonempty_cones_by_brute_force(const geometry::PlanarScene& scene) {
+  const geometry::PlanarScene touching = touching_scene(scene);
+  const ContactModel<Q> model = contact_model<Q>(touching);
+  std::set<std::string> out;
+  for (const ModeString& m : moving_modes(touching.fixels.size()))
+    if (!is_empty_cone<Q>(wrench_cone_face<Q>(touching, model, m, Route::kPaper))) out.insert(m.text());
+  return out;
+}
+
+// The moving modes of the stable region (from the mode tree).
+std::set<std::string> region_modes(const geometry::PlanarScene& scene) {
+  std::set<std::string> out;
+  for (const ModeString& m : stable_region<Q>(scene).modes) out.insert(m.text());
+  return out;
 }
 
 TEST(ModeTree, RandomScenesGiveTheModesOfThe4ToTheKRouteWithValidCertificates) {
@@ -159,8 +178,8 @@ TEST(ModeTree, RandomStabilityVerdictsRegionsAndCertificatesEqualThe4ToTheKRoute
       ASSERT_EQ(r.verdict, verdict_by_brute_force(scene, g)) << text << "\ng = " << g.transpose();
       EXPECT_EQ(oracle.verdict(g).verdict, r.verdict);
       EXPECT_EQ(check_stability(scene, g, r), "") << text;
-      const auto c = check_stability_certificate(
-          exact::JsonInput::parse(stability_certificate(text, g, r), "stability.json"));
+      const auto c =
+          check_stability_certificate(exact::JsonInput::parse(stability_certificate(text, g, r), "stability.json"));
       EXPECT_TRUE(c.valid) << c.reason;
       strong += r.verdict == StabilityVerdict::kStronglyStable;
       weak += r.verdict == StabilityVerdict::kWeaklyStable;
@@ -168,14 +187,7 @@ TEST(ModeTree, RandomStabilityVerdictsRegionsAndCertificatesEqualThe4ToTheKRoute
     }
     // The region's moving modes are those with a non-empty wrench cone among all 4^k - 1.
     if (t % 4 == 0) {
-      const geometry::PlanarScene touching = touching_scene(scene);
-      const auto region = stable_region<Q>(scene);
-      const ContactModel<Q> model = contact_model<Q>(touching);
-      std::set<std::string> nonempty, listed;
-      for (const ModeString& m : moving_modes(touching.fixels.size()))
-        if (!is_empty_cone<Q>(wrench_cone_face<Q>(touching, model, m, Route::kPaper))) nonempty.insert(m.text());
-      for (const ModeString& m : region.modes) listed.insert(m.text());
-      EXPECT_EQ(listed, nonempty) << text;
+      EXPECT_EQ(region_modes(scene), nonempty_cones_by_brute_force(scene)) << text;
     }
   }
   EXPECT_GT(strong, 10);
@@ -198,14 +210,7 @@ TEST(ModeTree, EveryBundledPlanarSceneGivesTheModesVerdictsAndRegionOfThe4ToTheK
       for (const ModeString& s : m.tree.modes) tree.insert(s.text());
       EXPECT_EQ(tree, feasible_by_brute_force(m.model, m.alphabet, scene.fixels.size())) << entry.path();
     }
-    const geometry::PlanarScene touching = touching_scene(scene);
-    const auto region = stable_region<Q>(scene);
-    const ContactModel<Q> model = contact_model<Q>(touching);
-    std::set<std::string> nonempty, listed;
-    for (const ModeString& m : moving_modes(touching.fixels.size()))
-      if (!is_empty_cone<Q>(wrench_cone_face<Q>(touching, model, m, Route::kPaper))) nonempty.insert(m.text());
-    for (const ModeString& m : region.modes) listed.insert(m.text());
-    EXPECT_EQ(listed, nonempty) << entry.path();
+    EXPECT_EQ(region_modes(scene), nonempty_cones_by_brute_force(scene)) << entry.path();
     for (const Vec<Q>& g : {(Vec<Q>(3) << 0, -1, 0).finished(), (Vec<Q>(3) << 1, -2, 1).finished()}) {
       const auto r = strong_stability<Q>(scene, g);
       EXPECT_EQ(r.verdict, verdict_by_brute_force(scene, g)) << entry.path();
@@ -272,8 +277,8 @@ TEST(ModeTree, PegInASlotTouchingSixContactsByHand) {
 // A block [0, k] x [0, 1] resting on k fixels along its bottom, under gravity.
 std::string block(std::size_t k) {
   std::ostringstream s;
-  s << R"({"kind":"planar","workpiece":{"shape":{"type":"polygon","vertices":[[0,0],[)" << k << "," << 0 << "],["
-    << k << R"(,1],[0,1]]}},"mu_s":"1/2","mu_k":"1/2","fixels":[)";
+  s << R"({"kind":"planar","workpiece":{"shape":{"type":"polygon","vertices":[[0,0],[)" << k << "," << 0 << "],[" << k
+    << R"(,1],[0,1]]}},"mu_s":"1/2","mu_k":"1/2","fixels":[)";
   for (std::size_t i = 0; i < k; ++i) s << (i ? "," : "") << R"({"position":[")" << 2 * i + 1 << R"(/2",0]})";
   s << "]}";
   return s.str();
