@@ -8,6 +8,7 @@
 
 #include "cli/command.h"
 #include "cli/json_out.h"
+#include "cli/results.h"
 #include "exact/json_input.h"
 #include "geometry/scene_json.h"
 #include "solvers/stability/contact_modes.h"
@@ -33,35 +34,59 @@ std::vector<bool> touching_of(const geometry::PlanarScene& scene) {
   return t;
 }
 
-int report(const ModesOptions& o, const geometry::PlanarScene& scene, const solvers::ContactModes& m) {
+}  // namespace
+
+json modes_json(const geometry::PlanarScene& scene, const solvers::ContactModes& m, bool kinematic,
+                const std::string& certificate) {
   const std::vector<bool> touching = touching_of(scene);
   const auto& tree = m.tree;
   std::map<std::string, long> groups;
   for (const auto& mode : tree.modes) ++groups[solvers::mode_group(mode, touching)];
-  if (o.common.json) {
-    json modes = json::array();
-    for (std::size_t i = 0; i < tree.modes.size(); ++i) {
-      json e{{"mode", tree.modes[i].text()},
-             {"group", solvers::mode_group(tree.modes[i], touching)},
-             {"acceleration", exact_json(tree.accelerations[i])}};
-      if (!o.kinematic) {
-        e["wrench"] = exact_json(m.wrench(i));
-        e["forces"] = exact_json(exact::Vec<Q>(exact::Vec<Q>::Zero(2 * static_cast<Eigen::Index>(touching.size()))));
-      }
-      modes.push_back(e);
+  json modes = json::array();
+  for (std::size_t i = 0; i < tree.modes.size(); ++i) {
+    json e{{"mode", tree.modes[i].text()},
+           {"group", solvers::mode_group(tree.modes[i], touching)},
+           {"acceleration", exact_json(tree.accelerations[i])}};
+    if (!kinematic) {
+      e["wrench"] = exact_json(m.wrench(i));
+      e["forces"] = exact_json(exact::Vec<Q>(exact::Vec<Q>::Zero(2 * static_cast<Eigen::Index>(touching.size()))));
     }
-    json j;
-    j["fixels"] = touching.size();
-    j["touching"] = std::count(touching.begin(), touching.end(), true);
-    j["table2"] = o.table2;
-    j["list"] = o.kinematic ? "kinematic" : "dynamic";
-    j["modes"] = modes;
-    j["counts"] = groups;
-    j["tree"] = {{"nodes", tree.nodes}, {"dead_prefixes", tree.dead.size()}, {"lps", tree.lps}};
-    if (!o.certificate.empty()) j["certificate"] = o.certificate;
-    std::cout << j.dump() << "\n";
+    modes.push_back(e);
+  }
+  json j;
+  j["fixels"] = touching.size();
+  j["touching"] = std::count(touching.begin(), touching.end(), true);
+  j["table2"] = m.alphabet.rules.printed_separation ? "printed" : "strict";
+  j["list"] = kinematic ? "kinematic" : "dynamic";
+  j["modes"] = modes;
+  j["counts"] = groups;
+  j["tree"] = {{"nodes", tree.nodes}, {"dead_prefixes", tree.dead.size()}, {"lps", tree.lps}};
+  if (!certificate.empty()) j["certificate"] = certificate;
+  return j;
+}
+
+solvers::ContactModes modes_of(const geometry::PlanarScene& scene, const std::string& arith, const std::string& table2,
+                               bool unions, long max_nodes, double time_limit) {
+  if (exact::parse_arith(arith) == exact::Arith::kFloat)
+    throw exact::InputError("command line", "--arith", "modes are enumerated exactly (use exact or verified)");
+  solvers::ContactModeOptions options;
+  options.printed_separation = table2 == "printed";
+  options.unions = unions;
+  options.tree = {exact::parse_arith(arith), max_nodes, exact::Deadline::after(time_limit)};
+  return solvers::contact_modes(scene, options);
+}
+
+namespace {
+
+int report(const ModesOptions& o, const geometry::PlanarScene& scene, const solvers::ContactModes& m) {
+  if (o.common.json) {
+    std::cout << modes_json(scene, m, o.kinematic, o.certificate).dump() << "\n";
     return 0;
   }
+  const std::vector<bool> touching = touching_of(scene);
+  const auto& tree = m.tree;
+  std::map<std::string, long> groups;
+  for (const auto& mode : tree.modes) ++groups[solvers::mode_group(mode, touching)];
   const long k = static_cast<long>(touching.size()), t = std::count(touching.begin(), touching.end(), true);
   std::cout << "contact modes of " << o.file << ": " << tree.modes.size() << " feasible modes of " << k << " fixels ("
             << t << " touching, " << k - t << " with a gap), from rest, s "
@@ -86,15 +111,9 @@ int report(const ModesOptions& o, const geometry::PlanarScene& scene, const solv
 }
 
 int run_modes(const ModesOptions& o) {
-  if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
-    throw exact::InputError("command line", "--arith", "modes are enumerated exactly (use exact or verified)");
   const std::string text = exact::JsonInput::read_text(o.file);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
-  solvers::ContactModeOptions options;
-  options.printed_separation = o.table2 == "printed";
-  options.unions = o.unions;
-  options.tree = {exact::parse_arith(o.common.arith), o.max_nodes, exact::Deadline::after(o.common.time_limit)};
-  const solvers::ContactModes m = solvers::contact_modes(scene, options);
+  const solvers::ContactModes m = modes_of(scene, o.common.arith, o.table2, o.unions, o.max_nodes, o.common.time_limit);
   if (!o.certificate.empty()) write_text_file(o.certificate, solvers::modes_certificate(text, m));
   return report(o, scene, m);
 }

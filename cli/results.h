@@ -12,6 +12,7 @@
 #include "exact/json_input.h"
 #include "geometry/planar_scene.h"
 #include "solvers/insertion/insertion.h"
+#include "solvers/stability/contact_modes.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stable_region.h"
@@ -33,6 +34,13 @@ json stability_json(const geometry::PlanarScene& scene, const exact::Vec<exact::
 json region_json(const solvers::StableRegion<exact::Q>& region);
 json finger_json(const solvers::FingerPushes<exact::Q>& pushes);
 std::string finger_svg(const geometry::PlanarScene& scene, const solvers::FingerPushes<exact::Q>& pushes);
+
+// modes.cpp: the feasible contact modes of a scene (arith, table2, unions and the budgets as `modes` reads
+// them) and the JSON of `modes --json`.
+solvers::ContactModes modes_of(const geometry::PlanarScene& scene, const std::string& arith, const std::string& table2,
+                               bool unions, long max_nodes, double time_limit);
+json modes_json(const geometry::PlanarScene& scene, const solvers::ContactModes& m, bool kinematic,
+                const std::string& certificate);
 
 // cone.cpp: the mode named by --mode (InputError naming `file` and --mode otherwise), the exact and the
 // float cone, and the --svg picture.

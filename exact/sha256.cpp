@@ -51,7 +51,7 @@ std::string sha256_hex(std::string_view data) {
   for (; i + 64 <= data.size(); i += 64) compress(h, reinterpret_cast<const unsigned char*>(data.data() + i));
   // Section 5.1.1: the message, a 1 bit, zeros, and its length in bits as 64 bits big-endian.
   std::array<unsigned char, 128> tail{};
-  const std::size_t rest = data.size() - i;
+  const std::size_t rest = (data.size() - i) % 64;  // < 64 by the loop above; % says so to the compiler
   for (std::size_t k = 0; k < rest; ++k) tail[k] = static_cast<unsigned char>(data[i + k]);
   tail[rest] = 0x80;
   const std::size_t blocks = rest + 9 <= 64 ? 1 : 2;

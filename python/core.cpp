@@ -114,6 +114,13 @@ class Oracle {
   std::optional<solvers::StabilityOracle<double>> floating_;
 };
 
+std::string modes(const Scene& s, bool kinematic, const std::string& table2, bool unions, const std::string& arith,
+                  const std::string& certificate) {
+  const solvers::ContactModes m = cli::modes_of(s.scene, arith, table2, unions, 1L << 22, 0);
+  if (!certificate.empty()) cli::write_text_file(certificate, solvers::modes_certificate(s.text, m));
+  return cli::modes_json(s.scene, m, kinematic, certificate).dump();
+}
+
 std::string region(const Scene& s) { return cli::region_json(solvers::stable_region<Q>(s.scene)).dump(); }
 std::string region_svg(const Scene& s) { return cli::stability_sphere_svg(solvers::stable_region<Q>(s.scene)); }
 
@@ -199,6 +206,7 @@ PYBIND11_MODULE(_core, m) {
       .def("cone", &cone, Release())
       .def("cone_svg", &cone_svg, Release())
       .def("stability", &stability, Release())
+      .def("modes", &modes, Release())
       .def("region", &region, Release())
       .def("region_svg", &region_svg, Release())
       .def("finger", &finger, Release())

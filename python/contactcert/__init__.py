@@ -7,9 +7,9 @@ docs/python.md.
 """
 
 from ._core import BudgetExceeded
-from ._results import CheckResult, Cone, Finger, Insertion, Region, Stability, UcpResult
+from ._results import CheckResult, Cone, Finger, Insertion, Modes, Region, Stability, UcpResult
 from ._scene import Scene
 from ._ucp import Certificate, Ucp, check, generate_random, generate_reduction
 
 __all__ = ["BudgetExceeded", "Certificate", "CheckResult", "Cone", "Finger", "Insertion", "Region", "Scene",
-           "Stability", "Ucp", "UcpResult", "check", "generate_random", "generate_reduction"]
+           "Modes", "Stability", "Ucp", "UcpResult", "check", "generate_random", "generate_reduction"]

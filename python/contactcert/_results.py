@@ -146,6 +146,29 @@ class Stability(Result):
         return f"Stability({self.verdict}, wrench=({w}), {len(self.touching_fixels)} touching fixels{extra})"
 
 
+class Modes(Result):
+    """The kinematically feasible contact modes of a scene from rest (`contactcert modes`), each with an
+    acceleration that realises it and, in the dynamic list, a wrench in its cone."""
+
+    @property
+    def modes(self):
+        """The mode strings, one Table 2 letter per fixel, in the order of the prefix tree."""
+        return [m["mode"] for m in self._data["modes"]]
+
+    counts = _field("counts")
+
+    def acceleration(self, mode):
+        """The exact acceleration vdot listed for `mode`, as Fractions."""
+        for m in self._data["modes"]:
+            if m["mode"] == mode:
+                return exact(m["acceleration"])
+        raise KeyError(mode)
+
+    def __repr__(self):
+        t = self._data["tree"]
+        return f"Modes({len(self._data['modes'])} feasible modes, {t['nodes']} prefixes, {t['dead_prefixes']} dead)"
+
+
 class Region(Result):
     """The labelled cells of wrench space (section 7, Figure 5): every g is in exactly one cell."""
 

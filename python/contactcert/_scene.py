@@ -5,7 +5,7 @@ import os
 
 from . import _core
 from ._numbers import vector_text
-from ._results import Cone, Finger, Insertion, Region, Stability
+from ._results import Cone, Finger, Insertion, Modes, Region, Stability
 from ._source import FromSource
 
 ARITHS = ("exact", "float", "verified", "adaptive")
@@ -61,6 +61,14 @@ class Scene(FromSource):
             oracle = self._oracles[arith] = _core.Oracle(self._core, arith)
         texts = [vector_text(w, f"wrenches[{i}]") for i, w in enumerate(wrenches)]
         return [Stability(json.loads(d)) for d in oracle.verdicts(texts)]
+
+    def modes(self, kinematic=False, table2="strict", unions=False, arith="verified", certificate=None):
+        """`contactcert modes FILE`: every kinematically feasible contact mode from rest (the prefix tree over the
+        fixels, never the 4^k strings); `certificate` is the file its completeness proof is written to."""
+        choice(table2, ("strict", "printed"), "--table2")
+        choice(arith, ARITHS, "--arith")
+        return Modes(json.loads(self._core.modes(bool(kinematic), table2, bool(unions), arith,
+                                                 "" if certificate is None else os.fspath(certificate))))
 
     def region(self):
         """`contactcert stability FILE --region`: the strongly stable set as labelled cells (picture: the sphere

@@ -42,7 +42,7 @@ struct DeadPrefix {
 struct ModeTreeOptions {
   exact::Arith arith = exact::Arith::kVerified;
   long max_nodes = 1L << 22;  ///< prefixes visited at most; beyond: BudgetExceeded
-  exact::Deadline deadline;   ///< tested at every node; expired: BudgetExceeded
+  exact::Deadline deadline{}; ///< tested at every node; expired: BudgetExceeded
 };
 
 /// The walk's result: the feasible modes with a realising acceleration, and the dead prefixes with their proofs.

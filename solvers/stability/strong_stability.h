@@ -124,7 +124,7 @@ struct StabilityResult {
 struct StabilityOptions {
   exact::Arith arith = exact::Arith::kVerified;
   long max_nodes = 1L << 22;  ///< budget on the prefixes of the mode tree; beyond it BudgetExceeded
-  exact::Deadline deadline;   ///< tested at every prefix; expired: BudgetExceeded
+  exact::Deadline deadline{}; ///< tested at every prefix; expired: BudgetExceeded
 };
 
 /// The scene restricted to its touching fixels (stability considers only those).

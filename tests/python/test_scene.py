@@ -108,3 +108,19 @@ def test_scene_from_json_and_dict_equal_from_file():
     verdicts = {s.stability("1,-2,0").to_dict()["verdict"] for s in (a, b, c)}
     assert verdicts == {"strongly_stable"}
     assert repr(a) == f"Scene({str(f)!r}, 2 fixels)"
+
+
+@pytest.mark.parametrize("name", BT2002)
+def test_modes_equal_cli(name):
+    scene = cc.Scene.from_file(SCENES / name)
+    assert scene.modes().to_dict() == cli_json("modes", SCENES / name)
+    assert scene.modes(kinematic=True, table2="printed").to_dict() == cli_json(
+        "modes", SCENES / name, "--kinematic", "--table2", "printed")
+
+
+def test_modes_certificate_checked_by_cli(tmp_path):
+    f = SCENES / "bt2002_section7_disk.json"
+    cert = tmp_path / "modes.json"
+    m = cc.Scene.from_file(f).modes(certificate=cert)
+    assert len(m.modes) == 10 and "nn" in m.modes and m.acceleration("nn") == (0, 0, 0)
+    assert cli_json("check", cert)["valid"]

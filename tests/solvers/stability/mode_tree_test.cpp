@@ -27,7 +27,11 @@ geometry::PlanarScene parse(const std::string& text) {
   return geometry::read_planar_scene(exact::JsonInput::parse(text, "scene.json"));
 }
 
-std::string q(long p, long r) { return "\"" + std::to_string(p) + "/" + std::to_string(r) + "\""; }
+std::string q(long p, long r) {  // "p/r" as a JSON string
+  std::ostringstream s;
+  s << '"' << p << '/' << r << '"';
+  return s.str();
+}
 
 // A random scene of k fixels: a unit disk (fixels along Pythagorean directions) or a square / 3-4-5 triangle
 // (fixels on edges), each fixel touching or at a small gap, an off-centre com, mu from {0, 1/3, 1}.
