@@ -24,6 +24,8 @@ ModeString read_mode(const exact::JsonInput& j, std::size_t k, bool prefix = fal
     j.fail("a mode prefix: 1 to " + std::to_string(k) + " letters from s l r n");
   const ModeParse p = parse_mode(text, std::vector<bool>(prefix ? text.size() : k, true));
   if (p.status != ModeStatus::kValid) j.fail(p.message);
+  if (text.find_first_not_of("slrn") != std::string::npos)
+    j.fail("only the letters s l r n describe motion from rest (strong stability, section 7)");
   return p.mode;
 }
 

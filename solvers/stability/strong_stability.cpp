@@ -51,6 +51,15 @@ namespace {
 
 ModeString all_rolling(std::size_t k) { return ModeString{std::vector<Interaction>(k, Interaction::kRoll)}; }
 
+// Whether every letter is one of s l r n, the letters of motion from rest at a touching fixel (motion_system.h).
+bool motion_letters(const ModeString& m) {
+  for (Interaction L : m.letters)
+    if (L != Interaction::kSeparate && L != Interaction::kSlideLeft && L != Interaction::kSlideRight &&
+        L != Interaction::kRoll)
+      return false;
+  return true;
+}
+
 bool is_all_rolling(const ModeString& m) {
   for (Interaction L : m.letters)
     if (L != Interaction::kRoll) return false;
@@ -238,6 +247,7 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
   if (claim.has_moving) {
     const MotionWitness<Q>& w = claim.moving;
     if (w.mode.letters.size() != k) return "the witness mode has the wrong length";
+    if (!motion_letters(w.mode)) return "the witness mode: only the letters s l r n describe motion from rest";
     if (w.acceleration.size() != 3 || w.forces.size() != static_cast<Index>(2 * k)) return "witness sizes";
     bool nz = false;
     for (Index i = 0; i < 3; ++i) nz = nz || sgn(w.acceleration(i)) != 0;
@@ -262,10 +272,8 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
     std::vector<std::string> dead, leaves{all_rolling(k).text()};
     for (const ModeProof<Q>& p : claim.proofs) {
       const std::string text = p.mode.text();
-      for (Interaction L : p.mode.letters)
-        if (L != Interaction::kSeparate && L != Interaction::kSlideLeft && L != Interaction::kSlideRight &&
-            L != Interaction::kRoll)
-          return "proof for '" + text + "': only the letters s l r n describe motion from rest";
+      if (!motion_letters(p.mode))
+        return "proof for '" + text + "': only the letters s l r n describe motion from rest";
       if (p.kinematic) {
         if (p.mode.letters.empty() || p.mode.letters.size() > k)
           return "a dead prefix of the wrong length: '" + text + "'";

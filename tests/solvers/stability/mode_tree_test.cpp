@@ -339,6 +339,19 @@ TEST(ModeTree, ForgedCompletenessProofsAreRejected) {
     out.push_back(c);
   });
   EXPECT_NE(check_stability(scene, g, relabelled), "");
+  // A moving witness in a letter that is no motion from rest (m) is refused, in the API and in a file.
+  StabilityResult<Q> maintain = r;
+  maintain.verdict = StabilityVerdict::kWeaklyStable;
+  maintain.has_moving = true;
+  maintain.proofs = ModeProofs<Q>();
+  maintain.moving = {ModeString{std::vector<Interaction>(6, Interaction::kMaintain)}, Vec<Q>::Zero(12),
+                     (Vec<Q>(3) << 0, 1, 0).finished()};
+  EXPECT_NE(check_stability(scene, g, maintain), "");
+  std::string cert = stability_certificate(text, g, strong_stability<Q>(scene, (Vec<Q>(3) << 0, 1, 0).finished()));
+  const std::size_t at = cert.find("\"mode\": \"");
+  ASSERT_NE(at, std::string::npos);
+  cert.replace(at + 9, 6, "mmmmmm");
+  EXPECT_THROW(check_stability_certificate(exact::JsonInput::parse(cert, "forged.json")), exact::InputError);
 }
 
 TEST(ModeTree, CoverageWalksOnlyWhatTheListsSpellOut) {
