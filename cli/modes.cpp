@@ -28,17 +28,10 @@ struct ModesOptions {
   std::string certificate;
 };
 
-std::vector<bool> touching_of(const geometry::PlanarScene& scene) {
-  std::vector<bool> t;
-  for (const auto& f : scene.fixels) t.push_back(f.frame.touching());
-  return t;
-}
-
 }  // namespace
 
-json modes_json(const geometry::PlanarScene& scene, const solvers::ContactModes& m, bool kinematic,
-                const std::string& certificate) {
-  const std::vector<bool> touching = touching_of(scene);
+json modes_json(const solvers::ContactModes& m, bool kinematic, const std::string& certificate) {
+  const std::vector<bool>& touching = m.alphabet.rules.touching;
   const auto& tree = m.tree;
   std::map<std::string, long> groups;
   for (const auto& mode : tree.modes) ++groups[solvers::mode_group(mode, touching)];
@@ -78,12 +71,12 @@ solvers::ContactModes modes_of(const geometry::PlanarScene& scene, const std::st
 
 namespace {
 
-int report(const ModesOptions& o, const geometry::PlanarScene& scene, const solvers::ContactModes& m) {
+int report(const ModesOptions& o, const solvers::ContactModes& m) {
   if (o.common.json) {
-    std::cout << modes_json(scene, m, o.kinematic, o.certificate).dump() << "\n";
+    std::cout << modes_json(m, o.kinematic, o.certificate).dump() << "\n";
     return 0;
   }
-  const std::vector<bool> touching = touching_of(scene);
+  const std::vector<bool>& touching = m.alphabet.rules.touching;
   const auto& tree = m.tree;
   std::map<std::string, long> groups;
   for (const auto& mode : tree.modes) ++groups[solvers::mode_group(mode, touching)];
@@ -115,7 +108,7 @@ int run_modes(const ModesOptions& o) {
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
   const solvers::ContactModes m = modes_of(scene, o.common.arith, o.table2, o.unions, o.max_nodes, o.common.time_limit);
   if (!o.certificate.empty()) write_text_file(o.certificate, solvers::modes_certificate(text, m));
-  return report(o, scene, m);
+  return report(o, m);
 }
 
 }  // namespace

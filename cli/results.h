@@ -39,8 +39,7 @@ std::string finger_svg(const geometry::PlanarScene& scene, const solvers::Finger
 // them) and the JSON of `modes --json`.
 solvers::ContactModes modes_of(const geometry::PlanarScene& scene, const std::string& arith, const std::string& table2,
                                bool unions, long max_nodes, double time_limit);
-json modes_json(const geometry::PlanarScene& scene, const solvers::ContactModes& m, bool kinematic,
-                const std::string& certificate);
+json modes_json(const solvers::ContactModes& m, bool kinematic, const std::string& certificate);
 
 // cone.cpp: the mode named by --mode (InputError naming `file` and --mode otherwise), the exact and the
 // float cone, and the --svg picture.

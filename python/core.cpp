@@ -118,7 +118,7 @@ std::string modes(const Scene& s, bool kinematic, const std::string& table2, boo
                   const std::string& certificate) {
   const solvers::ContactModes m = cli::modes_of(s.scene, arith, table2, unions, 1L << 22, 0);
   if (!certificate.empty()) cli::write_text_file(certificate, solvers::modes_certificate(s.text, m));
-  return cli::modes_json(s.scene, m, kinematic, certificate).dump();
+  return cli::modes_json(m, kinematic, certificate).dump();
 }
 
 std::string region(const Scene& s) { return cli::region_json(solvers::stable_region<Q>(s.scene)).dump(); }
