@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Forged certificates (issue 17; UCP in full, cone, and the digest of stability): each forgery of a valid certificate must be INVALID (exit 2, with the
+# Forged certificates (issue 17; UCP in full, cone, G_goal, and the digest of stability): each forgery of a valid certificate must be INVALID (exit 2, with the
 # reason) and each genuine one VALID (exit 0), under a memory and a time cap. The forgeries change the
 # problem (with and without a recomputed digest), the digest, the format, the tree (cycles, shared children,
 # unreachable or missing nodes, out-of-range indices), the Farkas vectors, the pair, and add unknown keys.
@@ -197,5 +197,44 @@ forge st_digest 's/"problem_sha256": "[0-9a-f]/"problem_sha256": "x/' "$work/st.
 check 2 'problem_sha256 is not the digest of the embedded scene' check "$work/st_digest.json"
 forge st_extra 's/"verdict"/"trusted": true, "verdict"/' "$work/st.json"
 check 2 '$.trusted: unknown field' check "$work/st_extra.json"
+
+# ---- G_goal certificates (design --insertable): the witness outside every set of Table 5, a push point ----
+echo '{"candidates": [["7/5", 0], [2, "1/6"], [0, "7/5"]]}' > "$work/three.json"
+"$cc" design "$s/bt2002_fig10_pentagon_insert.json" --candidates "$work/three.json" --goal-push --out "$work/goal" > /dev/null
+gc=$work/goal/placement_1_goal.cert.json
+check 0 'goal_nonempty certificate is VALID for' check "$gc" --problem "$work/goal/placement_1.json"
+check 0 'holds the frictionless push at the push point' check "$gc"
+check 2 'is about another problem than' check "$gc" --problem "$s/bt2002_fig10_pentagon_insert.json"
+forge g_digest 's/"problem_sha256": "[0-9a-f]/"problem_sha256": "x/' "$gc"
+check 2 'problem_sha256 is not the digest of the embedded scene' check "$work/g_digest.json"
+forge g_extra 's/"outside"/"trusted": true, "outside"/' "$gc"
+check 2 '$.trusted: unknown field' check "$work/g_extra.json"
+forge g_extra_set 's/"motzkin"/"redundant": true, "motzkin"/' "$gc"
+check 2 '$.outside[0].redundant: unknown field' check "$work/g_extra_set.json"
+forge g_wrench 's/"wrench": \[\n  "[^"]*"/"wrench": [\n  "12345"/' "$gc"
+check 2 'the wrench is not a positive multiple of the push at the push point' check "$work/g_wrench.json"
+forge g_push_moved 's/"push": \[\n  "49\/46",\n  "89\/46"/"push": ["3\/2", "3\/2"/' "$gc"
+check 2 'the wrench is not a positive multiple of the push at the push point' check "$work/g_push_moved.json"
+forge g_push_vertex 's/"push": \[\n  "49\/46",\n  "89\/46"/"push": ["1", "2"/' "$gc"
+check 2 'the push point is not a boundary point that is not a polygon vertex' check "$work/g_push_vertex.json"
+forge g_push_inside 's/"push": \[\n  "49\/46",\n  "89\/46"/"push": ["1", "1"/' "$gc"
+check 2 'the push point is not a point on the polygon boundary' check "$work/g_push_inside.json"
+forge g_lifted 's/"wrench": \[[^]]*\],\n "push": \[[^]]*\]/"wrench": ["0", "1", "0"]/' "$gc"
+check 2 'the Motzkin vector of sss in state 000 does not prove the wrench outside its cone' check "$work/g_lifted.json"
+forge g_zero 's/"wrench": \[[^]]*\],\n "push": \[[^]]*\]/"wrench": ["0", "0", "0"]/' "$gc"
+check 2 'the wrench is zero' check "$work/g_zero.json"
+forge g_dropped 's/"outside": \[\n  {[^}]*},/"outside": [/' "$gc"
+check 2 '"outside" has 25 sets, eq. (21) / Table 5 has 26' check "$work/g_dropped.json"
+forge g_state 's/"state": "000"/"state": "111"/' "$gc"
+check 2 'set 0 is not sss in state 000' check "$work/g_state.json"
+forge g_motzkin_zero 's/"motzkin": \[\n    "1",\n    "1",\n    "1"/"motzkin": ["0", "0", "0"/' "$gc"
+check 2 'the Motzkin vector of sss in state 000 does not prove' check "$work/g_motzkin_zero.json"
+forge g_motzkin_short 's/"motzkin": \[\n    "1",/"motzkin": [/' "$gc"
+check 2 '$.outside[0].motzkin: expected an array of 3 numbers' check "$work/g_motzkin_short.json"
+forge g_gap 's/\\"gap\\": \\"0\\"/\\"gap\\": \\"1\/100\\"/' "$gc"
+sed -z "s/\"problem_sha256\": \"[0-9a-f]*\"/\"problem_sha256\": \"$(digest "$work/g_gap.json")\"/" "$work/g_gap.json" > "$work/g_gap_redigested.json"
+check 2 'fixel 0 does not touch: the scene is not a goal configuration' check "$work/g_gap_redigested.json"
+forge g_kind 's/"goal_nonempty"/"goal_empty"/' "$gc"
+check 2 'expected a certificate kind' check "$work/g_kind.json"
 
 summary forged_certificates
