@@ -55,6 +55,8 @@ grep -qE "goal_misses_wrench [1-9]" goal.txt || fail "no placement rejected for 
 grep -qE "no_push_in_goal [1-9]" push.txt || fail "no placement rejected for lacking a seating push"
 grep -q '"push"' push/placement_1_goal.cert.json || fail "the G_goal certificate names no push point"
 "$cc" check push/placement_1_goal.cert.json | grep -q "holds the frictionless push" || fail "push certificate not VALID"
+"$cc" design "$disk" --fixels 2 --candidates 12 --goal-push --top 1 --out disk2 > /dev/null || fail "disk goal-push run exit $?"
+"$cc" check disk2/placement_1_goal.cert.json | grep -q "every set of eq. (21)" || fail "2-fixel disk push certificate not VALID"
 
 # A cone of wrenches and two fixels on a disk: each generator's certificate checks.
 "$cc" design "$disk" --fixels 2 --candidates 12 --stable-under "cone:0,-1,0;1,-4,0" --top 2 --out cone > cone.txt ||
