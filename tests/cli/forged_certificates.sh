@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Forged certificates (issue 17; UCP in full, cone, and the digest of stability): each forgery of a valid certificate must be INVALID (exit 2, with the
+# Forged certificates (issue 17; UCP in full, cone, stability and modes): each forgery of a valid certificate must be INVALID (exit 2, with the
 # reason) and each genuine one VALID (exit 0), under a memory and a time cap. The forgeries change the
 # problem (with and without a recomputed digest), the digest, the format, the tree (cycles, shared children,
 # unreachable or missing nodes, out-of-range indices), the Farkas vectors, the pair, and add unknown keys.
@@ -197,5 +197,31 @@ forge st_digest 's/"problem_sha256": "[0-9a-f]/"problem_sha256": "x/' "$work/st.
 check 2 'problem_sha256 is not the digest of the embedded scene' check "$work/st_digest.json"
 forge st_extra 's/"verdict"/"trusted": true, "verdict"/' "$work/st.json"
 check 2 '$.trusted: unknown field' check "$work/st_extra.json"
+
+# ---- vectors that hold only for wrong rows: the checker rebuilds Table 2's rows itself ----
+# redigest FILE: sets FILE's problem_sha256 to the digest of its (changed) embedded scene.
+redigest() { sed -i "s/\"problem_sha256\": *\"[0-9a-f]*\"/\"problem_sha256\": \"$(digest "$1")\"/" "$1"; }
+# the kinetic friction of the embedded scene changed: the sliding modes' proofs were for the old rows
+forge st_mu_k 's/\\"mu_k\\": \\"1.2\\"/\\"mu_k\\": \\"0.1\\"/' "$work/st.json"
+redigest "$work/st_mu_k.json"
+check 2 'does not verify' check "$work/st_mu_k.json"
+# the static friction changed: the resting forces leave their friction cones
+forge st_mu_s 's/\\"mu_s\\": \\"1.2\\"/\\"mu_s\\": \\"0.1\\"/' "$work/st.json"
+redigest "$work/st_mu_s.json"
+check 2 'outside its static friction cone' check "$work/st_mu_s.json"
+# l and r swapped in every proof (a sign flipped in each sliding row)
+perl -0pe 's/("mode": ")([slrn]+)"/$1 . ($2 =~ tr{lr}{rl}r) . "\""/ge' "$work/st.json" > "$work/st_lr.json"
+check 2 'certificate is INVALID' check "$work/st_lr.json"
+# a cone witness for another friction coefficient
+forge cn_mu 's/\\"mu_s\\": \\"0.2\\"/\\"mu_s\\": \\"0.3\\"/' "$cn"
+redigest "$work/cn_mu.json"
+check 2 'K z != P g' check "$work/cn_mu.json"
+# the modes of the mirror image (every l read as r): the accelerations do not realise them
+"$cc" modes "$s/bt2002_section7_disk.json" --certificate "$work/modes.json" > /dev/null
+check 0 'modes certificate is VALID' check "$work/modes.json" --problem "$s/bt2002_section7_disk.json"
+forge modes_lr 's/"mode": "sl"/"mode": "sr"/' "$work/modes.json"
+check 2 'does not realise it' check "$work/modes_lr.json"
+forge modes_dead_lr 's/"prefix": "\([a-z]*\)l"/"prefix": "\1r"/' "$work/modes.json"
+check 2 'certificate is INVALID' check "$work/modes_dead_lr.json"
 
 summary forged_certificates
