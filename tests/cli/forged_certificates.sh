@@ -205,17 +205,25 @@ redigest() { sed -i "s/\"problem_sha256\": *\"[0-9a-f]*\"/\"problem_sha256\": \"
 forge st_mu_k 's/\\"mu_k\\": \\"1.2\\"/\\"mu_k\\": \\"0.1\\"/' "$work/st.json"
 redigest "$work/st_mu_k.json"
 check 2 'does not verify' check "$work/st_mu_k.json"
-# the static friction changed: the resting forces leave their friction cones
-forge st_mu_s 's/\\"mu_s\\": \\"1.2\\"/\\"mu_s\\": \\"0.1\\"/' "$work/st.json"
+# the static friction changed where g = (1, -2, 1) needs it (unstable at mu_s = 0.1): the resting forces leave
+# their friction cones
+"$cc" stability "$s/bt2002_section7_disk.json" --wrench 1,-2,1 --certificate "$work/st2.json" > /dev/null
+check 0 'strongly_stable' check "$work/st2.json"
+forge st_mu_s 's/\\"mu_s\\": \\"1.2\\"/\\"mu_s\\": \\"0.1\\"/' "$work/st2.json"
 redigest "$work/st_mu_s.json"
 check 2 'outside its static friction cone' check "$work/st_mu_s.json"
 # l and r swapped in every proof (a sign flipped in each sliding row)
 perl -0pe 's/("mode": ")([slrn]+)"/$1 . ($2 =~ tr{lr}{rl}r) . "\""/ge' "$work/st.json" > "$work/st_lr.json"
 check 2 'certificate is INVALID' check "$work/st_lr.json"
-# a cone witness for another friction coefficient
-forge cn_mu 's/\\"mu_s\\": \\"0.2\\"/\\"mu_s\\": \\"0.3\\"/' "$cn"
+# a cone witness with a friction force, for another friction coefficient; a witness for another inertia
+"$cc" cone "$s/bt2002_section7_disk.json" --mode ns --certificate "$work/cone_ns.json" > /dev/null
+check 0 'cone_nonempty certificate is VALID' check "$work/cone_ns.json"
+forge cn_mu 's/\\"mu_s\\": \\"1.2\\"/\\"mu_s\\": \\"0.1\\"/' "$work/cone_ns.json"
 redigest "$work/cn_mu.json"
 check 2 'K z != P g' check "$work/cn_mu.json"
+forge cn_inertia 's/\\"inertia\\": 1 }/\\"inertia\\": 2 }/' "$cn"
+redigest "$work/cn_inertia.json"
+check 2 'K z != P g' check "$work/cn_inertia.json"
 # the modes of the mirror image (every l read as r): the accelerations do not realise them
 "$cc" modes "$s/bt2002_section7_disk.json" --certificate "$work/modes.json" > /dev/null
 check 0 'modes certificate is VALID' check "$work/modes.json" --problem "$s/bt2002_section7_disk.json"
