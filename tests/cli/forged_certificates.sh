@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Forged certificates (issue 17; UCP in full, cone, G_goal, and the digest of stability): each forgery of a valid certificate must be INVALID (exit 2, with the
+# Forged certificates (issue 17; UCP in full, cone, G_goal, stability and modes): each forgery of a valid certificate must be INVALID (exit 2, with the
 # reason) and each genuine one VALID (exit 0), under a memory and a time cap. The forgeries change the
 # problem (with and without a recomputed digest), the digest, the format, the tree (cycles, shared children,
 # unreachable or missing nodes, out-of-range indices), the Farkas vectors, the pair, and add unknown keys.
@@ -236,5 +236,38 @@ sed -z "s/\"problem_sha256\": \"[0-9a-f]*\"/\"problem_sha256\": \"$(digest "$wor
 check 2 'fixel 0 does not touch: the scene is not a goal configuration' check "$work/g_gap_redigested.json"
 forge g_kind 's/"goal_nonempty"/"goal_empty"/' "$gc"
 check 2 'expected a certificate kind' check "$work/g_kind.json"
+# ---- vectors that hold only for wrong rows: the checker rebuilds Table 2's rows itself ----
+# redigest FILE: sets FILE's problem_sha256 to the digest of its (changed) embedded scene.
+redigest() { sed -i "s/\"problem_sha256\": *\"[0-9a-f]*\"/\"problem_sha256\": \"$(digest "$1")\"/" "$1"; }
+# the kinetic friction of the embedded scene changed: the sliding modes' proofs were for the old rows
+forge st_mu_k 's/\\"mu_k\\": \\"1.2\\"/\\"mu_k\\": \\"0.1\\"/' "$work/st.json"
+redigest "$work/st_mu_k.json"
+check 2 'does not verify' check "$work/st_mu_k.json"
+# the static friction changed where g = (1, -2, 1) needs it (unstable at mu_s = 0.1): the resting forces leave
+# their friction cones
+"$cc" stability "$s/bt2002_section7_disk.json" --wrench 1,-2,1 --certificate "$work/st2.json" > /dev/null
+check 0 'strongly_stable' check "$work/st2.json"
+forge st_mu_s 's/\\"mu_s\\": \\"1.2\\"/\\"mu_s\\": \\"0.1\\"/' "$work/st2.json"
+redigest "$work/st_mu_s.json"
+check 2 'outside its static friction cone' check "$work/st_mu_s.json"
+# l and r swapped in every proof (a sign flipped in each sliding row)
+perl -0pe 's/("mode": ")([slrn]+)"/$1 . ($2 =~ tr{lr}{rl}r) . "\""/ge' "$work/st.json" > "$work/st_lr.json"
+check 2 'certificate is INVALID' check "$work/st_lr.json"
+# a cone witness with a friction force, for another friction coefficient; a witness for another inertia
+"$cc" cone "$s/bt2002_section7_disk.json" --mode ns --certificate "$work/cone_ns.json" > /dev/null
+check 0 'cone_nonempty certificate is VALID' check "$work/cone_ns.json"
+forge cn_mu 's/\\"mu_s\\": \\"1.2\\"/\\"mu_s\\": \\"0.1\\"/' "$work/cone_ns.json"
+redigest "$work/cn_mu.json"
+check 2 'K z != P g' check "$work/cn_mu.json"
+forge cn_inertia 's/\\"inertia\\": 1 }/\\"inertia\\": 2 }/' "$cn"
+redigest "$work/cn_inertia.json"
+check 2 'K z != P g' check "$work/cn_inertia.json"
+# the modes of the mirror image (every l read as r): the accelerations do not realise them
+"$cc" modes "$s/bt2002_section7_disk.json" --certificate "$work/modes.json" > /dev/null
+check 0 'modes certificate is VALID' check "$work/modes.json" --problem "$s/bt2002_section7_disk.json"
+forge modes_lr 's/"mode": "sl"/"mode": "sr"/' "$work/modes.json"
+check 2 'does not realise it' check "$work/modes_lr.json"
+forge modes_dead_lr 's/"prefix": "\([a-z]*\)l"/"prefix": "\1r"/' "$work/modes.json"
+check 2 'certificate is INVALID' check "$work/modes_dead_lr.json"
 
 summary forged_certificates
