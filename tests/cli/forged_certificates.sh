@@ -169,7 +169,7 @@ check 2 'is about another problem than' check "$ce" --problem "$s/bt2002_section
 forge ce_mode 's/"mode": "lr"/"mode": "nn"/' "$ce"
 check 2 'certificate is INVALID' check "$work/ce_mode.json"
 forge ce_bad_mode 's/"mode": "lr"/"mode": "lx"/' "$ce"
-check 2 "mode: letter 2 ('x')" check "$work/ce_bad_mode.json"
+check 2 "mode: fixel 1's letter 'x'" check "$work/ce_bad_mode.json"
 forge ce_zero 's/"motzkin": \[[^]]*\]/"motzkin":["0","0","0","0"]/' "$ce"
 check 2 'y^T K is zero on every strict component' check "$work/ce_zero.json"
 forge ce_negated 's/"motzkin": \[\n *"-5"/"motzkin":["5"/' "$ce"
