@@ -11,18 +11,18 @@
 
 namespace contactcert::cli {
 
-/// One mark per piece whose colour(label) is not empty: edge pieces as segments, disk arcs sampled
+/// One mark per piece whose style(label) has a colour: edge pieces as segments, disk arcs sampled
 /// counter-clockwise, single points as dots.
 template <class Label>
 std::vector<BoundaryMark> boundary_marks(const geometry::PlanarScene& scene,
                                          const solvers::BoundaryPieces<exact::Q, Label>& pieces,
-                                         const std::function<std::string(Label)>& colour) {
+                                         const std::function<MarkStyle(Label)>& style) {
   std::vector<BoundaryMark> marks;
   if (const auto* poly = std::get_if<geometry::PolygonShape>(&scene.workpiece.shape)) {
     const auto& V = poly->vertices;
     for (const auto& p : pieces.edges) {
-      const std::string c = colour(p.label);
-      if (c.empty()) continue;
+      const MarkStyle c = style(p.label);
+      if (c.colour.empty()) continue;
       const auto& a = V[p.edge];
       const auto& b = V[(p.edge + 1) % V.size()];
       auto at = [&](const exact::Q& s) {
@@ -36,8 +36,8 @@ std::vector<BoundaryMark> boundary_marks(const geometry::PlanarScene& scene,
     const auto& d = std::get<geometry::DiskShape>(scene.workpiece.shape);
     const double cx = d.center.x.get_d(), cy = d.center.y.get_d(), r = d.radius.get_d();
     for (const auto& p : pieces.arcs) {
-      const std::string c = colour(p.label);
-      if (c.empty()) continue;
+      const MarkStyle c = style(p.label);
+      if (c.colour.empty()) continue;
       const double a0 = std::atan2(p.from(1).get_d(), p.from(0).get_d());
       double a1 = std::atan2(p.to(1).get_d(), p.to(0).get_d());
       const bool point = p.from == p.to && p.from_closed && p.to_closed;
@@ -53,5 +53,13 @@ std::vector<BoundaryMark> boundary_marks(const geometry::PlanarScene& scene,
   }
   return marks;
 }
+
+/// The finger pushes by verdict: green strongly stable, yellow only weakly, red unstable (verdict_colour).
+std::vector<BoundaryMark> verdict_marks(const geometry::PlanarScene& scene,
+                                        const solvers::BoundaryPieces<exact::Q, solvers::StabilityVerdict>& pushes);
+
+/// The frictionless pushes that seat the workpiece from any contact state (G_goal), in green.
+std::vector<BoundaryMark> seating_marks(const geometry::PlanarScene& scene,
+                                        const solvers::BoundaryPieces<exact::Q, bool>& pushes);
 
 }  // namespace contactcert::cli

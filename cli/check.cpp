@@ -8,9 +8,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
+#include "cli/contact_forces.h"
 #include "cli/results.h"
 #include "exact/json_input.h"
 #include "exact/sha256.h"
+#include "geometry/scene_json.h"
 #include "solvers/design/goal_certificate.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/stability_certificate.h"
@@ -32,6 +34,7 @@ struct CheckOutcome {
   bool valid = false;
   std::string kind, reason, digest;
   nlohmann::ordered_json details = nlohmann::ordered_json::object();
+  std::string text;  ///< readable lines of the evidence (the contact forces of a stability witness)
 };
 
 /// Whether a certificate of this kind embeds a planar scene (else a UCP problem).
@@ -41,8 +44,7 @@ bool embeds_scene(const std::string& kind) {
 
 /// The problem a certificate embeds: a UCP problem as JSON, a scene as JSON text.
 exact::JsonInput embedded_problem(const exact::JsonInput& cert, const std::string& kind) {
-  if (embeds_scene(kind))
-    return exact::JsonInput::parse(cert.at("scene").string(), cert.file() + " (embedded scene)");
+  if (embeds_scene(kind)) return exact::JsonInput::parse(cert.at("scene").string(), cert.file() + " (embedded scene)");
   return cert.at("problem");
 }
 
@@ -97,9 +99,54 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
       kind + "\"");
 }
 
+/// The contact forces of a checked stability witness as a person reads them (cli/contact_forces.h), recomputed
+/// from the verified raw vector `forces` under `key`. The certificate's own readable "contacts", if any, must be
+/// exactly these, else the certificate is INVALID: it would show a person numbers that were not checked.
+void add_contacts(const exact::JsonInput& evidence, const std::string& key, const geometry::PlanarScene& scene,
+                  const std::vector<Eigen::Index>& touching, CheckOutcome& c, json& view, std::string& text) {
+  const exact::Vec<exact::Q> forces = evidence.at("forces").rational_vector(2 * touching.size());
+  view = contacts_json(scene, touching, forces);
+  text = contacts_text(scene, touching, forces, "    ");
+  if (const auto given = evidence.find("contacts");
+      given && given->canonical_text() != exact::JsonInput::parse(view.dump(), "contacts").canonical_text()) {
+    c.valid = false;
+    c.reason = key + ".contacts are not the world forces of the checked " + key + ".forces";
+  }
+}
+
+/// The world forces of a valid stability certificate's resting and moving witnesses, in details and text.
+void stability_view(const exact::JsonInput& cert, CheckOutcome& c) {
+  const exact::JsonInput embedded = embedded_problem(cert, c.kind);
+  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
+  std::vector<Eigen::Index> touching;
+  solvers::touching_scene(scene, &touching);
+  const exact::Vec<exact::Q> g = cert.at("wrench").rational_vector(3);
+  c.details["wrench"] = exact_json(g);
+  c.text = "  wrench g = " + tuple_text(g) + "\n";
+  if (cert.at("resting").find("forces")) {
+    json view;
+    std::string lines;
+    add_contacts(cert.at("resting"), "resting", scene, touching, c, view, lines);
+    c.details["resting_contacts"] = view;
+    c.text += "  at rest with contact forces (world coordinates; they balance g):\n" + lines;
+  } else {
+    c.text += "  at rest: no contact forces in the friction cones balance g (Motzkin vector checked)\n";
+  }
+  if (auto moving = cert.find("moving")) {
+    json view;
+    std::string lines;
+    add_contacts(*moving, "moving", scene, touching, c, view, lines);
+    const auto a = moving->at("acceleration").rational_vector(3);
+    c.details["moving"] = {{"mode", moving->at("mode").string()}, {"acceleration", exact_json(a)}, {"contacts", view}};
+    c.text += "  moves in mode '" + moving->at("mode").string() + "' with acceleration " + tuple_text(a) +
+              ", contact forces (world coordinates):\n" + lines;
+  }
+}
+
 /// The answer for one certificate, checked against `problem_path` too unless it is empty.
 CheckOutcome check_certificate(const exact::JsonInput& cert, const std::string& problem_path) {
   CheckOutcome c = check_any(cert);
+  if (c.valid && c.kind == "stability") stability_view(cert, c);
   const exact::JsonInput problem = embedded_problem(cert, c.kind);
   c.digest = problem.canonical_sha256();
   if (!problem_path.empty()) {
@@ -136,8 +183,8 @@ int run_check(const CheckOptions& o) {
     std::cout << outcome_json(c, o.problem).dump() << "\n";
   } else {
     std::cout << "check " << o.file << ": " << c.kind << " certificate is " << (c.valid ? "VALID" : "INVALID")
-              << (o.problem.empty() || !c.valid ? "" : " for " + o.problem) << "\n  " << c.reason
-              << "\n  problem sha256 " << c.digest << "\n";
+              << (o.problem.empty() || !c.valid ? "" : " for " + o.problem) << "\n  " << c.reason << "\n"
+              << (c.valid ? c.text : "") << "  problem sha256 " << c.digest << "\n";
   }
   return c.valid ? 0 : 2;
 }

@@ -7,8 +7,8 @@
 
 #include "cli/command.h"
 #include "cli/cone_svg.h"
-#include "cli/results.h"
 #include "cli/json_out.h"
+#include "cli/results.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -36,14 +36,22 @@ struct ConeOptions {
 
 const char* interaction_name(solvers::Interaction l) {
   switch (l) {
-    case solvers::Interaction::kSeparate: return "separate";
-    case solvers::Interaction::kApproach: return "approach";
-    case solvers::Interaction::kUnconstrained: return "unconstrained";
-    case solvers::Interaction::kSlideLeft: return "slide left";
-    case solvers::Interaction::kSlideRight: return "slide right";
-    case solvers::Interaction::kRoll: return "roll";
-    case solvers::Interaction::kMaintain: return "maintain";
-    case solvers::Interaction::kSeparatePrinted: return "separate, a_n >= 0 as Table 2 prints it";
+    case solvers::Interaction::kSeparate:
+      return "separate";
+    case solvers::Interaction::kApproach:
+      return "approach";
+    case solvers::Interaction::kUnconstrained:
+      return "unconstrained";
+    case solvers::Interaction::kSlideLeft:
+      return "slide left";
+    case solvers::Interaction::kSlideRight:
+      return "slide right";
+    case solvers::Interaction::kRoll:
+      return "roll";
+    case solvers::Interaction::kMaintain:
+      return "maintain";
+    case solvers::Interaction::kSeparatePrinted:
+      return "separate, a_n >= 0 as Table 2 prints it";
   }
   return "";
 }
@@ -99,7 +107,9 @@ std::string line_of_force_text(const exact::Vec<Q>& g, const geometry::Point2& c
 nlohmann::json line_of_force_json(const exact::Vec<Q>& g, const geometry::Point2& com) {
   const solvers::LineOfForce l = solvers::line_of_force(g, com);
   nlohmann::json j;
-  j["kind"] = l.kind == solvers::LineOfForce::Kind::kForce ? "force" : (l.kind == solvers::LineOfForce::Kind::kPureMoment ? "pure_moment" : "zero");
+  j["kind"] = l.kind == solvers::LineOfForce::Kind::kForce
+                  ? "force"
+                  : (l.kind == solvers::LineOfForce::Kind::kPureMoment ? "pure_moment" : "zero");
   j["direction"] = {to_string(l.direction.x), to_string(l.direction.y)};
   j["through"] = {to_string(l.through.x), to_string(l.through.y)};
   j["torque"] = to_string(l.torque);
@@ -182,7 +192,8 @@ solvers::ModeString cone_mode(const geometry::PlanarScene& scene, const std::str
 
 namespace {
 
-int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const solvers::ModeString& mode, solvers::Route route) {
+int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const solvers::ModeString& mode,
+              solvers::Route route) {
   const solvers::WrenchCone<Q> c = solvers::wrench_cone<Q>(scene, mode, route);
   const geometry::NncForm<Q>& f = c.cone;
   const bool empty = c.status == solvers::ConeStatus::kEmpty;
@@ -197,10 +208,10 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
   std::cout << "contactcert cone: " << o.file << ", mode '" << mode.text() << "' (route " << o.route << ", exact)\n";
   for (std::size_t i = 0; i < scene.fixels.size(); ++i) {
     const auto& fx = scene.fixels[i];
-    std::cout << "  fixel " << i + 1 << ": " << (fx.frame.touching() ? "touching at " : "gap, closest point ")
-              << point_text(fx.frame.point) << ", n = " << point_text(fx.frame.normal) << ", mu_s = " << to_string(fx.mu_s)
-              << ", mu_k = " << to_string(fx.mu_k) << ": " << static_cast<char>(mode.letters[i]) << " ("
-              << interaction_name(mode.letters[i]) << ")\n";
+    std::cout << "  fixel " << i << ": " << (fx.frame.touching() ? "touching at " : "gap, closest point ")
+              << point_text(fx.frame.point) << ", n = " << point_text(fx.frame.normal)
+              << ", mu_s = " << to_string(fx.mu_s) << ", mu_k = " << to_string(fx.mu_k) << ": "
+              << static_cast<char>(mode.letters[i]) << " (" << interaction_name(mode.letters[i]) << ")\n";
   }
   std::cout << "  K z = P g, z >= 0 (eqs. 13-17): K is " << c.form.K.rows() << " x " << c.form.K.cols() << "; z = (";
   for (std::size_t i = 0; i < c.form.names.size(); ++i)
@@ -210,13 +221,17 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
     std::cout << "wrench cone: EMPTY (no external wrench is consistent with this mode)\n";
     return 0;
   }
-  std::cout << "wrench cone: non-empty, dimension " << f.dimension() << "; wrenches g = (f_x, f_y, torque about the com "
-            << point_text(com) << ")\n";
+  std::cout << "wrench cone: non-empty, dimension " << f.dimension()
+            << "; wrenches g = (f_x, f_y, torque about the com " << point_text(com) << ")\n";
   std::cout << "face form (f . g <= 0, or < 0 where strict):\n";
-  for (Eigen::Index r = 0; r < f.face.inequalities.rows(); ++r) std::cout << "  " << row_text(f.face.inequalities, r) << " . g <= 0\n";
-  for (Eigen::Index r = 0; r < f.face.strict.rows(); ++r) std::cout << "  " << row_text(f.face.strict, r) << " . g < 0   (strict)\n";
-  for (Eigen::Index r = 0; r < f.face.equalities.rows(); ++r) std::cout << "  " << row_text(f.face.equalities, r) << " . g = 0\n";
-  std::cout << "span form of the closure: " << f.closure.rays.rows() << " generators, " << f.closure.lines.rows() << " lines\n";
+  for (Eigen::Index r = 0; r < f.face.inequalities.rows(); ++r)
+    std::cout << "  " << row_text(f.face.inequalities, r) << " . g <= 0\n";
+  for (Eigen::Index r = 0; r < f.face.strict.rows(); ++r)
+    std::cout << "  " << row_text(f.face.strict, r) << " . g < 0   (strict)\n";
+  for (Eigen::Index r = 0; r < f.face.equalities.rows(); ++r)
+    std::cout << "  " << row_text(f.face.equalities, r) << " . g = 0\n";
+  std::cout << "span form of the closure: " << f.closure.rays.rows() << " generators, " << f.closure.lines.rows()
+            << " lines\n";
   for (Eigen::Index r = 0; r < f.closure.rays.rows(); ++r)
     std::cout << "  g" << r + 1 << " = " << row_text(f.closure.rays, r) << ": "
               << line_of_force_text(f.closure.rays.row(r).transpose(), com) << "\n";
@@ -239,7 +254,8 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
   return 0;
 }
 
-int run_float(const ConeOptions& o, const geometry::PlanarScene& scene, const solvers::ModeString& mode, solvers::Route route) {
+int run_float(const ConeOptions& o, const geometry::PlanarScene& scene, const solvers::ModeString& mode,
+              solvers::Route route) {
   const solvers::WrenchCone<double> c = solvers::wrench_cone<double>(scene, mode, route);
   const bool empty = c.status == solvers::ConeStatus::kEmpty;
   if (o.common.json) {
@@ -252,8 +268,8 @@ int run_float(const ConeOptions& o, const geometry::PlanarScene& scene, const so
     std::cout << "wrench cone: EMPTY (float decision)\n";
     return 0;
   }
-  std::cout << "wrench cone: non-empty; " << c.cone.face.inequalities.rows() << " closed faces, " << c.cone.face.strict.rows()
-            << " strict, " << c.cone.closure.rays.rows() << " generators\n";
+  std::cout << "wrench cone: non-empty; " << c.cone.face.inequalities.rows() << " closed faces, "
+            << c.cone.face.strict.rows() << " strict, " << c.cone.closure.rays.rows() << " generators\n";
   for (Eigen::Index r = 0; r < c.cone.closure.rays.rows(); ++r)
     std::cout << "  g" << r + 1 << " ~ (" << c.cone.closure.rays(r, 0) << ", " << c.cone.closure.rays(r, 1) << ", "
               << c.cone.closure.rays(r, 2) << ")\n";

@@ -159,10 +159,11 @@ std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat
   for (const auto& m : marks) {
     if (m.points.size() == 1) {
       const P2 q{m.points[0].first, m.points[0].second};
-      s << "<circle cx=\"" << X(q) << "\" cy=\"" << Y(q) << "\" r=\"4\" fill=\"" << m.colour << "\"/>\n";
+      s << "<circle cx=\"" << X(q) << "\" cy=\"" << Y(q) << "\" r=\"4\" fill=\"" << m.style.colour << "\"/>\n";
       continue;
     }
-    s << "<polyline fill=\"none\" stroke=\"" << m.colour << "\" stroke-width=\"5\" stroke-linecap=\"round\" points=\"";
+    s << "<polyline fill=\"none\" stroke=\"" << m.style.colour
+      << "\" stroke-width=\"5\" stroke-linecap=\"round\" points=\"";
     for (const auto& [x, y] : m.points) s << X({x, y}) << "," << Y({x, y}) << " ";
     s << "\"/>\n";
   }
@@ -212,7 +213,11 @@ std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat
     if (l.kind == solvers::LineOfForce::Kind::kForce) {
       any_force = true;
       const P2 a = approx(l.through), d = unit(approx(l.direction));
-      const P2 from = cv.px({a.x - half * d.x, a.y - half * d.y}), to = cv.px({a.x + half * d.x, a.y + half * d.y});
+      // The arrow's tip moves on past a fixel's dot it would end on (the dot would hide the arrowhead).
+      double ahead = half;
+      for (const P2& f : fixel_at)
+        if (std::hypot(a.x + ahead * d.x - f.x, a.y + ahead * d.y - f.y) * cv.scale() < 14) ahead += 0.15 * size;
+      const P2 from = cv.px({a.x - half * d.x, a.y - half * d.y}), to = cv.px({a.x + ahead * d.x, a.y + ahead * d.y});
       s << "<line x1=\"" << num(from.x) << "\" y1=\"" << num(from.y) << "\" x2=\"" << num(to.x) << "\" y2=\""
         << num(to.y) << "\" stroke=\"" << kForce << "\" stroke-width=\"1.5\" marker-end=\"url(#arrow)\"/>\n";
       cv.cover(from);
@@ -259,6 +264,16 @@ std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat
   if (any_gap)
     legend.push_back({"<circle cx=\"11\" cy=\"-4\" r=\"4\" fill=\"white\" stroke=\"black\"/>", "fixel not touching"});
   legend.push_back({"<path d=\"M6,-4 h10 M11,-9 v10\" stroke=\"black\"/>", "centre of mass; fixels numbered from 0"});
+  std::vector<std::string> explained;
+  for (const auto& mark : marks) {
+    if (mark.style.meaning.empty() ||
+        std::find(explained.begin(), explained.end(), mark.style.meaning) != explained.end())
+      continue;
+    explained.push_back(mark.style.meaning);
+    legend.push_back({"<line x1=\"2\" y1=\"-4\" x2=\"20\" y2=\"-4\" stroke=\"" + mark.style.colour +
+                          "\" stroke-width=\"5\" stroke-linecap=\"round\"/>",
+                      mark.style.meaning});
+  }
   const double m = 8, title_h = 20, line_h = 16;
   double legend_w = 0;
   for (const auto& e : legend) legend_w = std::max(legend_w, 30 + 6.3 * static_cast<double>(e.text.size()));

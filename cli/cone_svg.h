@@ -12,15 +12,20 @@
 
 namespace contactcert::cli {
 
+/// How a boundary mark is drawn: its colour and what it means (the legend's text; empty: no legend entry).
+struct MarkStyle {
+  std::string colour, meaning;
+};
+
 /// A coloured piece of the workpiece boundary, in scene coordinates (floats: a picture), drawn over the
 /// workpiece: a polyline, or a dot when it has one point.
 struct BoundaryMark {
   std::vector<std::pair<double, double>> points;
-  std::string colour;
+  MarkStyle style;
 };
 
 /// A complete <svg> element. `rays` and `lines` are the cone's generators as rows (x, y, torque);
-/// lines are drawn in both directions. `title` is printed in the picture.
+/// lines are drawn in both directions. `title` is printed in the picture; the legend explains each mark style.
 std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat<exact::Q>& rays,
                             const exact::Mat<exact::Q>& lines, const std::string& title,
                             const std::vector<BoundaryMark>& marks = {});

@@ -141,9 +141,7 @@ void stability(const DemoOptions& o, HtmlReport& rep) {
       "centre, counter-clockwise):");
   rep.table({"piece of the boundary", "verdict"}, prow);
   rep.figure(
-      wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), "finger pushes",
-                      boundary_marks<solvers::StabilityVerdict>(
-                          scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); })),
+      wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), "finger pushes", verdict_marks(scene, pushes)),
       "Where a frictionless push along the inward normal is strongly stable (green), only weakly stable "
       "(yellow) or unstable (red): the dark line of Figure 5.");
 }
@@ -162,10 +160,9 @@ void insertion(const DemoOptions& o, HtmlReport& rep) {
       const auto ins = solvers::insertion<Q>(scene);
       const auto p = solvers::insertion_pushes<Q>(scene, ins);
       if (std::string(mu) == "0.2")
-        rep.figure(
-            wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), std::string(file) + ", mu = 0.2",
-                            boundary_marks<bool>(scene, p, [](bool in) { return in ? std::string("#1b7837") : ""; })),
-            std::string("Pushes that seat the workpiece from any contact state (green), mu = 0.2: ") + file);
+        rep.figure(wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), std::string(file) + ", mu = 0.2",
+                                   seating_marks(scene, p)),
+                   std::string("Pushes that seat the workpiece from any contact state (green), mu = 0.2: ") + file);
       std::string where;
       for (const auto& e : p.edges)
         if (e.label)
@@ -282,10 +279,7 @@ void own_scenes(const DemoOptions& o, HtmlReport& rep) {
         const auto region = solvers::stable_region<Q>(scene);
         rep.figure(stability_sphere_svg(region, g), name + ": wrench directions, g = (0, -1, 0) marked");
         const auto pushes = solvers::finger_pushes<Q>(scene, region);
-        rep.figure(wrench_cone_svg(
-                       scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), name,
-                       boundary_marks<solvers::StabilityVerdict>(
-                           scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); })),
+        rep.figure(wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), name, verdict_marks(scene, pushes)),
                    name + ": frictionless finger pushes (green strongly stable, yellow weakly, red unstable)");
         rows.push_back({name, "planar", solvers::verdict_name(r.verdict),
                         std::string("certificate ") + (check.valid ? "valid" : "INVALID: " + check.reason)});

@@ -43,17 +43,20 @@ std::string escape(const std::string& s) {
 
 std::string design_svg(const solvers::DesignProblem& problem, const std::vector<solvers::Ranked>& best,
                        const std::vector<std::string>& captions, const std::string& title) {
-  constexpr double kPanel = 260, kCaption = 34, kTop = 30;
+  constexpr double kPanel = 260, kCaption = 34, kTop = 30, kLegend = 52;
   const int columns = static_cast<int>(std::min<std::size_t>(3, std::max<std::size_t>(1, best.size())));
   const int rows = static_cast<int>((std::max<std::size_t>(1, best.size()) + columns - 1) / columns);
+  // Wide enough for the title (sans-serif 14 px: at most ~7.8 px a character) and the legend.
+  const double width = std::max({columns * kPanel, 16 + 7.8 * static_cast<double>(title.size()), 430.0});
+  const double legend_top = kTop + rows * (kPanel + kCaption);
   const Box b = bounds(problem.workpiece.shape);
   const double extent = std::max(b.x1 - b.x0, b.y1 - b.y0);
   const double scale = (kPanel - 60) / (extent > 0 ? extent : 1);
   const double fixel_r = 7;
   std::ostringstream s;
   s.precision(5);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << columns * kPanel << "\" height=\""
-    << kTop + rows * (kPanel + kCaption) << "\" font-family=\"sans-serif\">\n"
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << legend_top + kLegend
+    << "\" font-family=\"sans-serif\">\n"
     << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
     << "<text x=\"8\" y=\"20\" font-size=\"14\">" << escape(title) << "</text>\n";
   for (std::size_t p = 0; p < std::max<std::size_t>(1, best.size()); ++p) {
@@ -78,7 +81,7 @@ std::string design_svg(const solvers::DesignProblem& problem, const std::vector<
     for (const auto& c : problem.candidates)
       s << "<circle cx=\"" << X(c.point.x) << "\" cy=\"" << Y(c.point.y) << "\" r=\"2.2\" fill=\"#777\"/>\n";
     if (p < best.size()) {
-      int label = 1;
+      int label = 0;  // fixels numbered from 0, as in the placement's scene file
       for (int i : best[p].placement) {
         const auto& c = problem.candidates[static_cast<std::size_t>(i)];
         const double nx = c.normal.x.get_d(), ny = c.normal.y.get_d(), nn = std::hypot(nx, ny);
@@ -99,6 +102,16 @@ std::string design_svg(const solvers::DesignProblem& problem, const std::vector<
     }
     s << "</g>\n";
   }
+  // Legend.
+  const double ly = legend_top + 4;
+  s << "<g font-size=\"11\">\n"
+    << "<circle cx=\"15\" cy=\"" << ly + 4 << "\" r=\"6\" fill=\"#c0392b\"/><line x1=\"21\" y1=\"" << ly + 4
+    << "\" x2=\"36\" y2=\"" << ly + 4 << "\" stroke=\"#c0392b\" stroke-width=\"1.5\"/><text x=\"44\" y=\"" << ly + 8
+    << "\">fixel (numbered from 0) and its inward normal at the contact</text>\n"
+    << "<circle cx=\"15\" cy=\"" << ly + 20 << "\" r=\"2.2\" fill=\"#777\"/><text x=\"44\" y=\"" << ly + 24
+    << "\">candidate point</text>\n"
+    << "<circle cx=\"15\" cy=\"" << ly + 36 << "\" r=\"2.5\" fill=\"#234\"/><text x=\"44\" y=\"" << ly + 40
+    << "\">centre of mass</text>\n</g>\n";
   s << "</svg>\n";
   return s.str();
 }

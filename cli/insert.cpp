@@ -89,9 +89,9 @@ json sweep_entry_json(const geometry::PlanarScene& scene, const Q& mu) {
 }
 
 std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<Q, bool>& pushes) {
-  const auto marks = boundary_marks<bool>(scene, pushes, [](bool in) { return in ? std::string("#1b7837") : ""; });
   return wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
-                         "green: frictionless pushes that seat the workpiece from any state", marks);
+                         "green: frictionless pushes that seat the workpiece from any state",
+                         seating_marks(scene, pushes));
 }
 
 namespace {

@@ -94,7 +94,7 @@ json region_data_json(const solvers::StableRegion<Q>& region) {
   for (const auto& c : solvers::strongly_stable_cones(region))
     cones.push_back({{"signs", c.pattern},
                      {"dim", 3},
-                     {"inequalities", json::array()},
+                     {"inequalities", primitive_rows(c.cone.inequalities)},
                      {"strict", primitive_rows(c.cone.strict)},
                      {"equalities", primitive_rows(c.cone.equalities)}});
   return {{"planes", planes}, {"cells", cells}, {"strongly_stable_cones", cones}};

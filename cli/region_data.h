@@ -17,10 +17,8 @@ std::vector<exact::Vec<exact::Q>> cell_representatives(const solvers::StableRegi
 
 /// The "region" object: `planes` (primitive integer rows), `cells` (dimension, sign vector, a representative
 /// of smallest max-norm found among integer vectors with entries in [-24, 24], else the primitive exact point;
-/// label) and `strongly_stable_cones`: the strongly stable cells merged (two cells whose sign vectors differ only
-/// at plane k, + and -, merge with the cell between them when all three are strongly stable: plane k is then
-/// free), each as a face cone (strict rows for + and -, equalities for 0; not minimal). g is strongly stable iff
-/// it lies in one of them.
+/// label) and `strongly_stable_cones`: the strongly stable set as maximal sign cones (solvers/stability/
+/// strong_cones.h), each in face form. g is strongly stable iff it lies in one of them.
 json region_data_json(const solvers::StableRegion<exact::Q>& region);
 
 /// The wrenches of a file: a JSON array of [fx, fy, tz], or text with one "fx,fy,tz" per line (blank lines and

@@ -31,6 +31,11 @@ template <class T>
 json stability_json(const geometry::PlanarScene& scene, const exact::Vec<exact::Q>& g,
                     const solvers::StabilityResult<T>& r, const std::string& arith, const std::string& certificate,
                     const std::optional<solvers::Margin<exact::Q>>& margin);
+/// The `stability` certificate file (solvers/stability/stability_certificate.h) with its readable part: the
+/// witness's world forces under "resting"/"contacts" and "moving"/"contacts" (contacts_json, cli/contact_forces.h).
+/// The checker verifies the raw "forces"; `check` recomputes the contacts from them and compares.
+std::string stability_certificate_file(const std::string& scene_text, const geometry::PlanarScene& scene,
+                                       const exact::Vec<exact::Q>& g, const solvers::StabilityResult<exact::Q>& r);
 json region_json(const solvers::StableRegion<exact::Q>& region);
 json finger_json(const solvers::FingerPushes<exact::Q>& pushes);
 std::string finger_svg(const geometry::PlanarScene& scene, const solvers::FingerPushes<exact::Q>& pushes);

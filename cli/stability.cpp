@@ -8,6 +8,7 @@
 #include "cli/boundary_marks.h"
 #include "cli/boundary_text.h"
 #include "cli/command.h"
+#include "cli/contact_forces.h"
 #include "cli/contact_notes.h"
 #include "cli/json_out.h"
 #include "cli/region_data.h"
@@ -20,7 +21,6 @@
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
-#include "solvers/stability/world_forces.h"
 
 namespace contactcert::cli {
 namespace {
@@ -55,58 +55,6 @@ solvers::StabilityOptions budget(const StabilityOptions& o, exact::Arith arith) 
 }
 
 template <class T>
-json number_json(const T& x) {
-  if constexpr (std::is_same_v<T, Q>)
-    return exact_json(x);
-  else
-    return x;
-}
-
-template <class T>
-json forces_json(const exact::Vec<T>& c) {
-  if constexpr (std::is_same_v<T, Q>)
-    return exact_json(c);
-  else
-    return approx_json(c);
-}
-
-/// Each touching fixel's force in world coordinates, with its components against the frame it states.
-template <class T>
-json contacts_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
-                   const exact::Vec<T>& c) {
-  json out = json::array();
-  for (const auto& w : solvers::world_forces<T>(scene, touching, c))
-    out.push_back({{"fixel", w.fixel},
-                   {"point", forces_json(w.point)},
-                   {"normal", forces_json(w.normal)},
-                   {"tangent", forces_json(w.tangent)},
-                   {"c_n", number_json(w.c_n)},
-                   {"c_t", number_json(w.c_t)},
-                   {"force", forces_json(w.force)},
-                   {"torque", number_json(w.torque)}});
-  return out;
-}
-
-template <class T>
-std::string number_text(const T& x) {
-  if constexpr (std::is_same_v<T, Q>)
-    return exact::to_string(x);
-  else
-    return std::to_string(x);
-}
-
-/// One line per touching fixel: f = c_n n + c_t t in world coordinates, and the frame (n, t).
-template <class T>
-void print_contacts(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
-                    const exact::Vec<T>& c) {
-  for (const auto& w : solvers::world_forces<T>(scene, touching, c))
-    std::cout << "    fixel " << w.fixel << " at " << tuple_text(w.point) << ": force " << tuple_text(w.force)
-              << ", torque " << number_text(w.torque) << "  (c_n = " << number_text(w.c_n)
-              << " along n = " << tuple_text(w.normal) << ", c_t = " << number_text(w.c_t)
-              << " along t = " << tuple_text(w.tangent) << ")\n";
-}
-
-template <class T>
 json witness_json(const solvers::MotionWitness<T>& w) {
   json j;
   j["mode"] = w.mode.text();
@@ -138,7 +86,7 @@ json stability_json(const geometry::PlanarScene& scene, const exact::Vec<Q>& g, 
   j["touching_fixels"] = touching;
   json w;
   if (r.has_resting) {
-    w["resting_forces"] = forces_json(r.resting_forces);
+    w["resting_forces"] = vector_json(r.resting_forces);
     w["resting_contacts"] = contacts_json(scene, r.touching, r.resting_forces);
   }
   if (r.has_moving) {
@@ -161,6 +109,14 @@ template json stability_json(const geometry::PlanarScene&, const exact::Vec<Q>&,
                              const std::string&, const std::string&, const std::optional<solvers::Margin<Q>>&);
 template json stability_json(const geometry::PlanarScene&, const exact::Vec<Q>&, const StabilityResult<double>&,
                              const std::string&, const std::string&, const std::optional<solvers::Margin<Q>>&);
+
+std::string stability_certificate_file(const std::string& scene_text, const geometry::PlanarScene& scene,
+                                       const exact::Vec<Q>& g, const StabilityResult<Q>& r) {
+  json j = json::parse(solvers::stability_certificate(scene_text, g, r));
+  if (r.has_resting) j["resting"]["contacts"] = contacts_json(scene, r.touching, r.resting_forces);
+  if (r.has_moving) j["moving"]["contacts"] = contacts_json(scene, r.touching, r.moving.forces);
+  return j.dump(1) + "\n";
+}
 
 json region_json(const solvers::StableRegion<Q>& region) {
   json modes = json::array();
@@ -194,10 +150,9 @@ json finger_json(const solvers::FingerPushes<Q>& pushes) {
 }
 
 std::string finger_svg(const geometry::PlanarScene& scene, const solvers::FingerPushes<Q>& pushes) {
-  const auto marks = boundary_marks<solvers::StabilityVerdict>(
-      scene, pushes, [](solvers::StabilityVerdict v) { return std::string(verdict_colour(v)); });
   return wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3),
-                         "finger pushes: green strongly stable, yellow weakly, red unstable", marks);
+                         "finger pushes: green strongly stable, yellow weakly, red unstable",
+                         verdict_marks(scene, pushes));
 }
 
 namespace {
@@ -216,14 +171,14 @@ int report(const StabilityOptions& o, const geometry::PlanarScene& scene, const 
             << tiny_gap_notes(scene, "  ");
   if (r.has_resting) {
     std::cout << "  at rest with contact forces (world coordinates; they balance g):\n";
-    print_contacts(scene, r.touching, r.resting_forces);
+    std::cout << contacts_text(scene, r.touching, r.resting_forces, "    ");
   } else {
     std::cout << "  no contact forces in the friction cones balance g (Motzkin certificate found)\n";
   }
   if (r.has_moving) {
     std::cout << "  moves in mode '" << r.moving.mode.text() << "' with acceleration "
               << tuple_text(r.moving.acceleration) << " (eq. 4: M vdot = g + the contact wrenches), contact forces:\n";
-    print_contacts(scene, r.touching, r.moving.forces);
+    std::cout << contacts_text(scene, r.touching, r.moving.forces, "    ");
   } else if (r.has_resting) {
     std::cout << "  no moving mode admits g: " << r.modes_kinematically_feasible
               << " kinematically feasible moving modes, each with a proof for g; every other mode extends one of "
@@ -355,7 +310,7 @@ int run_stability(const StabilityOptions& options) {
     return report(o, scene, g, solvers::strong_stability<double>(scene, exact::to_double(g), budget(o, arith)));
   }
   const auto r = solvers::strong_stability<Q>(scene, g, budget(o, arith));
-  if (!o.certificate.empty()) write_text_file(o.certificate, solvers::stability_certificate(text, g, r));
+  if (!o.certificate.empty()) write_text_file(o.certificate, stability_certificate_file(text, scene, g, r));
   std::optional<solvers::Margin<Q>> margin;
   if (o.margin && r.verdict == solvers::StabilityVerdict::kStronglyStable)
     margin = solvers::stability_margin<Q>(solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o)), g);

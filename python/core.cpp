@@ -74,7 +74,7 @@ WithCertificate stability(const Scene& s, const std::string& wrench, std::string
   const auto r = solvers::strong_stability<Q>(s.scene, g, {a});
   std::string text;
   if (!certificate.empty()) {
-    text = solvers::stability_certificate(s.text, g, r);
+    text = cli::stability_certificate_file(s.text, s.scene, g, r);
     cli::write_text_file(certificate, text);
   }
   std::optional<solvers::Margin<Q>> m;

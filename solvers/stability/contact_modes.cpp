@@ -40,8 +40,8 @@ ModeString read_letters(const exact::JsonInput& j, const ModeAlphabet& alphabet,
     bool known = false;
     for (Interaction L : alphabet.letters(i)) known = known || static_cast<char>(L) == text[i];
     if (!known)
-      j.fail("letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "') is not a letter of fixel " +
-             std::to_string(i + 1) + " in this alphabet");
+      j.fail("fixel " + std::to_string(i) + "'s letter '" + std::string(1, text[i]) +
+             "' is not one of its letters in this alphabet");
     m.letters.push_back(static_cast<Interaction>(text[i]));
   }
   return m;

@@ -43,7 +43,8 @@ YConstraints classify(const geometry::PlanarScene& scene, const ModeString& mode
   return y;
 }
 
-std::string fixel_name(Eigen::Index i) { return std::to_string(i + 1); }
+/// Fixel i in the names of z (c0n, a1t, ...): numbered from 0 like every report (docs/formats.md, Numbering).
+std::string fixel_name(Eigen::Index i) { return std::to_string(i); }
 
 /// One column of K (eq. 15): an acceleration y_j (sign -1 when N flips it) or the force column of
 /// fixel i, C(:, 2n + i) + (coef_sign mu_i) C(:, 3n + i) after R and S.

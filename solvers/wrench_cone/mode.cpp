@@ -66,15 +66,15 @@ ModeParse parse_mode(std::string_view text, const std::vector<bool>& touching) {
     out.fixel = i;
     if (std::string_view("saulrnmS").find(text[i]) == std::string_view::npos) {
       out.status = ModeStatus::kUnknownLetter;
-      out.message =
-          "letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "') is not one of s a u l r n m (or S)";
+      out.message = "fixel " + std::to_string(i) + "'s letter '" + std::string(1, text[i]) +
+                    "' is not one of s a u l r n m (or S)";
       return out;
     }
     const auto l = static_cast<Interaction>(text[i]);
     if (!letter_fits(l, touching[i])) {
       out.status = touching[i] ? ModeStatus::kNeedsGap : ModeStatus::kNeedsContact;
-      out.message = "letter " + std::to_string(i + 1) + " ('" + std::string(1, text[i]) + "'): fixel " +
-                    std::to_string(i + 1) +
+      out.message = "fixel " + std::to_string(i) + "'s letter '" + std::string(1, text[i]) + "': fixel " +
+                    std::to_string(i) +
                     (touching[i] ? " touches, so use one of s l r n m" : " does not touch, so use one of s a u");
       return out;
     }

@@ -124,9 +124,9 @@ check 2 'does_not_exist.json: cannot open the file' cone "$missing" --mode n
 # impossible modes: wrong length, unknown letter, a touching fixel given a gap letter and the converse
 check 2 '--mode: one letter per fixel (2 letters' cone "$m/scene_valid.json" --mode n
 check 2 '--mode: one letter per fixel (2 letters' cone "$m/scene_valid.json" --mode nnn
-check 2 "--mode: letter 2 ('x') is not one of s a u l r n m" cone "$m/scene_valid.json" --mode nx
-check 2 "--mode: letter 1 ('a'): fixel 1 touches" cone "$m/scene_valid.json" --mode an
-check 2 "--mode: letter 1 ('n'): fixel 1 does not touch" cone "$m/scene_gap.json" --mode nn
+check 2 "--mode: fixel 1's letter 'x' is not one of s a u l r n m" cone "$m/scene_valid.json" --mode nx
+check 2 "--mode: fixel 0's letter 'a': fixel 0 touches" cone "$m/scene_valid.json" --mode an
+check 2 "--mode: fixel 0's letter 'n': fixel 0 does not touch" cone "$m/scene_gap.json" --mode nn
 check 2 '--route' cone "$m/scene_valid.json" --mode nn --route bogus
 # bad --wrench and other options of stability / insert
 check 2 '--wrench: "nan" is not an exact number' stability "$m/scene_valid.json" --wrench 1,nan,0

@@ -75,8 +75,8 @@ TEST(Section4, KAndPOfModeNaAreThePapers) {
   // Paper: K = [0 -1 -1; -1 mu -mu; 0 2mu -2mu], P = [0 1 0; -1 0 0; -1 0 -1], mu = 0.2.
   EXPECT_EQ(f.K, mat({{"0", "-1", "-1"}, {"-1", "1/5", "-1/5"}, {"0", "2/5", "-2/5"}}));
   EXPECT_EQ(f.P, mat({{"0", "1", "0"}, {"-1", "0", "0"}, {"-1", "0", "-1"}}));
-  EXPECT_EQ(f.strict, (std::vector<bool>{true, false, false}));  // -a2n > 0
-  EXPECT_EQ(f.names[0], "-a2n");
+  EXPECT_EQ(f.strict, (std::vector<bool>{true, false, false}));  // -a1n > 0 (the paper's -a2n: fixels from 0)
+  EXPECT_EQ(f.names[0], "-a1n");
   // G = P^-1 K: the paper's printed span form [1 -0.2 0.2; 0 -1 -1; -1 -0.2 0.2].
   const Mat<Q> G = *exact::inverse<Q>(f.P) * f.K;
   EXPECT_EQ(G, mat({{"1", "-1/5", "1/5"}, {"0", "-1", "-1"}, {"-1", "-1/5", "1/5"}}));
@@ -131,7 +131,8 @@ TEST(ConeForm, SlidingFrictionOpposesTheSlidingDirection) {
   const ContactModel<Q> m = contact_model<Q>(s);
   const ConeForm<Q> l = cone_form(s, m, mode_of(s, "ls"));
   const ConeForm<Q> r = cone_form(s, m, mode_of(s, "rs"));
-  // The force column of fixel 1 is C_c1n + c_t/c_n * C_c1t with C = [I -A]; rows kept: a1n, a1t, a2n.
+  // The force column of fixel 0 (the paper's fixel 1) is C_c0n + c_t/c_n * C_c0t with C = [I -A]; rows kept: a0n,
+  // a0t, a1n.
   const Q mu(1, 5);
   const Mat<Q> C = m.C();
   Vec<Q> cn(4), ct(4);
@@ -144,8 +145,8 @@ TEST(ConeForm, SlidingFrictionOpposesTheSlidingDirection) {
   EXPECT_EQ(l.K(0, 2), left(0));
   EXPECT_EQ(l.K(1, 2), left(1));
   EXPECT_EQ(r.K(1, 2), right(1));
-  EXPECT_EQ(l.names[2], "c1[n-mu t]");
-  EXPECT_EQ(r.names[2], "c1[n+mu t]");
+  EXPECT_EQ(l.names[2], "c0[n-mu t]");
+  EXPECT_EQ(r.names[2], "c0[n+mu t]");
 }
 
 TEST(Modes, ParseValidatesLettersAgainstTheTouchingState) {

@@ -1,0 +1,30 @@
+// Contact forces as a person reads them: each touching fixel's force as a world vector with its torque, and the
+// components c_n, c_t against the frame (n_i, t_i) stated beside them (solvers/stability/world_forces.h), for
+// the reports of `stability`, the certificates it writes and `check`'s view of them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/json_out.h"
+#include "geometry/planar_scene.h"
+
+namespace contactcert::cli {
+
+/// A vector as exact strings (T = Q) or doubles.
+template <class T>
+json vector_json(const exact::Vec<T>& v);
+
+/// Per touching fixel `fixel`, `point`, `normal`, `tangent`, `c_n`, `c_t`, `force`, `torque`: exact strings
+/// (T = Q) or doubles. `c` is the model's vector (c_1n..c_kn, c_1t..c_kt) of the fixels `touching`.
+template <class T>
+json contacts_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                   const exact::Vec<T>& c);
+
+/// One line per touching fixel, each starting with `indent`: "fixel i at (x, y): force (fx, fy), torque tau
+/// (c_n = .. along n = (..), c_t = .. along t = (..))".
+template <class T>
+std::string contacts_text(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                          const exact::Vec<T>& c, const std::string& indent);
+
+}  // namespace contactcert::cli
