@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -114,10 +115,52 @@ class DoubleDescription {
     return true;
   }
 
-  // Intersects the current cone with { a . y <= 0 } (or = 0) for a row orthogonal to every line.
+  // The state of a run in the ring S, in R (std::int64_t to Z after an overflow): the run goes on
+  // from there exactly as a run in R from the start would.
+  template <class S>
+  explicit DoubleDescription(const DoubleDescription<S>& o)
+      : k_(o.k_),
+        rows_(o.rows_),
+        words_(o.words_),
+        budget_(o.budget_),
+        meter_(o.meter_),
+        processed_(o.processed_),
+        count_(o.count_),
+        coord_(o.count_ * static_cast<size_t>(o.k_)),
+        bits_(o.bits_),
+        common_(words_),
+        tmp_(static_cast<size_t>(k_)) {
+    for (std::size_t i = 0; i < coord_.size(); ++i) rg::from_integer(static_cast<long>(o.coord_[i]), coord_[i]);
+    for (const auto& l : o.lines_) {
+      lines_.emplace_back(l.size());
+      for (std::size_t j = 0; j < l.size(); ++j) rg::from_integer(static_cast<long>(l[j]), lines_.back()[j]);
+    }
+  }
+
+  // Intersects the current cone with { a . y <= 0 } (or = 0) for a row orthogonal to every line. On
+  // RingOverflow the cone is left as it was before the row.
   void add_row(const R* a, bool equality) {
     const std::size_t t = processed_++;
     const std::size_t n = count_;
+    try {
+      intersect(a, equality, t, n);
+    } catch (const exact::RingOverflow&) {
+      count_ = n;
+      processed_ = t;
+      for (std::size_t r = 0; r < n; ++r) bits_[r * words_ + t / 64] &= ~(std::uint64_t{1} << (t % 64));
+      throw;
+    }
+  }
+
+  std::size_t count() const { return count_; }
+  const R* ray(std::size_t r) const { return &coord_[r * static_cast<size_t>(k_)]; }
+  const std::vector<std::vector<R>>& lines() const { return lines_; }
+
+ private:
+  template <class>
+  friend class DoubleDescription;
+
+  void intersect(const R* a, bool equality, std::size_t t, std::size_t n) {
     if (values_.size() < n) values_.resize(n);
     plus_.clear();
     minus_.clear();
@@ -144,11 +187,6 @@ class DoubleDescription {
     compact(first_created);
   }
 
-  std::size_t count() const { return count_; }
-  const R* ray(std::size_t r) const { return &coord_[r * static_cast<size_t>(k_)]; }
-  const std::vector<std::vector<R>>& lines() const { return lines_; }
-
- private:
   // The CPU's popcount instruction (x86-64 before SSE4.2 lacks it: the generic build calls a software
   // routine, 3/4 of the time on degenerate inputs), checked once.
   static bool has_popcnt() {
@@ -330,6 +368,43 @@ void sort_rows(std::vector<std::vector<R>>& rows) {
   rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
 }
 
+template <class R>
+RingGenerators<R> generators(const DoubleDescription<R>& dd, Index k) {
+  RingGenerators<R> out;
+  out.lines = dd.lines();
+  for (std::size_t r = 0; r < dd.count(); ++r) out.rays.emplace_back(dd.ray(r), dd.ray(r) + k);
+  return out;
+}
+
+// A run in std::int64_t that overflowed on the row A[rest[0]] (and was left as before it) goes on in Z
+// from there: the rows before it are not processed again.
+RingGenerators<Z> finish_in_z(const DoubleDescription<std::int64_t>& fixed,
+                              const std::vector<std::vector<std::int64_t>>& A, std::span<const std::size_t> rest,
+                              Index k) {
+  DoubleDescription<Z> dd(fixed);
+  std::vector<Z> row(static_cast<size_t>(k));
+  for (std::size_t i : rest) {
+    for (Index j = 0; j < k; ++j)
+      rg::from_integer(static_cast<long>(A[i][static_cast<size_t>(j)]), row[static_cast<size_t>(j)]);
+    dd.add_row(row.data(), false);
+  }
+  return generators(dd, k);
+}
+
+// Generators in Z as std::int64_t rows; RingOverflow if an entry does not fit (the caller then
+// restarts in Z).
+RingGenerators<std::int64_t> narrowed(const RingGenerators<Z>& g) {
+  auto narrow = [](const std::vector<std::vector<Z>>& rows) {
+    std::vector<std::vector<std::int64_t>> out(rows.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      out[i].resize(rows[i].size());
+      for (std::size_t j = 0; j < rows[i].size(); ++j) rg::from_integer(rows[i][j], out[i][j]);
+    }
+    return out;
+  };
+  return {narrow(g.rays), narrow(g.lines)};
+}
+
 // The double description of { y : A y <= 0, E y = 0 } for sorted rows: the equalities first, then the
 // inequalities that lower the lineality (a basis of what is left, the greedy choice in order), then the
 // others in order.
@@ -342,11 +417,18 @@ RingGenerators<R> generators_of_sorted(const std::vector<std::vector<R>>& A, con
   std::vector<std::size_t> later;
   for (std::size_t i = 0; i < A.size(); ++i)
     if (!dd.reduce_lineality(A[i].data(), false)) later.push_back(i);
-  for (auto i : later) dd.add_row(A[i].data(), false);
-  RingGenerators<R> out;
-  out.lines = dd.lines();
-  for (std::size_t r = 0; r < dd.count(); ++r) out.rays.emplace_back(dd.ray(r), dd.ray(r) + k);
-  return out;
+  for (std::size_t i = 0; i < later.size(); ++i) {
+    if constexpr (std::is_same_v<R, std::int64_t>) {
+      try {
+        dd.add_row(A[later[i]].data(), false);
+      } catch (const exact::RingOverflow&) {
+        return narrowed(finish_in_z(dd, A, std::span(later).subspan(i), k));
+      }
+    } else {
+      dd.add_row(A[later[i]].data(), false);
+    }
+  }
+  return generators(dd, k);
 }
 
 // Rows of one side of a cone C sorted out by their zero sets over the minimal generators D of the other
