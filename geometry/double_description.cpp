@@ -209,15 +209,7 @@ class DoubleDescription {
   [[gnu::always_inline]] inline void new_rays(std::size_t t, std::size_t n) {
     const std::size_t free_dim = static_cast<std::size_t>(k_) - lines_.size();
     const std::size_t need = free_dim >= 2 ? free_dim - 2 : 0;
-    // For each earlier row, the rays tight on it (row t is tight on no plus or minus ray).
-    tight_.resize(t);
-    for (auto& list : tight_) list.clear();
-    for (std::size_t r = 0; r < n; ++r)
-      for (std::size_t w = 0; w < words_; ++w)
-        for (std::uint64_t b = bits_[r * words_ + w]; b != 0; b &= b - 1) {
-          const std::size_t u = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
-          if (u < t) tight_[u].push_back(static_cast<std::uint32_t>(r));
-        }
+    index_tight_rays(t, n);
     for (auto p : plus_) {
       charge(minus_.size(), t);
       for (auto m : minus_) {
@@ -229,28 +221,7 @@ class DoubleDescription {
           common_[w] = bp[w] & bm[w];
           pop += static_cast<std::size_t>(std::popcount(common_[w]));
         }
-        if (pop < need) continue;
-        // A ray whose zero set holds the common one is tight on each common row: only the rays tight on
-        // the common row with the fewest such rays need a look (every ray if there is no common row).
-        const std::vector<std::uint32_t>* scan = nullptr;
-        for (std::size_t w = 0; w < words_; ++w)
-          for (std::uint64_t b = common_[w]; b != 0; b &= b - 1) {
-            const std::vector<std::uint32_t>& list = tight_[w * 64 + static_cast<std::size_t>(std::countr_zero(b))];
-            if (scan == nullptr || list.size() < scan->size()) scan = &list;
-          }
-        bool adjacent = true;
-        std::size_t looked = 0;
-        const std::size_t candidates = scan != nullptr ? scan->size() : n;
-        for (; looked < candidates && adjacent; ++looked) {
-          const std::size_t r = scan != nullptr ? (*scan)[looked] : looked;
-          if (r == p || r == m) continue;
-          const std::uint64_t* br = &bits_[r * words_];
-          bool subset = true;
-          for (std::size_t w = 0; w < words_ && subset; ++w) subset = (common_[w] & ~br[w]) == 0;
-          if (subset) adjacent = false;
-        }
-        charge(looked, t);
-        if (!adjacent) continue;
+        if (pop < need || !adjacent(p, m, n, t)) continue;
         const std::size_t id = push_ray(t);
         rg::combine(&coord_[p * static_cast<size_t>(k_)], values_[p], &coord_[m * static_cast<size_t>(k_)], values_[m],
                     &coord_[id * static_cast<size_t>(k_)], k_);
@@ -259,6 +230,67 @@ class DoubleDescription {
         set_bit(id, t);
       }
     }
+  }
+
+  // For each row u < t, the rays r < n tight on it, as a list (tight_[u]) and as a bit set over the
+  // rays (tight_bits_, ray_words_ words per row). Row t is tight on no plus or minus ray.
+  [[gnu::always_inline]] inline void index_tight_rays(std::size_t t, std::size_t n) {
+    ray_words_ = (n + 63) / 64;
+    tight_.resize(t);
+    for (auto& list : tight_) list.clear();
+    tight_bits_.assign(t * ray_words_, 0);
+    for (std::size_t r = 0; r < n; ++r)
+      for (std::size_t w = 0; w < words_; ++w)
+        for (std::uint64_t b = bits_[r * words_ + w]; b != 0; b &= b - 1) {
+          const std::size_t u = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
+          if (u >= t) continue;
+          tight_[u].push_back(static_cast<std::uint32_t>(r));
+          tight_bits_[u * ray_words_ + r / 64] |= std::uint64_t{1} << (r % 64);
+        }
+  }
+
+  // The combinatorial test: plus ray p and minus ray m (of the n rays before row t) are adjacent iff no
+  // other ray is tight on every row of their common zero set common_ (a face is determined by its zero
+  // set). Such a ray is tight on each common row: either the rays tight on the common row with the
+  // fewest of them are looked at one by one, or the bit sets of the common rows are intersected,
+  // whichever touches fewer words (every ray is a candidate if there is no common row).
+  [[gnu::always_inline]] inline bool adjacent(std::size_t p, std::size_t m, std::size_t n, std::size_t t) {
+    common_rows_.clear();
+    const std::vector<std::uint32_t>* scan = nullptr;
+    for (std::size_t w = 0; w < words_; ++w)
+      for (std::uint64_t b = common_[w]; b != 0; b &= b - 1) {
+        const std::size_t u = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
+        common_rows_.push_back(u);
+        if (scan == nullptr || tight_[u].size() < scan->size()) scan = &tight_[u];
+      }
+    if (scan != nullptr && common_rows_.size() * ray_words_ < scan->size() * words_) {
+      for (std::size_t w = 0; w < ray_words_; ++w) {
+        std::uint64_t witnesses = ~std::uint64_t{0};
+        for (std::size_t u : common_rows_) witnesses &= tight_bits_[u * ray_words_ + w];
+        if (w == p / 64) witnesses &= ~(std::uint64_t{1} << (p % 64));
+        if (w == m / 64) witnesses &= ~(std::uint64_t{1} << (m % 64));
+        if (witnesses != 0) {
+          charge(w + 1, t);
+          return false;
+        }
+      }
+      charge(ray_words_, t);
+      return true;
+    }
+    const std::size_t candidates = scan != nullptr ? scan->size() : n;
+    for (std::size_t looked = 0; looked < candidates; ++looked) {
+      const std::size_t r = scan != nullptr ? (*scan)[looked] : looked;
+      if (r == p || r == m) continue;
+      const std::uint64_t* br = &bits_[r * words_];
+      bool subset = true;
+      for (std::size_t w = 0; w < words_ && subset; ++w) subset = (common_[w] & ~br[w]) == 0;
+      if (subset) {
+        charge(looked + 1, t);
+        return false;
+      }
+    }
+    charge(candidates, t);
+    return true;
   }
 
   // Keeps the rays listed in keep_, then the rays created from first_created on.
@@ -309,6 +341,9 @@ class DoubleDescription {
   std::vector<std::size_t> plus_, minus_, keep_;
   std::vector<std::uint64_t> common_;
   std::vector<std::vector<std::uint32_t>> tight_;
+  std::vector<std::uint64_t> tight_bits_;
+  std::size_t ray_words_ = 0;
+  std::vector<std::size_t> common_rows_;
   std::vector<R> tmp_;
 };
 
