@@ -270,11 +270,11 @@ class DoubleDescription {
         if (w == p / 64) witnesses &= ~(std::uint64_t{1} << (p % 64));
         if (w == m / 64) witnesses &= ~(std::uint64_t{1} << (m % 64));
         if (witnesses != 0) {
-          charge(w + 1, t);
+          charge(64 * (w + 1), t);  // (rays looked at, 64 per word)
           return false;
         }
       }
-      charge(ray_words_, t);
+      charge(64 * ray_words_, t);
       return true;
     }
     const std::size_t candidates = scan != nullptr ? scan->size() : n;
