@@ -347,9 +347,10 @@ class DoubleDescription {
   std::vector<R> tmp_;
 };
 
-// R^3 (exact rings): an extreme ray of the pointed cone { y : a . y <= 0 } is tight on two independent
-// rows, so it is +-(a_i x a_j) for a pair that keeps every row <= 0; no simplicial start, no DD.
-// Primitive rays in lexicographic order; nullopt if the rows have rank < 3.
+// R^3: an extreme ray of the pointed cone { y : a . y <= 0 } is tight on two independent rows, so it is
+// +-(a_i x a_j) for a pair that keeps every row <= 0; no simplicial start, no DD. Normalized rays in
+// lexicographic order, one per ray (rays equal by R's sign test: an exact ring's equality, a float
+// ring's tolerance); nullopt if the rows have rank < 3.
 template <class R>
 std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::vector<std::vector<R>>& rows,
                                                                    const DdBudget& budget) {
@@ -380,13 +381,17 @@ std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::ve
       }
       if (!ray || side == 0) continue;
       if (side > 0)
-        for (R& e : c) e = -e;
+        for (R& e : c) e = negated(e);
       rg::normalize(c.data(), 3);
-      out.push_back(c);
+      const auto same = [&](const std::vector<R>& o) {
+        for (std::size_t t = 0; t < 3; ++t)
+          if (rg::sign(rg::sub(o[t], c[t])) != 0) return false;
+        return true;
+      };
+      if (std::none_of(out.begin(), out.end(), same)) out.push_back(c);
     }
   if (!full_rank) return std::nullopt;
   std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
   if (out.size() > budget.max_rays)
     throw exact::BudgetExceeded("double description: more than " + std::to_string(budget.max_rays) + " rays",
                                 std::to_string(out.size()) + " rays");
@@ -521,9 +526,8 @@ RingGenerators<R> cone_generators(std::vector<std::vector<R>> A, std::vector<std
                                   const DdBudget& budget) {
   sort_rows(A);
   sort_rows(E);
-  if constexpr (std::is_integral_v<R> || std::is_same_v<R, Z>)  // exact rings; a float ring keeps the DD's tolerances
-    if (k == 3 && E.empty())
-      if (auto rays = pointed_extreme_rays_3d<R>(A, budget)) return {std::move(*rays), {}};
+  if (k == 3 && E.empty())
+    if (auto rays = pointed_extreme_rays_3d<R>(A, budget)) return {std::move(*rays), {}};
   return generators_of_sorted<R>(A, E, k, budget);
 }
 
