@@ -73,6 +73,8 @@ StableRegion<T> mode_cones(const geometry::PlanarScene& full, Route route, const
   const std::size_t k = scene.fixels.size();
   const ModeTree<T> tree = walk_modes(motion_model<T>(scene), moving_alphabet(k), tree_options);
   out.tree_nodes = tree.nodes;
+  geometry::DdBudget cone_budget;
+  cone_budget.deadline = tree_options.deadline;
   std::size_t done = 0;
   for (const ModeString& m : tree.modes) {
     if (tree_options.deadline.expired())
@@ -81,7 +83,7 @@ StableRegion<T> mode_cones(const geometry::PlanarScene& full, Route route, const
                                       " kinematically feasible modes' cones computed");
     ++done;
     if (m.text() == std::string(k, 'n')) continue;  // n..n is not a moving mode (strong_stability.h)
-    geometry::FaceCone<T> c = wrench_cone_face<T>(scene, model, m, route);
+    geometry::FaceCone<T> c = wrench_cone_face<T>(scene, model, m, route, cone_budget);
     if (is_empty_cone<T>(c)) continue;
     out.modes.push_back(m);
     out.cones.push_back(std::move(c));

@@ -1,6 +1,7 @@
 #include "solvers/stability/table2_rows_check.h"
 
 #include <optional>
+#include <sstream>
 
 namespace contactcert::solvers::table2_check {
 namespace {
@@ -134,6 +135,13 @@ Vec<Q> right_hand_side(std::size_t rows, const Vec<Q>& g) {
 
 // The force of a fixel whose letter is l or r: c_t per c_n (Table 2: friction opposes the sliding).
 Q sliding_t_per_n(const CheckedFixel& f, Force c) { return c == Force::kLeftEdge ? Q(-f.mu_k) : f.mu_k; }
+
+// The name of a component of z, e.g. "-a2n" or "c1[n-mu t]" (1-based fixel numbers).
+std::string component_name(const char* head, std::size_t fixel, const char* tail) {
+  std::ostringstream s;
+  s << head << fixel + 1 << tail;
+  return s.str();
+}
 
 }  // namespace
 
@@ -337,7 +345,7 @@ bool cone_columns(const CheckedScene& scene, const std::string& mode, ConeColumn
       z.row = c.row_wrenches.size() - 1;
       z.sign = a == Acc::kNegative ? -1 : 1;
       z.strict = a == Acc::kPositive || a == Acc::kNegative;
-      z.name = (z.sign < 0 ? "-a" : "a") + std::to_string(i + 1) + (tangent ? "t" : "n");
+      z.name = component_name(z.sign < 0 ? "-a" : "a", i, tangent ? "t" : "n");
       c.z.push_back(std::move(z));
     }
   // The force multipliers: each fixel's first edge (or its sliding edge), then each static cone's second edge.
@@ -345,7 +353,7 @@ bool cone_columns(const CheckedScene& scene, const std::string& mode, ConeColumn
     ConeColumns::Z z;
     z.fixel = i;
     z.t_per_n = side * mu;
-    z.name = "c" + std::to_string(i + 1) + (side < 0 ? "[n-mu t]" : "[n+mu t]");
+    z.name = component_name("c", i, side < 0 ? "[n-mu t]" : "[n+mu t]");
     c.z.push_back(std::move(z));
   };
   for (std::size_t i = 0; i < k; ++i) {
