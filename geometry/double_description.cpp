@@ -221,7 +221,7 @@ class DoubleDescription {
           common_[w] = bp[w] & bm[w];
           pop += static_cast<std::size_t>(std::popcount(common_[w]));
         }
-        if (pop < need || !adjacent(p, m, n, t)) continue;
+        if (pop < need || !adjacent(p, m, pop, n, t)) continue;
         const std::size_t id = push_ray(t);
         rg::combine(&coord_[p * static_cast<size_t>(k_)], values_[p], &coord_[m * static_cast<size_t>(k_)], values_[m],
                     &coord_[id * static_cast<size_t>(k_)], k_);
@@ -232,41 +232,54 @@ class DoubleDescription {
     }
   }
 
-  // For each row u < t, the rays r < n tight on it, as a list (tight_[u]) and as a bit set over the
-  // rays (tight_bits_, ray_words_ words per row). Row t is tight on no plus or minus ray.
+  // For each row u < t, the rays r < n tight on it, as a list (tight_[u]); as a bit set over the rays
+  // (tight_bits_, ray_words_ words per row) on first use (tight_bits(u)). Row t is tight on no plus or
+  // minus ray.
   [[gnu::always_inline]] inline void index_tight_rays(std::size_t t, std::size_t n) {
     ray_words_ = (n + 63) / 64;
     tight_.resize(t);
     for (auto& list : tight_) list.clear();
-    tight_bits_.assign(t * ray_words_, 0);
+    has_tight_bits_.assign(t, false);
+    if (tight_bits_.size() < t * ray_words_) tight_bits_.resize(t * ray_words_);
     for (std::size_t r = 0; r < n; ++r)
       for (std::size_t w = 0; w < words_; ++w)
         for (std::uint64_t b = bits_[r * words_ + w]; b != 0; b &= b - 1) {
           const std::size_t u = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
-          if (u >= t) continue;
-          tight_[u].push_back(static_cast<std::uint32_t>(r));
-          tight_bits_[u * ray_words_ + r / 64] |= std::uint64_t{1} << (r % 64);
+          if (u < t) tight_[u].push_back(static_cast<std::uint32_t>(r));
         }
+  }
+  const std::uint64_t* tight_bits(std::size_t u) {
+    std::uint64_t* row = &tight_bits_[u * ray_words_];
+    if (!has_tight_bits_[u]) {
+      std::fill(row, row + ray_words_, 0);
+      for (std::uint32_t r : tight_[u]) row[r / 64] |= std::uint64_t{1} << (r % 64);
+      has_tight_bits_[u] = true;
+    }
+    return row;
   }
 
   // The combinatorial test: plus ray p and minus ray m (of the n rays before row t) are adjacent iff no
-  // other ray is tight on every row of their common zero set common_ (a face is determined by its zero
-  // set). Such a ray is tight on each common row: either the rays tight on the common row with the
-  // fewest of them are looked at one by one, or the bit sets of the common rows are intersected,
-  // whichever touches fewer words (every ray is a candidate if there is no common row).
-  [[gnu::always_inline]] inline bool adjacent(std::size_t p, std::size_t m, std::size_t n, std::size_t t) {
-    common_rows_.clear();
+  // other ray is tight on every row of their common zero set common_ (pop rows; a face is determined by
+  // its zero set). Such a ray is tight on each common row: either the rays tight on the common row with
+  // the fewest of them are looked at one by one (mostly a word each: a miss shows in the first words),
+  // or the bit sets of the common rows are intersected (a word per row and 64 rays), whichever reads
+  // fewer words (every ray is a candidate if there is no common row).
+  [[gnu::always_inline]] inline bool adjacent(std::size_t p, std::size_t m, std::size_t pop, std::size_t n,
+                                              std::size_t t) {
     const std::vector<std::uint32_t>* scan = nullptr;
     for (std::size_t w = 0; w < words_; ++w)
       for (std::uint64_t b = common_[w]; b != 0; b &= b - 1) {
-        const std::size_t u = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
-        common_rows_.push_back(u);
-        if (scan == nullptr || tight_[u].size() < scan->size()) scan = &tight_[u];
+        const std::vector<std::uint32_t>& list = tight_[w * 64 + static_cast<std::size_t>(std::countr_zero(b))];
+        if (scan == nullptr || list.size() < scan->size()) scan = &list;
       }
-    if (scan != nullptr && common_rows_.size() * ray_words_ < scan->size() * words_) {
+    if (scan != nullptr && pop * (ray_words_ + 1) < scan->size()) {
+      common_rows_.clear();
+      for (std::size_t w = 0; w < words_; ++w)
+        for (std::uint64_t b = common_[w]; b != 0; b &= b - 1)
+          common_rows_.push_back(tight_bits(w * 64 + static_cast<std::size_t>(std::countr_zero(b))));
       for (std::size_t w = 0; w < ray_words_; ++w) {
         std::uint64_t witnesses = ~std::uint64_t{0};
-        for (std::size_t u : common_rows_) witnesses &= tight_bits_[u * ray_words_ + w];
+        for (const std::uint64_t* row : common_rows_) witnesses &= row[w];
         if (w == p / 64) witnesses &= ~(std::uint64_t{1} << (p % 64));
         if (w == m / 64) witnesses &= ~(std::uint64_t{1} << (m % 64));
         if (witnesses != 0) {
@@ -342,8 +355,9 @@ class DoubleDescription {
   std::vector<std::uint64_t> common_;
   std::vector<std::vector<std::uint32_t>> tight_;
   std::vector<std::uint64_t> tight_bits_;
+  std::vector<bool> has_tight_bits_;
   std::size_t ray_words_ = 0;
-  std::vector<std::size_t> common_rows_;
+  std::vector<const std::uint64_t*> common_rows_;
   std::vector<R> tmp_;
 };
 

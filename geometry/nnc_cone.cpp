@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -30,29 +31,13 @@ std::vector<std::vector<bool>> ring_zero_sets(const std::vector<std::vector<Rg>>
   return z;
 }
 
-// For every row s of S, the rays r (rows of R) with s . r == 0. Decided in the ring of T on rows and
-// rays scaled by positive factors (the same signs).
-template <class T>
-std::vector<std::vector<bool>> zero_sets(const Mat<T>& R, const Mat<T>& S) {
-  return exact::with_exact_ring<T>([&]<class Rg>() {
-    return ring_zero_sets<Rg>(exact::ring::to_ring_rows<Rg>(R), exact::ring::to_ring_rows<Rg>(S));
-  });
-}
+}  // namespace
 
-bool subset(const std::vector<bool>& a, const std::vector<bool>& b) {
+bool is_subset(const std::vector<bool>& a, const std::vector<bool>& b) {
   for (size_t i = 0; i < a.size(); ++i)
     if (a[i] && !b[i]) return false;
   return true;
 }
-
-// The maximal faces missing from the cone: the maximal sets among the Z_s of the strict rows (each a
-// bit per closure ray), and for each the facets through it (by their ray sets), which is the facet
-// itself when the face is a facet (marked in open_facets).
-struct MissingFaces {
-  std::vector<std::vector<bool>> maximal;
-  std::vector<std::vector<Index>> facets;  ///< per maximal face: the facets whose normals sum to its strict row
-  std::vector<bool> open_facets;
-};
 
 MissingFaces missing_faces(std::vector<std::vector<bool>> zs, const std::vector<std::vector<bool>>& facet_rays) {
   MissingFaces out;
@@ -60,14 +45,14 @@ MissingFaces missing_faces(std::vector<std::vector<bool>> zs, const std::vector<
   zs.erase(std::unique(zs.begin(), zs.end()), zs.end());
   for (size_t i = 0; i < zs.size(); ++i) {
     bool dominated = false;
-    for (size_t j = 0; j < zs.size() && !dominated; ++j) dominated = j != i && subset(zs[i], zs[j]);
+    for (size_t j = 0; j < zs.size() && !dominated; ++j) dominated = j != i && is_subset(zs[i], zs[j]);
     if (!dominated) out.maximal.push_back(zs[i]);
   }
   out.open_facets.assign(facet_rays.size(), false);
   for (const auto& g : out.maximal) {
     std::vector<Index> through;
     for (size_t f = 0; f < facet_rays.size(); ++f) {
-      if (!subset(g, facet_rays[f])) continue;
+      if (!is_subset(g, facet_rays[f])) continue;
       if (facet_rays[f] == g) {
         out.open_facets[f] = true;
         through.assign(1, static_cast<Index>(f));
@@ -80,19 +65,74 @@ MissingFaces missing_faces(std::vector<std::vector<bool>> zs, const std::vector<
   return out;
 }
 
+namespace {
+
+// The cone { F g <= 0, S g < 0 } resolved in a ring R from its closure K' = { F g <= 0, S g <= 0 }, given by
+// its minimal rays and facets (both in lexicographic order) and the zero sets zs of the strict rows on
+// the rays (ring_zero_sets): the cone is empty iff some strict row vanishes on every ray (empty()); otherwise
+// the closure's facets split into closed ones (in the cone) and one strict row per maximal missing face,
+// the sum of the normals of the facets through it (normalized, deduplicated, sorted).
+bool empty(const std::vector<std::vector<bool>>& zs) {
+  return std::any_of(zs.begin(), zs.end(),
+                     [](const auto& z) { return std::all_of(z.begin(), z.end(), std::identity{}); });
+}
+
+template <class R>
+struct RingNnc {
+  MissingFaces missing;
+  std::vector<std::vector<R>> closed, strict;
+};
+
+template <class R>
+RingNnc<R> resolve_in_ring(const std::vector<std::vector<bool>>& zs, const std::vector<std::vector<R>>& rays,
+                           const std::vector<std::vector<R>>& facets, Index d) {
+  namespace rg = exact::ring;
+  RingNnc<R> out;
+  out.missing = missing_faces(zs, ring_zero_sets<R>(rays, facets));
+  for (size_t f = 0; f < facets.size(); ++f)
+    if (!out.missing.open_facets[f]) out.closed.push_back(facets[f]);
+  for (const std::vector<Index>& through : out.missing.facets) {
+    std::vector<R> s(static_cast<size_t>(d), R(0));
+    for (Index f : through)
+      for (Index j = 0; j < d; ++j)
+        s[static_cast<size_t>(j)] =
+            rg::add(s[static_cast<size_t>(j)], facets[static_cast<size_t>(f)][static_cast<size_t>(j)]);
+    rg::normalize(s.data(), d);
+    if (std::any_of(s.begin(), s.end(), [](const R& x) { return rg::sign(x) != 0; }))
+      out.strict.push_back(std::move(s));
+  }
+  std::sort(out.strict.begin(), out.strict.end());
+  out.strict.erase(std::unique(out.strict.begin(), out.strict.end()), out.strict.end());
+  return out;
+}
+
+// The steps of resolve_in_ring for field rows (canonical rays R and facets F of the closure, strict rows S):
+// nullopt if the cone is empty.
+template <class T>
+struct FieldNnc {
+  MissingFaces missing;
+  Mat<T> closed, strict;
+};
+
+template <class T>
+std::optional<FieldNnc<T>> resolve(const Mat<T>& R, const Mat<T>& F, const Mat<T>& S) {
+  return exact::with_exact_ring<T>([&]<class Rg>() -> std::optional<FieldNnc<T>> {
+    namespace rg = exact::ring;
+    const std::vector<std::vector<Rg>> rays = rg::to_ring_rows<Rg>(R);
+    const std::vector<std::vector<bool>> zs = ring_zero_sets<Rg>(rays, rg::to_ring_rows<Rg>(S));
+    if (empty(zs)) return std::nullopt;
+    RingNnc<Rg> r = resolve_in_ring<Rg>(zs, rays, rg::to_ring_rows<Rg>(F), F.cols());
+    return FieldNnc<T>{std::move(r.missing), rg::to_field_rows<T>(r.closed, F.cols()),
+                       rg::to_field_rows<T>(r.strict, F.cols())};
+  });
+}
+
 // The empty cone's face form: { g = 0, 0 . g < 0 } (canonical equalities: the identity rows, sorted).
 template <class T>
 FaceCone<T> empty_face(Index d) {
   const Mat<T> all =
       canonical(FaceCone<T>::from_rows(d, Mat<T>(0, d), Mat<T>(Mat<T>::Identity(d, d)), Mat<T>(0, d))).equalities;
   return FaceCone<T>::from_rows(d, Mat<T>(0, d), all, Mat<T>(Mat<T>::Zero(1, d)));
-}
-
-template <class T>
-Mat<T> stack(const std::vector<Vec<T>>& rows, Index dim) {
-  Mat<T> M(static_cast<Index>(rows.size()), dim);
-  for (Index i = 0; i < M.rows(); ++i) M.row(i) = rows[static_cast<size_t>(i)].transpose();
-  return M;
 }
 
 }  // namespace
@@ -111,12 +151,9 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
   ConePair<T> closure = both_forms(cone, budget);
   out.closure = canonical(closure.span);
   const Mat<T>& R = out.closure.rays;
-  // Z_s for every strict row; the cone is empty iff some Z_s holds every ray (s vanishes on K').
-  const std::vector<std::vector<bool>> zs = zero_sets<T>(R, cone.strict);
-  bool empty = false;
-  for (const auto& z : zs)
-    if (std::all_of(z.begin(), z.end(), [](bool b) { return b; })) empty = true;
-  if (empty) {
+  out.closure_face = canonical(closure.face);
+  const std::optional<FieldNnc<T>> res = resolve<T>(R, out.closure_face.inequalities, cone.strict);
+  if (!res) {
     out.status = NncStatus::kEmpty;
     out.face = empty_face<T>(d);
     out.closure = SpanCone<T>::from_rows(d, Mat<T>(0, d), Mat<T>(0, d));
@@ -124,32 +161,19 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget) {
     return out;
   }
   out.status = NncStatus::kNonEmpty;
-  out.closure_face = canonical(closure.face);
-  const Mat<T>& F = out.closure_face.inequalities;
-
-  const MissingFaces missing = missing_faces(zs, zero_sets<T>(R, F));
-  out.open_facets = missing.open_facets;
-  std::vector<Vec<T>> strict_rows;
-  for (size_t m = 0; m < missing.maximal.size(); ++m) {
-    const std::vector<bool>& g = missing.maximal[m];
+  out.open_facets = res->missing.open_facets;
+  for (const std::vector<bool>& g : res->missing.maximal) {
     std::vector<Index> rays;
     for (size_t r = 0; r < g.size(); ++r)
       if (g[r]) rays.push_back(static_cast<Index>(r));
     out.open_faces.push_back(rays);
-    Vec<T> s = Vec<T>::Zero(d);
-    for (Index f : missing.facets[m]) s += F.row(f).transpose();
-    strict_rows.push_back(s);
   }
   // No missing face: the cone is its closure, whose face form is canonical already.
-  if (strict_rows.empty()) {
+  if (res->strict.rows() == 0) {
     out.face = out.closure_face;
     return out;
   }
-  std::vector<Vec<T>> closed_rows;
-  for (Index f = 0; f < F.rows(); ++f)
-    if (!out.open_facets[static_cast<size_t>(f)]) closed_rows.push_back(F.row(f).transpose());
-  out.face = canonical(
-      FaceCone<T>::from_rows(d, stack<T>(closed_rows, d), out.closure_face.equalities, stack<T>(strict_rows, d)));
+  out.face = canonical(FaceCone<T>::from_rows(d, res->closed, out.closure_face.equalities, res->strict));
   return out;
 }
 
@@ -177,29 +201,15 @@ std::optional<FaceCone<T>> pointed_nnc_face(const std::vector<std::vector<R>>& F
   auto rays = pointed_cone_rays<R>(std::move(rows), d, budget);  // K' = { F g <= 0, S g <= 0 }
   if (!rays || rays->empty()) return std::nullopt;
   std::sort(rays->begin(), rays->end());
+  // Facets of the closure: the extreme rays of its polar, pointed iff the closure is full-dimensional
+  // (not needed when a strict row vanishes on every ray: the cone is empty).
   const std::vector<std::vector<bool>> zs = ring_zero_sets<R>(*rays, S);
-  for (const auto& z : zs)
-    if (std::all_of(z.begin(), z.end(), [](bool b) { return b; })) return empty_face<T>(d);
-  // Facets of the closure: the extreme rays of its polar, pointed iff the closure is full-dimensional.
+  if (empty(zs)) return empty_face<T>(d);
   auto facets = pointed_cone_rays<R>(*rays, d, budget);
   if (!facets) return std::nullopt;
   std::sort(facets->begin(), facets->end());
-  const MissingFaces missing = missing_faces(zs, ring_zero_sets<R>(*rays, *facets));
-  std::vector<std::vector<R>> closed, strict;
-  for (size_t f = 0; f < facets->size(); ++f)
-    if (!missing.open_facets[f]) closed.push_back((*facets)[f]);
-  for (const std::vector<Index>& through : missing.facets) {
-    std::vector<R> s(static_cast<size_t>(d), R(0));
-    for (Index f : through)
-      for (Index j = 0; j < d; ++j)
-        s[static_cast<size_t>(j)] =
-            rg::add(s[static_cast<size_t>(j)], (*facets)[static_cast<size_t>(f)][static_cast<size_t>(j)]);
-    rg::normalize(s.data(), d);
-    if (std::any_of(s.begin(), s.end(), [](const R& x) { return rg::sign(x) != 0; })) strict.push_back(std::move(s));
-  }
-  std::sort(strict.begin(), strict.end());
-  strict.erase(std::unique(strict.begin(), strict.end()), strict.end());
-  return FaceCone<T>::from_rows(d, rg::to_field_rows<T>(closed, d), Mat<T>(0, d), rg::to_field_rows<T>(strict, d));
+  const RingNnc<R> r = resolve_in_ring<R>(zs, *rays, *facets, d);
+  return FaceCone<T>::from_rows(d, rg::to_field_rows<T>(r.closed, d), Mat<T>(0, d), rg::to_field_rows<T>(r.strict, d));
 }
 
 template <class T>

@@ -57,6 +57,19 @@ extern template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const std::vec
                                                                   const std::vector<std::vector<Z>>&, Eigen::Index,
                                                                   const DdBudget&);
 
+/// a is a subset of b (sets as a bit per element, of one size).
+bool is_subset(const std::vector<bool>& a, const std::vector<bool>& b);
+
+/// The maximal faces missing from a cone, given faces of its closure that are missing (each as its set of
+/// closure rays, a bit per ray), and the facets through each: the facet itself when the face is a facet
+/// (marked in open_facets); the strict row of a missing face is the sum of the normals of its facets.
+struct MissingFaces {
+  std::vector<std::vector<bool>> maximal;
+  std::vector<std::vector<Eigen::Index>> facets;  ///< per maximal face: the facets whose normals sum to its strict row
+  std::vector<bool> open_facets;                  ///< per facet: its whole face is missing
+};
+MissingFaces missing_faces(std::vector<std::vector<bool>> faces, const std::vector<std::vector<bool>>& facet_rays);
+
 /// Is g in the cone? (F g <= 0, E g = 0, S g < 0, checked row by row.)
 template <class T>
 bool contains_point(const FaceCone<T>& cone, const Vec<T>& g);

@@ -228,15 +228,10 @@ FaceCone<T> project_by_lp(const ProjectionProblem<T>& problem, const DdBudget& b
   std::vector<std::vector<bool>> order(faces.begin(), faces.end());
   auto size = [](const std::vector<bool>& v) { return std::count(v.begin(), v.end(), true); };
   std::stable_sort(order.begin(), order.end(), [&](const auto& a, const auto& b) { return size(a) > size(b); });
-  auto subset = [](const std::vector<bool>& a, const std::vector<bool>& b) {
-    for (size_t i = 0; i < a.size(); ++i)
-      if (a[i] && !b[i]) return false;
-    return true;
-  };
   std::vector<std::vector<bool>> missing;  // maximal missing faces
   for (const auto& g : order) {
     bool below = false;
-    for (const auto& mset : missing) below = below || subset(g, mset);
+    for (const auto& mset : missing) below = below || is_subset(g, mset);
     if (below) continue;
     Vec<T> w = Vec<T>::Zero(d);
     for (Index r = 0; r < nr; ++r)
@@ -245,10 +240,9 @@ FaceCone<T> project_by_lp(const ProjectionProblem<T>& problem, const DdBudget& b
   }
   // One strict row per maximal missing face: the sum of the normals of the facets through it.
   std::vector<Vec<T>> strict_rows;
-  for (const auto& g : missing) {
+  for (const std::vector<Index>& through : missing_faces(missing, facet_sets).facets) {
     Vec<T> s = Vec<T>::Zero(d);
-    for (size_t f = 0; f < facet_sets.size(); ++f)
-      if (subset(g, facet_sets[f])) s += inner.inequalities.row(static_cast<Index>(f)).transpose();
+    for (Index f : through) s += inner.inequalities.row(f).transpose();
     strict_rows.push_back(s);
   }
   return nnc_form(FaceCone<T>::from_rows(d, inner.inequalities, inner.equalities, stack_rows<T>(strict_rows, d)),
