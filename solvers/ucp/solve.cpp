@@ -290,11 +290,15 @@ auto with_float_instance(const UcpProblem& problem, const exact::Rung& rung, F&&
   return in(convert<double>(problem.ucp));
 }
 
-/// --arith adaptive: the rungs of exact::adaptive_ladder() in order; the first float rung whose verdict
-/// checks out decides, else the exact rung (rational search, its LPs on the LP ladder) does.
-void solve_adaptive(const UcpProblem& problem, const UcpOptions& opts, const exact::Deadline& deadline,
-                    UcpReport& rep) {
-  for (const exact::Rung& rung : exact::adaptive_ladder()) {
+/// --arith adaptive: the rungs of exact::adaptive_ladder() in order; --arith verified: double, then exact (the float
+/// path's search, checked; the exact search, with every LP verified, only if its verdict does not check out). The
+/// first float rung whose verdict checks out decides, else the exact rung (rational search, its LPs on the LP
+/// ladder or verified) does.
+void solve_on_ladder(const UcpProblem& problem, const UcpOptions& opts, const exact::Deadline& deadline,
+                     UcpReport& rep) {
+  static const std::vector<exact::Rung> verified_ladder = {{exact::Rung::Kind::kDouble}, {exact::Rung::Kind::kExact}};
+  const bool adaptive = opts.arith == Arith::kAdaptive;
+  for (const exact::Rung& rung : adaptive ? exact::adaptive_ladder() : verified_ladder) {
     bool decided = true;
     if (rung.kind == exact::Rung::Kind::kExact)
       run<Q>(problem, problem.ucp, opts, deadline, rep);
@@ -303,7 +307,7 @@ void solve_adaptive(const UcpProblem& problem, const UcpOptions& opts, const exa
         return decide_at(problem, u, factors, opts, deadline, rep);
       });
     if (decided) {
-      rep.decided_by = exact::rung_name(rung);
+      if (adaptive) rep.decided_by = exact::rung_name(rung);
       return;
     }
   }
@@ -379,8 +383,8 @@ UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts) {
     if (e.solutions > 0) fill_pair(rep, std::move(e.x), std::move(e.y), problem);
   } else if (opts.arith == Arith::kFloat) {
     run_float(problem, opts, deadline, rep);
-  } else if (opts.arith == Arith::kAdaptive) {
-    solve_adaptive(problem, opts, deadline, rep);
+  } else if (opts.arith == Arith::kAdaptive || opts.arith == Arith::kVerified) {
+    solve_on_ladder(problem, opts, deadline, rep);
   } else {
     run<Q>(problem, problem.ucp, opts, deadline, rep);
   }
