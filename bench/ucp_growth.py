@@ -2,7 +2,7 @@
 """Growth of `contactcert ucp` with the number of contacts (docs/bench.md, "The UCP at scale").
 
     bench/ucp_growth.py BUILD/contactcert [OTHER/contactcert] [--nc 10,20,40,80,120,160] [--repeats 3]
-                        [--arith float,verified,adaptive,exact] [--time-limit 60]
+                        [--arith float,verified,adaptive,exact] [--time-limit 60] [--max-seed 200]
 
 For each nc: the first seed whose section 5 problem (`ucp --generate random --nc N --seed S`) is solvable and the
 first that is jammed (classified by the float path), then `ucp FILE --json` on each arith (exact paths also write
@@ -35,10 +35,10 @@ def run(binary, args, time_limit):
         return None, cpu
 
 
-def find_problems(binary, nc, work, time_limit):
-    """{kind: file} for the first solvable and the first jammed seed (float classification)."""
+def find_problems(binary, nc, work, time_limit, max_seed):
+    """{kind: file} for the first solvable and the first jammed seed below max_seed (float classification)."""
     found = {}
-    for seed in range(1, 200):
+    for seed in range(1, max_seed):
         if len(found) == 2:
             break
         f = os.path.join(work, f"nc{nc}_seed{seed}.json")
@@ -83,6 +83,7 @@ def main():
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--arith", default="float,verified,adaptive,exact")
     ap.add_argument("--time-limit", type=float, default=60)
+    ap.add_argument("--max-seed", type=int, default=200)
     a = ap.parse_args()
     ncs = [int(x) for x in a.nc.split(",")]
     ariths = a.arith.split(",")
@@ -90,12 +91,12 @@ def main():
     rows = []
     print("| nc | kind | seed | arith | verdict | LPs | nodes | " + " | ".join(PHASES) +
           " | end to end | " + ("other | other/ours |" if a.other else ""))
-    print("|" + "---|" * (12 + (2 if a.other else 0)))
+    print("|" + "---|" * (14 + (2 if a.other else 0)))
     for nc in ncs:
-        problems = find_problems(a.ours, nc, work, a.time_limit)
+        problems = find_problems(a.ours, nc, work, a.time_limit, a.max_seed)
         for kind in ("solvable", "jammed"):
             if kind not in problems:
-                print(f"| {nc} | {kind} | - | no {kind} seed below 200 |")
+                print(f"| {nc} | {kind} | - | no {kind} seed below {a.max_seed} |")
                 continue
             seed, f = problems[kind]
             for arith in ariths:

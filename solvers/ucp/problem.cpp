@@ -159,14 +159,6 @@ UcpProblem load_ucp_problem(const std::string& path, UcpPhases* phases) {
   return read_ucp_problem(*in, phases);
 }
 
-Mat<Q> build_Z(const QuasistaticProblem& p) {
-  const std::vector<SparseRow> rows = left_null_rows(p.P);
-  Mat<Q> Z = Mat<Q>::Zero(static_cast<Index>(rows.size()), p.P.rows());
-  for (std::size_t r = 0; r < rows.size(); ++r)
-    for (std::size_t k = 0; k < rows[r].col.size(); ++k) Z(static_cast<Index>(r), rows[r].col[k]) = Q(rows[r].value[k]);
-  return Z;
-}
-
 StandardPolyhedron<Q> build_X(const QuasistaticProblem& p) {
   // Section 2: Z a = 0 iff a = P b for some b. X.A = Z B with B x = [v_n; v_t^+ - v_t^-] for x = (v_n, v_t^+,
   // v_t^-): B only selects and negates columns, so row r of X.A is row r of Z with its v_t block repeated negated.
