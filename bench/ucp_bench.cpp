@@ -5,8 +5,8 @@
 //   ucp_bench --recovery [REPEATS]           (only the exact physical recovery and the check of (2)-(10))
 // Prints, for twenty random problems with the paper's nc, mu range, |alpha| and |abar| (section 5 generator,
 // seeded), the pairs, LPs, best x^T y, verdict and time of the paper algorithm, the modified algorithm and the
-// complete search (verified arithmetic); then the targets: nc = 40 solvable (verified), nc = 10 jammed,
-// and LPs of the complete search against the enumerative baseline at nc = 8.
+// complete search (verified arithmetic; end to end with its phases); then the targets: nc = 40 solvable (verified), nc
+// = 10 jammed, and LPs of the complete search against the enumerative baseline at nc = 8.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -46,13 +46,32 @@ UcpProblem make(int nc, int mu_tenths, int abar, std::uint64_t seed) {
   return generate_random_problem(o, rng);
 }
 
-UcpReport run(const UcpProblem& p, Method m, Arith a = Arith::kVerified, std::uint64_t seed = 1) {
+UcpOptions options(Method m, Arith a, std::uint64_t seed = 1) {
   UcpOptions o;
   o.method = m;
   o.arith = a;
   o.seed = seed;
   o.max_nodes = 100000;
-  return solve_ucp(p, o);
+  return o;
+}
+
+UcpReport run(const UcpProblem& p, Method m, Arith a = Arith::kVerified, std::uint64_t seed = 1) {
+  return solve_ucp(p, options(m, a, seed));
+}
+
+/// What a user of `contactcert ucp FILE --certificate C` waits for: the file's text read, X and Y built, the method
+/// run, the certificate made (exact paths); report.phases has every phase in CPU seconds.
+UcpReport run_end_to_end(const std::string& text, Method m, Arith a) {
+  UcpPhases setup;
+  const UcpProblem p = read_ucp_problem(exact::JsonInput::parse(text, "bench"), &setup);
+  UcpReport r = solve_ucp(p, options(m, a));
+  r.phases.parse = setup.parse;
+  r.phases.build = setup.build;
+  if (a != Arith::kFloat && m != Method::kEnumerate) {
+    const PhaseTimer t(r.phases.certificate);
+    (void)certificate_text(p, r);
+  }
+  return r;
 }
 
 double best(const UcpReport& r) { return r.best_xTy ? r.best_xTy->get_d() : (r.x ? 0.0 : -1.0); }
@@ -190,34 +209,45 @@ int main(int argc, char** argv) {
     return 0;
   }
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-  std::printf("Table 1 (random problems, section 5 generator, seed 1000 + problem number; verified arithmetic)\n");
-  std::printf("%3s %3s %7s %5s %5s | %-26s | %-26s | %-34s\n", "No", "nc", "mu<", "|a|", "|ab|",
-              "paper: pairs LPs best time", "modified: pairs LPs best", "complete: LPs nodes verdict time");
+  std::printf(
+      "Table 1 (random problems, section 5 generator, seed 1000 + problem number; verified arithmetic). paper, "
+      "modified: CPU s of the solve; complete: CPU s end to end (read the file's text, build X and Y, solve, "
+      "recover, check (2)-(10), certificate) and its phases in ms\n");
+  std::printf("%3s %3s %7s %5s %5s | %-26s | %-26s | %-34s | %s\n", "No", "nc", "mu<", "|a|", "|ab|",
+              "paper: pairs LPs best time", "modified: pairs LPs best", "complete: LPs nodes verdict total",
+              "parse build solve recover check cert");
   int solvable = 0, jammed = 0, unknown = 0, paper_undecided = 0;
   for (int k = 0; k < (quick ? 6 : 20); ++k) {
-    const Table1Row& t = kTable1[k];
-    const UcpProblem p = make(t.nc, t.mu_tenths, t.abar, 1000 + static_cast<std::uint64_t>(k) + 1);
-    const UcpReport a = run(p, Method::kPaper), b = run(p, Method::kModified), c = run(p, Method::kComplete);
+    const Table1Row& row = kTable1[k];
+    const UcpProblem p = make(row.nc, row.mu_tenths, row.abar, 1000 + static_cast<std::uint64_t>(k) + 1);
+    const UcpReport a = run(p, Method::kPaper), b = run(p, Method::kModified);
+    const UcpReport c = run_end_to_end(to_json_text(p), Method::kComplete, Arith::kVerified);
+    const UcpPhases& t = c.phases;
     paper_undecided += a.status != UcpStatus::kSolvable && b.status != UcpStatus::kSolvable;
     (c.status == UcpStatus::kSolvable ? solvable : c.status == UcpStatus::kJammed ? jammed : unknown)++;
-    std::printf("%3d %3d %7.1f %5d %5d | %4ld %4ld %8.3g %6.3fs | %4ld %4ld %8.3g %6.3fs | %5ld %5ld %-8s %7.3fs\n",
-                k + 1, t.nc, t.mu_tenths / 10.0, t.alpha, t.abar, a.pairs, a.lps, best(a), a.seconds, b.pairs, b.lps,
-                best(b), b.seconds, c.lps, c.nodes, status_name(c.status), c.seconds);
+    std::printf(
+        "%3d %3d %7.1f %5d %5d | %4ld %4ld %8.3g %6.3fs | %4ld %4ld %8.3g %6.3fs | %5ld %5ld %-8s %7.3fs | %.2f %.2f "
+        "%.2f %.2f %.2f %.2f\n",
+        k + 1, row.nc, row.mu_tenths / 10.0, row.alpha, row.abar, a.pairs, a.lps, best(a), a.phases.solve, b.pairs,
+        b.lps, best(b), b.phases.solve, c.lps, c.nodes, status_name(c.status), t.total(), 1e3 * t.parse, 1e3 * t.build,
+        1e3 * t.solve, 1e3 * t.recover, 1e3 * t.check, 1e3 * t.certificate);
   }
   std::printf("complete search: %d solvable, %d jammed, %d unknown; paper+modified left %d undecided\n\n", solvable,
               jammed, unknown, paper_undecided);
 
   // Target 1: nc = 40 solvable problems on the verified path.
-  std::printf("nc = 40, mu in (0, 1), |abar| = 0, solvable problems (complete, verified):\n");
+  std::printf("nc = 40, mu in (0, 1), |abar| = 0, solvable problems (complete; CPU ms end to end, as Table 1):\n");
   int found = 0;
   for (std::uint64_t s = 1; s < 60 && found < (quick ? 2 : 5); ++s) {
-    const UcpProblem p = make(40, 10, 0, s);
-    const UcpReport r = run(p, Method::kComplete);
+    const std::string text = to_json_text(make(40, 10, 0, s));
+    const UcpReport r = run_end_to_end(text, Method::kComplete, Arith::kVerified);
     if (r.status != UcpStatus::kSolvable) continue;
     ++found;
-    const UcpReport f = run(p, Method::kComplete, Arith::kFloat);
-    std::printf("  seed %2llu: verified %6.1f ms (%ld LPs), float %6.2f ms\n", static_cast<unsigned long long>(s),
-                1e3 * r.seconds, r.lps, 1e3 * f.seconds);
+    const UcpReport f = run_end_to_end(text, Method::kComplete, Arith::kFloat);
+    const UcpReport a = run_end_to_end(text, Method::kComplete, Arith::kAdaptive);
+    std::printf("  seed %2llu: verified %6.1f ms (%ld LPs), adaptive %6.1f ms, float %6.2f ms\n",
+                static_cast<unsigned long long>(s), 1e3 * r.phases.total(), r.lps, 1e3 * a.phases.total(),
+                1e3 * f.phases.total());
   }
   // Target 2: nc = 10 jammed problems proven.
   std::printf("nc = 10, mu in (0, 1.3), |abar| = 5, jammed problems (complete, verified):\n");
@@ -227,8 +257,8 @@ int main(int argc, char** argv) {
     const UcpReport r = run(p, Method::kComplete);
     if (r.status != UcpStatus::kJammed) continue;
     ++found;
-    std::printf("  seed %2llu: proven jammed in %6.1f ms (%ld LPs, %ld nodes)\n", static_cast<unsigned long long>(s),
-                1e3 * r.seconds, r.lps, r.nodes);
+    std::printf("  seed %2llu: proven jammed in %6.1f CPU ms of the solve (%ld LPs, %ld nodes)\n",
+                static_cast<unsigned long long>(s), 1e3 * r.phases.solve, r.lps, r.nodes);
   }
   // Target 3: LPs at nc = 8 against the enumerative baseline (4^8 modes, one LP each).
   std::printf("nc = 8, |alpha| = 16, mu in (0, 1): LPs of the complete search vs the enumerative baseline:\n");
@@ -238,8 +268,8 @@ int main(int argc, char** argv) {
     std::printf(
         "  seed %llu: complete %-8s %4ld LPs %7.1f ms | enumerate %-8s %ld LPs (%ld solution modes) %7.1f ms | "
         "ratio %.0fx\n",
-        static_cast<unsigned long long>(s), status_name(c.status), c.lps, 1e3 * c.seconds, status_name(e.status), e.lps,
-        e.solutions, 1e3 * e.seconds, static_cast<double>(e.lps) / static_cast<double>(c.lps));
+        static_cast<unsigned long long>(s), status_name(c.status), c.lps, 1e3 * c.phases.solve, status_name(e.status),
+        e.lps, e.solutions, 1e3 * e.phases.solve, static_cast<double>(e.lps) / static_cast<double>(c.lps));
   }
   return 0;
 }

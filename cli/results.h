@@ -65,11 +65,9 @@ std::vector<exact::Q> sweep_mus(const std::string& text);
 json sweep_entry_json(const geometry::PlanarScene& scene, const exact::Q& mu);
 std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<exact::Q, bool>& pushes);
 
-// ucp.cpp: `ucp --generate random|reduction`, the certificate text of a verdict (empty if it has none) and the
-// report (`certificate`: the file it was written to, or empty).
+// ucp.cpp: `ucp --generate random|reduction` and the report (`certificate`: the file it was written to, or empty).
 solvers::ucp::UcpProblem generated_problem(const std::string& kind, std::uint64_t seed, int nc,
                                            const std::string& mu_max, int abar, int rows, int cols, bool planted);
-std::string ucp_certificate_text(const solvers::ucp::UcpProblem& problem, const solvers::ucp::UcpReport& r);
 json ucp_json(const solvers::ucp::UcpReport& r, const std::string& certificate);
 
 // check.cpp: `check` of a parsed certificate.

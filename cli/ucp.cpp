@@ -1,6 +1,7 @@
 // `contactcert ucp FILE`: does the quasistatic contact problem (Pang, Trinkle, Lo) have a solution?
 // `contactcert ucp --generate random|reduction`: writes problem files (section 5 generator, Proposition 2).
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <iostream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -14,7 +15,6 @@
 #include "exact/arith.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
-#include "solvers/ucp/certificate.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/solve.h"
 
@@ -52,12 +52,6 @@ ucp::UcpProblem generated_problem(const std::string& kind, std::uint64_t seed, i
   }
   p.source += ", seed " + std::to_string(seed);
   return p;
-}
-
-std::string ucp_certificate_text(const ucp::UcpProblem& problem, const ucp::UcpReport& r) {
-  if (r.status == ucp::UcpStatus::kJammed && r.proof) return ucp::jammed_certificate(problem, *r.proof);
-  if (r.status == ucp::UcpStatus::kSolvable && r.x) return ucp::solvable_certificate(problem, r.x->to_q(), r.y->to_q());
-  return "";
 }
 
 json ucp_json(const ucp::UcpReport& r, const std::string& certificate) {
@@ -105,6 +99,9 @@ json ucp_json(const ucp::UcpReport& r, const std::string& certificate) {
   }
   if (!certificate.empty()) j["certificate"] = certificate;
   j["seconds"] = r.seconds;
+  const ucp::UcpPhases& t = r.phases;
+  j["phases"] = {{"parse", t.parse},     {"build", t.build}, {"solve", t.solve},
+                 {"recover", t.recover}, {"check", t.check}, {"certificate", t.certificate}};
   return j;
 }
 
@@ -134,10 +131,8 @@ int run_generate(const UcpCliOptions& o) {
   return 0;
 }
 
-int run_ucp(const UcpCliOptions& o) {
-  if (!o.generate.empty()) return run_generate(o);
-  if (o.file.empty()) throw exact::InputError("command line", "FILE", "expected a problem file (or --generate)");
-  const ucp::UcpProblem problem = ucp::load_ucp_problem(o.file);
+/// The options of solve_ucp from the command line's.
+ucp::UcpOptions solve_options(const UcpCliOptions& o) {
   ucp::UcpOptions opts;
   opts.method = ucp::parse_method(o.method);
   opts.arith = exact::parse_arith(o.common.arith);
@@ -145,6 +140,65 @@ int run_ucp(const UcpCliOptions& o) {
   opts.max_nodes = o.max_nodes;
   opts.max_bases = o.max_bases;
   opts.time_limit = o.common.time_limit;
+  if (!o.certificate.empty() && opts.arith == exact::Arith::kFloat)
+    throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
+  if (!o.certificate.empty() && opts.method == ucp::Method::kEnumerate)
+    throw exact::InputError("command line", "--certificate",
+                            "--method enumerate writes no certificate (its jammed verdict has no proof tree); use "
+                            "--method complete");
+  return opts;
+}
+
+void print_vector(const char* name, const Vec<Q>& v) {
+  std::cout << "  " << name << " =";
+  for (Eigen::Index i = 0; i < v.size(); ++i) std::cout << " " << exact::to_string(v(i));
+  std::cout << "\n";
+}
+
+/// The text report of `ucp FILE` (without --json), from the same report as ucp_json.
+void print_ucp_text(const UcpCliOptions& o, const ucp::UcpReport& r, bool certificate_written) {
+  std::cout << "ucp " << o.file << ": " << ucp::status_name(r.status) << " (" << r.reason << ")\n";
+  std::cout << "  method " << ucp::method_name(r.method) << ", arith " << exact::arith_name(r.arith)
+            << (r.decided_by.empty() ? "" : " (decided by " + r.decided_by + ")") << ", pairs " << r.pairs << ", LPs "
+            << r.lps;
+  if (r.method == ucp::Method::kComplete) std::cout << ", nodes " << r.nodes;
+  std::cout << ", " << r.seconds << " s\n";
+  const ucp::UcpPhases& t = r.phases;
+  std::cout << "  time: parse " << t.parse << " s, build " << t.build << " s, solve " << t.solve << " s, recover "
+            << t.recover << " s, check " << t.check << " s, certificate " << t.certificate << " s\n";
+  // On a jammed problem no pair has x^T y = 0 and the smallest value seen says nothing more: not printed.
+  if (r.best_xTy && !r.x && r.status == ucp::UcpStatus::kUnknown)
+    std::cout << "  smallest x^T y reached (a solution needs 0): " << exact::to_string(*r.best_xTy) << "\n";
+  if (r.x) {
+    print_vector("x", r.x->to_q());
+    print_vector("y", r.y->to_q());
+  }
+  if (r.physical) {
+    const ucp::PhysicalSolution& s = *r.physical;
+    for (auto [name, v] : {std::pair{"c_n", &s.c_n},
+                           {"c_t", &s.c_t},
+                           {"v_n", &s.v_n},
+                           {"v_t", &s.v_t},
+                           {"q_dot", &s.q_dot},
+                           {"theta_dot", &s.theta_dot},
+                           {"tau", &s.tau}})
+      print_vector(name, v->to_q());
+  }
+  if (r.conditions)
+    std::cout << "  conditions (2)-(10): "
+              << (r.conditions->status == ucp::ConditionsStatus::kSatisfied ? "satisfied exactly" : "VIOLATED") << "\n";
+  if (r.solutions >= 0) std::cout << "  solution modes: " << r.solutions << "\n";
+  if (certificate_written) std::cout << "  certificate written to " << o.certificate << "\n";
+  if (!o.certificate.empty() && !certificate_written) std::cout << "  no certificate written: the verdict is unknown\n";
+}
+
+int run_ucp(const UcpCliOptions& o) {
+  if (!o.generate.empty()) return run_generate(o);
+  if (o.file.empty()) throw exact::InputError("command line", "FILE", "expected a problem file (or --generate)");
+  const auto start = std::chrono::steady_clock::now();
+  ucp::UcpOptions opts = solve_options(o);
+  ucp::UcpPhases setup;
+  const ucp::UcpProblem problem = ucp::load_ucp_problem(o.file, &setup);
   ProgressLine progress("ucp " + o.file);
   if (progress.enabled())
     opts.progress = [&progress, &opts](long units, long lps) {
@@ -152,55 +206,23 @@ int run_ucp(const UcpCliOptions& o) {
                           ? std::to_string(units) + " modes tested"
                           : std::to_string(units) + " nodes, " + std::to_string(lps) + " LPs");
     };
-  if (!o.certificate.empty() && opts.arith == exact::Arith::kFloat)
-    throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
-  if (!o.certificate.empty() && opts.method == ucp::Method::kEnumerate)
-    throw exact::InputError("command line", "--certificate",
-                            "--method enumerate writes no certificate (its jammed verdict has no proof tree); use "
-                            "--method complete");
-  const ucp::UcpReport r = ucp::solve_ucp(problem, opts);
+  ucp::UcpReport r = ucp::solve_ucp(problem, opts);
   progress.finish();
+  r.phases.parse = setup.parse;
+  r.phases.build = setup.build;
 
   std::string cert_text;
   if (!o.certificate.empty()) {
-    cert_text = ucp_certificate_text(problem, r);
+    const ucp::PhaseTimer t(r.phases.certificate);
+    cert_text = ucp::certificate_text(problem, r);
     if (!cert_text.empty()) write_text_file(o.certificate, cert_text);
   }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const json j = ucp_json(r, cert_text.empty() ? "" : o.certificate);
-
-  if (o.common.json) {
-    std::cout << j.dump() << "\n";
-  } else {
-    std::cout << "ucp " << o.file << ": " << j["status"].get<std::string>() << " (" << r.reason << ")\n";
-    std::cout << "  method " << j["method"].get<std::string>() << ", arith " << j["arith"].get<std::string>()
-              << (r.decided_by.empty() ? "" : " (decided by " + r.decided_by + ")") << ", pairs " << r.pairs << ", LPs "
-              << r.lps;
-    if (r.method == ucp::Method::kComplete) std::cout << ", nodes " << r.nodes;
-    std::cout << ", " << r.seconds << " s\n";
-    // On a jammed problem no pair has x^T y = 0 and the smallest value seen says nothing more: not printed.
-    if (r.best_xTy && !r.x && r.status == ucp::UcpStatus::kUnknown)
-      std::cout << "  smallest x^T y reached (a solution needs 0): " << exact::to_string(*r.best_xTy) << "\n";
-    for (const char* k : {"x", "y"})
-      if (j.contains(k)) {
-        std::cout << "  " << k << " =";
-        for (const auto& e : j[k]) std::cout << " " << e.get<std::string>();
-        std::cout << "\n";
-      }
-    if (j.contains("physical"))
-      for (const char* k : {"c_n", "c_t", "v_n", "v_t", "q_dot", "theta_dot", "tau"}) {
-        std::cout << "  " << k << " =";
-        for (const auto& e : j["physical"][k]) std::cout << " " << e.get<std::string>();
-        std::cout << "\n";
-      }
-    if (r.conditions)
-      std::cout << "  conditions (2)-(10): "
-                << (r.conditions->status == ucp::ConditionsStatus::kSatisfied ? "satisfied exactly" : "VIOLATED")
-                << "\n";
-    if (r.solutions >= 0) std::cout << "  solution modes: " << r.solutions << "\n";
-    if (!cert_text.empty()) std::cout << "  certificate written to " << o.certificate << "\n";
-    if (!o.certificate.empty() && cert_text.empty()) std::cout << "  no certificate written: the verdict is unknown\n";
-  }
+  if (o.common.json)
+    std::cout << ucp_json(r, cert_text.empty() ? "" : o.certificate).dump() << "\n";
+  else
+    print_ucp_text(o, r, !cert_text.empty());
   return r.status == ucp::UcpStatus::kUnknown ? 3 : 0;
 }
 

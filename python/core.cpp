@@ -172,7 +172,7 @@ WithCertificate solve(const Ucp& u, const std::string& method, const std::string
   const solvers::ucp::UcpReport r = solvers::ucp::solve_ucp(u.problem, opts);
   std::string text;
   if (!certificate.empty()) {
-    text = cli::ucp_certificate_text(u.problem, r);
+    text = solvers::ucp::certificate_text(u.problem, r);
     if (!text.empty()) cli::write_text_file(certificate, text);
   }
   return {cli::ucp_json(r, text.empty() ? "" : certificate).dump(), text};

@@ -155,14 +155,14 @@ std::vector<Instance> degenerate(double d, std::uint64_t seed) {
   for (int i = 0; i < stopped; ++i) qs.theta_dot(2 * i) = 0, qs.theta_dot(2 * i + 1) = 0;
   p.ucp = solvers::ucp::build_ucp(qs);
   p.source = "degenerate: section 5 problem nc=10 with " + std::to_string(stopped) + " fingers stopped";
-  return {{Family::kDegenerate, d, std::to_string(stopped) + "/10 stopped", seed, UcpQuestion{p, std::nullopt}}};
+  return {{Family::kDegenerate, d, std::to_string(stopped) + "/10 stopped", seed, ucp_question(std::move(p))}};
 }
 
 std::vector<Instance> reduction(double d, std::uint64_t seed) {
   Rng rng(seed);
   const int n = level(d, 4, 14);
   const auto zo = solvers::ucp::random_zero_one(2, n, seed % 2 == 1, rng);
-  UcpQuestion q{solvers::ucp::reduction_problem(zo), solvers::ucp::zero_one_feasible(zo)};
+  UcpQuestion q = ucp_question(solvers::ucp::reduction_problem(zo), solvers::ucp::zero_one_feasible(zo));
   return {{Family::kReduction, d, "2 x " + std::to_string(n), seed, std::move(q)}};
 }
 
@@ -171,7 +171,7 @@ std::vector<Instance> large(double d, std::uint64_t seed) {
   const int nc = level(d, 5, 40), k = level(d, 2, 8);
   std::vector<Instance> out;
   out.push_back({Family::kLarge, d, "nc " + std::to_string(nc) + ", " + std::to_string(k) + " fixels", seed,
-                 UcpQuestion{random_ucp(nc, rng), std::nullopt}});
+                 ucp_question(random_ucp(nc, rng))});
   // Fixels on k edges of an octagon; every fixel rolls but one, which slides.
   const std::vector<Point2> V = {{2, -1}, {2, 1}, {1, 2}, {-1, 2}, {-2, 1}, {-2, -1}, {-1, -2}, {1, -2}};
   std::vector<std::pair<std::size_t, Q>> at;
@@ -192,8 +192,7 @@ std::vector<Instance> paper(double d, std::uint64_t seed) {
   std::vector<Instance> out;
   for (int k = 1; k <= 4; ++k) {
     const std::string file = "pang1994_dataset" + std::to_string(k) + ".json";
-    out.push_back(
-        {Family::kPaper, d, file, seed, UcpQuestion{solvers::ucp::load_ucp_problem(dir + "/" + file), std::nullopt}});
+    out.push_back({Family::kPaper, d, file, seed, ucp_question(solvers::ucp::load_ucp_problem(dir + "/" + file))});
   }
   const auto disk = geometry::load_planar_scene(dir + "/bt2002_section7_disk.json");
   for (const auto& [text, g] : std::vector<std::pair<std::string, std::vector<int>>>{
@@ -254,6 +253,11 @@ const FamilyInfo& info(Family f) {
 }
 
 }  // namespace
+
+UcpQuestion ucp_question(solvers::ucp::UcpProblem problem, std::optional<bool> known_solvable) {
+  std::string text = solvers::ucp::to_json_text(problem);
+  return {std::move(problem), known_solvable, std::move(text)};
+}
 
 const char* question_kind(const Question& q) {
   return std::visit(

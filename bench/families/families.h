@@ -19,11 +19,16 @@ using exact::Q;
 using exact::Vec;
 
 /// Does the quasistatic problem (or generic UCP) have a complementary pair? `known_solvable` is set when
-/// the generator knows the answer independently (Proposition 2 instances, by brute force).
+/// the generator knows the answer independently (Proposition 2 instances, by brute force). `text`: the problem
+/// as a file (SPEC section 2), which each run reads and builds X and Y from, as a user's run does.
 struct UcpQuestion {
   solvers::ucp::UcpProblem problem;
   std::optional<bool> known_solvable;
+  std::string text;
 };
+
+/// The question of `problem`, with its file text.
+UcpQuestion ucp_question(solvers::ucp::UcpProblem problem, std::optional<bool> known_solvable = std::nullopt);
 
 /// Strongly / weakly stable or unstable under wrench g (wrench cone paper, section 7).
 struct StabilityQuestion {

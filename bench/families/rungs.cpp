@@ -32,13 +32,15 @@ Vec<Q> to_q(const Vec<T>& v) {
   return v.unaryExpr([](const T& x) { return as_rational(x); });
 }
 
-/// `contactcert ucp`'s default method: the bilinear algorithm, then the complete search (arith picks the path).
+/// `contactcert ucp`'s default method: the bilinear algorithm, then the complete search (arith picks the path);
+/// the problem read from its text and X and Y built first, as a user's run does.
 template <class T>
 Answer answer(const UcpQuestion& q, const Rung& rung) {
   solvers::ucp::UcpOptions o;
   o.arith = rung.arith;
   o.float_rung = rung.number;
-  const solvers::ucp::UcpReport r = solvers::ucp::solve_ucp(q.problem, o);
+  const solvers::ucp::UcpProblem problem = solvers::ucp::read_ucp_problem(exact::JsonInput::parse(q.text, "bench"));
+  const solvers::ucp::UcpReport r = solvers::ucp::solve_ucp(problem, o);
   Answer a;
   a.verdict = solvers::ucp::status_name(r.status);
   if (r.status != solvers::ucp::UcpStatus::kSolvable) return a;

@@ -4,6 +4,7 @@
 
 #include "exact/linalg.h"
 #include "exact/rational_text.h"
+#include "solvers/ucp/integer_rows.h"
 
 namespace contactcert::solvers::ucp {
 
@@ -238,19 +239,29 @@ CertificateCheck check_solvable(const JsonInput& cert, const CheckData& c) {
   return out;
 }
 
-/// build_Y scales row r of [C | -d] by s_r > 0; a Farkas vector u of the scaled rows is (s_r u_r) for C.
-Vec<Q> unscale_rows(const StandardPolyhedron<Q>& Y, const QuasistaticProblem& p, const Vec<Q>& u) {
+/// build_Y scales row r of [C | -d] by s_r > 0; a Farkas vector u of the scaled rows is (s_r u_r) for C. The s_r.
+Vec<Q> row_scales(const StandardPolyhedron<Q>& Y, const QuasistaticProblem& p) {
   const Mat<Q> C = build_C(p);
-  Vec<Q> out(u.size());
-  for (Index r = 0; r < u.size(); ++r) {
-    Q s = 0;
-    for (Index c = 0; c < C.cols() && sgn(s) == 0; ++c)
-      if (sgn(C(r, c)) != 0) s = Y.A(r, c) / C(r, c);
-    if (sgn(s) == 0 && sgn(p.d(r)) != 0) s = Y.b(r) / Q(-p.d(r));
-    if (sgn(s) == 0) s = 1;  // a zero row: unscaled
-    out(r) = s * u(r);
+  Vec<Q> s(C.rows());
+  for (Index r = 0; r < C.rows(); ++r) {
+    s(r) = 0;
+    for (Index c = 0; c < C.cols() && sgn(s(r)) == 0; ++c)
+      if (sgn(C(r, c)) != 0) s(r) = Y.A(r, c) / C(r, c);
+    if (sgn(s(r)) == 0 && sgn(p.d(r)) != 0) s(r) = Y.b(r) / Q(-p.d(r));
+    if (sgn(s(r)) == 0) s(r) = 1;  // a zero row: unscaled
   }
-  return out;
+  return s;
+}
+
+/// Z^T u for Z's sparse rows (integer_rows.h): the combination of P's left null vectors.
+Vec<Q> z_transpose_times(const std::vector<SparseRow>& Z, Index n, const Vec<Q>& u) {
+  Vec<Q> w = Vec<Q>::Zero(n);
+  for (std::size_t r = 0; r < Z.size(); ++r) {
+    const Q& ur = u(static_cast<Index>(r));
+    if (sgn(ur) == 0) continue;
+    for (std::size_t k = 0; k < Z[r].col.size(); ++k) w(Z[r].col[k]) += ur * Q(Z[r].value[k]);
+  }
+  return w;
 }
 
 }  // namespace
@@ -258,8 +269,12 @@ Vec<Q> unscale_rows(const StandardPolyhedron<Q>& Y, const QuasistaticProblem& p,
 std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>& result) {
   json j = header("ucp_jammed", problem);
   j["reason"] = result.reason;
-  Mat<Q> ZT;
-  if (problem.quasistatic) ZT = build_Z(*problem.quasistatic).transpose();
+  std::vector<SparseRow> Z;
+  Vec<Q> y_scale;
+  if (problem.quasistatic) {
+    Z = left_null_rows(problem.quasistatic->P);
+    y_scale = row_scales(problem.ucp.Y, *problem.quasistatic);
+  }
   json nodes = json::array();
   for (const SearchNode<Q>& node : result.tree) {
     json n;
@@ -271,8 +286,8 @@ std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>&
       n["empty"] = node.side == Side::kX ? "X" : "Y";
       // Quasistatic X: state the certificate as w = Z^T u, independent of the choice of Z.
       Vec<Q> u = node.farkas;
-      if (problem.quasistatic && node.side == Side::kX) u = ZT * node.farkas;
-      if (problem.quasistatic && node.side == Side::kY) u = unscale_rows(problem.ucp.Y, *problem.quasistatic, u);
+      if (problem.quasistatic && node.side == Side::kX) u = z_transpose_times(Z, problem.quasistatic->P.rows(), u);
+      if (problem.quasistatic && node.side == Side::kY) u = y_scale.cwiseProduct(u);
       n["farkas"] = integers(exact::primitive(u));
     }
     nodes.push_back(n);

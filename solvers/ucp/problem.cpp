@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "exact/linalg.h"
 #include "exact/rational_text.h"
+#include "solvers/ucp/integer_rows.h"
 #include "solvers/ucp/scene_builder.h"
 
 namespace contactcert::solvers::ucp {
@@ -15,12 +15,6 @@ using exact::JsonInput;
 namespace {
 
 using Index = Eigen::Index;
-
-Mat<Q> J_stacked(const QuasistaticProblem& p) {
-  Mat<Q> J(2 * p.nc, p.ntheta);
-  J << p.Jn, p.Jt;
-  return J;
-}
 
 QuasistaticProblem read_quasistatic(const JsonInput& in) {
   in.expect_keys({"kind", "nc", "nq", "ntheta", "P", "Jn", "Jt", "theta_dot", "alpha", "d", "mu", "source", "note"});
@@ -96,10 +90,15 @@ Mat<Q> QuasistaticProblem::Wt() const { return P.block(nc, 0, nc, nq).transpose(
 Vec<Q> QuasistaticProblem::g_obj() const { return d.segment(nc, nq); }
 
 Vec<Q> QuasistaticProblem::J_alpha_theta_alpha() const {
-  const Mat<Q> J = J_stacked(*this);
+  // Sparse in J: only its non-zero entries in columns with a non-zero given velocity contribute.
   Vec<Q> h = Vec<Q>::Zero(2 * nc);
-  for (int j : alpha)
-    if (sgn(theta_dot(j)) != 0) h += J.col(j) * theta_dot(j);
+  for (int j : alpha) {
+    if (sgn(theta_dot(j)) == 0) continue;
+    for (Index i = 0; i < nc; ++i) {
+      if (sgn(Jn(i, j)) != 0) h(i) += Jn(i, j) * theta_dot(j);
+      if (sgn(Jt(i, j)) != 0) h(nc + i) += Jt(i, j) * theta_dot(j);
+    }
+  }
   return h;
 }
 
@@ -111,10 +110,9 @@ void validate(const QuasistaticProblem& p, const std::string& file) {
   if (p.Jt.rows() != p.nc || p.Jt.cols() != p.ntheta) fail("$.Jt", "expected an nc x ntheta matrix");
   if (p.mu.size() != p.nc) fail("$.mu", "expected nc entries");
   if (p.d.size() != p.nc + m) fail("$.d", "expected nc + nq + |abar| entries");
-  const Mat<Q> J = J_stacked(p);
   for (std::size_t k = 0; k < p.abar.size(); ++k) {
     const Index col = p.nq + static_cast<Index>(k);
-    if (p.P.col(col) != J.col(p.abar[k]))
+    if (p.P.col(col).head(p.nc) != p.Jn.col(p.abar[k]) || p.P.col(col).tail(p.nc) != p.Jt.col(p.abar[k]))
       fail("$.P", "column " + std::to_string(col) + " (J_abar) must equal column " + std::to_string(p.abar[k]) +
                       " of [Jn; Jt] (joint " + std::to_string(p.abar[k]) + " is not in alpha)");
   }
@@ -122,77 +120,84 @@ void validate(const QuasistaticProblem& p, const std::string& file) {
     if (sgn(p.mu(i)) < 0) fail("$.mu[" + std::to_string(i) + "]", "expected a friction coefficient >= 0");
 }
 
-UcpProblem read_ucp_problem(const JsonInput& in) {
+UcpProblem read_ucp_problem(const JsonInput& in, UcpPhases* phases) {
+  double parse = 0, build = 0;
   UcpProblem out;
-  const std::string kind = in.at("kind").string();
-  if (kind == "quasistatic") {
-    out.quasistatic = read_quasistatic(in);
-    out.ucp = build_ucp(*out.quasistatic);
-  } else if (kind == "quasistatic_scene") {
-    out.quasistatic = build_quasistatic_scene(in);
-    out.ucp = build_ucp(*out.quasistatic);
-  } else if (kind == "ucp") {
-    in.expect_keys({"kind", "n", "X", "Y", "source", "note"});
-    const auto n = static_cast<std::size_t>(in.at("n").integer(1, 100000));
-    out.ucp.X = read_polyhedron(in.at("X"), n);
-    out.ucp.Y = read_polyhedron(in.at("Y"), n);
-  } else {
-    in.at("kind").fail("expected \"quasistatic\", \"quasistatic_scene\" or \"ucp\", found \"" + kind + "\"");
+  {
+    const PhaseTimer t(parse);
+    const std::string kind = in.at("kind").string();
+    if (kind == "quasistatic") {
+      out.quasistatic = read_quasistatic(in);
+    } else if (kind == "quasistatic_scene") {
+      out.quasistatic = build_quasistatic_scene(in);
+    } else if (kind == "ucp") {
+      in.expect_keys({"kind", "n", "X", "Y", "source", "note"});
+      const auto n = static_cast<std::size_t>(in.at("n").integer(1, 100000));
+      out.ucp.X = read_polyhedron(in.at("X"), n);
+      out.ucp.Y = read_polyhedron(in.at("Y"), n);
+    } else {
+      in.at("kind").fail("expected \"quasistatic\", \"quasistatic_scene\" or \"ucp\", found \"" + kind + "\"");
+    }
+    if (auto s = in.find("source")) out.source = s->string();
   }
-  if (auto s = in.find("source")) out.source = s->string();
+  if (out.quasistatic) {
+    const PhaseTimer t(build);
+    out.ucp = build_ucp(*out.quasistatic);
+  }
+  if (phases) phases->parse += parse, phases->build += build;
   return out;
 }
 
-UcpProblem load_ucp_problem(const std::string& path) { return read_ucp_problem(JsonInput::load(path)); }
-
-Mat<Q> build_Z(const QuasistaticProblem& p) {
-  // Section 2: Z a = 0 iff a = P b for some b, so Z spans the left null space of P.
-  Mat<Q> Z = exact::left_null_space<Q>(p.P);
-  // Rows scaled to primitive integer vectors: the same X with smaller numbers for the LPs.
-  for (Index r = 0; r < Z.rows(); ++r) {
-    const std::vector<exact::Z> row = exact::primitive(Vec<Q>(Z.row(r).transpose()));
-    for (Index c = 0; c < Z.cols(); ++c) Z(r, c) = Q(row[static_cast<std::size_t>(c)]);
+UcpProblem load_ucp_problem(const std::string& path, UcpPhases* phases) {
+  double parse = 0;
+  std::optional<JsonInput> in;
+  {
+    const PhaseTimer t(parse);
+    in = JsonInput::load(path);
   }
-  return Z;
+  if (phases) phases->parse += parse;
+  return read_ucp_problem(*in, phases);
 }
 
 StandardPolyhedron<Q> build_X(const QuasistaticProblem& p) {
+  // Section 2: Z a = 0 iff a = P b for some b. X.A = Z B with B x = [v_n; v_t^+ - v_t^-] for x = (v_n, v_t^+,
+  // v_t^-): B only selects and negates columns, so row r of X.A is row r of Z with its v_t block repeated negated.
   const Index nc = p.nc;
-  // B x = [v_n; v_t^+ - v_t^-] for x = (v_n, v_t^+, v_t^-).
-  Mat<Q> B = Mat<Q>::Zero(2 * nc, 3 * nc);
-  for (Index i = 0; i < nc; ++i) {
-    B(i, i) = 1;
-    B(nc + i, nc + i) = 1;
-    B(nc + i, 2 * nc + i) = -1;
-  }
-  const Mat<Q> Z = build_Z(p);
+  const std::vector<SparseRow> rows = left_null_rows(p.P);
+  const Vec<Q> h = p.J_alpha_theta_alpha();
   StandardPolyhedron<Q> X;
-  X.A = Z * B;
-  X.b = -(Z * p.J_alpha_theta_alpha());
+  X.A = Mat<Q>::Zero(static_cast<Index>(rows.size()), 3 * nc);
+  X.b = Vec<Q>::Zero(X.A.rows());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const auto r = static_cast<Index>(k);
+    for (std::size_t e = 0; e < rows[k].col.size(); ++e) {
+      const Index c = rows[k].col[e];
+      const Q z(rows[k].value[e]);
+      X.A(r, c) = z;
+      if (c >= nc) X.A(r, c + nc) = -z;
+      if (sgn(h(c)) != 0) X.b(r) -= z * h(c);  // X.b = -Z h
+    }
+  }
   return X;
 }
 
 Mat<Q> build_C(const QuasistaticProblem& p) {
+  // Column i of Wn - Wt U is Wn_i - mu_i Wt_i (U = diag(mu)): no product with U.
   const Index nc = p.nc, nq = p.nq, na = static_cast<Index>(p.abar.size());
-  const Mat<Q> Wn = p.Wn(), Wt = p.Wt();
-  Mat<Q> U = Mat<Q>::Zero(nc, nc);
-  for (Index i = 0; i < nc; ++i) U(i, i) = p.mu(i);
-  Mat<Q> JnT(na, nc), JtT(na, nc);  // (J_n^T)_abar, (J_t^T)_abar
-  for (Index k = 0; k < na; ++k) {
-    JnT.row(k) = p.Jn.col(p.abar[static_cast<std::size_t>(k)]).transpose();
-    JtT.row(k) = p.Jt.col(p.abar[static_cast<std::size_t>(k)]).transpose();
-  }
-  const Mat<Q> I = Mat<Q>::Identity(nc, nc);
   Mat<Q> C = Mat<Q>::Zero(nc + nq + na, 3 * nc);
-  C.block(0, 0, nc, nc) = 2 * U;
-  C.block(0, nc, nc, nc) = -I;
-  C.block(0, 2 * nc, nc, nc) = -I;
-  C.block(nc, 0, nq, nc) = Wn - Wt * U;
-  C.block(nc, nc, nq, nc) = Wt;
-  if (na > 0) {
-    C.block(nc + nq, 0, na, nc) = JnT - JtT * U;
-    C.block(nc + nq, nc, na, nc) = JtT;
+  for (Index i = 0; i < nc; ++i) {
+    C(i, i) = 2 * p.mu(i);
+    C(i, nc + i) = -1;
+    C(i, 2 * nc + i) = -1;
   }
+  // Rows nc.. of [Wn - Wt U | Wt | 0] are the columns of P = [W^T  J_abar] (Wn^T, Wt^T stacked), (J_abar)^T likewise.
+  for (Index k = 0; k < nq + na; ++k)
+    for (Index i = 0; i < nc; ++i) {
+      const Q& n = p.P(i, k);
+      const Q& t = p.P(nc + i, k);
+      C(nc + k, nc + i) = t;
+      C(nc + k, i) = sgn(t) == 0 ? n : Q(n - t * p.mu(i));
+    }
   return C;
 }
 
@@ -201,12 +206,13 @@ StandardPolyhedron<Q> build_Y(const QuasistaticProblem& p) {
   Y.A = build_C(p);
   Y.b = -p.d;  // 0 = C y + d
   // Each row [C | -d] scaled to a primitive integer vector: the same Y with smaller numbers for the LPs.
+  std::vector<Q*> row;
   for (Index r = 0; r < Y.A.rows(); ++r) {
-    Vec<Q> row(Y.A.cols() + 1);
-    row << Y.A.row(r).transpose(), Y.b(r);
-    const std::vector<exact::Z> z = exact::primitive(row);
-    for (Index c = 0; c < Y.A.cols(); ++c) Y.A(r, c) = Q(z[static_cast<std::size_t>(c)]);
-    Y.b(r) = Q(z.back());
+    row.clear();
+    for (Index c = 0; c < Y.A.cols(); ++c)
+      if (sgn(Y.A(r, c)) != 0) row.push_back(&Y.A(r, c));
+    row.push_back(&Y.b(r));
+    make_primitive(row);
   }
   return Y;
 }

@@ -10,6 +10,7 @@
 
 #include "exact/json_input.h"
 #include "exact/number.h"
+#include "solvers/ucp/phases.h"
 
 namespace contactcert::solvers::ucp {
 
@@ -58,18 +59,18 @@ struct UcpProblem {
 };
 
 /// Reads and validates a problem (SPEC section 2, or the generic `"kind": "ucp"` form); throws
-/// exact::InputError naming the field.
-UcpProblem read_ucp_problem(const exact::JsonInput& in);
-/// Loads a problem file.
-UcpProblem load_ucp_problem(const std::string& path);
+/// exact::InputError naming the field. phases (optional): receives the seconds of reading (parse) and of
+/// building X and Y (build).
+UcpProblem read_ucp_problem(const exact::JsonInput& in, UcpPhases* phases = nullptr);
+/// Loads a problem file (the file's JSON parse counts as parse).
+UcpProblem load_ucp_problem(const std::string& path, UcpPhases* phases = nullptr);
 
 /// Validates a quasistatic problem built in memory (generators); throws exact::InputError.
 void validate(const QuasistaticProblem& p, const std::string& file = "");
 
-/// Z: rows spanning the left null space of P (Z a = 0 iff a = P b), scaled to primitive integers.
-Mat<Q> build_Z(const QuasistaticProblem& p);
 /// X = {(v_n, v_t^+, v_t^-) >= 0 : Z_n v_n + Z_t (v_t^+ - v_t^-) + Z J_alpha theta_dot_alpha = 0} with
-/// Z spanning the left null space of P, computed exactly (section 2), its rows scaled to primitive integers.
+/// Z spanning the left null space of P (Z a = 0 iff a = P b), computed in integers (section 2, integer_rows.h),
+/// its rows primitive.
 StandardPolyhedron<Q> build_X(const QuasistaticProblem& p);
 /// Y = {(c_n, s_t^+, s_t^-) >= 0 : C y + d = 0} (section 2), each row of [C | -d] scaled by a positive factor
 /// to primitive integers (the same set; smaller numbers for the LPs).

@@ -6,6 +6,7 @@
 
 #include "exact/interval_number.h"
 #include "exact/mpfr_number.h"
+#include "solvers/ucp/certificate.h"
 #include "solvers/ucp/enumerate.h"
 #include "solvers/ucp/float_check.h"
 
@@ -61,9 +62,14 @@ template <class T>
 void fill_pair(UcpReport& rep, Vec<T> x, Vec<T> y, const UcpProblem& problem) {
   if constexpr (std::is_same_v<T, Q>) {
     if (problem.quasistatic) {
-      rep.physical = recover(*problem.quasistatic, x, y);
+      {
+        const PhaseTimer t(rep.phases.recover);
+        rep.physical = recover(*problem.quasistatic, x, y);
+      }
+      const PhaseTimer t(rep.phases.check);
       if (rep.physical) rep.conditions = check_conditions(*problem.quasistatic, *rep.physical);
     }
+    const PhaseTimer t(rep.phases.recover);
     rep.x = exact::RationalVector(x), rep.y = exact::RationalVector(y);
   } else {
     (void)problem;
@@ -78,8 +84,9 @@ void fill_pair(UcpReport& rep, Vec<T> x, Vec<T> y, const UcpProblem& problem) {
 /// The float pair of rep made exact with the zero pattern of ev (float_check.h), with its physics. A quasistatic
 /// problem's pair comes from its velocities and forces (pattern_solution: small systems in P instead of X's and Y's
 /// rows, and the physics comes with it), else from X's and Y's rows. False if a side's face is empty in exact
-/// arithmetic.
+/// arithmetic. Timed as recover (pattern_solution's check of (2)-(10) included).
 bool exact_solution(const UcpProblem& problem, const FloatEvidence& ev, UcpReport& rep, LpCounters& count) {
+  std::optional<PhaseTimer> t(std::in_place, rep.phases.recover);
   if (problem.quasistatic) {
     if (std::optional<PatternSolution> s = pattern_solution(*problem.quasistatic, ev.x_zero, ev.y_zero)) {
       rep.conditions = std::move(s->conditions);
@@ -92,6 +99,7 @@ bool exact_solution(const UcpProblem& problem, const FloatEvidence& ev, UcpRepor
   std::optional<std::pair<Vec<Q>, Vec<Q>>> pair =
       exact_pair(problem.ucp, rep.x_approx, rep.y_approx, ev.x_zero, ev.y_zero, count);
   if (!pair) return false;
+  t.reset();  // fill_pair times its own phases
   fill_pair(rep, std::move(pair->first), std::move(pair->second), problem);
   return true;
 }
@@ -282,11 +290,15 @@ auto with_float_instance(const UcpProblem& problem, const exact::Rung& rung, F&&
   return in(convert<double>(problem.ucp));
 }
 
-/// --arith adaptive: the rungs of exact::adaptive_ladder() in order; the first float rung whose verdict
-/// checks out decides, else the exact rung (rational search, its LPs on the LP ladder) does.
-void solve_adaptive(const UcpProblem& problem, const UcpOptions& opts, const exact::Deadline& deadline,
-                    UcpReport& rep) {
-  for (const exact::Rung& rung : exact::adaptive_ladder()) {
+/// --arith adaptive: the rungs of exact::adaptive_ladder() in order; --arith verified: double, then exact (the float
+/// path's search, checked; the exact search, with every LP verified, only if its verdict does not check out). The
+/// first float rung whose verdict checks out decides, else the exact rung (rational search, its LPs on the LP
+/// ladder or verified) does.
+void solve_on_ladder(const UcpProblem& problem, const UcpOptions& opts, const exact::Deadline& deadline,
+                     UcpReport& rep) {
+  static const std::vector<exact::Rung> verified_ladder = {{exact::Rung::Kind::kDouble}, {exact::Rung::Kind::kExact}};
+  const bool adaptive = opts.arith == Arith::kAdaptive;
+  for (const exact::Rung& rung : adaptive ? exact::adaptive_ladder() : verified_ladder) {
     bool decided = true;
     if (rung.kind == exact::Rung::Kind::kExact)
       run<Q>(problem, problem.ucp, opts, deadline, rep);
@@ -295,7 +307,7 @@ void solve_adaptive(const UcpProblem& problem, const UcpOptions& opts, const exa
         return decide_at(problem, u, factors, opts, deadline, rep);
       });
     if (decided) {
-      rep.decided_by = exact::rung_name(rung);
+      if (adaptive) rep.decided_by = exact::rung_name(rung);
       return;
     }
   }
@@ -350,6 +362,7 @@ const char* status_name(UcpStatus s) {
 
 UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts) {
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
   const exact::Deadline deadline = exact::Deadline::after(opts.time_limit);
   UcpReport rep;
   rep.method = opts.method;
@@ -370,13 +383,20 @@ UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts) {
     if (e.solutions > 0) fill_pair(rep, std::move(e.x), std::move(e.y), problem);
   } else if (opts.arith == Arith::kFloat) {
     run_float(problem, opts, deadline, rep);
-  } else if (opts.arith == Arith::kAdaptive) {
-    solve_adaptive(problem, opts, deadline, rep);
+  } else if (opts.arith == Arith::kAdaptive || opts.arith == Arith::kVerified) {
+    solve_on_ladder(problem, opts, deadline, rep);
   } else {
     run<Q>(problem, problem.ucp, opts, deadline, rep);
   }
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  rep.phases.solve = std::max(0.0, thread_cpu_seconds() - cpu_start - rep.phases.recover - rep.phases.check);
   return rep;
+}
+
+std::string certificate_text(const UcpProblem& problem, const UcpReport& r) {
+  if (r.status == UcpStatus::kJammed && r.proof) return jammed_certificate(problem, *r.proof);
+  if (r.status == UcpStatus::kSolvable && r.x) return solvable_certificate(problem, r.x->to_q(), r.y->to_q());
+  return "";
 }
 
 }  // namespace contactcert::solvers::ucp

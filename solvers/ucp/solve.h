@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "exact/arith.h"
+#include "solvers/ucp/phases.h"
 #include "solvers/ucp/recovery.h"
 #include "solvers/ucp/search.h"
 
@@ -66,10 +67,17 @@ struct UcpReport {
   /// --arith adaptive, kJammed: leaves of the deciding rung's search tree whose face was not empty in exact
   /// arithmetic, each re-searched exactly below it (float_check.h).
   long repaired_leaves = 0;
+  /// Wall seconds of the whole run: solve_ucp sets its own (solve + recover + check); a caller that also parses,
+  /// builds or writes a certificate covers those too (`contactcert ucp` does).
   double seconds = 0;
+  UcpPhases phases;  ///< CPU seconds per phase (the caller fills parse, build and certificate)
 };
 
 /// Runs the method; never throws for budgets (status kUnknown says so).
 UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts);
+
+/// The certificate text of a verdict on an exact path (certificate.h): the proof tree of kJammed, the pair of
+/// kSolvable; empty if the report has neither.
+std::string certificate_text(const UcpProblem& problem, const UcpReport& r);
 
 }  // namespace contactcert::solvers::ucp

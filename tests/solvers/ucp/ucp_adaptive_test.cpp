@@ -54,6 +54,22 @@ TEST(UcpAdaptive, RandomProblemsGetTheExactVerdictWithACertificate) {
   EXPECT_GE(rungs["double"], 25);
 }
 
+// Issue 18: --arith verified follows the float path and only checks it (nc = 10 seed 5 once took 240 LPs verified
+// against 4 in floats); its verdicts are the exact ones.
+TEST(UcpAdaptive, VerifiedTakesNoMoreLpsThanFloat) {
+  for (int seed = 0; seed < 60; ++seed) {
+    const UcpProblem p = testing::random_problem(seed, 10);
+    const UcpReport f = solve(p, Arith::kFloat), v = solve(p, Arith::kVerified);
+    EXPECT_LE(v.lps, f.lps) << "random seed " << seed;
+    EXPECT_EQ(v.status, solve(p, Arith::kAdaptive).status) << "random seed " << seed;
+  }
+  std::mt19937_64 rng(5);
+  RandomProblemOptions o;
+  o.nc = 10;
+  const UcpProblem p = generate_random_problem(o, rng);
+  EXPECT_LE(solve(p, Arith::kVerified).lps, solve(p, Arith::kFloat).lps);
+}
+
 TEST(UcpAdaptive, ReductionInstancesGetTheExactVerdictWithACertificate) {
   for (int seed = 0; seed < 30; ++seed) {
     std::mt19937_64 gen(seed);

@@ -1,12 +1,15 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <random>
 
 #include "exact/input_error.h"
 #include "exact/linalg.h"
+#include "exact/rational_text.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/problem.h"
+#include "tests/solvers/ucp/random_problems.h"
 
 namespace contactcert::solvers::ucp {
 namespace {
@@ -52,6 +55,58 @@ TEST(UcpProblem, DataSetsParseExactlyAsWrittenInThePaper) {
   const UcpProblem p4 = load_ucp_problem(scene(4));
   EXPECT_EQ(p4.quasistatic->mu, (Vec<Q>(3) << Q(7, 10), Q(9, 10), Q(9, 10)).finished());
   EXPECT_EQ(p4.quasistatic->P, load_ucp_problem(scene(2)).quasistatic->P);
+}
+
+/// X and Y as the rational builder made them before the integer one (the oracle of
+/// XAndYInIntegersEqualTheRationalOnes): Z = left_null_space<Q>(P) with rows made primitive, X = [Z B | -Z J_alpha
+/// theta_alpha] by dense products, C from Wn - Wt U, rows of [C | -d] primitive.
+UcpInstance<Q> rational_ucp(const QuasistaticProblem& p) {
+  const Eigen::Index nc = p.nc;
+  Mat<Q> Z = exact::left_null_space<Q>(p.P);
+  for (Eigen::Index r = 0; r < Z.rows(); ++r) {
+    const std::vector<exact::Z> row = exact::primitive(Vec<Q>(Z.row(r).transpose()));
+    for (Eigen::Index c = 0; c < Z.cols(); ++c) Z(r, c) = Q(row[static_cast<std::size_t>(c)]);
+  }
+  Mat<Q> B = Mat<Q>::Zero(2 * nc, 3 * nc), J(2 * nc, p.ntheta);
+  for (Eigen::Index i = 0; i < nc; ++i) B(i, i) = 1, B(nc + i, nc + i) = 1, B(nc + i, 2 * nc + i) = -1;
+  J << p.Jn, p.Jt;
+  Vec<Q> h = Vec<Q>::Zero(2 * nc);
+  for (int j : p.alpha) h += J.col(j) * p.theta_dot(j);
+  UcpInstance<Q> u;
+  u.X.A = Z * B;
+  u.X.b = -(Z * h);
+  const Eigen::Index nq = p.nq, na = static_cast<Eigen::Index>(p.abar.size());
+  Mat<Q> U = Mat<Q>::Zero(nc, nc), JnT(na, nc), JtT(na, nc);
+  for (Eigen::Index i = 0; i < nc; ++i) U(i, i) = p.mu(i);
+  for (Eigen::Index k = 0; k < na; ++k) {
+    JnT.row(k) = p.Jn.col(p.abar[static_cast<std::size_t>(k)]).transpose();
+    JtT.row(k) = p.Jt.col(p.abar[static_cast<std::size_t>(k)]).transpose();
+  }
+  Mat<Q> C = Mat<Q>::Zero(nc + nq + na, 3 * nc);
+  C.block(0, 0, nc, nc) = 2 * U;
+  C.block(0, nc, nc, nc) = -Mat<Q>::Identity(nc, nc);
+  C.block(0, 2 * nc, nc, nc) = -Mat<Q>::Identity(nc, nc);
+  C.block(nc, 0, nq, nc) = p.Wn() - p.Wt() * U;
+  C.block(nc, nc, nq, nc) = p.Wt();
+  if (na > 0) C.block(nc + nq, 0, na, nc) = JnT - JtT * U, C.block(nc + nq, nc, na, nc) = JtT;
+  u.Y.A = C;
+  u.Y.b = -p.d;
+  for (Eigen::Index r = 0; r < C.rows(); ++r) {
+    Vec<Q> row(C.cols() + 1);
+    row << C.row(r).transpose(), u.Y.b(r);
+    const std::vector<exact::Z> z = exact::primitive(row);
+    for (Eigen::Index c = 0; c < C.cols(); ++c) u.Y.A(r, c) = Q(z[static_cast<std::size_t>(c)]);
+    u.Y.b(r) = Q(z.back());
+  }
+  return u;
+}
+
+void expect_rational_ucp(const UcpProblem& u, const std::string& name) {
+  const UcpInstance<Q> r = rational_ucp(*u.quasistatic);
+  EXPECT_EQ(u.ucp.X.A, r.X.A) << name;
+  EXPECT_EQ(u.ucp.X.b, r.X.b) << name;
+  EXPECT_EQ(u.ucp.Y.A, r.Y.A) << name;
+  EXPECT_EQ(u.ucp.Y.b, r.Y.b) << name;
 }
 
 TEST(UcpProblem, XIsTheSetOfContactVelocitiesReachableByQDotAndThetaAbar) {
@@ -205,6 +260,45 @@ TEST(UcpGenerator, ReductionHasTheFormOfProposition2) {
     EXPECT_EQ(u.ucp.Y.A * y, u.ucp.Y.b);
     EXPECT_EQ(sgn(Q(x.dot(y))), 0);
   }
+}
+
+// Issue 18: X and Y are built in integers (fraction-free left null space, no products with B or U); they equal the
+// rational construction exactly, also when the integers outgrow 128 bits and the elimination restarts in GMP.
+TEST(UcpProblem, XAndYInIntegersEqualTheRationalOnes) {
+  for (int k = 1; k <= 4; ++k) expect_rational_ucp(load_ucp_problem(scene(k)), "Data Set " + std::to_string(k));
+  for (int seed = 0; seed < 100; ++seed)
+    expect_rational_ucp(testing::random_problem(seed, 10), "random seed " + std::to_string(seed));
+  // nc = 40 with Pythagorean normals ((a^2 - b^2) / h, 2ab / h), h = a^2 + b^2 the first 40 primes 1 mod 4: the lcm
+  // of the denominators of a column of P exceeds 2^128, so the Int128 elimination overflows and restarts in GMP.
+  std::mt19937_64 rng(2);
+  RandomProblemOptions o;
+  o.nc = 40;
+  UcpProblem big = generate_random_problem(o, rng);
+  QuasistaticProblem& p = *big.quasistatic;
+  const auto prime = [](long h) {
+    for (long d = 2; d * d <= h; ++d)
+      if (h % d == 0) return false;
+    return true;
+  };
+  const auto root = [](long v) {  // the integer square root of v, or -1
+    const long r = std::lround(std::sqrt(static_cast<double>(v)));
+    return r * r == v ? r : -1L;
+  };
+  for (long h = 5, i = 0; i < p.nc; ++h) {
+    if (h % 4 != 1 || !prime(h)) continue;
+    long a = 1, b = -1;
+    while ((b = root(h - a * a)) < 0) ++a;
+    const Q nx = frac(a * a - b * b, h), ny = frac(2 * a * b, h), rx = frac(i - 20, 3), ry = frac(7 - i % 5, 2);
+    p.P(i, 0) = nx, p.P(i, 1) = ny, p.P(i, 2) = rx * ny - ry * nx;                        // Wn: n, r x n
+    p.P(p.nc + i, 0) = -ny, p.P(p.nc + i, 1) = nx, p.P(p.nc + i, 2) = rx * nx + ry * ny;  // Wt: t = (-ny, nx), r x t
+    ++i;
+  }
+  validate(p);
+  big.ucp = build_ucp(p);
+  exact::Z l = 1;
+  for (Eigen::Index i = 0; i < p.P.rows(); ++i) l = lcm(l, p.P(i, 0).get_den());
+  ASSERT_GT(mpz_sizeinbase(l.get_mpz_t(), 2), 128u);
+  expect_rational_ucp(big, "nc 40");
 }
 
 }  // namespace
