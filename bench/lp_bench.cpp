@@ -1,7 +1,7 @@
-// LPs of the shapes the UCP produces (issue 2): X = {x in R^{3nc}_+ : Zn vn + Zt (vt+ - vt-) = b} with Z the
+// LPs of the shapes the UCP produces: X = {x in R^{3nc}_+ : Zn vn + Zt (vt+ - vt-) = b} with Z the
 // left null space of a random planar contact matrix P (2nc x 3), and Y = {y in R^{3nc}_+ : C y = -d} with C
 // of size (nc + 3 + nc/2) x 3nc. Our float, exact and verified paths against CGAL's solve_linear_program
-// (Gmpzf) and cddlib's GMP dd_LPSolve on the same LPs, and the precision ladder of issue 9 (filtered:
+// (Gmpzf) and cddlib's GMP dd_LPSolve on the same LPs, and the precision ladder (filtered:
 // intervals then exact; adaptive: double, intervals, MPFR 113 and 256 bits, exact). Each iteration solves
 // kInstances LPs.
 #include <benchmark/benchmark.h>
@@ -145,7 +145,7 @@ void BM_verified(benchmark::State& state) {
   state.counters["float_basis_checked"] = checked;
 }
 
-/// The filter alone in front of exact arithmetic (issue 9): intervals propose, exact arithmetic checks.
+/// The filter alone in front of exact arithmetic: intervals propose, exact arithmetic checks.
 const std::vector<Rung>& filtered_ladder() {
   static const std::vector<Rung> ladder{{Rung::Kind::kInterval, 0}, {Rung::Kind::kExact, 0}};
   return ladder;

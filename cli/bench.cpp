@@ -1,4 +1,4 @@
-// `contactcert bench [--suite NAME] [--quick] [--rungs LIST] [--json] [--out DIR]` (issues 8, 9): runs the
+// `contactcert bench [--suite NAME] [--quick] [--rungs LIST] [--json] [--out DIR]`: runs the
 // hard-case families of bench/families on the chosen rungs of the arithmetic ladder (default float, verified,
 // adaptive, exact; also interval and MPFR 113/256/1024 bits) in one run and reports, per
 // instance, the median time of each rung and the float path's error against the exact answer.

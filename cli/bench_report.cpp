@@ -286,7 +286,7 @@ std::string svg_plot(const std::vector<PlotSeries>& series, const std::string& x
   return s.str();
 }
 
-/// One family on one rung (issue 9 item 3): median time, wrong verdicts, undecided, worst error of the decided
+/// One family on one rung: median time, wrong verdicts, undecided, worst error of the decided
 /// answers (largest violation, |x^T y| or generator distance; NaN if none applies).
 struct LadderCell {
   long n = 0, wrong = 0, undecided = 0;

@@ -286,22 +286,22 @@ inline void from_integer(const Z& x, std::int64_t& out) {
   out = checked(mpz_get_si(x.get_mpz_t()));
 }
 inline void from_integer(const Z& x, Z& out) { out = x; }
-/// Int128: reads GMP's limbs directly (this runs once per rational read by the integer checks).
+/// Int128: reads GMP's limbs (mpz_size, mpz_getlimbn: inline, this runs once per rational read by the
+/// integer checks).
 [[gnu::noinline]] inline void from_two_limbs(mpz_srcptr z, Int128& out) {
   __extension__ typedef unsigned __int128 U128;
-  if ((z->_mp_size != 2 && z->_mp_size != -2) || z->_mp_d[1] >> 63 != 0) throw RingOverflow{};
-  const U128 u = static_cast<U128>(z->_mp_d[1]) << 64 | z->_mp_d[0];
-  out = z->_mp_size < 0 ? -static_cast<Int128>(u) : static_cast<Int128>(u);
+  if (mpz_size(z) != 2 || mpz_getlimbn(z, 1) >> 63 != 0) throw RingOverflow{};
+  const U128 u = static_cast<U128>(mpz_getlimbn(z, 1)) << 64 | mpz_getlimbn(z, 0);
+  out = mpz_sgn(z) < 0 ? -static_cast<Int128>(u) : static_cast<Int128>(u);
 }
 [[gnu::always_inline]] inline void from_integer(const Z& x, Int128& out) {
   static_assert(sizeof(mp_limb_t) == 8);
   mpz_srcptr z = x.get_mpz_t();
-  if (z->_mp_size == 0)
+  const std::size_t size = mpz_size(z);
+  if (size == 0)
     out = 0;
-  else if (z->_mp_size == 1)
-    out = z->_mp_d[0];
-  else if (z->_mp_size == -1)
-    out = -static_cast<Int128>(z->_mp_d[0]);
+  else if (size == 1)
+    out = mpz_sgn(z) > 0 ? static_cast<Int128>(mpz_getlimbn(z, 0)) : -static_cast<Int128>(mpz_getlimbn(z, 0));
   else
     from_two_limbs(z, out);
 }
@@ -434,7 +434,7 @@ inline void to_rational(const Z& num, const Z& den, Q& out) {
 /// True if the rational q (in lowest terms) is an integer.
 inline bool is_integer(const Q& q) {
   mpz_srcptr den = mpq_denref(q.get_mpq_t());
-  return den->_mp_size == 1 && den->_mp_d[0] == 1;
+  return mpz_size(den) == 1 && mpz_getlimbn(den, 0) == 1;
 }
 
 /// The rationals q(0), ..., q(k-1) over their least common denominator L (returned, > 0) in the exact ring R:

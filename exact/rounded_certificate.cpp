@@ -45,20 +45,21 @@ std::optional<Fraction> round_to_fraction(double v) {
   return std::nullopt;
 }
 
-/// z as a 64-bit integer (reads GMP's limbs directly: this runs once per matrix entry).
+/// z as a 64-bit integer (reads GMP's limbs through the inline mpz_size / mpz_getlimbn: this runs once per
+/// matrix entry).
 bool to_i64(mpz_srcptr z, i64& out) {
-  const int size = z->_mp_size;
+  const std::size_t size = mpz_size(z);
   if (size == 0) {
     out = 0;
     return true;
   }
-  if (size > 1 || size < -1 || z->_mp_d[0] > static_cast<mp_limb_t>(INT64_MAX)) return false;
-  const i64 v = static_cast<i64>(z->_mp_d[0]);
-  out = size > 0 ? v : -v;
+  if (size > 1 || mpz_getlimbn(z, 0) > static_cast<mp_limb_t>(INT64_MAX)) return false;
+  const i64 v = static_cast<i64>(mpz_getlimbn(z, 0));
+  out = mpz_sgn(z) > 0 ? v : -v;
   return true;
 }
 
-bool is_one(mpz_srcptr z) { return z->_mp_size == 1 && z->_mp_d[0] == 1; }
+bool is_one(mpz_srcptr z) { return mpz_size(z) == 1 && mpz_getlimbn(z, 0) == 1; }
 
 bool lcm_into(i64& acc, i64 d) {
   const i64 g = std::gcd(acc, d);
