@@ -72,7 +72,7 @@ struct LpResult {
   Eigen::Index unbounded_column = -1;
   DecidedBy decided_by = DecidedBy::kExact;
   Rung proposed_by;  ///< the float rung whose basis was checked or continued from (solve_lp_ladder; else double)
-  long pivots = 0;  ///< simplex pivots done in this number type (0 if a float basis checked out)
+  long pivots = 0;   ///< simplex pivots done in this number type (0 if a float basis checked out)
 };
 
 /// The problem in doubles (for the float path).

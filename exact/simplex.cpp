@@ -41,8 +41,8 @@ bool row_is_free(const std::vector<bool>& is_free, Index basic, Index n) {
 /// (optimal), an improving column has no blocking row (unbounded), or max_pivots pivots are done (counted in
 /// `pivots` over both phases). Free basic variables never leave.
 template <class T>
-LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_free, PivotRule rule,
-                         long max_pivots, long& pivots) {
+LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_free, PivotRule rule, long max_pivots,
+                         long& pivots) {
   const Index n = tab.cols();
   long degenerate_run = 0;
   for (;;) {
@@ -113,8 +113,7 @@ Vec<T> basis_duals(const Mat<T>& A, const Vec<T>& b, const std::vector<Index>& b
 }
 
 template <class T>
-LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out,
-                   long pivots) {
+LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out, long pivots) {
   LpResult<T> res;
   res.decided_by = NumberTraits<T>::is_exact ? DecidedBy::kExact : DecidedBy::kFloat;
   res.pivots = pivots;

@@ -5,7 +5,7 @@
 #include "exact/interval_number.h"
 #include "exact/linalg.h"
 #include "exact/mpfr_number.h"
-#include "exact/rounded_certificate.h"
+#include "exact/rounded_check.h"
 #include "exact/simplex.h"
 
 namespace contactcert::exact {

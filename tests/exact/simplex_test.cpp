@@ -89,10 +89,9 @@ TEST(Simplex, TinyUnboundedWithRay) {
 
 // Beale's example (Chvatal, Linear Programming, p. 31): Dantzig's rule with largest-coefficient ties cycles.
 TEST(Simplex, BealeCyclingExampleTerminates) {
-  const LpProblem<Q> p = lp({{q("1/4"), -60, q("-1/25"), 9, 1, 0, 0},
-                             {q("1/2"), -90, q("-1/50"), 3, 0, 1, 0},
-                             {0, 0, 1, 0, 0, 0, 1}},
-                            {0, 0, 1}, {q("-3/4"), 150, q("-1/50"), 6, 0, 0, 0});
+  const LpProblem<Q> p =
+      lp({{q("1/4"), -60, q("-1/25"), 9, 1, 0, 0}, {q("1/2"), -90, q("-1/50"), 3, 0, 1, 0}, {0, 0, 1, 0, 0, 0, 1}},
+         {0, 0, 1}, {q("-3/4"), 150, q("-1/50"), 6, 0, 0, 0});
   for (PivotRule rule : {PivotRule::kBland, PivotRule::kDantzigThenBland}) {
     const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule});
     ASSERT_EQ(r.status, LpStatus::kOptimal);
@@ -105,8 +104,8 @@ TEST(Simplex, BealeCyclingExampleTerminates) {
     EXPECT_NEAR(f.value, -0.05, 1e-12);
   }
   // Starting from the slack basis, the cycle of Beale's example is reached immediately.
-  const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{4, 5, 6}, .max_pivots = 10000,
-                                           .rule = PivotRule::kDantzigThenBland});
+  const LpResult<Q> warm = solve_lp<Q>(
+      p, {.warm_basis = std::vector<Eigen::Index>{4, 5, 6}, .max_pivots = 10000, .rule = PivotRule::kDantzigThenBland});
   EXPECT_EQ(warm.value, q("-1/20"));
 }
 
