@@ -133,8 +133,9 @@ void register_bench(CLI::App& app, Action& action) {
                   "mpfr256, mpfr1024, verified, adaptive, exact. interval/mpfrN answer every question unchecked in "
                   "that number type (an uncertain interval sign: undecided)")
       ->capture_default_str();
-  sub->add_option("--out", opts->out,
-                  "Directory for report.txt, report.md, time_vs_error.svg, precision_ladder.svg, bench.json, index.html")
+  sub->add_option(
+         "--out", opts->out,
+         "Directory for report.txt, report.md, time_vs_error.svg, precision_ladder.svg, bench.json, index.html")
       ->capture_default_str();
   sub->callback([opts, &action] { action = [opts] { return run_bench(*opts); }; });
 }
