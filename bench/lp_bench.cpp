@@ -1,14 +1,13 @@
-// LPs of the shapes the UCP produces (issue 2): X = {x in R^{3nc}_+ : Zn vn + Zt (vt+ - vt-) = b} with Z the
+// LPs of the shapes the UCP produces: X = {x in R^{3nc}_+ : Zn vn + Zt (vt+ - vt-) = b} with Z the
 // left null space of a random planar contact matrix P (2nc x 3), and Y = {y in R^{3nc}_+ : C y = -d} with C
 // of size (nc + 3 + nc/2) x 3nc. Our float, exact and verified paths against CGAL's solve_linear_program
-// (Gmpzf) and cddlib's GMP dd_LPSolve on the same LPs, and the precision ladder of issue 9 (filtered:
+// (Gmpzf) and cddlib's GMP dd_LPSolve on the same LPs, and the precision ladder (filtered:
 // intervals then exact; adaptive: double, intervals, MPFR 113 and 256 bits, exact). Each iteration solves
 // kInstances LPs.
-#include <benchmark/benchmark.h>
-
 #include <CGAL/Gmpzf.h>
 #include <CGAL/QP_functions.h>
 #include <CGAL/QP_models.h>
+#include <benchmark/benchmark.h>
 
 #include <map>
 #include <random>
@@ -93,7 +92,8 @@ const Instances& instances(char shape, int nc) {
     CGAL::Quadratic_program<int> qp(CGAL::EQUAL, true, 0, false, 0);
     for (Index i = 0; i < p.rows(); ++i) {
       for (Index j = 0; j < p.cols(); ++j)
-        if (p.A(i, j) != 0) qp.set_a(static_cast<int>(j), static_cast<int>(i), static_cast<int>(p.A(i, j).get_num().get_si()));
+        if (p.A(i, j) != 0)
+          qp.set_a(static_cast<int>(j), static_cast<int>(i), static_cast<int>(p.A(i, j).get_num().get_si()));
       qp.set_b(static_cast<int>(i), static_cast<int>(p.b(i).get_num().get_si()));
     }
     for (Index j = 0; j < p.cols(); ++j) qp.set_c(static_cast<int>(j), static_cast<int>(p.c(j).get_num().get_si()));
@@ -138,14 +138,15 @@ template <char Shape>
 void BM_verified(benchmark::State& state) {
   const Instances& in = instances(Shape, static_cast<int>(state.range(0)));
   int checked = 0;
-  for (const LpProblem<Q>& p : in.exact) checked += solve_lp_verified(p).decided_by == DecidedBy::kFloatBasisCheckedExactly;
+  for (const LpProblem<Q>& p : in.exact)
+    checked += solve_lp_verified(p).decided_by == DecidedBy::kFloatBasisCheckedExactly;
   for (auto _ : state)
     for (const LpProblem<Q>& p : in.exact) benchmark::DoNotOptimize(solve_lp_verified(p));
   set_counters(state, in);
   state.counters["float_basis_checked"] = checked;
 }
 
-/// The filter alone in front of exact arithmetic (issue 9): intervals propose, exact arithmetic checks.
+/// The filter alone in front of exact arithmetic: intervals propose, exact arithmetic checks.
 const std::vector<Rung>& filtered_ladder() {
   static const std::vector<Rung> ladder{{Rung::Kind::kInterval, 0}, {Rung::Kind::kExact, 0}};
   return ladder;
@@ -206,7 +207,8 @@ void BM_adjacent(benchmark::State& state) {
   for (const LpProblem<Q>& p : in.exact) bases.push_back(solve_lp_verified(p).basis);
   double edges = 0;
   for (auto _ : state)
-    for (size_t k = 0; k < in.exact.size(); ++k) edges = static_cast<double>(adjacent_vertices<Q>(in.exact[k], bases[k]).edges.size());
+    for (size_t k = 0; k < in.exact.size(); ++k)
+      edges = static_cast<double>(adjacent_vertices<Q>(in.exact[k], bases[k]).edges.size());
   set_counters(state, in);
   state.counters["edges_last"] = edges;
 }

@@ -1,4 +1,4 @@
-// Strong stability and insertion timings (issue targets: one verdict under 100 us, the full three-fixel
+// Strong stability and insertion timings (targets: one verdict under 100 us, the full three-fixel
 // region under 10 ms, exact), exact and float side by side in one run, with a table of the verdict timings.
 //   build/bench/stability_bench --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>

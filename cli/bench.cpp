@@ -1,4 +1,4 @@
-// `contactcert bench [--suite NAME] [--quick] [--rungs LIST] [--json] [--out DIR]` (issues 8, 9): runs the
+// `contactcert bench [--suite NAME] [--quick] [--rungs LIST] [--json] [--out DIR]`: runs the
 // hard-case families of bench/families on the chosen rungs of the arithmetic ladder (default float, verified,
 // adaptive, exact; also interval and MPFR 113/256/1024 bits) in one run and reports, per
 // instance, the median time of each rung and the float path's error against the exact answer.
@@ -133,8 +133,9 @@ void register_bench(CLI::App& app, Action& action) {
                   "mpfr256, mpfr1024, verified, adaptive, exact. interval/mpfrN answer every question unchecked in "
                   "that number type (an uncertain interval sign: undecided)")
       ->capture_default_str();
-  sub->add_option("--out", opts->out,
-                  "Directory for report.txt, report.md, time_vs_error.svg, precision_ladder.svg, bench.json, index.html")
+  sub->add_option(
+         "--out", opts->out,
+         "Directory for report.txt, report.md, time_vs_error.svg, precision_ladder.svg, bench.json, index.html")
       ->capture_default_str();
   sub->callback([opts, &action] { action = [opts] { return run_bench(*opts); }; });
 }

@@ -50,7 +50,7 @@ std::string bench_text(const BenchRun& run);
 std::string bench_markdown(const BenchRun& run);
 /// Time (x) against error (y), log scales, one series per rung; an error of exactly 0 sits on the bottom line.
 std::string bench_svg(const BenchRun& run);
-/// The precision ladder (issue 9): one point per family and rung, median time against the worst error.
+/// The precision ladder: one point per family and rung, median time against the worst error.
 std::string ladder_svg(const BenchRun& run);
 /// The precision ladder as text: per family, a row per rung (median time, wrong verdicts, undecided, worst error).
 std::string ladder_text(const BenchRun& run);

@@ -25,7 +25,7 @@ namespace contactcert::exact {
 /// Thrown by the std::int64_t ring when a result does not fit; the caller restarts in Z.
 struct RingOverflow {};
 
-/// The fixed-width ring of the exact integer checks (rounded_certificate.h, the UCP's physical recovery): exact,
+/// The fixed-width ring of the exact integer checks (rounded_check.h, bareiss.h, the UCP's physical recovery): exact,
 /// every operation overflow-checked (throws RingOverflow). 128 bits, not 64: the paper's data overflow 64 bits
 /// in the elimination of unique_solution.
 __extension__ typedef __int128 Int128;
@@ -153,34 +153,6 @@ inline void normalize(double* v, Index k) {
     for (Index i = 0; i < k; ++i) v[i] /= m;
 }
 
-/// A field row as a ring row: the primitive integer multiple (Q), the unit max-norm multiple (double).
-inline void to_ring(const Q* row, Index k, std::int64_t* out) {
-  std::int64_t l = 1;
-  for (Index i = 0; i < k; ++i) {
-    if (!mpz_fits_slong_p(row[i].get_den_mpz_t())) throw RingOverflow{};
-    const std::int64_t d = mpz_get_si(row[i].get_den_mpz_t());
-    l = mul(l / std::gcd(l, d), d);
-  }
-  for (Index i = 0; i < k; ++i) {
-    if (!mpz_fits_slong_p(row[i].get_num_mpz_t())) throw RingOverflow{};
-    out[i] = mul(checked(mpz_get_si(row[i].get_num_mpz_t())), l / mpz_get_si(row[i].get_den_mpz_t()));
-  }
-  normalize(out, k);
-}
-inline void to_ring(const Q* row, Index k, Z* out) {
-  Z l = 1;
-  for (Index i = 0; i < k; ++i) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), row[i].get_den_mpz_t());
-  for (Index i = 0; i < k; ++i) {
-    mpz_divexact(out[i].get_mpz_t(), l.get_mpz_t(), row[i].get_den_mpz_t());
-    out[i] *= row[i].get_num();
-  }
-  normalize(out, k);
-}
-inline void to_ring(const double* row, Index k, double* out) {
-  std::copy(row, row + k, out);
-  normalize(out, k);
-}
-
 /// Int128: true if x fits in 64 bits (two instructions, against four 128-bit comparisons).
 inline bool fits_int64(Int128 x) { return static_cast<Int128>(static_cast<std::int64_t>(x)) == x; }
 /// The checked 128-bit product, out of line so that the common case of mul stays small enough to inline.
@@ -221,6 +193,8 @@ inline Z gcd(const Z& a, const Z& b) {
   return g;
 }
 inline std::int64_t divexact(std::int64_t a, std::int64_t b) { return a / b; }
+/// The least common multiple of positive a and b.
+inline std::int64_t lcm(std::int64_t a, std::int64_t b) { return mul(a / std::gcd(a, b), b); }
 inline Z divexact(const Z& a, const Z& b) {
   Z q;
   mpz_divexact(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
@@ -286,22 +260,22 @@ inline void from_integer(const Z& x, std::int64_t& out) {
   out = checked(mpz_get_si(x.get_mpz_t()));
 }
 inline void from_integer(const Z& x, Z& out) { out = x; }
-/// Int128: reads GMP's limbs directly (this runs once per rational read by the integer checks).
+/// Int128: reads GMP's limbs (mpz_size, mpz_getlimbn: inline, this runs once per rational read by the
+/// integer checks).
 [[gnu::noinline]] inline void from_two_limbs(mpz_srcptr z, Int128& out) {
   __extension__ typedef unsigned __int128 U128;
-  if ((z->_mp_size != 2 && z->_mp_size != -2) || z->_mp_d[1] >> 63 != 0) throw RingOverflow{};
-  const U128 u = static_cast<U128>(z->_mp_d[1]) << 64 | z->_mp_d[0];
-  out = z->_mp_size < 0 ? -static_cast<Int128>(u) : static_cast<Int128>(u);
+  if (mpz_size(z) != 2 || mpz_getlimbn(z, 1) >> 63 != 0) throw RingOverflow{};
+  const U128 u = static_cast<U128>(mpz_getlimbn(z, 1)) << 64 | mpz_getlimbn(z, 0);
+  out = mpz_sgn(z) < 0 ? -static_cast<Int128>(u) : static_cast<Int128>(u);
 }
 [[gnu::always_inline]] inline void from_integer(const Z& x, Int128& out) {
   static_assert(sizeof(mp_limb_t) == 8);
   mpz_srcptr z = x.get_mpz_t();
-  if (z->_mp_size == 0)
+  const std::size_t size = mpz_size(z);
+  if (size == 0)
     out = 0;
-  else if (z->_mp_size == 1)
-    out = z->_mp_d[0];
-  else if (z->_mp_size == -1)
-    out = -static_cast<Int128>(z->_mp_d[0]);
+  else if (size == 1)
+    out = mpz_sgn(z) > 0 ? static_cast<Int128>(mpz_getlimbn(z, 0)) : -static_cast<Int128>(mpz_getlimbn(z, 0));
   else
     from_two_limbs(z, out);
 }
@@ -434,7 +408,7 @@ inline void to_rational(const Z& num, const Z& den, Q& out) {
 /// True if the rational q (in lowest terms) is an integer.
 inline bool is_integer(const Q& q) {
   mpz_srcptr den = mpq_denref(q.get_mpq_t());
-  return den->_mp_size == 1 && den->_mp_d[0] == 1;
+  return mpz_size(den) == 1 && mpz_getlimbn(den, 0) == 1;
 }
 
 /// The rationals q(0), ..., q(k-1) over their least common denominator L (returned, > 0) in the exact ring R:
@@ -459,6 +433,23 @@ R to_common_denominator(Index k, Get q, R* out) {
     }
   }
   return L;
+}
+
+/// A field row as a ring row: the primitive integer multiple (Q: the row over its common denominator, divided
+/// by its content), the unit max-norm multiple (double).
+inline void to_ring(const Q* row, Index k, std::int64_t* out) {
+  to_common_denominator<std::int64_t>(
+      k, [row](Index i) -> const Q& { return row[i]; }, out);
+  normalize(out, k);
+}
+inline void to_ring(const Q* row, Index k, Z* out) {
+  to_common_denominator<Z>(
+      k, [row](Index i) -> const Q& { return row[i]; }, out);
+  normalize(out, k);
+}
+inline void to_ring(const double* row, Index k, double* out) {
+  std::copy(row, row + k, out);
+  normalize(out, k);
 }
 
 /// The rows [A_1 | A_2 | ...] of field matrices with equal row counts (Eigen expressions over the same

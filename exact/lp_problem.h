@@ -28,7 +28,9 @@ struct LpProblem {
   Vec<T> objective() const { return c.size() == 0 ? Vec<T>(Vec<T>::Zero(A.cols())) : c; }
 };
 
-enum class LpStatus { kOptimal, kInfeasible, kUnbounded };
+/// How an LP run ended: a verdict with its certificate, or the pivot limit (options.max_pivots) reached before
+/// one (an outcome, as HiGHS's kIterationLimit: the caller decides whether that is a budget to report).
+enum class LpStatus { kOptimal, kInfeasible, kUnbounded, kPivotLimit };
 
 /// Which path decided the result (verified_lp.h): the float simplex alone, the exact simplex from scratch,
 /// the float basis checked exactly (no exact pivot), or exact pivots continued from the float basis.
@@ -42,7 +44,8 @@ struct LpOptions {
   /// Warm start: a basis of A (columns, |basis| = rank A) that is primal feasible. If it is singular or not
   /// primal feasible the solver starts from scratch (phase 1) instead.
   std::optional<std::vector<Eigen::Index>> warm_basis;
-  /// Pivot budget (phase 1 + phase 2); exceeding it throws BudgetExceeded.
+  /// Pivot budget (phase 1 + phase 2): the run ends with LpStatus::kPivotLimit when it is used up (solve_lp
+  /// reports that as BudgetExceeded).
   long max_pivots = 1000000;
   PivotRule rule = PivotRule::kDantzigThenBland;
 };
@@ -56,6 +59,7 @@ struct LpOptions {
 ///                (sign 0 counts as +1): column index A.cols() + i is the artificial of row i.
 /// - kUnbounded:  x a feasible vertex with its basis; ray d with A d = 0, d_j >= 0 on non-free columns and
 ///                c^T d < 0; unbounded_column = the non-basic column whose pivot found the ray (d of it is 1).
+/// - kPivotLimit: no verdict after options.max_pivots pivots; basis and x are those of the last tableau.
 template <class T>
 struct LpResult {
   LpStatus status = LpStatus::kInfeasible;
@@ -68,7 +72,7 @@ struct LpResult {
   Eigen::Index unbounded_column = -1;
   DecidedBy decided_by = DecidedBy::kExact;
   Rung proposed_by;  ///< the float rung whose basis was checked or continued from (solve_lp_ladder; else double)
-  long pivots = 0;  ///< simplex pivots done in this number type (0 if a float basis checked out)
+  long pivots = 0;   ///< simplex pivots done in this number type (0 if a float basis checked out)
 };
 
 /// The problem in doubles (for the float path).

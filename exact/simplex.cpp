@@ -21,7 +21,7 @@ using Index = Eigen::Index;
 /// objective moves again (Bland's rule cannot cycle, so every degenerate run ends).
 constexpr long kDegenerateRunBeforeBland = 50;
 
-enum class LoopEnd { kOptimal, kUnbounded };
+enum class LoopEnd { kOptimal, kUnbounded, kPivotLimit };
 
 struct LoopOutcome {
   LoopEnd end = LoopEnd::kOptimal;
@@ -38,10 +38,11 @@ bool row_is_free(const std::vector<bool>& is_free, Index basic, Index n) {
 }
 
 /// The primal simplex loop on the tableau's current objective: pivots until no column prices out
-/// (optimal) or an improving column has no blocking row (unbounded). Free basic variables never leave.
+/// (optimal), an improving column has no blocking row (unbounded), or max_pivots pivots are done (counted in
+/// `pivots` over both phases). Free basic variables never leave.
 template <class T>
-LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_free, PivotRule rule,
-                         long max_pivots, long& pivots) {
+LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_free, PivotRule rule, long max_pivots,
+                         long& pivots) {
   const Index n = tab.cols();
   long degenerate_run = 0;
   for (;;) {
@@ -87,10 +88,10 @@ LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_fre
       }
     }
     if (r < 0) return {LoopEnd::kUnbounded, s, direction};
+    if (pivots >= max_pivots) return {LoopEnd::kPivotLimit, -1, 1};
     const bool degenerate = exact::is_zero(tab.rhs(r));
     tab.pivot(r, s);
-    if (++pivots > max_pivots)
-      throw BudgetExceeded("simplex pivot budget exceeded", std::to_string(max_pivots) + " pivots");
+    ++pivots;
     degenerate_run = degenerate ? degenerate_run + 1 : 0;
   }
 }
@@ -112,14 +113,17 @@ Vec<T> basis_duals(const Mat<T>& A, const Vec<T>& b, const std::vector<Index>& b
 }
 
 template <class T>
-LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out,
-                   long pivots) {
+LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out, long pivots) {
   LpResult<T> res;
   res.decided_by = NumberTraits<T>::is_exact ? DecidedBy::kExact : DecidedBy::kFloat;
   res.pivots = pivots;
   res.basis = tab.basis();
   res.x = tab.primal();
   const Vec<T> c = problem.objective();
+  if (out.end == LoopEnd::kPivotLimit) {
+    res.status = LpStatus::kPivotLimit;
+    return res;
+  }
   if (out.end == LoopEnd::kUnbounded) {
     res.status = LpStatus::kUnbounded;
     res.unbounded_column = out.column;
@@ -148,8 +152,11 @@ LpResult<T> solve_lp_from_tableau(const LpProblem<T>& problem, SimplexTableau<T>
   return finish(problem, tab, out, pivots);
 }
 
+namespace {
+
+/// The two-phase simplex; a pivot limit is the status kPivotLimit.
 template <class T>
-LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options) {
+LpResult<T> run_simplex(const LpProblem<T>& problem, const LpOptions& options) {
   const Index n = problem.cols();
   if (options.warm_basis) {
     std::optional<SimplexTableau<T>> tab = SimplexTableau<T>::from_basis(problem.A, problem.b, *options.warm_basis);
@@ -163,7 +170,8 @@ LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options) {
   SimplexTableau<T> tab = SimplexTableau<T>::artificial_start(problem.A, problem.b);
   tab.set_objective(Vec<T>::Zero(n), T(1));
   long pivots = 0;
-  simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
+  const LoopOutcome phase1 = simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
+  if (phase1.end == LoopEnd::kPivotLimit) return finish(problem, tab, phase1, pivots);
   if (exact::is_positive(tab.objective_value())) {
     LpResult<T> res;
     res.status = LpStatus::kInfeasible;
@@ -192,6 +200,20 @@ LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options) {
   tab.set_objective(problem.objective());
   const LoopOutcome out = simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
   return finish(problem, tab, out, pivots);
+}
+
+}  // namespace
+
+template <class T>
+LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options) {
+  LpResult<T> res = run_simplex(problem, options);
+  check_pivot_budget(res.status, options);
+  return res;
+}
+
+void check_pivot_budget(LpStatus status, const LpOptions& options) {
+  if (status == LpStatus::kPivotLimit)
+    throw BudgetExceeded("simplex pivot budget exceeded", std::to_string(options.max_pivots) + " pivots");
 }
 
 bool verify_farkas(const LpProblem<Q>& problem, const Vec<Q>& y) {

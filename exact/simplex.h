@@ -15,10 +15,14 @@ template <class T>
 LpResult<T> solve_lp(const LpProblem<T>& problem, const LpOptions& options = {});
 
 /// Phase 2 of the simplex from a primal feasible tableau of problem.A x = problem.b (for example
-/// SimplexTableau<T>::from_basis of a feasible basis): a warm start. The pivots done are counted in the result.
+/// SimplexTableau<T>::from_basis of a feasible basis): a warm start. The pivots done are counted in the result;
+/// status kPivotLimit if options.max_pivots pivots end without a verdict.
 template <class T>
 LpResult<T> solve_lp_from_tableau(const LpProblem<T>& problem, SimplexTableau<T> tableau,
                                   const LpOptions& options = {});
+
+/// Throws BudgetExceeded (the commands' budget, exit 3) if `status` is the pivot limit of `options`.
+void check_pivot_budget(LpStatus status, const LpOptions& options);
 
 /// Exact check of a Farkas certificate: (y^T A)_j >= 0 on non-free columns, == 0 on free ones, y^T b < 0.
 bool verify_farkas(const LpProblem<Q>& problem, const Vec<Q>& y);

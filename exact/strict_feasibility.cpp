@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "exact/ladder_numbers.h"
+#include "exact/rounded_check.h"
 #include "exact/simplex.h"
 #include "exact/verified_lp.h"
 
@@ -12,7 +13,6 @@ namespace {
 
 using Index = Eigen::Index;
 using i64 = std::int64_t;
-__extension__ typedef __int128 i128;
 
 bool flag(const std::vector<bool>& v, Index j) { return !v.empty() && v[static_cast<size_t>(j)]; }
 
@@ -69,10 +69,6 @@ StrictFeasibility<T> read_strict(const LpResult<T>& r, Index m, Index n, const s
   return out;
 }
 
-bool fma128(i128& acc, i64 a, i64 b) {
-  return !__builtin_add_overflow(acc, static_cast<i128>(a) * static_cast<i128>(b), &acc);
-}
-
 // B = d (L o b) in 64-bit integers, L the row scales and d > 0 the least common denominator, so that
 // A_int x = B  <=>  A (x / d) = b.  Nullopt if an entry does not fit.
 std::optional<std::vector<i64>> integer_rhs(const IntegerLp& ilp, const Vec<Q>& b, Z& d) {
@@ -92,8 +88,60 @@ std::optional<std::vector<i64>> integer_rhs(const IntegerLp& ilp, const Vec<Q>& 
   return B;
 }
 
+// The rounded float answer checked in 128-bit integers (throws RingOverflow): x ~ X / D with A_int X = D B
+// and the signs, then x / d solves A x = b; or y' ~ Y / E with the Motzkin conditions on (A_int, B), then
+// y = L o Y is one for (A, b): y^T A = Y^T A_int and y^T b = Y^T B / d.
+std::optional<StrictFeasibility<Q>> check_rounded(const IntegerLp& ilp, const StrictFeasibility<double>& f,
+                                                  const std::vector<bool>& is_free, const std::vector<bool>& strict,
+                                                  const std::vector<i64>& B, const Z& d) {
+  const Index m = ilp.m, n = ilp.n;
+  StrictFeasibility<Q> out;
+  out.lps = 1;
+  out.decided_by = DecidedBy::kFloatBasisCheckedExactly;
+  out.rounded_float_checked = true;
+  out.status = f.status;
+  if (f.status == StrictStatus::kFeasible) {
+    std::vector<Index> all(static_cast<size_t>(n));
+    std::iota(all.begin(), all.end(), Index(0));
+    const std::optional<RoundedVector<Int128>> x =
+        rounded_solution<Int128>(ilp, B, all, std::vector<double>(f.x.data(), f.x.data() + n));
+    if (!x) return std::nullopt;
+    for (Index j = 0; j < n; ++j) {
+      const Int128 xj = x->X[static_cast<size_t>(j)];
+      if (!flag(is_free, j) && (xj < 0 || (xj == 0 && flag(strict, j)))) return std::nullopt;
+    }
+    out.x = Vec<Q>(n);
+    for (Index j = 0; j < n; ++j) {
+      ring::to_rational(x->X[static_cast<size_t>(j)], x->D, out.x(j));
+      if (d != 1) out.x(j) /= d;
+    }
+    return out;
+  }
+  std::vector<Int128> Y;
+  Int128 E;
+  if (!reconstruct_vector(std::vector<double>(f.motzkin.data(), f.motzkin.data() + m), Y, E)) return std::nullopt;
+  const std::vector<Int128> yA = left_product(ilp, Y);
+  bool strict_positive = false;
+  for (Index j = 0; j < n; ++j) {
+    const Int128 t = yA[static_cast<size_t>(j)];
+    if (flag(is_free, j) ? t != 0 : t < 0) return std::nullopt;
+    strict_positive = strict_positive || (t > 0 && flag(strict, j));
+  }
+  Int128 yb = 0;
+  for (Index i = 0; i < m; ++i)
+    yb = ring::add(yb, ring::mul(Y[static_cast<size_t>(i)], Int128(B[static_cast<size_t>(i)])));
+  if (!(yb < 0 || (yb == 0 && strict_positive))) return std::nullopt;
+  out.motzkin = Vec<Q>(m);
+  for (Index i = 0; i < m; ++i) {
+    const Int128 Yi = Y[static_cast<size_t>(i)];
+    if (Yi != 0)
+      ring::to_rational(ring::mul(Yi, Int128(ilp.row_scale[static_cast<size_t>(i)])), Int128(1), out.motzkin(i));
+  }
+  return out;
+}
+
 // The float LP on the integer rows, its point or certificate rounded to fractions and checked exactly;
-// nullopt if the check fails.
+// nullopt if the check fails or a number outgrows 128 bits.
 std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const LpProblem<double>& hint,
                                                   const std::vector<bool>& is_free, const std::vector<bool>& strict,
                                                   const std::vector<Index>& S, const Vec<Q>& b) {
@@ -104,68 +152,16 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
   LpProblem<double> lp = hint;
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
   const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp), m, n, S);
-  auto A = [&](Index i, Index j) { return ilp.A[static_cast<size_t>(i * n + j)]; };
-
-  StrictFeasibility<Q> out;
-  out.lps = 1;
-  out.decided_by = DecidedBy::kFloatBasisCheckedExactly;
-  out.rounded_float_checked = true;
-  out.status = f.status;
-  if (f.status == StrictStatus::kFeasible) {
-    // x ~ X / D: check A_int X = D B and the signs; then x / d solves A x = b.
-    std::vector<i64> X;
-    i64 D;
-    if (!round_vector(std::vector<double>(f.x.data(), f.x.data() + n), X, D)) return std::nullopt;
-    for (Index j = 0; j < n; ++j) {
-      const i64 xj = X[static_cast<size_t>(j)];
-      if (!flag(is_free, j) && (xj < 0 || (xj == 0 && flag(strict, j)))) return std::nullopt;
-    }
-    for (Index i = 0; i < m; ++i) {
-      i128 acc = 0;
-      for (Index j = 0; j < n; ++j)
-        if (!fma128(acc, A(i, j), X[static_cast<size_t>(j)])) return std::nullopt;
-      if (acc != static_cast<i128>(D) * (*B)[static_cast<size_t>(i)]) return std::nullopt;
-    }
-    out.x = Vec<Q>(n);
-    for (Index j = 0; j < n; ++j) {
-      out.x(j) = make_q(X[static_cast<size_t>(j)], D);
-      if (d != 1) out.x(j) /= d;
-    }
-    return out;
+  try {
+    return check_rounded(ilp, f, is_free, strict, *B, d);
+  } catch (const RingOverflow&) {
+    return std::nullopt;
   }
-  // y' ~ Y / E for the integer rows: check the Motzkin conditions on (A_int, B); then y = L o Y is one for
-  // (A, b): y^T A = Y^T A_int and y^T b = Y^T B / d.
-  std::vector<i64> Y;
-  i64 E;
-  if (!round_vector(std::vector<double>(f.motzkin.data(), f.motzkin.data() + m), Y, E)) return std::nullopt;
-  bool strict_positive = false;
-  for (Index j = 0; j < n; ++j) {
-    i128 t = 0;
-    for (Index i = 0; i < m; ++i)
-      if (!fma128(t, Y[static_cast<size_t>(i)], A(i, j))) return std::nullopt;
-    if (flag(is_free, j) ? t != 0 : t < 0) return std::nullopt;
-    strict_positive = strict_positive || (t > 0 && flag(strict, j));
-  }
-  i128 yb = 0;
-  for (Index i = 0; i < m; ++i)
-    if (!fma128(yb, Y[static_cast<size_t>(i)], (*B)[static_cast<size_t>(i)])) return std::nullopt;
-  if (!(yb < 0 || (yb == 0 && strict_positive))) return std::nullopt;
-  out.motzkin = Vec<Q>(m);
-  for (Index i = 0; i < m; ++i) {
-    const i64 Yi = Y[static_cast<size_t>(i)], Li = ilp.row_scale[static_cast<size_t>(i)];
-    i64 y;
-    if (Yi == 0) continue;
-    if (!__builtin_mul_overflow(Yi, Li, &y))
-      mpq_set_si(out.motzkin(i).get_mpq_t(), static_cast<long>(y), 1);
-    else
-      out.motzkin(i) = Q(Z(static_cast<long>(Li)) * Z(static_cast<long>(Yi)));
-  }
-  return out;
 }
 
-// Row i of A times L_i, the lcm of the denominators of its entries, in 64 bits: the rows of integer_lp (b = 0,
-// no objective) read straight from A's non-zero entries, which for_each_entry(f) passes as f(i, j, a_ij).
-// Nullopt if a number does not fit.
+// Row i of A over its common denominator L_i (ring::to_common_denominator) in 64 bits: the rows of integer_lp
+// (b = 0, no objective) read straight from A's non-zero entries, which for_each_entry(f) passes as
+// f(i, j, a_ij). Nullopt if a number does not fit.
 template <class ForEachEntry>
 std::optional<IntegerLp> integer_rows(Index m, Index n, ForEachEntry&& for_each_entry) {
   IntegerLp out;
@@ -175,27 +171,21 @@ std::optional<IntegerLp> integer_rows(Index m, Index n, ForEachEntry&& for_each_
   out.b.assign(static_cast<size_t>(m), 0);
   out.c.assign(static_cast<size_t>(n), 0);
   out.row_scale.assign(static_cast<size_t>(m), 1);
-  bool fits = true;
-  for_each_entry([&](Index i, Index, const Q& a) {
-    i64& L = out.row_scale[static_cast<size_t>(i)];
-    mpz_srcptr den = mpq_denref(a.get_mpq_t());
-    if (!fits || !mpz_fits_slong_p(den)) {
-      fits = false;
-      return;
+  std::vector<std::vector<std::pair<Index, const Q*>>> rows(static_cast<size_t>(m));
+  for_each_entry([&](Index i, Index j, const Q& a) { rows[static_cast<size_t>(i)].emplace_back(j, &a); });
+  std::vector<i64> scaled;
+  try {
+    for (Index i = 0; i < m; ++i) {
+      const auto& row = rows[static_cast<size_t>(i)];
+      scaled.resize(row.size());
+      out.row_scale[static_cast<size_t>(i)] = ring::to_common_denominator<i64>(
+          static_cast<Index>(row.size()), [&](Index t) -> const Q& { return *row[static_cast<size_t>(t)].second; },
+          scaled.data());
+      for (size_t t = 0; t < row.size(); ++t) out.A[static_cast<size_t>(i * n + row[t].first)] = scaled[t];
     }
-    const i64 d = mpz_get_si(den);
-    fits = !__builtin_mul_overflow(L / std::gcd(L, d), d, &L);
-  });
-  for_each_entry([&](Index i, Index j, const Q& a) {
-    mpz_srcptr num = mpq_numref(a.get_mpq_t());
-    if (!fits || !mpz_fits_slong_p(num)) {
-      fits = false;
-      return;
-    }
-    const i64 multiple = out.row_scale[static_cast<size_t>(i)] / mpz_get_si(mpq_denref(a.get_mpq_t()));
-    fits = !__builtin_mul_overflow(mpz_get_si(num), multiple, &out.A[static_cast<size_t>(i * n + j)]);
-  });
-  if (!fits) return std::nullopt;
+  } catch (const RingOverflow&) {
+    return std::nullopt;
+  }
   return out;
 }
 

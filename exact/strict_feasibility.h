@@ -13,7 +13,7 @@
 #include "exact/arith.h"
 #include "exact/lp_problem.h"
 #include "exact/number.h"
-#include "exact/rounded_certificate.h"
+#include "exact/integer_system.h"
 
 namespace contactcert::exact {
 

@@ -5,7 +5,7 @@
 #include "exact/interval_number.h"
 #include "exact/linalg.h"
 #include "exact/mpfr_number.h"
-#include "exact/rounded_certificate.h"
+#include "exact/rounded_check.h"
 #include "exact/simplex.h"
 
 namespace contactcert::exact {
@@ -117,7 +117,8 @@ std::optional<LpResult<Q>> check_infeasible(const LpProblem<Q>& problem, const s
 }
 
 /// Exact pivoting from a float basis: its tableau in Q, then phase 2 (no pivot if the basis is optimal in Q
-/// too). nullopt if the basis is singular or not primal feasible in Q.
+/// too; status kPivotLimit when options.max_pivots do not suffice). nullopt if the basis is singular or not
+/// primal feasible in Q.
 std::optional<LpResult<Q>> continue_exact(const LpProblem<Q>& problem, const std::vector<Index>& basis,
                                           const LpOptions& options) {
   std::optional<SimplexTableau<Q>> tab = SimplexTableau<Q>::from_basis(problem.A, problem.b, basis);
@@ -127,6 +128,12 @@ std::optional<LpResult<Q>> continue_exact(const LpProblem<Q>& problem, const std
   if (!feasible) return std::nullopt;
   LpResult<Q> res = solve_lp_from_tableau(problem, std::move(*tab), options);
   res.decided_by = res.pivots == 0 ? DecidedBy::kFloatBasisCheckedExactly : DecidedBy::kExactContinuedFromFloatBasis;
+  return res;
+}
+
+/// res, after check_pivot_budget on its status.
+std::optional<LpResult<Q>> budgeted(std::optional<LpResult<Q>> res, const LpOptions& options) {
+  if (res) check_pivot_budget(res->status, options);
   return res;
 }
 
@@ -149,14 +156,12 @@ std::optional<LpResult<Q>> check(const LpProblem<Q>& problem, const std::optiona
       return res;
     }
   }
-  if (last) return continue_exact(problem, p.basis, options);
+  if (last) return budgeted(continue_exact(problem, p.basis, options), options);
   LpOptions no_pivot = options;
   no_pivot.max_pivots = 0;
-  try {
-    return continue_exact(problem, p.basis, no_pivot);
-  } catch (const BudgetExceeded&) {  // the basis is not optimal in Q
-    return std::nullopt;
-  }
+  std::optional<LpResult<Q>> res = continue_exact(problem, p.basis, no_pivot);
+  if (res && res->status == LpStatus::kPivotLimit) return std::nullopt;  // the basis is not optimal in Q
+  return res;
 }
 
 }  // namespace
@@ -184,7 +189,7 @@ LpResult<Q> solve_lp_ladder(const LpProblem<Q>& problem, const std::vector<Rung>
   }
   if (best && best->rung != ladder[ladder.size() - 2]) {
     // The last float rung gave nothing usable: continue from an earlier rung's basis.
-    if (std::optional<LpResult<Q>> res = continue_exact(problem, best->basis, options)) {
+    if (std::optional<LpResult<Q>> res = budgeted(continue_exact(problem, best->basis, options), options)) {
       res->proposed_by = best->rung;
       return std::move(*res);
     }

@@ -1,4 +1,4 @@
-// Hard-case generators for `contactcert bench` (issue 8): seeded families of instances with one difficulty
+// Hard-case generators for `contactcert bench`: seeded families of instances with one difficulty
 // knob each, chosen where a tolerance-based float path is expected to break. Every instance is exact
 // (rational data) and can be run on any rung of the arithmetic ladder (bench/families/rungs.h).
 #pragma once
@@ -47,7 +47,7 @@ using Question = std::variant<UcpQuestion, StabilityQuestion, ConeQuestion>;
 /// "ucp", "stability" or "cone".
 const char* question_kind(const Question& q);
 
-/// The families of issue 8.
+/// The families of `contactcert bench`.
 enum class Family {
   kParallel,    ///< nearly parallel contact normals, angle 10^-1 .. 10^-12 (rational tangent)
   kBoundary,    ///< the wrench on a friction face of the rolling mode cone, moved off it by 0 or +-10^-k

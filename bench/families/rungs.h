@@ -1,6 +1,6 @@
 // The arithmetic ladder of `contactcert bench`: a list of rungs (float, verified, exact today; more
 // precisions can be appended), one runner per question kind written once over the number type, and the
-// float-against-exact error measures of issue 8.
+// float-against-exact error measures.
 #pragma once
 
 #include <limits>

@@ -3,7 +3,9 @@
 #include <cassert>
 #include <tuple>
 
-#include "exact/rounded_certificate.h"
+#include "exact/bareiss.h"
+#include "exact/rounded_check.h"
+#include "solvers/ucp/farkas_rounding.h"
 
 namespace contactcert::solvers::ucp {
 
@@ -103,9 +105,9 @@ class LeafProver {
     const std::vector<Index>& basis = out_.result.tree[k].farkas_basis;
     if (approx.size() == P.A.rows()) {
       // The float vector rounded to fractions, else recomputed exactly from its LP's basis.
-      std::optional<exact::FarkasVector> f = rows_[s].run([&](const auto& system) {
-        std::optional<exact::FarkasVector> r = exact::rounded_farkas(system, approx, zero);
-        return r || basis.empty() ? r : exact::basis_farkas(system, approx, basis, zero);
+      std::optional<FarkasVector> f = rows_[s].run([&](const auto& system) {
+        std::optional<FarkasVector> r = rounded_farkas(system, approx, zero);
+        return r || basis.empty() ? r : basis_farkas(system, approx, basis, zero);
       });
       if (f) {
         proven_[s].push_back({f->y, std::move(f->negative)});

@@ -41,8 +41,8 @@ struct ProvenTree {
 
 /// Turns a float search tree into an exact proof: every leaf gets an exact Farkas vector for the face its
 /// path fixes on its side: an earlier leaf's vector if it covers the fixings (as the search's learning does),
-/// else the leaf's float vector rounded to fractions and checked in integers (exact::rounded_farkas), else the
-/// duals of its float LP's basis solved exactly (exact::basis_farkas), else that of an exact face LP. A leaf whose face
+/// else the leaf's float vector rounded to fractions and checked in integers (rounded_farkas), else the
+/// duals of its float LP's basis solved exactly (basis_farkas), else that of an exact face LP. A leaf whose face
 /// is not empty in exact arithmetic is repaired when `repair` is given: the exact search continues below it with those
 /// options (search_subtree), and only there.
 ProvenTree prove_leaves(const UcpInstance<Q>& ucp, FloatTree tree, const std::optional<SearchOptions>& repair);

@@ -3,9 +3,9 @@
 #include <boost/container/small_vector.hpp>
 #include <cassert>
 
+#include "exact/bareiss.h"
 #include "exact/fraction_free.h"
 #include "exact/linalg.h"
-#include "exact/rounded_certificate.h"
 
 // Everything here runs in integers: the problem's data once per call (IntegerData: each row of P and of [Jn; Jt]
 // times the lcm of its denominators), every rational vector over one common denominator, so that each equality

@@ -25,6 +25,8 @@ inline void expect_certified_like(const LpProblem<Q>& p, const LpResult<Q>& r, L
       ASSERT_TRUE(verify_ray(p, r.ray)) << "case " << t;
       ASSERT_EQ(p.A * r.x, p.b) << "case " << t;
       break;
+    case LpStatus::kPivotLimit:
+      FAIL() << "case " << t << ": pivot limit";
   }
 }
 

@@ -89,10 +89,9 @@ TEST(Simplex, TinyUnboundedWithRay) {
 
 // Beale's example (Chvatal, Linear Programming, p. 31): Dantzig's rule with largest-coefficient ties cycles.
 TEST(Simplex, BealeCyclingExampleTerminates) {
-  const LpProblem<Q> p = lp({{q("1/4"), -60, q("-1/25"), 9, 1, 0, 0},
-                             {q("1/2"), -90, q("-1/50"), 3, 0, 1, 0},
-                             {0, 0, 1, 0, 0, 0, 1}},
-                            {0, 0, 1}, {q("-3/4"), 150, q("-1/50"), 6, 0, 0, 0});
+  const LpProblem<Q> p =
+      lp({{q("1/4"), -60, q("-1/25"), 9, 1, 0, 0}, {q("1/2"), -90, q("-1/50"), 3, 0, 1, 0}, {0, 0, 1, 0, 0, 0, 1}},
+         {0, 0, 1}, {q("-3/4"), 150, q("-1/50"), 6, 0, 0, 0});
   for (PivotRule rule : {PivotRule::kBland, PivotRule::kDantzigThenBland}) {
     const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule});
     ASSERT_EQ(r.status, LpStatus::kOptimal);
@@ -105,8 +104,8 @@ TEST(Simplex, BealeCyclingExampleTerminates) {
     EXPECT_NEAR(f.value, -0.05, 1e-12);
   }
   // Starting from the slack basis, the cycle of Beale's example is reached immediately.
-  const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{4, 5, 6}, .max_pivots = 10000,
-                                           .rule = PivotRule::kDantzigThenBland});
+  const LpResult<Q> warm = solve_lp<Q>(
+      p, {.warm_basis = std::vector<Eigen::Index>{4, 5, 6}, .max_pivots = 10000, .rule = PivotRule::kDantzigThenBland});
   EXPECT_EQ(warm.value, q("-1/20"));
 }
 
@@ -172,6 +171,24 @@ TEST(Simplex, WarmStartFromTheOptimalBasisNeedsNoPivot) {
 TEST(Simplex, PivotBudgetThrows) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
   EXPECT_THROW(solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 0}), BudgetExceeded);
+}
+
+// The pivot limit is a status of the warm-started phase 2 (the verified LP asks it whether a float basis is
+// optimal as it stands), not an exception thrown from the pivot loop.
+TEST(Simplex, PivotLimitIsAStatus) {
+  const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
+  std::optional<SimplexTableau<Q>> slack = SimplexTableau<Q>::from_basis(p.A, p.b, {2, 3});
+  ASSERT_TRUE(slack.has_value());
+  const LpResult<Q> r = solve_lp_from_tableau(p, *slack, {.warm_basis = {}, .max_pivots = 0});
+  EXPECT_EQ(r.status, LpStatus::kPivotLimit);
+  EXPECT_EQ(r.pivots, 0);
+  EXPECT_THROW(check_pivot_budget(r.status, {}), BudgetExceeded);
+  // At the optimal basis (x1 = 8/5, x2 = 6/5) no pivot is needed.
+  std::optional<SimplexTableau<Q>> opt = SimplexTableau<Q>::from_basis(p.A, p.b, {0, 1});
+  ASSERT_TRUE(opt.has_value());
+  const LpResult<Q> o = solve_lp_from_tableau(p, *opt, {.warm_basis = {}, .max_pivots = 0});
+  ASSERT_EQ(o.status, LpStatus::kOptimal);
+  EXPECT_EQ(o.value, q("-14/5"));
 }
 
 // 1500 seeded random LPs, many degenerate, against cddlib's exact LP: same status, same optimal value, and

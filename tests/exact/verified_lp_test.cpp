@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "exact/rounded_certificate.h"
+#include "exact/rounded_check.h"
 #include "exact/simplex.h"
 #include "tests/exact/lp_expectations.h"
 #include "tests/exact/random_lp.h"

@@ -5,10 +5,12 @@
 #include <map>
 #include <random>
 
+#include "exact/bareiss.h"
 #include "exact/json_input.h"
-#include "exact/rounded_certificate.h"
+#include "exact/rounded_check.h"
 #include "solvers/ucp/certificate.h"
 #include "solvers/ucp/face_lp.h"
+#include "solvers/ucp/farkas_rounding.h"
 #include "solvers/ucp/float_check.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/solve.h"

@@ -1,0 +1,65 @@
+// Rational data scaled to integers: each row of [A | b] times the lcm of its denominators (row_scale), the
+// same solutions in integer arithmetic. The one scaling is ring::to_common_denominator (exact/fraction_free.h);
+// this is the system it produces, for the verified LP (IntegerLp, 64 bits) and the exact integer checks
+// (IntegerSystem<R>, R = Int128 or Z as with_exact_ring<Q, Int128> chooses).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "exact/fraction_free.h"
+#include "exact/lp_problem.h"
+
+namespace contactcert::exact {
+
+/// The rows of A x = b, row i of [A | b] times row_scale[i] (the lcm of its denominators), as integers of R.
+template <class R>
+struct IntegerSystem {
+  Eigen::Index m = 0, n = 0;
+  std::vector<R> A, b, row_scale;  ///< A row-major, m x n
+  const R& a(Eigen::Index i, Eigen::Index j) const { return A[static_cast<std::size_t>(i * n + j)]; }
+};
+
+/// An LP as an IntegerSystem<std::int64_t> of its rows, with c scaled to integers (times objective_scale):
+/// same feasible set, same optimal x.
+struct IntegerLp : IntegerSystem<std::int64_t> {
+  std::vector<std::int64_t> c;
+  std::int64_t objective_scale = 1;
+  /// The scaled LP in doubles (what the float simplex of the verified path solves); is_free as given.
+  LpProblem<double> to_double(const std::vector<bool>& is_free) const;
+  /// The scaled LP in T, each integer mapped by from_int : int64 -> T (the other rungs of the ladder).
+  template <class T, class F>
+  LpProblem<T> convert(const std::vector<bool>& is_free, F from_int) const {
+    LpProblem<T> p;
+    p.A = Mat<T>(m, n);
+    p.b = Vec<T>(m);
+    p.c = Vec<T>(n);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      for (Eigen::Index j = 0; j < n; ++j) p.A(i, j) = from_int(a(i, j));
+      p.b(i) = from_int(b[static_cast<size_t>(i)]);
+    }
+    for (Eigen::Index j = 0; j < n; ++j) p.c(j) = from_int(c[static_cast<size_t>(j)]);
+    p.is_free = is_free;
+    return p;
+  }
+};
+
+/// The integer-scaled LP, or nullopt if a scaled entry does not fit in 64 bits.
+std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem);
+
+/// The rows of A x = b over R (Int128: throws RingOverflow if a number does not fit).
+template <class R>
+IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b);
+/// The rows of A_S x_S = b for the given columns S of A (in order; row scales from those entries only).
+template <class R>
+IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b, const std::vector<Eigen::Index>& columns);
+
+#define CONTACTCERT_INTEGER_SYSTEM_EXTERN(R)                                        \
+  extern template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&); \
+  extern template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Eigen::Index>&);
+CONTACTCERT_INTEGER_SYSTEM_EXTERN(Int128)
+CONTACTCERT_INTEGER_SYSTEM_EXTERN(Z)
+#undef CONTACTCERT_INTEGER_SYSTEM_EXTERN
+
+}  // namespace contactcert::exact

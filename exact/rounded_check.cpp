@@ -1,0 +1,140 @@
+#include "exact/rounded_check.h"
+
+#include <type_traits>
+
+namespace contactcert::exact {
+
+namespace {
+
+using Index = Eigen::Index;
+
+/// An entry of the data ring S in the ring R of the check (a reference when they agree).
+template <class R, class S>
+decltype(auto) widen(const S& v) {
+  if constexpr (std::is_same_v<R, S>)
+    return (v);
+  else
+    return R(v);
+}
+
+}  // namespace
+
+template <class R, class S>
+std::optional<RoundedVector<R>> rounded_solution(const IntegerSystem<S>& s, const std::vector<S>& rhs,
+                                                 const std::vector<Index>& columns, const std::vector<double>& values) {
+  RoundedVector<R> r;
+  if (!reconstruct_vector(values, r.X, r.D)) return std::nullopt;
+  for (Index i = 0; i < s.m; ++i) {
+    R acc(0);
+    for (std::size_t t = 0; t < columns.size(); ++t)
+      if (ring::sign(r.X[t]) != 0) acc = ring::add(acc, ring::mul(widen<R>(s.a(i, columns[t])), r.X[t]));
+    if (acc != ring::mul(r.D, widen<R>(rhs[static_cast<std::size_t>(i)]))) return std::nullopt;
+  }
+  return r;
+}
+
+template <class R, class S>
+std::vector<R> left_product(const IntegerSystem<S>& s, const std::vector<R>& Y) {
+  std::vector<R> t(static_cast<std::size_t>(s.n), R(0));
+  for (Index i = 0; i < s.m; ++i) {
+    const R& yi = Y[static_cast<std::size_t>(i)];
+    if (ring::sign(yi) == 0) continue;
+    for (Index j = 0; j < s.n; ++j)
+      t[static_cast<std::size_t>(j)] = ring::add(t[static_cast<std::size_t>(j)], ring::mul(widen<R>(s.a(i, j)), yi));
+  }
+  return t;
+}
+
+namespace {
+
+/// round_and_check_optimal in 128-bit integers (throws RingOverflow).
+std::optional<OptimalCertificate> check_optimal(const LpProblem<Q>& problem, const IntegerLp& ilp,
+                                                const std::vector<Index>& basis, const Vec<double>& x_approx,
+                                                const Vec<double>& y_approx) {
+  const Index m = problem.rows(), n = problem.cols();
+  // x_B ~ X / D with A_B X = D b in the integer rows.
+  std::vector<double> xb(basis.size());
+  for (std::size_t t = 0; t < basis.size(); ++t) xb[t] = x_approx(basis[t]);
+  const std::optional<RoundedVector<Int128>> x = rounded_solution<Int128>(ilp, ilp.b, basis, xb);
+  if (!x) return std::nullopt;
+  for (std::size_t t = 0; t < basis.size(); ++t)
+    if (x->X[t] < 0 && !problem.free(basis[t])) return std::nullopt;
+  // Duals of the integer LP ~ Y / E: (A_int^T Y)_j <= E c_int_j, equality on basic and free columns.
+  std::vector<Int128> Y;
+  Int128 E;
+  if (!reconstruct_vector(std::vector<double>(y_approx.data(), y_approx.data() + m), Y, E)) return std::nullopt;
+  const std::vector<Int128> t = left_product(ilp, Y);
+  std::vector<bool> in_basis(static_cast<std::size_t>(n), false);
+  for (Index j : basis) in_basis[static_cast<std::size_t>(j)] = true;
+  for (Index j = 0; j < n; ++j) {
+    const Int128 lhs = t[static_cast<std::size_t>(j)], rhs = ring::mul(E, Int128(ilp.c[static_cast<std::size_t>(j)]));
+    const bool tight = in_basis[static_cast<std::size_t>(j)] || problem.free(j);
+    if (tight ? lhs != rhs : lhs > rhs) return std::nullopt;
+  }
+  // Those of the problem: y_i = row_scale_i Y_i / (E objective_scale).
+  OptimalCertificate cert;
+  cert.x = Vec<Q>::Zero(n);
+  for (std::size_t s = 0; s < basis.size(); ++s) ring::to_rational(x->X[s], x->D, cert.x(basis[s]));
+  cert.y = Vec<Q>(m);
+  for (Index i = 0; i < m; ++i) {
+    ring::to_rational(Y[static_cast<std::size_t>(i)], E, cert.y(i));
+    const std::int64_t L = ilp.row_scale[static_cast<std::size_t>(i)];
+    if (L != 1 || ilp.objective_scale != 1) {
+      Q f;
+      ring::to_rational(Int128(L), Int128(ilp.objective_scale), f);
+      cert.y(i) *= f;
+    }
+  }
+  cert.value = 0;
+  if (problem.c.size() > 0)
+    for (Index j : basis) cert.value += problem.c(j) * cert.x(j);
+  return cert;
+}
+
+}  // namespace
+
+std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& problem, const IntegerLp& ilp,
+                                                          const std::vector<Index>& basis, const Vec<double>& x_approx,
+                                                          const Vec<double>& y_approx) {
+  const Index m = problem.rows(), n = problem.cols();
+  if (x_approx.size() != n || y_approx.size() != m || ilp.m != m || ilp.n != n) return std::nullopt;
+  for (Index j : basis)
+    if (j < 0 || j >= n) return std::nullopt;
+  try {
+    return check_optimal(problem, ilp, basis, x_approx, y_approx);
+  } catch (const RingOverflow&) {  // too large for the fast check: the caller pivots exactly
+    return std::nullopt;
+  }
+}
+
+template <class R>
+std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>& x_approx,
+                                    const std::vector<bool>& zero) {
+  std::vector<Index> support;
+  std::vector<double> xs;
+  for (Index j = 0; j < s.n; ++j)
+    if (!zero[static_cast<std::size_t>(j)]) support.push_back(j), xs.push_back(x_approx(j));
+  const std::optional<RoundedVector<R>> x = rounded_solution<R>(s, s.b, support, xs);
+  if (!x) return std::nullopt;
+  for (const R& v : x->X)
+    if (ring::sign(v) < 0) return std::nullopt;
+  Vec<Q> out = Vec<Q>::Zero(s.n);
+  for (std::size_t t = 0; t < support.size(); ++t)
+    if (ring::sign(x->X[t]) != 0) ring::to_rational(x->X[t], x->D, out(support[t]));
+  return out;
+}
+
+#define CONTACTCERT_ROUNDED_CHECK_INSTANTIATE(R, S)                                                           \
+  template std::optional<RoundedVector<R>> rounded_solution<R, S>(                                            \
+      const IntegerSystem<S>&, const std::vector<S>&, const std::vector<Index>&, const std::vector<double>&); \
+  template std::vector<R> left_product<R, S>(const IntegerSystem<S>&, const std::vector<R>&);
+CONTACTCERT_ROUNDED_CHECK_INSTANTIATE(Int128, std::int64_t)
+CONTACTCERT_ROUNDED_CHECK_INSTANTIATE(Int128, Int128)
+CONTACTCERT_ROUNDED_CHECK_INSTANTIATE(Z, Z)
+#undef CONTACTCERT_ROUNDED_CHECK_INSTANTIATE
+
+template std::optional<Vec<Q>> rounded_point<Int128>(const IntegerSystem<Int128>&, const Vec<double>&,
+                                                     const std::vector<bool>&);
+template std::optional<Vec<Q>> rounded_point<Z>(const IntegerSystem<Z>&, const Vec<double>&, const std::vector<bool>&);
+
+}  // namespace contactcert::exact
