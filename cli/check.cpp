@@ -13,6 +13,7 @@
 #include "exact/json_input.h"
 #include "exact/sha256.h"
 #include "geometry/scene_json.h"
+#include "solvers/design/goal_certificate.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/ucp/certificate.h"
@@ -38,7 +39,7 @@ struct CheckOutcome {
 
 /// Whether a certificate of this kind embeds a planar scene (else a UCP problem).
 bool embeds_scene(const std::string& kind) {
-  return kind == "stability" || kind == "modes" || solvers::is_cone_certificate_kind(kind);
+  return kind == "stability" || kind == "modes" || kind == "goal_nonempty" || solvers::is_cone_certificate_kind(kind);
 }
 
 /// The problem a certificate embeds: a UCP problem as JSON, a scene as JSON text.
@@ -79,6 +80,12 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
     out.reason = c.reason;
     return out;
   }
+  if (kind == "goal_nonempty") {
+    const auto c = solvers::check_goal_certificate(cert);
+    out.valid = c.valid;
+    out.reason = c.reason;
+    return out;
+  }
   if (kind == "modes") {
     const auto c = solvers::check_modes_certificate(cert);
     out.valid = c.valid;
@@ -87,8 +94,8 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
     return out;
   }
   cert.at("kind").fail(
-      "expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, cone_empty or "
-      "cone_nonempty, found \"" +
+      "expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, cone_empty, cone_nonempty or "
+      "goal_nonempty, found \"" +
       kind + "\"");
 }
 

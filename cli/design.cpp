@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "cli/command.h"
@@ -21,6 +22,7 @@
 #include "geometry/scene_json.h"
 #include "solvers/design/checkpoint.h"
 #include "solvers/design/distribute.h"
+#include "solvers/design/goal_certificate.h"
 #include "solvers/stability/stability_certificate.h"
 
 namespace contactcert::cli {
@@ -43,6 +45,7 @@ struct DesignOptions {
   int fixels = 3;
   std::string stable_under;
   bool insertable = false;
+  bool goal_push = false;
   std::string rank;
   int top = 5;
   std::string out = "contactcert-design";
@@ -118,8 +121,8 @@ std::vector<solvers::Candidate> read_candidates(const DesignOptions& o, const ge
 /// 64-bit FNV-1a of the problem's description: the identity a checkpoint must match.
 std::string problem_key(const std::string& scene_text, const DesignOptions& o, const DesignProblem& p) {
   std::string d = scene_text + "|" + std::to_string(p.fixels) + "|" + o.stable_under + "|" +
-                  std::to_string(p.insertable) + "|" + solvers::rank_name(p.rank) + "|" + std::to_string(o.top) + "|" +
-                  std::to_string(p.pushes.size()) + "|" + o.goal_wrench + "|";
+                  std::to_string(p.insertable) + std::to_string(p.goal_push) + "|" + solvers::rank_name(p.rank) + "|" +
+                  std::to_string(o.top) + "|" + std::to_string(p.pushes.size()) + "|" + o.goal_wrench + "|";
   for (const auto& c : p.candidates) d += exact::to_string(c.point.x) + "," + exact::to_string(c.point.y) + ";";
   std::uint64_t h = 1469598103934665603ull;
   for (unsigned char ch : d) h = (h ^ ch) * 1099511628211ull;
@@ -169,6 +172,7 @@ json report_placement(const DesignProblem& problem, const solvers::CandidateSymm
   const std::string stem = o.out + "/placement_" + std::to_string(position);
   const std::string scene_text = solvers::placement_scene_text(
       problem, r.placement, "design placement " + std::to_string(position) + " of " + o.file);
+  const geometry::PlanarScene placement = solvers::placement_scene(problem, r.placement);
   write_text_file(stem + ".json", scene_text);
   json j;
   j["rank"] = position;
@@ -219,12 +223,25 @@ json report_placement(const DesignProblem& problem, const solvers::CandidateSymm
   if (problem.insertable) {
     Q frac(ev.goal_pushes, static_cast<long>(problem.pushes.size()));
     frac.canonicalize();
+    std::optional<geometry::Point2> push;
+    if (ev.goal_push_point >= 0) push = problem.pushes[static_cast<std::size_t>(ev.goal_push_point)].point;
+    const std::string goal_cert = stem + "_goal.cert.json";
+    write_text_file(goal_cert, solvers::goal_certificate(scene_text, placement, ev.goal_witness, push));
     j["goal_witness"] = primitive_json(ev.goal_witness);
+    if (push) j["goal_push_point"] = point_json(*push);
     j["goal_pushes"] = ev.goal_pushes;
     j["goal_fraction"] = exact_json(frac);
-    text << "     G_goal non-empty, e.g. g = " << tuple_text(exact::primitive(ev.goal_witness)) << "; pushes at "
-         << ev.goal_pushes << " of " << problem.pushes.size() << " push points seat it (" << exact::to_string(frac)
-         << ")\n";
+    j["goal_certificate"] = goal_cert;
+    text << "     G_goal non-empty, e.g. g = " << tuple_text(exact::primitive(ev.goal_witness))
+         << (push ? " (the push at " + point_text(*push) + ")" : std::string()) << "; pushes at " << ev.goal_pushes
+         << " of " << problem.pushes.size() << " push points seat it (" << exact::to_string(frac) << "), certificate "
+         << goal_cert << "\n";
+    if (problem.goal_wrench.size() > 0) {
+      const std::string wrench_cert = stem + "_goal_wrench.cert.json";
+      write_text_file(wrench_cert, solvers::goal_certificate(scene_text, placement, problem.goal_wrench, {}));
+      j["goal_wrench_certificate"] = wrench_cert;
+      text << "     G_goal contains " << tuple_text(problem.goal_wrench) << ", certificate " << wrench_cert << "\n";
+    }
   }
   text << "     scene: " << stem << ".json\n";
   return j;
@@ -242,7 +259,8 @@ DesignProblem build_problem(const DesignOptions& o, const std::string& scene_tex
   p.mu_s = scene.fixels.front().mu_s;
   p.mu_k = scene.fixels.front().mu_k;
   p.fixels = o.fixels;
-  p.insertable = o.insertable || !o.goal_wrench.empty();
+  p.goal_push = o.goal_push;
+  p.insertable = o.insertable || !o.goal_wrench.empty() || o.goal_push;
   if (!o.goal_wrench.empty()) p.goal_wrench = parse_number_list(o.goal_wrench, "--goal-wrench", 3);
   if (o.stable_under_given) p.wrenches = parse_wrench_set(o.stable_under);
   if (!o.stable_under_given && !p.insertable)
@@ -302,11 +320,14 @@ int report_design(const DesignOptions& o, const DesignProblem& problem, const so
   const std::string requirement =
       (problem.wrenches.kind == solvers::WrenchSet::Kind::kNone ? std::string()
                                                                 : "strongly stable under " + o.stable_under) +
-      (problem.insertable
-           ? std::string(problem.wrenches.kind == solvers::WrenchSet::Kind::kNone ? "" : ", ") +
-                 "insertable (G_goal non-empty" +
-                 (problem.goal_wrench.size() ? ", containing " + tuple_text(problem.goal_wrench) : "") + ")"
-           : "");
+      (problem.insertable ? std::string(problem.wrenches.kind == solvers::WrenchSet::Kind::kNone ? "" : ", ") +
+                                "insertable (G_goal non-empty" +
+                                (problem.goal_wrench.size() ? ", containing " + tuple_text(problem.goal_wrench) : "") +
+                                (problem.goal_push ? ", containing a push at one of " +
+                                                         std::to_string(problem.pushes.size()) + " push points"
+                                                   : "") +
+                                ")"
+                          : "");
   if (o.common.json) {
     json j;
     j["scene"] = o.file;
@@ -316,7 +337,8 @@ int report_design(const DesignOptions& o, const DesignProblem& problem, const so
     j["candidates"] = {{"source", how}, {"count", n}, {"points", cands}};
     j["requirements"] = {{"stable_under", o.stable_under_given ? json(o.stable_under) : json(nullptr)},
                          {"insertable", problem.insertable},
-                         {"goal_wrench", problem.goal_wrench.size() ? exact_json(problem.goal_wrench) : json(nullptr)}};
+                         {"goal_wrench", problem.goal_wrench.size() ? exact_json(problem.goal_wrench) : json(nullptr)},
+                         {"goal_push", problem.goal_push}};
     j["rank"] = solvers::rank_name(problem.rank);
     j["placements"] = total;
     j["symmetries"] = symmetry.permutations.size();
@@ -459,8 +481,11 @@ void register_design(CLI::App& app, Action& action) {
       ->default_str("contactcert-design");
   sub->add_option("--checkpoint", o->checkpoint, "Resume from and save progress to this file (atomic writes)");
   sub->add_option("--goal-wrench", o->goal_wrench, "Require this wrench fx,fy,tz in G_goal (implies --insertable)");
+  sub->add_flag("--goal-push", o->goal_push,
+                "Require a frictionless finger push at one of the --push-points in G_goal (implies --insertable)");
   sub->add_option("--push-points", o->push_points,
-                  "With --insertable: the goal fraction counts the pushes at M points equally spaced in arc length")
+                  "With --insertable: the goal fraction and --goal-push use the pushes at M points equally spaced in "
+                  "arc length")
       ->default_str("120");
   sub->add_option("--chunk-size", o->chunk_size, "Placements per unit of work handed to a rank")->default_str("16");
   sub->add_option("--max-placements", o->max_placements, "Budget: placements evaluated in this run (exit 3 beyond)")

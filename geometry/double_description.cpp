@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -114,10 +115,52 @@ class DoubleDescription {
     return true;
   }
 
-  // Intersects the current cone with { a . y <= 0 } (or = 0) for a row orthogonal to every line.
+  // The state of a run in the ring S, in R (std::int64_t to Z after an overflow): the run goes on
+  // from there exactly as a run in R from the start would.
+  template <class S>
+  explicit DoubleDescription(const DoubleDescription<S>& o)
+      : k_(o.k_),
+        rows_(o.rows_),
+        words_(o.words_),
+        budget_(o.budget_),
+        meter_(o.meter_),
+        processed_(o.processed_),
+        count_(o.count_),
+        coord_(o.count_ * static_cast<size_t>(o.k_)),
+        bits_(o.bits_),
+        common_(words_),
+        tmp_(static_cast<size_t>(k_)) {
+    for (std::size_t i = 0; i < coord_.size(); ++i) rg::from_integer(static_cast<long>(o.coord_[i]), coord_[i]);
+    for (const auto& l : o.lines_) {
+      lines_.emplace_back(l.size());
+      for (std::size_t j = 0; j < l.size(); ++j) rg::from_integer(static_cast<long>(l[j]), lines_.back()[j]);
+    }
+  }
+
+  // Intersects the current cone with { a . y <= 0 } (or = 0) for a row orthogonal to every line. On
+  // RingOverflow the cone is left as it was before the row.
   void add_row(const R* a, bool equality) {
     const std::size_t t = processed_++;
     const std::size_t n = count_;
+    try {
+      intersect(a, equality, t, n);
+    } catch (const exact::RingOverflow&) {
+      count_ = n;
+      processed_ = t;
+      for (std::size_t r = 0; r < n; ++r) bits_[r * words_ + t / 64] &= ~(std::uint64_t{1} << (t % 64));
+      throw;
+    }
+  }
+
+  std::size_t count() const { return count_; }
+  const R* ray(std::size_t r) const { return &coord_[r * static_cast<size_t>(k_)]; }
+  const std::vector<std::vector<R>>& lines() const { return lines_; }
+
+ private:
+  template <class>
+  friend class DoubleDescription;
+
+  void intersect(const R* a, bool equality, std::size_t t, std::size_t n) {
     if (values_.size() < n) values_.resize(n);
     plus_.clear();
     minus_.clear();
@@ -144,11 +187,6 @@ class DoubleDescription {
     compact(first_created);
   }
 
-  std::size_t count() const { return count_; }
-  const R* ray(std::size_t r) const { return &coord_[r * static_cast<size_t>(k_)]; }
-  const std::vector<std::vector<R>>& lines() const { return lines_; }
-
- private:
   // The CPU's popcount instruction (x86-64 before SSE4.2 lacks it: the generic build calls a software
   // routine, 3/4 of the time on degenerate inputs), checked once.
   static bool has_popcnt() {
@@ -171,15 +209,7 @@ class DoubleDescription {
   [[gnu::always_inline]] inline void new_rays(std::size_t t, std::size_t n) {
     const std::size_t free_dim = static_cast<std::size_t>(k_) - lines_.size();
     const std::size_t need = free_dim >= 2 ? free_dim - 2 : 0;
-    // For each earlier row, the rays tight on it (row t is tight on no plus or minus ray).
-    tight_.resize(t);
-    for (auto& list : tight_) list.clear();
-    for (std::size_t r = 0; r < n; ++r)
-      for (std::size_t w = 0; w < words_; ++w)
-        for (std::uint64_t b = bits_[r * words_ + w]; b != 0; b &= b - 1) {
-          const std::size_t u = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
-          if (u < t) tight_[u].push_back(static_cast<std::uint32_t>(r));
-        }
+    index_tight_rays(t, n);
     for (auto p : plus_) {
       charge(minus_.size(), t);
       for (auto m : minus_) {
@@ -191,28 +221,7 @@ class DoubleDescription {
           common_[w] = bp[w] & bm[w];
           pop += static_cast<std::size_t>(std::popcount(common_[w]));
         }
-        if (pop < need) continue;
-        // A ray whose zero set holds the common one is tight on each common row: only the rays tight on
-        // the common row with the fewest such rays need a look (every ray if there is no common row).
-        const std::vector<std::uint32_t>* scan = nullptr;
-        for (std::size_t w = 0; w < words_; ++w)
-          for (std::uint64_t b = common_[w]; b != 0; b &= b - 1) {
-            const std::vector<std::uint32_t>& list = tight_[w * 64 + static_cast<std::size_t>(std::countr_zero(b))];
-            if (scan == nullptr || list.size() < scan->size()) scan = &list;
-          }
-        bool adjacent = true;
-        std::size_t looked = 0;
-        const std::size_t candidates = scan != nullptr ? scan->size() : n;
-        for (; looked < candidates && adjacent; ++looked) {
-          const std::size_t r = scan != nullptr ? (*scan)[looked] : looked;
-          if (r == p || r == m) continue;
-          const std::uint64_t* br = &bits_[r * words_];
-          bool subset = true;
-          for (std::size_t w = 0; w < words_ && subset; ++w) subset = (common_[w] & ~br[w]) == 0;
-          if (subset) adjacent = false;
-        }
-        charge(looked, t);
-        if (!adjacent) continue;
+        if (pop < need || !adjacent(p, m, n, t)) continue;
         const std::size_t id = push_ray(t);
         rg::combine(&coord_[p * static_cast<size_t>(k_)], values_[p], &coord_[m * static_cast<size_t>(k_)], values_[m],
                     &coord_[id * static_cast<size_t>(k_)], k_);
@@ -221,6 +230,67 @@ class DoubleDescription {
         set_bit(id, t);
       }
     }
+  }
+
+  // For each row u < t, the rays r < n tight on it, as a list (tight_[u]) and as a bit set over the
+  // rays (tight_bits_, ray_words_ words per row). Row t is tight on no plus or minus ray.
+  [[gnu::always_inline]] inline void index_tight_rays(std::size_t t, std::size_t n) {
+    ray_words_ = (n + 63) / 64;
+    tight_.resize(t);
+    for (auto& list : tight_) list.clear();
+    tight_bits_.assign(t * ray_words_, 0);
+    for (std::size_t r = 0; r < n; ++r)
+      for (std::size_t w = 0; w < words_; ++w)
+        for (std::uint64_t b = bits_[r * words_ + w]; b != 0; b &= b - 1) {
+          const std::size_t u = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
+          if (u >= t) continue;
+          tight_[u].push_back(static_cast<std::uint32_t>(r));
+          tight_bits_[u * ray_words_ + r / 64] |= std::uint64_t{1} << (r % 64);
+        }
+  }
+
+  // The combinatorial test: plus ray p and minus ray m (of the n rays before row t) are adjacent iff no
+  // other ray is tight on every row of their common zero set common_ (a face is determined by its zero
+  // set). Such a ray is tight on each common row: either the rays tight on the common row with the
+  // fewest of them are looked at one by one, or the bit sets of the common rows are intersected,
+  // whichever touches fewer words (every ray is a candidate if there is no common row).
+  [[gnu::always_inline]] inline bool adjacent(std::size_t p, std::size_t m, std::size_t n, std::size_t t) {
+    common_rows_.clear();
+    const std::vector<std::uint32_t>* scan = nullptr;
+    for (std::size_t w = 0; w < words_; ++w)
+      for (std::uint64_t b = common_[w]; b != 0; b &= b - 1) {
+        const std::size_t u = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
+        common_rows_.push_back(u);
+        if (scan == nullptr || tight_[u].size() < scan->size()) scan = &tight_[u];
+      }
+    if (scan != nullptr && common_rows_.size() * ray_words_ < scan->size() * words_) {
+      for (std::size_t w = 0; w < ray_words_; ++w) {
+        std::uint64_t witnesses = ~std::uint64_t{0};
+        for (std::size_t u : common_rows_) witnesses &= tight_bits_[u * ray_words_ + w];
+        if (w == p / 64) witnesses &= ~(std::uint64_t{1} << (p % 64));
+        if (w == m / 64) witnesses &= ~(std::uint64_t{1} << (m % 64));
+        if (witnesses != 0) {
+          charge(64 * (w + 1), t);  // (rays looked at, 64 per word)
+          return false;
+        }
+      }
+      charge(64 * ray_words_, t);
+      return true;
+    }
+    const std::size_t candidates = scan != nullptr ? scan->size() : n;
+    for (std::size_t looked = 0; looked < candidates; ++looked) {
+      const std::size_t r = scan != nullptr ? (*scan)[looked] : looked;
+      if (r == p || r == m) continue;
+      const std::uint64_t* br = &bits_[r * words_];
+      bool subset = true;
+      for (std::size_t w = 0; w < words_ && subset; ++w) subset = (common_[w] & ~br[w]) == 0;
+      if (subset) {
+        charge(looked + 1, t);
+        return false;
+      }
+    }
+    charge(candidates, t);
+    return true;
   }
 
   // Keeps the rays listed in keep_, then the rays created from first_created on.
@@ -271,12 +341,16 @@ class DoubleDescription {
   std::vector<std::size_t> plus_, minus_, keep_;
   std::vector<std::uint64_t> common_;
   std::vector<std::vector<std::uint32_t>> tight_;
+  std::vector<std::uint64_t> tight_bits_;
+  std::size_t ray_words_ = 0;
+  std::vector<std::size_t> common_rows_;
   std::vector<R> tmp_;
 };
 
-// R^3 (exact rings): an extreme ray of the pointed cone { y : a . y <= 0 } is tight on two independent
-// rows, so it is +-(a_i x a_j) for a pair that keeps every row <= 0; no simplicial start, no DD.
-// Primitive rays in lexicographic order; nullopt if the rows have rank < 3.
+// R^3: an extreme ray of the pointed cone { y : a . y <= 0 } is tight on two independent rows, so it is
+// +-(a_i x a_j) for a pair that keeps every row <= 0; no simplicial start, no DD. Normalized rays in
+// lexicographic order, one per ray (rays equal by R's sign test: an exact ring's equality, a float
+// ring's tolerance); nullopt if the rows have rank < 3.
 template <class R>
 std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::vector<std::vector<R>>& rows,
                                                                    const DdBudget& budget) {
@@ -307,13 +381,17 @@ std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::ve
       }
       if (!ray || side == 0) continue;
       if (side > 0)
-        for (R& e : c) e = -e;
+        for (R& e : c) e = negated(e);
       rg::normalize(c.data(), 3);
-      out.push_back(c);
+      const auto same = [&](const std::vector<R>& o) {
+        for (std::size_t t = 0; t < 3; ++t)
+          if (rg::sign(rg::sub(o[t], c[t])) != 0) return false;
+        return true;
+      };
+      if (std::none_of(out.begin(), out.end(), same)) out.push_back(c);
     }
   if (!full_rank) return std::nullopt;
   std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
   if (out.size() > budget.max_rays)
     throw exact::BudgetExceeded("double description: more than " + std::to_string(budget.max_rays) + " rays",
                                 std::to_string(out.size()) + " rays");
@@ -330,6 +408,43 @@ void sort_rows(std::vector<std::vector<R>>& rows) {
   rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
 }
 
+template <class R>
+RingGenerators<R> generators(const DoubleDescription<R>& dd, Index k) {
+  RingGenerators<R> out;
+  out.lines = dd.lines();
+  for (std::size_t r = 0; r < dd.count(); ++r) out.rays.emplace_back(dd.ray(r), dd.ray(r) + k);
+  return out;
+}
+
+// A run in std::int64_t that overflowed on the row A[rest[0]] (and was left as before it) goes on in Z
+// from there: the rows before it are not processed again.
+RingGenerators<Z> finish_in_z(const DoubleDescription<std::int64_t>& fixed,
+                              const std::vector<std::vector<std::int64_t>>& A, std::span<const std::size_t> rest,
+                              Index k) {
+  DoubleDescription<Z> dd(fixed);
+  std::vector<Z> row(static_cast<size_t>(k));
+  for (std::size_t i : rest) {
+    for (Index j = 0; j < k; ++j)
+      rg::from_integer(static_cast<long>(A[i][static_cast<size_t>(j)]), row[static_cast<size_t>(j)]);
+    dd.add_row(row.data(), false);
+  }
+  return generators(dd, k);
+}
+
+// Generators in Z as std::int64_t rows; RingOverflow if an entry does not fit (the caller then
+// restarts in Z).
+RingGenerators<std::int64_t> narrowed(const RingGenerators<Z>& g) {
+  auto narrow = [](const std::vector<std::vector<Z>>& rows) {
+    std::vector<std::vector<std::int64_t>> out(rows.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      out[i].resize(rows[i].size());
+      for (std::size_t j = 0; j < rows[i].size(); ++j) rg::from_integer(rows[i][j], out[i][j]);
+    }
+    return out;
+  };
+  return {narrow(g.rays), narrow(g.lines)};
+}
+
 // The double description of { y : A y <= 0, E y = 0 } for sorted rows: the equalities first, then the
 // inequalities that lower the lineality (a basis of what is left, the greedy choice in order), then the
 // others in order.
@@ -342,11 +457,18 @@ RingGenerators<R> generators_of_sorted(const std::vector<std::vector<R>>& A, con
   std::vector<std::size_t> later;
   for (std::size_t i = 0; i < A.size(); ++i)
     if (!dd.reduce_lineality(A[i].data(), false)) later.push_back(i);
-  for (auto i : later) dd.add_row(A[i].data(), false);
-  RingGenerators<R> out;
-  out.lines = dd.lines();
-  for (std::size_t r = 0; r < dd.count(); ++r) out.rays.emplace_back(dd.ray(r), dd.ray(r) + k);
-  return out;
+  for (std::size_t i = 0; i < later.size(); ++i) {
+    if constexpr (std::is_same_v<R, std::int64_t>) {
+      try {
+        dd.add_row(A[later[i]].data(), false);
+      } catch (const exact::RingOverflow&) {
+        return narrowed(finish_in_z(dd, A, std::span(later).subspan(i), k));
+      }
+    } else {
+      dd.add_row(A[later[i]].data(), false);
+    }
+  }
+  return generators(dd, k);
 }
 
 // Rows of one side of a cone C sorted out by their zero sets over the minimal generators D of the other
@@ -404,9 +526,8 @@ RingGenerators<R> cone_generators(std::vector<std::vector<R>> A, std::vector<std
                                   const DdBudget& budget) {
   sort_rows(A);
   sort_rows(E);
-  if constexpr (std::is_integral_v<R> || std::is_same_v<R, Z>)  // exact rings; a float ring keeps the DD's tolerances
-    if (k == 3 && E.empty())
-      if (auto rays = pointed_extreme_rays_3d<R>(A, budget)) return {std::move(*rays), {}};
+  if (k == 3 && E.empty())
+    if (auto rays = pointed_extreme_rays_3d<R>(A, budget)) return {std::move(*rays), {}};
   return generators_of_sorted<R>(A, E, k, budget);
 }
 

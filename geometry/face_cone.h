@@ -2,6 +2,8 @@
 // paper's sign convention F g <= 0), plus equalities and strict rows.
 #pragma once
 
+#include <utility>
+
 #include "exact/number.h"
 
 namespace contactcert::geometry {
@@ -23,12 +25,13 @@ struct FaceCone {
   /// polar(F) of eq. (10).
   static FaceCone polar(const Mat<T>& F) { return from_rows(F.cols(), F, Mat<T>(0, 0), Mat<T>(0, 0)); }
   /// { g in R^dim : F g <= 0, E g = 0, S g < 0 }; a matrix with 0 rows may have any column count.
-  static FaceCone from_rows(Eigen::Index dim, const Mat<T>& F, const Mat<T>& E, const Mat<T>& S) {
+  /// (Taken by value: a temporary matrix is moved in, not copied.)
+  static FaceCone from_rows(Eigen::Index dim, Mat<T> F, Mat<T> E, Mat<T> S) {
     FaceCone c;
     c.dim = dim;
-    c.inequalities = F.rows() == 0 ? Mat<T>(0, dim) : F;
-    c.equalities = E.rows() == 0 ? Mat<T>(0, c.dim) : E;
-    c.strict = S.rows() == 0 ? Mat<T>(0, c.dim) : S;
+    c.inequalities = F.rows() == 0 ? Mat<T>(0, dim) : std::move(F);
+    c.equalities = E.rows() == 0 ? Mat<T>(0, dim) : std::move(E);
+    c.strict = S.rows() == 0 ? Mat<T>(0, dim) : std::move(S);
     return c;
   }
 };

@@ -1,6 +1,8 @@
 // Span form of a polyhedral convex cone (wrench cone paper, eq. 11): pos(rays) + span(lines).
 #pragma once
 
+#include <utility>
+
 #include "exact/number.h"
 
 namespace contactcert::geometry {
@@ -27,12 +29,12 @@ struct SpanCone {
     return c;
   }
   /// pos(rays) + span(lines), generators as rows.
-  /// (a matrix with 0 rows may have any column count).
-  static SpanCone from_rows(Eigen::Index dim, const Mat<T>& rays, const Mat<T>& lines) {
+  /// (a matrix with 0 rows may have any column count; taken by value: a temporary is moved in, not copied).
+  static SpanCone from_rows(Eigen::Index dim, Mat<T> rays, Mat<T> lines) {
     SpanCone c;
     c.dim = dim;
-    c.rays = rays.rows() == 0 ? Mat<T>(0, dim) : rays;
-    c.lines = lines.rows() == 0 ? Mat<T>(0, dim) : lines;
+    c.rays = rays.rows() == 0 ? Mat<T>(0, dim) : std::move(rays);
+    c.lines = lines.rows() == 0 ? Mat<T>(0, dim) : std::move(lines);
     return c;
   }
 };

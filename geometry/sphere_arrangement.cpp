@@ -4,7 +4,10 @@
 #include <array>
 #include <map>
 #include <set>
+#include <string>
 #include <type_traits>
+
+#include "exact/input_error.h"
 
 namespace contactcert::geometry {
 namespace {
@@ -116,7 +119,18 @@ class Builder {
   using R = Ring<T>;
 
  public:
-  explicit Builder(const std::vector<V3<R>>& n) : n_(n) {}
+  Builder(const std::vector<V3<R>>& n, const ArrangementBudget& budget) : n_(n), budget_(budget) {}
+
+  // Stops with BudgetExceeded past the deadline or once the cells' signs outgrow the budget; `where` says how far
+  // the vertices went.
+  void check_budget(const std::string& where) const {
+    const bool signs = cells_.size() * std::max<std::size_t>(n_.size(), 1) > budget_.max_signs;
+    if (!signs && !budget_.deadline.expired()) return;
+    throw exact::BudgetExceeded("arrangement of " + std::to_string(n_.size()) + " planes: " +
+                                    (signs ? "more than " + std::to_string(budget_.max_signs) + " cell signs"
+                                           : budget_.deadline.reached_text()),
+                                where + ", " + std::to_string(cells_.size()) + " cells found");
+  }
 
   void add(int dimension, const V3<R>& p) {
     std::vector<int> s(n_.size());
@@ -153,6 +167,7 @@ class Builder {
   }
 
   std::vector<V3<R>> n_;
+  const ArrangementBudget& budget_;
   std::map<std::vector<int>, std::size_t> seen_;
   std::vector<ArrangementCell<T>> cells_;
 };
@@ -160,7 +175,7 @@ class Builder {
 }  // namespace
 
 template <class T>
-SphereArrangement<T> sphere_arrangement(const Mat<T>& normals) {
+SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const ArrangementBudget& budget) {
   using R = Ring<T>;
   SphereArrangement<T> out;
   std::vector<V3<R>> n;
@@ -168,6 +183,10 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals) {
   out.row_plane.assign(static_cast<std::size_t>(normals.rows()), -1);
   out.row_orientation.assign(static_cast<std::size_t>(normals.rows()), 0);
   for (Index r = 0; r < normals.rows(); ++r) {
+    if (budget.deadline.expired())
+      throw exact::BudgetExceeded(
+          "arrangement of " + std::to_string(normals.rows()) + " rows: " + budget.deadline.reached_text(),
+          std::to_string(r) + " rows merged into " + std::to_string(n.size()) + " planes");
     const V3<R> v = to_ring(Vec<T>(normals.row(r).transpose()));
     if (!nonzero(v)) continue;
     const auto same = std::find_if(n.begin(), n.end(), [&](const V3<R>& w) { return parallel(v, w); });
@@ -181,7 +200,7 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals) {
   out.planes = Mat<T>(static_cast<Index>(n.size()), 3);
   for (std::size_t j = 0; j < n.size(); ++j) out.planes.row(static_cast<Index>(j)) = normals.row(kept[j]);
 
-  Builder<T> b(n);
+  Builder<T> b(n, budget);
   b.add(0, V3<R>{R(0), R(0), R(0)});
   if (n.empty()) {
     b.add(3, V3<R>{R(1), R(0), R(0)});
@@ -196,13 +215,17 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals) {
     // Vertices: the lines n_i x n_j, both directions, each as its ray_key (float near-duplicates only cost
     // time, since cells are merged by sign vector).
     std::set<V3<R>> vertices;
-    for (std::size_t i = 0; i < n.size(); ++i)
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      b.check_budget("vertices of " + std::to_string(i) + " of " + std::to_string(n.size()) + " planes found");
       for (std::size_t j = i + 1; j < n.size(); ++j) {
         const V3<R> d = ray_key(cross(n[i], n[j]));
         vertices.insert(d);
         vertices.insert(negated(d));
       }
+    }
+    std::size_t visited = 0;
     for (const V3<R>& v : vertices) {
+      b.check_budget(std::to_string(visited++) + " of " + std::to_string(vertices.size()) + " vertices visited");
       b.add(1, v);
       std::vector<R> nv(n.size());
       for (std::size_t j = 0; j < n.size(); ++j) nv[j] = dot(n[j], v);
@@ -231,7 +254,7 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals) {
   return out;
 }
 
-template SphereArrangement<double> sphere_arrangement<double>(const Mat<double>&);
-template SphereArrangement<Q> sphere_arrangement<Q>(const Mat<Q>&);
+template SphereArrangement<double> sphere_arrangement<double>(const Mat<double>&, const ArrangementBudget&);
+template SphereArrangement<Q> sphere_arrangement<Q>(const Mat<Q>&, const ArrangementBudget&);
 
 }  // namespace contactcert::geometry

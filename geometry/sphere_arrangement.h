@@ -3,8 +3,10 @@
 // every sign vector class is convex, so cells are identified by their sign vectors.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
+#include "exact/deadline.h"
 #include "exact/number.h"
 
 namespace contactcert::geometry {
@@ -32,13 +34,20 @@ struct SphereArrangement {
   std::vector<int> row_orientation;
 };
 
+/// A budget on the arrangement of p planes: it has O(p^2) cells, each with p signs, found in O(p^3) time.
+struct ArrangementBudget {
+  exact::Deadline deadline{};                    ///< tested per vertex pair and per vertex
+  std::size_t max_signs = std::size_t{1} << 26;  ///< cells x planes kept at most (the sign vectors' size)
+};
+
 /// All cells of the arrangement of the planes {g : n . g = 0} for the rows n of `normals` (zero rows are
 /// ignored, parallel rows merged). Representatives are exact for T = Q (computed in integer arithmetic:
-/// normals scaled to primitive integer vectors, representatives integer vectors).
+/// normals scaled to primitive integer vectors, representatives integer vectors). Throws exact::BudgetExceeded
+/// (with the vertices and cells covered) past the budget's deadline or sign count.
 template <class T>
-SphereArrangement<T> sphere_arrangement(const Mat<T>& normals);
+SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const ArrangementBudget& budget = {});
 
-extern template SphereArrangement<double> sphere_arrangement<double>(const Mat<double>&);
-extern template SphereArrangement<Q> sphere_arrangement<Q>(const Mat<Q>&);
+extern template SphereArrangement<double> sphere_arrangement<double>(const Mat<double>&, const ArrangementBudget&);
+extern template SphereArrangement<Q> sphere_arrangement<Q>(const Mat<Q>&, const ArrangementBudget&);
 
 }  // namespace contactcert::geometry

@@ -1,7 +1,8 @@
 # Fixture design (solvers/design): the search, and its MPI distribution when MPI is found (optional:
 # -DCONTACTCERT_MPI=OFF, or no MPI installed, builds the serial distributor only).
 target_sources(contactcert_solvers PRIVATE design/candidates.cpp design/problem.cpp design/symmetry.cpp
-  design/evaluate.cpp design/ranking.cpp design/checkpoint.cpp design/distribute_serial.cpp)
+  design/evaluate.cpp design/ranking.cpp design/checkpoint.cpp design/distribute_serial.cpp
+  design/goal_certificate.cpp design/goal_certificate_check.cpp)
 option(CONTACTCERT_MPI "Build the MPI distribution of contactcert design (if MPI is found)" ON)
 if(CONTACTCERT_MPI)
   find_package(MPI COMPONENTS CXX QUIET)

@@ -57,6 +57,8 @@ const char* placement_status_name(PlacementStatus s) {
       return "not_insertable";
     case PlacementStatus::kGoalMissesWrench:
       return "goal_misses_wrench";
+    case PlacementStatus::kNoPushInGoal:
+      return "no_push_in_goal";
   }
   return "?";
 }
@@ -107,16 +109,21 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
     if (witness.size() == 0) return reject(PlacementStatus::kNotInsertable);
     if (problem.goal_wrench.size() > 0 && !ins.in_goal(problem.goal_wrench))
       return reject(PlacementStatus::kGoalMissesWrench);
-    long in_goal = 0;
+    long in_goal = 0, first = -1;
     Vec<Q> push_witness;
-    for (const Candidate& c : problem.pushes) {
+    for (std::size_t i = 0; i < problem.pushes.size(); ++i) {
+      const Candidate& c = problem.pushes[i];
       Vec<Q> p(2), n(2);
       p << c.point.x, c.point.y;
       n << c.normal.x, c.normal.y;
       const Vec<Q> g = push_wrench<Q>(problem.workpiece.com, p, n);
       if (!ins.in_goal(g)) continue;
-      if (in_goal++ == 0) push_witness = g;
+      if (in_goal++ == 0) {
+        push_witness = g;
+        first = static_cast<long>(i);
+      }
     }
+    if (problem.goal_push && in_goal == 0) return reject(PlacementStatus::kNoPushInGoal);
     if (problem.rank == Rank::kGoalFraction) {
       out.figure = Q(in_goal, static_cast<long>(problem.pushes.size()));
       out.figure.canonicalize();
@@ -124,6 +131,7 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
     if (evidence) {
       evidence->goal_witness = in_goal > 0 ? push_witness : witness;  // a finger push reads better
       evidence->goal_pushes = in_goal;
+      evidence->goal_push_point = first;
     }
   }
   return out;

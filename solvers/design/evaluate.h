@@ -6,7 +6,8 @@
 //   4. a cone of wrenches meets no moving mode's wrench cone except at 0 (eq. 19: then the whole cone is in
 //      G_strong, given 2-3);
 //   5. G_goal != {} (eq. 21 / Table 5): some cell of the arrangement of the insertion cones' planes lies in
-//      no cone; and G_goal holds the required wrench if one is given.
+//      no cone; G_goal holds the required wrench if one is given, and the frictionless push at some push
+//      point if that is required.
 // Fixels all touch by construction, so stability considers every fixel of the placement.
 #pragma once
 
@@ -27,8 +28,9 @@ enum class PlacementStatus {
   kConeMeetsMovingMode,
   kNotInsertable,
   kGoalMissesWrench,
+  kNoPushInGoal,
 };
-constexpr int kPlacementStatusCount = 7;
+constexpr int kPlacementStatusCount = 8;
 const char* placement_status_name(PlacementStatus s);
 
 /// The evidence behind an accepted placement's verdicts, for the report and its certificates.
@@ -37,6 +39,7 @@ struct PlacementEvidence {
   std::vector<Margin<exact::Q>> margins;             ///< per wrench (generator), if ranked by margin
   exact::Vec<exact::Q> goal_witness;                 ///< a wrench in G_goal, if insertable was asked
   long goal_pushes = 0;                              ///< push points whose frictionless push lies in G_goal
+  long goal_push_point = -1;                         ///< the push point of goal_witness, if it is a push
 };
 
 struct Evaluation {

@@ -32,6 +32,7 @@ struct DesignProblem {
   WrenchSet wrenches;
   bool insertable = false;           ///< require G_goal != {} (eq. 21 for 2 fixels, Table 5 for 3)
   exact::Vec<exact::Q> goal_wrench;  ///< if not empty: G_goal must contain this wrench (insertable implied)
+  bool goal_push = false;  ///< G_goal must contain the frictionless push at some push point (insertable implied)
   Rank rank = Rank::kMargin;
 };
 

@@ -4,6 +4,7 @@
 
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers {
 
@@ -103,20 +104,24 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
   if (table2 != "strict" && table2 != "printed") c.at("table2").fail("expected \"strict\" or \"printed\"");
   const ModeAlphabet alphabet = alphabet_of(scene, table2 == "printed", c.at("unions").boolean());
   const std::size_t k = scene.fixels.size();
-  const MotionModel<Q> model = motion_model<Q>(scene);
+  const bool printed = alphabet.rules.printed_separation;
+  // The rows and signs are the checker's own (table2_rows_check.h), rebuilt from the scene's contact frames.
+  const table2_check::CheckedScene checked = table2_check::checked_scene(scene, /*touching_only=*/false);
   ModesCertificateCheck out;
   std::vector<std::string> leaves, dead;
   for (const auto& e : c.at("modes").elements()) {
     e.expect_keys({"mode", "acceleration"});
     const ModeString m = read_letters(e.at("mode"), alphabet, k, false);
-    if (!realises(model, alphabet.rules, e.at("acceleration").rational_vector(3), m))
+    if (!table2_check::realises(checked, m.text(), printed, e.at("acceleration").rational_vector(3)))
       return {false, "the acceleration listed for mode " + m.text() + " does not realise it (Table 2)", 0, 0};
     leaves.push_back(m.text());
   }
   for (const auto& e : c.at("dead").elements()) {
     e.expect_keys({"prefix", "motzkin"});
     const ModeString p = read_letters(e.at("prefix"), alphabet, k, true);
-    if (!exact::verify_motzkin(kinematic_system(model, p, alphabet.rules).dense(), e.at("motzkin").rational_vector()))
+    table2_check::Rows rows;
+    if (!table2_check::kinematic_rows(checked, p.text(), printed, rows) ||
+        !table2_check::motzkin_holds(rows, e.at("motzkin").rational_vector()))
       return {false, "the certificate of dead prefix " + p.text() + " does not verify", 0, 0};
     dead.push_back(p.text());
   }

@@ -48,7 +48,8 @@ struct ModesCertificateCheck {
 };
 
 /// Verifies a "modes" certificate against its embedded scene: each listed acceleration realises its mode
-/// (Table 2, exact signs), each dead prefix's certificate proves its kinematic rows infeasible, and together they
+/// (Table 2, exact signs), each dead prefix's certificate proves its kinematic rows infeasible (both with the
+/// checker's own rows, table2_rows_check.h), and together they
 /// cover every mode string (mode_coverage): the list is exactly the feasible modes. Malformed certificates
 /// throw InputError naming the field.
 ModesCertificateCheck check_modes_certificate(const exact::JsonInput& certificate);

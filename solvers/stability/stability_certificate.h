@@ -5,7 +5,8 @@
 //   "moving":  {"mode", "forces", "acceleration"}                               (a solution with vdot != 0)
 //   "proofs":  [{"mode", "kinematic", "motzkin": [...]}, ...]    (strongly stable: the mode tree's dead prefixes,
 //              "kinematic": true, "mode" a prefix; then each feasible moving mode's proof for g; mode_tree.h)
-// The checker rebuilds every system from the scene (motion_system.h) and verifies each vector exactly.
+// The checker rebuilds every system from the scene with its own code (table2_rows_check.h, not the solver's
+// motion_system.h) and verifies each vector exactly.
 #pragma once
 
 #include <string>

@@ -1,5 +1,6 @@
 #include "solvers/stability/stable_region.h"
 
+#include "exact/input_error.h"
 #include "geometry/canonical.h"
 #include "geometry/double_description.h"
 #include "geometry/nnc_cone.h"
@@ -72,7 +73,13 @@ StableRegion<T> mode_cones(const geometry::PlanarScene& full, Route route, const
   const std::size_t k = scene.fixels.size();
   const ModeTree<T> tree = walk_modes(motion_model<T>(scene), moving_alphabet(k), tree_options);
   out.tree_nodes = tree.nodes;
+  std::size_t done = 0;
   for (const ModeString& m : tree.modes) {
+    if (tree_options.deadline.expired())
+      throw exact::BudgetExceeded("wrench cones of the moving modes: " + tree_options.deadline.reached_text(),
+                                  std::to_string(done) + " of " + std::to_string(tree.modes.size()) +
+                                      " kinematically feasible modes' cones computed");
+    ++done;
     if (m.text() == std::string(k, 'n')) continue;  // n..n is not a moving mode (strong_stability.h)
     geometry::FaceCone<T> c = wrench_cone_face<T>(scene, model, m, route);
     if (is_empty_cone<T>(c)) continue;
@@ -103,7 +110,8 @@ StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route, co
     if (r.rows()) normals.middleRows(at, r.rows()) = r;
     at += r.rows();
   }
-  const geometry::SphereArrangement<T> arr = geometry::sphere_arrangement<T>(normals);
+  const geometry::SphereArrangement<T> arr =
+      geometry::sphere_arrangement<T>(normals, geometry::ArrangementBudget{tree_options.deadline});
   out.planes = arr.planes;
   // Each cell's label as label() gives it, from its sign vector (no dot products).
   for (const auto& c : arr.cells) {

@@ -46,7 +46,8 @@ StableRegion<T> mode_cones(const geometry::PlanarScene& scene, Route route = Rou
 
 /// The wrench cones of every moving mode of the touching fixels and the labelled cells of wrench space. Only
 /// the kinematically feasible modes (mode_tree.h) have a non-empty cone (forces c = 0 put M vdot in it), so
-/// only theirs are computed.
+/// only theirs are computed. The tree options' deadline also bounds the cones and the arrangement (its loops test
+/// it, geometry::ArrangementBudget); past it, or past the arrangement's sign budget: exact::BudgetExceeded.
 template <class T>
 StableRegion<T> stable_region(const geometry::PlanarScene& scene, Route route = Route::kPaper,
                               const ModeTreeOptions& tree = {});

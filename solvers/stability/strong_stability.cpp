@@ -2,6 +2,7 @@
 
 #include "exact/input_error.h"
 #include "exact/ladder_numbers.h"
+#include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers {
 
@@ -226,20 +227,17 @@ StabilityResult<T> strong_stability(const geometry::PlanarScene& full, const Vec
 }
 
 std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, const StabilityResult<Q>& claim) {
-  const geometry::PlanarScene scene = touching_scene(full);
+  // Every row is the checker's own (table2_rows_check.h), rebuilt from the scene's contact frames.
+  namespace t2 = table2_check;
+  const t2::CheckedScene scene = t2::checked_scene(full, /*touching_only=*/true);
   const std::size_t k = scene.fixels.size();
   if (g.size() != 3) return "the wrench must have 3 entries";
-  const MotionModel<Q> model = motion_model<Q>(scene);
-  const MotionSystem<Q> rest = motion_system(model, all_rolling(k), true);
   // Resting evidence: a point (J c + g = 0, c in the friction cones) or a Motzkin certificate.
   bool resting = false;
   if (claim.has_resting) {
-    if (claim.resting_forces.size() != static_cast<Index>(2 * k)) return "resting forces have the wrong size";
-    const Vec<Q> x = rest.point(Vec<Q>(), claim.resting_forces);
-    if (!exact::verify_strict_point(rest.with_wrench(g), x))
-      return "the resting forces do not balance the wrench inside the friction cones";
+    if (std::string why = t2::resting_violation(scene, g, claim.resting_forces); !why.empty()) return why;
     resting = true;
-  } else if (!exact::verify_motzkin(rest.with_wrench(g), claim.resting_farkas)) {
+  } else if (!t2::motzkin_holds(t2::resting_rows(scene, g), claim.resting_farkas)) {
     return "the certificate that no resting solution exists does not verify";
   }
   // Moving evidence: a witness solution, or one proof per moving mode.
@@ -249,27 +247,15 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
     if (w.mode.letters.size() != k) return "the witness mode has the wrong length";
     if (!motion_letters(w.mode)) return "the witness mode: only the letters s l r n describe motion from rest";
     if (w.acceleration.size() != 3 || w.forces.size() != static_cast<Index>(2 * k)) return "witness sizes";
-    bool nz = false;
-    for (Index i = 0; i < 3; ++i) nz = nz || sgn(w.acceleration(i)) != 0;
-    if (!nz) return "the witness does not move";
-    // M vdot = J c + g and Table 2 for its mode, checked on the motion system's point; the forces the
-    // mode fixes (which point() does not read) are checked here.
-    const MotionSystem<Q> ms = motion_system(model, w.mode);
-    for (std::size_t i = 0; i < k; ++i) {
-      const Index cn = ms.c_n_column[i], ct = ms.c_t_column[i];
-      const Q& c_n = w.forces(static_cast<Index>(i));
-      const Q& c_t = w.forces(static_cast<Index>(k + i));
-      if (cn >= 0 && ct < 0 && c_t != ms.c_t_per_c_n[i] * c_n)
-        return "a sliding force is not on the edge of its friction cone";
-      if (cn < 0 && (sgn(c_n) != 0 || sgn(c_t) != 0)) return "a separating contact carries force";
-    }
-    const Vec<Q> x = ms.point(w.acceleration, w.forces);
-    if (!exact::verify_strict_point(ms.with_wrench(g), x)) return "the moving witness violates its mode";
+    if (!nonzero<Q>(w.acceleration)) return "the witness does not move";
+    if (std::string why = t2::motion_violation(scene, w.mode.text(), g, w.acceleration, w.forces); !why.empty())
+      return "the moving witness violates its mode: " + why;
     moving = true;
   } else if (resting) {
     // Every moving mode is covered: it extends a dead prefix (kinematic proof, any g) or has its own proof for
-    // g; n..n needs none beside a resting solution. Each proof's system is rebuilt from the scene.
+    // g; n..n needs none beside a resting solution.
     std::vector<std::string> dead, leaves{all_rolling(k).text()};
+    t2::Rows rows;
     for (const ModeProof<Q>& p : claim.proofs) {
       const std::string text = p.mode.text();
       if (!motion_letters(p.mode))
@@ -277,14 +263,14 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
       if (p.kinematic) {
         if (p.mode.letters.empty() || p.mode.letters.size() > k)
           return "a dead prefix of the wrong length: '" + text + "'";
-        if (!exact::verify_motzkin(kinematic_system(model, p.mode).dense(), p.motzkin))
+        if (!t2::kinematic_rows(scene, text, false, rows) || !t2::motzkin_holds(rows, p.motzkin))
           return "the kinematic proof for prefix " + text + " does not verify";
         dead.push_back(text);
       } else {
         if (p.mode.letters.size() != k) return "proof for '" + text + "': a mode has one letter per touching fixel";
         if (text == leaves.front())
           return "a proof for n..n is not evidence (it moves only without a resting solution)";
-        if (!exact::verify_motzkin(motion_system(model, p.mode).with_wrench(g), p.motzkin))
+        if (!t2::motion_rows(scene, text, g, rows) || !t2::motzkin_holds(rows, p.motzkin))
           return "the proof for mode " + text + " does not verify";
         leaves.push_back(text);
       }

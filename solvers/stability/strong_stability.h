@@ -123,8 +123,8 @@ struct StabilityResult {
 
 struct StabilityOptions {
   exact::Arith arith = exact::Arith::kVerified;
-  long max_nodes = 1L << 22;  ///< budget on the prefixes of the mode tree; beyond it BudgetExceeded
-  exact::Deadline deadline{}; ///< tested at every prefix; expired: BudgetExceeded
+  long max_nodes = 1L << 22;   ///< budget on the prefixes of the mode tree; beyond it BudgetExceeded
+  exact::Deadline deadline{};  ///< tested at every prefix; expired: BudgetExceeded
 };
 
 /// The scene restricted to its touching fixels (stability considers only those).
@@ -177,7 +177,8 @@ template <class T>
 StabilityResult<T> strong_stability(const geometry::PlanarScene& scene, const Vec<T>& g,
                                     const StabilityOptions& options = {});
 
-/// Independent exact check of a verdict's evidence against the scene and g (re-derives every system).
+/// Independent exact check of a verdict's evidence against the scene and g: every system is rebuilt by the
+/// checker's own code (table2_rows_check.h), not by motion_system.h.
 /// Returns an empty string if valid, else the reason.
 std::string check_stability(const geometry::PlanarScene& scene, const Vec<Q>& g, const StabilityResult<Q>& claim);
 

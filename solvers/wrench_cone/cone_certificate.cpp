@@ -5,6 +5,7 @@
 #include "exact/rational_text.h"
 #include "exact/strict_feasibility.h"
 #include "geometry/scene_json.h"
+#include "solvers/stability/table2_rows_check.h"
 #include "solvers/wrench_cone/cone_form.h"
 #include "solvers/wrench_cone/contact_model.h"
 
@@ -74,36 +75,24 @@ ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
   for (const auto& f : scene.fixels) touching.push_back(f.frame.touching());
   const ModeParse mode = parse_mode(c.at("mode").string(), touching);
   if (mode.status != ModeStatus::kValid) c.at("mode").fail(mode.message);
-  const ConeForm<Q> f = system_of(scene, mode.mode);
-  const Index k = f.K.cols();
+  // K and P are the checker's own (table2_rows_check.h), rebuilt from the scene's contact frames, not cone_form's.
+  namespace t2 = table2_check;
+  const t2::CheckedScene checked = t2::checked_scene(scene, /*touching_only=*/false);
+  t2::ConeColumns cols;
+  if (!t2::cone_columns(checked, mode.mode.text(), cols)) c.at("mode").fail("not a mode of Table 2 for this scene");
   if (empty) {
-    const Vec<Q> y = c.at("motzkin").rational_vector(static_cast<std::size_t>(f.K.rows()));
-    const Vec<Q> yK = f.K.transpose() * y, yP = f.P.transpose() * y;
-    for (Index i = 0; i < yP.size(); ++i)
-      if (sgn(yP(i)) != 0) return {false, "y^T P is not zero in column " + std::to_string(i)};
-    bool positive = false;
-    for (Index j = 0; j < k; ++j) {
-      if (sgn(yK(j)) < 0)
-        return {false, "(y^T K)_" + std::to_string(j) + " < 0 (" + f.names[static_cast<std::size_t>(j)] + ")"};
-      positive = positive || (sgn(yK(j)) > 0 && f.strict[static_cast<std::size_t>(j)]);
-    }
-    if (!positive) return {false, "y^T K is zero on every strict component"};
+    const std::string why = t2::cone_empty_violation(cols, c.at("motzkin").rational_vector(cols.row_wrenches.size()));
+    if (!why.empty()) return {false, why};
     return {true,
             "the Motzkin vector proves that no wrench has the mode (y^T K >= 0, y^T P = 0, > 0 on a strict component)"};
   }
   const Vec<Q> g = c.at("wrench").rational_vector(3);
-  const Vec<Q> z = c.at("z").rational_vector(static_cast<std::size_t>(k));
+  const Vec<Q> z = c.at("z").rational_vector(cols.z.size());
   const std::vector<exact::JsonInput> names = c.at("z_names").elements();
-  for (Index j = 0; j < k; ++j) {
-    if (j >= static_cast<Index>(names.size()) ||
-        names[static_cast<std::size_t>(j)].string() != f.names[static_cast<std::size_t>(j)])
-      return {false, "z_names differ from the mode's components"};
-    const int s = sgn(z(j));
-    if (s < 0 || (s == 0 && f.strict[static_cast<std::size_t>(j)]))
-      return {false, "z_" + std::to_string(j) + " (" + f.names[static_cast<std::size_t>(j)] + ") violates its sign"};
-  }
-  if (names.size() != static_cast<std::size_t>(k)) return {false, "z_names differ from the mode's components"};
-  if (f.K * z != f.P * g) return {false, "K z != P g"};
+  bool same_names = names.size() == cols.z.size();
+  for (std::size_t j = 0; same_names && j < names.size(); ++j) same_names = names[j].string() == cols.z[j].name;
+  if (!same_names) return {false, "z_names differ from the mode's components"};
+  if (const std::string why = t2::cone_witness_violation(checked, cols, z, g); !why.empty()) return {false, why};
   return {true, "the wrench has the mode with the given forces and accelerations (K z = P g, signs of Table 2)"};
 }
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Forged certificates (issue 17; UCP in full, cone, and the digest of stability): each forgery of a valid certificate must be INVALID (exit 2, with the
+# Forged certificates (issue 17; UCP in full, cone, G_goal, stability and modes): each forgery of a valid certificate must be INVALID (exit 2, with the
 # reason) and each genuine one VALID (exit 0), under a memory and a time cap. The forgeries change the
 # problem (with and without a recomputed digest), the digest, the format, the tree (cycles, shared children,
 # unreachable or missing nodes, out-of-range indices), the Farkas vectors, the pair, and add unknown keys.
@@ -197,5 +197,77 @@ forge st_digest 's/"problem_sha256": "[0-9a-f]/"problem_sha256": "x/' "$work/st.
 check 2 'problem_sha256 is not the digest of the embedded scene' check "$work/st_digest.json"
 forge st_extra 's/"verdict"/"trusted": true, "verdict"/' "$work/st.json"
 check 2 '$.trusted: unknown field' check "$work/st_extra.json"
+
+# ---- G_goal certificates (design --insertable): the witness outside every set of Table 5, a push point ----
+echo '{"candidates": [["7/5", 0], [2, "1/6"], [0, "7/5"]]}' > "$work/three.json"
+"$cc" design "$s/bt2002_fig10_pentagon_insert.json" --candidates "$work/three.json" --goal-push --out "$work/goal" > /dev/null
+gc=$work/goal/placement_1_goal.cert.json
+check 0 'goal_nonempty certificate is VALID for' check "$gc" --problem "$work/goal/placement_1.json"
+check 0 'holds the frictionless push at the push point' check "$gc"
+check 2 'is about another problem than' check "$gc" --problem "$s/bt2002_fig10_pentagon_insert.json"
+forge g_digest 's/"problem_sha256": "[0-9a-f]/"problem_sha256": "x/' "$gc"
+check 2 'problem_sha256 is not the digest of the embedded scene' check "$work/g_digest.json"
+forge g_extra 's/"outside"/"trusted": true, "outside"/' "$gc"
+check 2 '$.trusted: unknown field' check "$work/g_extra.json"
+forge g_extra_set 's/"motzkin"/"redundant": true, "motzkin"/' "$gc"
+check 2 '$.outside[0].redundant: unknown field' check "$work/g_extra_set.json"
+forge g_wrench 's/"wrench": \[\n  "[^"]*"/"wrench": [\n  "12345"/' "$gc"
+check 2 'the wrench is not a positive multiple of the push at the push point' check "$work/g_wrench.json"
+forge g_push_moved 's/"push": \[\n  "49\/46",\n  "89\/46"/"push": ["3\/2", "3\/2"/' "$gc"
+check 2 'the wrench is not a positive multiple of the push at the push point' check "$work/g_push_moved.json"
+forge g_push_vertex 's/"push": \[\n  "49\/46",\n  "89\/46"/"push": ["1", "2"/' "$gc"
+check 2 'the push point is not a boundary point that is not a polygon vertex' check "$work/g_push_vertex.json"
+forge g_push_inside 's/"push": \[\n  "49\/46",\n  "89\/46"/"push": ["1", "1"/' "$gc"
+check 2 'the push point is not a point on the polygon boundary' check "$work/g_push_inside.json"
+forge g_lifted 's/"wrench": \[[^]]*\],\n "push": \[[^]]*\]/"wrench": ["0", "1", "0"]/' "$gc"
+check 2 'the Motzkin vector of sss in state 000 does not prove the wrench outside its cone' check "$work/g_lifted.json"
+forge g_zero 's/"wrench": \[[^]]*\],\n "push": \[[^]]*\]/"wrench": ["0", "0", "0"]/' "$gc"
+check 2 'the wrench is zero' check "$work/g_zero.json"
+forge g_dropped 's/"outside": \[\n  {[^}]*},/"outside": [/' "$gc"
+check 2 '"outside" has 25 sets, eq. (21) / Table 5 has 26' check "$work/g_dropped.json"
+forge g_state 's/"state": "000"/"state": "111"/' "$gc"
+check 2 'set 0 is not sss in state 000' check "$work/g_state.json"
+forge g_motzkin_zero 's/"motzkin": \[\n    "1",\n    "1",\n    "1"/"motzkin": ["0", "0", "0"/' "$gc"
+check 2 'the Motzkin vector of sss in state 000 does not prove' check "$work/g_motzkin_zero.json"
+forge g_motzkin_short 's/"motzkin": \[\n    "1",/"motzkin": [/' "$gc"
+check 2 '$.outside[0].motzkin: expected an array of 3 numbers' check "$work/g_motzkin_short.json"
+forge g_gap 's/\\"gap\\": \\"0\\"/\\"gap\\": \\"1\/100\\"/' "$gc"
+sed -z "s/\"problem_sha256\": \"[0-9a-f]*\"/\"problem_sha256\": \"$(digest "$work/g_gap.json")\"/" "$work/g_gap.json" > "$work/g_gap_redigested.json"
+check 2 'fixel 0 does not touch: the scene is not a goal configuration' check "$work/g_gap_redigested.json"
+forge g_kind 's/"goal_nonempty"/"goal_empty"/' "$gc"
+check 2 'expected a certificate kind' check "$work/g_kind.json"
+# ---- vectors that hold only for wrong rows: the checker rebuilds Table 2's rows itself ----
+# redigest FILE: sets FILE's problem_sha256 to the digest of its (changed) embedded scene.
+redigest() { sed -i "s/\"problem_sha256\": *\"[0-9a-f]*\"/\"problem_sha256\": \"$(digest "$1")\"/" "$1"; }
+# the kinetic friction of the embedded scene changed: the sliding modes' proofs were for the old rows
+forge st_mu_k 's/\\"mu_k\\": \\"1.2\\"/\\"mu_k\\": \\"0.1\\"/' "$work/st.json"
+redigest "$work/st_mu_k.json"
+check 2 'does not verify' check "$work/st_mu_k.json"
+# the static friction changed where g = (1, -2, 1) needs it (unstable at mu_s = 0.1): the resting forces leave
+# their friction cones
+"$cc" stability "$s/bt2002_section7_disk.json" --wrench 1,-2,1 --certificate "$work/st2.json" > /dev/null
+check 0 'strongly_stable' check "$work/st2.json"
+forge st_mu_s 's/\\"mu_s\\": \\"1.2\\"/\\"mu_s\\": \\"0.1\\"/' "$work/st2.json"
+redigest "$work/st_mu_s.json"
+check 2 'outside its static friction cone' check "$work/st_mu_s.json"
+# l and r swapped in every proof (a sign flipped in each sliding row)
+perl -0pe 's/("mode": ")([slrn]+)"/$1 . ($2 =~ tr{lr}{rl}r) . "\""/ge' "$work/st.json" > "$work/st_lr.json"
+check 2 'certificate is INVALID' check "$work/st_lr.json"
+# a cone witness with a friction force, for another friction coefficient; a witness for another inertia
+"$cc" cone "$s/bt2002_section7_disk.json" --mode ns --certificate "$work/cone_ns.json" > /dev/null
+check 0 'cone_nonempty certificate is VALID' check "$work/cone_ns.json"
+forge cn_mu 's/\\"mu_s\\": \\"1.2\\"/\\"mu_s\\": \\"0.1\\"/' "$work/cone_ns.json"
+redigest "$work/cn_mu.json"
+check 2 'K z != P g' check "$work/cn_mu.json"
+forge cn_inertia 's/\\"inertia\\": 1 }/\\"inertia\\": 2 }/' "$cn"
+redigest "$work/cn_inertia.json"
+check 2 'K z != P g' check "$work/cn_inertia.json"
+# the modes of the mirror image (every l read as r): the accelerations do not realise them
+"$cc" modes "$s/bt2002_section7_disk.json" --certificate "$work/modes.json" > /dev/null
+check 0 'modes certificate is VALID' check "$work/modes.json" --problem "$s/bt2002_section7_disk.json"
+forge modes_lr 's/"mode": "sl"/"mode": "sr"/' "$work/modes.json"
+check 2 'does not realise it' check "$work/modes_lr.json"
+forge modes_dead_lr 's/"prefix": "\([a-z]*\)l"/"prefix": "\1r"/' "$work/modes.json"
+check 2 'certificate is INVALID' check "$work/modes_dead_lr.json"
 
 summary forged_certificates

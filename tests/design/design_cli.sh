@@ -37,6 +37,8 @@ for k in 1 2 3; do
   "$cc" stability "run/placement_$k.json" --wrench 0,-1,0 | grep -q "verdict: strongly_stable" ||
     fail "placement $k: stability does not confirm strongly_stable"
   "$cc" check "run/placement_${k}_wrench_1.cert.json" | grep -q "is VALID" || fail "placement $k: certificate not VALID"
+  "$cc" check "run/placement_${k}_goal.cert.json" --problem "run/placement_$k.json" | grep -q "goal_nonempty certificate is VALID" ||
+    fail "placement $k: G_goal certificate not VALID"
   "$cc" insert "run/placement_$k.json" | grep -qE "^ +edge [0-9]+, s in" || fail "placement $k: insert lists no seating push"
 done
 xmllint --noout run/design.svg 2> /dev/null || [ ! -x "$(command -v xmllint)" ] || fail "design.svg is not valid XML"
@@ -45,6 +47,16 @@ xmllint --noout run/design.svg 2> /dev/null || [ ! -x "$(command -v xmllint)" ] 
 "$cc" design "$pentagon" --candidates 10 --stable-under 0,-1,0 --goal-wrench 0,-1,0 --top 1 --out goal > goal.txt ||
   fail "goal-wrench run exit $?"
 grep -qE "goal_misses_wrench [1-9]" goal.txt || fail "no placement rejected for missing the goal wrench"
+"$cc" check goal/placement_1_goal_wrench.cert.json | grep -q "is VALID" || fail "goal wrench certificate not VALID"
+
+# --goal-push: some push point's frictionless push must be in G_goal; its certificate names the push point.
+"$cc" design "$pentagon" --candidates 10 --goal-push --push-points 12 --top 1 --out push > push.txt ||
+  fail "goal-push run exit $?"
+grep -qE "no_push_in_goal [1-9]" push.txt || fail "no placement rejected for lacking a seating push"
+grep -q '"push"' push/placement_1_goal.cert.json || fail "the G_goal certificate names no push point"
+"$cc" check push/placement_1_goal.cert.json | grep -q "holds the frictionless push" || fail "push certificate not VALID"
+"$cc" design "$disk" --fixels 2 --candidates 12 --goal-push --top 1 --out disk2 > /dev/null || fail "disk goal-push run exit $?"
+"$cc" check disk2/placement_1_goal.cert.json | grep -q "every set of eq. (21)" || fail "2-fixel disk push certificate not VALID"
 
 # A cone of wrenches and two fixels on a disk: each generator's certificate checks.
 "$cc" design "$disk" --fixels 2 --candidates 12 --stable-under "cone:0,-1,0;1,-4,0" --top 2 --out cone > cone.txt ||

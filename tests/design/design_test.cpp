@@ -90,7 +90,7 @@ TEST(DesignRanking, TopKIsTheSameForEverySplit) {
 TEST(DesignRanking, ChunkResultTextRoundTrips) {
   ChunkResult r{TopK(3), {}};
   r.top.offer({{1, 4, 9}, Q(-7, 20)});
-  r.statistics.by_status = {1, 2, 3, 4, 5, 6};
+  r.statistics.by_status = {1, 2, 3, 4, 5, 6, 7, 8};
   r.statistics.lps = 99;
   const ChunkResult back = parse_chunk_result(chunk_result_text(r), 3);
   ASSERT_EQ(back.top.items().size(), 1u);

@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/nnc_cone.h"
@@ -398,6 +399,35 @@ TEST(StableRegion, SignVectorLabelsEqualTheConeLabelsOnThreeFixels) {
   EXPECT_EQ(pair.planes.rows(), 1);
   EXPECT_EQ(pair.row_plane, (std::vector<Eigen::Index>{0, 0}));
   EXPECT_EQ(pair.row_orientation, (std::vector<int>{1, -1}));
+}
+
+TEST(StableRegion, TheArrangementHonoursItsBudget) {
+  // The arrangement stops in its own loops (issue 17): past the deadline, or past its sign budget, with what it
+  // covered; the whole region stops at the tree options' deadline too.
+  const auto region = stable_region<Q>(three_fixel_disk());
+  const auto full = geometry::sphere_arrangement<Q>(region.planes);
+  geometry::ArrangementBudget expired{exact::Deadline::after(1e-9)};
+  try {
+    geometry::sphere_arrangement<Q>(region.planes, expired);
+    ADD_FAILURE() << "no BudgetExceeded past the deadline";
+  } catch (const exact::BudgetExceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("time limit of"), std::string::npos) << e.what();
+    EXPECT_NE(e.covered.find("planes"), std::string::npos) << e.covered;
+  }
+  geometry::ArrangementBudget small;
+  small.max_signs = full.cells.size() * static_cast<std::size_t>(region.planes.rows()) / 2;
+  try {
+    geometry::sphere_arrangement<Q>(region.planes, small);
+    ADD_FAILURE() << "no BudgetExceeded past the sign budget";
+  } catch (const exact::BudgetExceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("cell signs"), std::string::npos) << e.what();
+    EXPECT_NE(e.covered.find("vertices visited"), std::string::npos) << e.covered;
+  }
+  small.max_signs = full.cells.size() * static_cast<std::size_t>(region.planes.rows());
+  EXPECT_EQ(geometry::sphere_arrangement<Q>(region.planes, small).cells.size(), full.cells.size());
+  ModeTreeOptions late;
+  late.deadline = exact::Deadline::after(1e-9);
+  EXPECT_THROW(stable_region<Q>(three_fixel_disk(), Route::kPaper, late), exact::BudgetExceeded);
 }
 
 TEST(StableRegion, SixtyRandomWrenchesAgreeWithTheirCellLabel) {

@@ -1,0 +1,111 @@
+// The checker of "goal_nonempty" certificates (goal_certificate.h). It trusts nothing from the solver: the sets
+// of eq. (21) and Table 5 are stated here as the paper prints them, each set's scene, K and P are rebuilt from
+// the embedded goal scene, and the push wrench from the push point.
+#include <sstream>
+
+#include "geometry/scene_json.h"
+#include "solvers/design/candidates.h"
+#include "solvers/design/goal_certificate.h"
+
+namespace contactcert::solvers {
+namespace {
+
+using exact::Q;
+using exact::Vec;
+
+/// The sets (contact state, mode) whose wrench cones G_goal avoids, row by row as printed: eq. (21) for two
+/// fixels; Table 5 for three, whose state-111 row prints "mss" twice, the second being "ssm" (the row lists
+/// every s/m string but mmm, and "ssm" is the one missing).
+std::vector<std::pair<std::string, std::string>> goal_sets_as_printed(std::size_t fixels) {
+  static const char* const kEq21[] = {"10: su, ms", "01: us, sm"};
+  static const char* const kTable5[] = {"000: sss",
+                                        "100: suu, mss",
+                                        "010: usu, sms",
+                                        "001: uus, ssm",
+                                        "110: ssu, msu, smu, mms",
+                                        "101: sus, mus, sum, msm",
+                                        "011: uss, ums, usm, smm",
+                                        "111: sss, mss, sms, ssm, mms, smm, msm"};
+  std::vector<std::pair<std::string, std::string>> out;
+  auto read_rows = [&](const auto& rows) {
+    for (const char* row : rows) {
+      std::istringstream in(row);
+      std::string state, mode;
+      in >> state;
+      state.pop_back();  // the ':'
+      while (in >> mode) {
+        if (mode.back() == ',') mode.pop_back();
+        out.emplace_back(state, mode);
+      }
+    }
+  };
+  if (fixels == 2) read_rows(kEq21);
+  if (fixels == 3) read_rows(kTable5);
+  return out;
+}
+
+/// Is g a positive multiple of the frictionless push (n, (p - com) x n) at boundary point p? Empty if so.
+std::string push_mismatch(const geometry::Workpiece& w, const geometry::Point2& p, const Vec<Q>& g) {
+  const CandidateCheck at = candidate_at(w.shape, p);
+  if (!at.message.empty()) return "the push point is not " + at.message;
+  const geometry::Point2& n = at.candidate.normal;
+  Vec<Q> push(3);
+  push << n.x, n.y, geometry::cross(p - w.com, n);
+  const Q scale = g.dot(push) / push.dot(push);
+  if (sgn(scale) <= 0 || g != Vec<Q>(scale * push))
+    return "the wrench is not a positive multiple of the push at the push point";
+  return {};
+}
+
+}  // namespace
+
+GoalCertificateCheck check_goal_certificate(const exact::JsonInput& c) {
+  c.expect_keys({"kind", "problem_sha256", "wrench", "push", "outside", "scene"});
+  const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
+  if (c.at("problem_sha256").string() != embedded.canonical_sha256())
+    return {false, "problem_sha256 is not the digest of the embedded scene"};
+  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
+  const std::size_t k = scene.fixels.size();
+  if (k != 2 && k != 3)
+    return {false, "G_goal is defined for 2 or 3 fixels (eq. 21, Table 5), found " + std::to_string(k)};
+  for (std::size_t i = 0; i < k; ++i)
+    if (!scene.fixels[i].frame.touching())
+      return {false, "fixel " + std::to_string(i) + " does not touch: the scene is not a goal configuration"};
+  const Vec<Q> g = c.at("wrench").rational_vector(3);
+  if (g.isZero()) return {false, "the wrench is zero"};
+  if (const auto push = c.find("push")) {
+    const Vec<Q> p = push->rational_vector(2);
+    const std::string why = push_mismatch(scene.workpiece, {p(0), p(1)}, g);
+    if (!why.empty()) return {false, why};
+  }
+  const auto sets = goal_sets_as_printed(k);
+  const std::vector<exact::JsonInput> outside = c.at("outside").elements();
+  if (outside.size() != sets.size())
+    return {false, "\"outside\" has " + std::to_string(outside.size()) + " sets, eq. (21) / Table 5 has " +
+                       std::to_string(sets.size())};
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    const exact::JsonInput& o = outside[i];
+    o.expect_keys({"state", "mode", "motzkin"});
+    const auto& [state, mode_text] = sets[i];
+    if (o.at("state").string() != state || o.at("mode").string() != mode_text)
+      return {false, "set " + std::to_string(i) + " is not " + mode_text + " in state " + state};
+    // The scene in this contact state: the fixels not yet reached get a gap.
+    geometry::PlanarScene in_state = scene;
+    std::vector<bool> touching;
+    for (std::size_t f = 0; f < k; ++f) {
+      touching.push_back(state[f] == '1');
+      if (!touching.back()) in_state.fixels[f].frame.gap_squared = 1;
+    }
+    const ModeParse mode = parse_mode(mode_text, touching);
+    const exact::StrictSystem<Q> s = wrench_cone_membership(in_state, mode.mode, g);
+    const Vec<Q> y = o.at("motzkin").rational_vector(static_cast<std::size_t>(s.A.rows()));
+    if (!exact::verify_motzkin(s, y))
+      return {false, "the Motzkin vector of " + mode_text + " in state " + state +
+                         " does not prove the wrench outside its cone"};
+  }
+  return {true, "the wrench is outside the wrench cone of every set of " +
+                    std::string(k == 2 ? "eq. (21)" : "Table 5") + " (a Motzkin vector each): G_goal is non-empty" +
+                    (c.find("push") ? " and holds the frictionless push at the push point" : "")};
+}
+
+}  // namespace contactcert::solvers
