@@ -272,7 +272,7 @@ std::string motion_violation(const CheckedScene& scene, const std::string& mode,
     const CheckedFixel& f = scene.fixels[i];
     const auto L = table2_letter(mode[i], f.touching, false);
     if (!L || mode[i] == 'm' || mode[i] == 'S') return "the witness mode: only the letters s l r n";
-    const std::string at = " at fixel " + std::to_string(i + 1) + " (Table 2, '" + mode[i] + "')";
+    const std::string at = " at fixel " + std::to_string(i) + " (Table 2, '" + mode[i] + "')";
     if (!meets(L->a_n, sgn(dot(f.w_n, vdot))) || !meets(L->a_t, sgn(dot(f.w_t, vdot))))
       return "the acceleration violates its mode" + at;
     const Q &c_n = c(static_cast<Eigen::Index>(i)), &c_t = c(static_cast<Eigen::Index>(k + i));
@@ -305,7 +305,7 @@ std::string resting_violation(const CheckedScene& scene, const Vec<Q>& g, const 
     const CheckedFixel& f = scene.fixels[i];
     const Q &c_n = c(static_cast<Eigen::Index>(i)), &c_t = c(static_cast<Eigen::Index>(k + i));
     if (sgn(c_n) < 0 || abs(c_t) > f.mu_s * c_n)
-      return "the resting force at fixel " + std::to_string(i + 1) + " is outside its static friction cone";
+      return "the resting force at fixel " + std::to_string(i) + " is outside its static friction cone";
     add_scaled(wrench, c_n, f.w_n);
     add_scaled(wrench, c_t, f.w_t);
   }
@@ -337,7 +337,7 @@ bool cone_columns(const CheckedScene& scene, const std::string& mode, ConeColumn
       z.row = c.row_wrenches.size() - 1;
       z.sign = a == Acc::kNegative ? -1 : 1;
       z.strict = a == Acc::kPositive || a == Acc::kNegative;
-      z.name = (z.sign < 0 ? "-a" : "a") + std::to_string(i + 1) + (tangent ? "t" : "n");
+      z.name = (z.sign < 0 ? "-a" : "a") + std::to_string(i) + (tangent ? "t" : "n");
       c.z.push_back(std::move(z));
     }
   // The force multipliers: each fixel's first edge (or its sliding edge), then each static cone's second edge.
@@ -345,7 +345,7 @@ bool cone_columns(const CheckedScene& scene, const std::string& mode, ConeColumn
     ConeColumns::Z z;
     z.fixel = i;
     z.t_per_n = side * mu;
-    z.name = "c" + std::to_string(i + 1) + (side < 0 ? "[n-mu t]" : "[n+mu t]");
+    z.name = "c" + std::to_string(i) + (side < 0 ? "[n-mu t]" : "[n+mu t]");
     c.z.push_back(std::move(z));
   };
   for (std::size_t i = 0; i < k; ++i) {
