@@ -21,6 +21,7 @@
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
+#include "solvers/stability/strong_cones.h"
 
 namespace contactcert::cli {
 namespace {
@@ -218,6 +219,21 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene, co
     for (int d = 0; d < 4; ++d)
       if (count[l][d]) std::cout << " " << count[l][d] << " " << kind[d], cells += count[l][d];
     std::cout << (cells == 0 ? " none\n" : "\n");
+  }
+  const auto cones = solvers::strongly_stable_cones(region);
+  std::cout << "  strongly stable set: " << (cones.empty() ? "none" : "the union of these convex cones (g is in one)")
+            << "\n";
+  for (std::size_t k = 0; k < cones.size(); ++k) {
+    std::string rows;
+    auto add = [&](const exact::Mat<Q>& M, const char* relation) {
+      for (Eigen::Index r = 0; r < M.rows(); ++r)
+        rows += (rows.empty() ? "" : ", ") + tuple_text(exact::primitive(exact::Vec<Q>(M.row(r).transpose()))) +
+                " . g " + relation;
+    };
+    add(cones[k].cone.inequalities, "<= 0");
+    add(cones[k].cone.strict, "< 0");
+    add(cones[k].cone.equalities, "= 0");
+    std::cout << "    cone " << k << ": " << (rows.empty() ? "every wrench" : rows) << "\n";
   }
   int shown = 0;
   const auto reps = cell_representatives(region);

@@ -139,7 +139,7 @@ Q sliding_t_per_n(const CheckedFixel& f, Force c) { return c == Force::kLeftEdge
 // The name of a component of z, e.g. "-a2n" or "c1[n-mu t]" (1-based fixel numbers).
 std::string component_name(const char* head, std::size_t fixel, const char* tail) {
   std::ostringstream s;
-  s << head << fixel + 1 << tail;
+  s << head << fixel << tail;
   return s.str();
 }
 
@@ -280,7 +280,7 @@ std::string motion_violation(const CheckedScene& scene, const std::string& mode,
     const CheckedFixel& f = scene.fixels[i];
     const auto L = table2_letter(mode[i], f.touching, false);
     if (!L || mode[i] == 'm' || mode[i] == 'S') return "the witness mode: only the letters s l r n";
-    const std::string at = " at fixel " + std::to_string(i + 1) + " (Table 2, '" + mode[i] + "')";
+    const std::string at = " at fixel " + std::to_string(i) + " (Table 2, '" + mode[i] + "')";
     if (!meets(L->a_n, sgn(dot(f.w_n, vdot))) || !meets(L->a_t, sgn(dot(f.w_t, vdot))))
       return "the acceleration violates its mode" + at;
     const Q &c_n = c(static_cast<Eigen::Index>(i)), &c_t = c(static_cast<Eigen::Index>(k + i));
@@ -313,7 +313,7 @@ std::string resting_violation(const CheckedScene& scene, const Vec<Q>& g, const 
     const CheckedFixel& f = scene.fixels[i];
     const Q &c_n = c(static_cast<Eigen::Index>(i)), &c_t = c(static_cast<Eigen::Index>(k + i));
     if (sgn(c_n) < 0 || abs(c_t) > f.mu_s * c_n)
-      return "the resting force at fixel " + std::to_string(i + 1) + " is outside its static friction cone";
+      return "the resting force at fixel " + std::to_string(i) + " is outside its static friction cone";
     add_scaled(wrench, c_n, f.w_n);
     add_scaled(wrench, c_t, f.w_t);
   }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `check`'s view of a stability certificate: the witness's contact forces as world vectors, recomputed from the
-# checked raw forces, in --json and text. On four scenes (resting and moving witnesses): at rest sum f_i + (g_x, g_y) = 0 and
-# sum torque_i + g_tau = 0 exactly, a moving witness's forces plus (g_x, g_y) give its linear acceleration
+# checked raw forces, in --json and text. On four scenes (resting and moving witnesses): at rest
+# sum f_i + (g_x, g_y) = 0 and sum torque_i + g_tau = 0 exactly, a moving witness's forces plus (g_x, g_y) give its linear acceleration
 # (mass 1), f_i = c_n n_i + c_t t_i, and the certificate file's readable "contacts" are exactly check's. A
 # certificate whose readable contacts were altered is INVALID (exit 2).
 # Usage: check_forces.sh CONTACTCERT REPO_DIR WORK_DIR
