@@ -252,8 +252,9 @@ int run_region(const StabilityOptions& o, const geometry::PlanarScene& scene, co
 int run_finger(const StabilityOptions& o, const geometry::PlanarScene& scene) {
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "--finger is computed exactly (use exact or verified)");
-  const auto region = solvers::stable_region<Q>(scene, solvers::Route::kPaper, tree_budget(o));
-  const auto pushes = solvers::finger_pushes<Q>(scene, region);
+  const solvers::ModeTreeOptions budget = tree_budget(o);  // one deadline for the region and the pushes
+  const auto region = solvers::stable_region<Q>(scene, solvers::Route::kPaper, budget);
+  const auto pushes = solvers::finger_pushes<Q>(scene, region, budget.deadline);
   if (!o.svg.empty()) write_text_file(o.svg, finger_svg(scene, pushes));
   if (o.common.json) {
     std::cout << finger_json(pushes).dump() << "\n";

@@ -1,17 +1,20 @@
 // The checker of "goal_nonempty" certificates (goal_certificate.h). It trusts nothing from the solver: the sets
-// of eq. (21) and Table 5 are stated here as the paper prints them, each set's scene, K and P are rebuilt from
-// the embedded goal scene, and the push wrench from the push point.
+// of eq. (21) and Table 5 are stated here as the paper prints them, each set's scene is rebuilt from the embedded
+// goal scene and its K and P by the checkers' own Table 2 (table2_rows_check.h, not cone_form.h), and the push
+// wrench from the push point.
 #include <sstream>
 
 #include "geometry/scene_json.h"
 #include "solvers/design/candidates.h"
 #include "solvers/design/goal_certificate.h"
+#include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers {
 namespace {
 
 using exact::Q;
 using exact::Vec;
+namespace t2 = table2_check;
 
 /// The sets (contact state, mode) whose wrench cones G_goal avoids, row by row as printed: eq. (21) for two
 /// fixels; Table 5 for three, whose state-111 row prints "mss" twice, the second being "ssm" (the row lists
@@ -91,17 +94,16 @@ GoalCertificateCheck check_goal_certificate(const exact::JsonInput& c) {
       return {false, "set " + std::to_string(i) + " is not " + mode_text + " in state " + state};
     // The scene in this contact state: the fixels not yet reached get a gap.
     geometry::PlanarScene in_state = scene;
-    std::vector<bool> touching;
-    for (std::size_t f = 0; f < k; ++f) {
-      touching.push_back(state[f] == '1');
-      if (!touching.back()) in_state.fixels[f].frame.gap_squared = 1;
-    }
-    const ModeParse mode = parse_mode(mode_text, touching);
-    const exact::StrictSystem<Q> s = wrench_cone_membership(in_state, mode.mode, g);
-    const Vec<Q> y = o.at("motzkin").rational_vector(static_cast<std::size_t>(s.A.rows()));
-    if (!exact::verify_motzkin(s, y))
+    for (std::size_t f = 0; f < k; ++f)
+      if (state[f] != '1') in_state.fixels[f].frame.gap_squared = 1;
+    const t2::CheckedScene checked = t2::checked_scene(in_state, /*touching_only=*/false);
+    t2::ConeColumns cols;
+    if (!t2::cone_columns(checked, mode_text, cols))
+      return {false, mode_text + " is not a mode of Table 2 in state " + state};
+    const Vec<Q> y = o.at("motzkin").rational_vector(cols.row_wrenches.size());
+    if (const std::string why = t2::wrench_outside_violation(checked, cols, y, g); !why.empty())
       return {false, "the Motzkin vector of " + mode_text + " in state " + state +
-                         " does not prove the wrench outside its cone"};
+                         " does not prove the wrench outside its cone: " + why};
   }
   return {true, "the wrench is outside the wrench cone of every set of " +
                     std::string(k == 2 ? "eq. (21)" : "Table 5") + " (a Motzkin vector each): G_goal is non-empty" +

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "exact/input_error.h"
+
 namespace contactcert::solvers {
 
 using exact::is_zero;
@@ -151,20 +153,29 @@ BoundaryPieces<T, Label> boundary_pieces(const geometry::PlanarScene& scene, con
 }
 
 template <class T>
-FingerPushes<T> finger_pushes(const geometry::PlanarScene& scene, const StableRegion<T>& region) {
+FingerPushes<T> finger_pushes(const geometry::PlanarScene& scene, const StableRegion<T>& region,
+                              const exact::Deadline& deadline) {
   std::vector<const geometry::FaceCone<T>*> cones{&region.weak};
   for (const auto& c : region.cones) cones.push_back(&c);
-  return boundary_pieces<T, StabilityVerdict>(scene, cone_rows<T>(cones),
-                                              [&](const Vec<T>& g) { return region.label(g); });
+  std::size_t labelled = 0;
+  return boundary_pieces<T, StabilityVerdict>(scene, cone_rows<T>(cones), [&](const Vec<T>& g) {
+    if (deadline.expired())
+      throw exact::BudgetExceeded("finger pushes: " + deadline.reached_text(),
+                                  "the region, then " + std::to_string(labelled) + " boundary pieces labelled");
+    ++labelled;
+    return region.label(g);
+  });
 }
 
-#define CONTACTCERT_FINGER_INSTANTIATE(T)                                                                  \
-  template std::vector<Vec<T>> cone_rows<T>(const std::vector<const geometry::FaceCone<T>*>&);              \
-  template BoundaryPieces<T, StabilityVerdict> boundary_pieces<T, StabilityVerdict>(                         \
-      const geometry::PlanarScene&, const std::vector<Vec<T>>&, const std::function<StabilityVerdict(const Vec<T>&)>&); \
+#define CONTACTCERT_FINGER_INSTANTIATE(T)                                                                             \
+  template std::vector<Vec<T>> cone_rows<T>(const std::vector<const geometry::FaceCone<T>*>&);                        \
+  template BoundaryPieces<T, StabilityVerdict> boundary_pieces<T, StabilityVerdict>(                                  \
+      const geometry::PlanarScene&, const std::vector<Vec<T>>&,                                                       \
+      const std::function<StabilityVerdict(const Vec<T>&)>&);                                                         \
   template BoundaryPieces<T, bool> boundary_pieces<T, bool>(const geometry::PlanarScene&, const std::vector<Vec<T>>&, \
-                                                            const std::function<bool(const Vec<T>&)>&);      \
-  template FingerPushes<T> finger_pushes<T>(const geometry::PlanarScene&, const StableRegion<T>&);          \
+                                                            const std::function<bool(const Vec<T>&)>&);               \
+  template FingerPushes<T> finger_pushes<T>(const geometry::PlanarScene&, const StableRegion<T>&,                     \
+                                            const exact::Deadline&);                                                  \
   template Vec<T> push_wrench<T>(const geometry::Point2&, const Vec<T>&, const Vec<T>&);
 CONTACTCERT_FINGER_INSTANTIATE(double)
 CONTACTCERT_FINGER_INSTANTIATE(Q)

@@ -8,6 +8,7 @@
 #include <functional>
 #include <vector>
 
+#include "exact/deadline.h"
 #include "solvers/stability/stable_region.h"
 
 namespace contactcert::solvers {
@@ -51,21 +52,25 @@ std::vector<Vec<T>> cone_rows(const std::vector<const geometry::FaceCone<T>*>& c
 template <class T>
 using FingerPushes = BoundaryPieces<T, StabilityVerdict>;
 
-/// Where a frictionless finger push is strongly stable, weakly stable or unstable, from the region's cones.
+/// Where a frictionless finger push is strongly stable, weakly stable or unstable, from the region's cones. Throws
+/// exact::BudgetExceeded (with the pieces labelled) once `deadline` has passed, tested before each piece's label.
 template <class T>
-FingerPushes<T> finger_pushes(const geometry::PlanarScene& scene, const StableRegion<T>& region);
+FingerPushes<T> finger_pushes(const geometry::PlanarScene& scene, const StableRegion<T>& region,
+                              const exact::Deadline& deadline = {});
 
 /// The wrench of a unit-free frictionless push at boundary point p along inward normal n: (n, (p - com) x n).
 template <class T>
 Vec<T> push_wrench(const geometry::Point2& com, const Vec<T>& p, const Vec<T>& n);
 
-#define CONTACTCERT_FINGER_EXTERN(T)                                                                            \
-  extern template std::vector<Vec<T>> cone_rows<T>(const std::vector<const geometry::FaceCone<T>*>&);            \
-  extern template BoundaryPieces<T, StabilityVerdict> boundary_pieces<T, StabilityVerdict>(                       \
-      const geometry::PlanarScene&, const std::vector<Vec<T>>&, const std::function<StabilityVerdict(const Vec<T>&)>&); \
-  extern template BoundaryPieces<T, bool> boundary_pieces<T, bool>(                                               \
-      const geometry::PlanarScene&, const std::vector<Vec<T>>&, const std::function<bool(const Vec<T>&)>&);     \
-  extern template FingerPushes<T> finger_pushes<T>(const geometry::PlanarScene&, const StableRegion<T>&);       \
+#define CONTACTCERT_FINGER_EXTERN(T)                                                                        \
+  extern template std::vector<Vec<T>> cone_rows<T>(const std::vector<const geometry::FaceCone<T>*>&);       \
+  extern template BoundaryPieces<T, StabilityVerdict> boundary_pieces<T, StabilityVerdict>(                 \
+      const geometry::PlanarScene&, const std::vector<Vec<T>>&,                                             \
+      const std::function<StabilityVerdict(const Vec<T>&)>&);                                               \
+  extern template BoundaryPieces<T, bool> boundary_pieces<T, bool>(                                         \
+      const geometry::PlanarScene&, const std::vector<Vec<T>>&, const std::function<bool(const Vec<T>&)>&); \
+  extern template FingerPushes<T> finger_pushes<T>(const geometry::PlanarScene&, const StableRegion<T>&,    \
+                                                   const exact::Deadline&);                                 \
   extern template Vec<T> push_wrench<T>(const geometry::Point2&, const Vec<T>&, const Vec<T>&);
 CONTACTCERT_FINGER_EXTERN(double)
 CONTACTCERT_FINGER_EXTERN(Q)

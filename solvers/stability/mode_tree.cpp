@@ -1,7 +1,6 @@
 #include "solvers/stability/mode_tree.h"
 
 #include <string_view>
-#include <unordered_set>
 
 #include "exact/input_error.h"
 #include "exact/ladder_numbers.h"
@@ -240,29 +239,82 @@ ModeTree<T> walk_modes(const MotionModel<T>& model, const ModeAlphabet& alphabet
   return out;
 }
 
+namespace {
+
+/// The listed strings as a trie (first child, next sibling): one node per distinct prefix, so its size is at most
+/// the lists' total length plus one, and a prefix is walked without being copied.
+class PrefixTrie {
+ public:
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  struct Node {
+    std::size_t parent = kNone, first_child = kNone, next_sibling = kNone;
+    std::size_t depth = 0;
+    char letter = 0;
+    bool listed = false;
+  };
+
+  PrefixTrie() : nodes_(1) {}
+
+  void insert(const std::string& s) {
+    std::size_t at = 0;
+    for (const char c : s) {
+      std::size_t next = child(at, c);
+      if (next == kNone) {
+        next = nodes_.size();
+        Node n;
+        n.parent = at;
+        n.next_sibling = nodes_[at].first_child;
+        n.depth = nodes_[at].depth + 1;
+        n.letter = c;
+        nodes_.push_back(n);
+        nodes_[at].first_child = next;
+      }
+      at = next;
+    }
+    nodes_[at].listed = true;
+  }
+
+  std::size_t child(std::size_t at, char c) const {
+    std::size_t n = nodes_[at].first_child;
+    while (n != kNone && nodes_[n].letter != c) n = nodes_[n].next_sibling;
+    return n;
+  }
+
+  const Node& operator[](std::size_t at) const { return nodes_[at]; }
+
+  /// The prefix that node `at` stands for.
+  std::string text(std::size_t at) const {
+    std::string out(nodes_[at].depth, ' ');
+    for (; at != 0; at = nodes_[at].parent) out[nodes_[at].depth - 1] = nodes_[at].letter;
+    return out;
+  }
+
+ private:
+  std::vector<Node> nodes_;
+};
+
+}  // namespace
+
 std::optional<std::string> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
                                          const std::vector<std::string>& dead, const std::vector<std::string>& leaves) {
   // A prefix is accounted for if it is listed (dead, or a full-length leaf); the walk descends only into
-  // proper prefixes of listed strings, so it never expands more than the lists spell out.
-  std::unordered_set<std::string> listed, inner;
-  auto add = [&](const std::string& s, bool full) {
-    if (s.size() > k || (full && s.size() != k)) return;
-    listed.insert(s);
-    for (std::size_t n = 0; n < s.size(); ++n) inner.insert(s.substr(0, n));
-  };
-  for (const auto& s : dead) add(s, false);
-  for (const auto& s : leaves) add(s, true);
-  if (listed.count("")) return std::nullopt;  // the empty prefix itself is listed: every mode is covered
-  std::vector<std::string> stack{""};
+  // proper prefixes of listed strings, so it never expands more than the lists spell out. Memory and time are
+  // linear in the lists' total length (each trie node is visited once, each with at most the fixel's letters).
+  PrefixTrie trie;
+  for (const auto& s : dead)
+    if (s.size() <= k) trie.insert(s);
+  for (const auto& s : leaves)
+    if (s.size() == k) trie.insert(s);
+  if (trie[0].listed) return std::nullopt;  // the empty prefix itself is listed: every mode is covered
+  std::vector<std::size_t> stack{0};
   while (!stack.empty()) {
-    const std::string p = std::move(stack.back());
+    const std::size_t at = stack.back();
     stack.pop_back();
-    if (p.size() == k) return p;  // a full mode that nothing lists
-    for (Interaction L : alphabet.letters(p.size())) {
-      std::string child = p + static_cast<char>(L);
-      if (listed.count(child)) continue;
-      if (!inner.count(child)) return child;
-      stack.push_back(std::move(child));
+    if (trie[at].depth == k) return trie.text(at);  // a full mode that nothing lists
+    for (Interaction L : alphabet.letters(trie[at].depth)) {
+      const std::size_t next = trie.child(at, static_cast<char>(L));
+      if (next == PrefixTrie::kNone) return trie.text(at) + static_cast<char>(L);
+      if (!trie[next].listed) stack.push_back(next);
     }
   }
   return std::nullopt;

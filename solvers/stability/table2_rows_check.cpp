@@ -136,7 +136,7 @@ Vec<Q> right_hand_side(std::size_t rows, const Vec<Q>& g) {
 // The force of a fixel whose letter is l or r: c_t per c_n (Table 2: friction opposes the sliding).
 Q sliding_t_per_n(const CheckedFixel& f, Force c) { return c == Force::kLeftEdge ? Q(-f.mu_k) : f.mu_k; }
 
-// The name of a component of z, e.g. "-a2n" or "c1[n-mu t]" (1-based fixel numbers).
+// The name of a component of z, e.g. "-a1n" or "c0[n-mu t]" (fixels numbered from 0, docs/formats.md).
 std::string component_name(const char* head, std::size_t fixel, const char* tail) {
   std::ostringstream s;
   s << head << fixel << tail;
@@ -388,6 +388,45 @@ std::string cone_empty_violation(const ConeColumns& cols, const Vec<Q>& y) {
   return "";
 }
 
+namespace {
+
+// M^-1 w at the certificates' scale: diag(p, p, q) w for I/m = p/q in lowest terms.
+Vec<Q> scaled_m_inverse(const CheckedScene& scene, const W& w) {
+  const Q& inertia = scene.inertia_per_mass;
+  Vec<Q> v(3);
+  v << w[0] * inertia.get_num(), w[1] * inertia.get_num(), w[2] * inertia.get_den();
+  return v;
+}
+
+}  // namespace
+
+std::string wrench_outside_violation(const CheckedScene& scene, const ConeColumns& cols, const Vec<Q>& y,
+                                     const Vec<Q>& g) {
+  if (y.size() != static_cast<Eigen::Index>(cols.row_wrenches.size()) || g.size() != 3)
+    return "y or g has the wrong length";
+  W sum{Q(0), Q(0), Q(0)};
+  for (std::size_t r = 0; r < cols.row_wrenches.size(); ++r)
+    add_scaled(sum, y(static_cast<Eigen::Index>(r)), cols.row_wrenches[r]);
+  const Vec<Q> v = scaled_m_inverse(scene, sum);  // y^T P = v^T, M^-1 symmetric
+  const int b = sgn(Q(v.dot(g)));
+  if (b > 0) return "y^T P g > 0";
+  bool positive = b < 0;
+  for (std::size_t j = 0; j < cols.z.size(); ++j) {
+    const ConeColumns::Z& z = cols.z[j];
+    int s = 0;
+    if (z.acceleration) {
+      s = z.sign * sgn(y(static_cast<Eigen::Index>(z.row)));
+    } else {
+      const CheckedFixel& f = scene.fixels[z.fixel];
+      s = -sgn(Q(dot(combined(f.w_n, z.t_per_n, f.w_t), v)));
+    }
+    if (s < 0) return "(y^T K)_" + std::to_string(j) + " < 0 (" + z.name + ")";
+    positive = positive || (s > 0 && z.strict);
+  }
+  if (!positive) return "y^T P g = 0 and y^T K is zero on every strict component";
+  return "";
+}
+
 std::string cone_witness_violation(const CheckedScene& scene, const ConeColumns& cols, const Vec<Q>& z,
                                    const Vec<Q>& g) {
   if (z.size() != static_cast<Eigen::Index>(cols.z.size()) || g.size() != 3) return "z or g has the wrong length";
@@ -405,10 +444,7 @@ std::string cone_witness_violation(const CheckedScene& scene, const ConeColumns&
     const CheckedFixel& f = scene.fixels[c.fixel];
     add_scaled(force, x, combined(f.w_n, c.t_per_n, f.w_t));
   }
-  // vdot = M^-1 (J c + g) with M^-1 = diag(p, p, q) for I/m = p/q.
-  const Q& inertia = scene.inertia_per_mass;
-  Vec<Q> vdot(3);
-  vdot << force[0] * inertia.get_num(), force[1] * inertia.get_num(), force[2] * inertia.get_den();
+  const Vec<Q> vdot = scaled_m_inverse(scene, force);  // M^-1 (J c + g)
   for (std::size_t r = 0; r < a.size(); ++r)
     if (a[r] != dot(cols.row_wrenches[r], vdot)) return "K z != P g (row " + std::to_string(r) + ")";
   return "";

@@ -92,7 +92,7 @@ std::string resting_violation(const CheckedScene& scene, const Vec<Q>& g, const 
 
 /// The wrench cone of a mode (eqs. 13-17) as the checker sees it: K z = P g, i.e. a_r = w_r . M^-1 (J c + g) for each
 /// row r, one row per acceleration that Table 2 constrains (a_n of every fixel, then a_t, skipping free ones). The
-/// z are the signed accelerations in the same order (a zero one has none; "a2n", or "-a2n" for a negative one,
+/// z are the signed accelerations in the same order (a zero one has none; "a1n", or "-a1n" for a negative one,
 /// strict if Table 2 says > 0 or < 0), then the force multipliers: per fixel of l r n m its c_n, as
 /// "c<i>[n-mu t]" (l, and the first edge of n m: c = c_n (n - mu t)) or "c<i>[n+mu t]" (r), then per fixel of n m
 /// the second edge "c<i>[n+mu t]". This is the order of cone_form.h's rows (E) and columns (V).
@@ -117,6 +117,13 @@ bool cone_columns(const CheckedScene& scene, const std::string& mode, ConeColumn
 /// With M invertible, y^T P = 0 says sum_r y_r w_r = 0, and then y^T K is y_r sign on each acceleration z. Returns
 /// "" if it does, else why not.
 std::string cone_empty_violation(const ConeColumns& cols, const Vec<Q>& y);
+
+/// Whether y (one entry per row) proves the wrench g outside the cone of the mode (Motzkin): y^T K >= 0,
+/// y^T P g <= 0, and y^T P g < 0 or (y^T K)_j > 0 on a strict z. With v = M^-1 sum_r y_r w_r, y^T P g = v . g and
+/// (y^T K)_j is sign y_row on an acceleration z, -v . (w_n + t_per_n w_t) on a force z; any positive scale of
+/// M^-1 scales P and the force columns alike and changes no sign. Returns "" if it does, else why not.
+std::string wrench_outside_violation(const CheckedScene& scene, const ConeColumns& cols, const Vec<Q>& y,
+                                     const Vec<Q>& g);
 
 /// Whether (z, g) solves K z = P g with z's signs, for the certificates' scale of M^-1: diag(p, p, q) for I/m =
 /// p/q in lowest terms (a positive multiple of M^-1). Returns "" if it does, else why not.

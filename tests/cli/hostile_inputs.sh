@@ -40,6 +40,7 @@ check '0|3' '' stability "$scene" --wrench 0,-1,0 --time-limit 0.001
 check 3 'time limit of 0.1 s reached' stability "$repo/tests/cli/budget/disk48.json" --region --time-limit 0.1
 # --region stops in its own loops (mode tree, cones, arrangement), not by the watchdog: "budget exceeded", covered
 check 3 'budget exceeded: ' stability "$repo/tests/cli/budget/disk48.json" --region --time-limit 1.5
+check 3 'budget exceeded: ' stability "$repo/tests/cli/budget/disk48.json" --finger --time-limit 0.2
 check '0|3' '' demo --out "$work/demo" --time-limit 0.2
 check 2 '--time-limit' bench --time-limit nan
 

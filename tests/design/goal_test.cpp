@@ -110,5 +110,22 @@ TEST(DesignGoalCertificate, AWitnessPushChecksAndForgeriesDoNot) {
           .valid);
 }
 
+// The checker rebuilds K and P from the embedded scene: Motzkin vectors computed for mu = 1/5 do not pass for a
+// scene that says mu = 3/10, where the push at x = 1/4 lies in G_sm (x >= x2 - mu, as derived above), so that
+// no vectors could.
+TEST(DesignGoalCertificate, VectorsForAnotherFrictionCoefficientAreRefused) {
+  const DesignProblem p = square_problem({});
+  DesignProblem rougher = p;
+  rougher.mu_s = rougher.mu_k = Q(3, 10);
+  Vec<Q> g(3);
+  g << 0, -1, Q(-1, 4);
+  const geometry::PlanarScene scene = placement_scene(p, {0, 1});
+  EXPECT_TRUE(check_text(goal_certificate(placement_scene_text(p, {0, 1}, "square"), scene, g, {})).valid);
+  const GoalCertificateCheck wrong =
+      check_text(goal_certificate(placement_scene_text(rougher, {0, 1}, "square"), scene, g, {}));
+  EXPECT_FALSE(wrong.valid);
+  EXPECT_NE(wrong.reason.find("does not prove the wrench outside its cone"), std::string::npos) << wrong.reason;
+}
+
 }  // namespace
 }  // namespace contactcert::solvers

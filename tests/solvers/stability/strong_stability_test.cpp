@@ -428,6 +428,13 @@ TEST(StableRegion, TheArrangementHonoursItsBudget) {
   ModeTreeOptions late;
   late.deadline = exact::Deadline::after(1e-9);
   EXPECT_THROW(stable_region<Q>(three_fixel_disk(), Route::kPaper, late), exact::BudgetExceeded);
+  // The finger pushes after the region stop at the same deadline, before labelling a piece.
+  try {
+    finger_pushes<Q>(three_fixel_disk(), region, late.deadline);
+    ADD_FAILURE() << "no BudgetExceeded in the finger pushes past the deadline";
+  } catch (const exact::BudgetExceeded& e) {
+    EXPECT_NE(e.covered.find("0 boundary pieces labelled"), std::string::npos) << e.covered;
+  }
 }
 
 TEST(StableRegion, SixtyRandomWrenchesAgreeWithTheirCellLabel) {
