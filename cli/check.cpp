@@ -193,7 +193,8 @@ int run_check(const CheckOptions& o) {
 
 void register_check(CLI::App& app, Action& action) {
   auto o = std::make_shared<CheckOptions>();
-  CLI::App* sub = app.add_subcommand("check", "Verify a certificate written by ucp, stability or cone independently");
+  CLI::App* sub = app.add_subcommand(
+      "check", "Verify a certificate written by ucp, stability, modes, cone or design, independently");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Certificate file")->required();
   sub->add_option("--problem", o->problem,
