@@ -1,5 +1,5 @@
 // The plots of `contactcert bench`: time against error on log scales, per instance and per family (the
-// precision ladder).
+// precision ladder), with strips for errors of exactly 0 and of 1 or more.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -25,60 +25,123 @@ struct PlotSeries {
   bool connect = false;  ///< a line through the points, in order
 };
 
-/// Time (x) against error (y), log scales, one colour per series; an error of exactly 0 sits on the bottom line.
+/// Where a plot draws. x: time, log scale. y, top to bottom: a strip for errors >= 1 (a wrong or undecided answer
+/// counts as 1), the log scale of errors in (0, 1), and a strip for errors of exactly 0. Each strip has a row per
+/// series; in a row, a point that would cover an earlier one (closer than a dot) moves to another of three lanes,
+/// and the row ends with its count of points, so coincident answers stay visible and countable.
+struct PlotFrame {
+  static constexpr double W = 680, left = 86, right = 130, top = 24, row = 13, gap = 14, log_height = 300;
+  static constexpr double y_floor = -18;  ///< log10 of the smallest error on the log scale
+  std::size_t rows = 1;                   ///< rows per strip: one per series
+  double x0 = 0, x1 = 1;                  ///< log10 of the time range
+  double strip() const { return rows * row; }
+  double log_top() const { return top + strip() + gap; }
+  double zero_top() const { return log_top() + log_height + gap; }
+  double height() const { return zero_top() + strip() + 46; }
+  double X(double t) const { return left + (std::max(std::log10(t), x0) - x0) / (x1 - x0) * (W - left - right); }
+  /// The centre line of a point of series k with error e (before its lane offset).
+  double Y(double e, std::size_t k) const {
+    if (e >= 1) return top + (k + 0.5) * row;
+    if (e <= 0) return zero_top() + (k + 0.5) * row;
+    return log_top() + (-std::max(std::log10(e), y_floor)) / -y_floor * log_height;
+  }
+};
+
+/// The axes, grid lines, strip labels and axis titles.
+void draw_axes(std::ostringstream& s, const PlotFrame& f, const std::string& x_label) {
+  const double H = f.height(), plot_right = f.W - f.right;
+  for (double d = f.x0; d <= f.x1; ++d)
+    s << "<line x1=\"" << f.X(std::pow(10, d)) << "\" y1=\"" << f.top << "\" x2=\"" << f.X(std::pow(10, d))
+      << "\" y2=\"" << f.zero_top() + f.strip() << "\" stroke=\"#ddd\"/><text x=\"" << f.X(std::pow(10, d)) << "\" y=\""
+      << f.zero_top() + f.strip() + 15 << "\" text-anchor=\"middle\">1e" << d << "</text>\n";
+  for (double d = 0; d >= f.y_floor; d -= 3)
+    s << "<line x1=\"" << f.left << "\" y1=\"" << f.Y(std::pow(10, d), 0) << "\" x2=\"" << plot_right << "\" y2=\""
+      << f.Y(std::pow(10, d), 0) << "\" stroke=\"#ddd\"/><text x=\"" << f.left - 5 << "\" y=\""
+      << f.Y(std::pow(10, d), 0) + 4 << "\" text-anchor=\"end\">1e" << int(d) << "</text>\n";
+  const std::pair<double, const char*> strips[] = {{f.top, "&#8805; 1 or wrong"}, {f.zero_top(), "exactly 0"}};
+  for (const auto& [y, name] : strips)
+    s << "<rect x=\"" << f.left << "\" y=\"" << y << "\" width=\"" << plot_right - f.left << "\" height=\"" << f.strip()
+      << "\" fill=\"#f4f4f4\" stroke=\"#ccc\"/><text x=\"" << f.left - 5 << "\" y=\"" << y + f.strip() / 2 + 4
+      << "\" text-anchor=\"end\">" << name << "</text>\n";
+  s << "<text x=\"" << (f.left + plot_right) / 2 << "\" y=\"" << H - 12 << "\" text-anchor=\"middle\">"
+    << html_escape(x_label) << "</text>\n<text transform=\"translate(14," << (f.log_top() + f.log_height / 2)
+    << ") rotate(-90)\" text-anchor=\"middle\">error against exact</text>\n";
+}
+
+/// The positions of a series' points: in a strip, each point takes the first of three lanes (offsets 0, -4, +4)
+/// whose last point is at least a dot's width to its left, in order of x (deterministic).
+std::vector<std::pair<double, double>> place(const PlotFrame& f, const PlotSeries& ser, std::size_t k) {
+  std::vector<std::pair<double, double>> at(ser.points.size());
+  std::vector<std::size_t> order(ser.points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return f.X(ser.points[a].seconds) < f.X(ser.points[b].seconds);
+  });
+  constexpr double lanes[] = {0, -4, 4}, dot = 5;
+  double last[2][3];  // per strip (wrong, zero) and lane: the x of its last point
+  for (auto& l : last) std::fill(std::begin(l), std::end(l), -1e9);
+  for (std::size_t i : order) {
+    const PlotPoint& p = ser.points[i];
+    const double x = f.X(p.seconds), e = p.error;
+    double y = f.Y(e, k);
+    if (e >= 1 || e <= 0) {
+      double* lane = last[e >= 1 ? 0 : 1];
+      std::size_t j = 0;
+      while (j < 3 && x - lane[j] < dot) ++j;
+      if (j == 3) j = static_cast<std::size_t>(std::min_element(lane, lane + 3) - lane);
+      lane[j] = x;
+      y += lanes[j];
+    }
+    at[i] = {x, y};
+  }
+  return at;
+}
+
+/// Time (x) against error (y), one colour per series (PlotFrame).
 std::string svg_plot(const std::vector<PlotSeries>& series, const std::string& x_label) {
-  constexpr double W = 640, H = 420, left = 70, right = 130, top = 20, bottom = 50;
-  constexpr double y_floor = -18;  // log10 of the error drawn for an exact 0
   const char* colours[] = {"#d73027", "#4575b4", "#1a9850", "#984ea3", "#ff7f00", "#a65628", "#f781bf", "#666666"};
+  PlotFrame f;
+  f.rows = std::max<std::size_t>(1, series.size());
   double tmin = std::numeric_limits<double>::infinity(), tmax = -tmin;
   for (const auto& ser : series)
     for (const auto& p : ser.points)
       if (p.seconds > 0) tmin = std::min(tmin, p.seconds), tmax = std::max(tmax, p.seconds);
   if (!(tmin < tmax)) tmin = 1e-6, tmax = 1;
-  const double x0 = std::floor(std::log10(tmin)), x1 = std::ceil(std::log10(tmax));
-  const auto X = [&](double t) { return left + (std::max(std::log10(t), x0) - x0) / (x1 - x0) * (W - left - right); };
-  const auto Y = [&](double e) {
-    const double l = e > 0 ? std::max(std::log10(e), y_floor + 1) : y_floor;
-    return top + (0 - l) / (0 - y_floor) * (H - top - bottom);
-  };
+  f.x0 = std::floor(std::log10(tmin));
+  f.x1 = std::ceil(std::log10(tmax));
+  const double H = f.height();
   std::ostringstream s;
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\" viewBox=\"0 0 " << W
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << f.W << "\" height=\"" << H << "\" viewBox=\"0 0 " << f.W
     << " " << H
-    << "\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  for (double d = x0; d <= x1; ++d)
-    s << "<line x1=\"" << X(std::pow(10, d)) << "\" y1=\"" << top << "\" x2=\"" << X(std::pow(10, d)) << "\" y2=\""
-      << H - bottom << "\" stroke=\"#ddd\"/><text x=\"" << X(std::pow(10, d)) << "\" y=\"" << H - bottom + 15
-      << "\" text-anchor=\"middle\">1e" << d << "</text>\n";
-  for (double d = 0; d >= y_floor; d -= 3) {
-    const double y = d == y_floor ? Y(0) : Y(std::pow(10, d));
-    s << "<line x1=\"" << left << "\" y1=\"" << y << "\" x2=\"" << W - right << "\" y2=\"" << y
-      << "\" stroke=\"#ddd\"/><text x=\"" << left - 5 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">"
-      << (d == y_floor ? std::string("0")
-          : d == 0     ? std::string("1 (wrong)")
-                       : "1e" + std::to_string(int(d)))
-      << "</text>\n";
-  }
-  s << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 12 << "\" text-anchor=\"middle\">"
-    << html_escape(x_label) << "</text>\n<text transform=\"translate(14," << (top + H - bottom) / 2
-    << ") rotate(-90)\" text-anchor=\"middle\">error against exact</text>\n";
+    << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  draw_axes(s, f, x_label);
   for (std::size_t k = 0; k < series.size(); ++k) {
     const char* c = colours[k % 8];
     const PlotSeries& ser = series[k];
-    if (ser.connect && ser.points.size() > 1) {
+    const auto at = place(f, ser, k);
+    if (ser.connect && at.size() > 1) {
       s << "<polyline fill=\"none\" stroke=\"" << c << "\" stroke-opacity=\"0.5\" points=\"";
-      for (const auto& p : ser.points) s << X(p.seconds) << "," << Y(p.error) << " ";
+      for (const auto& [x, y] : at) s << x << "," << y << " ";
       s << "\"/>\n";
     }
-    for (const auto& p : ser.points) {
-      s << "<circle cx=\"" << X(p.seconds) << "\" cy=\"" << Y(p.error) << "\" r=\"3\" fill=\"" << c
-        << "\" fill-opacity=\"0.55\"/>\n";
+    long wrong = 0, zero = 0;
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      const PlotPoint& p = ser.points[i];
+      wrong += p.error >= 1;
+      zero += p.error <= 0;
+      s << "<circle cx=\"" << at[i].first << "\" cy=\"" << at[i].second << "\" r=\"2.5\" fill=\"" << c
+        << "\" fill-opacity=\"0.6\"/>\n";
       if (!p.label.empty())
-        s << "<text x=\"" << X(p.seconds) + 4 << "\" y=\"" << Y(p.error) - 4 << "\" font-size=\"10\" fill=\"" << c
+        s << "<text x=\"" << at[i].first + 4 << "\" y=\"" << at[i].second - 4 << "\" font-size=\"11\" fill=\"" << c
           << "\" paint-order=\"stroke\" stroke=\"white\" stroke-width=\"3\">" << html_escape(p.label) << "</text>\n";
     }
-    s << "<circle cx=\"" << W - right + 15 << "\" cy=\"" << top + 10 + 18 * k << "\" r=\"4\" fill=\"" << c
-      << "\"/><text x=\"" << W - right + 24 << "\" y=\"" << top + 14 + 18 * k << "\">" << html_escape(ser.name)
-      << "</text>\n";
+    // The count of each strip row, right of the plot.
+    for (const auto& [n, e] : {std::pair{wrong, 1.0}, std::pair{zero, 0.0}})
+      s << "<text x=\"" << f.W - f.right + 6 << "\" y=\"" << f.Y(e, k) + 4 << "\" font-size=\"11\" fill=\"" << c
+        << "\">" << n << "</text>\n";
+    s << "<circle cx=\"" << f.W - f.right + 15 << "\" cy=\"" << f.log_top() + 10 + 18 * k << "\" r=\"4\" fill=\"" << c
+      << "\"/><text x=\"" << f.W - f.right + 24 << "\" y=\"" << f.log_top() + 14 + 18 * k << "\">"
+      << html_escape(ser.name) << "</text>\n";
   }
   s << "</svg>\n";
   return s.str();

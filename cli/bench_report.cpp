@@ -27,7 +27,9 @@ std::vector<std::string> write_bench_report(const BenchRun& run, const std::stri
   html.preformatted(header_text(run));
   html.figure(svg,
               "Each dot is one instance on one rung: its median time and its largest error against the exact "
-              "answer (a wrong verdict counts as 1; an error of exactly 0 sits on the bottom line).");
+              "answer. Errors of exactly 0 sit in the bottom strip and errors of 1 or more (a wrong or undecided "
+              "answer counts as 1) in the top one, a row per rung with its count of dots at the right; dots that "
+              "would cover each other there are moved up or down.");
   html.heading("summary by family");
   for (const Table& t : split(table(run, Key::kFamilyQuestion), run.rungs.size())) html.table(t.header, t.rows);
   for (bench::Family f : families_in(run)) {
@@ -39,7 +41,8 @@ std::vector<std::string> write_bench_report(const BenchRun& run, const std::stri
   html.heading("precision ladder");
   html.figure(ladder,
               "One point per family and rung: the median time over the family's instances and the worst error of "
-              "its decided answers (any wrong or undecided answer: 1).");
+              "its decided answers (any wrong or undecided answer: 1, in the top strip; exactly 0: the bottom "
+              "strip, a row per family).");
   for (bench::Family f : families_in(run)) {
     const Table t = ladder_table(run, f);
     html.heading(std::string(bench::family_name(f)) + ": precision ladder");

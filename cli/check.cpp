@@ -57,6 +57,23 @@ std::string problem_file_text(const std::string& path, const std::string& kind) 
   return exact::JsonInput::parse(text, path).canonical_text();
 }
 
+/// The world forces of a valid "cone_nonempty" certificate's witness, from the contact forces the checker derived
+/// from its z. The certificate's own readable "contacts" and "acceleration", if any, must be exactly these, else
+/// it is INVALID.
+void cone_view(const exact::JsonInput& cert, const solvers::ConeCertificateCheck& checked, CheckOutcome& c) {
+  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded_problem(cert, c.kind));
+  const exact::Vec<exact::Q> g = cert.at("wrench").rational_vector(3);
+  const json view = witness_json(scene, checked.touching, checked.forces, g);
+  c.details["witness"] = view;
+  c.text = witness_text(scene, checked.touching, checked.forces, g, "  ");
+  for (const char* key : {"contacts", "acceleration"})
+    if (const auto given = cert.find(key);
+        given && given->canonical_text() != exact::JsonInput::parse(view.at(key).dump(), key).canonical_text()) {
+      c.valid = false;
+      c.reason = std::string(key) + " is not the view of the checked witness";
+    }
+}
+
 CheckOutcome check_any(const exact::JsonInput& cert) {
   const std::string kind = cert.at("kind").string();
   CheckOutcome out;
@@ -78,6 +95,7 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
     const auto c = solvers::check_cone_certificate(cert);
     out.valid = c.valid;
     out.reason = c.reason;
+    if (c.valid && kind == "cone_nonempty") cone_view(cert, c, out);
     return out;
   }
   if (kind == "goal_nonempty") {

@@ -7,12 +7,14 @@
 
 #include "cli/command.h"
 #include "cli/cone_svg.h"
+#include "cli/contact_forces.h"
 #include "cli/json_out.h"
 #include "cli/results.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "solvers/stability/strong_stability.h"
 #include "solvers/wrench_cone/cone_certificate.h"
 #include "solvers/wrench_cone/line_of_force.h"
 #include "solvers/wrench_cone/wrench_cone.h"
@@ -192,6 +194,40 @@ solvers::ModeString cone_mode(const geometry::PlanarScene& scene, const std::str
 
 namespace {
 
+/// The certificate of `cone --certificate` and, for a witness, the wrench g and the contact forces c of the
+/// touching fixels that its z applies (solvers::contact_forces), for the views of cli/contact_forces.h.
+struct ConeCertificateFile {
+  json file;  ///< solvers::cone_certificate, with the witness's "contacts" and "acceleration" before "scene"
+  bool witness = false;
+  std::vector<Eigen::Index> touching;
+  exact::Vec<Q> g, c;
+};
+
+ConeCertificateFile cone_certificate_file(const std::string& scene_text, const geometry::PlanarScene& scene,
+                                          const solvers::ModeString& mode, const solvers::ConeForm<Q>& form) {
+  ConeCertificateFile out;
+  const std::string text = solvers::cone_certificate(scene_text, scene, mode);
+  const json raw = json::parse(text);
+  out.witness = raw.at("kind") == "cone_nonempty";
+  if (!out.witness) {
+    out.file = raw;
+    return out;
+  }
+  const exact::JsonInput numbers = exact::JsonInput::parse(text, "certificate");
+  out.g = numbers.at("wrench").rational_vector(3);
+  solvers::touching_scene(scene, &out.touching);
+  out.c = solvers::contact_forces(form, out.touching, numbers.at("z").rational_vector());
+  const json view = witness_json(scene, out.touching, out.c, out.g);
+  for (auto it = raw.begin(); it != raw.end(); ++it) {
+    if (it.key() == "scene") {
+      out.file["contacts"] = view.at("contacts");
+      out.file["acceleration"] = view.at("acceleration");
+    }
+    out.file[it.key()] = it.value();
+  }
+  return out;
+}
+
 int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const solvers::ModeString& mode,
               solvers::Route route) {
   const solvers::WrenchCone<Q> c = solvers::wrench_cone<Q>(scene, mode, route);
@@ -201,8 +237,16 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
   if (!o.svg.empty()) {
     write_text_file(o.svg, cone_svg(scene, mode, c));
   }
+  ConeCertificateFile certificate;
+  if (!o.certificate.empty()) {
+    certificate = cone_certificate_file(exact::JsonInput::read_text(o.file), scene, mode, c.form);
+    write_text_file(o.certificate, certificate.file.dump(1) + "\n");
+  }
   if (o.common.json) {
-    std::cout << cone_json(scene, mode, c, o.route, o.common.arith).dump() << "\n";
+    json j = cone_json(scene, mode, c, o.route, o.common.arith);
+    if (!o.certificate.empty()) j["certificate"] = o.certificate;
+    if (certificate.witness) j["witness"] = witness_json(scene, certificate.touching, certificate.c, certificate.g);
+    std::cout << j.dump() << "\n";
     return 0;
   }
   std::cout << "contactcert cone: " << o.file << ", mode '" << mode.text() << "' (route " << o.route << ", exact)\n";
@@ -219,6 +263,8 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
   std::cout << ")\n";
   if (empty) {
     std::cout << "wrench cone: EMPTY (no external wrench is consistent with this mode)\n";
+    if (!o.certificate.empty())
+      std::cout << "certificate: " << o.certificate << " (a Motzkin vector: no wrench has the mode)\n";
     return 0;
   }
   std::cout << "wrench cone: non-empty, dimension " << f.dimension()
@@ -250,6 +296,9 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
       std::cout << "\n";
     }
   }
+  if (certificate.witness)
+    std::cout << "certificate: " << o.certificate << "\n"
+              << witness_text(scene, certificate.touching, certificate.c, certificate.g, "  ");
   if (!o.svg.empty()) std::cout << "picture: " << o.svg << "\n";
   return 0;
 }
@@ -280,11 +329,8 @@ int run_cone(const ConeOptions& o) {
   const geometry::PlanarScene scene = geometry::load_planar_scene(o.file);
   const solvers::ModeString mode = cone_mode(scene, o.file, o.mode, o.table2 == "printed");
   const solvers::Route route = o.route == "paper" ? solvers::Route::kPaper : solvers::Route::kProject;
-  if (!o.certificate.empty()) {
-    if (o.common.arith == "float")
-      throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
-    write_text_file(o.certificate, solvers::cone_certificate(exact::JsonInput::read_text(o.file), scene, mode));
-  }
+  if (!o.certificate.empty() && o.common.arith == "float")
+    throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
   // The verified path is the exact one here: the cone's combinatorics are decided in rationals.
   return o.common.arith == "float" ? run_float(o, scene, mode, route) : run_exact(o, scene, mode, route);
 }

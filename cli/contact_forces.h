@@ -1,6 +1,6 @@
 // Contact forces as a person reads them: each touching fixel's force as a world vector with its torque, and the
 // components c_n, c_t against the frame (n_i, t_i) stated beside them (solvers/stability/world_forces.h), for
-// the reports of `stability`, the certificates it writes and `check`'s view of them.
+// the reports of `stability` and `cone`, the certificates they write and `check`'s view of them.
 #pragma once
 
 #include <string>
@@ -26,5 +26,15 @@ json contacts_json(const geometry::PlanarScene& scene, const std::vector<Eigen::
 template <class T>
 std::string contacts_text(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
                           const exact::Vec<T>& c, const std::string& indent);
+
+/// A wrench cone witness as a person reads it: the wrench g, the workpiece's acceleration
+/// vdot = M^-1 (g + sum_i (f_i, torque_i)) (eq. 4 per unit mass, M = diag(1, 1, I/m)), I/m, and the world forces
+/// of the contact forces c of the fixels `touching`: {"wrench", "acceleration", "inertia_per_mass", "contacts"}.
+json witness_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                  const exact::Vec<exact::Q>& c, const exact::Vec<exact::Q>& g);
+
+/// The same as lines of text, each starting with `indent`.
+std::string witness_text(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                         const exact::Vec<exact::Q>& c, const exact::Vec<exact::Q>& g, const std::string& indent);
 
 }  // namespace contactcert::cli

@@ -15,6 +15,7 @@
 #include "cli/design_svg.h"
 #include "cli/json_out.h"
 #include "cli/progress_line.h"
+#include "cli/results.h"
 #include "exact/deadline.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
@@ -23,7 +24,6 @@
 #include "solvers/design/checkpoint.h"
 #include "solvers/design/distribute.h"
 #include "solvers/design/goal_certificate.h"
-#include "solvers/stability/stability_certificate.h"
 
 namespace contactcert::cli {
 namespace {
@@ -209,7 +209,7 @@ json report_placement(const DesignProblem& problem, const solvers::CandidateSymm
   for (std::size_t w = 0; w < ev.stability.size(); ++w) {
     const exact::Vec<Q> g = problem.wrenches.rows.row(static_cast<Eigen::Index>(w)).transpose();
     const std::string cert = stem + "_wrench_" + std::to_string(w + 1) + ".cert.json";
-    write_text_file(cert, solvers::stability_certificate(scene_text, g, ev.stability[w]));
+    write_text_file(cert, stability_certificate_file(scene_text, placement, g, ev.stability[w]));
     json v = {
         {"wrench", exact_json(g)}, {"verdict", solvers::verdict_name(ev.stability[w].verdict)}, {"certificate", cert}};
     if (w < ev.margins.size()) v["squared_margin"] = exact_json(ev.margins[w].squared_radius);

@@ -38,15 +38,18 @@ void HtmlReport::paragraph(const std::string& text) { body_ += "<p>" + html_esca
 void HtmlReport::preformatted(const std::string& text) { body_ += "<pre>" + html_escape(text) + "</pre>\n"; }
 
 void HtmlReport::table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
-  body_ += "<table><tr>";
+  // A number never breaks inside (a line may break after the '-' of "4.7e-17"): cells are nowrap unless they hold
+  // words (class "t": wrapped at spaces, left-aligned); a table wider than the page scrolls in its own box.
+  body_ += "<div class=\"tw\"><table><tr>";
   for (const auto& h : header) body_ += "<th>" + html_escape(h) + "</th>";
   body_ += "</tr>\n";
   for (const auto& r : rows) {
     body_ += "<tr>";
-    for (const auto& c : r) body_ += "<td>" + html_escape(c) + "</td>";
+    for (const auto& c : r)
+      body_ += (c.find(' ') == std::string::npos ? "<td>" : "<td class=\"t\">") + html_escape(c) + "</td>";
     body_ += "</tr>\n";
   }
-  body_ += "</table>\n";
+  body_ += "</table></div>\n";
 }
 
 void HtmlReport::figure(const std::string& svg, const std::string& caption) {
@@ -59,8 +62,10 @@ std::string HtmlReport::write(const std::string& dir) const {
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"/><title>" << html_escape(title_)
       << "</title>\n<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}"
-         "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:3px 8px;"
-         "font-family:monospace;text-align:right}th{background:#eee}pre{background:#f6f6f6;padding:.6em;"
+         ".tw{overflow-x:auto;max-width:100%}table{border-collapse:collapse;margin:1em 0}"
+         "td,th{border:1px solid #bbb;padding:3px 8px;font-family:monospace;text-align:right;white-space:nowrap}"
+         "td.t{white-space:normal;text-align:left;min-width:12em}th{background:#eee}"
+         "pre{background:#f6f6f6;padding:.6em;"
          "overflow-x:auto}figure{display:inline-block;margin:.5em;vertical-align:top}"
          "figcaption{font-size:90%;max-width:420px}</style></head><body>\n<h1>"
       << html_escape(title_) << "</h1>\n"

@@ -1,5 +1,6 @@
 #include "solvers/stability/table2_rows_check.h"
 
+#include <algorithm>
 #include <optional>
 #include <sstream>
 
@@ -425,6 +426,20 @@ std::string wrench_outside_violation(const CheckedScene& scene, const ConeColumn
   }
   if (!positive) return "y^T P g = 0 and y^T K is zero on every strict component";
   return "";
+}
+
+Vec<Q> cone_contact_forces(const ConeColumns& cols, const std::vector<std::size_t>& touching, const Vec<Q>& z) {
+  const auto k = static_cast<Eigen::Index>(touching.size());
+  Vec<Q> c = Vec<Q>::Zero(2 * k);
+  for (std::size_t j = 0; j < cols.z.size(); ++j) {
+    const ConeColumns::Z& f = cols.z[j];
+    const auto at = std::find(touching.begin(), touching.end(), f.fixel);
+    if (f.acceleration || at == touching.end()) continue;
+    const auto i = static_cast<Eigen::Index>(at - touching.begin());
+    c(i) += z(static_cast<Eigen::Index>(j));
+    c(k + i) += f.t_per_n * z(static_cast<Eigen::Index>(j));
+  }
+  return c;
 }
 
 std::string cone_witness_violation(const CheckedScene& scene, const ConeColumns& cols, const Vec<Q>& z,

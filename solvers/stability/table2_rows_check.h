@@ -125,6 +125,11 @@ std::string cone_empty_violation(const ConeColumns& cols, const Vec<Q>& y);
 std::string wrench_outside_violation(const CheckedScene& scene, const ConeColumns& cols, const Vec<Q>& y,
                                      const Vec<Q>& g);
 
+/// The contact forces c = (c_1n..c_kn, c_1t..c_kt) of the fixels `touching` (indices into the scene's fixels,
+/// in order) that z applies, against the frames (w_in, w_it) as scaled here: a force z_j of fixel i is
+/// z_j (w_in + t_per_n w_it), so it adds z_j to c_in and t_per_n z_j to c_it.
+Vec<Q> cone_contact_forces(const ConeColumns& cols, const std::vector<std::size_t>& touching, const Vec<Q>& z);
+
 /// Whether (z, g) solves K z = P g with z's signs, for the certificates' scale of M^-1: diag(p, p, q) for I/m =
 /// p/q in lowest terms (a positive multiple of M^-1). Returns "" if it does, else why not.
 std::string cone_witness_violation(const CheckedScene& scene, const ConeColumns& cols, const Vec<Q>& z,

@@ -66,7 +66,7 @@ ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
   if (empty)
     c.expect_keys({"kind", "problem_sha256", "mode", "motzkin", "scene"});
   else
-    c.expect_keys({"kind", "problem_sha256", "mode", "wrench", "z", "z_names", "scene"});
+    c.expect_keys({"kind", "problem_sha256", "mode", "wrench", "z", "z_names", "contacts", "acceleration", "scene"});
   const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
   if (c.at("problem_sha256").string() != embedded.canonical_sha256())
     return {false, "problem_sha256 is not the digest of the embedded scene"};
@@ -93,7 +93,17 @@ ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
   for (std::size_t j = 0; same_names && j < names.size(); ++j) same_names = names[j].string() == cols.z[j].name;
   if (!same_names) return {false, "z_names differ from the mode's components"};
   if (const std::string why = t2::cone_witness_violation(checked, cols, z, g); !why.empty()) return {false, why};
-  return {true, "the wrench has the mode with the given forces and accelerations (K z = P g, signs of Table 2)"};
+  ConeCertificateCheck out{true,
+                           "the wrench has the mode with the given forces and accelerations (K z = P g, signs "
+                           "of Table 2)"};
+  std::vector<std::size_t> touching_fixels;
+  for (std::size_t i = 0; i < touching.size(); ++i)
+    if (touching[i]) {
+      touching_fixels.push_back(i);
+      out.touching.push_back(static_cast<Eigen::Index>(i));
+    }
+  out.forces = t2::cone_contact_forces(cols, touching_fixels, z);
+  return out;
 }
 
 }  // namespace contactcert::solvers

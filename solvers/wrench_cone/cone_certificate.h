@@ -3,7 +3,8 @@
 // (Balkcom-Trinkle eqs. 13-17). Both kinds embed the scene (its text under "scene", its digest under
 // "problem_sha256") and the "mode":
 //   "cone_nonempty": a witness, "wrench" g and "z" (forces and accelerations, named in "z_names") with
-//     K z = P g, z >= 0 and z_j > 0 on the strict components;
+//     K z = P g, z >= 0 and z_j > 0 on the strict components (a readable view of the witness, "contacts" and
+//     "acceleration", may follow; cli/cone.cpp writes it and `check` compares it with its own);
 //   "cone_empty": a Motzkin vector y with y^T K >= 0, y^T P = 0 and (y^T K)_j > 0 on some strict component j
 //     (if some (z, g) solved the system, 0 = y^T P g = y^T K z > 0).
 // The checker rebuilds K, P and the strict components from the embedded scene and mode with its own code
@@ -11,8 +12,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "exact/json_input.h"
+#include "exact/number.h"
 #include "geometry/planar_scene.h"
 #include "solvers/wrench_cone/mode.h"
 
@@ -27,6 +30,8 @@ bool is_cone_certificate_kind(const std::string& kind);
 struct ConeCertificateCheck {
   bool valid = false;
   std::string reason;
+  std::vector<Eigen::Index> touching{};  ///< a valid "cone_nonempty": the touching fixels (scene indices, in order)
+  exact::Vec<exact::Q> forces{};         ///< and the contact forces (c_1n..c_kn, c_1t..c_kt) its z applies to them
 };
 
 /// Verifies a "cone_empty" or "cone_nonempty" certificate exactly; a malformed one throws InputError.

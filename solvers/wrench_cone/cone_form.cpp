@@ -154,10 +154,13 @@ ConeForm<T> cone_form(const geometry::PlanarScene& scene, const ContactModel<T>&
       out.strict.push_back(y.sign[static_cast<std::size_t>(col.j)] == SignConstraint::kPositive || col.sign < 0);
       out.acceleration.push_back(true);
       out.names.push_back(std::string(col.sign < 0 ? "-a" : "a") + fixel_name(col.i) + (col.j < y.n ? "n" : "t"));
+      out.fixel.push_back(col.i);
+      out.t_per_n.push_back(Q(0));
       continue;
     }
     // K(:, c) = -A(:, i) - coef A(:, n + i) on the kept rows.
-    const T coef = from_exact<T>(Q(col.coef_sign * y.mu[static_cast<std::size_t>(col.i)]));
+    const Q t_per_n(col.coef_sign * y.mu[static_cast<std::size_t>(col.i)]);
+    const T coef = from_exact<T>(t_per_n);
     for (Eigen::Index r = 0; r < m; ++r) {
       const Eigen::Index row = rows[static_cast<std::size_t>(r)];
       T& k = out.K(r, ec);
@@ -169,8 +172,22 @@ ConeForm<T> cone_form(const geometry::PlanarScene& scene, const ContactModel<T>&
     std::string name = std::string("c") + fixel_name(col.i);
     name += col.coef_sign < 0 ? "[n-mu t]" : col.coef_sign > 0 ? "[n+mu t]" : "n";
     out.names.push_back(name);
+    out.fixel.push_back(col.i);
+    out.t_per_n.push_back(t_per_n);
   }
   return out;
+}
+
+Vec<Q> contact_forces(const ConeForm<Q>& form, const std::vector<Eigen::Index>& touching, const Vec<Q>& z) {
+  const auto k = static_cast<Eigen::Index>(touching.size());
+  Vec<Q> c = Vec<Q>::Zero(2 * k);
+  for (Eigen::Index i = 0; i < k; ++i)
+    for (std::size_t j = 0; j < form.fixel.size(); ++j) {
+      if (form.acceleration[j] || form.fixel[j] != touching[static_cast<std::size_t>(i)]) continue;
+      c(i) += z(static_cast<Eigen::Index>(j));
+      c(k + i) += form.t_per_n[j] * z(static_cast<Eigen::Index>(j));
+    }
+  return c;
 }
 
 template <class R, class T>

@@ -25,12 +25,19 @@ struct ModeMatrices {
 /// K z = P g, z >= 0 with z_i > 0 where strict (eqs. 13-17).
 template <class T>
 struct ConeForm {
-  Mat<T> K;                        ///< K = E C N R S V (eq. 15)
-  Mat<T> P;                        ///< P = E B (eq. 17)
-  std::vector<bool> strict;        ///< per z: the strict rows of Table 2 (a, l, r, and s when touching)
-  std::vector<bool> acceleration;  ///< per z: an acceleration (true) or a contact force (false)
-  std::vector<std::string> names;  ///< per z, e.g. "-a2n", "c1n-", "c1n+" (1-based fixel numbers)
+  Mat<T> K;                         ///< K = E C N R S V (eq. 15)
+  Mat<T> P;                         ///< P = E B (eq. 17)
+  std::vector<bool> strict;         ///< per z: the strict rows of Table 2 (a, l, r, and s when touching)
+  std::vector<bool> acceleration;   ///< per z: an acceleration (true) or a contact force (false)
+  std::vector<std::string> names;   ///< per z, e.g. "-a1n", "c0[n-mu t]", "c0[n+mu t]" (fixels numbered from 0)
+  std::vector<Eigen::Index> fixel;  ///< per z: the fixel whose acceleration or contact force it is
+  std::vector<Q> t_per_n;           ///< per force z: its force is z (n_i + t_per_n t_i) (R and S); 0 otherwise
 };
+
+/// The contact forces c = (c_1n..c_kn, c_1t..c_kt) in the model's frames of the fixels `touching` (scene
+/// indices, in order) that a solution z of K z = P g applies: each force component z_j of fixel i adds z_j to
+/// c_in and t_per_n_j z_j to c_it (eq. 15 after R and S); the other fixels carry none.
+Vec<Q> contact_forces(const ConeForm<Q>& form, const std::vector<Eigen::Index>& touching, const Vec<Q>& z);
 
 /// E, N, R, S, V of sections 5.1-5.5 for a valid mode of the scene (validate with parse_mode first).
 template <class T>
