@@ -14,10 +14,10 @@ namespace {
 
 using namespace bench_report;
 
-/// One point of a plot: time (s), error against exact, an optional label drawn beside it.
+/// One point of a plot: time (s), error against exact, and the shape of its marker (marker_svg).
 struct PlotPoint {
   double seconds = 0, error = 0;
-  std::string label;
+  int marker = 0;
 };
 struct PlotSeries {
   std::string name;
@@ -30,19 +30,19 @@ struct PlotSeries {
 /// series; in a row, a point that would cover an earlier one (closer than a dot) moves to another of three lanes,
 /// and the row ends with its count of points, so coincident answers stay visible and countable.
 struct PlotFrame {
-  static constexpr double W = 680, left = 86, right = 130, top = 24, row = 13, gap = 14, log_height = 300;
+  static constexpr double W = 680, left = 86, right = 130, top = 24, row = 14, pad = 4, gap = 14, log_height = 300;
   static constexpr double y_floor = -18;  ///< log10 of the smallest error on the log scale
   std::size_t rows = 1;                   ///< rows per strip: one per series
   double x0 = 0, x1 = 1;                  ///< log10 of the time range
-  double strip() const { return rows * row; }
+  double strip() const { return rows * row + 2 * pad; }
   double log_top() const { return top + strip() + gap; }
   double zero_top() const { return log_top() + log_height + gap; }
   double height() const { return zero_top() + strip() + 46; }
   double X(double t) const { return left + (std::max(std::log10(t), x0) - x0) / (x1 - x0) * (W - left - right); }
   /// The centre line of a point of series k with error e (before its lane offset).
   double Y(double e, std::size_t k) const {
-    if (e >= 1) return top + (k + 0.5) * row;
-    if (e <= 0) return zero_top() + (k + 0.5) * row;
+    if (e >= 1) return top + pad + (k + 0.5) * row;
+    if (e <= 0) return zero_top() + pad + (k + 0.5) * row;
     return log_top() + (-std::max(std::log10(e), y_floor)) / -y_floor * log_height;
   }
 };
@@ -54,7 +54,7 @@ void draw_axes(std::ostringstream& s, const PlotFrame& f, const std::string& x_l
     s << "<line x1=\"" << f.X(std::pow(10, d)) << "\" y1=\"" << f.top << "\" x2=\"" << f.X(std::pow(10, d))
       << "\" y2=\"" << f.zero_top() + f.strip() << "\" stroke=\"#ddd\"/><text x=\"" << f.X(std::pow(10, d)) << "\" y=\""
       << f.zero_top() + f.strip() + 15 << "\" text-anchor=\"middle\">1e" << d << "</text>\n";
-  for (double d = 0; d >= f.y_floor; d -= 3)
+  for (double d = -3; d >= f.y_floor; d -= 3)  // 1 and above are the top strip
     s << "<line x1=\"" << f.left << "\" y1=\"" << f.Y(std::pow(10, d), 0) << "\" x2=\"" << plot_right << "\" y2=\""
       << f.Y(std::pow(10, d), 0) << "\" stroke=\"#ddd\"/><text x=\"" << f.left - 5 << "\" y=\""
       << f.Y(std::pow(10, d), 0) + 4 << "\" text-anchor=\"end\">1e" << int(d) << "</text>\n";
@@ -63,6 +63,7 @@ void draw_axes(std::ostringstream& s, const PlotFrame& f, const std::string& x_l
     s << "<rect x=\"" << f.left << "\" y=\"" << y << "\" width=\"" << plot_right - f.left << "\" height=\"" << f.strip()
       << "\" fill=\"#f4f4f4\" stroke=\"#ccc\"/><text x=\"" << f.left - 5 << "\" y=\"" << y + f.strip() / 2 + 4
       << "\" text-anchor=\"end\">" << name << "</text>\n";
+  s << "<text x=\"" << plot_right + 6 << "\" y=\"" << f.top - 6 << "\" font-size=\"11\">count</text>\n";
   s << "<text x=\"" << (f.left + plot_right) / 2 << "\" y=\"" << H - 12 << "\" text-anchor=\"middle\">"
     << html_escape(x_label) << "</text>\n<text transform=\"translate(14," << (f.log_top() + f.log_height / 2)
     << ") rotate(-90)\" text-anchor=\"middle\">error against exact</text>\n";
@@ -97,8 +98,51 @@ std::vector<std::pair<double, double>> place(const PlotFrame& f, const PlotSerie
   return at;
 }
 
-/// Time (x) against error (y), one colour per series (PlotFrame).
-std::string svg_plot(const std::vector<PlotSeries>& series, const std::string& x_label) {
+/// A marker of shape `shape` (0 circle, 1 square, 2 diamond, 3 triangle up, 4 triangle down, 5 plus, 6 cross,
+/// 7 bar; then again) centred at (x, y).
+std::string marker_svg(int shape, double x, double y, const char* colour, double opacity) {
+  std::ostringstream s;
+  const std::string paint = std::string("fill=\"") + colour + "\" fill-opacity=\"" + std::to_string(opacity) + "\"";
+  const std::string line = std::string("fill=\"none\" stroke=\"") + colour + "\" stroke-width=\"1.6\"";
+  const double r = 3.2;
+  switch (shape % 8) {
+    case 0:
+      s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"" << r << "\" " << paint << "/>";
+      break;
+    case 1:
+      s << "<rect x=\"" << x - r << "\" y=\"" << y - r << "\" width=\"" << 2 * r << "\" height=\"" << 2 * r << "\" "
+        << paint << "/>";
+      break;
+    case 2:
+      s << "<path d=\"M" << x << " " << y - 1.3 * r << "L" << x + 1.3 * r << " " << y << "L" << x << " " << y + 1.3 * r
+        << "L" << x - 1.3 * r << " " << y << "Z\" " << paint << "/>";
+      break;
+    case 3:
+    case 4: {
+      const double d = shape % 8 == 3 ? 1 : -1;
+      s << "<path d=\"M" << x << " " << y - d * 1.3 * r << "L" << x + 1.2 * r << " " << y + d * r << "L" << x - 1.2 * r
+        << " " << y + d * r << "Z\" " << paint << "/>";
+      break;
+    }
+    case 5:
+      s << "<path d=\"M" << x - r << " " << y << "H" << x + r << "M" << x << " " << y - r << "V" << y + r << "\" "
+        << line << "/>";
+      break;
+    case 6:
+      s << "<path d=\"M" << x - r << " " << y - r << "L" << x + r << " " << y + r << "M" << x - r << " " << y + r << "L"
+        << x + r << " " << y - r << "\" " << line << "/>";
+      break;
+    default:
+      s << "<rect x=\"" << x - 1.5 * r << "\" y=\"" << y - 0.6 * r << "\" width=\"" << 3 * r << "\" height=\""
+        << 1.2 * r << "\" " << paint << "/>";
+  }
+  return s.str();
+}
+
+/// Time (x) against error (y), one colour per series (PlotFrame); `markers` names the marker shapes the points
+/// use (a legend below the series'), or is empty when every point is a circle.
+std::string svg_plot(const std::vector<PlotSeries>& series, const std::vector<std::string>& markers,
+                     const std::string& x_label) {
   const char* colours[] = {"#d73027", "#4575b4", "#1a9850", "#984ea3", "#ff7f00", "#a65628", "#f781bf", "#666666"};
   PlotFrame f;
   f.rows = std::max<std::size_t>(1, series.size());
@@ -129,11 +173,7 @@ std::string svg_plot(const std::vector<PlotSeries>& series, const std::string& x
       const PlotPoint& p = ser.points[i];
       wrong += p.error >= 1;
       zero += p.error <= 0;
-      s << "<circle cx=\"" << at[i].first << "\" cy=\"" << at[i].second << "\" r=\"2.5\" fill=\"" << c
-        << "\" fill-opacity=\"0.6\"/>\n";
-      if (!p.label.empty())
-        s << "<text x=\"" << at[i].first + 4 << "\" y=\"" << at[i].second - 4 << "\" font-size=\"11\" fill=\"" << c
-          << "\" paint-order=\"stroke\" stroke=\"white\" stroke-width=\"3\">" << html_escape(p.label) << "</text>\n";
+      s << marker_svg(p.marker, at[i].first, at[i].second, c, 0.6) << "\n";
     }
     // The count of each strip row, right of the plot.
     for (const auto& [n, e] : {std::pair{wrong, 1.0}, std::pair{zero, 0.0}})
@@ -142,6 +182,11 @@ std::string svg_plot(const std::vector<PlotSeries>& series, const std::string& x
     s << "<circle cx=\"" << f.W - f.right + 15 << "\" cy=\"" << f.log_top() + 10 + 18 * k << "\" r=\"4\" fill=\"" << c
       << "\"/><text x=\"" << f.W - f.right + 24 << "\" y=\"" << f.log_top() + 14 + 18 * k << "\">"
       << html_escape(ser.name) << "</text>\n";
+  }
+  for (std::size_t m = 0; m < markers.size(); ++m) {
+    const double y = f.log_top() + 18 * (series.size() + 1.5 + m);
+    s << marker_svg(static_cast<int>(m), f.W - f.right + 15, y - 4, "#555", 0.9) << "<text x=\"" << f.W - f.right + 24
+      << "\" y=\"" << y << "\">" << html_escape(markers[m]) << "</text>\n";
   }
   s << "</svg>\n";
   return s.str();
@@ -154,10 +199,10 @@ std::string bench_svg(const BenchRun& run) {
   for (std::size_t k = 0; k < run.rungs.size(); ++k) {
     PlotSeries ser{run.rungs[k].name, {}, false};
     for (const auto& r : run.instances)
-      ser.points.push_back({r.rungs[k].median_seconds, bench::worst_error(r.rungs[k].errors), {}});
+      ser.points.push_back({r.rungs[k].median_seconds, bench::worst_error(r.rungs[k].errors), 0});
     series.push_back(std::move(ser));
   }
-  return svg_plot(series, "time per instance (s, median of repeats)");
+  return svg_plot(series, {}, "time per instance (s, median of repeats)");
 }
 
 std::string ladder_svg(const BenchRun& run) {
@@ -168,11 +213,13 @@ std::string ladder_svg(const BenchRun& run) {
       const LadderCell c = ladder_cell(run, f, k);
       // A wrong or undecided answer anywhere in the family puts its rung on the "1 (wrong)" line.
       const double e = c.wrong + c.undecided > 0 ? 1.0 : (std::isnan(c.worst) ? 0.0 : c.worst);
-      ser.points.push_back({c.median_seconds, e, run.rungs[k].name});
+      ser.points.push_back({c.median_seconds, e, static_cast<int>(k)});
     }
     series.push_back(std::move(ser));
   }
-  return svg_plot(series, "median time per instance of the family (s)");
+  std::vector<std::string> rungs;
+  for (const auto& r : run.rungs) rungs.push_back(r.name);
+  return svg_plot(series, rungs, "median time per instance of the family (s)");
 }
 
 }  // namespace contactcert::cli
