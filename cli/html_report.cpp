@@ -48,7 +48,7 @@ bool numeric(const std::string& s) {
 /// The text with a line break opportunity after each '/' (a header "verified/float" may wrap there).
 std::string wrappable(const std::string& s) {
   std::string out;
-  for (char c : s) out += c == '/' ? std::string("/<wbr>") : std::string(1, c);
+  for (char c : s) out += c == '/' ? std::string("/<wbr/>") : std::string(1, c);
   return out;
 }
 

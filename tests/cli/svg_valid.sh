@@ -2,7 +2,8 @@
 # Every SVG contactcert writes is well-formed XML (xmllint --noout): the region and finger pictures of
 # `stability`, the cone pictures, `insert --svg`, the demo report (index.html is well-formed XML with its inline
 # SVG) and, when BENCH=1, the bench plots. Also: the labels of a cone picture stay on its canvas and do not sit
-# on top of each other, the demo report plots Figure 11, and no bench table is wider than 12 columns.
+# on top of each other, the demo report plots Figure 11, no bench table is wider than 12 columns, no number in a
+# bench table may wrap, and the time-vs-error plot has its strip for errors of exactly 0.
 # Usage: svg_valid.sh CONTACTCERT REPO_DIR WORK_DIR [BENCH]
 set -u
 cc=$1 repo=$2 work=$3 bench=${4:-0}
@@ -61,9 +62,17 @@ grep -q 'Figure 11: pushes that seat the part' "$work/demo/index.html" || { echo
 if [ "$bench" = 1 ]; then
   run bench --suite paper --quick --out "$work/bench"
   for f in "$work"/bench/*.svg "$work/bench/index.html"; do lint "$f"; done
-  widest=$(sed 's/<tr>/\n<tr>/g' "$work/bench/index.html" | awk '/^<tr>/ { n = gsub(/<t[hd]>/, "&"); if (n > m) m = n } END { print m + 0 }')
+  widest=$(sed 's/<tr>/\n<tr>/g' "$work/bench/index.html" | awk '/^<tr>/ { n = gsub(/<t[hd][ >]/, "&"); if (n > m) m = n } END { print m + 0 }')
   echo "bench: widest table has $widest columns"
   [ "$widest" -le 12 ] || failures=$((failures + 1))
+  # A number never breaks inside its cell ("4.7e-17"): no cell holding one is a wrapping text cell (class "t").
+  if grep -qE '<td class="t">-?[0-9.]+e[-+][0-9]+x?</td>' "$work/bench/index.html" ||
+    ! grep -q 'td,th{[^}]*white-space:nowrap' "$work/bench/index.html"; then
+    echo "WRAPPABLE NUMBER CELL in the bench report"
+    failures=$((failures + 1))
+  fi
+  # Errors of exactly 0 have their own strip in the time-vs-error plot.
+  grep -q '>exactly 0<' "$work/bench/time_vs_error.svg" || { echo "NO ERROR-0 STRIP"; failures=$((failures + 1)); }
 fi
 echo "svg: $failures failures"
 exit $((failures > 0))
