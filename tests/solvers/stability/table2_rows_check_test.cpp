@@ -157,6 +157,15 @@ TEST(Table2RowsCheck, EqualTheSolversRowsOnRandomScenes) {
       for (const auto& z : cols.z) names.push_back(z.name), strict.push_back(z.strict);
       EXPECT_EQ(names, f.names) << mode.text();
       EXPECT_EQ(strict, f.strict) << mode.text();
+      // The contact forces a z applies (the witness view of cone_nonempty certificates): the solver's columns
+      // (fixel, t_per_n) and the checker's give the same c, on a z with distinct entries.
+      Vec<Q> z(static_cast<Eigen::Index>(cols.z.size()));
+      for (Eigen::Index j = 0; j < z.size(); ++j) z(j) = Q(static_cast<long>(j) + 1) / Q(7);
+      std::vector<Eigen::Index> on;
+      std::vector<std::size_t> on_checker;
+      for (std::size_t i = 0; i < n; ++i)
+        if (touching[i]) on.push_back(static_cast<Eigen::Index>(i)), on_checker.push_back(i);
+      EXPECT_TRUE(contact_forces(f, on, z) == t2::cone_contact_forces(cols, on_checker, z)) << mode.text();
       ++cones;
     }
   }
