@@ -219,7 +219,7 @@ StandardPolyhedron<Q> build_Y(const QuasistaticProblem& p) {
 
 UcpInstance<Q> build_ucp(const QuasistaticProblem& p) { return {build_X(p), build_Y(p)}; }
 
-std::string to_json_text(const UcpProblem& u) {
+nlohmann::ordered_json to_json(const UcpProblem& u) {
   nlohmann::ordered_json j;
   if (u.quasistatic) {
     const QuasistaticProblem& p = *u.quasistatic;
@@ -247,8 +247,10 @@ std::string to_json_text(const UcpProblem& u) {
     j["Y"] = {{"A", to_json(u.ucp.Y.A)}, {"b", to_json(u.ucp.Y.b)}};
   }
   if (!u.source.empty()) j["source"] = u.source;
-  return j.dump(1) + "\n";
+  return j;
 }
+
+std::string to_json_text(const UcpProblem& u) { return to_json(u).dump(1) + "\n"; }
 
 template <class T>
 UcpInstance<T> convert(const UcpInstance<Q>& u) {
