@@ -1,10 +1,12 @@
-#include "cli/gmp_memory.h"
+#include "cli/memory.h"
 
 #include <gmp.h>
+#include <malloc.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <new>
 
 namespace contactcert::cli {
@@ -68,5 +70,10 @@ void* reallocate(void* block, std::size_t old_n, std::size_t n) {
 }  // namespace
 
 void use_pooled_gmp_memory() { mp_set_memory_functions(allocate, reallocate, release); }
+
+void keep_heap_until_exit() {
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
+}
 
 }  // namespace contactcert::cli
