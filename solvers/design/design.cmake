@@ -16,7 +16,7 @@ if(CONTACTCERT_MPI AND MPI_CXX_FOUND)
   target_link_libraries(contactcert_mpi PRIVATE MPI::MPI_CXX)
   set_target_properties(contactcert_mpi PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/cli)
   set_source_files_properties(design/distribute_serial.cpp PROPERTIES COMPILE_DEFINITIONS
-    "CONTACTCERT_HAVE_MPI;CONTACTCERT_MPI_MODULE=\"${CMAKE_INSTALL_FULL_LIBDIR}/contactcert/libcontactcert_mpi.so\"")
+    "CONTACTCERT_HAVE_MPI;CONTACTCERT_MPI_MODULE=\"${CMAKE_INSTALL_LIBDIR}/contactcert/libcontactcert_mpi.so\"")
   target_link_libraries(contactcert_solvers PRIVATE ${CMAKE_DL_LIBS})
   set(CONTACTCERT_HAVE_MPI ON CACHE INTERNAL "MPI found for contactcert design")
 else()

@@ -42,15 +42,18 @@ bool launched_by_mpirun() {
   return false;
 }
 
-/// The MPI distributor of the module beside the executable, else of the installed one. MPI's libraries are loaded
-/// only here: linked into the program they cost every command ~10 ms of start-up. RTLD_GLOBAL: MPI's own plugins
+/// The MPI distributor of the module beside the executable (build tree), else of the one installed under the
+/// executable's prefix (PREFIX/bin/contactcert, PREFIX/LIBDIR/contactcert/libcontactcert_mpi.so). MPI's libraries are
+/// loaded only here: linked into the program they cost every command ~10 ms of start-up. RTLD_GLOBAL: MPI's own plugins
 /// resolve their symbols against the MPI library.
 std::unique_ptr<Distributor> mpi_distributor() {
   std::vector<std::string> places;
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) places.push_back((exe.parent_path() / "libcontactcert_mpi.so").string());
-  places.emplace_back(CONTACTCERT_MPI_MODULE);
+  if (!ec) {
+    places.push_back((exe.parent_path() / "libcontactcert_mpi.so").string());
+    places.push_back((exe.parent_path().parent_path() / CONTACTCERT_MPI_MODULE).string());
+  }
   std::string why;
   for (const std::string& path : places) {
     if (void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL)) {
