@@ -3,14 +3,12 @@
 // written, an INVALID certificate), 3 budget exceeded (also: out of memory, a float run that cannot decide).
 //
 // Out of memory, in GMP as elsewhere, is exit 3 "out of memory": GMP allocates through functions that throw
-// std::bad_alloc (its default ones abort).
+// std::bad_alloc (its default ones abort; cli/memory.h).
 //
 // --time-limit: commands with a search loop (ucp) test the deadline between units of work and end with
 // `unknown`, exit 3 and what they covered. As a backstop for every command, a watchdog thread ends the
 // process with exit 3 shortly after the limit (a 5% grace, at least one second, lets the loops report first).
 // Every subcommand takes the option: those that do not register it themselves get it here.
-#include <gmp.h>
-
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -24,6 +22,7 @@
 #include <thread>
 
 #include "cli/command.h"
+#include "cli/memory.h"
 #include "cli/option_checks.h"
 #include "exact/input_error.h"
 
@@ -33,20 +32,6 @@
 
 namespace contactcert::cli {
 namespace {
-
-void* gmp_allocate(std::size_t n) {
-  void* p = std::malloc(n);
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-
-void* gmp_reallocate(void* p, std::size_t, std::size_t n) {
-  void* q = std::realloc(p, n);
-  if (q == nullptr) throw std::bad_alloc();
-  return q;
-}
-
-void gmp_free(void* p, std::size_t) { std::free(p); }
 
 /// The subcommand ran with --arith float.
 bool float_arith(const CLI::App& app) {
@@ -76,8 +61,8 @@ void start_watchdog(const std::string& command, double limit) {
   const double grace = std::max(1.0, 0.05 * limit);
   std::thread([command, limit, grace] {
     std::this_thread::sleep_for(std::chrono::duration<double>(limit + grace));
-    std::fprintf(stderr, "\ncontactcert: %s: time limit of %g s reached before an answer (stopped)\n",
-                 command.c_str(), limit);
+    std::fprintf(stderr, "\ncontactcert: %s: time limit of %g s reached before an answer (stopped)\n", command.c_str(),
+                 limit);
     std::_Exit(3);
   }).detach();
 }
@@ -88,13 +73,13 @@ void start_watchdog(const std::string& command, double limit) {
 
 int main(int argc, char** argv) {
   using namespace contactcert;
-  mp_set_memory_functions(cli::gmp_allocate, cli::gmp_reallocate, cli::gmp_free);
-  CLI::App app{
-      "contactcert " CONTACTCERT_VERSION
-      ": exact answers for planar rigid bodies in frictional contact.\n"
-      "Quasistatic contact problems (Pang, Trinkle, Lo 1994) solved or proven jammed; wrench cones, strong\n"
-      "stability and sensorless insertion (Balkcom, Trinkle 2002) computed in rational arithmetic.",
-      "contactcert"};
+  cli::keep_heap_until_exit();
+  cli::use_pooled_gmp_memory();
+  CLI::App app{"contactcert " CONTACTCERT_VERSION
+               ": exact answers for planar rigid bodies in frictional contact.\n"
+               "Quasistatic contact problems (Pang, Trinkle, Lo 1994) solved or proven jammed; wrench cones, strong\n"
+               "stability and sensorless insertion (Balkcom, Trinkle 2002) computed in rational arithmetic.",
+               "contactcert"};
   app.set_version_flag("--version", "contactcert " CONTACTCERT_VERSION);
   app.require_subcommand(1);
   cli::Action action;

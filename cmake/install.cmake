@@ -20,4 +20,7 @@ install(FILES ${PROJECT_BINARY_DIR}/contactcertConfig.cmake ${PROJECT_BINARY_DIR
         DESTINATION ${CONTACTCERT_CMAKE_DIR})
 
 install(TARGETS contactcert RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+if(TARGET contactcert_mpi)  # design's MPI distribution, loaded under mpirun
+  install(TARGETS contactcert_mpi LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/contactcert)
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes/ DESTINATION ${CMAKE_INSTALL_DATADIR}/contactcert/scenes)

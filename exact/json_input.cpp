@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "exact/rational_text.h"
 #include "exact/sha256.h"
@@ -178,8 +179,7 @@ class LiteralNumberBuilder {
     return true;
   }
   bool open(json v) {
-    if (stack_.size() >= kMaxJsonDepth)
-      return fail("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    if (stack_.size() >= kMaxJsonDepth) return fail("nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
     segments_.push_back(next_segment());
     stack_.push_back(place(std::move(v)));
     return true;
@@ -201,12 +201,16 @@ class LiteralNumberBuilder {
   std::size_t error_byte_ = 0;
 };
 
-bool is_number_text(const json& j) {
-  return j.is_string() && !j.get_ref<const std::string&>().empty() &&
-         j.get_ref<const std::string&>().front() == kNumberTag;
+template <class J>
+bool is_number_text(const J& j) {
+  return j.is_string() && !j.template get_ref<const std::string&>().empty() &&
+         j.template get_ref<const std::string&>().front() == kNumberTag;
 }
 
-json canonical(const json& j) {
+/// The canonical form (JsonInput::canonical_text) of a parsed value or of one built in memory (J = ordered_json),
+/// whose integers are JSON numbers where a parsed file holds their text.
+template <class J>
+json canonical(const J& j) {
   if (j.is_object()) {
     json out = json::object();
     for (auto it = j.begin(); it != j.end(); ++it) {
@@ -218,17 +222,27 @@ json canonical(const json& j) {
   }
   if (j.is_array()) {
     json out = json::array();
-    for (const json& e : j) out.push_back(canonical(e));
+    for (const auto& e : j) out.push_back(canonical(e));
     return out;
   }
-  if (!j.is_string()) return j;
-  std::string s = j.get<std::string>();
-  if (is_number_text(j)) s.erase(0, 1);
-  try {
-    return to_string(parse_rational(s));
-  } catch (const NumberSyntaxError&) {
-    return s;
-  }
+  if (j.is_number_unsigned()) return std::to_string(j.template get<std::uint64_t>());
+  if (j.is_number_integer()) return std::to_string(j.template get<std::int64_t>());
+  if (j.is_number_float()) throw std::logic_error("canonical text: a binary float has no exact text");
+  if (j.is_boolean()) return j.template get<bool>();
+  if (!j.is_string()) return nullptr;
+  std::string_view s = j.template get_ref<const std::string&>();
+  if (is_number_text(j)) s.remove_prefix(1);
+  Q q;
+  if (parse_rational_into(s, q)) return to_string(q);
+  return std::string(s);
+}
+
+/// The exact number a node holds (a number token or a numeric string) into out; false if it holds none.
+bool rational_of(const json& node, Q& out) {
+  if (!node.is_string()) return false;
+  std::string_view s = node.get_ref<const std::string&>();
+  if (is_number_text(node)) s.remove_prefix(1);
+  return parse_rational_into(s, out);
 }
 
 }  // namespace
@@ -236,6 +250,8 @@ json canonical(const json& j) {
 std::string JsonInput::canonical_text() const { return canonical(*node_).dump(); }
 
 std::string JsonInput::canonical_sha256() const { return sha256_hex(canonical_text()); }
+
+std::string canonical_sha256(const nlohmann::ordered_json& value) { return sha256_hex(canonical(value).dump()); }
 
 JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   if (text.size() > kMaxInputBytes) throw InputError(file, "", too_large_text());
@@ -247,8 +263,7 @@ JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   // The parser takes a NUL byte for the end of the input: report it unless an error comes before it.
   if (const std::size_t nul = text.find('\0'); nul != std::string::npos && (ok || builder.error_byte() > nul))
     throw InputError(file, "", "a NUL byte at byte " + std::to_string(nul) + " (JSON text has none)");
-  if (!ok)
-    throw InputError(file, builder.error_path(), builder.error().empty() ? "malformed JSON" : builder.error());
+  if (!ok) throw InputError(file, builder.error_path(), builder.error().empty() ? "malformed JSON" : builder.error());
   return JsonInput(root, root.get(), f, "$");
 }
 
@@ -264,12 +279,14 @@ std::string JsonInput::read_text(const std::string& path) {
     if (!file) throw InputError(path, "", "cannot open the file for reading");
   }
   std::istream& in = path == "-" ? std::cin : file;
-  // Chunks up to one byte past the limit: an endless source (/dev/zero) stops there.
+  // Straight into the text, in chunks doubling from 64 KiB (no buffer larger than the file is touched), up to one
+  // byte past the limit: an endless source (/dev/zero) stops there.
   std::string text;
-  std::vector<char> chunk(1 << 20);
-  while (in && text.size() <= kMaxInputBytes) {
-    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+  for (std::size_t chunk = std::size_t{1} << 16; in && text.size() <= kMaxInputBytes; chunk *= 2) {
+    const std::size_t had = text.size(), want = std::min(chunk, kMaxInputBytes + 1 - had);
+    text.resize(had + want);
+    in.read(text.data() + had, static_cast<std::streamsize>(want));
+    text.resize(had + static_cast<std::size_t>(in.gcount()));
   }
   if (text.size() > kMaxInputBytes) throw InputError(path == "-" ? "standard input" : path, "", too_large_text());
   if (in.bad()) throw InputError(path, "", "read error");
@@ -336,11 +353,13 @@ void JsonInput::expect_keys(std::initializer_list<std::string_view> allowed) con
 }
 
 Q JsonInput::rational() const {
+  Q q;
+  if (rational_of(*node_, q)) return q;
   if (!node_->is_string()) fail("expected a number or a numeric string, found " + kind());
-  std::string s = node_->get<std::string>();
-  if (is_number_text(*node_)) s.erase(0, 1);
+  std::string_view s = node_->get_ref<const std::string&>();
+  if (is_number_text(*node_)) s.remove_prefix(1);
   try {
-    return parse_rational(s);
+    return parse_rational(s);  // throws: it accepts exactly what rational_of does
   } catch (const NumberSyntaxError& e) {
     fail(e.what());
   }
@@ -349,8 +368,7 @@ Q JsonInput::rational() const {
 long JsonInput::integer(long lo, long hi) const {
   Q q = rational();
   if (q.get_den() != 1 || q < lo || q > hi)
-    fail("expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " +
-         to_string(q));
+    fail("expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " + to_string(q));
   return q.get_num().get_si();
 }
 
@@ -368,7 +386,8 @@ Vec<Q> JsonInput::rational_vector(std::optional<std::size_t> n) const {
   std::size_t m = size();
   if (n && m != *n) fail("expected an array of " + std::to_string(*n) + " numbers, found " + std::to_string(m));
   Vec<Q> v(static_cast<Eigen::Index>(m));
-  for (std::size_t i = 0; i < m; ++i) v(static_cast<Eigen::Index>(i)) = at(i).rational();
+  for (std::size_t i = 0; i < m; ++i)  // in place; the element's path is made only for an error
+    if (!rational_of((*node_)[i], v(static_cast<Eigen::Index>(i)))) (void)at(i).rational();  // throws
   return v;
 }
 
@@ -382,8 +401,9 @@ Mat<Q> JsonInput::rational_matrix(std::optional<std::size_t> rows, std::optional
     JsonInput row = at(i);
     if (row.size() != *c)
       row.fail("expected a row of " + std::to_string(*c) + " numbers, found " + std::to_string(row.size()));
-    for (std::size_t j = 0; j < *c; ++j)
-      A(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = row.at(j).rational();
+    for (std::size_t j = 0; j < *c; ++j)  // in place; the element's path is made only for an error
+      if (!rational_of((*row.node_)[j], A(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j))))
+        (void)row.at(j).rational();  // throws
   }
   return A;
 }

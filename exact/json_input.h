@@ -80,4 +80,8 @@ class JsonInput {
   std::string path_;
 };
 
+/// The digest JsonInput::canonical_sha256 gives the text value.dump(), without writing and parsing that text (for a
+/// value built in memory, such as a problem a certificate embeds).
+std::string canonical_sha256(const nlohmann::ordered_json& value);
+
 }  // namespace contactcert::exact

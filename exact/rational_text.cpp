@@ -2,6 +2,9 @@
 
 #include <cctype>
 #include <charconv>
+#include <cstdint>
+#include <limits>
+#include <numeric>
 
 namespace contactcert::exact {
 namespace {
@@ -37,29 +40,56 @@ Z pow10(long e) {
 
 [[noreturn]] void bad(std::string_view text, const char* why) {
   throw NumberSyntaxError("\"" + std::string(text.substr(0, 40)) + (text.size() > 40 ? "..." : "") +
-                          "\" is not an exact number (" + why +
-                          "; expected e.g. 3, -0.966, 2.5e-3 or 1/5)");
+                          "\" is not an exact number (" + why + "; expected e.g. 3, -0.966, 2.5e-3 or 1/5)");
 }
 
-Q parse_integer_ratio(std::string_view text, std::string_view s) {
+/// Digits that fit an unsigned 64-bit integer however they read (10^18 - 1 at most).
+constexpr std::size_t kWordDigits = 18;
+
+std::uint64_t word_of(std::string_view digits) {
+  std::uint64_t v = 0;
+  std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  return v;
+}
+
+std::uint64_t pow10_word(long e) {
+  std::uint64_t p = 1;
+  while (e-- > 0) p *= 10;
+  return p;
+}
+
+/// out = (negative ? -n : n) / d in lowest terms; n < 2^63, 0 < d.
+void set_ratio(bool negative, std::uint64_t n, std::uint64_t d, Q& out) {
+  const std::uint64_t g = std::gcd(n, d);
+  const auto num = static_cast<long>(n / g);
+  mpq_set_si(out.get_mpq_t(), negative ? -num : num, d / g);
+}
+
+const char* parse_integer_ratio(std::string_view s, Q& out) {
   size_t slash = s.find('/');
   std::string_view num = s.substr(0, slash), den = s.substr(slash + 1);
   bool neg = take_sign(num);
   bool neg_den = take_sign(den);
-  if (!all_digits(num) || !all_digits(den)) bad(text, "a fraction needs integer numerator and denominator");
-  if (num.size() > kMaxDigits || den.size() > kMaxDigits) bad(text, "more than 4096 digits");
+  if (!all_digits(num) || !all_digits(den)) return "a fraction needs integer numerator and denominator";
+  if (num.size() > kMaxDigits || den.size() > kMaxDigits) return "more than 4096 digits";
+  if (num.size() <= kWordDigits && den.size() <= kWordDigits) {  // in machine words, no GMP temporaries
+    const std::uint64_t n = word_of(num), d = word_of(den);
+    if (d == 0) return "zero denominator";
+    set_ratio(neg != neg_den, n, d, out);
+    return nullptr;
+  }
   Q q{Z(std::string(num), 10), Z(std::string(den), 10)};
-  if (q.get_den() == 0) bad(text, "zero denominator");
+  if (q.get_den() == 0) return "zero denominator";
   q.canonicalize();
-  return (neg != neg_den) ? Q(-q) : q;
+  out = (neg != neg_den) ? Q(-q) : q;
+  return nullptr;
 }
 
-}  // namespace
-
-Q parse_rational(std::string_view text) {
+/// Why text is not an exact number, or nullptr with its value in out.
+const char* parse_into(std::string_view text, Q& out) {
   std::string_view s = text;
-  if (s.empty()) bad(text, "empty");
-  if (s.find('/') != std::string_view::npos) return parse_integer_ratio(text, s);
+  if (s.empty()) return "empty";
+  if (s.find('/') != std::string_view::npos) return parse_integer_ratio(s, out);
 
   bool negative = take_sign(s);
   long exponent = 0;
@@ -67,10 +97,10 @@ Q parse_rational(std::string_view text) {
   if (e != std::string_view::npos) {
     std::string_view es = s.substr(e + 1);
     bool eneg = take_sign(es);
-    if (!all_digits(es)) bad(text, "malformed exponent");
+    if (!all_digits(es)) return "malformed exponent";
     long v = 0;
     if (es.size() > 9 || (std::from_chars(es.data(), es.data() + es.size(), v), v > kMaxDecimalExponent))
-      bad(text, "exponent out of range (at most 4096 in absolute value)");
+      return "exponent out of range (at most 4096 in absolute value)";
     exponent = eneg ? -v : v;
     s = s.substr(0, e);
   }
@@ -80,17 +110,43 @@ Q parse_rational(std::string_view text) {
     int_part = s.substr(0, dot);
     frac_part = s.substr(dot + 1);
   }
-  if (int_part.empty() && frac_part.empty()) bad(text, "no digits");
+  if (int_part.empty() && frac_part.empty()) return "no digits";
   if ((!int_part.empty() && !all_digits(int_part)) || (!frac_part.empty() && !all_digits(frac_part)))
-    bad(text, "unexpected character");
-  if (int_part.size() + frac_part.size() > kMaxDigits) bad(text, "more than 4096 digits");
+    return "unexpected character";
+  if (int_part.size() + frac_part.size() > kMaxDigits) return "more than 4096 digits";
   exponent -= static_cast<long>(frac_part.size());
+  if (int_part.size() + frac_part.size() <= kWordDigits && exponent >= -static_cast<long>(kWordDigits) &&
+      exponent <= static_cast<long>(kWordDigits)) {  // mantissa 10^exponent in machine words, if it fits
+    const std::uint64_t m = word_of(int_part) * pow10_word(static_cast<long>(frac_part.size())) + word_of(frac_part);
+    if (exponent < 0) {
+      set_ratio(negative, m, pow10_word(-exponent), out);
+      return nullptr;
+    }
+    const std::uint64_t scale = pow10_word(exponent);
+    if (m <= static_cast<std::uint64_t>(std::numeric_limits<long>::max()) / scale) {
+      set_ratio(negative, m * scale, 1, out);
+      return nullptr;
+    }
+  }
   std::string digits = std::string(int_part) + std::string(frac_part);
   Z mantissa(digits, 10);
   if (negative) mantissa = -mantissa;
-  if (exponent >= 0) return Q(Z(mantissa * pow10(exponent)));
-  Q q{mantissa, pow10(-exponent)};
-  q.canonicalize();
+  if (exponent >= 0) {
+    out = Q(Z(mantissa * pow10(exponent)));
+    return nullptr;
+  }
+  out = Q{mantissa, pow10(-exponent)};
+  out.canonicalize();
+  return nullptr;
+}
+
+}  // namespace
+
+bool parse_rational_into(std::string_view text, Q& out) { return parse_into(text, out) == nullptr; }
+
+Q parse_rational(std::string_view text) {
+  Q q;
+  if (const char* why = parse_into(text, q)) bad(text, why);
   return q;
 }
 

@@ -27,6 +27,9 @@ inline constexpr std::size_t kMaxDigits = 4096;
 /// Parses SPEC section 1 syntax exactly: integers ("-3"), decimals ("0.966" = 966/1000),
 /// scientific ("-2.5e-3" = -1/400) and fractions ("1/5", "-7/20"; non-zero denominator).
 Q parse_rational(std::string_view text);
+/// The same without throwing: out = the value of text, or false (out unspecified) if text is not such a number.
+/// Numbers of up to 18 digits are read in machine words, without GMP temporaries.
+bool parse_rational_into(std::string_view text, Q& out);
 
 /// Lowest terms: "-7/20", "3", "0".
 std::string to_string(const Q& x);

@@ -9,9 +9,15 @@ if(CONTACTCERT_MPI)
 endif()
 if(CONTACTCERT_MPI AND MPI_CXX_FOUND)
   message(STATUS "contactcert design: MPI distribution enabled (${MPI_CXX_LIBRARY_VERSION_STRING})")
-  target_sources(contactcert_solvers PRIVATE design/distribute_mpi.cpp)
-  target_link_libraries(contactcert_solvers PRIVATE MPI::MPI_CXX)
-  target_compile_definitions(contactcert_solvers PRIVATE CONTACTCERT_HAVE_MPI)
+  # A module that make_distributor loads under mpirun only (MPI's libraries linked into the program cost every
+  # command ~10 ms of start-up), built beside the executable and installed in LIBDIR/contactcert.
+  add_library(contactcert_mpi MODULE design/distribute_mpi.cpp)
+  target_include_directories(contactcert_mpi PRIVATE ${PROJECT_SOURCE_DIR})
+  target_link_libraries(contactcert_mpi PRIVATE MPI::MPI_CXX)
+  set_target_properties(contactcert_mpi PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/cli)
+  set_source_files_properties(design/distribute_serial.cpp PROPERTIES COMPILE_DEFINITIONS
+    "CONTACTCERT_HAVE_MPI;CONTACTCERT_MPI_MODULE=\"${CMAKE_INSTALL_LIBDIR}/contactcert/libcontactcert_mpi.so\"")
+  target_link_libraries(contactcert_solvers PRIVATE ${CMAKE_DL_LIBS})
   set(CONTACTCERT_HAVE_MPI ON CACHE INTERNAL "MPI found for contactcert design")
 else()
   message(STATUS "contactcert design: serial only (MPI not found or CONTACTCERT_MPI=OFF)")

@@ -2,7 +2,8 @@
 // cost of one placement varies by orders of magnitude, so a static split leaves ranks idle). The root hands
 // out chunk indices one at a time as ranks ask for work, and works on chunks itself between requests when
 // there are few ranks; only the root records results. MPI stays behind this interface (distribute_mpi.cpp,
-// built only when MPI is found); a serial build and a run without mpirun use distribute_serial.cpp's path.
+// built only when MPI is found, as a module loaded under mpirun); a serial build and a run without mpirun use
+// distribute_serial.cpp's path.
 #pragma once
 
 #include <functional>

@@ -1,4 +1,5 @@
-// The MPI distributor: a master-worker protocol on MPI_COMM_WORLD with one chunk index per request.
+// The MPI distributor, a module loaded only under mpirun (distribute_serial.cpp): a master-worker protocol on
+// MPI_COMM_WORLD with one chunk index per request.
 //   worker -> root  kReady (empty) twice, then kResult ("chunk\n" + result text) after each chunk: each asks for
 //                   one more, so a worker always has its next chunk queued while it computes (the root answers
 //                   only between its own placements)
@@ -173,17 +174,11 @@ class MpiDistributor : public Distributor {
   int byes_ = 0;
 };
 
-bool launched_by_mpirun() {
-  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "MPI_LOCALNRANKS"})
-    if (std::getenv(v)) return true;
-  return false;
-}
-
 }  // namespace
 
-std::unique_ptr<Distributor> make_distributor() {
-  if (!launched_by_mpirun()) return serial_distributor();
-  return std::make_unique<MpiDistributor>();
-}
-
 }  // namespace contactcert::solvers
+
+/// The module's entry point, found by make_distributor under mpirun: a new MPI distributor (MPI initialised).
+extern "C" contactcert::solvers::Distributor* contactcert_mpi_distributor() {
+  return new contactcert::solvers::MpiDistributor();
+}

@@ -27,12 +27,12 @@ json rationals(const Vec<Q>& v) {
 }
 
 json header(const std::string& kind, const UcpProblem& problem) {
-  const std::string text = to_json_text(problem);
+  json p = to_json(problem);
   json j;
   j["kind"] = kind;
   j["format"] = 2;
-  j["problem_sha256"] = JsonInput::parse(text, "problem").canonical_sha256();
-  j["problem"] = json::parse(text);
+  j["problem_sha256"] = exact::canonical_sha256(p);
+  j["problem"] = std::move(p);
   return j;
 }
 

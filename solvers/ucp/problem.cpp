@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "exact/rational_text.h"
 #include "solvers/ucp/integer_rows.h"
@@ -67,18 +68,18 @@ StandardPolyhedron<Q> read_polyhedron(const JsonInput& in, std::size_t n) {
   return P;
 }
 
-nlohmann::json to_json(const Mat<Q>& A) {
-  nlohmann::json rows = nlohmann::json::array();
+nlohmann::ordered_json to_json(const Mat<Q>& A) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (Index i = 0; i < A.rows(); ++i) {
-    nlohmann::json r = nlohmann::json::array();
+    nlohmann::ordered_json r = nlohmann::ordered_json::array();
     for (Index j = 0; j < A.cols(); ++j) r.push_back(exact::to_string(A(i, j)));
-    rows.push_back(r);
+    rows.push_back(std::move(r));
   }
   return rows;
 }
 
-nlohmann::json to_json(const Vec<Q>& v) {
-  nlohmann::json r = nlohmann::json::array();
+nlohmann::ordered_json to_json(const Vec<Q>& v) {
+  nlohmann::ordered_json r = nlohmann::ordered_json::array();
   for (Index i = 0; i < v.size(); ++i) r.push_back(exact::to_string(v(i)));
   return r;
 }
@@ -219,7 +220,7 @@ StandardPolyhedron<Q> build_Y(const QuasistaticProblem& p) {
 
 UcpInstance<Q> build_ucp(const QuasistaticProblem& p) { return {build_X(p), build_Y(p)}; }
 
-std::string to_json_text(const UcpProblem& u) {
+nlohmann::ordered_json to_json(const UcpProblem& u) {
   nlohmann::ordered_json j;
   if (u.quasistatic) {
     const QuasistaticProblem& p = *u.quasistatic;
@@ -230,13 +231,13 @@ std::string to_json_text(const UcpProblem& u) {
     j["P"] = to_json(p.P);
     j["Jn"] = to_json(p.Jn);
     j["Jt"] = to_json(p.Jt);
-    nlohmann::json td = nlohmann::json::array();
+    nlohmann::ordered_json td = nlohmann::ordered_json::array();
     std::vector<bool> in_alpha(static_cast<std::size_t>(p.ntheta), false);
     for (int a : p.alpha) in_alpha[static_cast<std::size_t>(a)] = true;
     for (int k = 0; k < p.ntheta; ++k)
-      td.push_back(in_alpha[static_cast<std::size_t>(k)] ? nlohmann::json(exact::to_string(p.theta_dot(k)))
-                                                         : nlohmann::json(nullptr));
-    j["theta_dot"] = td;
+      td.push_back(in_alpha[static_cast<std::size_t>(k)] ? nlohmann::ordered_json(exact::to_string(p.theta_dot(k)))
+                                                         : nlohmann::ordered_json(nullptr));
+    j["theta_dot"] = std::move(td);
     j["alpha"] = p.alpha;
     j["d"] = to_json(p.d);
     j["mu"] = to_json(p.mu);
@@ -247,8 +248,10 @@ std::string to_json_text(const UcpProblem& u) {
     j["Y"] = {{"A", to_json(u.ucp.Y.A)}, {"b", to_json(u.ucp.Y.b)}};
   }
   if (!u.source.empty()) j["source"] = u.source;
-  return j.dump(1) + "\n";
+  return j;
 }
+
+std::string to_json_text(const UcpProblem& u) { return to_json(u).dump(1) + "\n"; }
 
 template <class T>
 UcpInstance<T> convert(const UcpInstance<Q>& u) {

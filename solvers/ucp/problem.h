@@ -80,7 +80,9 @@ Mat<Q> build_C(const QuasistaticProblem& p);
 /// Both polyhedra.
 UcpInstance<Q> build_ucp(const QuasistaticProblem& p);
 
-/// The problem as a JSON text in SPEC section 2 form (exact numbers as strings in lowest terms).
+/// The problem as a JSON value in SPEC section 2 form (exact numbers as strings in lowest terms).
+nlohmann::ordered_json to_json(const UcpProblem& p);
+/// The same as a JSON text.
 std::string to_json_text(const UcpProblem& p);
 
 /// Converts an exact instance to another number type (double for the float path).

@@ -33,9 +33,9 @@ TEST(ParseRational, LongDigitStringsStayExact) {
 }
 
 TEST(ParseRational, RejectsMalformedNumbersWithAReason) {
-  for (const char* bad : {"", "abc", "1/0", "nan", "NaN", "inf", "-inf", "1e", "1e+", "--1", "1.2.3", "1/2/3",
-                          "0x10", "1,5", " 1", "1 ", ".", "-", "e5", "1/2.5", "1e99999", "1e-99999",
-                          "1e1234567890123"}) {
+  for (const char* bad :
+       {"",     "abc", "1/0", "nan", "NaN", "inf", "-inf", "1e",    "1e+",     "--1",      "1.2.3",          "1/2/3",
+        "0x10", "1,5", " 1",  "1 ",  ".",   "-",   "e5",   "1/2.5", "1e99999", "1e-99999", "1e1234567890123"}) {
     EXPECT_THROW(parse_rational(bad), NumberSyntaxError) << "input: '" << bad << "'";
   }
   try {
@@ -43,6 +43,50 @@ TEST(ParseRational, RejectsMalformedNumbersWithAReason) {
   } catch (const NumberSyntaxError& e) {
     EXPECT_NE(std::string(e.what()).find("zero denominator"), std::string::npos);
   }
+}
+
+// Up to 18 digits a number is read in machine words; a leading zero makes it 19 digits and sends it through GMP.
+// Both readings must agree, at the edges of the fast path (18 digits, exponents +-18, 2^63) and beyond them.
+TEST(ParseRational, MachineWordReadingAgreesWithGmp) {
+  const std::vector<std::string> texts = {"999999999999999999",
+                                          "-999999999999999999",
+                                          "999999999999999999e0",
+                                          "9999999999999999.99",
+                                          "922337203685477580",
+                                          "92233720368547758e1",
+                                          "9223372036854775e3",
+                                          "9223372036854776e3",
+                                          "999999999999999999e1",
+                                          "1e18",
+                                          "1e-18",
+                                          "-1e-18",
+                                          "123456789.123456789",
+                                          "0.000000000000000001",
+                                          "5e-18",
+                                          "25e-17",
+                                          "999999999999999999/999999999999999998",
+                                          "-120/-36",
+                                          "0/7",
+                                          "-0.0",
+                                          "3.14159e2",
+                                          "1000000000000000000",
+                                          "-0/-5"};
+  for (const std::string& t : texts) {
+    const Q fast = parse_rational(t);
+    // The same number with 19 leading zero digits (in the denominator too): 19 digits or more.
+    const auto pad = [](const std::string& s, std::size_t from) {
+      const std::size_t at = s.find_first_of("0123456789", from);
+      return s.substr(0, at) + std::string(19, '0') + s.substr(at);
+    };
+    std::string slow = pad(t, 0);
+    if (const std::size_t slash = slow.find('/'); slash != std::string::npos) slow = pad(slow, slash);
+    EXPECT_EQ(fast, parse_rational(slow)) << t << " vs " << slow;
+    Q into;
+    EXPECT_TRUE(parse_rational_into(t, into));
+    EXPECT_EQ(into, fast) << t;
+  }
+  Q unused;
+  for (const char* bad : {"1/0", "x", "1e", "0/000000000000000000000"}) EXPECT_FALSE(parse_rational_into(bad, unused));
 }
 
 TEST(ToString, LowestTerms) {

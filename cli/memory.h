@@ -1,0 +1,23 @@
+// Memory of the command-line process. Exact arithmetic makes and drops millions of small numbers (a rational's
+// denominator is one limb, most numerators one or two), and GMP asks its allocator for every one: blocks of up to
+// kPooledBytes come from per-thread free lists, one per size in limbs, carved from 64 KiB slabs; larger blocks from
+// malloc. Out of memory throws std::bad_alloc (GMP's default functions abort), which the CLI reports as exit 3.
+#pragma once
+
+#include <cstddef>
+
+namespace contactcert::cli {
+
+/// Largest block served from the free lists (8 limbs); a freed block is kept for the next request of its size.
+inline constexpr std::size_t kPooledBytes = 64;
+
+/// Makes GMP, and MPFR through it, allocate with these functions (before any GMP number is made).
+void use_pooled_gmp_memory();
+
+/// glibc gives the top of the heap back to the system once 128 KiB are free there, and serves large blocks from mmap:
+/// a search that makes and drops one LP tableau after another then pays page faults for the same memory each time
+/// (a jammed nc = 40 problem: 479 heap resizes and 4 times the solve time). The process keeps its heap until it
+/// exits instead; blocks above 32 MiB still come from mmap.
+void keep_heap_until_exit();
+
+}  // namespace contactcert::cli
