@@ -5,9 +5,10 @@
 // ANCHORS.md) in R^d with the second argument generators (pointed: first coordinate positive); 0, the K
 // matrices of the wrench cone algorithm (eq. 15) for 1-8 fixels on a disk; -1, 12 random facets in R^4
 // to rays; -2 / -4, the facets of the 6- / 10-cube to its rays; -3, the generators of the 6-cross-
-// polytope to its 64 facets; -5, the 1024 generators of the 10-cube to its facets; -6, the 466 facets
-// of a random cone over 35 points in R^8 (below) to its rays. Counters: output rows, and for the float
-// paths the instances whose row count differs from the exact answer (wrong).
+// polytope to its 64 facets; -5, the 1024 generators of the 10-cube to its facets; -6, the 906 facets
+// of a random cone over 35 points in R^8 (below) to its rays. BM_ours_order: ours with the row order of
+// the third argument. Counters: output rows, and for the float paths the instances whose row count
+// differs from the exact answer (wrong).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
