@@ -1,12 +1,14 @@
 // Cone conversion in both directions: our exact (fraction-free) and float paths against cddlib GMP,
-// PPL and Normaliz (when found, see bench/CMakeLists.txt) and cddlib double, in one run, on identical
+// PPL and Normaliz (when found, see bench/CMakeLists.txt), lrs (its program on files; BM_lrs reports the
+// lrs process's CPU time as its manual time) and cddlib double, in one run, on identical
 // integer inputs. Families (first argument): d > 0, random integer cones (entries in [-20, 20],
 // ANCHORS.md) in R^d with the second argument generators (pointed: first coordinate positive); 0, the K
 // matrices of the wrench cone algorithm (eq. 15) for 1-8 fixels on a disk; -1, 12 random facets in R^4
 // to rays; -2 / -4, the facets of the 6- / 10-cube to its rays; -3, the generators of the 6-cross-
-// polytope to its 64 facets; -5, the 1024 generators of the 10-cube to its facets; -6, the 466 facets
-// of a random cone over 35 points in R^8 (below) to its rays. Counters: output rows, and for the float
-// paths the instances whose row count differs from the exact answer (wrong).
+// polytope to its 64 facets; -5, the 1024 generators of the 10-cube to its facets; -6, the 906 facets
+// of a random cone over 35 points in R^8 (below) to its rays. BM_ours_order: ours with the row order of
+// the third argument. Counters: output rows, and for the float paths the instances whose row count
+// differs from the exact answer (wrong).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -165,6 +167,18 @@ void BM_ours_exact(benchmark::State& state) {
   });
 }
 
+// Our exact conversion with the row order of the third argument (geometry::RowOrder as an integer).
+void BM_ours_order(benchmark::State& state) {
+  const Workload w = workload(state);
+  contactcert::geometry::DdBudget budget;
+  budget.order = static_cast<contactcert::geometry::RowOrder>(state.range(2));
+  run(state, w, [&](std::size_t i) {
+    if (!w.spans.empty())
+      return static_cast<long>(contactcert::geometry::to_face(w.spans[i], budget).inequalities.rows());
+    return static_cast<long>(contactcert::geometry::to_span(w.faces[i], budget).rays.rows());
+  });
+}
+
 void BM_cdd_gmp(benchmark::State& state) {
   const Workload w = workload(state);
   if (state.range(0) == -6) return state.SkipWithError("over a minute per conversion");
@@ -191,6 +205,52 @@ void BM_normaliz(benchmark::State& state) {
     return w.spans.empty() ? contactcert::bench::normaliz_rays(w.rows[i], w.dims[i])
                            : contactcert::bench::normaliz_facets(w.rows[i], w.dims[i]);
   });
+}
+
+Mat<Q> to_matrix(const std::vector<std::vector<Z>>& rows, long dim) {
+  Mat<Q> M(static_cast<long>(rows.size()), dim);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (long j = 0; j < dim; ++j) M(static_cast<long>(i), j) = Q(rows[i][static_cast<std::size_t>(j)]);
+  return M;
+}
+
+// lrs's own CPU time per conversion (the program run on files: process start, parsing and printing
+// included); `unequal`: the instances whose output differs from ours as a set (canonical forms).
+void BM_lrs(benchmark::State& state) {
+  namespace geometry = contactcert::geometry;
+  namespace bench = contactcert::bench;
+  const Workload w = workload(state);
+  // (The 10-cube's 1024 generators: one lrs run took over 90 s.)
+  if (state.range(0) == -6 || state.range(0) == -5) return state.SkipWithError("over a minute per conversion");
+  auto convert = [&](std::size_t i) {
+    return w.spans.empty() ? bench::lrs_rays(w.rows[i], w.dims[i]) : bench::lrs_facets(w.rows[i], w.dims[i]);
+  };
+  long unequal = 0;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const auto out = convert(i);
+    if (!out) return state.SkipWithError("the lrs program is missing or failed");
+    const long d = w.dims[i];
+    if (w.spans.empty()) {
+      const auto theirs = SpanCone<Q>::from_rows(d, to_matrix(out->rows, d), to_matrix(out->linearity, d));
+      unequal +=
+          geometry::identical(geometry::canonical(theirs), geometry::canonical(geometry::to_span(w.faces[i]))) ? 0 : 1;
+    } else {
+      const auto theirs =
+          FaceCone<Q>::from_rows(d, to_matrix(out->rows, d), to_matrix(out->linearity, d), Mat<Q>(0, d));
+      unequal +=
+          geometry::identical(geometry::canonical(theirs), geometry::canonical(geometry::to_face(w.spans[i]))) ? 0 : 1;
+    }
+  }
+  long rows = 0;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto out = convert(i++ % w.size());
+    if (!out) return state.SkipWithError("the lrs program failed");
+    state.SetIterationTime(out->cpu_seconds);
+    rows += static_cast<long>(out->rows.size());
+  }
+  state.counters["rows_out"] = static_cast<double>(rows) / static_cast<double>(state.iterations());
+  state.counters["unequal"] = static_cast<double>(unequal);
 }
 
 std::vector<long> exact_facets(const std::vector<SpanCone<Q>>& cones) {
@@ -248,15 +308,40 @@ void sizes(benchmark::internal::Benchmark* b) {
   b->Iterations(kInstances)->Unit(benchmark::kMicrosecond);
 }
 
+// Every family with every row order (lexmin, lexmax, min cutoff, max cutoff).
+void orders(benchmark::internal::Benchmark* b) {
+  for (const std::vector<long>& a : {std::vector<long>{3, 20},
+                                     {4, 12},
+                                     {5, 15},
+                                     {6, 30},
+                                     {7, 20},
+                                     {8, 20},
+                                     {-1, 0},
+                                     {-2, 0},
+                                     {-3, 0},
+                                     {-4, 0},
+                                     {-5, 0},
+                                     {0, 4},
+                                     {0, 5},
+                                     {0, 6},
+                                     {0, 7},
+                                     {0, 8}})
+    for (long order = 0; order < 4; ++order) b->Args({a[0], a[1], order});
+  b->Iterations(kInstances)->Unit(benchmark::kMicrosecond);
+}
+
 BENCHMARK(BM_ours_exact)->Apply(sizes);
+BENCHMARK(BM_ours_order)->Apply(orders);
 BENCHMARK(BM_ppl)->Apply(sizes);
 BENCHMARK(BM_normaliz)->Apply(sizes);
 BENCHMARK(BM_cdd_gmp)->Apply(sizes);
+BENCHMARK(BM_lrs)->Apply(sizes)->UseManualTime();
 BENCHMARK(BM_ours_float)->Apply(sizes);
 BENCHMARK(BM_cdd_double)->Apply(sizes);
 // The dimension-8 case, once (cddlib and PPL take minutes).
 BENCHMARK(BM_ours_exact)->Args({-6, 0})->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_normaliz)->Args({-6, 0})->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ours_order)->ArgsProduct({{-6}, {0}, {0, 1, 2, 3}})->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -475,6 +475,14 @@ std::vector<std::vector<R>> to_ring_rows(const Eigen::MatrixBase<D0>& A0, const 
   return rows;
 }
 
+/// out = x in the field T, in place (a rational's limbs are reused: no temporary is made).
+inline void to_field(std::int64_t x, Q& out) { mpq_set_si(out.get_mpq_t(), static_cast<long>(x), 1); }
+inline void to_field(const Z& x, Q& out) { mpq_set_z(out.get_mpq_t(), x.get_mpz_t()); }
+template <class T, class R>
+void to_field(const R& x, T& out) {
+  out = to_field<T>(x);
+}
+
 /// Columns [first, first + cols) of ring rows as a matrix over the field T, entry by entry (to_field): the
 /// inverse of to_ring_rows up to the positive factor of each row. No rows give a 0 x cols matrix.
 template <class T, class R>
@@ -482,7 +490,7 @@ Mat<T> to_field_rows(const std::vector<std::vector<R>>& rows, Index cols, Index 
   Mat<T> M(static_cast<Index>(rows.size()), cols);
   for (Index i = 0; i < M.rows(); ++i) {
     const std::vector<R>& row = rows[static_cast<std::size_t>(i)];
-    for (Index j = 0; j < cols; ++j) M(i, j) = to_field<T>(row[static_cast<std::size_t>(first + j)]);
+    for (Index j = 0; j < cols; ++j) to_field(row[static_cast<std::size_t>(first + j)], M(i, j));
   }
   return M;
 }

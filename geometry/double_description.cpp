@@ -4,7 +4,6 @@
 #include <bit>
 #include <cstdint>
 #include <optional>
-#include <span>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -152,6 +151,18 @@ class DoubleDescription {
     }
   }
 
+  // The number of current rays that { a . y <= 0 } cuts off (a . y > 0), charged as work.
+  std::size_t cutoff(const R* a) {
+    charge(count_, processed_);
+    std::size_t cut = 0;
+    R v;
+    for (std::size_t r = 0; r < count_; ++r) {
+      rg::dot(a, &coord_[r * static_cast<size_t>(k_)], k_, v);
+      if (rg::sign(v) > 0) ++cut;
+    }
+    return cut;
+  }
+
   std::size_t count() const { return count_; }
   const R* ray(std::size_t r) const { return &coord_[r * static_cast<size_t>(k_)]; }
   const std::vector<std::vector<R>>& lines() const { return lines_; }
@@ -209,6 +220,9 @@ class DoubleDescription {
   [[gnu::always_inline]] inline void new_rays(std::size_t t, std::size_t n) {
     const std::size_t free_dim = static_cast<std::size_t>(k_) - lines_.size();
     const std::size_t need = free_dim >= 2 ? free_dim - 2 : 0;
+    // Zero sets hold rows before t only: the words from `used` on are 0 in every ray and in common_
+    // (used grows with t).
+    const std::size_t used = (t + 63) / 64;
     index_tight_rays(t, n);
     for (auto p : plus_) {
       charge(minus_.size(), t);
@@ -217,11 +231,10 @@ class DoubleDescription {
         const std::uint64_t* bp = &bits_[p * words_];
         const std::uint64_t* bm = &bits_[m * words_];
         std::size_t pop = 0;
-        for (std::size_t w = 0; w < words_; ++w) {
-          common_[w] = bp[w] & bm[w];
-          pop += static_cast<std::size_t>(std::popcount(common_[w]));
-        }
-        if (pop < need || !adjacent(p, m, pop, n, t)) continue;
+        for (std::size_t w = 0; w < used; ++w) pop += static_cast<std::size_t>(std::popcount(bp[w] & bm[w]));
+        if (pop < need) continue;
+        for (std::size_t w = 0; w < used; ++w) common_[w] = bp[w] & bm[w];
+        if (!adjacent(p, m, pop, n, t)) continue;
         const std::size_t id = push_ray(t);
         rg::combine(&coord_[p * static_cast<size_t>(k_)], values_[p], &coord_[m * static_cast<size_t>(k_)], values_[m],
                     &coord_[id * static_cast<size_t>(k_)], k_);
@@ -430,18 +443,41 @@ RingGenerators<R> generators(const DoubleDescription<R>& dd, Index k) {
   return out;
 }
 
-// A run in std::int64_t that overflowed on the row A[rest[0]] (and was left as before it) goes on in Z
-// from there: the rows before it are not processed again.
-RingGenerators<Z> finish_in_z(const DoubleDescription<std::int64_t>& fixed,
-                              const std::vector<std::vector<std::int64_t>>& A, std::span<const std::size_t> rest,
-                              Index k) {
-  DoubleDescription<Z> dd(fixed);
-  std::vector<Z> row(static_cast<size_t>(k));
-  for (std::size_t i : rest) {
-    for (Index j = 0; j < k; ++j)
-      rg::from_integer(static_cast<long>(A[i][static_cast<size_t>(j)]), row[static_cast<size_t>(j)]);
-    dd.add_row(row.data(), false);
+// Adds the rows A[i], i in `rest` (each orthogonal to every line of dd), in the given order, taking each
+// out of `rest` once it is in. The cutoff orders look at every row left before each step (cddlib's
+// MinCutoff / MaxCutoff). On RingOverflow, dd and `rest` are as they were before the row that overflowed.
+template <class R>
+void add_in_order(DoubleDescription<R>& dd, const std::vector<std::vector<R>>& A, std::vector<std::size_t>& rest,
+                  RowOrder order) {
+  const bool fewest = order == RowOrder::kMinCutoff;
+  while (!rest.empty()) {
+    std::size_t next = order == RowOrder::kLexMax ? rest.size() - 1 : 0;  // a position in rest
+    if (fewest || order == RowOrder::kMaxCutoff) {
+      std::size_t best = 0;
+      for (std::size_t p = 0; p < rest.size(); ++p) {
+        const std::size_t cut = dd.cutoff(A[rest[p]].data());
+        if (p == 0 || (fewest ? cut < best : cut > best)) next = p, best = cut;
+        if (fewest ? best == 0 : best == dd.count()) break;  // nothing better is left
+      }
+    }
+    dd.add_row(A[rest[next]].data(), false);
+    rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(next));
   }
+}
+
+// A run in std::int64_t that overflowed with the rows A[i], i in `rest`, still to add (and was left as
+// before the row that overflowed) goes on in Z from there: the rows before are not processed again.
+RingGenerators<Z> finish_in_z(const DoubleDescription<std::int64_t>& fixed,
+                              const std::vector<std::vector<std::int64_t>>& A, std::vector<std::size_t> rest, Index k,
+                              RowOrder order) {
+  DoubleDescription<Z> dd(fixed);
+  std::vector<std::vector<Z>> wide(A.size());
+  for (std::size_t i : rest) {
+    wide[i].resize(static_cast<size_t>(k));
+    for (Index j = 0; j < k; ++j)
+      rg::from_integer(static_cast<long>(A[i][static_cast<size_t>(j)]), wide[i][static_cast<size_t>(j)]);
+  }
+  add_in_order(dd, wide, rest, order);
   return generators(dd, k);
 }
 
@@ -461,7 +497,7 @@ RingGenerators<std::int64_t> narrowed(const RingGenerators<Z>& g) {
 
 // The double description of { y : A y <= 0, E y = 0 } for sorted rows: the equalities first, then the
 // inequalities that lower the lineality (a basis of what is left, the greedy choice in order), then the
-// others in order.
+// others in budget.order.
 template <class R>
 RingGenerators<R> generators_of_sorted(const std::vector<std::vector<R>>& A, const std::vector<std::vector<R>>& E,
                                        Index k, const DdBudget& budget) {
@@ -471,16 +507,14 @@ RingGenerators<R> generators_of_sorted(const std::vector<std::vector<R>>& A, con
   std::vector<std::size_t> later;
   for (std::size_t i = 0; i < A.size(); ++i)
     if (!dd.reduce_lineality(A[i].data(), false)) later.push_back(i);
-  for (std::size_t i = 0; i < later.size(); ++i) {
-    if constexpr (std::is_same_v<R, std::int64_t>) {
-      try {
-        dd.add_row(A[later[i]].data(), false);
-      } catch (const exact::RingOverflow&) {
-        return narrowed(finish_in_z(dd, A, std::span(later).subspan(i), k));
-      }
-    } else {
-      dd.add_row(A[later[i]].data(), false);
+  if constexpr (std::is_same_v<R, std::int64_t>) {
+    try {
+      add_in_order(dd, A, later, budget.order);
+    } catch (const exact::RingOverflow&) {
+      return narrowed(finish_in_z(dd, A, std::move(later), k, budget.order));
     }
+  } else {
+    add_in_order(dd, A, later, budget.order);
   }
   return generators(dd, k);
 }

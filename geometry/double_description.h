@@ -19,8 +19,18 @@
 
 namespace contactcert::geometry {
 
+/// The order in which the double description adds the inequality rows that leave the lineality space
+/// as it is (cddlib's and PPL's options). Every order gives the same cone and the same rays; only the
+/// intermediate ray counts, so the work, differ.
+enum class RowOrder {
+  kLexMin,     ///< lexicographically increasing primitive rows
+  kLexMax,     ///< lexicographically decreasing
+  kMinCutoff,  ///< next the row that cuts off the fewest current rays (ties: the lexicographically least)
+  kMaxCutoff,  ///< next the row that cuts off the most current rays (ties: the lexicographically least)
+};
+
 /// Work limits of one conversion, checked inside the iteration where rays and work grow; exceeding
-/// one throws exact::BudgetExceeded (exit 3), saying how many rows were processed.
+/// one throws exact::BudgetExceeded (exit 3), saying how many rows were processed. Also the row order.
 struct DdBudget {
   /// The largest number of intermediate rays.
   std::size_t max_rays = 2'000'000;
@@ -29,6 +39,8 @@ struct DdBudget {
   std::uint64_t max_work = std::uint64_t{1} << 33;
   /// Wall clock (--time-limit).
   exact::Deadline deadline;
+  /// The insertion order of the rows.
+  RowOrder order = RowOrder::kLexMin;
 };
 
 /// F^F of the paper's notation: a minimal face form of pos(rays) + span(lines). Each inequality row is

@@ -131,9 +131,9 @@ FaceCone<T> project_by_polar_rows(const std::vector<std::vector<R>>& rows, Index
   if (auto polar = pointed_cone_rays<R>(kc, m, budget)) {
     kf = std::move(*polar);
   } else {
-    const FaceCone<T> KF = to_face(SpanCone<T>::from_rows(m, rg::to_field_rows<T>(kc, m), Mat<T>(0, m)), budget);
-    kf = rg::to_ring_rows<R>(KF.inequalities);
-    ke = rg::to_ring_rows<R>(KF.equalities);
+    RingGenerators<R> KF = cone_generators<R>(kc, {}, m, budget);  // facets and equalities, in the ring
+    kf = std::move(KF.rays);
+    ke = std::move(KF.lines);
   }
   // A facet of pos(K) is open iff it misses a column k_i with z_i > 0: the relative interiors of the
   // faces of pos(K) that contain every such column make up { K z : z >= 0, z_i > 0 on strict }.
