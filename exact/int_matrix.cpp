@@ -4,16 +4,20 @@
 #include <type_traits>
 #include <utility>
 
+#include "exact/interval_number.h"
+#include "exact/mpfr_number.h"
+
 namespace contactcert::exact {
 
 namespace {
 
 using Index = Eigen::Index;
 
+/// A float ring (double, MPFR floats, intervals): not one of the exact integer rings.
 template <class R>
-constexpr bool is_float_ring = std::is_same_v<R, double>;
+constexpr bool is_float_ring = !(std::is_same_v<R, std::int64_t> || std::is_same_v<R, Int128> || std::is_same_v<R, Z>);
 
-/// Divides v[0..k) by the positive gcd of its entries (all zero: unchanged); double: by its max-norm.
+/// Divides v[0..k) by the positive gcd of its entries (all zero: unchanged); a float ring: ring::normalize.
 template <class R>
 void make_row_primitive(R* v, Index k) {
   if constexpr (is_float_ring<R>) {
@@ -43,7 +47,7 @@ void eliminate(const R* pivot_row, R* row, Index c, Index w, std::vector<R>& tmp
   make_row_primitive(row, w);
 }
 
-/// Pivot choice: the first non-zero entry in an exact ring, the largest in magnitude in double.
+/// Pivot choice: the first non-zero entry in an exact ring, the float ring's choice (the largest) otherwise.
 template <class R>
 bool better_pivot(const R& candidate, const R& best) {
   if constexpr (is_float_ring<R>)
@@ -178,7 +182,12 @@ SolutionKind IntMatrix<R>::solve(R* N, R& d) {
 template class IntMatrix<std::int64_t>;
 template class IntMatrix<Int128>;
 template class IntMatrix<Z>;
-template void IntMatrix<double>::make_primitive();
-template std::vector<Index> IntMatrix<double>::echelon(Index, Index, Index);
+#define CONTACTCERT_INT_MATRIX_FLOAT_INSTANTIATE(R) \
+  template void IntMatrix<R>::make_primitive();     \
+  template std::vector<Index> IntMatrix<R>::echelon(Index, Index, Index);
+CONTACTCERT_INT_MATRIX_FLOAT_INSTANTIATE(double)
+CONTACTCERT_INT_MATRIX_FLOAT_INSTANTIATE(Mpfr)
+CONTACTCERT_INT_MATRIX_FLOAT_INSTANTIATE(Interval)
+#undef CONTACTCERT_INT_MATRIX_FLOAT_INSTANTIATE
 
 }  // namespace contactcert::exact

@@ -1,8 +1,9 @@
 // A dense matrix over a ring R of exact/fraction_free.h, eliminated without fractions (the model is Normaliz's
 // Matrix<Integer>): row echelon form with primitive rows, rank, kernel, make-primitive, and the unique solution of a
 // system by Bareiss's elimination. R = std::int64_t, Int128 (overflow-checked: throw RingOverflow so that
-// with_exact_ring restarts in Z) or Z; the echelon form also runs in the float ring double. Row-major, on the stack
-// up to 64 entries (the UCP's systems are that small and solved by the thousand). Instantiated in int_matrix.cpp.
+// with_exact_ring restarts in Z) or Z; the echelon form also runs in the float rings (double, MPFR floats, intervals).
+// Row-major, on the stack up to 64 entries (the UCP's systems are that small and solved by the thousand). Instantiated
+// in int_matrix.cpp.
 #pragma once
 
 #include <boost/container/small_vector.hpp>
@@ -48,7 +49,8 @@ class IntMatrix {
     entries_.resize(static_cast<std::size_t>(rows * cols_));
   }
 
-  /// Divides every row by the gcd of its entries (double: by its max-norm), so that it is primitive; zero rows stay.
+  /// Divides every row by the gcd of its entries (a float ring: ring::normalize), so that it is primitive; zero rows
+  /// stay.
   void make_primitive();
 
   /// Fraction-free Gauss-Jordan elimination of the rows from `top` down in columns [first, last) (last < 0: to the
