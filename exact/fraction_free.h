@@ -25,9 +25,9 @@ namespace contactcert::exact {
 /// Thrown by the std::int64_t ring when a result does not fit; the caller restarts in Z.
 struct RingOverflow {};
 
-/// The fixed-width ring of the exact integer checks (rounded_check.h, bareiss.h, the UCP's physical recovery): exact,
-/// every operation overflow-checked (throws RingOverflow). 128 bits, not 64: the paper's data overflow 64 bits
-/// in the elimination of unique_solution.
+/// The fixed-width ring of the exact integer checks (rounded_check.h, int_matrix.h, the UCP's physical recovery):
+/// exact, every operation overflow-checked (throws RingOverflow). 128 bits, not 64: the paper's data overflow 64 bits
+/// in the elimination of IntMatrix::solve.
 __extension__ typedef __int128 Int128;
 
 /// The ring an algorithm over the field T runs in when it stays fraction-free: Z for Q, T itself for a float T.

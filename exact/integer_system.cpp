@@ -1,7 +1,10 @@
 #include "exact/integer_system.h"
 
 #include <algorithm>
+#include <numeric>
 #include <utility>
+
+#include "exact/int_matrix.h"
 
 namespace contactcert::exact {
 
@@ -65,9 +68,34 @@ IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b, const std::vec
   return s;
 }
 
-#define CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(R)                            \
-  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&); \
-  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Index>&);
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Index>& columns) {
+  const auto k = static_cast<Index>(columns.size());
+  IntMatrix<R> M(s.m, k + 1);  // [A_S | b]
+  for (Index i = 0; i < s.m; ++i) {
+    for (Index c = 0; c < k; ++c) M(i, c) = s.a(i, columns[static_cast<std::size_t>(c)]);
+    M(i, k) = s.b[static_cast<std::size_t>(i)];
+  }
+  std::vector<R> N(static_cast<std::size_t>(k));
+  R d;
+  if (M.solve(N.data(), d) != SolutionKind::kUnique) return std::nullopt;
+  Vec<Q> x(k);
+  for (Index i = 0; i < k; ++i) ring::to_rational(N[static_cast<std::size_t>(i)], d, x(i));
+  return x;
+}
+
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s) {
+  std::vector<Index> all(static_cast<std::size_t>(s.n));
+  std::iota(all.begin(), all.end(), Index(0));
+  return unique_solution(s, all);
+}
+
+#define CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(R)                                                        \
+  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                             \
+  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Index>&);  \
+  template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Index>&); \
+  template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&);
 CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(Int128)
 CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(Z)
 #undef CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE

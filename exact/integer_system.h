@@ -55,9 +55,19 @@ IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b);
 template <class R>
 IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b, const std::vector<Eigen::Index>& columns);
 
-#define CONTACTCERT_INTEGER_SYSTEM_EXTERN(R)                                        \
-  extern template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&); \
-  extern template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Eigen::Index>&);
+/// The unique solution x_S of A_S x_S = b (A_S: the given columns of s, in order) as rationals, by
+/// IntMatrix::solve; nullopt if A_S does not have full column rank or the system is inconsistent.
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Eigen::Index>& columns);
+/// The same over all columns of s.
+template <class R>
+std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s);
+
+#define CONTACTCERT_INTEGER_SYSTEM_EXTERN(R)                                                                           \
+  extern template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                                    \
+  extern template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Eigen::Index>&);  \
+  extern template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Eigen::Index>&); \
+  extern template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&);
 CONTACTCERT_INTEGER_SYSTEM_EXTERN(Int128)
 CONTACTCERT_INTEGER_SYSTEM_EXTERN(Z)
 #undef CONTACTCERT_INTEGER_SYSTEM_EXTERN

@@ -1,12 +1,35 @@
 #include "exact/linalg.h"
 
+#include <type_traits>
+
+#include "exact/int_matrix.h"
 #include "exact/interval_number.h"
 #include "exact/mpfr_number.h"
 
 namespace contactcert::exact {
 
+namespace {
+
+// Q: the rows of A as primitive integers (Int128, again in Z on overflow), brought to row echelon form without
+// fractions (IntMatrix::echelon); row r of the reduced row echelon form is echelon row r over its pivot entry (the
+// form is unique, so it is the one Gauss-Jordan elimination in Q reaches).
+Rref<Q> rref_in_integers(const Mat<Q>& A) {
+  return with_exact_ring<Q, Int128>([&]<class R>() {
+    IntMatrix<R> E = IntMatrix<R>::primitive_rows(A.rows(), A.cols(),
+                                                  [&](Eigen::Index i, Eigen::Index j) -> const Q& { return A(i, j); });
+    Rref<Q> out{Mat<Q>(A.rows(), A.cols()), E.echelon()};  // (a default rational is 0)
+    for (Eigen::Index r = 0; r < out.rank(); ++r) {
+      const R& pivot = E(r, out.pivots[static_cast<std::size_t>(r)]);
+      for (Eigen::Index j = 0; j < A.cols(); ++j)
+        if (ring::sign(E(r, j)) != 0) ring::to_rational(E(r, j), pivot, out.R(r, j));
+    }
+    return out;
+  });
+}
+
+// A float field: Gauss-Jordan elimination with the pivots of NumberTraits<T> and its sign tolerance.
 template <class T>
-Rref<T> rref(const Mat<T>& A) {
+Rref<T> rref_in_field(const Mat<T>& A) {
   Rref<T> out{A, {}};
   Mat<T>& R = out.R;
   const Eigen::Index m = R.rows(), n = R.cols();
@@ -33,6 +56,16 @@ Rref<T> rref(const Mat<T>& A) {
     ++row;
   }
   return out;
+}
+
+}  // namespace
+
+template <class T>
+Rref<T> rref(const Mat<T>& A) {
+  if constexpr (std::is_same_v<T, Q>)
+    return rref_in_integers(A);
+  else
+    return rref_in_field(A);
 }
 
 template <class T>
@@ -85,12 +118,12 @@ std::optional<Mat<T>> inverse(const Mat<T>& A) {
   return Mat<T>(E.R.rightCols(n));
 }
 
-#define CONTACTCERT_LINALG_INSTANTIATE(T)                                   \
-  template Rref<T> rref<T>(const Mat<T>&);                                  \
-  template Eigen::Index rank<T>(const Mat<T>&);                             \
-  template Mat<T> null_space<T>(const Mat<T>&);                             \
-  template Mat<T> left_null_space<T>(const Mat<T>&);                        \
-  template std::optional<Vec<T>> solve<T>(const Mat<T>&, const Vec<T>&);    \
+#define CONTACTCERT_LINALG_INSTANTIATE(T)                                \
+  template Rref<T> rref<T>(const Mat<T>&);                               \
+  template Eigen::Index rank<T>(const Mat<T>&);                          \
+  template Mat<T> null_space<T>(const Mat<T>&);                          \
+  template Mat<T> left_null_space<T>(const Mat<T>&);                     \
+  template std::optional<Vec<T>> solve<T>(const Mat<T>&, const Vec<T>&); \
   template std::optional<Mat<T>> inverse<T>(const Mat<T>&);
 CONTACTCERT_LINALG_INSTANTIATE(double)
 CONTACTCERT_LINALG_INSTANTIATE(Q)

@@ -1,5 +1,6 @@
-// Dense linear algebra over a field T (double, Q, MPFR floats or intervals), written once: reduced row echelon form,
-// rank, null spaces, solving and inversion. Instantiated in linalg.cpp.
+// Dense linear algebra over a field T (double, Q, MPFR floats or intervals), written once on reduced row echelon
+// form: rank, null spaces, solving and inversion. Q's echelon form is computed in integers (exact/int_matrix.h), a
+// float field's by Gauss-Jordan elimination in T. Instantiated in linalg.cpp.
 #pragma once
 
 #include <optional>
@@ -43,12 +44,12 @@ std::optional<Mat<T>> inverse(const Mat<T>& A);
 
 /// Explicit instantiation declarations for one number type (also used by exact/mpfr_number.h and
 /// exact/interval_number.h).
-#define CONTACTCERT_LINALG_EXTERN(T)                                               \
-  extern template Rref<T> rref<T>(const Mat<T>&);                                  \
-  extern template Eigen::Index rank<T>(const Mat<T>&);                             \
-  extern template Mat<T> null_space<T>(const Mat<T>&);                             \
-  extern template Mat<T> left_null_space<T>(const Mat<T>&);                        \
-  extern template std::optional<Vec<T>> solve<T>(const Mat<T>&, const Vec<T>&);    \
+#define CONTACTCERT_LINALG_EXTERN(T)                                            \
+  extern template Rref<T> rref<T>(const Mat<T>&);                               \
+  extern template Eigen::Index rank<T>(const Mat<T>&);                          \
+  extern template Mat<T> null_space<T>(const Mat<T>&);                          \
+  extern template Mat<T> left_null_space<T>(const Mat<T>&);                     \
+  extern template std::optional<Vec<T>> solve<T>(const Mat<T>&, const Vec<T>&); \
   extern template std::optional<Mat<T>> inverse<T>(const Mat<T>&);
 CONTACTCERT_LINALG_EXTERN(double)
 CONTACTCERT_LINALG_EXTERN(Q)

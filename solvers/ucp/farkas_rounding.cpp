@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "exact/bareiss.h"
+#include "exact/int_matrix.h"
 #include "exact/rational_reconstruction.h"
 #include "exact/rounded_check.h"
 
@@ -57,10 +57,10 @@ std::optional<FarkasVector> basis_farkas(const exact::IntegerSystem<R>& s, const
   if (y_approx.size() != m) return std::nullopt;
   if (static_cast<Index>(basis.size()) != m) return std::nullopt;
   // M = [B^T-rows | rhs], row-major m x (m + 1): one equation per basis column, unknowns f'.
-  const Index w = m + 1;
-  std::vector<R> M(static_cast<std::size_t>(m * w), R(0)), F(static_cast<std::size_t>(m));
+  exact::IntMatrix<R> M(m, m + 1);
+  std::vector<R> F(static_cast<std::size_t>(m));
   for (Index r = 0; r < m; ++r) {
-    R* row = &M[static_cast<std::size_t>(r * w)];
+    R* row = M.row(r);
     const Index v = basis[static_cast<std::size_t>(r)];
     if (v < 0 || v >= s.n + m) return std::nullopt;
     if (v < s.n) {
@@ -78,7 +78,7 @@ std::optional<FarkasVector> basis_farkas(const exact::IntegerSystem<R>& s, const
     }
   }
   R d;
-  if (exact::unique_solution(M.data(), m, m, F.data(), d) != exact::SolutionKind::kUnique) return std::nullopt;
+  if (M.solve(F.data(), d) != exact::SolutionKind::kUnique) return std::nullopt;
   return checked_farkas(s, F, zero);  // f' = F / d with d > 0: F is a positive multiple of f'
 }
 

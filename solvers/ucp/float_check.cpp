@@ -3,7 +3,7 @@
 #include <cassert>
 #include <tuple>
 
-#include "exact/bareiss.h"
+#include "exact/integer_system.h"
 #include "exact/rounded_check.h"
 #include "solvers/ucp/farkas_rounding.h"
 

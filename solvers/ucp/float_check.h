@@ -15,7 +15,7 @@ namespace contactcert::solvers::ucp {
 /// An exact complementary pair with the zero pattern of a float one (x_approx, y_approx): x in X with x_i = 0
 /// where x_zero[i], y in Y with y_i = 0 where y_zero[i]. Every index must be in one pattern (then x^T y = 0).
 /// Each side is first the exact solution on the float point's support if it is unique and >= 0 (a vertex:
-/// exact::unique_solution), else the float point rounded to fractions and checked (exact::rounded_point), both
+/// exact::IntMatrix::solve), else the float point rounded to fractions and checked (exact::rounded_point), both
 /// in 128-bit integers with a restart in GMP on overflow, else an exact face LP. nullopt if one of the two faces is
 /// empty in exact arithmetic.
 std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, const Vec<double>& x_approx,

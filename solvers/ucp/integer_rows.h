@@ -1,5 +1,5 @@
 // The rows of X and Y (Pang, Trinkle, Lo section 2) as primitive integers, computed in integers: the left null
-// space of P by fraction-free Gauss-Jordan elimination (Int128, restarted in GMP integers on overflow), sparse
+// space of P as the kernel of exact::IntMatrix (Int128, restarted in GMP integers on overflow), sparse
 // where the structure is (a null-space row has at most rank(P) + 1 non-zero entries).
 #pragma once
 

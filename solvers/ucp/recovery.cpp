@@ -3,8 +3,8 @@
 #include <boost/container/small_vector.hpp>
 #include <cassert>
 
-#include "exact/bareiss.h"
 #include "exact/fraction_free.h"
+#include "exact/int_matrix.h"
 #include "exact/linalg.h"
 
 // Everything here runs in integers: the problem's data once per call (IntegerData: each row of P and of [Jn; Jt]
@@ -134,8 +134,9 @@ template <class R>
 std::optional<PhysicalSolution> velocities_in(const QuasistaticProblem& p, const IntegerData<R>& g, const Vec<Q>& x) {
   const Index nc = p.nc, nt = p.ntheta, m = p.P.cols(), w = m + 1;
   // W = (x, theta_dot) over Dw; V = (v_n, v_t) over Dw; M, scale: velocity_rows; N the solution's numerators.
-  Buffer<R> buf(static_cast<std::size_t>(3 * nc + nt + 2 * nc + 2 * nc * w + 2 * nc + m));
-  R *W = buf.data(), *V = W + 3 * nc + nt, *M = V + 2 * nc, *scale = M + 2 * nc * w, *N = scale + 2 * nc;
+  Buffer<R> buf(static_cast<std::size_t>(3 * nc + nt + 2 * nc + 2 * nc + m));
+  exact::IntMatrix<R> velocity(2 * nc, w);
+  R *W = buf.data(), *V = W + 3 * nc + nt, *M = velocity.row(0), *scale = V + 2 * nc, *N = scale + 2 * nc;
   const R Dw = ring::to_common_denominator<R>(
       3 * nc + nt, [&](Index i) -> const Q& { return i < 3 * nc ? x(i) : p.theta_dot(i - 3 * nc); }, W);
   for (Index r = 0; r < 2 * nc; ++r) V[r] = r < nc ? W[r] : ring::sub(W[r], W[r + nc]);
@@ -146,7 +147,7 @@ std::optional<PhysicalSolution> velocities_in(const QuasistaticProblem& p, const
   velocity_rows<R>(g, W + 3 * nc, M, scale);
   for (Index r = 0; r < 2 * nc; ++r) M[r * w + m] = ring::add(M[r * w + m], ring::mul(scale[r], V[r]));
   R d;
-  const exact::SolutionKind kind = exact::unique_solution(M, 2 * nc, m, N, d);
+  const exact::SolutionKind kind = velocity.solve(N, d);
   if (kind == exact::SolutionKind::kInconsistent) return std::nullopt;
   if (kind == exact::SolutionKind::kUnique) {
     set_generalized_velocities(p, N, d, W + 3 * nc, Dw, s);
@@ -177,13 +178,14 @@ bool pattern_velocities_in(const QuasistaticProblem& p, const IntegerData<R>& g,
   for (Index r = 0; r < 2 * nc; ++r) k += fixed(r);
   if (k < m) return false;
   // M, scale: velocity_rows with theta_dot = theta / Dt; E the fixed rows; N the solution's numerators; V = (v_n, v_t).
-  Buffer<R> buf(static_cast<std::size_t>(2 * nc * w + 2 * nc + k * w + m + 2 * nc));
-  R *M = buf.data(), *scale = M + 2 * nc * w, *E = scale + 2 * nc, *N = E + k * w, *V = N + m;
+  Buffer<R> buf(static_cast<std::size_t>(2 * nc * w + 2 * nc + m + 2 * nc));
+  exact::IntMatrix<R> fixed_rows(k, w);
+  R *M = buf.data(), *scale = M + 2 * nc * w, *E = fixed_rows.row(0), *N = scale + 2 * nc, *V = N + m;
   velocity_rows<R>(g, g.theta.data(), M, scale);
   for (Index r = 0, e = 0; r < 2 * nc; ++r)
     if (fixed(r)) std::copy(M + r * w, M + (r + 1) * w, E + (e++) * w);
   R d;
-  if (exact::unique_solution(E, k, m, N, d) != exact::SolutionKind::kUnique) return false;  // d > 0
+  if (fixed_rows.solve(N, d) != exact::SolutionKind::kUnique) return false;  // d > 0
   // Dt u = N / d, so v_r = (M_r N - d M_r[m]) / (d scale_r Dt), 0 on the fixed rows: over D = d Dt L with L the
   // lcm of the free rows' scales.
   R L(1);
@@ -281,8 +283,9 @@ std::optional<exact::RationalVector> pattern_forces_in(const QuasistaticProblem&
   if (k > m) return std::nullopt;
   // E = [K | -Dd d'] (m x (k + 1)) with column j of K the unknown's column of P^T times D_j; N the solution.
   const Index w = k + 1;
-  Buffer<R> buf(static_cast<std::size_t>(m * w + 2 * k + 2 * nc));
-  R *E = buf.data(), *D = E + m * w, *N = D + k, *C = N + k;
+  Buffer<R> buf(static_cast<std::size_t>(2 * k + 2 * nc));
+  exact::IntMatrix<R> system(m, w);
+  R *E = system.row(0), *D = buf.data(), *N = D + k, *C = N + k;
   const R *Lp = g.Lp.data(), *Mu = g.mu.data();
   for (Index row = 0; row < m; ++row) E[row * w + k] = ring::sub(R(0), g.d[static_cast<std::size_t>(row)]);
   Index j = 0;
@@ -302,7 +305,7 @@ std::optional<exact::RationalVector> pattern_forces_in(const QuasistaticProblem&
   // K (Dd z) = -Dd d' with z_j = c_j / D_j: c_j = D_j N_j / (d Dd).
   R d;
   if (k > 0) {
-    if (exact::unique_solution(E, m, k, N, d) != exact::SolutionKind::kUnique) return std::nullopt;  // d > 0
+    if (system.solve(N, d) != exact::SolutionKind::kUnique) return std::nullopt;  // d > 0
   } else {
     for (Index row = 0; row < m; ++row)
       if (ring::sign(g.d[static_cast<std::size_t>(row)]) != 0) return std::nullopt;  // no force, but a load

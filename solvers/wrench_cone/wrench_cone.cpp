@@ -1,8 +1,10 @@
 #include "solvers/wrench_cone/wrench_cone.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/int_matrix.h"
 #include "exact/ladder_numbers.h"
 
 namespace contactcert::solvers {
@@ -11,40 +13,20 @@ namespace {
 using Index = Eigen::Index;
 namespace rg = exact::ring;
 
-// Fraction-free Gauss-Jordan elimination on the ring rows [P | K] of P g = K z (d columns of P, k of
-// K), every row kept primitive (a positive multiple of the row of rref): the columns of P give
-// T P = [P1; 0] and T K = [K1; K2]; continuing in the columns of K on the rows below leaves a basis of
-// the row space of K2 and zero rows, which are dropped. (Reducing above the pivots too keeps the
-// entries as small as those of rref.)
+// Row echelon form of the ring rows [P | K] of P g = K z (d columns of P, k of K), rows primitive (IntMatrix): the
+// columns of P give T P = [P1; 0] and T K = [K1; K2]; continuing in the columns of K on the rows below leaves a basis
+// of the row space of K2 and zero rows, which are dropped. (Reducing above the pivots too keeps the entries as small
+// as those of reduced row echelon form.)
 template <class R>
 void reduce_rows(std::vector<std::vector<R>>& rows, Index d, Index k) {
   const Index m = static_cast<Index>(rows.size()), w = d + k;
-  std::vector<R> tmp(static_cast<std::size_t>(w));
-  // Pivots column c on the rows from `top` down and clears it in the rows from `first` on; false if
-  // the column is zero from `top` down.
-  auto eliminate = [&](Index c, Index first, Index top) {
-    const auto uc = static_cast<std::size_t>(c), ut = static_cast<std::size_t>(top);
-    std::size_t p = rows.size();
-    for (std::size_t i = ut; i < rows.size(); ++i)
-      if (rg::sign(rows[i][uc]) != 0 && (p == rows.size() || rg::better_pivot(rows[i][uc], rows[p][uc]))) p = i;
-    if (p == rows.size()) return false;
-    rows[ut].swap(rows[p]);
-    for (std::size_t i = static_cast<std::size_t>(first); i < rows.size(); ++i) {
-      if (i == ut || rg::sign(rows[i][uc]) == 0) continue;
-      // row_i <- piv * row_i - row_i[c] * row_top: zero in column c.
-      const R piv = rows[ut][uc], f = rows[i][uc];
-      rg::combine(rows[ut].data(), piv, rows[i].data(), f, tmp.data(), w);
-      rows[i].swap(tmp);
-      rows[i][uc] = R(0);
-      rg::normalize(rows[i].data(), w);
-    }
-    return true;
-  };
-  Index r = 0;
-  for (Index c = 0; c < d && r < m; ++c) r += eliminate(c, 0, r) ? 1 : 0;
-  Index rank = r;  // rows [r, rank) will be a basis of the row space of K2
-  for (Index c = d; c < w && rank < m; ++c) rank += eliminate(c, r, rank) ? 1 : 0;
+  exact::IntMatrix<R> E(m, w);
+  for (Index i = 0; i < m; ++i)
+    std::move(rows[static_cast<std::size_t>(i)].begin(), rows[static_cast<std::size_t>(i)].end(), E.row(i));
+  const auto r = static_cast<Index>(E.echelon(0, 0, d).size());
+  const Index rank = r + static_cast<Index>(E.echelon(r, d, w).size());
   rows.resize(static_cast<std::size_t>(rank));
+  for (Index i = 0; i < rank; ++i) std::move(E.row(i), E.row(i) + w, rows[static_cast<std::size_t>(i)].begin());
 }
 
 // The reduced ring rows as K z = P g over T.

@@ -5,7 +5,6 @@
 
 #include <cmath>
 
-#include "exact/bareiss.h"
 #include "exact/integer_system.h"
 #include "exact/rational_reconstruction.h"
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <random>
 
-#include "exact/bareiss.h"
+#include "exact/integer_system.h"
 #include "exact/json_input.h"
 #include "exact/rounded_check.h"
 #include "solvers/ucp/certificate.h"

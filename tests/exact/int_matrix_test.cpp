@@ -1,0 +1,124 @@
+// IntMatrix, the one fraction-free elimination: row echelon form with primitive rows, rank, kernel, make-primitive
+// and the unique solution, in Int128 with the restart in GMP integers on overflow.
+#include "exact/int_matrix.h"
+
+#include <gtest/gtest.h>
+
+namespace contactcert::exact {
+namespace {
+
+using Index = Eigen::Index;
+
+template <class R>
+IntMatrix<R> matrix(Index rows, Index cols, std::initializer_list<long> entries) {
+  IntMatrix<R> M(rows, cols);
+  Index at = 0;
+  for (long e : entries) {
+    ring::from_integer(e, M(at / cols, at % cols));
+    ++at;
+  }
+  return M;
+}
+
+template <class R>
+Z row_gcd(const IntMatrix<R>& M, Index i) {
+  Z g = 0;
+  for (Index j = 0; j < M.cols(); ++j) g = gcd(g, ring::to_field<Z>(M(i, j)));
+  return g;
+}
+
+// A z = 0 for every row z of K (A's entries as given, before any scaling).
+template <class R>
+void expect_kernel(const Mat<Q>& A, const IntMatrix<R>& K) {
+  for (Index r = 0; r < K.rows(); ++r)
+    for (Index i = 0; i < A.rows(); ++i) {
+      Q s = 0;
+      for (Index j = 0; j < A.cols(); ++j) s += A(i, j) * ring::to_field<Q>(K(r, j));
+      EXPECT_EQ(s, 0) << "kernel row " << r << ", row " << i;
+    }
+}
+
+TEST(IntMatrix, MakePrimitiveKeepsSignsAndZeroRows) {
+  IntMatrix<Int128> M = matrix<Int128>(3, 4, {6, -4, 0, 10, 0, 0, 0, 0, -6, 4, 9, -3});
+  M.make_primitive();
+  // gcd(6, 4, 9, 3) = 1: the last row is unchanged.
+  const IntMatrix<Int128> want = matrix<Int128>(3, 4, {3, -2, 0, 5, 0, 0, 0, 0, -6, 4, 9, -3});
+  for (Index i = 0; i < 3; ++i)
+    for (Index j = 0; j < 4; ++j) EXPECT_TRUE(M(i, j) == want(i, j)) << i << "," << j;
+}
+
+TEST(IntMatrix, EchelonRankAndPrimitiveRows) {
+  // Row 2 = row 0 + 2 row 1: rank 2, pivots in columns 0 and 1 (column 2 = column 0 + column 1 in every row).
+  IntMatrix<Z> M = matrix<Z>(3, 4, {2, 4, 6, 8, 1, -1, 0, 3, 4, 2, 6, 14});
+  EXPECT_EQ(M.rank(), 2);
+  const std::vector<Index> pivots = M.echelon();
+  ASSERT_EQ(pivots, (std::vector<Index>{0, 1}));
+  for (Index r = 0; r < 2; ++r) {
+    EXPECT_EQ(row_gcd(M, r), 1) << r;
+    EXPECT_EQ(M(r, 1 - r), 0) << r;  // Gauss-Jordan: zero in the other pivot column
+  }
+  for (Index j = 0; j < 4; ++j) EXPECT_EQ(M(2, j), 0);
+  // Reduced row echelon form, row over pivot: [1 0 1 10/3; 0 1 1 1/3].
+  EXPECT_EQ(Q(M(0, 3)) / Q(M(0, 0)), Q(10, 3));
+  EXPECT_EQ(Q(M(1, 3)) / Q(M(1, 1)), Q(1, 3));
+}
+
+TEST(IntMatrix, KernelIsPrimitiveWithPositiveFreeEntries) {
+  Mat<Q> A(2, 4);
+  A << 2, 4, 6, 8, 1, -1, 0, 3;
+  const IntMatrix<Int128> M =
+      IntMatrix<Int128>::primitive_rows(A.rows(), A.cols(), [&](Index i, Index j) -> const Q& { return A(i, j); });
+  const IntMatrix<Int128> K = M.kernel();
+  ASSERT_EQ(K.rows(), 2);
+  expect_kernel(A, K);
+  // Free columns 2 and 3: (-1, -1, 1, 0) and (-10, -1, 0, 3).
+  const IntMatrix<Int128> want = matrix<Int128>(2, 4, {-1, -1, 1, 0, -10, -1, 0, 3});
+  for (Index r = 0; r < 2; ++r)
+    for (Index j = 0; j < 4; ++j) EXPECT_TRUE(K(r, j) == want(r, j)) << r << "," << j;
+}
+
+TEST(IntMatrix, SolveUniqueRankDeficientInconsistent) {
+  Int128 N[2], d;
+  // x + 2y = 3, 2x + 4y = 6, x = 1: x = y = 1, d > 0.
+  IntMatrix<Int128> M = matrix<Int128>(3, 3, {1, 2, 3, 2, 4, 6, 1, 0, 1});
+  ASSERT_EQ(M.solve(N, d), SolutionKind::kUnique);
+  EXPECT_TRUE(d > 0 && N[0] == d && N[1] == d);
+  M = matrix<Int128>(3, 3, {1, 2, 3, 2, 4, 7, 1, 0, 1});
+  EXPECT_EQ(M.solve(N, d), SolutionKind::kInconsistent);
+  M = matrix<Int128>(2, 3, {1, 2, 3, 2, 4, 6});
+  EXPECT_EQ(M.solve(N, d), SolutionKind::kRankDeficient);
+}
+
+// Entries near 2^62: after the first elimination step they are near 2^67 and the second step's products need about
+// 134 bits, so Int128 throws and with_exact_ring
+// restarts in GMP integers, with the kernel Z gives directly.
+TEST(IntMatrix, Int128OverflowRestartsInGmpAndAgrees) {
+  const Z big = Z(1) << 62;
+  Mat<Q> A(3, 4);
+  A << Q(big + 1), Q(big - 3), Q(big + 7), Q(5), Q(big - 11), Q(big + 13), Q(big - 17), Q(-2), Q(big + 19), Q(big - 23),
+      Q(big + 29), Q(3);
+  const auto kernel_in = [&]<class R>() {
+    return IntMatrix<R>::primitive_rows(A.rows(), A.cols(), [&](Index i, Index j) -> const Q& { return A(i, j); })
+        .kernel();
+  };
+  EXPECT_THROW(kernel_in.operator()<Int128>(), RingOverflow);
+  int rings = 0;
+  const IntMatrix<Z> K = with_exact_ring<Q, Int128>([&]<class R>() {
+    ++rings;
+    const IntMatrix<R> k = kernel_in.template operator()<R>();
+    IntMatrix<Z> out(k.rows(), k.cols());
+    for (Index r = 0; r < k.rows(); ++r)
+      for (Index j = 0; j < k.cols(); ++j) out(r, j) = ring::to_field<Z>(k(r, j));
+    return out;
+  });
+  EXPECT_EQ(rings, 2);
+  const IntMatrix<Z> direct = kernel_in.operator()<Z>();
+  ASSERT_EQ(K.rows(), 1);
+  for (Index j = 0; j < 4; ++j) EXPECT_EQ(K(0, j), direct(0, j));
+  EXPECT_EQ(row_gcd(K, 0), 1);
+  EXPECT_GT(sgn(K(0, 3)), 0);
+  expect_kernel(A, K);
+}
+
+}  // namespace
+}  // namespace contactcert::exact
