@@ -167,7 +167,7 @@ void adaptive_table(int repeats, const std::string& filter) {
                                                 [&] { an = run(bare, Method::kComplete, Arith::kAdaptive); }});
     std::printf("%-22s %-9s %9.4f %9.4f %9.4f %9.4f %-9s %8ld %11.2f %11.2f%s\n", c.name.c_str(), status_name(a.status),
                 1e3 * t.median[0], 1e3 * t.median[1], 1e3 * t.median[2], 1e3 * t.median[3], a.decided_by.c_str(),
-                a.repaired_leaves, t.ratio[2], t.ratio[3],
+                a.leaves.repaired, t.ratio[2], t.ratio[3],
                 a.status == v.status ? "" : "  VERDICT DIFFERS FROM VERIFIED");
   }
 }
