@@ -141,12 +141,14 @@ TEST(UcpAdaptive, LeavesAreProvenByTheirRoundedFarkasVectorsElseByAnExactLp) {
   ASSERT_EQ(good.result.status, UcpStatus::kJammed);
   EXPECT_EQ(good.result.counters.lps, 0);
   EXPECT_EQ(good.leaves.repaired, 0);
+  EXPECT_EQ(good.leaves.rounded, good.leaves.total() - good.leaves.reused);
   expect_valid_jammed_certificate(p, good.result);
   // Float vectors that prove nothing (wrong sign): each leaf falls back to an exact face LP.
   ProvenTree bad = prove_leaves(p.ucp, tiny_gap_tree(-1, 1), std::nullopt);
   ASSERT_EQ(bad.result.status, UcpStatus::kJammed);
   EXPECT_EQ(bad.result.counters.lps, 2);
   EXPECT_EQ(bad.leaves.repaired, 0);
+  EXPECT_EQ(bad.leaves.lp, 2);
   expect_valid_jammed_certificate(p, bad.result);
 }
 
