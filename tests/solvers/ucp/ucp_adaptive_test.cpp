@@ -262,5 +262,22 @@ TEST(UcpAdaptive, VertexOfDataSet1IsSolvedIn128BitsWithoutOverflow) {
   EXPECT_EQ(p.ucp.X.A * full, p.ucp.X.b);
 }
 
+TEST(UcpAdaptive, LeavesOfALargeJammedTreeAreProvenFromTheirBasesWithoutAnLp) {
+  // nc = 40, seed 4 (section 5 generator, as `ucp --generate random --nc 40 --seed 4`): 26 float leaves, most of
+  // whose rounded vectors fail; each basis system (X's rows: sparse but for the columns of P's pivots) is
+  // solved by singleton elimination and a small core, with no exact face LP.
+  std::mt19937_64 rng(4);
+  RandomProblemOptions o;
+  o.nc = 40;
+  const UcpProblem p = generate_random_problem(o, rng);
+  const UcpReport v = solve(p, Arith::kVerified);
+  ASSERT_EQ(v.status, UcpStatus::kJammed);
+  ASSERT_TRUE(v.proof);
+  EXPECT_GT(v.leaves.basis, 0);
+  EXPECT_EQ(v.leaves.lp, 0);
+  EXPECT_EQ(v.leaves.total(), static_cast<long>((v.proof->tree.size() + 1) / 2));
+  expect_valid_jammed_certificate(p, *v.proof);
+}
+
 }  // namespace
 }  // namespace contactcert::solvers::ucp
