@@ -1,7 +1,8 @@
 // Table 1 of Pang, Trinkle, Lo in spirit, and the speed targets of the UCP solver.
 //   ucp_bench [--quick]
 //   ucp_bench --adaptive [REPEATS [FILTER]]   (only the --arith adaptive table of docs/precision.md; FILTER: the
-//                                            problems whose name contains it)
+//                                            problems whose name contains it; "rounded": leaves of a jammed float
+//                                            tree proven by rounding / all its leaves)
 //   ucp_bench --recovery [REPEATS]           (only the exact physical recovery and the check of (2)-(10))
 // Prints, for twenty random problems with the paper's nc, mu range, |alpha| and |abar| (section 5 generator,
 // seeded), the pairs, LPs, best x^T y, verdict and time of the paper algorithm, the modified algorithm and the
@@ -154,8 +155,8 @@ void adaptive_table(int repeats, const std::string& filter) {
     cases.push_back({"large nc 40 seed " + std::to_string(s), generate_random_problem(o, rng)});
   }
   std::printf("CPU ms per solve_ucp call, median of %d interleaved rounds; ratios to float paired by round\n", repeats);
-  std::printf("%-22s %-9s %9s %9s %9s %9s %-9s %8s %11s %11s\n", "problem", "verdict", "float", "verified", "adaptive",
-              "generic", "decided", "repaired", "adapt/float", "gener/float");
+  std::printf("%-22s %-9s %9s %9s %9s %9s %-9s %8s %11s %11s %9s\n", "problem", "verdict", "float", "verified",
+              "adaptive", "generic", "decided", "repaired", "adapt/float", "gener/float", "rounded");
   for (const Case& c : cases) {
     if (c.name.find(filter) == std::string::npos) continue;
     UcpProblem bare = c.p;
@@ -165,9 +166,10 @@ void adaptive_table(int repeats, const std::string& filter) {
                                                 [&] { v = run(c.p, Method::kComplete, Arith::kVerified); },
                                                 [&] { a = run(c.p, Method::kComplete, Arith::kAdaptive); },
                                                 [&] { an = run(bare, Method::kComplete, Arith::kAdaptive); }});
-    std::printf("%-22s %-9s %9.4f %9.4f %9.4f %9.4f %-9s %8ld %11.2f %11.2f%s\n", c.name.c_str(), status_name(a.status),
-                1e3 * t.median[0], 1e3 * t.median[1], 1e3 * t.median[2], 1e3 * t.median[3], a.decided_by.c_str(),
-                a.repaired_leaves, t.ratio[2], t.ratio[3],
+    const std::string rounded = std::to_string(a.leaves.rounded) + "/" + std::to_string(a.leaves.total());
+    std::printf("%-22s %-9s %9.4f %9.4f %9.4f %9.4f %-9s %8ld %11.2f %11.2f %9s%s\n", c.name.c_str(),
+                status_name(a.status), 1e3 * t.median[0], 1e3 * t.median[1], 1e3 * t.median[2], 1e3 * t.median[3],
+                a.decided_by.c_str(), a.leaves.repaired, t.ratio[2], t.ratio[3], rounded.c_str(),
                 a.status == v.status ? "" : "  VERDICT DIFFERS FROM VERIFIED");
   }
 }

@@ -93,6 +93,14 @@ json ucp_json(const ucp::UcpReport& r, const std::string& certificate) {
     j["nodes"] = r.nodes;
     j["learned_prunes"] = r.learned_prunes;
   }
+  if (const ucp::LeafProofs& l = r.leaves; l.total() > 0)
+    j["leaf_proofs"] = {{"leaves", l.total()},
+                        {"reused", l.reused},
+                        {"rounded", l.rounded},
+                        {"basis", l.basis},
+                        {"lp", l.lp},
+                        {"repaired", l.repaired},
+                        {"rounded_share", static_cast<double>(l.rounded) / static_cast<double>(l.total())}};
   if (r.solutions >= 0) {
     j["solutions"] = r.solutions;
     j["solution_modes"] = r.solution_modes;

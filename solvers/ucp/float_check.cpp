@@ -70,7 +70,7 @@ class LeafProver {
         out_.result.status = UcpStatus::kUnknown;
         return false;
       }
-      ++out_.repaired_leaves;
+      ++out_.leaves.repaired;
       out_.result.status = search_subtree(ucp_, *repair_, out_.result, id, zx, zy);
       return out_.result.status == UcpStatus::kJammed;
     }
@@ -98,18 +98,24 @@ class LeafProver {
     for (const Proven& p : proven_[s]) {
       bool covers = true;
       for (Index j : p.negative) covers = covers && zero[static_cast<std::size_t>(j)];
-      if (covers) return p.farkas;
+      if (covers) {
+        ++out_.leaves.reused;
+        return p.farkas;
+      }
     }
     const StandardPolyhedron<Q>& P = s == 0 ? ucp_.X : ucp_.Y;
     const Vec<double>& approx = farkas_[k];
     const std::vector<Index>& basis = out_.result.tree[k].farkas_basis;
     if (approx.size() == P.A.rows()) {
       // The float vector rounded to fractions, else recomputed exactly from its LP's basis.
+      bool rounded = false;
       std::optional<FarkasVector> f = rows_[s].run([&](const auto& system) {
         std::optional<FarkasVector> r = rounded_farkas(system, approx, zero);
+        rounded = r.has_value();
         return r || basis.empty() ? r : basis_farkas(system, approx, basis, zero);
       });
       if (f) {
+        ++(rounded ? out_.leaves.rounded : out_.leaves.basis);
         proven_[s].push_back({f->y, std::move(f->negative)});
         return std::move(f->y);
       }
@@ -117,6 +123,7 @@ class LeafProver {
     const FaceLpResult<Q> r =
         minimize_on_face(make_face(P, zero), Vec<Q>(Vec<Q>::Zero(P.A.cols())), Arith::kVerified, out_.result.counters);
     if (r.status != FaceLpStatus::kEmpty) return std::nullopt;
+    ++out_.leaves.lp;
     Proven p{r.farkas, {}};
     const Vec<Q> g = P.A.transpose() * r.farkas;
     for (Index j = 0; j < g.size(); ++j)

@@ -30,13 +30,23 @@ struct FloatTree {
   std::vector<Vec<double>> farkas;
 };
 
+/// How prove_leaves proved the leaves of a float tree, one count per way (in the order it tries them).
+struct LeafProofs {
+  long reused = 0;    ///< an earlier leaf's exact Farkas vector covers the leaf's fixings
+  long rounded = 0;   ///< the leaf's float Farkas vector rounded to fractions and checked (rounded_farkas)
+  long basis = 0;     ///< recomputed exactly from the basis of the leaf's float LP (basis_farkas)
+  long lp = 0;        ///< an exact face LP
+  long repaired = 0;  ///< the face was not empty: searched exactly below the leaf
+  long total() const { return reused + rounded + basis + lp + repaired; }
+};
+
 /// The outcome of prove_leaves.
 struct ProvenTree {
   /// kJammed: result.tree is an exact proof; kSolvable: a repaired subtree holds the complementary pair
   /// result.x, result.y; kUnknown: a leaf's face is not empty and no repair was asked for, or the repair ran
   /// out of budget.
   SearchResult<Q> result;
-  long repaired_leaves = 0;  ///< leaves whose face was not empty, searched exactly below
+  LeafProofs leaves;
 };
 
 /// Turns a float search tree into an exact proof: every leaf gets an exact Farkas vector for the face its

@@ -245,7 +245,7 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const RowFact
     }
     ProvenTree proven = prove_leaves(problem.ucp, std::move(ev.tree), repair);
     check.lps += proven.result.counters.lps;
-    r.repaired_leaves = proven.repaired_leaves;
+    r.leaves = proven.leaves;
     if (proven.result.status == UcpStatus::kSolvable) {
       r.status = UcpStatus::kSolvable;
       r.reason = "complete search (below a leaf of the float search tree whose face is not empty)";
@@ -253,7 +253,7 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const RowFact
       r.best_xTy = Q(0);
     } else if (proven.result.status == UcpStatus::kJammed) {
       // As complete_search names it (a repair may have grown a root leaf into a tree).
-      if (proven.repaired_leaves > 0) r.reason = jammed_reason(proven.result.tree);
+      if (proven.leaves.repaired > 0) r.reason = jammed_reason(proven.result.tree);
       proven.result.reason = r.reason;
       r.nodes = proven.result.nodes;
       r.proof = std::move(proven.result);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "exact/arith.h"
+#include "solvers/ucp/float_check.h"
 #include "solvers/ucp/phases.h"
 #include "solvers/ucp/recovery.h"
 #include "solvers/ucp/search.h"
@@ -64,9 +65,9 @@ struct UcpReport {
   /// --arith adaptive: the rung of the precision ladder whose verdict decided ("double", "interval",
   /// "mpfr113", "mpfr256", "exact"); empty otherwise.
   std::string decided_by;
-  /// --arith adaptive, kJammed: leaves of the deciding rung's search tree whose face was not empty in exact
-  /// arithmetic, each re-searched exactly below it (float_check.h).
-  long repaired_leaves = 0;
+  /// --arith adaptive and verified, kJammed by a float rung: how the leaves of its search tree were proven exactly,
+  /// and those whose face was not empty in exact arithmetic, each re-searched exactly below it (float_check.h).
+  LeafProofs leaves;
   /// Wall seconds of the whole run: solve_ucp sets its own (solve + recover + check); a caller that also parses,
   /// builds or writes a certificate covers those too (`contactcert ucp` does).
   double seconds = 0;

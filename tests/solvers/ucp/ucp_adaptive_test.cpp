@@ -140,13 +140,15 @@ TEST(UcpAdaptive, LeavesAreProvenByTheirRoundedFarkasVectorsElseByAnExactLp) {
   ProvenTree good = prove_leaves(p.ucp, tiny_gap_tree(1.0000000000001, -1), std::nullopt);
   ASSERT_EQ(good.result.status, UcpStatus::kJammed);
   EXPECT_EQ(good.result.counters.lps, 0);
-  EXPECT_EQ(good.repaired_leaves, 0);
+  EXPECT_EQ(good.leaves.repaired, 0);
+  EXPECT_EQ(good.leaves.rounded, good.leaves.total() - good.leaves.reused);
   expect_valid_jammed_certificate(p, good.result);
   // Float vectors that prove nothing (wrong sign): each leaf falls back to an exact face LP.
   ProvenTree bad = prove_leaves(p.ucp, tiny_gap_tree(-1, 1), std::nullopt);
   ASSERT_EQ(bad.result.status, UcpStatus::kJammed);
   EXPECT_EQ(bad.result.counters.lps, 2);
-  EXPECT_EQ(bad.repaired_leaves, 0);
+  EXPECT_EQ(bad.leaves.repaired, 0);
+  EXPECT_EQ(bad.leaves.lp, 2);
   expect_valid_jammed_certificate(p, bad.result);
 }
 
@@ -159,7 +161,7 @@ TEST(UcpAdaptive, ALeafWhoseFaceIsNotEmptyIsRepairedByAnExactSearchBelowIt) {
   EXPECT_EQ(prove_leaves(jammed.ucp, root, std::nullopt).result.status, UcpStatus::kUnknown);
   ProvenTree repaired = prove_leaves(jammed.ucp, root, SearchOptions{});
   ASSERT_EQ(repaired.result.status, UcpStatus::kJammed);
-  EXPECT_EQ(repaired.repaired_leaves, 1);
+  EXPECT_EQ(repaired.leaves.repaired, 1);
   EXPECT_GE(repaired.result.tree.size(), 3u);
   expect_valid_jammed_certificate(jammed, repaired.result);
   // The same wrong leaf on a solvable problem (eps = -1/3: x = (1/3, 0), y = (0, 1)): the repair finds the
@@ -167,7 +169,7 @@ TEST(UcpAdaptive, ALeafWhoseFaceIsNotEmptyIsRepairedByAnExactSearchBelowIt) {
   const UcpProblem solvable = tiny_gap(Q(-1, 3));
   ProvenTree found = prove_leaves(solvable.ucp, root, SearchOptions{});
   ASSERT_EQ(found.result.status, UcpStatus::kSolvable);
-  EXPECT_EQ(found.repaired_leaves, 1);
+  EXPECT_EQ(found.leaves.repaired, 1);
   EXPECT_EQ(solvable.ucp.X.A * found.result.x, solvable.ucp.X.b);
   EXPECT_EQ(solvable.ucp.Y.A * found.result.y, solvable.ucp.Y.b);
   EXPECT_EQ(found.result.x.dot(found.result.y), 0);
@@ -208,7 +210,7 @@ TEST(UcpAdaptive, PaperDataSetsAreDecidedInDoubleWithoutARepairedLeaf) {
     expect_certified_like_exact(p, what);
     const UcpReport a = solve(p, Arith::kAdaptive);
     EXPECT_EQ(a.decided_by, "double") << what;
-    EXPECT_EQ(a.repaired_leaves, 0) << what;
+    EXPECT_EQ(a.leaves.repaired, 0) << what;
   }
 }
 
@@ -258,6 +260,23 @@ TEST(UcpAdaptive, VertexOfDataSet1IsSolvedIn128BitsWithoutOverflow) {
   Vec<Q> full = Vec<Q>::Zero(9);
   for (std::size_t t = 0; t < support.size(); ++t) full(support[t]) = (*x)(static_cast<Eigen::Index>(t));
   EXPECT_EQ(p.ucp.X.A * full, p.ucp.X.b);
+}
+
+TEST(UcpAdaptive, LeavesOfALargeJammedTreeAreProvenFromTheirBasesWithoutAnLp) {
+  // nc = 40, seed 4 (section 5 generator, as `ucp --generate random --nc 40 --seed 4`): 26 float leaves, most of
+  // whose rounded vectors fail; each basis system (X's rows: sparse but for the columns of P's pivots) is
+  // solved by singleton elimination and a small core, with no exact face LP.
+  std::mt19937_64 rng(4);
+  RandomProblemOptions o;
+  o.nc = 40;
+  const UcpProblem p = generate_random_problem(o, rng);
+  const UcpReport v = solve(p, Arith::kVerified);
+  ASSERT_EQ(v.status, UcpStatus::kJammed);
+  ASSERT_TRUE(v.proof);
+  EXPECT_GT(v.leaves.basis, 0);
+  EXPECT_EQ(v.leaves.lp, 0);
+  EXPECT_EQ(v.leaves.total(), static_cast<long>((v.proof->tree.size() + 1) / 2));
+  expect_valid_jammed_certificate(p, *v.proof);
 }
 
 }  // namespace
