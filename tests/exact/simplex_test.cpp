@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "exact/verified_lp.h"
 #include "tests/exact/lp_expectations.h"
 #include "tests/exact/random_lp.h"
 #include "tests/reference/cdd_lp.h"
@@ -189,6 +190,65 @@ TEST(Simplex, PivotLimitIsAStatus) {
   const LpResult<Q> o = solve_lp_from_tableau(p, *opt, {.warm_basis = {}, .max_pivots = 0});
   ASSERT_EQ(o.status, LpStatus::kOptimal);
   EXPECT_EQ(o.value, q("-14/5"));
+}
+
+// The feasible tableau of `basis` priced by p's objective (throws if the basis is not primal feasible).
+SimplexTableau<Q> priced_tableau(const LpProblem<Q>& p, const std::vector<Eigen::Index>& basis) {
+  SimplexTableau<Q> tab = feasible_tableau(p, basis).value();
+  tab.set_objective(p.objective());
+  return tab;
+}
+
+// The basis of a feasible tableau decides the LP as it stands when it is optimal, or when the column the
+// pricing rule enters has no blocking row (an unbounded edge: the verified LP accepts such a float basis with no
+// exact pivot, as the zero-pivot phase 2 it replaces did); otherwise a pivot is needed.
+TEST(Simplex, DecideAtBasisOptimalUnboundedOrPivot) {
+  // min -x2 s.t. x1 - x2 + s = 1: at the basis {x1}, x2 prices out with B^-1 a_2 = -1 (no blocking row).
+  const LpProblem<Q> u = lp({{1, -1, 1}}, {1}, {0, -1, 0});
+  const SimplexTableau<Q> tu = priced_tableau(u, {0});
+  EXPECT_FALSE(is_optimal_basis(tu, u.is_free));
+  const std::optional<LpResult<Q>> ru = decide_at_basis(u, tu);
+  ASSERT_TRUE(ru.has_value());
+  EXPECT_EQ(ru->status, LpStatus::kUnbounded);
+  EXPECT_EQ(ru->pivots, 0);
+  EXPECT_EQ(ru->unbounded_column, 1);
+  EXPECT_TRUE(verify_ray(u, ru->ray));
+  // The same as phase 2 with no pivot allowed.
+  const LpResult<Q> zero = solve_lp_from_tableau(u, tu, {.warm_basis = {}, .max_pivots = 0});
+  EXPECT_EQ(zero.status, LpStatus::kUnbounded);
+  EXPECT_EQ(zero.ray, ru->ray);
+
+  // min -x1 - x2 s.t. x1 + 2 x2 <= 4, 3 x1 + x2 <= 6: the slack basis needs a pivot, {x1, x2} is optimal.
+  const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
+  const SimplexTableau<Q> slack = priced_tableau(p, {2, 3});
+  EXPECT_FALSE(is_optimal_basis(slack, p.is_free));
+  EXPECT_FALSE(decide_at_basis(p, slack).has_value());
+  const SimplexTableau<Q> opt = priced_tableau(p, {0, 1});
+  EXPECT_TRUE(is_optimal_basis(opt, p.is_free));
+  const std::optional<LpResult<Q>> ro = decide_at_basis(p, opt);
+  ASSERT_TRUE(ro.has_value());
+  EXPECT_EQ(ro->status, LpStatus::kOptimal);
+  EXPECT_EQ(ro->value, q("-14/5"));
+  EXPECT_TRUE(verify_optimal(p, ro->x, ro->duals));
+  // {x2, s1} has x1 = 0, x2 = 6, s1 = 4 - 12 < 0: not primal feasible.
+  EXPECT_FALSE(feasible_tableau(p, {1, 2}).has_value());
+}
+
+// A deadline that has passed stops the simplex before its first pivot with the status kTimeLimit (no
+// exception), in Q, in double and in the verified LP.
+TEST(Simplex, TimeLimitIsAStatus) {
+  const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
+  LpOptions passed;
+  passed.deadline = Deadline::after(1e-9);
+  while (!passed.deadline.expired()) {
+  }
+  const LpResult<Q> r = solve_lp<Q>(p, passed);
+  EXPECT_EQ(r.status, LpStatus::kTimeLimit);
+  EXPECT_EQ(r.pivots, 0);
+  EXPECT_EQ(solve_lp<double>(to_double(p), passed).status, LpStatus::kTimeLimit);
+  EXPECT_EQ(solve_lp_verified(p, passed).status, LpStatus::kTimeLimit);
+  // Without a limit the same LP is solved.
+  EXPECT_EQ(solve_lp<Q>(p).status, LpStatus::kOptimal);
 }
 
 // 1500 seeded random LPs, many degenerate, against cddlib's exact LP: same status, same optimal value, and
