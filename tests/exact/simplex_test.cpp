@@ -37,7 +37,7 @@ LpProblem<Q> lp(std::initializer_list<std::initializer_list<Q>> A, std::initiali
 TEST(Simplex, TinyOptimalByHand) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
   for (PivotRule rule : {PivotRule::kBland, PivotRule::kDantzigThenBland}) {
-    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 100, .rule = rule});
+    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 100, .rule = rule, .deadline = {}});
     ASSERT_EQ(r.status, LpStatus::kOptimal);
     EXPECT_EQ(r.value, q("-14/5"));
     EXPECT_EQ(r.x(0), q("8/5"));
@@ -94,19 +94,22 @@ TEST(Simplex, BealeCyclingExampleTerminates) {
       lp({{q("1/4"), -60, q("-1/25"), 9, 1, 0, 0}, {q("1/2"), -90, q("-1/50"), 3, 0, 1, 0}, {0, 0, 1, 0, 0, 0, 1}},
          {0, 0, 1}, {q("-3/4"), 150, q("-1/50"), 6, 0, 0, 0});
   for (PivotRule rule : {PivotRule::kBland, PivotRule::kDantzigThenBland}) {
-    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule});
+    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}});
     ASSERT_EQ(r.status, LpStatus::kOptimal);
     EXPECT_EQ(r.value, q("-1/20"));
     EXPECT_EQ(r.x(0), q("1/25"));
     EXPECT_EQ(r.x(2), 1);
     EXPECT_TRUE(verify_optimal(p, r.x, r.duals));
-    const LpResult<double> f = solve_lp<double>(to_double(p), {.warm_basis = {}, .max_pivots = 10000, .rule = rule});
+    const LpResult<double> f =
+        solve_lp<double>(to_double(p), {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}});
     ASSERT_EQ(f.status, LpStatus::kOptimal);
     EXPECT_NEAR(f.value, -0.05, 1e-12);
   }
   // Starting from the slack basis, the cycle of Beale's example is reached immediately.
-  const LpResult<Q> warm = solve_lp<Q>(
-      p, {.warm_basis = std::vector<Eigen::Index>{4, 5, 6}, .max_pivots = 10000, .rule = PivotRule::kDantzigThenBland});
+  const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{4, 5, 6},
+                                           .max_pivots = 10000,
+                                           .rule = PivotRule::kDantzigThenBland,
+                                           .deadline = {}});
   EXPECT_EQ(warm.value, q("-1/20"));
 }
 
@@ -152,11 +155,11 @@ TEST(Simplex, RedundantRowsGiveABasisOfRankSize) {
 TEST(Simplex, WarmStartFromTheOptimalBasisNeedsNoPivot) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
   const LpResult<Q> cold = solve_lp<Q>(p);
-  const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = cold.basis});
+  const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = cold.basis, .deadline = {}});
   EXPECT_EQ(warm.pivots, 0);
   EXPECT_EQ(warm.value, cold.value);
   // An infeasible warm basis falls back to phase 1 and still finds the optimum.
-  const LpResult<Q> bad = solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{0, 3}});
+  const LpResult<Q> bad = solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{0, 3}, .deadline = {}});
   EXPECT_EQ(bad.value, cold.value);
   // The tableau gives access to pivoting.
   std::optional<SimplexTableau<Q>> tab = SimplexTableau<Q>::from_basis(p.A, p.b, {2, 3});
@@ -171,7 +174,7 @@ TEST(Simplex, WarmStartFromTheOptimalBasisNeedsNoPivot) {
 
 TEST(Simplex, PivotBudgetThrows) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
-  EXPECT_THROW(solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 0}), BudgetExceeded);
+  EXPECT_THROW(solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 0, .deadline = {}}), BudgetExceeded);
 }
 
 // The pivot limit is a status of the warm-started phase 2 (the verified LP asks it whether a float basis is
@@ -180,14 +183,14 @@ TEST(Simplex, PivotLimitIsAStatus) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
   std::optional<SimplexTableau<Q>> slack = SimplexTableau<Q>::from_basis(p.A, p.b, {2, 3});
   ASSERT_TRUE(slack.has_value());
-  const LpResult<Q> r = solve_lp_from_tableau(p, *slack, {.warm_basis = {}, .max_pivots = 0});
+  const LpResult<Q> r = solve_lp_from_tableau(p, *slack, {.warm_basis = {}, .max_pivots = 0, .deadline = {}});
   EXPECT_EQ(r.status, LpStatus::kPivotLimit);
   EXPECT_EQ(r.pivots, 0);
   EXPECT_THROW(check_pivot_budget(r.status, {}), BudgetExceeded);
   // At the optimal basis (x1 = 8/5, x2 = 6/5) no pivot is needed.
   std::optional<SimplexTableau<Q>> opt = SimplexTableau<Q>::from_basis(p.A, p.b, {0, 1});
   ASSERT_TRUE(opt.has_value());
-  const LpResult<Q> o = solve_lp_from_tableau(p, *opt, {.warm_basis = {}, .max_pivots = 0});
+  const LpResult<Q> o = solve_lp_from_tableau(p, *opt, {.warm_basis = {}, .max_pivots = 0, .deadline = {}});
   ASSERT_EQ(o.status, LpStatus::kOptimal);
   EXPECT_EQ(o.value, q("-14/5"));
 }
@@ -214,7 +217,7 @@ TEST(Simplex, DecideAtBasisOptimalUnboundedOrPivot) {
   EXPECT_EQ(ru->unbounded_column, 1);
   EXPECT_TRUE(verify_ray(u, ru->ray));
   // The same as phase 2 with no pivot allowed.
-  const LpResult<Q> zero = solve_lp_from_tableau(u, tu, {.warm_basis = {}, .max_pivots = 0});
+  const LpResult<Q> zero = solve_lp_from_tableau(u, tu, {.warm_basis = {}, .max_pivots = 0, .deadline = {}});
   EXPECT_EQ(zero.status, LpStatus::kUnbounded);
   EXPECT_EQ(zero.ray, ru->ray);
 
@@ -260,7 +263,7 @@ TEST(Simplex, RandomLpsAgreeWithCddlibExactly) {
     const LpProblem<Q> p = testing::random_lp(rng);
     const reference::CddLpResult ref = reference::cdd_solve_lp(p);
     const PivotRule rule = t % 2 ? PivotRule::kBland : PivotRule::kDantzigThenBland;
-    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule});
+    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}});
     testing::expect_certified_like(p, r, ref.status, ref.value, t);
     ++counts[static_cast<int>(r.status)];
   }
