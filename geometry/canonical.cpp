@@ -1,6 +1,7 @@
 #include "geometry/canonical.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "exact/fraction_free.h"
@@ -13,8 +14,7 @@ namespace {
 using Index = Eigen::Index;
 using exact::is_zero;
 
-// The row's canonical positive multiple: primitive integers (Q), scaled by a power of two to largest entry
-// in [1, 2) (a float T, exact/float_ring.h).
+// Primitive integer row (Q) / row with max |entry| = 1 (double); same direction.
 void normalize_row(std::vector<Q>& v) {
   exact::with_exact_ring<Q>([&]<class R>() {
     std::vector<R> r(v.size());
@@ -22,6 +22,13 @@ void normalize_row(std::vector<Q>& v) {
     for (size_t i = 0; i < v.size(); ++i) v[i] = exact::ring::to_field<Q>(r[i]);
   });
 }
+void normalize_row(std::vector<double>& v) {
+  double m = 0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  if (m > 0)
+    for (double& x : v) x /= m;
+}
+// Other float types (MPFR, intervals): scaled by a power of two (exact/float_ring.h).
 template <class F>
 void normalize_row(std::vector<F>& v) {
   exact::ring::normalize(v.data(), static_cast<Index>(v.size()));

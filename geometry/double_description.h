@@ -59,7 +59,7 @@ ConePair<T> both_forms(const FaceCone<T>& cone, const DdBudget& budget = {});
 
 /// Extreme rays (one per ray modulo the lineality space) and a basis of the lineality space of a cone,
 /// as rows in a ring R of exact/fraction_free.h (std::int64_t, Z or a float type): primitive integers
-/// (a float type: scaled by a power of two to largest entry in [1, 2)).
+/// (unit max-norm in double).
 template <class R>
 struct RingGenerators {
   std::vector<std::vector<R>> rays;
