@@ -228,9 +228,16 @@ ConeCertificateFile cone_certificate_file(const std::string& scene_text, const g
   return out;
 }
 
+// --time-limit stops the double description and the LPs of route project (BudgetExceeded, exit 3).
+geometry::DdBudget cone_budget(const ConeOptions& o) {
+  geometry::DdBudget budget;
+  budget.deadline = exact::Deadline::after(o.common.time_limit);
+  return budget;
+}
+
 int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const solvers::ModeString& mode,
               solvers::Route route) {
-  const solvers::WrenchCone<Q> c = solvers::wrench_cone<Q>(scene, mode, route);
+  const solvers::WrenchCone<Q> c = solvers::wrench_cone<Q>(scene, mode, route, cone_budget(o));
   const geometry::NncForm<Q>& f = c.cone;
   const bool empty = c.status == solvers::ConeStatus::kEmpty;
   const geometry::Point2& com = scene.workpiece.com;
@@ -305,7 +312,7 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
 
 int run_float(const ConeOptions& o, const geometry::PlanarScene& scene, const solvers::ModeString& mode,
               solvers::Route route) {
-  const solvers::WrenchCone<double> c = solvers::wrench_cone<double>(scene, mode, route);
+  const solvers::WrenchCone<double> c = solvers::wrench_cone<double>(scene, mode, route, cone_budget(o));
   const bool empty = c.status == solvers::ConeStatus::kEmpty;
   if (o.common.json) {
     std::cout << cone_json(mode, c, o.route).dump() << "\n";

@@ -83,10 +83,8 @@ inline void mul(double a, double b, double& out) { out = a * b; }
 
 /// An integer-valued element of the field as a ring element (Q: precondition x is an integer;
 /// double: as is).
-inline void from_integer(const Q& x, std::int64_t& out) {
-  if (!mpz_fits_slong_p(x.get_num_mpz_t())) throw RingOverflow{};
-  out = checked(mpz_get_si(x.get_num_mpz_t()));
-}
+inline void from_integer(const Z& x, std::int64_t& out);
+inline void from_integer(const Q& x, std::int64_t& out) { from_integer(x.get_num(), out); }
 inline void from_integer(const Q& x, Z& out) { out = x.get_num(); }
 inline void from_integer(double x, double& out) { out = x; }
 
@@ -164,7 +162,8 @@ inline bool fits_int64(Int128 x) { return static_cast<Int128>(static_cast<std::i
 
 /// Value-returning ring arithmetic for short formulas (std::int64_t, Int128: checked, see above).
 [[gnu::always_inline]] inline Int128 mul(Int128 a, Int128 b) {
-  if (fits_int64(a) && fits_int64(b)) return a * b;  // |a b| <= 2^126: no check (the common case)
+  // |a b| <= 2^126: no check, and one 64 x 64 -> 128-bit multiplication (the common case).
+  if (fits_int64(a) && fits_int64(b)) return Int128(static_cast<std::int64_t>(a)) * static_cast<std::int64_t>(b);
   return mul_wide(a, b);
 }
 inline Int128 add(Int128 a, Int128 b) {
@@ -255,9 +254,14 @@ inline Z lcm(const Z& a, const Z& b) {
 }
 
 /// An integer as a ring element.
+/// std::int64_t: reads GMP's limb (mpz_size, mpz_getlimbn: inline, this runs once per entry when an LP or a
+/// system is scaled to integers); |x| >= 2^63 overflows (INT64_MIN too, as in `checked`).
 inline void from_integer(const Z& x, std::int64_t& out) {
-  if (!mpz_fits_slong_p(x.get_mpz_t())) throw RingOverflow{};
-  out = checked(mpz_get_si(x.get_mpz_t()));
+  mpz_srcptr z = x.get_mpz_t();
+  const mp_limb_t magnitude = mpz_getlimbn(z, 0);  // 0 for x = 0
+  if (mpz_size(z) > 1 || magnitude > static_cast<mp_limb_t>(std::numeric_limits<std::int64_t>::max()))
+    throw RingOverflow{};
+  out = mpz_sgn(z) < 0 ? -static_cast<std::int64_t>(magnitude) : static_cast<std::int64_t>(magnitude);
 }
 inline void from_integer(const Z& x, Z& out) { out = x; }
 /// Int128: reads GMP's limbs (mpz_size, mpz_getlimbn: inline, this runs once per rational read by the

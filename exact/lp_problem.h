@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "exact/arith.h"
+#include "exact/deadline.h"
 #include "exact/number.h"
 
 namespace contactcert::exact {
@@ -28,9 +29,10 @@ struct LpProblem {
   Vec<T> objective() const { return c.size() == 0 ? Vec<T>(Vec<T>::Zero(A.cols())) : c; }
 };
 
-/// How an LP run ended: a verdict with its certificate, or the pivot limit (options.max_pivots) reached before
-/// one (an outcome, as HiGHS's kIterationLimit: the caller decides whether that is a budget to report).
-enum class LpStatus { kOptimal, kInfeasible, kUnbounded, kPivotLimit };
+/// How an LP run ended: a verdict with its certificate, or a budget of LpOptions used up before one: the pivot
+/// limit (max_pivots) or the deadline. These are outcomes, as HiGHS's kIterationLimit and kTimeLimit: the
+/// caller decides whether that is a budget to report (solve_lp reports the pivot limit as BudgetExceeded).
+enum class LpStatus { kOptimal, kInfeasible, kUnbounded, kPivotLimit, kTimeLimit };
 
 /// Which path decided the result (verified_lp.h): the float simplex alone, the exact simplex from scratch,
 /// the float basis checked exactly (no exact pivot), or exact pivots continued from the float basis.
@@ -48,6 +50,9 @@ struct LpOptions {
   /// reports that as BudgetExceeded).
   long max_pivots = 1000000;
   PivotRule rule = PivotRule::kDantzigThenBland;
+  /// Wall clock (a command's --time-limit), tested before each pivot: the run ends with LpStatus::kTimeLimit
+  /// once it has passed.
+  Deadline deadline;
 };
 
 /// Result with evidence. Sign conventions (checked exactly by verify_* in simplex.h):
@@ -60,6 +65,7 @@ struct LpOptions {
 /// - kUnbounded:  x a feasible vertex with its basis; ray d with A d = 0, d_j >= 0 on non-free columns and
 ///                c^T d < 0; unbounded_column = the non-basic column whose pivot found the ray (d of it is 1).
 /// - kPivotLimit: no verdict after options.max_pivots pivots; basis and x are those of the last tableau.
+/// - kTimeLimit:  no verdict when options.deadline passed; basis and x as for kPivotLimit.
 template <class T>
 struct LpResult {
   LpStatus status = LpStatus::kInfeasible;

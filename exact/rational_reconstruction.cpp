@@ -1,52 +1,68 @@
 #include "exact/rational_reconstruction.h"
 
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace contactcert::exact {
 
 namespace {
 
-/// floor(a / b) for b > 0, in 64 bits when both fit (a 128-bit division costs several times more).
-Int128 floor_div(Int128 a, Int128 b) {
-  if (ring::fits_int64(a) && ring::fits_int64(b)) {
-    const auto x = static_cast<std::int64_t>(a), y = static_cast<std::int64_t>(b), q = x / y;
-    return q * y > x ? q - 1 : q;
-  }
-  const Int128 q = a / b;
+/// floor(a / b) for b > 0 in the integer type I (std::int64_t or Int128), in 64 bits when both fit (a 128-bit
+/// division costs several times more).
+template <class I>
+I floor_div(I a, I b) {
+  if constexpr (std::is_same_v<I, Int128>)
+    if (ring::fits_int64(a) && ring::fits_int64(b))
+      return floor_div(static_cast<std::int64_t>(a), static_cast<std::int64_t>(b));
+  const I q = a / b;
   return q * b > a ? q - 1 : q;
+}
+
+/// The first convergent of N / M (M > 0) within max(1, |N / M|) / B, B = kReconstructionBound, as reconstruct
+/// states it. The Euclidean quantities are in I: std::int64_t when N and M fit (the common case, every division
+/// in 64 bits), else Int128; a convergent's p and q are kept in 64 bits and their products formed in 128.
+template <class I>
+std::optional<Fraction> first_convergent(I N, I M) {
+  constexpr std::int64_t B = kReconstructionBound;
+  const I tolerance = std::max(M, N < 0 ? I(-N) : N);  // max(1, |v|) M
+  // Euclid on (num, den) = (N, M): v = [a0; a1, ...], convergents p_i / q_i = (a_i p_{i-1} + p_{i-2}) / (...),
+  // remainders r_i = r_{i-2} - a_i r_{i-1} (r_{-2} = N, r_{-1} = M), and by induction N q_i - M p_i = (-1)^i r_i.
+  I num = N, den = M;
+  std::int64_t p0 = 0, p1 = 1, q0 = 1, q1 = 0;
+  for (;;) {
+    const I a = floor_div(num, den), rest = num - a * den;  // 0 <= rest < den <= M
+    if (q1 > 0 && a > B) return std::nullopt;               // q2 >= a > B
+    // Now |a| < 2^50: a0 = floor(v), or a <= B.
+    const auto a64 = static_cast<std::int64_t>(a);
+    const Int128 q2 = Int128(a64) * q1 + q0;
+    if (q2 > B) return std::nullopt;
+    const Int128 p2 = Int128(a64) * p1 + p0;
+    if (!ring::fits_int64(p2)) return std::nullopt;
+    // |v - p2/q2| <= max(1, |v|) / B  <=>  |N q2 - p2 M| B <= max(M, |N|) q2, and |N q2 - p2 M| = rest.
+    if (Int128(rest) * B <= Int128(tolerance) * q2)
+      return Fraction{static_cast<std::int64_t>(p2), static_cast<std::int64_t>(q2)};
+    num = den, den = rest;
+    p0 = p1, p1 = static_cast<std::int64_t>(p2), q0 = q1, q1 = static_cast<std::int64_t>(q2);
+  }
 }
 
 }  // namespace
 
 std::optional<Fraction> reconstruct(double v) {
-  constexpr Int128 B = kReconstructionBound;
   if (!std::isfinite(v) || std::abs(v) >= 0x1p50) return std::nullopt;
   // Every convergent of v with |v| <= 1/B after the first is 0/1 (the first, -1/1 for v < 0, is too far).
-  if (std::abs(v) <= 1.0 / static_cast<double>(B)) return Fraction{0, 1};
-  // v = N / M exactly, M = 2^k: |N| < 2^53 (or v an integer, |N| < 2^50) and k <= 83 since |v| > 2^-30.
+  if (std::abs(v) <= 1.0 / static_cast<double>(kReconstructionBound)) return Fraction{0, 1};
+  // An integer is its own first convergent (the common case of the LPs' optima and duals).
+  if (v == std::floor(v)) return Fraction{static_cast<std::int64_t>(v), 1};
+  // v = N / 2^k exactly in lowest terms: |N| < 2^53 and 1 <= k <= 83 since v is not an integer and |v| > 2^-30.
   int e = 0;
   const double mantissa = std::frexp(v, &e);  // v = mantissa 2^e, 1/2 <= |mantissa| < 1
-  Int128 N = static_cast<std::int64_t>(std::ldexp(mantissa, 53));
-  int k = 53 - e;
-  if (k < 0) N <<= -k, k = 0;
-  const Int128 M = Int128(1) << k;
-  const Int128 tolerance = std::max(M, N < 0 ? -N : N);  // max(1, |v|) M
-  // Euclid on (num, den) = (N, M): v = [a0; a1, ...], convergents p_i / q_i = (a_i p_{i-1} + p_{i-2}) / (...).
-  Int128 num = N, den = M, p0 = 0, p1 = 1, q0 = 1, q1 = 0;
-  for (;;) {
-    const Int128 a = floor_div(num, den), rest = num - a * den;
-    if (q1 > 0 && a > B) return std::nullopt;  // q2 >= a > B
-    const Int128 q2 = a * q1 + q0;
-    if (q2 > B) return std::nullopt;
-    const Int128 p2 = a * p1 + p0;
-    if (!ring::fits_int64(p2)) return std::nullopt;
-    // |v - p2/q2| <= max(1, |v|) / B  <=>  |N q2 - p2 M| B <= max(M, |N|) q2 (|N q2 - p2 M| <= M).
-    const Int128 error = N * q2 - p2 * M;
-    if ((error < 0 ? -error : error) * B <= tolerance * q2)
-      return Fraction{static_cast<std::int64_t>(p2), static_cast<std::int64_t>(q2)};
-    num = den, den = rest;
-    p0 = p1, p1 = p2, q0 = q1, q1 = q2;
-  }
+  const std::int64_t n = static_cast<std::int64_t>(std::ldexp(mantissa, 53));
+  const int twos = std::min(53 - e, __builtin_ctzll(static_cast<unsigned long long>(n)));
+  const int k = 53 - e - twos;
+  if (k <= 62) return first_convergent<std::int64_t>(n >> twos, std::int64_t(1) << k);
+  return first_convergent<Int128>(n >> twos, Int128(1) << k);
 }
 
 template <class R>

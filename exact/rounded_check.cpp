@@ -24,10 +24,15 @@ std::optional<RoundedVector<R>> rounded_solution(const IntegerSystem<S>& s, cons
                                                  const std::vector<Index>& columns, const std::vector<double>& values) {
   RoundedVector<R> r;
   if (!reconstruct_vector(values, r.X, r.D)) return std::nullopt;
+  // The rows, X and the columns through pointers and the sizes in locals: the inner loop reads no member.
+  const std::size_t k = columns.size();
+  const Index* col = columns.data();
+  const R* X = r.X.data();
   for (Index i = 0; i < s.m; ++i) {
+    const S* a = s.A.data() + i * s.n;
     R acc(0);
-    for (std::size_t t = 0; t < columns.size(); ++t)
-      if (ring::sign(r.X[t]) != 0) acc = ring::add(acc, ring::mul(widen<R>(s.a(i, columns[t])), r.X[t]));
+    for (std::size_t t = 0; t < k; ++t)
+      if (X[t] != 0) acc = ring::add(acc, ring::mul(widen<R>(a[col[t]]), X[t]));
     if (acc != ring::mul(r.D, widen<R>(rhs[static_cast<std::size_t>(i)]))) return std::nullopt;
   }
   return r;
@@ -35,12 +40,15 @@ std::optional<RoundedVector<R>> rounded_solution(const IntegerSystem<S>& s, cons
 
 template <class R, class S>
 std::vector<R> left_product(const IntegerSystem<S>& s, const std::vector<R>& Y) {
-  std::vector<R> t(static_cast<std::size_t>(s.n), R(0));
-  for (Index i = 0; i < s.m; ++i) {
-    const R& yi = Y[static_cast<std::size_t>(i)];
-    if (ring::sign(yi) == 0) continue;
-    for (Index j = 0; j < s.n; ++j)
-      t[static_cast<std::size_t>(j)] = ring::add(t[static_cast<std::size_t>(j)], ring::mul(widen<R>(s.a(i, j)), yi));
+  const Index m = s.m, n = s.n;
+  std::vector<R> t(static_cast<std::size_t>(n), R(0));
+  R* out = t.data();
+  for (Index i = 0; i < m; ++i) {
+    // A copy of a fixed-width y_i (so that the writes to t cannot alias it), a reference to a GMP one.
+    std::conditional_t<std::is_trivially_copyable_v<R>, const R, const R&> yi = Y[static_cast<std::size_t>(i)];
+    if (yi == 0) continue;
+    const S* a = s.A.data() + i * n;
+    for (Index j = 0; j < n; ++j) out[j] = ring::add(out[j], ring::mul(widen<R>(a[j]), yi));
   }
   return t;
 }

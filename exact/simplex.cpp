@@ -21,7 +21,7 @@ using Index = Eigen::Index;
 /// objective moves again (Bland's rule cannot cycle, so every degenerate run ends).
 constexpr long kDegenerateRunBeforeBland = 50;
 
-enum class LoopEnd { kOptimal, kUnbounded, kPivotLimit };
+enum class LoopEnd { kOptimal, kUnbounded, kPivotLimit, kTimeLimit };
 
 struct LoopOutcome {
   LoopEnd end = LoopEnd::kOptimal;
@@ -37,60 +37,77 @@ bool row_is_free(const std::vector<bool>& is_free, Index basic, Index n) {
   return basic < n && column_is_free(is_free, basic);
 }
 
-/// The primal simplex loop on the tableau's current objective: pivots until no column prices out
-/// (optimal), an improving column has no blocking row (unbounded), or max_pivots pivots are done (counted in
-/// `pivots` over both phases). Free basic variables never leave.
+/// A column that prices out: reduced cost d_j < 0 (it increases), or d_j > 0 on a free column (it decreases).
+struct Entering {
+  Index column = -1;  // -1: none, the basis is optimal
+  int direction = 1;
+};
+
+/// Pricing: Bland's rule takes the first column that prices out, Dantzig's the largest |d_j|.
 template <class T>
-LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_free, PivotRule rule, long max_pivots,
+Entering entering_column(const SimplexTableau<T>& tab, const std::vector<bool>& is_free, bool bland) {
+  Entering e;
+  T best_score = T(0);
+  for (Index j = 0; j < tab.cols(); ++j) {
+    if (tab.is_basic(j)) continue;
+    const T& dj = tab.reduced_cost(j);
+    const int sg = exact::sign(dj);
+    if (sg == 0 || (sg > 0 && !column_is_free(is_free, j))) continue;
+    if (bland) return {j, sg > 0 ? -1 : 1};
+    const T score = sg > 0 ? dj : T(-dj);
+    if (e.column < 0 || score > best_score) {
+      e = {j, sg > 0 ? -1 : 1};
+      best_score = score;
+    }
+  }
+  return e;
+}
+
+/// Ratio test: the row whose basic variable blocks the entering column first (ties: the smallest basic index
+/// under Bland's rule, else the better pivot); -1 if none blocks (an unbounded edge). Free basic variables never
+/// leave.
+template <class T>
+Index blocking_row(const SimplexTableau<T>& tab, const std::vector<bool>& is_free, const Entering& e, bool bland) {
+  Index r = -1;
+  T best_ratio = T(0), best_entry = T(0);
+  for (Index i = 0; i < tab.rows(); ++i) {
+    const Index v = tab.basis()[static_cast<size_t>(i)];
+    if (row_is_free(is_free, v, tab.cols())) continue;
+    const T a = e.direction > 0 ? tab.entry(i, e.column) : T(-tab.entry(i, e.column));
+    if (!exact::is_positive(a)) continue;
+    const T ratio = tab.rhs(i) / a;
+    bool take = r < 0;
+    if (!take) {
+      const int cmp = exact::sign(T(ratio - best_ratio));
+      take = cmp < 0 || (cmp == 0 && (bland ? v < tab.basis()[static_cast<size_t>(r)]
+                                            : NumberTraits<T>::better_pivot(a, best_entry)));
+    }
+    if (take) {
+      r = i;
+      best_ratio = ratio;
+      best_entry = a;
+    }
+  }
+  return r;
+}
+
+/// The primal simplex loop on the tableau's current objective: pivots until no column prices out
+/// (optimal), an improving column has no blocking row (unbounded), options.max_pivots pivots are done
+/// (counted in `pivots` over both phases) or options.deadline has passed (tested before each pivot).
+template <class T>
+LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_free, const LpOptions& options,
                          long& pivots) {
-  const Index n = tab.cols();
   long degenerate_run = 0;
   for (;;) {
-    const bool bland = rule == PivotRule::kBland || degenerate_run >= kDegenerateRunBeforeBland;
-    Index s = -1;
-    T best_score = T(0);
-    for (Index j = 0; j < n; ++j) {
-      if (tab.is_basic(j)) continue;
-      const T& dj = tab.reduced_cost(j);
-      const int sg = exact::sign(dj);
-      if (sg == 0 || (sg > 0 && !column_is_free(is_free, j))) continue;
-      if (bland) {
-        s = j;
-        break;
-      }
-      const T score = sg > 0 ? dj : T(-dj);
-      if (s < 0 || score > best_score) {
-        s = j;
-        best_score = score;
-      }
-    }
-    if (s < 0) return {LoopEnd::kOptimal, -1, 1};
-    const int direction = exact::sign(tab.reduced_cost(s)) > 0 ? -1 : 1;
-
-    Index r = -1;
-    T best_ratio = T(0), best_entry = T(0);
-    for (Index i = 0; i < tab.rows(); ++i) {
-      const Index v = tab.basis()[static_cast<size_t>(i)];
-      if (row_is_free(is_free, v, n)) continue;
-      const T a = direction > 0 ? tab.entry(i, s) : T(-tab.entry(i, s));
-      if (!exact::is_positive(a)) continue;
-      const T ratio = tab.rhs(i) / a;
-      bool take = r < 0;
-      if (!take) {
-        const int cmp = exact::sign(T(ratio - best_ratio));
-        take = cmp < 0 || (cmp == 0 && (bland ? v < tab.basis()[static_cast<size_t>(r)]
-                                              : NumberTraits<T>::better_pivot(a, best_entry)));
-      }
-      if (take) {
-        r = i;
-        best_ratio = ratio;
-        best_entry = a;
-      }
-    }
-    if (r < 0) return {LoopEnd::kUnbounded, s, direction};
-    if (pivots >= max_pivots) return {LoopEnd::kPivotLimit, -1, 1};
+    const bool bland = options.rule == PivotRule::kBland || degenerate_run >= kDegenerateRunBeforeBland;
+    const Entering e = entering_column(tab, is_free, bland);
+    if (e.column < 0) return {LoopEnd::kOptimal, -1, 1};
+    const Index r = blocking_row(tab, is_free, e, bland);
+    if (r < 0) return {LoopEnd::kUnbounded, e.column, e.direction};
+    if (pivots >= options.max_pivots) return {LoopEnd::kPivotLimit, -1, 1};
+    if (options.deadline.expired()) return {LoopEnd::kTimeLimit, -1, 1};
     const bool degenerate = exact::is_zero(tab.rhs(r));
-    tab.pivot(r, s);
+    tab.pivot(r, e.column);
     ++pivots;
     degenerate_run = degenerate ? degenerate_run + 1 : 0;
   }
@@ -120,8 +137,8 @@ LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, co
   res.basis = tab.basis();
   res.x = tab.primal();
   const Vec<T> c = problem.objective();
-  if (out.end == LoopEnd::kPivotLimit) {
-    res.status = LpStatus::kPivotLimit;
+  if (out.end == LoopEnd::kPivotLimit || out.end == LoopEnd::kTimeLimit) {
+    res.status = out.end == LoopEnd::kPivotLimit ? LpStatus::kPivotLimit : LpStatus::kTimeLimit;
     return res;
   }
   if (out.end == LoopEnd::kUnbounded) {
@@ -145,11 +162,37 @@ LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, co
 }  // namespace
 
 template <class T>
+std::optional<SimplexTableau<T>> feasible_tableau(const LpProblem<T>& problem, const std::vector<Index>& basis) {
+  std::optional<SimplexTableau<T>> tab = SimplexTableau<T>::from_basis(problem.A, problem.b, basis);
+  for (Index r = 0; tab && r < tab->rows(); ++r)
+    if (exact::is_negative(tab->rhs(r)) && !problem.free(tab->basis()[static_cast<size_t>(r)])) tab.reset();
+  return tab;
+}
+
+template <class T>
 LpResult<T> solve_lp_from_tableau(const LpProblem<T>& problem, SimplexTableau<T> tab, const LpOptions& options) {
   long pivots = 0;
   tab.set_objective(problem.objective());
-  const LoopOutcome out = simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
+  const LoopOutcome out = simplex_loop(tab, problem.is_free, options, pivots);
   return finish(problem, tab, out, pivots);
+}
+
+template <class T>
+bool is_optimal_basis(const SimplexTableau<T>& tableau, const std::vector<bool>& is_free) {
+  return entering_column(tableau, is_free, true).column < 0;
+}
+
+template <class T>
+std::optional<LpResult<T>> decide_at_basis(const LpProblem<T>& problem, SimplexTableau<T> tab,
+                                           const LpOptions& options) {
+  tab.set_objective(problem.objective());
+  if (is_optimal_basis(tab, problem.is_free)) return finish(problem, tab, {LoopEnd::kOptimal, -1, 1}, 0);
+  // Not optimal, yet decided if the column the pricing rule enters has no blocking row: its edge is an
+  // unbounded ray (the outcome of phase 2 before its first pivot).
+  const bool bland = options.rule == PivotRule::kBland;
+  const Entering e = entering_column(tab, problem.is_free, bland);
+  if (blocking_row(tab, problem.is_free, e, bland) >= 0) return std::nullopt;
+  return finish(problem, tab, {LoopEnd::kUnbounded, e.column, e.direction}, 0);
 }
 
 namespace {
@@ -158,20 +201,17 @@ namespace {
 template <class T>
 LpResult<T> run_simplex(const LpProblem<T>& problem, const LpOptions& options) {
   const Index n = problem.cols();
-  if (options.warm_basis) {
-    std::optional<SimplexTableau<T>> tab = SimplexTableau<T>::from_basis(problem.A, problem.b, *options.warm_basis);
-    bool feasible = tab.has_value();
-    for (Index r = 0; feasible && r < tab->rows(); ++r)
-      feasible = !exact::is_negative(tab->rhs(r)) || problem.free(tab->basis()[static_cast<size_t>(r)]);
-    if (feasible) return solve_lp_from_tableau(problem, std::move(*tab), options);
-  }
+  if (options.warm_basis)
+    if (std::optional<SimplexTableau<T>> tab = feasible_tableau(problem, *options.warm_basis))
+      return solve_lp_from_tableau(problem, std::move(*tab), options);
 
   // Phase 1: min sum of artificials of A x + S a = b from the artificial basis.
   SimplexTableau<T> tab = SimplexTableau<T>::artificial_start(problem.A, problem.b);
   tab.set_objective(Vec<T>::Zero(n), T(1));
   long pivots = 0;
-  const LoopOutcome phase1 = simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
-  if (phase1.end == LoopEnd::kPivotLimit) return finish(problem, tab, phase1, pivots);
+  const LoopOutcome phase1 = simplex_loop(tab, problem.is_free, options, pivots);
+  if (phase1.end == LoopEnd::kPivotLimit || phase1.end == LoopEnd::kTimeLimit)
+    return finish(problem, tab, phase1, pivots);
   if (exact::is_positive(tab.objective_value())) {
     LpResult<T> res;
     res.status = LpStatus::kInfeasible;
@@ -198,7 +238,7 @@ LpResult<T> run_simplex(const LpProblem<T>& problem, const LpOptions& options) {
   }
   // Phase 2.
   tab.set_objective(problem.objective());
-  const LoopOutcome out = simplex_loop(tab, problem.is_free, options.rule, options.max_pivots, pivots);
+  const LoopOutcome out = simplex_loop(tab, problem.is_free, options, pivots);
   return finish(problem, tab, out, pivots);
 }
 
@@ -254,6 +294,14 @@ template LpResult<Q> solve_lp<Q>(const LpProblem<Q>&, const LpOptions&);
 template LpResult<double> solve_lp_from_tableau<double>(const LpProblem<double>&, SimplexTableau<double>,
                                                         const LpOptions&);
 template LpResult<Q> solve_lp_from_tableau<Q>(const LpProblem<Q>&, SimplexTableau<Q>, const LpOptions&);
+template std::optional<SimplexTableau<double>> feasible_tableau<double>(const LpProblem<double>&,
+                                                                        const std::vector<Index>&);
+template std::optional<SimplexTableau<Q>> feasible_tableau<Q>(const LpProblem<Q>&, const std::vector<Index>&);
+template bool is_optimal_basis<double>(const SimplexTableau<double>&, const std::vector<bool>&);
+template bool is_optimal_basis<Q>(const SimplexTableau<Q>&, const std::vector<bool>&);
+template std::optional<LpResult<double>> decide_at_basis<double>(const LpProblem<double>&, SimplexTableau<double>,
+                                                                 const LpOptions&);
+template std::optional<LpResult<Q>> decide_at_basis<Q>(const LpProblem<Q>&, SimplexTableau<Q>, const LpOptions&);
 template LpResult<Mpfr> solve_lp<Mpfr>(const LpProblem<Mpfr>&, const LpOptions&);
 template LpResult<Mpfr> solve_lp_from_tableau<Mpfr>(const LpProblem<Mpfr>&, SimplexTableau<Mpfr>, const LpOptions&);
 template LpResult<Interval> solve_lp<Interval>(const LpProblem<Interval>&, const LpOptions&);

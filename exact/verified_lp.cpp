@@ -117,23 +117,26 @@ std::optional<LpResult<Q>> check_infeasible(const LpProblem<Q>& problem, const s
 }
 
 /// Exact pivoting from a float basis: its tableau in Q, then phase 2 (no pivot if the basis is optimal in Q
-/// too; status kPivotLimit when options.max_pivots do not suffice). nullopt if the basis is singular or not
-/// primal feasible in Q.
+/// too; kTimeLimit once options.deadline has passed). nullopt if the basis is singular or not primal feasible
+/// in Q; throws BudgetExceeded after options.max_pivots (check_pivot_budget).
 std::optional<LpResult<Q>> continue_exact(const LpProblem<Q>& problem, const std::vector<Index>& basis,
                                           const LpOptions& options) {
-  std::optional<SimplexTableau<Q>> tab = SimplexTableau<Q>::from_basis(problem.A, problem.b, basis);
-  bool feasible = tab.has_value();
-  for (Index r = 0; feasible && r < tab->rows(); ++r)
-    feasible = sgn(tab->rhs(r)) >= 0 || problem.free(tab->basis()[static_cast<size_t>(r)]);
-  if (!feasible) return std::nullopt;
+  std::optional<SimplexTableau<Q>> tab = feasible_tableau(problem, basis);
+  if (!tab) return std::nullopt;
   LpResult<Q> res = solve_lp_from_tableau(problem, std::move(*tab), options);
+  check_pivot_budget(res.status, options);
   res.decided_by = res.pivots == 0 ? DecidedBy::kFloatBasisCheckedExactly : DecidedBy::kExactContinuedFromFloatBasis;
   return res;
 }
 
-/// res, after check_pivot_budget on its status.
-std::optional<LpResult<Q>> budgeted(std::optional<LpResult<Q>> res, const LpOptions& options) {
-  if (res) check_pivot_budget(res->status, options);
+/// The float basis checked as it stands: optimal in Q, or with an unbounded edge in Q (decide_at_basis).
+/// nullopt if it is singular, not primal feasible, or needs a pivot in Q.
+std::optional<LpResult<Q>> check_basis(const LpProblem<Q>& problem, const std::vector<Index>& basis,
+                                       const LpOptions& options) {
+  std::optional<SimplexTableau<Q>> tab = feasible_tableau(problem, basis);
+  if (!tab) return std::nullopt;
+  std::optional<LpResult<Q>> res = decide_at_basis(problem, std::move(*tab), options);
+  if (res) res->decided_by = DecidedBy::kFloatBasisCheckedExactly;
   return res;
 }
 
@@ -156,12 +159,7 @@ std::optional<LpResult<Q>> check(const LpProblem<Q>& problem, const std::optiona
       return res;
     }
   }
-  if (last) return budgeted(continue_exact(problem, p.basis, options), options);
-  LpOptions no_pivot = options;
-  no_pivot.max_pivots = 0;
-  std::optional<LpResult<Q>> res = continue_exact(problem, p.basis, no_pivot);
-  if (res && res->status == LpStatus::kPivotLimit) return std::nullopt;  // the basis is not optimal in Q
-  return res;
+  return last ? continue_exact(problem, p.basis, options) : check_basis(problem, p.basis, options);
 }
 
 }  // namespace
@@ -180,6 +178,12 @@ LpResult<Q> solve_lp_ladder(const LpProblem<Q>& problem, const std::vector<Rung>
   for (size_t k = 0; k + 1 < ladder.size(); ++k) {
     std::optional<Proposal> p = propose(ladder[k], problem, ilp, options);
     if (!p) continue;
+    if (p->status == LpStatus::kTimeLimit) {  // the deadline passed inside a float rung: no verdict
+      LpResult<Q> res;
+      res.status = LpStatus::kTimeLimit;
+      res.proposed_by = p->rung;
+      return res;
+    }
     const bool last = k + 2 == ladder.size();
     if (std::optional<LpResult<Q>> res = check(problem, ilp, *p, last, options)) {
       res->proposed_by = p->rung;
@@ -189,7 +193,7 @@ LpResult<Q> solve_lp_ladder(const LpProblem<Q>& problem, const std::vector<Rung>
   }
   if (best && best->rung != ladder[ladder.size() - 2]) {
     // The last float rung gave nothing usable: continue from an earlier rung's basis.
-    if (std::optional<LpResult<Q>> res = budgeted(continue_exact(problem, best->basis, options), options)) {
+    if (std::optional<LpResult<Q>> res = continue_exact(problem, best->basis, options)) {
       res->proposed_by = best->rung;
       return std::move(*res);
     }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <set>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -24,13 +25,22 @@ using exact::LpResult;
 using exact::LpStatus;
 using exact::sign;
 
+// The LP in T (verified for Q), stopped at the budget's deadline: then BudgetExceeded with the `lps` solved
+// before it (counted here).
 template <class T>
-LpResult<T> solve(const LpProblem<T>& lp) {
-  if constexpr (std::is_same_v<T, Q>) {
-    return exact::solve_lp_verified(lp);
-  } else {
-    return exact::solve_lp<T>(lp);
-  }
+LpResult<T> solve(const LpProblem<T>& lp, const DdBudget& budget, long& lps) {
+  exact::LpOptions options;
+  options.deadline = budget.deadline;
+  LpResult<T> r;
+  if constexpr (std::is_same_v<T, Q>)
+    r = exact::solve_lp_verified(lp, options);
+  else
+    r = exact::solve_lp<T>(lp, options);
+  if (r.status == LpStatus::kTimeLimit)
+    throw exact::BudgetExceeded("projection by LPs: " + budget.deadline.reached_text(),
+                                std::to_string(lps) + " LPs solved");
+  ++lps;
+  return r;
 }
 
 template <class T>
@@ -44,7 +54,7 @@ bool any_strict(const std::vector<bool>& s) { return std::find(s.begin(), s.end(
 
 // max f . g over { g : K z = P g, z >= 0, sum z <= 1 }: x = (z, g, slack); returns the optimal g.
 template <class T>
-LpResult<T> maximise_direction(const Mat<T>& K, const Mat<T>& P, const Vec<T>& f) {
+LpResult<T> maximise_direction(const Mat<T>& K, const Mat<T>& P, const Vec<T>& f, const DdBudget& budget, long& lps) {
   const Index m = K.rows(), n = K.cols(), d = P.cols();
   LpProblem<T> lp;
   lp.A = Mat<T>::Zero(m + 1, n + d + 1);
@@ -58,13 +68,14 @@ LpResult<T> maximise_direction(const Mat<T>& K, const Mat<T>& P, const Vec<T>& f
   for (Index j = 0; j < d; ++j) lp.c(n + j) = -f(j);
   lp.is_free.assign(static_cast<size_t>(n + d + 1), false);
   for (Index j = 0; j < d; ++j) lp.is_free[static_cast<size_t>(n + j)] = true;
-  return solve(lp);
+  return solve(lp, budget, lps);
 }
 
 // Is P w = K z solvable with z >= 0 and z_i > 0 on the strict components? max t s.t. K z = P w,
 // z_i - t - u_i = 0 (i strict), t + v = 1, all >= 0; strictly feasible iff t* > 0.
 template <class T>
-bool strictly_feasible(const Mat<T>& K, const Mat<T>& P, const std::vector<bool>& strict, const Vec<T>& w) {
+bool strictly_feasible(const Mat<T>& K, const Mat<T>& P, const std::vector<bool>& strict, const Vec<T>& w,
+                       const DdBudget& budget, long& lps) {
   const Index m = K.rows(), n = K.cols();
   std::vector<Index> I;
   for (Index i = 0; i < n; ++i)
@@ -86,7 +97,7 @@ bool strictly_feasible(const Mat<T>& K, const Mat<T>& P, const std::vector<bool>
   lp.b(m + s) = T(1);
   lp.c = Vec<T>::Zero(cols);
   lp.c(n) = T(-1);
-  const LpResult<T> r = solve(lp);
+  const LpResult<T> r = solve(lp, budget, lps);
   return r.status == LpStatus::kOptimal && sign(T(-r.value)) > 0;
 }
 
@@ -172,6 +183,7 @@ FaceCone<T> project_by_lp(const ProjectionProblem<T>& problem, const DdBudget& b
   const std::vector<bool> strict =
       problem.strict.empty() ? std::vector<bool>(static_cast<size_t>(K.cols()), false) : problem.strict;
   if (K.rows() == 0) return nnc_form(whole_space<T>(d), budget).face;
+  long lps = 0;
   // Convex hull method: grow an inner cone pos(rays) + span(ker P) until every facet (and both sides
   // of every equality) of it is confirmed valid by an LP; each LP confirms a row or finds a new ray.
   const Mat<T> lines = exact::null_space<T>(P).transpose();
@@ -190,7 +202,7 @@ FaceCone<T> project_by_lp(const ProjectionProblem<T>& problem, const DdBudget& b
     for (const Vec<T>& f : candidates) {
       const std::vector<T> key(f.data(), f.data() + d);
       if (confirmed.count(key)) continue;
-      const LpResult<T> r = maximise_direction<T>(K, P, f);
+      const LpResult<T> r = maximise_direction<T>(K, P, f, budget, lps);
       // Feasible (z = 0, g = 0) and bounded (f is orthogonal to ker P, sum z <= 1).
       if (r.status != LpStatus::kOptimal) throw std::logic_error("project_by_lp: direction LP not optimal");
       if (sign(T(-r.value)) > 0) {
@@ -236,7 +248,7 @@ FaceCone<T> project_by_lp(const ProjectionProblem<T>& problem, const DdBudget& b
     Vec<T> w = Vec<T>::Zero(d);
     for (Index r = 0; r < nr; ++r)
       if (g[static_cast<size_t>(r)]) w += R.row(r).transpose();
-    if (!strictly_feasible<T>(K, P, strict, w)) missing.push_back(g);
+    if (!strictly_feasible<T>(K, P, strict, w, budget, lps)) missing.push_back(g);
   }
   // One strict row per maximal missing face: the sum of the normals of the facets through it.
   std::vector<Vec<T>> strict_rows;

@@ -43,7 +43,8 @@ extern template FaceCone<Q> project_by_polar_rows<Q, Z>(const std::vector<std::v
 /// Route (b), output-sensitive for a low-dimensional target: discovers the generators of the closed
 /// cone with one exact LP per facet and per generator (convex hull method), converts in R^d only, and
 /// decides open faces by strict-feasibility LPs (maximise t with z_i >= t on strict components).
-/// Same result as project_by_polar.
+/// Same result as project_by_polar. The budget's deadline also stops an LP (BudgetExceeded, the LPs solved
+/// before it counted).
 template <class T>
 FaceCone<T> project_by_lp(const ProjectionProblem<T>& problem, const DdBudget& budget = {});
 

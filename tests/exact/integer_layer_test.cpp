@@ -30,6 +30,10 @@ TEST(Reconstruction, SimpleFractionsExactly) {
   expect_fraction(1e-12, 0, 1);
   expect_fraction(-1e-12, 0, 1);
   expect_fraction(0.0, 0, 1);
+  // Below 2^-9 a double is N / 2^k with k > 62: the continued fraction runs in 128 bits.
+  expect_fraction(1.0 / 3000.0, 1, 3000);
+  expect_fraction(-3.0 / 7000.0, -3, 7000);
+  expect_fraction(1e-6, 1, 1000000);
 }
 
 // The first convergent of pi within max(1, |v|) / 2^30 = 2.9e-9: 355/113 is 2.7e-7 away, 103993/33102 5.8e-10.

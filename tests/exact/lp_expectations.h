@@ -27,6 +27,8 @@ inline void expect_certified_like(const LpProblem<Q>& p, const LpResult<Q>& r, L
       break;
     case LpStatus::kPivotLimit:
       FAIL() << "case " << t << ": pivot limit";
+    case LpStatus::kTimeLimit:
+      FAIL() << "case " << t << ": time limit";
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "exact/verified_lp.h"
 #include "tests/exact/lp_expectations.h"
 #include "tests/exact/random_lp.h"
 #include "tests/reference/cdd_lp.h"
@@ -36,7 +37,7 @@ LpProblem<Q> lp(std::initializer_list<std::initializer_list<Q>> A, std::initiali
 TEST(Simplex, TinyOptimalByHand) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
   for (PivotRule rule : {PivotRule::kBland, PivotRule::kDantzigThenBland}) {
-    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 100, .rule = rule});
+    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 100, .rule = rule, .deadline = {}});
     ASSERT_EQ(r.status, LpStatus::kOptimal);
     EXPECT_EQ(r.value, q("-14/5"));
     EXPECT_EQ(r.x(0), q("8/5"));
@@ -93,19 +94,22 @@ TEST(Simplex, BealeCyclingExampleTerminates) {
       lp({{q("1/4"), -60, q("-1/25"), 9, 1, 0, 0}, {q("1/2"), -90, q("-1/50"), 3, 0, 1, 0}, {0, 0, 1, 0, 0, 0, 1}},
          {0, 0, 1}, {q("-3/4"), 150, q("-1/50"), 6, 0, 0, 0});
   for (PivotRule rule : {PivotRule::kBland, PivotRule::kDantzigThenBland}) {
-    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule});
+    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}});
     ASSERT_EQ(r.status, LpStatus::kOptimal);
     EXPECT_EQ(r.value, q("-1/20"));
     EXPECT_EQ(r.x(0), q("1/25"));
     EXPECT_EQ(r.x(2), 1);
     EXPECT_TRUE(verify_optimal(p, r.x, r.duals));
-    const LpResult<double> f = solve_lp<double>(to_double(p), {.warm_basis = {}, .max_pivots = 10000, .rule = rule});
+    const LpResult<double> f =
+        solve_lp<double>(to_double(p), {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}});
     ASSERT_EQ(f.status, LpStatus::kOptimal);
     EXPECT_NEAR(f.value, -0.05, 1e-12);
   }
   // Starting from the slack basis, the cycle of Beale's example is reached immediately.
-  const LpResult<Q> warm = solve_lp<Q>(
-      p, {.warm_basis = std::vector<Eigen::Index>{4, 5, 6}, .max_pivots = 10000, .rule = PivotRule::kDantzigThenBland});
+  const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{4, 5, 6},
+                                           .max_pivots = 10000,
+                                           .rule = PivotRule::kDantzigThenBland,
+                                           .deadline = {}});
   EXPECT_EQ(warm.value, q("-1/20"));
 }
 
@@ -151,11 +155,11 @@ TEST(Simplex, RedundantRowsGiveABasisOfRankSize) {
 TEST(Simplex, WarmStartFromTheOptimalBasisNeedsNoPivot) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
   const LpResult<Q> cold = solve_lp<Q>(p);
-  const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = cold.basis});
+  const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = cold.basis, .deadline = {}});
   EXPECT_EQ(warm.pivots, 0);
   EXPECT_EQ(warm.value, cold.value);
   // An infeasible warm basis falls back to phase 1 and still finds the optimum.
-  const LpResult<Q> bad = solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{0, 3}});
+  const LpResult<Q> bad = solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{0, 3}, .deadline = {}});
   EXPECT_EQ(bad.value, cold.value);
   // The tableau gives access to pivoting.
   std::optional<SimplexTableau<Q>> tab = SimplexTableau<Q>::from_basis(p.A, p.b, {2, 3});
@@ -170,7 +174,7 @@ TEST(Simplex, WarmStartFromTheOptimalBasisNeedsNoPivot) {
 
 TEST(Simplex, PivotBudgetThrows) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
-  EXPECT_THROW(solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 0}), BudgetExceeded);
+  EXPECT_THROW(solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 0, .deadline = {}}), BudgetExceeded);
 }
 
 // The pivot limit is a status of the warm-started phase 2 (the verified LP asks it whether a float basis is
@@ -179,16 +183,75 @@ TEST(Simplex, PivotLimitIsAStatus) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
   std::optional<SimplexTableau<Q>> slack = SimplexTableau<Q>::from_basis(p.A, p.b, {2, 3});
   ASSERT_TRUE(slack.has_value());
-  const LpResult<Q> r = solve_lp_from_tableau(p, *slack, {.warm_basis = {}, .max_pivots = 0});
+  const LpResult<Q> r = solve_lp_from_tableau(p, *slack, {.warm_basis = {}, .max_pivots = 0, .deadline = {}});
   EXPECT_EQ(r.status, LpStatus::kPivotLimit);
   EXPECT_EQ(r.pivots, 0);
   EXPECT_THROW(check_pivot_budget(r.status, {}), BudgetExceeded);
   // At the optimal basis (x1 = 8/5, x2 = 6/5) no pivot is needed.
   std::optional<SimplexTableau<Q>> opt = SimplexTableau<Q>::from_basis(p.A, p.b, {0, 1});
   ASSERT_TRUE(opt.has_value());
-  const LpResult<Q> o = solve_lp_from_tableau(p, *opt, {.warm_basis = {}, .max_pivots = 0});
+  const LpResult<Q> o = solve_lp_from_tableau(p, *opt, {.warm_basis = {}, .max_pivots = 0, .deadline = {}});
   ASSERT_EQ(o.status, LpStatus::kOptimal);
   EXPECT_EQ(o.value, q("-14/5"));
+}
+
+// The feasible tableau of `basis` priced by p's objective (throws if the basis is not primal feasible).
+SimplexTableau<Q> priced_tableau(const LpProblem<Q>& p, const std::vector<Eigen::Index>& basis) {
+  SimplexTableau<Q> tab = feasible_tableau(p, basis).value();
+  tab.set_objective(p.objective());
+  return tab;
+}
+
+// The basis of a feasible tableau decides the LP as it stands when it is optimal, or when the column the
+// pricing rule enters has no blocking row (an unbounded edge: the verified LP accepts such a float basis with no
+// exact pivot, as the zero-pivot phase 2 it replaces did); otherwise a pivot is needed.
+TEST(Simplex, DecideAtBasisOptimalUnboundedOrPivot) {
+  // min -x2 s.t. x1 - x2 + s = 1: at the basis {x1}, x2 prices out with B^-1 a_2 = -1 (no blocking row).
+  const LpProblem<Q> u = lp({{1, -1, 1}}, {1}, {0, -1, 0});
+  const SimplexTableau<Q> tu = priced_tableau(u, {0});
+  EXPECT_FALSE(is_optimal_basis(tu, u.is_free));
+  const std::optional<LpResult<Q>> ru = decide_at_basis(u, tu);
+  ASSERT_TRUE(ru.has_value());
+  EXPECT_EQ(ru->status, LpStatus::kUnbounded);
+  EXPECT_EQ(ru->pivots, 0);
+  EXPECT_EQ(ru->unbounded_column, 1);
+  EXPECT_TRUE(verify_ray(u, ru->ray));
+  // The same as phase 2 with no pivot allowed.
+  const LpResult<Q> zero = solve_lp_from_tableau(u, tu, {.warm_basis = {}, .max_pivots = 0, .deadline = {}});
+  EXPECT_EQ(zero.status, LpStatus::kUnbounded);
+  EXPECT_EQ(zero.ray, ru->ray);
+
+  // min -x1 - x2 s.t. x1 + 2 x2 <= 4, 3 x1 + x2 <= 6: the slack basis needs a pivot, {x1, x2} is optimal.
+  const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
+  const SimplexTableau<Q> slack = priced_tableau(p, {2, 3});
+  EXPECT_FALSE(is_optimal_basis(slack, p.is_free));
+  EXPECT_FALSE(decide_at_basis(p, slack).has_value());
+  const SimplexTableau<Q> opt = priced_tableau(p, {0, 1});
+  EXPECT_TRUE(is_optimal_basis(opt, p.is_free));
+  const std::optional<LpResult<Q>> ro = decide_at_basis(p, opt);
+  ASSERT_TRUE(ro.has_value());
+  EXPECT_EQ(ro->status, LpStatus::kOptimal);
+  EXPECT_EQ(ro->value, q("-14/5"));
+  EXPECT_TRUE(verify_optimal(p, ro->x, ro->duals));
+  // {x2, s1} has x1 = 0, x2 = 6, s1 = 4 - 12 < 0: not primal feasible.
+  EXPECT_FALSE(feasible_tableau(p, {1, 2}).has_value());
+}
+
+// A deadline that has passed stops the simplex before its first pivot with the status kTimeLimit (no
+// exception), in Q, in double and in the verified LP.
+TEST(Simplex, TimeLimitIsAStatus) {
+  const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
+  LpOptions passed;
+  passed.deadline = Deadline::after(1e-9);
+  while (!passed.deadline.expired()) {
+  }
+  const LpResult<Q> r = solve_lp<Q>(p, passed);
+  EXPECT_EQ(r.status, LpStatus::kTimeLimit);
+  EXPECT_EQ(r.pivots, 0);
+  EXPECT_EQ(solve_lp<double>(to_double(p), passed).status, LpStatus::kTimeLimit);
+  EXPECT_EQ(solve_lp_verified(p, passed).status, LpStatus::kTimeLimit);
+  // Without a limit the same LP is solved.
+  EXPECT_EQ(solve_lp<Q>(p).status, LpStatus::kOptimal);
 }
 
 // 1500 seeded random LPs, many degenerate, against cddlib's exact LP: same status, same optimal value, and
@@ -200,7 +263,7 @@ TEST(Simplex, RandomLpsAgreeWithCddlibExactly) {
     const LpProblem<Q> p = testing::random_lp(rng);
     const reference::CddLpResult ref = reference::cdd_solve_lp(p);
     const PivotRule rule = t % 2 ? PivotRule::kBland : PivotRule::kDantzigThenBland;
-    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule});
+    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}});
     testing::expect_certified_like(p, r, ref.status, ref.value, t);
     ++counts[static_cast<int>(r.status)];
   }

@@ -31,6 +31,26 @@ TEST(VerifiedLp, EqualsExactOnRandomLps) {
   EXPECT_GT(checked, 1200);
 }
 
+// A rung below the last proposes a basis that must decide the LP with no exact pivot. Its basis at an unbounded
+// edge does: min -x2 s.t. x1 - x2 = 1 is unbounded, the double rung's final basis is checked in Q and decides
+// (status kUnbounded, the ray verified, no exact pivot) before the exact rung is reached.
+TEST(VerifiedLp, UnboundedEdgeOfALowerRungBasisDecides) {
+  LpProblem<Q> p;
+  p.A = Mat<Q>(1, 2);
+  p.A << 1, -1;
+  p.b = Vec<Q>(1);
+  p.b << 1;
+  p.c = Vec<Q>(2);
+  p.c << 0, -1;
+  const std::vector<Rung> ladder{{Rung::Kind::kDouble, 0}, {Rung::Kind::kInterval, 0}, {Rung::Kind::kExact, 0}};
+  const LpResult<Q> r = solve_lp_ladder(p, ladder);
+  ASSERT_EQ(r.status, LpStatus::kUnbounded);
+  EXPECT_EQ(r.decided_by, DecidedBy::kFloatBasisCheckedExactly);
+  EXPECT_EQ(r.proposed_by, (Rung{Rung::Kind::kDouble, 0}));
+  EXPECT_EQ(r.pivots, 0);
+  EXPECT_TRUE(verify_ray(p, r.ray));
+}
+
 // min x1 + (1 - 10^-20) x2 s.t. x1 + x2 = 1: the costs are equal in double (and too big to scale to 64-bit
 // integers), so the float simplex stops at x1 = 1; the exact check rejects that basis and the exact simplex
 // moves to x2 = 1.
