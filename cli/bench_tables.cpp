@@ -54,11 +54,12 @@ std::vector<Table> split(const Table& t, std::size_t rungs) {
   for (std::size_t c = chunks[0].second; c < t.header.size(); c += 2 * kPerRung)
     chunks.emplace_back(c, std::min(t.header.size(), c + 2 * kPerRung));
   std::vector<Table> out;
-  for (const auto& [a, b] : chunks) {
+  for (const auto& chunk : chunks) {
     Table part;
     const auto take = [&](const std::vector<std::string>& r) {
       std::vector<std::string> x(r.begin(), r.begin() + kKey);
-      x.insert(x.end(), r.begin() + static_cast<std::ptrdiff_t>(a), r.begin() + static_cast<std::ptrdiff_t>(b));
+      x.insert(x.end(), r.begin() + static_cast<std::ptrdiff_t>(chunk.first),
+               r.begin() + static_cast<std::ptrdiff_t>(chunk.second));
       return x;
     };
     part.header = take(t.header);
