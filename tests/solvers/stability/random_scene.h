@@ -34,7 +34,11 @@ inline std::string random_scene(std::mt19937_64& rng, std::size_t k) {
     const long gap = coin(rng) == 0 ? 1 : 0;  // a third of the fixels at a gap
     Q x, y;
     if (shape == 0) {  // direction ((1 - t^2), 2t) / (1 + t^2), t = a / b
-      const Q t = Q(static_cast<long>(rng() % 13) - 6, static_cast<long>(1 + rng() % 3));
+      // Denominator drawn first, then numerator, in sequence: as function arguments their order would differ
+      // between compilers (gcc and clang make different scenes from one seed).
+      const long b = static_cast<long>(1 + rng() % 3);
+      const long a = static_cast<long>(rng() % 13) - 6;
+      const Q t = Q(a, b);
       const Q r = Q(1) + Q(gap, 10);
       x = r * (1 - t * t) / (1 + t * t);
       y = r * 2 * t / (1 + t * t);
