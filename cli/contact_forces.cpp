@@ -1,7 +1,6 @@
 #include "cli/contact_forces.h"
 
 #include "exact/rational_text.h"
-#include "solvers/stability/world_forces.h"
 
 namespace contactcert::cli {
 namespace {
@@ -35,11 +34,10 @@ json vector_json(const exact::Vec<T>& v) {
 }
 
 template <class T>
-json contacts_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
-                   const exact::Vec<T>& c) {
+json forces_json(const std::vector<solvers::WorldForce<T>>& forces, const std::string& index_key) {
   json out = json::array();
-  for (const auto& w : solvers::world_forces<T>(scene, touching, c))
-    out.push_back({{"fixel", w.fixel},
+  for (const auto& w : forces)
+    out.push_back({{index_key, w.fixel},
                    {"point", vector_json(w.point)},
                    {"normal", vector_json(w.normal)},
                    {"tangent", vector_json(w.tangent)},
@@ -51,15 +49,27 @@ json contacts_json(const geometry::PlanarScene& scene, const std::vector<Eigen::
 }
 
 template <class T>
-std::string contacts_text(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
-                          const exact::Vec<T>& c, const std::string& indent) {
+std::string forces_text(const std::vector<solvers::WorldForce<T>>& forces, const std::string& what,
+                        const std::string& indent) {
   std::string out;
-  for (const auto& w : solvers::world_forces<T>(scene, touching, c))
-    out += indent + "fixel " + std::to_string(w.fixel) + " at " + tuple_text(w.point) + ": force " +
+  for (const auto& w : forces)
+    out += indent + what + " " + std::to_string(w.fixel) + " at " + tuple_text(w.point) + ": force " +
            tuple_text(w.force) + ", torque " + number_text(w.torque) + "  (c_n = " + number_text(w.c_n) +
            " along n = " + tuple_text(w.normal) + ", c_t = " + number_text(w.c_t) +
            " along t = " + tuple_text(w.tangent) + ")\n";
   return out;
+}
+
+template <class T>
+json contacts_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                   const exact::Vec<T>& c) {
+  return forces_json(solvers::world_forces<T>(scene, touching, c), "fixel");
+}
+
+template <class T>
+std::string contacts_text(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
+                          const exact::Vec<T>& c, const std::string& indent) {
+  return forces_text(solvers::world_forces<T>(scene, touching, c), "fixel", indent);
 }
 
 namespace {
@@ -97,6 +107,8 @@ std::string witness_text(const geometry::PlanarScene& scene, const std::vector<E
 
 template json vector_json(const exact::Vec<Q>&);
 template json vector_json(const exact::Vec<double>&);
+template json forces_json(const std::vector<solvers::WorldForce<Q>>&, const std::string&);
+template std::string forces_text(const std::vector<solvers::WorldForce<Q>>&, const std::string&, const std::string&);
 template json contacts_json(const geometry::PlanarScene&, const std::vector<Eigen::Index>&, const exact::Vec<Q>&);
 template json contacts_json(const geometry::PlanarScene&, const std::vector<Eigen::Index>&, const exact::Vec<double>&);
 template std::string contacts_text(const geometry::PlanarScene&, const std::vector<Eigen::Index>&, const exact::Vec<Q>&,

@@ -8,12 +8,24 @@
 
 #include "cli/json_out.h"
 #include "geometry/planar_scene.h"
+#include "solvers/stability/world_forces.h"
 
 namespace contactcert::cli {
 
 /// A vector as exact strings (T = Q) or doubles.
 template <class T>
 json vector_json(const exact::Vec<T>& v);
+
+/// Per force, `index_key` (its index), `point`, `normal`, `tangent`, `c_n`, `c_t`, `force`, `torque`: exact
+/// strings (T = Q) or doubles.
+template <class T>
+json forces_json(const std::vector<solvers::WorldForce<T>>& forces, const std::string& index_key);
+
+/// One line per force, each starting with `indent`: "<what> i at (x, y): force (fx, fy), torque tau (c_n = ..
+/// along n = (..), c_t = .. along t = (..))".
+template <class T>
+std::string forces_text(const std::vector<solvers::WorldForce<T>>& forces, const std::string& what,
+                        const std::string& indent);
 
 /// Per touching fixel `fixel`, `point`, `normal`, `tangent`, `c_n`, `c_t`, `force`, `torque`: exact strings
 /// (T = Q) or doubles. `c` is the model's vector (c_1n..c_kn, c_1t..c_kt) of the fixels `touching`.

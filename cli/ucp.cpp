@@ -12,6 +12,7 @@
 #include "cli/option_checks.h"
 #include "cli/progress_line.h"
 #include "cli/results.h"
+#include "cli/ucp_forces.h"
 #include "exact/arith.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
@@ -164,7 +165,8 @@ void print_vector(const char* name, const Vec<Q>& v) {
 }
 
 /// The text report of `ucp FILE` (without --json), from the same report as ucp_json.
-void print_ucp_text(const UcpCliOptions& o, const ucp::UcpReport& r, bool certificate_written) {
+void print_ucp_text(const UcpCliOptions& o, const ucp::UcpReport& r, bool certificate_written,
+                    const std::vector<geometry::ContactFrame>& frames) {
   std::cout << "ucp " << o.file << ": " << ucp::status_name(r.status) << " (" << r.reason << ")\n";
   std::cout << "  method " << ucp::method_name(r.method) << ", arith " << exact::arith_name(r.arith)
             << (r.decided_by.empty() ? "" : " (decided by " + r.decided_by + ")") << ", pairs " << r.pairs << ", LPs "
@@ -191,6 +193,7 @@ void print_ucp_text(const UcpCliOptions& o, const ucp::UcpReport& r, bool certif
                            {"theta_dot", &s.theta_dot},
                            {"tau", &s.tau}})
       print_vector(name, v->to_q());
+    std::cout << ucp_forces_text(frames, s.c_n.to_q(), s.c_t.to_q());
   }
   if (r.conditions)
     std::cout << "  conditions (2)-(10): "
@@ -206,7 +209,8 @@ int run_ucp(const UcpCliOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   ucp::UcpOptions opts = solve_options(o);
   ucp::UcpPhases setup;
-  const ucp::UcpProblem problem = ucp::load_ucp_problem(o.file, &setup);
+  const UcpFile file = load_ucp_file(o.file, &setup);
+  const ucp::UcpProblem& problem = file.problem;
   ProgressLine progress("ucp " + o.file);
   if (progress.enabled())
     opts.progress = [&progress, &opts](long units, long lps) {
@@ -227,10 +231,14 @@ int run_ucp(const UcpCliOptions& o) {
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  if (o.common.json)
-    std::cout << ucp_json(r, cert_text.empty() ? "" : o.certificate).dump() << "\n";
-  else
-    print_ucp_text(o, r, !cert_text.empty());
+  if (o.common.json) {
+    json j = ucp_json(r, cert_text.empty() ? "" : o.certificate);
+    if (r.physical && !file.frames.empty())
+      j["physical"]["contacts"] = ucp_forces_json(file.frames, r.physical->c_n.to_q(), r.physical->c_t.to_q());
+    std::cout << j.dump() << "\n";
+  } else {
+    print_ucp_text(o, r, !cert_text.empty(), file.frames);
+  }
   return r.status == ucp::UcpStatus::kUnknown ? 3 : 0;
 }
 

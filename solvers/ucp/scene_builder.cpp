@@ -1,6 +1,5 @@
 #include "solvers/ucp/scene_builder.h"
 
-#include "geometry/contact_frame.h"
 #include "geometry/scene_json.h"
 
 namespace contactcert::solvers::ucp {
@@ -58,16 +57,29 @@ Contact read_contact(const geometry::Shape& shape, const JsonInput& c) {
   return out;
 }
 
+/// The contacts of the scene `root` on the workpiece `w`, at least one.
+std::vector<Contact> read_contacts(const JsonInput& root, const geometry::Workpiece& w) {
+  std::vector<Contact> contacts;
+  const JsonInput list = root.at("contacts");
+  for (const JsonInput& c : list.elements()) contacts.push_back(read_contact(w.shape, c));
+  if (contacts.empty()) list.fail("at least one contact");
+  return contacts;
+}
+
 }  // namespace
+
+std::vector<geometry::ContactFrame> quasistatic_scene_frames(const JsonInput& root) {
+  std::vector<geometry::ContactFrame> out;
+  for (const Contact& c : read_contacts(root, geometry::read_workpiece(root.at("workpiece"))))
+    out.push_back({c.r, c.n, Q(0)});
+  return out;
+}
 
 QuasistaticProblem build_quasistatic_scene(const JsonInput& root) {
   root.expect_keys({"kind", "name", "description", "source", "note", "workpiece", "gravity", "contacts"});
   const geometry::Workpiece w = geometry::read_workpiece(root.at("workpiece"));
   const Point2 gravity = root.find("gravity") ? read_point(root.at("gravity")) : Point2{Q(0), Q(0)};
-  std::vector<Contact> contacts;
-  const JsonInput list = root.at("contacts");
-  for (const JsonInput& c : list.elements()) contacts.push_back(read_contact(w.shape, c));
-  if (contacts.empty()) list.fail("at least one contact");
+  const std::vector<Contact> contacts = read_contacts(root, w);
 
   QuasistaticProblem p;
   p.nc = static_cast<int>(contacts.size());

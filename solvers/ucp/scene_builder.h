@@ -3,7 +3,10 @@
 // which P = [W^T  J_abar], Jn, Jt, theta_dot, alpha and d are built exactly (docs/formats.md, section 2).
 #pragma once
 
+#include <vector>
+
 #include "exact/json_input.h"
+#include "geometry/contact_frame.h"
 #include "solvers/ucp/problem.h"
 
 namespace contactcert::solvers::ucp {
@@ -17,5 +20,9 @@ namespace contactcert::solvers::ucp {
 /// are in abar with tau its force (g_man = 0). g_obj = (gravity, com x gravity). Throws exact::InputError
 /// naming the field.
 QuasistaticProblem build_quasistatic_scene(const exact::JsonInput& root);
+
+/// The contact frames of a `"kind": "quasistatic_scene"` file, in contact order, as build_quasistatic_scene
+/// uses them: point r_i, inward normal n_i as written (gap 0), t_i = tangent(). Throws exact::InputError.
+std::vector<geometry::ContactFrame> quasistatic_scene_frames(const exact::JsonInput& root);
 
 }  // namespace contactcert::solvers::ucp
