@@ -205,20 +205,18 @@ struct ConeCertificateFile {
 
 ConeCertificateFile cone_certificate_file(const std::string& scene_text, const geometry::PlanarScene& scene,
                                           const solvers::ModeString& mode, const solvers::ConeForm<Q>& form) {
+  solvers::ConeCertificate certificate = solvers::cone_certificate(scene_text, scene, mode);
   ConeCertificateFile out;
-  const std::string text = solvers::cone_certificate(scene_text, scene, mode);
-  const json raw = json::parse(text);
-  out.witness = raw.at("kind") == "cone_nonempty";
+  out.witness = certificate.witness();
   if (!out.witness) {
-    out.file = raw;
+    out.file = std::move(certificate.file);
     return out;
   }
-  const exact::JsonInput numbers = exact::JsonInput::parse(text, "certificate");
-  out.g = numbers.at("wrench").rational_vector(3);
+  out.g = certificate.wrench;
   solvers::touching_scene(scene, &out.touching);
-  out.c = solvers::contact_forces(form, out.touching, numbers.at("z").rational_vector());
+  out.c = solvers::contact_forces(form, out.touching, certificate.z);
   const json view = witness_json(scene, out.touching, out.c, out.g);
-  for (auto it = raw.begin(); it != raw.end(); ++it) {
+  for (auto it = certificate.file.begin(); it != certificate.file.end(); ++it) {
     if (it.key() == "scene") {
       out.file["contacts"] = view.at("contacts");
       out.file["acceleration"] = view.at("acceleration");

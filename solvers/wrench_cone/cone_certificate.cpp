@@ -26,8 +26,8 @@ ConeForm<Q> system_of(const geometry::PlanarScene& scene, const ModeString& mode
 
 }  // namespace
 
-std::string cone_certificate(const std::string& scene_text, const geometry::PlanarScene& scene,
-                             const ModeString& mode) {
+ConeCertificate cone_certificate(const std::string& scene_text, const geometry::PlanarScene& scene,
+                                 const ModeString& mode) {
   const ConeForm<Q> f = system_of(scene, mode);
   const Index k = f.K.cols(), d = f.P.cols();
   // (z, g) with [K | -P] (z, g) = 0, z >= 0, z strict > 0 where Table 2 says so, g free.
@@ -42,7 +42,8 @@ std::string cone_certificate(const std::string& scene_text, const geometry::Plan
     s.strict[static_cast<std::size_t>(j)] = j < k && f.strict[static_cast<std::size_t>(j)];
   }
   const exact::StrictFeasibility<Q> r = exact::StrictSolver<Q>(s).solve(s.b);
-  nlohmann::ordered_json j;
+  ConeCertificate out;
+  nlohmann::ordered_json& j = out.file;
   const bool empty = r.status == exact::StrictStatus::kInfeasible;
   j["kind"] = empty ? "cone_empty" : "cone_nonempty";
   j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
@@ -50,12 +51,14 @@ std::string cone_certificate(const std::string& scene_text, const geometry::Plan
   if (empty) {
     j["motzkin"] = strings(r.motzkin);
   } else {
-    j["wrench"] = strings(r.x.tail(d));
-    j["z"] = strings(r.x.head(k));
+    out.wrench = r.x.tail(d);
+    out.z = r.x.head(k);
+    j["wrench"] = strings(out.wrench);
+    j["z"] = strings(out.z);
     j["z_names"] = f.names;
   }
   j["scene"] = scene_text;
-  return j.dump(1) + "\n";
+  return out;
 }
 
 bool is_cone_certificate_kind(const std::string& kind) { return kind == "cone_empty" || kind == "cone_nonempty"; }

@@ -11,6 +11,7 @@
 // (solvers/stability/table2_rows_check.h, not cone_form.h).
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,17 @@
 
 namespace contactcert::solvers {
 
-/// The certificate of the wrench cone of `mode` in `scene` (read from `scene_text`) as JSON text.
-std::string cone_certificate(const std::string& scene_text, const geometry::PlanarScene& scene, const ModeString& mode);
+/// A wrench cone certificate: the file's JSON ("scene" its last key) and, for "cone_nonempty", its witness.
+struct ConeCertificate {
+  nlohmann::ordered_json file;
+  exact::Vec<exact::Q> wrench{};  ///< g of a witness (empty for "cone_empty")
+  exact::Vec<exact::Q> z{};       ///< z of a witness, K z = P g (empty for "cone_empty")
+  bool witness() const { return z.size() > 0; }
+};
+
+/// The certificate of the wrench cone of `mode` in `scene` (read from `scene_text`).
+ConeCertificate cone_certificate(const std::string& scene_text, const geometry::PlanarScene& scene,
+                                 const ModeString& mode);
 
 /// True if `kind` names a wrench cone certificate.
 bool is_cone_certificate_kind(const std::string& kind);
