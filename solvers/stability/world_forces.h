@@ -18,11 +18,11 @@ template <class T>
 struct WorldForce {
   Eigen::Index fixel = 0;  ///< index of the fixel in the scene (0-based, the scene's order)
   Vec<T> point;            ///< p_i, the contact point (x, y)
-  Vec<T> normal;           ///< n_i as scaled by the model (x, y), pointing into the workpiece
+  Vec<T> normal;           ///< n_i (x, y), pointing into the workpiece: as the model scales it, or as a file writes it
   Vec<T> tangent;          ///< t_i = (-n_iy, n_ix)
   T c_n, c_t;              ///< the components against (n_i, t_i)
   Vec<T> force;            ///< f_i = c_n n_i + c_t t_i, world coordinates (x, y)
-  T torque;                ///< (p_i - com) x f_i
+  T torque;                ///< f_i's torque: (p_i - com) x f_i here; about the world origin for a quasistatic scene
 };
 
 /// The world forces of `c` (the layout of StabilityResult: normals then tangents of the touching fixels
