@@ -22,6 +22,8 @@ using UncertainSign = CGAL::Uncertain_conversion_exception;
 
 /// The smallest double interval that holds q.
 Interval to_interval(const Q& q);
+/// The smallest double interval that holds z (the one to_interval(Q(z)) gives).
+Interval to_interval(const Z& z);
 
 /// Intervals: a sign is -1, 0 (only the point 0) or +1 when the interval proves it; else UncertainSign.
 /// Pivot choice as for Q (the first candidate), so that the interval run takes the exact run's decisions.

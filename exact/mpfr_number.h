@@ -64,6 +64,8 @@ inline bool is_negligible(const Mpfr& x) { return NumberTraits<Mpfr>::is_negligi
 
 /// q rounded to the nearest float of `bits` bits (bits >= 53, MPFR's default precision).
 Mpfr to_mpfr(const Q& q, long bits);
+/// z rounded to the nearest float of `bits` bits (as to_mpfr(Q(z), bits)).
+Mpfr to_mpfr(const Z& z, long bits);
 /// The problem with every number rounded to `bits` bits.
 LpProblem<Mpfr> to_mpfr(const LpProblem<Q>& problem, long bits);
 /// x as the rational it is (every float is one).

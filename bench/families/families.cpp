@@ -153,7 +153,7 @@ std::vector<Instance> degenerate(double d, std::uint64_t seed) {
   // the right-hand side of X lies in a lower-dimensional cone and X's vertices become degenerate.
   auto& qs = *p.quasistatic;
   for (int i = 0; i < stopped; ++i) qs.theta_dot(2 * i) = 0, qs.theta_dot(2 * i + 1) = 0;
-  p.ucp = solvers::ucp::build_ucp(qs);
+  p.set(solvers::ucp::build_ucp(qs));
   p.source = "degenerate: section 5 problem nc=10 with " + std::to_string(stopped) + " fingers stopped";
   return {{Family::kDegenerate, d, std::to_string(stopped) + "/10 stopped", seed, ucp_question(std::move(p))}};
 }

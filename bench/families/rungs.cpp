@@ -106,7 +106,7 @@ double violation(const solvers::ucp::StandardPolyhedron<Q>& P, const Vec<Q>& x) 
 
 void measure_point(const UcpQuestion& q, const Answer& a, const Answer&, Errors& e) {
   if (a.x.size() == 0) return;
-  e.violation = std::max(violation(q.problem.ucp.X, a.x), violation(q.problem.ucp.Y, a.y));
+  e.violation = std::max(violation(q.problem.ucp().X, a.x), violation(q.problem.ucp().Y, a.y));
   e.xTy = std::abs(a.x.dot(a.y).get_d());
 }
 

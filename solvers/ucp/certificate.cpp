@@ -36,7 +36,7 @@ json header(const std::string& kind, const UcpProblem& problem) {
   return j;
 }
 
-/// The data a checker needs, derived from the problem file by the checker itself (not by build_X / build_C).
+/// The data a checker needs, derived from the problem file by the checker itself (not by build_X / build_Y).
 struct CheckData {
   bool quasistatic = false;
   Index n = 0;
@@ -51,8 +51,9 @@ struct CheckData {
 CheckData derive(const UcpProblem& u) {
   CheckData c;
   if (!u.quasistatic) {
-    c.n = u.ucp.n();
-    c.AX = u.ucp.X.A, c.bX = u.ucp.X.b, c.AY = u.ucp.Y.A, c.bY = u.ucp.Y.b;
+    const UcpInstance<Q>& ucp = u.ucp();
+    c.n = ucp.n();
+    c.AX = ucp.X.A, c.bX = ucp.X.b, c.AY = ucp.Y.A, c.bY = ucp.Y.b;
     return c;
   }
   const QuasistaticProblem& p = *u.quasistatic;
@@ -239,27 +240,14 @@ CertificateCheck check_solvable(const JsonInput& cert, const CheckData& c) {
   return out;
 }
 
-/// build_Y scales row r of [C | -d] by s_r > 0; a Farkas vector u of the scaled rows is (s_r u_r) for C. The s_r.
-Vec<Q> row_scales(const StandardPolyhedron<Q>& Y, const QuasistaticProblem& p) {
-  const Mat<Q> C = build_C(p);
-  Vec<Q> s(C.rows());
-  for (Index r = 0; r < C.rows(); ++r) {
-    s(r) = 0;
-    for (Index c = 0; c < C.cols() && sgn(s(r)) == 0; ++c)
-      if (sgn(C(r, c)) != 0) s(r) = Y.A(r, c) / C(r, c);
-    if (sgn(s(r)) == 0 && sgn(p.d(r)) != 0) s(r) = Y.b(r) / Q(-p.d(r));
-    if (sgn(s(r)) == 0) s(r) = 1;  // a zero row: unscaled
-  }
-  return s;
-}
-
-/// Z^T u for Z's sparse rows (integer_rows.h): the combination of P's left null vectors.
+/// Z^T u for Z's sparse rows, X's rows (build_X: row r of X.A is row r of Z, n = 2nc entries, then its v_t block
+/// negated): the combination of P's left null vectors.
 Vec<Q> z_transpose_times(const std::vector<SparseRow>& Z, Index n, const Vec<Q>& u) {
   Vec<Q> w = Vec<Q>::Zero(n);
   for (std::size_t r = 0; r < Z.size(); ++r) {
     const Q& ur = u(static_cast<Index>(r));
     if (sgn(ur) == 0) continue;
-    for (std::size_t k = 0; k < Z[r].col.size(); ++k) w(Z[r].col[k]) += ur * Q(Z[r].value[k]);
+    for (std::size_t k = 0; k < Z[r].col.size() && Z[r].col[k] < n; ++k) w(Z[r].col[k]) += ur * Q(Z[r].value[k]);
   }
   return w;
 }
@@ -269,12 +257,11 @@ Vec<Q> z_transpose_times(const std::vector<SparseRow>& Z, Index n, const Vec<Q>&
 std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>& result) {
   json j = header("ucp_jammed", problem);
   j["reason"] = result.reason;
-  std::vector<SparseRow> Z;
+  // build_Y scales row r of [C | -d] by y_factor[r] > 0; a Farkas vector u of the scaled rows is (y_factor[r] u_r)
+  // for C.
+  const std::vector<SparseRow>& Z = problem.rows().X.A;
   Vec<Q> y_scale;
-  if (problem.quasistatic) {
-    Z = left_null_rows(problem.quasistatic->P);
-    y_scale = row_scales(problem.ucp.Y, *problem.quasistatic);
-  }
+  if (problem.quasistatic) y_scale = Eigen::Map<const Vec<Q>>(problem.rows().y_factor.data(), problem.rows().Y.rows());
   json nodes = json::array();
   for (const SearchNode<Q>& node : result.tree) {
     json n;

@@ -8,7 +8,7 @@ using Index = Eigen::Index;
 
 EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max_lps, const exact::Deadline& deadline,
                                 const std::function<void(long, long)>& progress) {
-  const UcpInstance<Q>& u = problem.ucp;
+  const UcpInstance<Q>& u = problem.ucp();
   const Index n = u.n(), mx = u.X.A.rows(), my = u.Y.A.rows();
   // X x Y as one block-diagonal polyhedron in R^{2n}.
   StandardPolyhedron<Q> XY;

@@ -13,12 +13,12 @@ namespace {
 
 using Index = Eigen::Index;
 
-/// A polyhedron's rows [A | b] as integers (exact::IntegerSystem), built on first use: run(check) runs
-/// check(system) in 128-bit integers and, if a number does not fit, again in Z (exact::with_exact_ring); rows
-/// that do not fit in 128 bits are built once and go straight to Z afterwards.
+/// A polyhedron's rows [A | b] as integers (exact::IntegerSystem), built from its integer rows on first use:
+/// run(check) runs check(system) in 128-bit integers and, if a number does not fit, again in Z
+/// (exact::with_exact_ring); rows that do not fit in 128 bits are built once and go straight to Z afterwards.
 class IntegerRows {
  public:
-  explicit IntegerRows(const StandardPolyhedron<Q>& P) : P_(P) {}
+  explicit IntegerRows(const IntegerPolyhedron& P) : P_(P) {}
 
   template <class F>
   auto run(F&& check) {
@@ -32,7 +32,7 @@ class IntegerRows {
     std::optional<exact::IntegerSystem<R>>& s = std::get<std::optional<exact::IntegerSystem<R>>>(systems_);
     if (!s) {
       try {
-        s = exact::integer_system<R>(P_.A, P_.b);
+        s = integer_system<R>(P_);
       } catch (const exact::RingOverflow&) {
         too_wide_ = true;
         throw;
@@ -41,7 +41,7 @@ class IntegerRows {
     return *s;
   }
 
-  const StandardPolyhedron<Q>& P_;
+  const IntegerPolyhedron& P_;
   bool too_wide_ = false;  ///< the rows do not fit in 128 bits
   std::tuple<std::optional<exact::IntegerSystem<exact::Int128>>, std::optional<exact::IntegerSystem<exact::Z>>>
       systems_;
@@ -50,8 +50,12 @@ class IntegerRows {
 /// Walks the float tree depth first with the fixings of each node and proves its leaves (prove_leaves).
 class LeafProver {
  public:
-  LeafProver(const UcpInstance<Q>& ucp, FloatTree& tree, const std::optional<SearchOptions>& repair, ProvenTree& out)
-      : ucp_(ucp), farkas_(tree.farkas), repair_(repair), out_(out), rows_{IntegerRows(ucp.X), IntegerRows(ucp.Y)} {
+  LeafProver(const UcpProblem& problem, FloatTree& tree, const std::optional<SearchOptions>& repair, ProvenTree& out)
+      : problem_(problem),
+        farkas_(tree.farkas),
+        repair_(repair),
+        out_(out),
+        rows_{IntegerRows(problem.rows().X), IntegerRows(problem.rows().Y)} {
     out_.result.tree = std::move(tree.nodes);
   }
 
@@ -71,7 +75,7 @@ class LeafProver {
         return false;
       }
       ++out_.leaves.repaired;
-      out_.result.status = search_subtree(ucp_, *repair_, out_.result, id, zx, zy);
+      out_.result.status = search_subtree(problem_.ucp(), *repair_, out_.result, id, zx, zy);
       return out_.result.status == UcpStatus::kJammed;
     }
     const auto b = static_cast<std::size_t>(node.branch);
@@ -103,10 +107,9 @@ class LeafProver {
         return p.farkas;
       }
     }
-    const StandardPolyhedron<Q>& P = s == 0 ? ucp_.X : ucp_.Y;
     const Vec<double>& approx = farkas_[k];
     const std::vector<Index>& basis = out_.result.tree[k].farkas_basis;
-    if (approx.size() == P.A.rows()) {
+    if (approx.size() == (s == 0 ? problem_.rows().X : problem_.rows().Y).rows()) {
       // The float vector rounded to fractions, else recomputed exactly from its LP's basis.
       bool rounded = false;
       std::optional<FarkasVector> f = rows_[s].run([&](const auto& system) {
@@ -120,6 +123,7 @@ class LeafProver {
         return std::move(f->y);
       }
     }
+    const StandardPolyhedron<Q>& P = s == 0 ? problem_.ucp().X : problem_.ucp().Y;
     const FaceLpResult<Q> r =
         minimize_on_face(make_face(P, zero), Vec<Q>(Vec<Q>::Zero(P.A.cols())), Arith::kVerified, out_.result.counters);
     if (r.status != FaceLpStatus::kEmpty) return std::nullopt;
@@ -132,7 +136,7 @@ class LeafProver {
     return r.farkas;
   }
 
-  const UcpInstance<Q>& ucp_;
+  const UcpProblem& problem_;
   const std::vector<Vec<double>>& farkas_;
   const std::optional<SearchOptions>& repair_;
   ProvenTree& out_;
@@ -142,20 +146,21 @@ class LeafProver {
 
 }  // namespace
 
-std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, const Vec<double>& x_approx,
+std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpProblem& problem, const Vec<double>& x_approx,
                                                     const Vec<double>& y_approx, const std::vector<bool>& x_zero,
                                                     const std::vector<bool>& y_zero, LpCounters& count) {
   for (std::size_t i = 0; i < x_zero.size(); ++i) assert(x_zero[i] || y_zero[i]);
-  const auto point = [&](const StandardPolyhedron<Q>& P, const Vec<double>& approx,
-                         const std::vector<bool>& zero) -> std::optional<Vec<Q>> {
+  const Index n = problem.n();
+  const auto point = [&](int side, const Vec<double>& approx, const std::vector<bool>& zero) -> std::optional<Vec<Q>> {
+    const IntegerPolyhedron& P = side == 0 ? problem.rows().X : problem.rows().Y;
     // A vertex (the search's points are): its support columns are independent, so A_S x_S = b has one solution
     // (only those columns become integers).
     std::vector<Index> support;
-    for (Index j = 0; j < ucp.n(); ++j)
+    for (Index j = 0; j < n; ++j)
       if (!zero[static_cast<std::size_t>(j)]) support.push_back(j);
     if (std::optional<Vec<Q>> xs = exact::with_exact_ring<Q, exact::Int128>(
-            [&]<class R>() { return exact::unique_solution(exact::integer_system<R>(P.A, P.b, support)); })) {
-      Vec<Q> x(ucp.n());  // zeros (a default rational is 0, cheaper than Zero())
+            [&]<class R>() { return exact::unique_solution(integer_system<R>(P), support); })) {
+      Vec<Q> x(n);  // zeros (a default rational is 0, cheaper than Zero())
       bool nonnegative = true;
       for (std::size_t t = 0; t < support.size(); ++t) {
         nonnegative = nonnegative && sgn((*xs)(static_cast<Index>(t))) >= 0;
@@ -167,24 +172,24 @@ std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, c
     if (std::optional<Vec<Q>> x =
             rows.run([&](const auto& system) { return exact::rounded_point(system, approx, zero); }))
       return x;
-    const FaceLpResult<Q> r =
-        minimize_on_face(make_face(P, zero), Vec<Q>(Vec<Q>::Zero(ucp.n())), Arith::kVerified, count);
+    const FaceLpResult<Q> r = minimize_on_face(make_face(side == 0 ? problem.ucp().X : problem.ucp().Y, zero),
+                                               Vec<Q>(Vec<Q>::Zero(n)), Arith::kVerified, count);
     if (r.status != FaceLpStatus::kOptimal) return std::nullopt;
     return r.vertex.x;
   };
-  std::optional<Vec<Q>> x = point(ucp.X, x_approx, x_zero);
+  std::optional<Vec<Q>> x = point(0, x_approx, x_zero);
   if (!x) return std::nullopt;
-  std::optional<Vec<Q>> y = point(ucp.Y, y_approx, y_zero);
+  std::optional<Vec<Q>> y = point(1, y_approx, y_zero);
   if (!y) return std::nullopt;
   return std::make_pair(std::move(*x), std::move(*y));
 }
 
-ProvenTree prove_leaves(const UcpInstance<Q>& ucp, FloatTree tree, const std::optional<SearchOptions>& repair) {
+ProvenTree prove_leaves(const UcpProblem& problem, FloatTree tree, const std::optional<SearchOptions>& repair) {
   ProvenTree out;
   if (tree.nodes.empty()) return out;
-  std::vector<bool> zx(static_cast<std::size_t>(ucp.n()), false), zy = zx;
+  std::vector<bool> zx(static_cast<std::size_t>(problem.n()), false), zy = zx;
   out.result.status = UcpStatus::kJammed;
-  LeafProver(ucp, tree, repair, out).prove(0, zx, zy);
+  LeafProver(problem, tree, repair, out).prove(0, zx, zy);
   if (out.result.status != UcpStatus::kJammed) out.result.tree.clear();
   out.result.nodes = static_cast<long>(out.result.tree.size());
   return out;

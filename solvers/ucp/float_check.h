@@ -18,7 +18,7 @@ namespace contactcert::solvers::ucp {
 /// exact::IntMatrix::solve), else the float point rounded to fractions and checked (exact::rounded_point), both
 /// in 128-bit integers with a restart in GMP on overflow, else an exact face LP. nullopt if one of the two faces is
 /// empty in exact arithmetic.
-std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpInstance<Q>& ucp, const Vec<double>& x_approx,
+std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpProblem& problem, const Vec<double>& x_approx,
                                                     const Vec<double>& y_approx, const std::vector<bool>& x_zero,
                                                     const std::vector<bool>& y_zero, LpCounters& count);
 
@@ -55,6 +55,6 @@ struct ProvenTree {
 /// duals of its float LP's basis solved exactly (basis_farkas), else that of an exact face LP. A leaf whose face
 /// is not empty in exact arithmetic is repaired when `repair` is given: the exact search continues below it with those
 /// options (search_subtree), and only there.
-ProvenTree prove_leaves(const UcpInstance<Q>& ucp, FloatTree tree, const std::optional<SearchOptions>& repair);
+ProvenTree prove_leaves(const UcpProblem& problem, FloatTree tree, const std::optional<SearchOptions>& repair);
 
 }  // namespace contactcert::solvers::ucp

@@ -106,7 +106,7 @@ UcpProblem generate_random_problem(const RandomProblemOptions& o, std::mt19937_6
   validate(p, "generated");
   UcpProblem u;
   u.quasistatic = p;
-  u.ucp = build_ucp(p);
+  u.set(build_ucp(p));
   u.source = "random problem (Pang, Trinkle, Lo section 5): nc=" + std::to_string(nc) + " mu in (0," +
              exact::to_string(mu_max) + ") |abar|=" + std::to_string(na);
   return u;
@@ -115,19 +115,21 @@ UcpProblem generate_random_problem(const RandomProblemOptions& o, std::mt19937_6
 UcpProblem reduction_problem(const ZeroOneProblem& zo) {
   const Index m = zo.A.rows(), n = zo.A.cols();
   const Mat<Q> I = Mat<Q>::Identity(n, n);
-  UcpProblem u;
-  u.ucp.X.A = Mat<Q>::Zero(m + n, 2 * n);
-  u.ucp.X.A.block(0, 0, m, n) = zo.A;  // A z = b
-  u.ucp.X.A.block(m, 0, n, n) = I;     // z + w = e
-  u.ucp.X.A.block(m, n, n, n) = I;
-  u.ucp.Y.A = Mat<Q>::Zero(m + n, 2 * n);
-  u.ucp.Y.A.block(0, n, m, n) = zo.A;  // A v = b
-  u.ucp.Y.A.block(m, 0, n, n) = I;     // u + v = e
-  u.ucp.Y.A.block(m, n, n, n) = I;
+  UcpInstance<Q> ucp;
+  ucp.X.A = Mat<Q>::Zero(m + n, 2 * n);
+  ucp.X.A.block(0, 0, m, n) = zo.A;  // A z = b
+  ucp.X.A.block(m, 0, n, n) = I;     // z + w = e
+  ucp.X.A.block(m, n, n, n) = I;
+  ucp.Y.A = Mat<Q>::Zero(m + n, 2 * n);
+  ucp.Y.A.block(0, n, m, n) = zo.A;  // A v = b
+  ucp.Y.A.block(m, 0, n, n) = I;     // u + v = e
+  ucp.Y.A.block(m, n, n, n) = I;
   Vec<Q> rhs(m + n);
   rhs << zo.b, Vec<Q>::Ones(n);
-  u.ucp.X.b = rhs;
-  u.ucp.Y.b = rhs;
+  ucp.X.b = rhs;
+  ucp.Y.b = rhs;
+  UcpProblem u;
+  u.set(std::move(ucp));
   u.source = "Proposition 2 reduction of a 0-1 problem with " + std::to_string(m) + " rows and " + std::to_string(n) +
              " columns";
   return u;

@@ -1,7 +1,5 @@
 #include "solvers/ucp/integer_rows.h"
 
-#include <limits>
-
 #include "exact/int_matrix.h"
 
 namespace contactcert::solvers::ucp {
@@ -12,21 +10,13 @@ using exact::Int128;
 using exact::IntMatrix;
 using exact::Mat;
 using exact::Q;
+using exact::Vec;
 using exact::Z;
 using Index = Eigen::Index;
 namespace ring = exact::ring;
 
 Z to_z(Int128 x) { return ring::to_z(x); }
 const Z& to_z(const Z& x) { return x; }
-
-/// out = x as a rational, without throwing (so that a restart in Z never sees half-written output).
-void assign(Int128 x, Q& out) {
-  if (x >= std::numeric_limits<long>::min() && x <= std::numeric_limits<long>::max())
-    mpq_set_si(out.get_mpq_t(), static_cast<long>(x), 1);
-  else
-    out = Q(ring::to_z(x));
-}
-void assign(const Z& x, Q& out) { out = Q(x); }
 
 /// left_null_rows in the ring R (Int128: throws RingOverflow when a number does not fit): the kernel of P^T, whose
 /// rows (the columns of P) are scaled to primitive integers first (the same kernel), its non-zero entries.
@@ -45,10 +35,12 @@ std::vector<SparseRow> left_null_rows_in(const Mat<Q>& P) {
 }
 
 template <class R>
-void make_primitive_in(const std::vector<Q*>& v) {
+std::vector<Z> primitive_integers_in(const std::vector<const Q*>& v) {
   const IntMatrix<R> row = IntMatrix<R>::primitive_rows(
       1, static_cast<Index>(v.size()), [&](Index, Index j) -> const Q& { return *v[static_cast<std::size_t>(j)]; });
-  for (std::size_t i = 0; i < v.size(); ++i) assign(row(0, static_cast<Index>(i)), *v[i]);
+  std::vector<Z> out(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) out[i] = to_z(row(0, static_cast<Index>(i)));
+  return out;
 }
 
 }  // namespace
@@ -57,8 +49,74 @@ std::vector<SparseRow> left_null_rows(const Mat<Q>& P) {
   return exact::with_exact_ring<Q, Int128>([&]<class R>() { return left_null_rows_in<R>(P); });
 }
 
-void make_primitive(const std::vector<Q*>& v) {
-  exact::with_exact_ring<Q, Int128>([&]<class R>() { make_primitive_in<R>(v); });
+std::vector<Z> primitive_integers(const std::vector<const Q*>& v) {
+  return exact::with_exact_ring<Q, Int128>([&]<class R>() { return primitive_integers_in<R>(v); });
 }
+
+IntegerPolyhedron integer_polyhedron(const Mat<Q>& A, const Vec<Q>& b) {
+  IntegerPolyhedron P;
+  P.n = A.cols();
+  P.A.resize(static_cast<std::size_t>(A.rows()));
+  P.den.resize(P.A.size());
+  P.b = b;
+  std::vector<Z> row(static_cast<std::size_t>(A.cols()));
+  for (Index i = 0; i < A.rows(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    P.den[k] = ring::to_common_denominator<Z>(
+        A.cols(), [&](Index j) -> const Q& { return A(i, j); }, row.data());
+    for (Index j = 0; j < A.cols(); ++j)
+      if (sgn(row[static_cast<std::size_t>(j)]) != 0) {
+        P.A[k].col.push_back(j);
+        P.A[k].value.push_back(std::move(row[static_cast<std::size_t>(j)]));
+      }
+  }
+  return P;
+}
+
+Mat<Q> rational_matrix(const IntegerPolyhedron& P) {
+  Mat<Q> A(P.rows(), P.n);  // zeros (a default rational is 0, cheaper than Zero())
+  for (std::size_t i = 0; i < P.A.size(); ++i) {
+    const SparseRow& r = P.A[i];
+    for (std::size_t e = 0; e < r.col.size(); ++e) {
+      Q& a = A(static_cast<Index>(i), r.col[e]);
+      if (P.den[i] == 1)
+        mpq_set_z(a.get_mpq_t(), r.value[e].get_mpz_t());
+      else
+        ring::to_rational(r.value[e], P.den[i], a);
+    }
+  }
+  return A;
+}
+
+template <class R>
+exact::IntegerSystem<R> integer_system(const IntegerPolyhedron& P) {
+  // Row i of [A | b] is [A[i] | L_b b_i] / den_i over den_i and L_b the denominator of b_i: over L = lcm(den_i, L_b),
+  // A[i] (L / den_i) and num(b_i) (L / L_b), as ring::to_common_denominator makes the rational row.
+  exact::IntegerSystem<R> s;
+  s.m = P.rows(), s.n = P.n;
+  s.A.assign(static_cast<std::size_t>(s.m * s.n), R(0));
+  s.b.resize(static_cast<std::size_t>(s.m));
+  s.row_scale.resize(static_cast<std::size_t>(s.m));
+  R den, den_b, f;
+  for (Index i = 0; i < s.m; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    ring::from_integer(P.den[k], den);
+    ring::from_integer(P.b(i).get_den(), den_b);
+    R& L = s.row_scale[k];
+    L = ring::lcm(den, den_b);
+    f = ring::divexact(L, den);
+    const SparseRow& r = P.A[k];
+    for (std::size_t e = 0; e < r.col.size(); ++e) {
+      R& a = s.A[static_cast<std::size_t>(i * s.n + r.col[e])];
+      ring::from_integer(r.value[e], a);
+      if (f != 1) a = ring::mul(a, f);
+    }
+    ring::from_integer(P.b(i).get_num(), s.b[k]);
+    if (L != den_b) s.b[k] = ring::mul(s.b[k], ring::divexact(L, den_b));
+  }
+  return s;
+}
+template exact::IntegerSystem<Int128> integer_system<Int128>(const IntegerPolyhedron&);
+template exact::IntegerSystem<Z> integer_system<Z>(const IntegerPolyhedron&);
 
 }  // namespace contactcert::solvers::ucp

@@ -134,8 +134,10 @@ UcpProblem read_ucp_problem(const JsonInput& in, UcpPhases* phases) {
     } else if (kind == "ucp") {
       in.expect_keys({"kind", "n", "X", "Y", "source", "note"});
       const auto n = static_cast<std::size_t>(in.at("n").integer(1, 100000));
-      out.ucp.X = read_polyhedron(in.at("X"), n);
-      out.ucp.Y = read_polyhedron(in.at("Y"), n);
+      UcpInstance<Q> u;
+      u.X = read_polyhedron(in.at("X"), n);
+      u.Y = read_polyhedron(in.at("Y"), n);
+      out.set(std::move(u));
     } else {
       in.at("kind").fail("expected \"quasistatic\", \"quasistatic_scene\" or \"ucp\", found \"" + kind + "\"");
     }
@@ -143,7 +145,7 @@ UcpProblem read_ucp_problem(const JsonInput& in, UcpPhases* phases) {
   }
   if (out.quasistatic) {
     const PhaseTimer t(build);
-    out.ucp = build_ucp(*out.quasistatic);
+    out.set(build_ucp(*out.quasistatic));
   }
   if (phases) phases->parse += parse, phases->build += build;
   return out;
@@ -160,65 +162,123 @@ UcpProblem load_ucp_problem(const std::string& path, UcpPhases* phases) {
   return read_ucp_problem(*in, phases);
 }
 
-StandardPolyhedron<Q> build_X(const QuasistaticProblem& p) {
+IntegerPolyhedron build_X(const QuasistaticProblem& p) {
   // Section 2: Z a = 0 iff a = P b for some b. X.A = Z B with B x = [v_n; v_t^+ - v_t^-] for x = (v_n, v_t^+,
   // v_t^-): B only selects and negates columns, so row r of X.A is row r of Z with its v_t block repeated negated.
+  // X.b = -Z h with h = J_alpha theta_alpha = hn / L (integers over one denominator): -(Z_r . hn) / L.
   const Index nc = p.nc;
-  const std::vector<SparseRow> rows = left_null_rows(p.P);
+  IntegerPolyhedron X;
+  X.n = 3 * nc;
+  X.A = left_null_rows(p.P);
+  X.den.assign(X.A.size(), exact::Z(1));
+  X.b = Vec<Q>(X.rows());
   const Vec<Q> h = p.J_alpha_theta_alpha();
-  StandardPolyhedron<Q> X;
-  X.A = Mat<Q>::Zero(static_cast<Index>(rows.size()), 3 * nc);
-  X.b = Vec<Q>::Zero(X.A.rows());
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const auto r = static_cast<Index>(k);
-    for (std::size_t e = 0; e < rows[k].col.size(); ++e) {
-      const Index c = rows[k].col[e];
-      const Q z(rows[k].value[e]);
-      X.A(r, c) = z;
-      if (c >= nc) X.A(r, c + nc) = -z;
-      if (sgn(h(c)) != 0) X.b(r) -= z * h(c);  // X.b = -Z h
+  std::vector<exact::Z> hn(static_cast<std::size_t>(h.size()));
+  const exact::Z L = exact::ring::to_common_denominator<exact::Z>(
+      h.size(), [&](Index i) -> const Q& { return h(i); }, hn.data());
+  exact::Z dot;
+  for (std::size_t k = 0; k < X.A.size(); ++k) {
+    SparseRow& row = X.A[k];
+    dot = 0;
+    const std::size_t z_entries = row.col.size();
+    for (std::size_t e = 0; e < z_entries; ++e) {
+      const Index c = row.col[e];
+      const exact::Z& hc = hn[static_cast<std::size_t>(c)];
+      if (sgn(hc) != 0) mpz_submul(dot.get_mpz_t(), row.value[e].get_mpz_t(), hc.get_mpz_t());
+      if (c >= nc) {
+        exact::Z minus = -row.value[e];
+        row.col.push_back(c + nc);
+        row.value.push_back(std::move(minus));
+      }
     }
+    exact::ring::to_rational(dot, L, X.b(static_cast<Index>(k)));
   }
   return X;
 }
 
-Mat<Q> build_C(const QuasistaticProblem& p) {
-  // Column i of Wn - Wt U is Wn_i - mu_i Wt_i (U = diag(mu)): no product with U.
+IntegerPolyhedron build_Y(const QuasistaticProblem& p, std::vector<Q>* factor) {
+  // The rows of [C | -d], sparse: C's friction rows [2U | -I | -I] (row i: 2 mu_i, -1, -1) and the rows
+  // [Wn - Wt U | Wt | 0] over the columns k of P = [W^T  J_abar] (Wn^T, Wt^T stacked), (J_abar)^T likewise: column i of
+  // Wn - Wt U is Wn_i - mu_i Wt_i (U = diag(mu)), no product with U. Each row is scaled to primitive integers.
   const Index nc = p.nc, nq = p.nq, na = static_cast<Index>(p.abar.size());
-  Mat<Q> C = Mat<Q>::Zero(nc + nq + na, 3 * nc);
-  for (Index i = 0; i < nc; ++i) {
-    C(i, i) = 2 * p.mu(i);
-    C(i, nc + i) = -1;
-    C(i, 2 * nc + i) = -1;
-  }
-  // Rows nc.. of [Wn - Wt U | Wt | 0] are the columns of P = [W^T  J_abar] (Wn^T, Wt^T stacked), (J_abar)^T likewise.
-  for (Index k = 0; k < nq + na; ++k)
-    for (Index i = 0; i < nc; ++i) {
-      const Q& n = p.P(i, k);
-      const Q& t = p.P(nc + i, k);
-      C(nc + k, nc + i) = t;
-      C(nc + k, i) = sgn(t) == 0 ? n : Q(n - t * p.mu(i));
+  IntegerPolyhedron Y;
+  Y.n = 3 * nc;
+  Y.A.resize(static_cast<std::size_t>(nc + nq + na));
+  Y.den.assign(Y.A.size(), exact::Z(1));
+  Y.b = Vec<Q>(Y.rows());
+  if (factor) factor->resize(Y.A.size());
+  std::vector<Q> entries;
+  std::vector<const Q*> row;
+  const Q minus_one(-1);
+  for (Index r = 0; r < Y.rows(); ++r) {
+    SparseRow& out = Y.A[static_cast<std::size_t>(r)];
+    entries.clear();
+    entries.reserve(static_cast<std::size_t>(2 * nc + 1));
+    if (r < nc) {
+      out.col = {r, nc + r, 2 * nc + r};
+      entries = {2 * p.mu(r), minus_one, minus_one};
+    } else {
+      const Index k = r - nc;
+      for (Index i = 0; i < nc; ++i) {  // column i: n - mu_i t
+        const Q& n = p.P(i, k);
+        const Q& t = p.P(nc + i, k);
+        if (sgn(t) == 0 && sgn(n) == 0) continue;
+        out.col.push_back(i);
+        entries.push_back(sgn(t) == 0 ? n : Q(n - t * p.mu(i)));
+      }
+      for (Index i = 0; i < nc; ++i)  // column nc + i: t
+        if (sgn(p.P(nc + i, k)) != 0) {
+          out.col.push_back(nc + i);
+          entries.push_back(p.P(nc + i, k));
+        }
     }
-  return C;
-}
-
-StandardPolyhedron<Q> build_Y(const QuasistaticProblem& p) {
-  StandardPolyhedron<Q> Y;
-  Y.A = build_C(p);
-  Y.b = -p.d;  // 0 = C y + d
-  // Each row [C | -d] scaled to a primitive integer vector: the same Y with smaller numbers for the LPs.
-  std::vector<Q*> row;
-  for (Index r = 0; r < Y.A.rows(); ++r) {
+    // Zero entries of C (n = mu_i t) are dropped after the scaling.
+    entries.push_back(-p.d(r));
     row.clear();
-    for (Index c = 0; c < Y.A.cols(); ++c)
-      if (sgn(Y.A(r, c)) != 0) row.push_back(&Y.A(r, c));
-    row.push_back(&Y.b(r));
-    make_primitive(row);
+    for (const Q& e : entries) row.push_back(&e);
+    std::vector<exact::Z> z = primitive_integers(row);
+    Y.b(r) = Q(z.back());
+    if (factor) {
+      const auto first = std::find_if(entries.begin(), entries.end(), [](const Q& e) { return sgn(e) != 0; });
+      (*factor)[static_cast<std::size_t>(r)] =
+          first == entries.end() ? Q(1) : Q(z[static_cast<std::size_t>(first - entries.begin())]) / *first;
+    }
+    z.pop_back();
+    std::size_t kept = 0;
+    for (std::size_t e = 0; e < z.size(); ++e)
+      if (sgn(z[e]) != 0) out.col[kept] = out.col[e], z[kept++] = std::move(z[e]);
+    out.col.resize(kept);
+    z.resize(kept);
+    out.value = std::move(z);
   }
   return Y;
 }
 
-UcpInstance<Q> build_ucp(const QuasistaticProblem& p) { return {build_X(p), build_Y(p)}; }
+IntegerUcp build_ucp(const QuasistaticProblem& p) {
+  IntegerUcp u;
+  u.X = build_X(p);
+  u.Y = build_Y(p, &u.y_factor);
+  return u;
+}
+
+const UcpInstance<Q>& UcpProblem::ucp() const {
+  std::call_once(dense_->built, [this] {
+    const auto dense = [](const IntegerPolyhedron& P) { return StandardPolyhedron<Q>{rational_matrix(P), P.b}; };
+    dense_->ucp = {dense(rows_.X), dense(rows_.Y)};
+  });
+  return dense_->ucp;
+}
+
+void UcpProblem::set(IntegerUcp rows) {
+  rows_ = std::move(rows);
+  dense_ = std::make_shared<Dense>();
+}
+
+void UcpProblem::set(UcpInstance<Q> u) {
+  rows_ = {integer_polyhedron(u.X.A, u.X.b), integer_polyhedron(u.Y.A, u.Y.b), {}};
+  dense_ = std::make_shared<Dense>();
+  std::call_once(dense_->built, [&] { dense_->ucp = std::move(u); });
+}
 
 nlohmann::ordered_json to_json(const UcpProblem& u) {
   nlohmann::ordered_json j;
@@ -243,9 +303,9 @@ nlohmann::ordered_json to_json(const UcpProblem& u) {
     j["mu"] = to_json(p.mu);
   } else {
     j["kind"] = "ucp";
-    j["n"] = u.ucp.n();
-    j["X"] = {{"A", to_json(u.ucp.X.A)}, {"b", to_json(u.ucp.X.b)}};
-    j["Y"] = {{"A", to_json(u.ucp.Y.A)}, {"b", to_json(u.ucp.Y.b)}};
+    j["n"] = u.n();
+    j["X"] = {{"A", to_json(u.ucp().X.A)}, {"b", to_json(u.ucp().X.b)}};
+    j["Y"] = {{"A", to_json(u.ucp().Y.A)}, {"b", to_json(u.ucp().Y.b)}};
   }
   if (!u.source.empty()) j["source"] = u.source;
   return j;
@@ -253,21 +313,9 @@ nlohmann::ordered_json to_json(const UcpProblem& u) {
 
 std::string to_json_text(const UcpProblem& u) { return to_json(u).dump(1) + "\n"; }
 
-template <class T>
-UcpInstance<T> convert(const UcpInstance<Q>& u) {
-  auto conv = [](const StandardPolyhedron<Q>& P) {
-    StandardPolyhedron<T> R;
-    if constexpr (std::is_same_v<T, Q>) {
-      R = P;
-    } else {
-      R.A = exact::to_double(P.A);
-      R.b = exact::to_double(P.b);
-    }
-    return R;
-  };
-  return {conv(u.X), conv(u.Y)};
+UcpInstance<double> to_double(const IntegerUcp& u) {
+  return convert<double>(
+      u, [](const exact::Z& z) { return z.get_d(); }, [](const Q& q) { return q.get_d(); });
 }
-template UcpInstance<double> convert<double>(const UcpInstance<Q>&);
-template UcpInstance<Q> convert<Q>(const UcpInstance<Q>&);
 
 }  // namespace contactcert::solvers::ucp

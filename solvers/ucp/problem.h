@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "exact/json_input.h"
 #include "exact/number.h"
+#include "solvers/ucp/integer_rows.h"
 #include "solvers/ucp/phases.h"
 
 namespace contactcert::solvers::ucp {
@@ -50,12 +53,37 @@ struct QuasistaticProblem {
   Vec<Q> J_alpha_theta_alpha() const;
 };
 
+/// X and Y as the integer rows they are built from (integer_rows.h).
+struct IntegerUcp {
+  IntegerPolyhedron X, Y;
+  /// A quasistatic problem: row r of Y is y_factor[r] > 0 times row r of [C | -d] (build_Y); empty otherwise.
+  std::vector<Q> y_factor;
+  Eigen::Index n() const { return X.n; }
+};
+
 /// A UCP problem file: either a quasistatic problem (with its X and Y built as in section 2) or a
-/// generic UCP (`"kind": "ucp"`, e.g. from the Proposition 2 reduction).
+/// generic UCP (`"kind": "ucp"`, e.g. from the Proposition 2 reduction). X and Y are held as integer rows; the
+/// dense rational form, which only the exact LPs take, is made from them on first use (once; copies share it).
 struct UcpProblem {
   std::optional<QuasistaticProblem> quasistatic;
-  UcpInstance<Q> ucp;
   std::string source;  ///< free text carried by generated files ("reduction: ...")
+
+  const IntegerUcp& rows() const { return rows_; }
+  /// X and Y as dense rationals.
+  const UcpInstance<Q>& ucp() const;
+  Eigen::Index n() const { return rows_.n(); }
+  /// Sets X and Y from their integer rows.
+  void set(IntegerUcp rows);
+  /// Sets X and Y from rationals (a generic UCP): each row is scaled to integers once, u is kept as the dense form.
+  void set(UcpInstance<Q> u);
+
+ private:
+  struct Dense {
+    std::once_flag built;
+    UcpInstance<Q> ucp;
+  };
+  IntegerUcp rows_;
+  std::shared_ptr<Dense> dense_ = std::make_shared<Dense>();
 };
 
 /// Reads and validates a problem (SPEC section 2, or the generic `"kind": "ucp"` form); throws
@@ -71,34 +99,46 @@ void validate(const QuasistaticProblem& p, const std::string& file = "");
 /// X = {(v_n, v_t^+, v_t^-) >= 0 : Z_n v_n + Z_t (v_t^+ - v_t^-) + Z J_alpha theta_dot_alpha = 0} with
 /// Z spanning the left null space of P (Z a = 0 iff a = P b), computed in integers (section 2, integer_rows.h),
 /// its rows primitive.
-StandardPolyhedron<Q> build_X(const QuasistaticProblem& p);
+IntegerPolyhedron build_X(const QuasistaticProblem& p);
 /// Y = {(c_n, s_t^+, s_t^-) >= 0 : C y + d = 0} (section 2), each row of [C | -d] scaled by a positive factor
-/// to primitive integers (the same set; smaller numbers for the LPs).
-StandardPolyhedron<Q> build_Y(const QuasistaticProblem& p);
-/// The matrix C of section 2.
-Mat<Q> build_C(const QuasistaticProblem& p);
-/// Both polyhedra.
-UcpInstance<Q> build_ucp(const QuasistaticProblem& p);
+/// (factor[r], if given) to primitive integers (the same set; smaller numbers for the LPs).
+IntegerPolyhedron build_Y(const QuasistaticProblem& p, std::vector<Q>* factor = nullptr);
+/// Both polyhedra, with Y's row factors.
+IntegerUcp build_ucp(const QuasistaticProblem& p);
 
 /// The problem as a JSON value in SPEC section 2 form (exact numbers as strings in lowest terms).
 nlohmann::ordered_json to_json(const UcpProblem& p);
 /// The same as a JSON text.
 std::string to_json_text(const UcpProblem& p);
 
-/// Converts an exact instance to another number type (double for the float path).
-template <class T>
-UcpInstance<T> convert(const UcpInstance<Q>& u);
-extern template UcpInstance<double> convert<double>(const UcpInstance<Q>&);
-extern template UcpInstance<Q> convert<Q>(const UcpInstance<Q>&);
-
-/// Converts an exact instance entry by entry with f : Q -> T (intervals, MPFR floats of a chosen precision).
-template <class T, class F>
-UcpInstance<T> convert(const UcpInstance<Q>& u, F f) {
-  const auto conv = [&f](const StandardPolyhedron<Q>& P) {
-    return StandardPolyhedron<T>{P.A.unaryExpr(f), P.b.unaryExpr(f)};
+/// X and Y in the number type T (the float rungs), straight from the integer rows: each integer entry a of a row
+/// over den = 1 is from_z(a), every other number q (b, and A's entries over den > 1) from_q(q), the numbers of
+/// the dense rational form as T would convert them.
+template <class T, class FromZ, class FromQ>
+UcpInstance<T> convert(const IntegerUcp& u, FromZ from_z, FromQ from_q) {
+  const T zero = from_z(exact::Z(0));
+  const auto conv = [&](const IntegerPolyhedron& P) {
+    StandardPolyhedron<T> R{Mat<T>::Constant(P.rows(), P.n, zero), Vec<T>(P.rows())};
+    Q q;
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+      const SparseRow& r = P.A[static_cast<std::size_t>(i)];
+      const exact::Z& den = P.den[static_cast<std::size_t>(i)];
+      for (std::size_t e = 0; e < r.col.size(); ++e) {
+        if (den == 1) {
+          R.A(i, r.col[e]) = from_z(r.value[e]);
+        } else {
+          exact::ring::to_rational(r.value[e], den, q);
+          R.A(i, r.col[e]) = from_q(q);
+        }
+      }
+      R.b(i) = from_q(P.b(i));
+    }
+    return R;
   };
   return {conv(u.X), conv(u.Y)};
 }
+/// X and Y in doubles (each number rounded as Q::get_d rounds it).
+UcpInstance<double> to_double(const IntegerUcp& u);
 
 /// Per-row factors of X's and Y's rows from equilibrate (1 for a row left as it was).
 struct RowFactors {

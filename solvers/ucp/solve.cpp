@@ -97,7 +97,7 @@ bool exact_solution(const UcpProblem& problem, const FloatEvidence& ev, UcpRepor
     }
   }
   std::optional<std::pair<Vec<Q>, Vec<Q>>> pair =
-      exact_pair(problem.ucp, rep.x_approx, rep.y_approx, ev.x_zero, ev.y_zero, count);
+      exact_pair(problem, rep.x_approx, rep.y_approx, ev.x_zero, ev.y_zero, count);
   if (!pair) return false;
   t.reset();  // fill_pair times its own phases
   fill_pair(rep, std::move(pair->first), std::move(pair->second), problem);
@@ -243,7 +243,7 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const RowFact
       repair = search_options(opts, deadline);
       repair->heuristic.arith = Arith::kVerified;
     }
-    ProvenTree proven = prove_leaves(problem.ucp, std::move(ev.tree), repair);
+    ProvenTree proven = prove_leaves(problem, std::move(ev.tree), repair);
     check.lps += proven.result.counters.lps;
     r.leaves = proven.leaves;
     if (proven.result.status == UcpStatus::kSolvable) {
@@ -269,7 +269,7 @@ bool decide_at(const UcpProblem& problem, const UcpInstance<T>& u, const RowFact
 }
 
 /// Calls f(u, factors) with the problem's instance in the number type of a float rung (double, intervals, or
-/// MPFR at the rung's precision, inside its MpfrPrecision scope), rows equilibrated.
+/// MPFR at the rung's precision, inside its MpfrPrecision scope), made from its integer rows, rows equilibrated.
 template <class F>
 auto with_float_instance(const UcpProblem& problem, const exact::Rung& rung, F&& f) {
   const auto in = [&](auto u) {
@@ -278,16 +278,20 @@ auto with_float_instance(const UcpProblem& problem, const exact::Rung& rung, F&&
   };
   switch (rung.kind) {
     case exact::Rung::Kind::kInterval:
-      return in(convert<exact::Interval>(problem.ucp, [](const Q& q) { return exact::to_interval(q); }));
+      return in(convert<exact::Interval>(
+          problem.rows(), [](const exact::Z& z) { return exact::to_interval(z); },
+          [](const Q& q) { return exact::to_interval(q); }));
     case exact::Rung::Kind::kMpfr: {
       const exact::MpfrPrecision precision(rung.bits);  // constants and sign tests at the rung's precision
-      return in(convert<exact::Mpfr>(problem.ucp, [&rung](const Q& q) { return exact::to_mpfr(q, rung.bits); }));
+      return in(convert<exact::Mpfr>(
+          problem.rows(), [&rung](const exact::Z& z) { return exact::to_mpfr(z, rung.bits); },
+          [&rung](const Q& q) { return exact::to_mpfr(q, rung.bits); }));
     }
     case exact::Rung::Kind::kDouble:
     case exact::Rung::Kind::kExact:
       break;
   }
-  return in(convert<double>(problem.ucp));
+  return in(to_double(problem.rows()));
 }
 
 /// --arith adaptive: the rungs of exact::adaptive_ladder() in order; --arith verified: double, then exact (the float
@@ -301,7 +305,7 @@ void solve_on_ladder(const UcpProblem& problem, const UcpOptions& opts, const ex
   for (const exact::Rung& rung : adaptive ? exact::adaptive_ladder() : verified_ladder) {
     bool decided = true;
     if (rung.kind == exact::Rung::Kind::kExact)
-      run<Q>(problem, problem.ucp, opts, deadline, rep);
+      run<Q>(problem, problem.ucp(), opts, deadline, rep);
     else
       decided = with_float_instance(problem, rung, [&](const auto& u, const RowFactors& factors) {
         return decide_at(problem, u, factors, opts, deadline, rep);
@@ -386,7 +390,7 @@ UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts) {
   } else if (opts.arith == Arith::kAdaptive || opts.arith == Arith::kVerified) {
     solve_on_ladder(problem, opts, deadline, rep);
   } else {
-    run<Q>(problem, problem.ucp, opts, deadline, rep);
+    run<Q>(problem, problem.ucp(), opts, deadline, rep);
   }
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rep.phases.solve = std::max(0.0, thread_cpu_seconds() - cpu_start - rep.phases.recover - rep.phases.check);

@@ -76,8 +76,8 @@ TEST(BenchFamilies, InstancesAreValid) {
       for (const Instance& inst : all_at(d, seed)) {
         SCOPED_TRACE(fingerprint(inst));
         if (const auto* u = std::get_if<UcpQuestion>(&inst.question)) {
-          const auto& X = u->problem.ucp.X;
-          const auto& Y = u->problem.ucp.Y;
+          const auto& X = u->problem.ucp().X;
+          const auto& Y = u->problem.ucp().Y;
           EXPECT_EQ(X.A.cols(), Y.A.cols());
           EXPECT_EQ(X.A.rows(), X.b.size());
           EXPECT_EQ(Y.A.rows(), Y.b.size());

@@ -32,8 +32,8 @@ TEST(SceneBuilder, DataSetsOneToFourAsGeometryGiveThePapersMatrices) {
     EXPECT_EQ(a.abar, b.abar);
     EXPECT_EQ(a.d, b.d);
     EXPECT_EQ(a.mu, b.mu);
-    EXPECT_EQ(paper.ucp.X.A, built.ucp.X.A);
-    EXPECT_EQ(paper.ucp.Y.b, built.ucp.Y.b);
+    EXPECT_EQ(paper.ucp().X.A, built.ucp().X.A);
+    EXPECT_EQ(paper.ucp().Y.b, built.ucp().Y.b);
   }
 }
 

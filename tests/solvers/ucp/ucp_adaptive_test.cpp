@@ -84,12 +84,14 @@ TEST(UcpAdaptive, ReductionInstancesGetTheExactVerdictWithACertificate) {
 /// the problem is jammed; a number type that takes eps for 0 finds the "solution" x = (0, eps), y = (0, 1).
 UcpProblem tiny_gap(const Q& eps) {
   UcpProblem p;
-  p.ucp.X.A = Mat<Q>(1, 2);
-  p.ucp.X.A << 1, -1;
-  p.ucp.X.b = Vec<Q>::Constant(1, -eps);
-  p.ucp.Y.A = Mat<Q>(1, 2);
-  p.ucp.Y.A << 0, 1;
-  p.ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  UcpInstance<Q> ucp;
+  ucp.X.A = Mat<Q>(1, 2);
+  ucp.X.A << 1, -1;
+  ucp.X.b = Vec<Q>::Constant(1, -eps);
+  ucp.Y.A = Mat<Q>(1, 2);
+  ucp.Y.A << 0, 1;
+  ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  p.set(ucp);
   return p;
 }
 
@@ -137,14 +139,14 @@ void expect_valid_jammed_certificate(const UcpProblem& p, SearchResult<Q> proof)
 TEST(UcpAdaptive, LeavesAreProvenByTheirRoundedFarkasVectorsElseByAnExactLp) {
   const UcpProblem p = tiny_gap(Q(1, 3));
   // Float Farkas vectors near exact ones: rounded and checked in integers, no LP.
-  ProvenTree good = prove_leaves(p.ucp, tiny_gap_tree(1.0000000000001, -1), std::nullopt);
+  ProvenTree good = prove_leaves(p, tiny_gap_tree(1.0000000000001, -1), std::nullopt);
   ASSERT_EQ(good.result.status, UcpStatus::kJammed);
   EXPECT_EQ(good.result.counters.lps, 0);
   EXPECT_EQ(good.leaves.repaired, 0);
   EXPECT_EQ(good.leaves.rounded, good.leaves.total() - good.leaves.reused);
   expect_valid_jammed_certificate(p, good.result);
   // Float vectors that prove nothing (wrong sign): each leaf falls back to an exact face LP.
-  ProvenTree bad = prove_leaves(p.ucp, tiny_gap_tree(-1, 1), std::nullopt);
+  ProvenTree bad = prove_leaves(p, tiny_gap_tree(-1, 1), std::nullopt);
   ASSERT_EQ(bad.result.status, UcpStatus::kJammed);
   EXPECT_EQ(bad.result.counters.lps, 2);
   EXPECT_EQ(bad.leaves.repaired, 0);
@@ -158,8 +160,8 @@ TEST(UcpAdaptive, ALeafWhoseFaceIsNotEmptyIsRepairedByAnExactSearchBelowIt) {
   FloatTree root;
   root.nodes.resize(1);
   root.farkas = {Vec<double>::Constant(1, 1)};
-  EXPECT_EQ(prove_leaves(jammed.ucp, root, std::nullopt).result.status, UcpStatus::kUnknown);
-  ProvenTree repaired = prove_leaves(jammed.ucp, root, SearchOptions{});
+  EXPECT_EQ(prove_leaves(jammed, root, std::nullopt).result.status, UcpStatus::kUnknown);
+  ProvenTree repaired = prove_leaves(jammed, root, SearchOptions{});
   ASSERT_EQ(repaired.result.status, UcpStatus::kJammed);
   EXPECT_EQ(repaired.leaves.repaired, 1);
   EXPECT_GE(repaired.result.tree.size(), 3u);
@@ -167,11 +169,11 @@ TEST(UcpAdaptive, ALeafWhoseFaceIsNotEmptyIsRepairedByAnExactSearchBelowIt) {
   // The same wrong leaf on a solvable problem (eps = -1/3: x = (1/3, 0), y = (0, 1)): the repair finds the
   // exactly complementary pair.
   const UcpProblem solvable = tiny_gap(Q(-1, 3));
-  ProvenTree found = prove_leaves(solvable.ucp, root, SearchOptions{});
+  ProvenTree found = prove_leaves(solvable, root, SearchOptions{});
   ASSERT_EQ(found.result.status, UcpStatus::kSolvable);
   EXPECT_EQ(found.leaves.repaired, 1);
-  EXPECT_EQ(solvable.ucp.X.A * found.result.x, solvable.ucp.X.b);
-  EXPECT_EQ(solvable.ucp.Y.A * found.result.y, solvable.ucp.Y.b);
+  EXPECT_EQ(solvable.ucp().X.A * found.result.x, solvable.ucp().X.b);
+  EXPECT_EQ(solvable.ucp().Y.A * found.result.y, solvable.ucp().Y.b);
   EXPECT_EQ(found.result.x.dot(found.result.y), 0);
 }
 
@@ -182,17 +184,19 @@ TEST(UcpAdaptive, IntegerChecksThatOverflow128BitsRestartInGmp) {
   Q a = 3, b = 1;
   mpq_mul_2exp(a.get_mpq_t(), a.get_mpq_t(), 125);
   mpq_mul_2exp(b.get_mpq_t(), b.get_mpq_t(), 126);
-  p.ucp.X.A = Mat<Q>(1, 3);
-  p.ucp.X.A << a, a, 0;
-  p.ucp.X.b = Vec<Q>::Constant(1, b);
-  p.ucp.Y.A = Mat<Q>(1, 3);
-  p.ucp.Y.A << 0, 0, 1;
-  p.ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  UcpInstance<Q> ucp;
+  ucp.X.A = Mat<Q>(1, 3);
+  ucp.X.A << a, a, 0;
+  ucp.X.b = Vec<Q>::Constant(1, b);
+  ucp.Y.A = Mat<Q>(1, 3);
+  ucp.Y.A << 0, 0, 1;
+  ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  p.set(ucp);
   Vec<double> x(3), y(3);
   x << 1.0 / 3, 1.0 / 3, 0;
   y << 0, 0, 1;
   LpCounters count;
-  const auto pair = exact_pair(p.ucp, x, y, {false, false, true}, {true, true, false}, count);
+  const auto pair = exact_pair(p, x, y, {false, false, true}, {true, true, false}, count);
   ASSERT_TRUE(pair);
   EXPECT_EQ(count.lps, 0);  // checked in integers (in GMP after the 128-bit overflow), no LP
   EXPECT_EQ(pair->first(0), Q(1, 3));
@@ -217,16 +221,18 @@ TEST(UcpAdaptive, PaperDataSetsAreDecidedInDoubleWithoutARepairedLeaf) {
 TEST(UcpAdaptive, ALeafIsProvenFromItsFloatLpBasisWhenRoundingFails) {
   // X = {x in R^2_+ : x0 + x1 = 1, x0 + x1 = 2} is empty, Farkas vector (1, -1); Y = {y in R^2_+ : y0 + y1 = 1}.
   UcpProblem p;
-  p.ucp.X.A = Mat<Q>(2, 2);
-  p.ucp.X.A << 1, 1, 1, 1;
-  p.ucp.X.b = Vec<Q>(2);
-  p.ucp.X.b << 1, 2;
-  p.ucp.Y.A = Mat<Q>(1, 2);
-  p.ucp.Y.A << 1, 1;
-  p.ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  UcpInstance<Q> ucp;
+  ucp.X.A = Mat<Q>(2, 2);
+  ucp.X.A << 1, 1, 1, 1;
+  ucp.X.b = Vec<Q>(2);
+  ucp.X.b << 1, 2;
+  ucp.Y.A = Mat<Q>(1, 2);
+  ucp.Y.A << 1, 1;
+  ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  p.set(ucp);
   LpCounters count;
-  const FaceLpResult<double> f = minimize_on_face(make_face(convert<double>(p.ucp).X, {}),
-                                                  Vec<double>(Vec<double>::Zero(2)), Arith::kFloat, count);
+  const FaceLpResult<double> f =
+      minimize_on_face(make_face(to_double(p.rows()).X, {}), Vec<double>(Vec<double>::Zero(2)), Arith::kFloat, count);
   ASSERT_EQ(f.status, FaceLpStatus::kEmpty);
   ASSERT_EQ(f.farkas_basis.size(), 2u);
   // A float vector 1e-7 off: its rounding has y^T A_0 < 0, so only the basis proves the leaf without an LP.
@@ -235,13 +241,13 @@ TEST(UcpAdaptive, ALeafIsProvenFromItsFloatLpBasisWhenRoundingFails) {
   root.nodes[0].farkas_basis = f.farkas_basis;
   root.farkas = {f.farkas};
   root.farkas[0](1) *= 1 + 1e-7;
-  const ProvenTree proven = prove_leaves(p.ucp, root, std::nullopt);
+  const ProvenTree proven = prove_leaves(p, root, std::nullopt);
   ASSERT_EQ(proven.result.status, UcpStatus::kJammed);
   EXPECT_EQ(proven.result.counters.lps, 0);
   expect_valid_jammed_certificate(p, proven.result);
   // Without the basis the leaf needs an exact face LP.
   root.nodes[0].farkas_basis.clear();
-  const ProvenTree by_lp = prove_leaves(p.ucp, root, std::nullopt);
+  const ProvenTree by_lp = prove_leaves(p, root, std::nullopt);
   ASSERT_EQ(by_lp.result.status, UcpStatus::kJammed);
   EXPECT_EQ(by_lp.result.counters.lps, 1);
 }
@@ -252,14 +258,14 @@ TEST(UcpAdaptive, VertexOfDataSet1IsSolvedIn128BitsWithoutOverflow) {
   const UcpProblem p = load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset1.json");
   const std::vector<Eigen::Index> support{2, 6, 8};
   std::optional<Vec<Q>> x;
-  ASSERT_NO_THROW(x = exact::unique_solution(exact::integer_system<exact::Int128>(p.ucp.X.A, p.ucp.X.b, support)));
+  ASSERT_NO_THROW(x = exact::unique_solution(exact::integer_system<exact::Int128>(p.ucp().X.A, p.ucp().X.b, support)));
   ASSERT_TRUE(x);
-  const auto z = exact::unique_solution(exact::integer_system<exact::Z>(p.ucp.X.A, p.ucp.X.b, support));
+  const auto z = exact::unique_solution(exact::integer_system<exact::Z>(p.ucp().X.A, p.ucp().X.b, support));
   ASSERT_TRUE(z);
   EXPECT_EQ(*x, *z);
   Vec<Q> full = Vec<Q>::Zero(9);
   for (std::size_t t = 0; t < support.size(); ++t) full(support[t]) = (*x)(static_cast<Eigen::Index>(t));
-  EXPECT_EQ(p.ucp.X.A * full, p.ucp.X.b);
+  EXPECT_EQ(p.ucp().X.A * full, p.ucp().X.b);
 }
 
 TEST(UcpAdaptive, LeavesOfALargeJammedTreeAreProvenFromTheirBasesWithoutAnLp) {

@@ -21,7 +21,7 @@ CertificateCheck check_text(const std::string& text) {
 
 std::string jammed_text(const UcpProblem& p) {
   std::mt19937_64 rng(1);
-  const SearchResult<Q> s = complete_search(p.ucp, SearchOptions{}, rng);
+  const SearchResult<Q> s = complete_search(p.ucp(), SearchOptions{}, rng);
   EXPECT_EQ(s.status, UcpStatus::kJammed);
   return jammed_certificate(p, s);
 }
@@ -90,7 +90,7 @@ TEST(UcpCertificate, SolvableCertificatesOfDataSets1To3AreAcceptedAndTamperingIs
   for (int k = 1; k <= 3; ++k) {
     const UcpProblem p = load_ucp_problem(scene(k));
     std::mt19937_64 rng(1);
-    const SearchResult<Q> s = complete_search(p.ucp, SearchOptions{}, rng);
+    const SearchResult<Q> s = complete_search(p.ucp(), SearchOptions{}, rng);
     ASSERT_EQ(s.status, UcpStatus::kSolvable);
     const std::string text = solvable_certificate(p, s.x, s.y);
     EXPECT_EQ(check_text(text).verdict, CertificateVerdict::kValid);
@@ -119,7 +119,7 @@ TEST(UcpCertificate, RandomAndReductionJammedCertificatesVerify) {
       p = reduction_problem(random_zero_one(2, 4, false, gen));
     }
     std::mt19937_64 rng(seed);
-    const SearchResult<Q> s = complete_search(p.ucp, SearchOptions{}, rng);
+    const SearchResult<Q> s = complete_search(p.ucp(), SearchOptions{}, rng);
     if (s.status != UcpStatus::kJammed) continue;
     ++checked;
     const CertificateCheck c = check_text(jammed_certificate(p, s));

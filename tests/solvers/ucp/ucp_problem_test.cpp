@@ -5,7 +5,9 @@
 #include <random>
 
 #include "exact/input_error.h"
+#include "exact/interval_number.h"
 #include "exact/linalg.h"
+#include "exact/mpfr_number.h"
 #include "exact/rational_text.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/problem.h"
@@ -101,12 +103,55 @@ UcpInstance<Q> rational_ucp(const QuasistaticProblem& p) {
   return u;
 }
 
+/// The float rungs' instances made from the integer rows equal those converted from the rationals r, number by
+/// number (double, intervals, MPFR), and so do the rows scaled to integers for the exact checks.
+void expect_same_floats(const UcpProblem& u, const UcpInstance<Q>& r, const std::string& name) {
+  for (const auto& [P, R] : {std::pair(&u.rows().X, &r.X), std::pair(&u.rows().Y, &r.Y)}) {
+    const exact::IntegerSystem<exact::Z> a = integer_system<exact::Z>(*P),
+                                         b = exact::integer_system<exact::Z>(R->A, R->b);
+    EXPECT_EQ(a.A, b.A) << name;
+    EXPECT_EQ(a.b, b.b) << name;
+    EXPECT_EQ(a.row_scale, b.row_scale) << name;
+  }
+  const UcpInstance<double> d = to_double(u.rows());
+  EXPECT_EQ(d.X.A, exact::to_double(r.X.A)) << name;
+  EXPECT_EQ(d.X.b, exact::to_double(r.X.b)) << name;
+  EXPECT_EQ(d.Y.A, exact::to_double(r.Y.A)) << name;
+  EXPECT_EQ(d.Y.b, exact::to_double(r.Y.b)) << name;
+  const auto same = [&](const auto& a, const auto& b, const auto& equal) {
+    ASSERT_EQ(a.X.A.rows(), b.X.A.rows()) << name;
+    ASSERT_EQ(a.Y.A.rows(), b.Y.A.rows()) << name;
+    for (const auto& [P, R] : {std::pair(&a.X, &b.X), std::pair(&a.Y, &b.Y)})
+      for (Eigen::Index i = 0; i < P->A.rows(); ++i) {
+        for (Eigen::Index j = 0; j < P->A.cols(); ++j) EXPECT_TRUE(equal(P->A(i, j), R->A(i, j))) << name;
+        EXPECT_TRUE(equal(P->b(i), R->b(i))) << name;
+      }
+  };
+  const auto from_z_interval = [](const exact::Z& z) { return exact::to_interval(z); };
+  const auto from_q_interval = [](const Q& q) { return exact::to_interval(q); };
+  UcpInstance<exact::Interval> ri{{r.X.A.unaryExpr(from_q_interval), r.X.b.unaryExpr(from_q_interval)},
+                                  {r.Y.A.unaryExpr(from_q_interval), r.Y.b.unaryExpr(from_q_interval)}};
+  same(convert<exact::Interval>(u.rows(), from_z_interval, from_q_interval), ri,
+       [](const exact::Interval& a, const exact::Interval& b) { return a.inf() == b.inf() && a.sup() == b.sup(); });
+  constexpr long bits = 60;
+  const exact::MpfrPrecision precision(bits);
+  const auto from_z_mpfr = [](const exact::Z& z) { return exact::to_mpfr(z, bits); };
+  const auto from_q_mpfr = [](const Q& q) { return exact::to_mpfr(q, bits); };
+  UcpInstance<exact::Mpfr> rm{{r.X.A.unaryExpr(from_q_mpfr), r.X.b.unaryExpr(from_q_mpfr)},
+                              {r.Y.A.unaryExpr(from_q_mpfr), r.Y.b.unaryExpr(from_q_mpfr)}};
+  same(convert<exact::Mpfr>(u.rows(), from_z_mpfr, from_q_mpfr), rm, [](const exact::Mpfr& a, const exact::Mpfr& b) {
+    return mpfr_equal_p(a.fr(), b.fr()) && mpfr_get_prec(a.fr()) == mpfr_get_prec(b.fr()) &&
+           mpfr_signbit(a.fr()) == mpfr_signbit(b.fr());
+  });
+}
+
 void expect_rational_ucp(const UcpProblem& u, const std::string& name) {
   const UcpInstance<Q> r = rational_ucp(*u.quasistatic);
-  EXPECT_EQ(u.ucp.X.A, r.X.A) << name;
-  EXPECT_EQ(u.ucp.X.b, r.X.b) << name;
-  EXPECT_EQ(u.ucp.Y.A, r.Y.A) << name;
-  EXPECT_EQ(u.ucp.Y.b, r.Y.b) << name;
+  EXPECT_EQ(u.ucp().X.A, r.X.A) << name;
+  EXPECT_EQ(u.ucp().X.b, r.X.b) << name;
+  EXPECT_EQ(u.ucp().Y.A, r.Y.A) << name;
+  EXPECT_EQ(u.ucp().Y.b, r.Y.b) << name;
+  expect_same_floats(u, r, name);
 }
 
 TEST(UcpProblem, XIsTheSetOfContactVelocitiesReachableByQDotAndThetaAbar) {
@@ -128,10 +173,10 @@ TEST(UcpProblem, XIsTheSetOfContactVelocitiesReachableByQDotAndThetaAbar) {
         x(i) = v(i);
         (sgn(v(p.nc + i)) > 0 ? x(p.nc + i) : x(2 * p.nc + i)) = abs(v(p.nc + i));
       }
-      EXPECT_EQ(u.ucp.X.A * x, u.ucp.X.b);
+      EXPECT_EQ(u.ucp().X.A * x, u.ucp().X.b);
       if (Z.rows() == 0) continue;  // P has full row rank: every v is reachable
       x(0) += 1;                    // v_n changed alone: not reachable unless P spans e_0 (it does not here)
-      EXPECT_NE(u.ucp.X.A * x, u.ucp.X.b);
+      EXPECT_NE(u.ucp().X.A * x, u.ucp().X.b);
     }
   }
 }
@@ -139,8 +184,15 @@ TEST(UcpProblem, XIsTheSetOfContactVelocitiesReachableByQDotAndThetaAbar) {
 TEST(UcpProblem, YEncodesEquilibriumAndCoulombFriction) {
   const UcpProblem u = parse(small_problem().dump());
   const QuasistaticProblem& p = *u.quasistatic;
-  const Mat<Q> C = build_C(p);
+  // Row r of Y is y_factor[r] > 0 times row r of [C | -d].
+  Mat<Q> C = u.ucp().Y.A;
   ASSERT_EQ(C.rows(), p.nc + p.nq + 1);
+  for (Eigen::Index k = 0; k < C.rows(); ++k) {
+    const Q& f = u.rows().y_factor[static_cast<std::size_t>(k)];
+    ASSERT_GT(f, 0);
+    C.row(k) /= f;
+    EXPECT_EQ(-u.ucp().Y.b(k) / f, p.d(k));
+  }
   // y = (c_n, s+, s-) with s+ = mu c_n + c_t, s- = mu c_n - c_t: C y + d = (0; W c + g_obj; (J^T c)_abar + d_abar).
   Vec<Q> cn(2), ct(2);
   cn << 2, 3;
@@ -209,14 +261,14 @@ TEST(UcpProblem, WrittenProblemsReadBackIdentically) {
     EXPECT_EQ(r.quasistatic->d, g.quasistatic->d);
     EXPECT_EQ(r.quasistatic->theta_dot, g.quasistatic->theta_dot);
     EXPECT_EQ(r.quasistatic->alpha, g.quasistatic->alpha);
-    EXPECT_EQ(r.ucp.X.A, g.ucp.X.A);
-    EXPECT_EQ(r.ucp.Y.b, g.ucp.Y.b);
+    EXPECT_EQ(r.ucp().X.A, g.ucp().X.A);
+    EXPECT_EQ(r.ucp().Y.b, g.ucp().Y.b);
   }
   const UcpProblem red = reduction_problem(random_zero_one(2, 4, true, rng));
   const UcpProblem back = parse(to_json_text(red));
   EXPECT_FALSE(back.quasistatic);
-  EXPECT_EQ(back.ucp.X.A, red.ucp.X.A);
-  EXPECT_EQ(back.ucp.Y.b, red.ucp.Y.b);
+  EXPECT_EQ(back.ucp().X.A, red.ucp().X.A);
+  EXPECT_EQ(back.ucp().Y.b, red.ucp().Y.b);
 }
 
 TEST(UcpGenerator, RandomProblemsFollowSection5) {
@@ -247,7 +299,7 @@ TEST(UcpGenerator, ReductionHasTheFormOfProposition2) {
   const ZeroOneProblem zo = random_zero_one(2, 3, true, rng);
   EXPECT_TRUE(zero_one_feasible(zo));
   const UcpProblem u = reduction_problem(zo);
-  EXPECT_EQ(u.ucp.n(), 6);
+  EXPECT_EQ(u.ucp().n(), 6);
   // If z solves (12), (z, e - z) is in X and (e - z, z) in Y, and they are orthogonal.
   for (unsigned mask = 0; mask < 8; ++mask) {
     Vec<Q> z(3);
@@ -256,8 +308,8 @@ TEST(UcpGenerator, ReductionHasTheFormOfProposition2) {
     Vec<Q> x(6), y(6);
     x << z, Vec<Q>(Vec<Q>::Ones(3) - z);
     y << Vec<Q>(Vec<Q>::Ones(3) - z), z;
-    EXPECT_EQ(u.ucp.X.A * x, u.ucp.X.b);
-    EXPECT_EQ(u.ucp.Y.A * y, u.ucp.Y.b);
+    EXPECT_EQ(u.ucp().X.A * x, u.ucp().X.b);
+    EXPECT_EQ(u.ucp().Y.A * y, u.ucp().Y.b);
     EXPECT_EQ(sgn(Q(x.dot(y))), 0);
   }
 }
@@ -268,6 +320,18 @@ TEST(UcpProblem, XAndYInIntegersEqualTheRationalOnes) {
   for (int k = 1; k <= 4; ++k) expect_rational_ucp(load_ucp_problem(scene(k)), "Data Set " + std::to_string(k));
   for (int seed = 0; seed < 100; ++seed)
     expect_rational_ucp(testing::random_problem(seed, 10), "random seed " + std::to_string(seed));
+  // A generic UCP (the reduction family, rational rows): its integer rows, scaled once, give back the same numbers.
+  std::mt19937_64 zo(4);
+  for (int t = 0; t < 5; ++t) {
+    const UcpProblem red = reduction_problem(random_zero_one(2 + t, 3 + t, t % 2 == 0, zo));
+    UcpInstance<Q> r = red.ucp();
+    r.X.A /= Q(2, 7 + 2 * t), r.X.b /= Q(2, 7 + 2 * t);  // rows over a common denominator
+    UcpProblem scaled;
+    scaled.set(r);
+    EXPECT_EQ(rational_matrix(scaled.rows().X), r.X.A);
+    EXPECT_EQ(rational_matrix(scaled.rows().Y), r.Y.A);
+    expect_same_floats(scaled, r, "reduction " + std::to_string(t));
+  }
   // nc = 40 with Pythagorean normals ((a^2 - b^2) / h, 2ab / h), h = a^2 + b^2 the first 40 primes 1 mod 4: the lcm
   // of the denominators of a column of P exceeds 2^128, so the Int128 elimination overflows and restarts in GMP.
   std::mt19937_64 rng(2);
@@ -294,7 +358,7 @@ TEST(UcpProblem, XAndYInIntegersEqualTheRationalOnes) {
     ++i;
   }
   validate(p);
-  big.ucp = build_ucp(p);
+  big.set(build_ucp(p));
   exact::Z l = 1;
   for (Eigen::Index i = 0; i < p.P.rows(); ++i) l = lcm(l, p.P(i, 0).get_den());
   ASSERT_GT(mpz_sizeinbase(l.get_mpz_t(), 2), 128u);

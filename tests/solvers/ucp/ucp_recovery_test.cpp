@@ -148,7 +148,7 @@ std::pair<Vec<Q>, Vec<Q>> bilinear_pair(const UcpProblem& p, std::uint64_t seed)
   BilinearOptions o;
   o.arith = Arith::kExact;
   o.max_random_moves = 2;
-  const BilinearResult<Q> r = bilinear(make_face(p.ucp.X, {}), make_face(p.ucp.Y, {}), o, rng);
+  const BilinearResult<Q> r = bilinear(make_face(p.ucp().X, {}), make_face(p.ucp().Y, {}), o, rng);
   return {r.x.x, r.y.x};
 }
 
@@ -324,8 +324,8 @@ bool expect_pattern_route(const UcpProblem& p, const Vec<Q>& x, const Vec<Q>& y,
   const std::optional<PatternSolution> s = pattern_solution(q, xz, yz);
   if (!s) return false;
   const Vec<Q> xs = s->x.to_q(), ys = s->y.to_q();
-  expect_in_face(p.ucp.X, xs, xz, where + " x");
-  expect_in_face(p.ucp.Y, ys, yz, where + " y");
+  expect_in_face(p.ucp().X, xs, xz, where + " x");
+  expect_in_face(p.ucp().Y, ys, yz, where + " y");
   EXPECT_EQ(xs.dot(ys), 0) << where;
   const std::optional<PhysicalSolution> want = recover(q, xs, ys);
   EXPECT_TRUE(want.has_value()) << where;
@@ -397,7 +397,7 @@ TEST(UcpRecovery, PatternRouteBeyond128BitsTakesTheGmpRoute) {
   const std::vector<Q> s = wide_scales();
   UcpProblem p;
   p.quasistatic = scale_object(*p1.quasistatic, s);
-  p.ucp = build_ucp(*p.quasistatic);
+  p.set(build_ucp(*p.quasistatic));
   EXPECT_TRUE(expect_pattern_route(p, x, y, "scaled data set 1"));
 }
 

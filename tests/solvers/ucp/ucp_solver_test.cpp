@@ -23,8 +23,8 @@ bool in_polyhedron(const StandardPolyhedron<Q>& P, const Vec<Q>& x) {
 }
 
 void expect_physical_solution(const UcpProblem& p, const Vec<Q>& x, const Vec<Q>& y) {
-  ASSERT_TRUE(in_polyhedron(p.ucp.X, x));
-  ASSERT_TRUE(in_polyhedron(p.ucp.Y, y));
+  ASSERT_TRUE(in_polyhedron(p.ucp().X, x));
+  ASSERT_TRUE(in_polyhedron(p.ucp().Y, y));
   EXPECT_EQ(sgn(Q(x.dot(y))), 0);
   const auto s = recover(*p.quasistatic, x, y);
   ASSERT_TRUE(s.has_value());
@@ -39,7 +39,7 @@ TEST(UcpPaperAlgorithm, DataSets1To3AreSolvedWithExactlyComplementaryPairs) {
       std::mt19937_64 rng(1);
       BilinearOptions o;
       o.arith = a;
-      const auto r = bilinear(make_face(p.ucp.X, {}), make_face(p.ucp.Y, {}), o, rng);
+      const auto r = bilinear(make_face(p.ucp().X, {}), make_face(p.ucp().Y, {}), o, rng);
       ASSERT_EQ(r.status, BilinearStatus::kComplementary) << "data set " << k;
       EXPECT_EQ(sgn(r.xTy), 0);
       // Section 5: "no more than two (x,y) pairs (a total of 6 linear programs, including the two initial ones)".
@@ -54,7 +54,7 @@ TEST(UcpCompleteSearch, DataSets1To3SolvableAndDataSet4Jammed) {
   for (int k = 1; k <= 4; ++k) {
     const UcpProblem p = load_ucp_problem(scene(k));
     std::mt19937_64 rng(3);
-    const auto r = complete_search(p.ucp, SearchOptions{}, rng);
+    const auto r = complete_search(p.ucp(), SearchOptions{}, rng);
     if (k < 4) {
       ASSERT_EQ(r.status, UcpStatus::kSolvable) << k;
       expect_physical_solution(p, r.x, r.y);
@@ -73,7 +73,7 @@ namespace {
 
 UcpProblem with_mu(UcpProblem p, const Vec<Q>& mu) {
   p.quasistatic->mu = mu;
-  p.ucp = build_ucp(*p.quasistatic);
+  p.set(build_ucp(*p.quasistatic));
   return p;
 }
 
@@ -88,7 +88,7 @@ TEST(UcpCompleteSearch, DataSet2MuSweepAgreesWithTheEnumerativeBaseline) {
         mu << step * a, step * b, step * c;
         const UcpProblem p = with_mu(base, mu);
         std::mt19937_64 rng(a * 25 + b * 5 + c);
-        const SearchResult<Q> s = complete_search(p.ucp, SearchOptions{}, rng);
+        const SearchResult<Q> s = complete_search(p.ucp(), SearchOptions{}, rng);
         const EnumerateResult e = enumerate_modes(p, Arith::kExact, 1000);
         ASSERT_NE(s.status, UcpStatus::kUnknown);
         ASSERT_EQ(s.status, e.status) << "mu = " << mu.transpose();
@@ -115,7 +115,7 @@ TEST(UcpCompleteSearch, RandomProblemsAgreeWithTheEnumerativeBaselineOnEveryPath
       std::mt19937_64 rng(seed);
       SearchOptions so;
       so.heuristic.arith = a;
-      const SearchResult<Q> s = complete_search(p.ucp, so, rng);
+      const SearchResult<Q> s = complete_search(p.ucp(), so, rng);
       ASSERT_EQ(s.status, e.status) << "seed " << seed;
       if (s.status == UcpStatus::kSolvable) expect_physical_solution(p, s.x, s.y);
     }
@@ -123,7 +123,7 @@ TEST(UcpCompleteSearch, RandomProblemsAgreeWithTheEnumerativeBaselineOnEveryPath
     std::mt19937_64 rng(seed);
     SearchOptions so;
     so.heuristic.arith = Arith::kFloat;
-    EXPECT_EQ(complete_search(convert<double>(p.ucp), so, rng).status, e.status) << "float, seed " << seed;
+    EXPECT_EQ(complete_search(to_double(p.rows()), so, rng).status, e.status) << "float, seed " << seed;
     (e.status == UcpStatus::kSolvable ? solvable : jammed)++;
   }
   EXPECT_GT(solvable, 0);
@@ -148,12 +148,12 @@ TEST(UcpCompleteSearch, ReductionInstancesAreSolvableExactlyWhenTheZeroOneProble
     const bool expected = zero_one_feasible(zo);
     const UcpProblem p = reduction_problem(zo);
     std::mt19937_64 rng(seed);
-    const SearchResult<Q> s = complete_search(p.ucp, SearchOptions{}, rng);
+    const SearchResult<Q> s = complete_search(p.ucp(), SearchOptions{}, rng);
     ASSERT_EQ(s.status, expected ? UcpStatus::kSolvable : UcpStatus::kJammed) << "seed " << seed;
     if (expected) {
       ++feasible;
-      ASSERT_TRUE(in_polyhedron(p.ucp.X, s.x));
-      ASSERT_TRUE(in_polyhedron(p.ucp.Y, s.y));
+      ASSERT_TRUE(in_polyhedron(p.ucp().X, s.x));
+      ASSERT_TRUE(in_polyhedron(p.ucp().Y, s.y));
       EXPECT_EQ(sgn(Q(s.x.dot(s.y))), 0);
       // Proposition 2: the z part of x is a 0-1 solution of A z = b.
       const Vec<Q> z = s.x.head(n);
@@ -177,7 +177,7 @@ TEST(UcpPaperAlgorithm, DataSet4IsNotDecidedByTheBilinearAlgorithm) {
     std::mt19937_64 rng(5);
     BilinearOptions o;
     o.step3 = rule;
-    const auto r = bilinear(make_face(p.ucp.X, {}), make_face(p.ucp.Y, {}), o, rng);
+    const auto r = bilinear(make_face(p.ucp().X, {}), make_face(p.ucp().Y, {}), o, rng);
     EXPECT_EQ(r.status, BilinearStatus::kStopped);
     EXPECT_GT(sgn(r.xTy), 0);
     EXPECT_EQ(r.random_moves, o.max_random_moves + 1);
@@ -187,12 +187,14 @@ TEST(UcpPaperAlgorithm, DataSet4IsNotDecidedByTheBilinearAlgorithm) {
 TEST(UcpCompleteSearch, EmptyXIsJammedWithARootCertificate) {
   // X = {x >= 0 : x_0 + x_1 = -1} is empty.
   UcpProblem p;
-  p.ucp.X.A = Mat<Q>::Ones(1, 2);
-  p.ucp.X.b = Vec<Q>::Constant(1, Q(-1));
-  p.ucp.Y.A = Mat<Q>::Ones(1, 2);
-  p.ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  UcpInstance<Q> ucp;
+  ucp.X.A = Mat<Q>::Ones(1, 2);
+  ucp.X.b = Vec<Q>::Constant(1, Q(-1));
+  ucp.Y.A = Mat<Q>::Ones(1, 2);
+  ucp.Y.b = Vec<Q>::Constant(1, Q(1));
+  p.set(ucp);
   std::mt19937_64 rng(1);
-  const auto s = complete_search(p.ucp, SearchOptions{}, rng);
+  const auto s = complete_search(p.ucp(), SearchOptions{}, rng);
   ASSERT_EQ(s.status, UcpStatus::kJammed);
   EXPECT_EQ(s.reason, "X is empty");
   ASSERT_EQ(s.tree.size(), 1u);
@@ -205,7 +207,7 @@ TEST(UcpCompleteSearch, NodeBudgetGivesUnknown) {
   SearchOptions so;
   so.max_nodes = 2;
   so.bilinear_first = false;
-  EXPECT_EQ(complete_search(p.ucp, so, rng).status, UcpStatus::kUnknown);
+  EXPECT_EQ(complete_search(p.ucp(), so, rng).status, UcpStatus::kUnknown);
 }
 
 }  // namespace
