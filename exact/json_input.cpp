@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -256,6 +257,76 @@ void append_string(std::string_view s, std::string& out) {
   out += '"';
 }
 
+/// Writes ordered_json values as dump(indent) does.
+class Writer {
+ public:
+  Writer(std::string& out, int indent) : out_(out), indent_(indent) {}
+
+  void value(const nlohmann::ordered_json& j, int depth) {
+    switch (j.type()) {
+      case nlohmann::ordered_json::value_t::object:
+        return container(j, depth, '{', '}');
+      case nlohmann::ordered_json::value_t::array:
+        return container(j, depth, '[', ']');
+      case nlohmann::ordered_json::value_t::string:
+        return string(j.get_ref<const std::string&>());
+      case nlohmann::ordered_json::value_t::number_integer:
+        return integer(j.get<std::int64_t>());
+      case nlohmann::ordered_json::value_t::number_unsigned:
+        return integer(j.get<std::uint64_t>());
+      case nlohmann::ordered_json::value_t::boolean:
+        out_ += j.get<bool>() ? "true" : "false";
+        return;
+      case nlohmann::ordered_json::value_t::null:
+        out_ += "null";
+        return;
+      default:             // floats, binary, discarded
+        out_ += j.dump();  // their own bytes
+    }
+  }
+
+ private:
+  void container(const nlohmann::ordered_json& j, int depth, char open, char close) {
+    out_ += open;
+    if (j.empty()) {
+      out_ += close;
+      return;
+    }
+    const bool object = j.is_object();
+    bool first = true;
+    for (auto it = j.cbegin(); it != j.cend(); ++it) {
+      if (!first) out_ += ',';
+      first = false;
+      line(depth + 1);
+      if (object) {
+        string(it.key());
+        out_ += indent_ < 0 ? ":" : ": ";
+      }
+      value(*it, depth + 1);
+    }
+    line(depth);
+    out_ += close;
+  }
+
+  /// A new line indented to `depth` (nothing in compact text).
+  void line(int depth) {
+    if (indent_ < 0) return;
+    out_ += '\n';
+    out_.append(static_cast<std::size_t>(indent_) * static_cast<std::size_t>(depth), ' ');
+  }
+
+  void string(const std::string& s) { append_string(s, out_); }
+
+  template <class Int>
+  void integer(Int v) {
+    char digits[24];
+    out_.append(digits, std::to_chars(digits, digits + sizeof digits, v).ptr);
+  }
+
+  std::string& out_;
+  int indent_;
+};
+
 /// Appends the canonical text (JsonInput::canonical_text) of a parsed value or of one built in memory (J =
 /// ordered_json, whose integers are JSON numbers where a parsed file holds their text), as json(...).dump() of the
 /// canonical value would write it, without building that value.
@@ -328,6 +399,12 @@ std::string JsonInput::canonical_text() const { return canonical(*node_); }
 std::string JsonInput::canonical_sha256() const { return sha256_hex(canonical_text()); }
 
 std::string canonical_sha256(const nlohmann::ordered_json& value) { return sha256_hex(canonical(value)); }
+
+std::string json_text(const nlohmann::ordered_json& value, int indent) {
+  std::string out;
+  Writer(out, indent).value(value, 0);
+  return out;
+}
 
 JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   if (text.size() > kMaxInputBytes) throw InputError(file, "", too_large_text());
