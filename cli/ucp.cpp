@@ -15,6 +15,7 @@
 #include "cli/ucp_forces.h"
 #include "exact/arith.h"
 #include "exact/input_error.h"
+#include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/solve.h"
@@ -235,7 +236,7 @@ int run_ucp(const UcpCliOptions& o) {
     json j = ucp_json(r, cert_text.empty() ? "" : o.certificate);
     if (r.physical && !file.frames.empty())
       j["physical"]["contacts"] = ucp_forces_json(file.frames, r.physical->c_n.to_q(), r.physical->c_t.to_q());
-    std::cout << j.dump() << "\n";
+    std::cout << exact::json_text(j) << "\n";
   } else {
     print_ucp_text(o, r, !cert_text.empty(), file.frames);
   }

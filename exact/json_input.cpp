@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <stdexcept>
 
 #include "exact/rational_text.h"
@@ -99,14 +101,19 @@ QuotedText quote_numbers(const std::string& in) {
 
 class LiteralNumberBuilder {
  public:
-  LiteralNumberBuilder(json& root, const QuotedText& quoted) : root_(root), quoted_(quoted) {}
+  /// quoted: the text as quote_numbers rewrote it; nullptr when the parser reads the original text, whose number
+  /// tokens then arrive with their literal text (a float's) or as integers (whose decimal text is their value).
+  LiteralNumberBuilder(json& root, const QuotedText* quoted) : root_(root), quoted_(quoted) {}
 
   bool null() { return put(json(nullptr)); }
   bool boolean(bool b) { return put(json(b)); }
-  // quote_numbers quotes every valid number token: a bare number is the valid head of an invalid token ("01").
-  bool number_integer(json::number_integer_t) { return fail(kInvalidNumber); }
-  bool number_unsigned(json::number_unsigned_t) { return fail(kInvalidNumber); }
-  bool number_float(json::number_float_t, const std::string&) { return fail(kInvalidNumber); }
+  // quote_numbers quotes every valid number token: a bare number in quoted text is the valid head of an invalid
+  // token ("01").
+  bool number_integer(json::number_integer_t v) { return quoted_ ? fail(kInvalidNumber) : number(std::to_string(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return quoted_ ? fail(kInvalidNumber) : number(std::to_string(v)); }
+  bool number_float(json::number_float_t, const std::string& text) {
+    return quoted_ ? fail(kInvalidNumber) : number(text);
+  }
   bool string(std::string& s) {
     if (next_from_number()) return put(json(kNumberTag + s));
     if (!s.empty() && s.front() == kNumberTag) return fail("a string may not start with a control character");
@@ -124,7 +131,7 @@ class LiteralNumberBuilder {
     return true;
   }
   bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
-    error_byte_ = quoted_.original(pos);
+    error_byte_ = quoted_ ? quoted_->original(pos) : pos;
     std::string what = e.what();
     auto cut = what.find("syntax error");
     return fail("malformed JSON at byte " + std::to_string(error_byte_) + ": " +
@@ -138,8 +145,16 @@ class LiteralNumberBuilder {
 
  private:
   bool next_from_number() {
+    if (!quoted_) return false;
     const std::size_t k = strings_++;
-    return k < quoted_.from_number.size() && quoted_.from_number[k];
+    return k < quoted_->from_number.size() && quoted_->from_number[k];
+  }
+  bool number(std::string_view text) {
+    std::string tagged;
+    tagged.reserve(text.size() + 1);
+    tagged += kNumberTag;
+    tagged += text;
+    return put(json(std::move(tagged)));
   }
   bool fail(std::string why) {
     if (error_.empty()) {
@@ -191,7 +206,7 @@ class LiteralNumberBuilder {
   }
 
   json& root_;
-  const QuotedText& quoted_;
+  const QuotedText* quoted_;
   std::size_t strings_ = 0;  // string tokens (keys included) read so far
   std::vector<json*> stack_;
   std::vector<std::string> segments_;  // path pieces of the open containers, e.g. ".P", "[1]"
@@ -207,34 +222,166 @@ bool is_number_text(const J& j) {
          j.template get_ref<const std::string&>().front() == kNumberTag;
 }
 
-/// The canonical form (JsonInput::canonical_text) of a parsed value or of one built in memory (J = ordered_json),
-/// whose integers are JSON numbers where a parsed file holds their text.
-template <class J>
-json canonical(const J& j) {
-  if (j.is_object()) {
-    json out = json::object();
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      const std::string& k = it.key();
-      if (it->is_null() || k == "source" || k == "note" || k == "name" || k == "description") continue;
-      out[k] = canonical(*it);
+/// True if s is the text to_string gives its value: "0", or -?[1-9][0-9]* with an optional /[1-9][0-9]* whose
+/// denominator is above 1 and prime to the numerator. Decided in machine words up to 18 digits; longer numbers
+/// answer false (and take the exact route).
+bool in_lowest_terms(std::string_view s) {
+  if (s == "0") return true;
+  if (!s.empty() && s.front() == '-') s.remove_prefix(1);
+  const auto word = [](std::string_view d, std::uint64_t& v) {
+    if (d.empty() || d.size() > 18 || d.front() == '0') return false;
+    v = 0;
+    for (char c : d) {
+      if (c < '0' || c > '9') return false;
+      v = 10 * v + static_cast<std::uint64_t>(c - '0');
     }
-    return out;
+    return true;
+  };
+  const std::size_t slash = s.find('/');
+  std::uint64_t n = 0, d = 1;
+  if (!word(s.substr(0, slash), n)) return false;
+  if (slash == std::string_view::npos) return true;
+  return word(s.substr(slash + 1), d) && d > 1 && std::gcd(n, d) == 1;
+}
+
+/// Appends s as a JSON string, escaped as nlohmann's dump() escapes it.
+void append_string(std::string_view s, std::string& out) {
+  const bool plain =
+      std::all_of(s.begin(), s.end(), [](char c) { return c >= 0x20 && c < 0x7f && c != '"' && c != '\\'; });
+  if (!plain) {
+    out += json(std::string(s)).dump();
+    return;
   }
-  if (j.is_array()) {
-    json out = json::array();
-    for (const auto& e : j) out.push_back(canonical(e));
-    return out;
+  out += '"';
+  out += s;
+  out += '"';
+}
+
+/// Writes ordered_json values as dump(indent) does.
+class Writer {
+ public:
+  Writer(std::string& out, int indent) : out_(out), indent_(indent) {}
+
+  void value(const nlohmann::ordered_json& j, int depth) {
+    switch (j.type()) {
+      case nlohmann::ordered_json::value_t::object:
+        return container(j, depth, '{', '}');
+      case nlohmann::ordered_json::value_t::array:
+        return container(j, depth, '[', ']');
+      case nlohmann::ordered_json::value_t::string:
+        return string(j.get_ref<const std::string&>());
+      case nlohmann::ordered_json::value_t::number_integer:
+        return integer(j.get<std::int64_t>());
+      case nlohmann::ordered_json::value_t::number_unsigned:
+        return integer(j.get<std::uint64_t>());
+      case nlohmann::ordered_json::value_t::boolean:
+        out_ += j.get<bool>() ? "true" : "false";
+        return;
+      case nlohmann::ordered_json::value_t::null:
+        out_ += "null";
+        return;
+      default:             // floats, binary, discarded
+        out_ += j.dump();  // their own bytes
+    }
   }
-  if (j.is_number_unsigned()) return std::to_string(j.template get<std::uint64_t>());
-  if (j.is_number_integer()) return std::to_string(j.template get<std::int64_t>());
-  if (j.is_number_float()) throw std::logic_error("canonical text: a binary float has no exact text");
-  if (j.is_boolean()) return j.template get<bool>();
-  if (!j.is_string()) return nullptr;
-  std::string_view s = j.template get_ref<const std::string&>();
-  if (is_number_text(j)) s.remove_prefix(1);
-  Q q;
-  if (parse_rational_into(s, q)) return to_string(q);
-  return std::string(s);
+
+ private:
+  void container(const nlohmann::ordered_json& j, int depth, char open, char close) {
+    out_ += open;
+    if (j.empty()) {
+      out_ += close;
+      return;
+    }
+    const bool object = j.is_object();
+    bool first = true;
+    for (auto it = j.cbegin(); it != j.cend(); ++it) {
+      if (!first) out_ += ',';
+      first = false;
+      line(depth + 1);
+      if (object) {
+        string(it.key());
+        out_ += indent_ < 0 ? ":" : ": ";
+      }
+      value(*it, depth + 1);
+    }
+    line(depth);
+    out_ += close;
+  }
+
+  /// A new line indented to `depth` (nothing in compact text).
+  void line(int depth) {
+    if (indent_ < 0) return;
+    out_ += '\n';
+    out_.append(static_cast<std::size_t>(indent_) * static_cast<std::size_t>(depth), ' ');
+  }
+
+  void string(const std::string& s) { append_string(s, out_); }
+
+  template <class Int>
+  void integer(Int v) {
+    char digits[24];
+    out_.append(digits, std::to_chars(digits, digits + sizeof digits, v).ptr);
+  }
+
+  std::string& out_;
+  int indent_;
+};
+
+/// Appends the canonical text (JsonInput::canonical_text) of a parsed value or of one built in memory (J =
+/// ordered_json, whose integers are JSON numbers where a parsed file holds their text), as json(...).dump() of the
+/// canonical value would write it, without building that value.
+template <class J>
+void append_canonical(const J& j, std::string& out) {
+  if (j.is_object()) {
+    std::vector<typename J::const_iterator> members;
+    for (auto it = j.cbegin(); it != j.cend(); ++it) {
+      const std::string& k = it.key();
+      if (!it->is_null() && k != "source" && k != "note" && k != "name" && k != "description") members.push_back(it);
+    }
+    std::sort(members.begin(), members.end(), [](const auto& a, const auto& b) { return a.key() < b.key(); });
+    out += '{';
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      if (m > 0) out += ',';
+      append_string(members[m].key(), out);
+      out += ':';
+      append_canonical(*members[m], out);
+    }
+    out += '}';
+  } else if (j.is_array()) {
+    out += '[';
+    for (auto it = j.cbegin(); it != j.cend(); ++it) {
+      if (it != j.cbegin()) out += ',';
+      append_canonical(*it, out);
+    }
+    out += ']';
+  } else if (j.is_number_unsigned()) {
+    append_string(std::to_string(j.template get<std::uint64_t>()), out);
+  } else if (j.is_number_integer()) {
+    append_string(std::to_string(j.template get<std::int64_t>()), out);
+  } else if (j.is_number_float()) {
+    throw std::logic_error("canonical text: a binary float has no exact text");
+  } else if (j.is_boolean()) {
+    out += j.template get<bool>() ? "true" : "false";
+  } else if (j.is_string()) {
+    std::string_view s = j.template get_ref<const std::string&>();
+    if (is_number_text(j)) s.remove_prefix(1);
+    Q q;
+    if (in_lowest_terms(s))
+      append_string(s, out);
+    else if (parse_rational_into(s, q))
+      append_string(to_string(q), out);
+    else
+      append_string(s, out);
+  } else {
+    out += "null";
+  }
+}
+
+template <class J>
+std::string canonical(const J& j) {
+  std::string out;
+  append_canonical(j, out);
+  return out;
 }
 
 /// The exact number a node holds (a number token or a numeric string) into out; false if it holds none.
@@ -247,19 +394,34 @@ bool rational_of(const json& node, Q& out) {
 
 }  // namespace
 
-std::string JsonInput::canonical_text() const { return canonical(*node_).dump(); }
+std::string JsonInput::canonical_text() const { return canonical(*node_); }
 
 std::string JsonInput::canonical_sha256() const { return sha256_hex(canonical_text()); }
 
-std::string canonical_sha256(const nlohmann::ordered_json& value) { return sha256_hex(canonical(value).dump()); }
+std::string canonical_sha256(const nlohmann::ordered_json& value) { return sha256_hex(canonical(value)); }
+
+std::string json_text(const nlohmann::ordered_json& value, int indent) {
+  std::string out;
+  Writer(out, indent).value(value, 0);
+  return out;
+}
 
 JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   if (text.size() > kMaxInputBytes) throw InputError(file, "", too_large_text());
   auto root = std::make_shared<json>();
-  const QuotedText quoted = quote_numbers(text);
-  LiteralNumberBuilder builder(*root, quoted);
-  bool ok = json::sax_parse(quoted.text, &builder, json::input_format_t::json, /*strict=*/true);
   auto f = std::make_shared<const std::string>(file);
+  // Valid input is read in one pass, the parser handing over each number token's text. Input it rejects there (as it
+  // rejects a number beyond double's range) is read again with its number tokens quoted first: that reading keeps
+  // every number, and its errors name the byte of the original text.
+  if (text.find('\0') == std::string::npos) {
+    LiteralNumberBuilder builder(*root, nullptr);
+    if (json::sax_parse(text, &builder, json::input_format_t::json, /*strict=*/true))
+      return JsonInput(root, root.get(), f, "$");
+    *root = json();
+  }
+  const QuotedText quoted = quote_numbers(text);
+  LiteralNumberBuilder builder(*root, &quoted);
+  bool ok = json::sax_parse(quoted.text, &builder, json::input_format_t::json, /*strict=*/true);
   // The parser takes a NUL byte for the end of the input: report it unless an error comes before it.
   if (const std::size_t nul = text.find('\0'); nul != std::string::npos && (ok || builder.error_byte() > nul))
     throw InputError(file, "", "a NUL byte at byte " + std::to_string(nul) + " (JSON text has none)");

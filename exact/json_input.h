@@ -1,17 +1,17 @@
 // Reading input files: JSON whose numbers keep their literal text, so that "0.966" and 0.966 both
 // parse to 966/1000 (SPEC section 1). Every accessor knows its JSON path and throws InputError
-// naming the file, the path and what was expected.
+// naming the file, the path and what was expected. Also the JSON text written: canonical (for digests) and as
+// nlohmann's dump() writes it.
 #pragma once
 
 #include <cstddef>
 #include <initializer_list>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <nlohmann/json_fwd.hpp>
 
 #include "exact/input_error.h"
 #include "exact/number.h"
@@ -44,16 +44,16 @@ class JsonInput {
   bool is_string_or_number() const;
   std::size_t size() const;  ///< elements of an array (error otherwise)
 
-  JsonInput at(std::string_view key) const;                 ///< required member of an object
+  JsonInput at(std::string_view key) const;                   ///< required member of an object
   std::optional<JsonInput> find(std::string_view key) const;  ///< optional member (absent or null -> nullopt)
-  JsonInput at(std::size_t i) const;                        ///< element of an array
-  std::vector<JsonInput> elements() const;                  ///< elements of an array
+  JsonInput at(std::size_t i) const;                          ///< element of an array
+  std::vector<JsonInput> elements() const;                    ///< elements of an array
   /// Fails on any key not in `allowed` (catches typos such as "mu_S").
   void expect_keys(std::initializer_list<std::string_view> allowed) const;
 
-  Q rational() const;                                    ///< a number or numeric string, exactly
-  long integer(long lo, long hi) const;                  ///< an integer in [lo, hi]
-  std::string string() const;                            ///< a JSON string
+  Q rational() const;                    ///< a number or numeric string, exactly
+  long integer(long lo, long hi) const;  ///< an integer in [lo, hi]
+  std::string string() const;            ///< a JSON string
   bool boolean() const;
   Vec<Q> rational_vector(std::optional<std::size_t> n = std::nullopt) const;
   Mat<Q> rational_matrix(std::optional<std::size_t> rows = std::nullopt,
@@ -83,5 +83,10 @@ class JsonInput {
 /// The digest JsonInput::canonical_sha256 gives the text value.dump(), without writing and parsing that text (for a
 /// value built in memory, such as a problem a certificate embeds).
 std::string canonical_sha256(const nlohmann::ordered_json& value);
+
+/// The bytes of value.dump(indent) (compact for indent < 0, else one member or element per line indented by `indent`
+/// spaces per level), written directly for objects, arrays, integers and printable ASCII strings (exact numbers are
+/// strings such as "-7/20"); strings that need escaping, floats and other rare values are written by nlohmann itself.
+std::string json_text(const nlohmann::ordered_json& value, int indent = -1);
 
 }  // namespace contactcert::exact

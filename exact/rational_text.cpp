@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <numeric>
 
@@ -151,7 +152,18 @@ Q parse_rational(std::string_view text) {
 }
 
 std::string to_string(const Q& x) {
-  return x.get_str();  // GMP prints canonical "n/d", or "n" when d = 1
+  const mpz_srcptr n = mpq_numref(x.get_mpq_t()), d = mpq_denref(x.get_mpq_t());
+  if (mpz_size(n) > 1 || mpz_size(d) > 1) return x.get_str();  // GMP prints canonical "n/d", or "n" when d = 1
+  // One limb each (most numbers met): the same text by to_chars, without GMP's conversion buffers.
+  char text[2 * std::numeric_limits<mp_limb_t>::digits10 + 4];
+  char* end = text;
+  if (mpz_sgn(n) < 0) *end++ = '-';
+  end = std::to_chars(end, std::end(text), mpz_getlimbn(n, 0)).ptr;
+  if (mpz_getlimbn(d, 0) != 1) {
+    *end++ = '/';
+    end = std::to_chars(end, std::end(text), mpz_getlimbn(d, 0)).ptr;
+  }
+  return std::string(text, end);
 }
 
 std::vector<Z> primitive(const std::vector<Q>& v) {

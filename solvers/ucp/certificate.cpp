@@ -280,14 +280,14 @@ std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>&
     nodes.push_back(n);
   }
   j["nodes"] = nodes;
-  return j.dump() + "\n";
+  return exact::json_text(j) + "\n";
 }
 
 std::string solvable_certificate(const UcpProblem& problem, const Vec<Q>& x, const Vec<Q>& y) {
   json j = header("ucp_solvable", problem);
   j["x"] = rationals(x);
   j["y"] = rationals(y);
-  return j.dump(1) + "\n";
+  return exact::json_text(j, 1) + "\n";
 }
 
 bool is_ucp_certificate_kind(const std::string& kind) { return kind == "ucp_jammed" || kind == "ucp_solvable"; }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace contactcert::exact {
@@ -49,9 +50,9 @@ TEST(JsonInput, ErrorsNameTheFileThePathAndWhatWasExpected) {
   EXPECT_NE(error_of(R"({"a": 1,})", [](const JsonInput&) {}).find("malformed JSON"), std::string::npos);
   EXPECT_NE(error_of("\x01\x02garbage", [](const JsonInput&) {}).find("malformed JSON"), std::string::npos);
   EXPECT_NE(error_of(R"({"a": NaN})", [](const JsonInput&) {}).find("malformed JSON"), std::string::npos);
-  EXPECT_NE(error_of(R"({"a": 1, "b": 2})", [](const JsonInput& j) { j.expect_keys({"a"}); })
-                .find("$.b: unknown field"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(R"({"a": 1, "b": 2})", [](const JsonInput& j) { j.expect_keys({"a"}); }).find("$.b: unknown field"),
+      std::string::npos);
   EXPECT_NE(error_of(R"({"s": 3})", [](const JsonInput& j) { j.at("s").string(); }).find("expected a string"),
             std::string::npos);
 }
@@ -87,6 +88,35 @@ TEST(JsonInput, CanonicalTextIgnoresSpellingOrderAndLabels) {
   EXPECT_EQ(a.canonical_text(), b.canonical_text());
   EXPECT_EQ(a.canonical_sha256(), b.canonical_sha256());
   EXPECT_NE(a.canonical_sha256(), c.canonical_sha256());
+}
+
+// Valid input is read in one pass and only rejected input is read again with its numbers quoted: the messages are
+// those of the quoted reading, byte for byte (these are the messages of the build before the one-pass reading).
+TEST(JsonInput, MalformedInputKeepsItsMessages) {
+  const auto none = [](const JsonInput&) {};
+  EXPECT_EQ(error_of(R"({"a": 1,})", none),
+            "f.json: $: malformed JSON at byte 9: syntax error while parsing object key - unexpected '}'; expected "
+            "string literal");
+  EXPECT_EQ(error_of(R"({"a": 01})", none),
+            "f.json: $.a: malformed JSON: not a JSON number (RFC 8259 section 6: e.g. 0.5, -3, 1e-9)");
+  EXPECT_EQ(error_of("[1, 2", none),
+            "f.json: $[2]: malformed JSON at byte 6: syntax error while parsing array - unexpected end of input; "
+            "expected ']'");
+  EXPECT_EQ(error_of(R"({"a": "\u0001x"})", none), "f.json: $.a: a string may not start with a control character");
+  EXPECT_EQ(error_of(R"(["a", 0x10])", none),
+            "f.json: $[1]: malformed JSON: not a JSON number (RFC 8259 section 6: e.g. 0.5, -3, 1e-9)");
+}
+
+TEST(JsonInput, CanonicalTextOfAValueBuiltInMemoryIsThatOfItsText) {
+  nlohmann::ordered_json j;
+  j["z"] = {"2/4", "7", "-0", "1/1", "007", "-3/9", "18446744073709551617/3", "x\"y", "\u00e9t\u00e9", "1e2"};
+  j["a"] = {{"b", 3}, {"a", -4}, {"note", "left out"}, {"c", nullptr}, {"d", true}};
+  j["\u00e9"] = std::uint64_t{18446744073709551615u};
+  const JsonInput parsed = JsonInput::parse(j.dump(), "f.json");
+  EXPECT_EQ(parsed.canonical_text(),
+            R"({"a":{"a":"-4","b":"3","d":true},"z":["1/2","7","0","1","7","-1/3","18446744073709551617/3","x\"y",)"
+            R"("été","100"],"é":"18446744073709551615"})");
+  EXPECT_EQ(canonical_sha256(j), parsed.canonical_sha256());
 }
 
 }  // namespace

@@ -97,6 +97,16 @@ TEST(ToString, LowestTerms) {
   EXPECT_EQ(parse_rational(to_string(q(-355, 113))), q(-355, 113));
 }
 
+TEST(ToString, OneLimbTextAgreesWithGmp) {
+  const Z limb_max("18446744073709551615", 10);  // 2^64 - 1, the largest one-limb value
+  for (const Z& n : {Z(0), Z(1), Z(-1), Z(10), Z(-123456789), limb_max, Z(-limb_max), Z(limb_max + 1)})
+    for (const Z& d : {Z(1), Z(2), Z(7), Z(1000), limb_max, Z(limb_max + 1)}) {
+      Q x(n, d);
+      x.canonicalize();
+      EXPECT_EQ(to_string(x), x.get_str()) << x.get_str();
+    }
+}
+
 TEST(Primitive, IntegerVectorWithGcdOne) {
   auto v = primitive(std::vector<Q>{q(1, 2), q(-3, 4), q(0)});
   ASSERT_EQ(v.size(), 3u);

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
 
 namespace contactcert::exact {
@@ -21,7 +22,20 @@ TEST(Sha256, TwoBlocks) {
 }
 
 TEST(Sha256, ManyBlocks) {
-  EXPECT_EQ(sha256_hex(std::string(1000000, 'a')), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+  for (Sha256Engine e : {Sha256Engine::kFastest, Sha256Engine::kPortable})
+    EXPECT_EQ(sha256_hex(std::string(1000000, 'a'), e),
+              "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+// The CPU's SHA instructions (where present) and the portable rounds give the same digest at every length around
+// the block and padding boundaries.
+TEST(Sha256, InstructionsAgreeWithPortableRounds) {
+  std::mt19937 rng(7);
+  std::string data;
+  for (int n = 0; n <= 300; ++n) {
+    EXPECT_EQ(sha256_hex(data, Sha256Engine::kFastest), sha256_hex(data, Sha256Engine::kPortable)) << n;
+    data += static_cast<char>(rng());
+  }
 }
 
 }  // namespace contactcert::exact
