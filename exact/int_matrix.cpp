@@ -179,9 +179,95 @@ SolutionKind IntMatrix<R>::solve(R* N, R& d) {
   return SolutionKind::kUnique;
 }
 
+template <class R>
+SolutionKind solve_sparse_square(const std::vector<SparseEquation<R>>& eqs, Index m, std::vector<R>& U, R& D) {
+  using ring::mul;
+  using ring::sign;
+  using ring::sub;
+  const std::size_t ne = eqs.size();
+  std::vector<std::vector<std::size_t>> occurs(static_cast<std::size_t>(m));
+  std::vector<std::size_t> open(ne), ready;
+  for (std::size_t e = 0; e < ne; ++e) {
+    open[e] = eqs[e].terms.size();
+    for (const auto& [j, a] : eqs[e].terms) occurs[static_cast<std::size_t>(j)].push_back(e);
+    if (open[e] == 1) ready.push_back(e);
+  }
+  std::vector<bool> known(static_cast<std::size_t>(m), false), used(ne, false);
+  U.assign(static_cast<std::size_t>(m), R(0));
+  D = R(1);
+  // D (rhs - sum of the known terms of e): the right-hand side of e over D once its known unknowns are moved.
+  const auto residual = [&](std::size_t e) {
+    R t = mul(eqs[e].rhs, D);
+    for (const auto& [j, a] : eqs[e].terms)
+      if (known[static_cast<std::size_t>(j)]) t = sub(t, mul(a, U[static_cast<std::size_t>(j)]));
+    return t;
+  };
+  while (!ready.empty()) {
+    const std::size_t e = ready.back();
+    ready.pop_back();
+    if (used[e] || open[e] != 1) continue;
+    const auto& [i, coef] = *std::find_if(eqs[e].terms.begin(), eqs[e].terms.end(),
+                                          [&](const auto& t) { return !known[static_cast<std::size_t>(t.first)]; });
+    // coef u_i = t / D: u_i = t / (coef D); with coef = g a, t = g t', a > 0: U_i = t' over the denominator D a.
+    R t = residual(e);
+    used[e] = true;
+    known[static_cast<std::size_t>(i)] = true;
+    if (sign(t) != 0) {
+      const R g = ring::gcd(coef, t);
+      R a = ring::divexact(coef, g);
+      t = ring::divexact(t, g);
+      if (sign(a) < 0) a = sub(R(0), a), t = sub(R(0), t);
+      if (!(a == R(1))) {
+        for (Index j = 0; j < m; ++j)
+          if (known[static_cast<std::size_t>(j)])
+            U[static_cast<std::size_t>(j)] = mul(U[static_cast<std::size_t>(j)], a);
+        D = mul(D, a);
+      }
+      U[static_cast<std::size_t>(i)] = t;
+    }
+    for (std::size_t e2 : occurs[static_cast<std::size_t>(i)])
+      if (!used[e2] && --open[e2] == 1) ready.push_back(e2);
+  }
+  // The core: the open unknowns (column c of M) and the unused equations (rows of M = [A_core | residual]).
+  std::vector<Index> column(static_cast<std::size_t>(m), -1);
+  Index k = 0;
+  for (Index j = 0; j < m; ++j)
+    if (!known[static_cast<std::size_t>(j)]) column[static_cast<std::size_t>(j)] = k++;
+  if (k == 0) return SolutionKind::kUnique;  // every equation was used (as many as unknowns)
+  Index rows = 0;
+  for (std::size_t e = 0; e < ne; ++e) rows += used[e] ? 0 : 1;
+  if (rows != k) return SolutionKind::kRankDeficient;
+  IntMatrix<R> M(k, k + 1);
+  Index r = 0;
+  for (std::size_t e = 0; e < ne; ++e) {
+    if (used[e]) continue;
+    R* row = M.row(r++);
+    for (const auto& [j, a] : eqs[e].terms)
+      if (!known[static_cast<std::size_t>(j)]) row[column[static_cast<std::size_t>(j)]] = a;
+    row[k] = residual(e);
+  }
+  std::vector<R> N(static_cast<std::size_t>(k));
+  R d;
+  if (M.solve(N.data(), d) != SolutionKind::kUnique) return SolutionKind::kRankDeficient;
+  // D u = N / d on the core (d > 0): U d over the common denominator D d.
+  for (Index j = 0; j < m; ++j) {
+    R& u = U[static_cast<std::size_t>(j)];
+    u = known[static_cast<std::size_t>(j)] ? mul(u, d)
+                                           : N[static_cast<std::size_t>(column[static_cast<std::size_t>(j)])];
+  }
+  D = mul(D, d);
+  return SolutionKind::kUnique;
+}
+
 template class IntMatrix<std::int64_t>;
 template class IntMatrix<Int128>;
 template class IntMatrix<Z>;
+#define CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(R) \
+  template SolutionKind solve_sparse_square<R>(const std::vector<SparseEquation<R>>&, Index, std::vector<R>&, R&);
+CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(std::int64_t)
+CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(Int128)
+CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(Z)
+#undef CONTACTCERT_SOLVE_SPARSE_INSTANTIATE
 #define CONTACTCERT_INT_MATRIX_FLOAT_INSTANTIATE(R) \
   template void IntMatrix<R>::make_primitive();     \
   template std::vector<Index> IntMatrix<R>::echelon(Index, Index, Index);

@@ -1,13 +1,14 @@
 // A dense matrix over a ring R of exact/fraction_free.h, eliminated without fractions (the model is Normaliz's
 // Matrix<Integer>): row echelon form with primitive rows, rank, kernel, make-primitive, and the unique solution of a
-// system by Bareiss's elimination. R = std::int64_t, Int128 (overflow-checked: throw RingOverflow so that
-// with_exact_ring restarts in Z) or Z; the echelon form also runs in the float rings (double, MPFR floats, intervals).
-// Row-major, on the stack up to 64 entries (the UCP's systems are that small and solved by the thousand). Instantiated
-// in int_matrix.cpp.
+// system by Bareiss's elimination (with a sparse front end for square systems). R = std::int64_t, Int128
+// (overflow-checked: throw RingOverflow so that with_exact_ring restarts in Z) or Z; the echelon form also runs in the
+// float rings (double, MPFR floats, intervals). Row-major, on the stack up to 64 entries (the UCP's systems are that
+// small and solved by the thousand). Instantiated in int_matrix.cpp.
 #pragma once
 
 #include <boost/container/small_vector.hpp>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "exact/fraction_free.h"
@@ -77,9 +78,30 @@ class IntMatrix {
   boost::container::small_vector<R, 64> entries_;
 };
 
+/// One equation of a sparse system: sum over terms (j, a) of a u_j = rhs.
+template <class R>
+struct SparseEquation {
+  std::vector<std::pair<Eigen::Index, R>> terms;
+  R rhs;
+};
+
+/// The unique solution u = U / D (D > 0) of the square system `eqs` in m unknowns (m equations, each a list of terms
+/// with non-zero coefficients, at most one per unknown); kRankDeficient if it is singular (U, D unspecified). The
+/// equations with one open unknown fix it first, over a common denominator, and it is substituted into the rest,
+/// repeatedly; what is left, a core, goes to IntMatrix::solve. The matrix is block-triangular in that order, so it is
+/// singular exactly when the core is. Exact rings only.
+template <class R>
+SolutionKind solve_sparse_square(const std::vector<SparseEquation<R>>& eqs, Eigen::Index m, std::vector<R>& U, R& D);
+
 extern template class IntMatrix<std::int64_t>;
 extern template class IntMatrix<Int128>;
 extern template class IntMatrix<Z>;
+extern template SolutionKind solve_sparse_square<std::int64_t>(const std::vector<SparseEquation<std::int64_t>>&,
+                                                               Eigen::Index, std::vector<std::int64_t>&, std::int64_t&);
+extern template SolutionKind solve_sparse_square<Int128>(const std::vector<SparseEquation<Int128>>&, Eigen::Index,
+                                                         std::vector<Int128>&, Int128&);
+extern template SolutionKind solve_sparse_square<Z>(const std::vector<SparseEquation<Z>>&, Eigen::Index,
+                                                    std::vector<Z>&, Z&);
 extern template void IntMatrix<double>::make_primitive();
 extern template std::vector<Eigen::Index> IntMatrix<double>::echelon(Eigen::Index, Eigen::Index, Eigen::Index);
 

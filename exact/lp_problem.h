@@ -53,12 +53,15 @@ struct LpOptions {
   /// Wall clock (a command's --time-limit), tested before each pivot: the run ends with LpStatus::kTimeLimit
   /// once it has passed.
   Deadline deadline;
+  /// Compute the optimal duals y (LpResult::duals): a solve of B^T y = c_B after the last pivot. Off, an
+  /// optimal result carries no duals (the UCP's face LPs read only x and the basis).
+  bool duals = false;
 };
 
 /// Result with evidence. Sign conventions (checked exactly by verify_* in simplex.h):
-/// - kOptimal:    x optimal, A x = b, x >= 0 on non-free columns; duals y with (A^T y)_j <= c_j on non-free
-///                columns, == c_j on free columns, and b^T y = c^T x = value. basis = the optimal basis (columns
-///                of A, |basis| = rank A, basis[r] is basic in tableau row r).
+/// - kOptimal:    x optimal, A x = b, x >= 0 on non-free columns; duals y (if options.duals, else empty) with
+///                (A^T y)_j <= c_j on non-free columns, == c_j on free columns, and b^T y = c^T x = value. basis = the
+///                optimal basis (columns of A, |basis| = rank A, basis[r] is basic in tableau row r).
 /// - kInfeasible: farkas y with (y^T A)_j >= 0 on non-free columns, == 0 on free columns, and y^T b < 0
 ///                (so no x >= 0 has A x = b). basis = the final phase-1 basis of [A | S] with S = diag(sign b)
 ///                (sign 0 counts as +1): column index A.cols() + i is the artificial of row i.

@@ -129,14 +129,15 @@ Vec<T> basis_duals(const Mat<T>& A, const Vec<T>& b, const std::vector<Index>& b
   return y ? *y : Vec<T>(Vec<T>::Zero(m));
 }
 
+/// The result of a run that ended with `out`; an optimal one carries duals if options.duals asks for them.
 template <class T>
-LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out, long pivots) {
+LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out, long pivots,
+                   const LpOptions& options) {
   LpResult<T> res;
   res.decided_by = NumberTraits<T>::is_exact ? DecidedBy::kExact : DecidedBy::kFloat;
   res.pivots = pivots;
   res.basis = tab.basis();
   res.x = tab.primal();
-  const Vec<T> c = problem.objective();
   if (out.end == LoopEnd::kPivotLimit || out.end == LoopEnd::kTimeLimit) {
     res.status = out.end == LoopEnd::kPivotLimit ? LpStatus::kPivotLimit : LpStatus::kTimeLimit;
     return res;
@@ -153,7 +154,9 @@ LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, co
   }
   res.status = LpStatus::kOptimal;
   res.value = tab.objective_value();
+  if (!options.duals) return res;
   Vec<T> cB(tab.rows());
+  const Vec<T> c = problem.objective();
   for (Index r = 0; r < tab.rows(); ++r) cB(r) = c(tab.basis()[static_cast<size_t>(r)]);
   res.duals = basis_duals(problem.A, problem.b, res.basis, cB);
   return res;
@@ -174,7 +177,7 @@ LpResult<T> solve_lp_from_tableau(const LpProblem<T>& problem, SimplexTableau<T>
   long pivots = 0;
   tab.set_objective(problem.objective());
   const LoopOutcome out = simplex_loop(tab, problem.is_free, options, pivots);
-  return finish(problem, tab, out, pivots);
+  return finish(problem, tab, out, pivots, options);
 }
 
 template <class T>
@@ -186,13 +189,13 @@ template <class T>
 std::optional<LpResult<T>> decide_at_basis(const LpProblem<T>& problem, SimplexTableau<T> tab,
                                            const LpOptions& options) {
   tab.set_objective(problem.objective());
-  if (is_optimal_basis(tab, problem.is_free)) return finish(problem, tab, {LoopEnd::kOptimal, -1, 1}, 0);
+  if (is_optimal_basis(tab, problem.is_free)) return finish(problem, tab, {LoopEnd::kOptimal, -1, 1}, 0, options);
   // Not optimal, yet decided if the column the pricing rule enters has no blocking row: its edge is an
   // unbounded ray (the outcome of phase 2 before its first pivot).
   const bool bland = options.rule == PivotRule::kBland;
   const Entering e = entering_column(tab, problem.is_free, bland);
   if (blocking_row(tab, problem.is_free, e, bland) >= 0) return std::nullopt;
-  return finish(problem, tab, {LoopEnd::kUnbounded, e.column, e.direction}, 0);
+  return finish(problem, tab, {LoopEnd::kUnbounded, e.column, e.direction}, 0, options);
 }
 
 namespace {
@@ -211,7 +214,7 @@ LpResult<T> run_simplex(const LpProblem<T>& problem, const LpOptions& options) {
   long pivots = 0;
   const LoopOutcome phase1 = simplex_loop(tab, problem.is_free, options, pivots);
   if (phase1.end == LoopEnd::kPivotLimit || phase1.end == LoopEnd::kTimeLimit)
-    return finish(problem, tab, phase1, pivots);
+    return finish(problem, tab, phase1, pivots, options);
   if (exact::is_positive(tab.objective_value())) {
     LpResult<T> res;
     res.status = LpStatus::kInfeasible;
@@ -239,7 +242,7 @@ LpResult<T> run_simplex(const LpProblem<T>& problem, const LpOptions& options) {
   // Phase 2.
   tab.set_objective(problem.objective());
   const LoopOutcome out = simplex_loop(tab, problem.is_free, options, pivots);
-  return finish(problem, tab, out, pivots);
+  return finish(problem, tab, out, pivots, options);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Two-phase primal simplex for  min c^T x  s.t.  A x = b, x >= 0 (free variables allowed), written once over
 // T (double or Q). Anti-cycling by Bland's rule (after a run of degenerate pivots, or always), so it
-// terminates on degenerate problems. Returns the optimal basis, duals and a certificate (Farkas vector or ray).
+// terminates on degenerate problems. Returns the optimal basis, a certificate (Farkas vector or ray) and, on
+// request (LpOptions::duals), the optimal duals.
 #pragma once
 
 #include "exact/input_error.h"

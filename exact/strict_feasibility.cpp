@@ -44,6 +44,13 @@ LpProblem<T> strict_lp(const Mat<T>& A, const std::vector<bool>& is_free, const 
 }
 
 // The answer read off the LP's result (m rows and n columns of the system, strict columns S).
+/// The options of the strict-feasibility LP: its duals are the Motzkin certificate (read_strict).
+LpOptions with_duals() {
+  LpOptions o;
+  o.duals = true;
+  return o;
+}
+
 template <class T>
 StrictFeasibility<T> read_strict(const LpResult<T>& r, Index m, Index n, const std::vector<Index>& S) {
   StrictFeasibility<T> out;
@@ -151,7 +158,7 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
   if (!B) return std::nullopt;
   LpProblem<double> lp = hint;
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
-  const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp), m, n, S);
+  const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp, with_duals()), m, n, S);
   try {
     return check_rounded(ilp, f, is_free, strict, *B, d);
   } catch (const RingOverflow&) {
@@ -243,7 +250,8 @@ StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
     if (!integer_) {
       LpProblem<Q> lp = strict_lp<Q>(A_, is_free_, strict_columns_);
       lp.b.head(m_) = b;
-      return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp) : solve_lp_verified(lp), m_, n_, strict_columns_);
+      return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp, with_duals()) : solve_lp_verified(lp, with_duals()),
+                         m_, n_, strict_columns_);
     }
     if (std::optional<StrictFeasibility<Q>> r = rounded_solve(*integer_, hint_, is_free_, strict_, strict_columns_, b))
       return std::move(*r);
@@ -253,13 +261,13 @@ StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
     LpProblem<Q> lp = strict_lp<Q>(integer_->convert<Q>({}, [](i64 v) { return Q(static_cast<long>(v)); }).A, is_free_,
                                    strict_columns_);
     for (Index i = 0; i < m_; ++i) lp.b(i) = b(i) * Q(static_cast<long>(L[static_cast<size_t>(i)]));
-    StrictFeasibility<Q> out = read_strict(solve_lp_verified(lp), m_, n_, strict_columns_);
+    StrictFeasibility<Q> out = read_strict(solve_lp_verified(lp, with_duals()), m_, n_, strict_columns_);
     for (Index i = 0; i < out.motzkin.size(); ++i) out.motzkin(i) *= Q(static_cast<long>(L[static_cast<size_t>(i)]));
     return out;
   } else {
     LpProblem<T> lp = hint_;
     lp.b.head(m_) = b;
-    return read_strict(solve_lp<T>(lp), m_, n_, strict_columns_);
+    return read_strict(solve_lp<T>(lp, with_duals()), m_, n_, strict_columns_);
   }
 }
 

@@ -46,7 +46,7 @@ LpResult<Q> from_scratch(const LpProblem<Q>& problem, const LpOptions& options) 
 }
 
 /// What a float rung proposes: its verdict, final basis and (optimal) approximate x and duals of the LP it
-/// solved (the integer-scaled one when there is one).
+/// solved (the integer-scaled one when there is one; no duals without it).
 struct Proposal {
   Rung rung;
   LpStatus status = LpStatus::kInfeasible;
@@ -67,7 +67,9 @@ template <class T, class FromInt, class FromQ>
 Proposal propose(Rung rung, const LpProblem<Q>& problem, const std::optional<IntegerLp>& ilp, const LpOptions& options,
                  FromInt from_int, FromQ from_q) {
   const LpProblem<T> lp = ilp ? ilp->convert<T>(problem.is_free, from_int) : convert_lp<T>(problem, from_q);
-  const LpResult<T> r = solve_lp<T>(lp, options);
+  LpOptions lp_options = options;
+  lp_options.duals = ilp.has_value();  // the duals are read only by the integer check of an optimum (check)
+  const LpResult<T> r = solve_lp<T>(lp, lp_options);
   return {rung, r.status, r.basis, approx(r.x), approx(r.duals)};
 }
 
@@ -152,7 +154,7 @@ std::optional<LpResult<Q>> check(const LpProblem<Q>& problem, const std::optiona
       LpResult<Q> res;
       res.status = LpStatus::kOptimal;
       res.x = std::move(cert->x);
-      res.duals = std::move(cert->y);
+      if (options.duals) res.duals = std::move(cert->y);
       res.value = cert->value;
       res.basis = p.basis;
       res.decided_by = DecidedBy::kFloatBasisCheckedExactly;

@@ -17,9 +17,9 @@ namespace contactcert::exact {
 /// decided_by = kFloatBasisCheckedExactly (pivots = 0); if not, the exact simplex continues from the float
 /// basis (kExactContinuedFromFloatBasis) or, if that basis is singular or primal infeasible in Q, starts from
 /// scratch (kExact). The result satisfies the conventions of LpResult exactly. (On the integer fast path the
-/// basis is known to be non-singular in floating point only; x, duals and value are exact and certified by
-/// A x = b, x >= 0, A^T y <= c, c^T x = b^T y.) Once options.deadline has passed, in a float rung or in the
-/// exact simplex, the result is status kTimeLimit (no verdict); options.max_pivots throws BudgetExceeded.
+/// basis is known to be non-singular in floating point only; x, value and duals (with options.duals) are exact and
+/// certified by A x = b, x >= 0, A^T y <= c, c^T x = b^T y.) Once options.deadline has passed, in a float rung or in
+/// the exact simplex, the result is status kTimeLimit (no verdict); options.max_pivots throws BudgetExceeded.
 LpResult<Q> solve_lp_verified(const LpProblem<Q>& problem, const LpOptions& options = {});
 
 /// Solves the LP exactly by climbing `ladder` (its last rung must be kExact). Each float rung solves the

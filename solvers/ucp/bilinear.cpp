@@ -22,13 +22,19 @@ BilinearResult<T> bilinear(const Face<T>& FX, const Face<T>& FY, const BilinearO
   BilinearResult<T> r;
   LpCounters& count = r.counters;
   // Step 0: (x^0, y^0) from two LPs with a zero objective.
-  FaceLpResult<T> x0 = minimize_on_face(FX, Vec<T>(Vec<T>::Zero(FX.n)), opts.arith, count);
+  const auto stopped = [&](const FaceLpResult<T>& lp) {
+    if (lp.status == FaceLpStatus::kTimeLimit) r.status = BilinearStatus::kTimeLimit;
+    return lp.status == FaceLpStatus::kTimeLimit;
+  };
+  FaceLpResult<T> x0 = minimize_on_face(FX, Vec<T>(Vec<T>::Zero(FX.n)), opts.arith, count, opts.deadline);
+  if (stopped(x0)) return r;
   if (x0.status == FaceLpStatus::kEmpty) {
     r.status = BilinearStatus::kXEmpty;
     r.farkas = x0.farkas;
     return r;
   }
-  FaceLpResult<T> y0 = minimize_on_face(FY, Vec<T>(Vec<T>::Zero(FY.n)), opts.arith, count);
+  FaceLpResult<T> y0 = minimize_on_face(FY, Vec<T>(Vec<T>::Zero(FY.n)), opts.arith, count, opts.deadline);
+  if (stopped(y0)) return r;
   if (y0.status == FaceLpStatus::kEmpty) {
     r.status = BilinearStatus::kYEmpty;
     r.farkas = y0.farkas;
@@ -48,8 +54,10 @@ BilinearResult<T> bilinear(const Face<T>& FX, const Face<T>& FY, const BilinearO
     }
     if (step1) {
       // Step 1: x^{nu+1} solves (14), then y^{nu+1} solves (15).
-      FaceLpResult<T> xn = minimize_on_face(FX, yv.x, opts.arith, count);
-      FaceLpResult<T> yn = minimize_on_face(FY, xn.vertex.x, opts.arith, count);
+      FaceLpResult<T> xn = minimize_on_face(FX, yv.x, opts.arith, count, opts.deadline);
+      if (stopped(xn)) return r;
+      FaceLpResult<T> yn = minimize_on_face(FY, xn.vertex.x, opts.arith, count, opts.deadline);
+      if (stopped(yn)) return r;
       ++r.pairs;
       const T nv = dot(xn.vertex.x, yn.vertex.x);
       // Step 2: exact termination at x^T y = 0; a strict decrease returns to Step 1.
@@ -95,24 +103,27 @@ BilinearResult<T> bilinear(const Face<T>& FX, const Face<T>& FY, const BilinearO
 }
 
 template <class T>
-void alternate_lps(const Face<T>& FX, const Face<T>& FY, FaceVertex<T>& x, FaceVertex<T>& y, Arith arith,
-                   int max_rounds, LpCounters& count) {
+BilinearStatus alternate_lps(const Face<T>& FX, const Face<T>& FY, FaceVertex<T>& x, FaceVertex<T>& y, Arith arith,
+                             int max_rounds, LpCounters& count, const exact::Deadline& deadline) {
   T val = dot(x.x, y.x);
   for (int round = 0; round < max_rounds && !exact::is_zero(val); ++round) {
-    FaceLpResult<T> xn = minimize_on_face(FX, y.x, arith, count);
-    FaceLpResult<T> yn = minimize_on_face(FY, xn.vertex.x, arith, count);
+    FaceLpResult<T> xn = minimize_on_face(FX, y.x, arith, count, deadline);
+    if (xn.status == FaceLpStatus::kTimeLimit) return BilinearStatus::kTimeLimit;
+    FaceLpResult<T> yn = minimize_on_face(FY, xn.vertex.x, arith, count, deadline);
+    if (yn.status == FaceLpStatus::kTimeLimit) return BilinearStatus::kTimeLimit;
     const T nv = dot(xn.vertex.x, yn.vertex.x);
     if (exact::sign(T(val - nv)) < 0) break;
     const bool decreased = exact::sign(T(val - nv)) > 0;
     x = xn.vertex, y = yn.vertex, val = nv;
     if (!decreased) break;
   }
+  return exact::is_zero(val) ? BilinearStatus::kComplementary : BilinearStatus::kStopped;
 }
 
-#define CONTACTCERT_BILINEAR_INSTANTIATE(T)                                                                         \
-  template BilinearResult<T> bilinear<T>(const Face<T>&, const Face<T>&, const BilinearOptions&, std::mt19937_64&); \
-  template void alternate_lps<T>(const Face<T>&, const Face<T>&, FaceVertex<T>&, FaceVertex<T>&, Arith, int,        \
-                                 LpCounters&);
+#define CONTACTCERT_BILINEAR_INSTANTIATE(T)                                                                            \
+  template BilinearResult<T> bilinear<T>(const Face<T>&, const Face<T>&, const BilinearOptions&, std::mt19937_64&);    \
+  template BilinearStatus alternate_lps<T>(const Face<T>&, const Face<T>&, FaceVertex<T>&, FaceVertex<T>&, Arith, int, \
+                                           LpCounters&, const exact::Deadline&);
 CONTACTCERT_BILINEAR_INSTANTIATE(double)
 CONTACTCERT_BILINEAR_INSTANTIATE(Q)
 CONTACTCERT_BILINEAR_INSTANTIATE(exact::Mpfr)

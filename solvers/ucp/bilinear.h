@@ -23,7 +23,7 @@ struct BilinearOptions {
   long max_pairs = 2000;    ///< safety bound on the iteration counter nu
   long max_bases = 100000;  ///< Step 3: bases explored per degenerate vertex (AdjacencyOptions::max_bases)
   Arith arith = Arith::kVerified;
-  exact::Deadline deadline;  ///< tested before each new pair; kTimeLimit when it expires
+  exact::Deadline deadline;  ///< tested before each new pair and each pivot of its LPs; kTimeLimit when it expires
 };
 
 enum class BilinearStatus {
@@ -51,16 +51,18 @@ template <class T>
 BilinearResult<T> bilinear(const Face<T>& FX, const Face<T>& FY, const BilinearOptions& opts, std::mt19937_64& rng);
 
 /// Step 1 only, from a given pair, until x^T y stops decreasing (a stationary pair) or reaches 0; used as the
-/// primal heuristic at search nodes. Both faces must be non-empty and x, y vertices of them.
+/// primal heuristic at search nodes. Both faces must be non-empty and x, y vertices of them. Returns
+/// kComplementary (x^T y = 0), kStopped, or kTimeLimit if `deadline` passed inside an LP (x, y then the last
+/// pair reached).
 template <class T>
-void alternate_lps(const Face<T>& FX, const Face<T>& FY, FaceVertex<T>& x, FaceVertex<T>& y, Arith arith,
-                   int max_rounds, LpCounters& count);
+BilinearStatus alternate_lps(const Face<T>& FX, const Face<T>& FY, FaceVertex<T>& x, FaceVertex<T>& y, Arith arith,
+                             int max_rounds, LpCounters& count, const exact::Deadline& deadline = {});
 
-#define CONTACTCERT_BILINEAR_EXTERN(T)                                                                              \
-  extern template BilinearResult<T> bilinear<T>(const Face<T>&, const Face<T>&, const BilinearOptions&,             \
-                                                std::mt19937_64&);                                                  \
-  extern template void alternate_lps<T>(const Face<T>&, const Face<T>&, FaceVertex<T>&, FaceVertex<T>&, Arith, int, \
-                                        LpCounters&);
+#define CONTACTCERT_BILINEAR_EXTERN(T)                                                                            \
+  extern template BilinearResult<T> bilinear<T>(const Face<T>&, const Face<T>&, const BilinearOptions&,           \
+                                                std::mt19937_64&);                                                \
+  extern template BilinearStatus alternate_lps<T>(const Face<T>&, const Face<T>&, FaceVertex<T>&, FaceVertex<T>&, \
+                                                  Arith, int, LpCounters&, const exact::Deadline&);
 CONTACTCERT_BILINEAR_EXTERN(double)
 CONTACTCERT_BILINEAR_EXTERN(Q)
 #undef CONTACTCERT_BILINEAR_EXTERN

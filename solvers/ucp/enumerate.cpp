@@ -54,7 +54,13 @@ EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max
           break;  // slide -: c_t = mu c_n
       }
     }
-    const FaceLpResult<Q> r = minimize_on_face(make_face(XY, zero), Vec<Q>(Vec<Q>::Zero(2 * n)), arith, count);
+    const FaceLpResult<Q> r =
+        minimize_on_face(make_face(XY, zero), Vec<Q>(Vec<Q>::Zero(2 * n)), arith, count, deadline);
+    if (r.status == FaceLpStatus::kTimeLimit) {  // this mode is not tested
+      --count.lps;
+      out.complete = false;
+      break;
+    }
     if (r.status == FaceLpStatus::kOptimal) {
       if (out.solutions++ == 0) out.x = r.vertex.x.head(n), out.y = r.vertex.x.tail(n);
       out.solution_modes.push_back(name);

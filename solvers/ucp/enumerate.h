@@ -26,7 +26,8 @@ struct EnumerateResult {
 /// generic UCP it tests the 2^n choices of x_i = 0 or y_i = 0 (letters x y). Exact (or verified) LPs.
 /// Every complementary pair of a quasistatic problem lies in some mode: v_t^+ and v_t^- can be lowered by
 /// their minimum, keeping (x, y) in X and complementary.
-/// The deadline stops the enumeration early (then kSolvable if a solution mode was found, else kUnknown);
+/// The deadline (tested after every mode and before every pivot of its LP) stops the enumeration early (then
+/// kSolvable if a solution mode was found, else kUnknown);
 /// `progress` is called after every mode with (modes tested, LPs).
 EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max_lps,
                                 const exact::Deadline& deadline = {},

@@ -18,14 +18,18 @@ Vec<T> expand(const Face<T>& F, const Vec<T>& xr) {
   return x;
 }
 
+/// The face LP on the path of `arith`, without duals (the search reads the vertex, its basis, or the Farkas
+/// vector).
 template <class T>
-exact::LpResult<T> run_lp(const exact::LpProblem<T>& lp, Arith arith) {
+exact::LpResult<T> run_lp(const exact::LpProblem<T>& lp, Arith arith, const exact::Deadline& deadline) {
+  exact::LpOptions options;
+  options.deadline = deadline;
   if constexpr (std::is_same_v<T, Q>) {
-    if (arith == Arith::kVerified) return exact::solve_lp_verified(lp);
-    if (arith == Arith::kAdaptive) return exact::solve_lp_ladder(lp, exact::adaptive_ladder());
+    if (arith == Arith::kVerified) return exact::solve_lp_verified(lp, options);
+    if (arith == Arith::kAdaptive) return exact::solve_lp_ladder(lp, exact::adaptive_ladder(), options);
   }
   (void)arith;
-  return exact::solve_lp<T>(lp);
+  return exact::solve_lp<T>(lp, options);
 }
 }  // namespace
 
@@ -42,7 +46,8 @@ Face<T> make_face(const StandardPolyhedron<T>& P, const std::vector<bool>& zero)
 }
 
 template <class T>
-FaceLpResult<T> minimize_on_face(const Face<T>& F, const Vec<T>& c, Arith arith, LpCounters& count) {
+FaceLpResult<T> minimize_on_face(const Face<T>& F, const Vec<T>& c, Arith arith, LpCounters& count,
+                                 const exact::Deadline& deadline) {
   ++count.lps;
   FaceLpResult<T> out;
   const Index m = F.reduced.A.rows(), nr = F.reduced.A.cols();
@@ -56,7 +61,11 @@ FaceLpResult<T> minimize_on_face(const Face<T>& F, const Vec<T>& c, Arith arith,
   lp.b = F.reduced.b;
   lp.c = Vec<T>(nr);
   for (Index k = 0; k < nr; ++k) lp.c(k) = c(F.columns[static_cast<std::size_t>(k)]);
-  exact::LpResult<T> r = run_lp(lp, arith);
+  exact::LpResult<T> r = run_lp(lp, arith, deadline);
+  if (r.status == exact::LpStatus::kTimeLimit) {
+    out.status = FaceLpStatus::kTimeLimit;
+    return out;
+  }
   if (r.status == exact::LpStatus::kInfeasible) {
     out.status = FaceLpStatus::kEmpty;
     out.farkas = r.farkas;
@@ -90,9 +99,10 @@ std::vector<FaceVertex<T>> adjacent_on_face(const Face<T>& F, const FaceVertex<T
   return out;
 }
 
-#define CONTACTCERT_FACE_LP_INSTANTIATE(T)                                                         \
-  template Face<T> make_face<T>(const StandardPolyhedron<T>&, const std::vector<bool>&);           \
-  template FaceLpResult<T> minimize_on_face<T>(const Face<T>&, const Vec<T>&, Arith, LpCounters&); \
+#define CONTACTCERT_FACE_LP_INSTANTIATE(T)                                                        \
+  template Face<T> make_face<T>(const StandardPolyhedron<T>&, const std::vector<bool>&);          \
+  template FaceLpResult<T> minimize_on_face<T>(const Face<T>&, const Vec<T>&, Arith, LpCounters&, \
+                                               const exact::Deadline&);                           \
   template std::vector<FaceVertex<T>> adjacent_on_face<T>(const Face<T>&, const FaceVertex<T>&, long, LpCounters&);
 CONTACTCERT_FACE_LP_INSTANTIATE(double)
 CONTACTCERT_FACE_LP_INSTANTIATE(Q)

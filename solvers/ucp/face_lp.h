@@ -40,7 +40,8 @@ struct FaceVertex {
   std::vector<Eigen::Index> basis;
 };
 
-enum class FaceLpStatus { kOptimal, kEmpty };
+/// kTimeLimit: the deadline passed inside the LP, before a verdict (the run ends `unknown`).
+enum class FaceLpStatus { kOptimal, kEmpty, kTimeLimit };
 
 /// Result of min c^T x over a face: an optimal vertex, or a Farkas vector proving the face empty
 /// (farkas^T A_j >= 0 for every free column j, farkas^T b < 0).
@@ -53,9 +54,11 @@ struct FaceLpResult {
   std::vector<Eigen::Index> farkas_basis;
 };
 
-/// Minimises c^T x (c in P's coordinates, c >= 0 so the LP is bounded) over the face; counts one LP.
+/// Minimises c^T x (c in P's coordinates, c >= 0 so the LP is bounded) over the face; counts one LP. The LP
+/// tests `deadline` before each pivot (kTimeLimit once it has passed).
 template <class T>
-FaceLpResult<T> minimize_on_face(const Face<T>& F, const Vec<T>& c, Arith arith, LpCounters& count);
+FaceLpResult<T> minimize_on_face(const Face<T>& F, const Vec<T>& c, Arith arith, LpCounters& count,
+                                 const exact::Deadline& deadline = {});
 
 /// The adjacent extreme points of a vertex of the face, each with a basis. Exact at degenerate vertices:
 /// all bases of the vertex are explored, up to `max_bases` of them (count.incomplete_adjacencies says
@@ -66,7 +69,8 @@ std::vector<FaceVertex<T>> adjacent_on_face(const Face<T>& F, const FaceVertex<T
 
 #define CONTACTCERT_FACE_LP_EXTERN(T)                                                                        \
   extern template Face<T> make_face<T>(const StandardPolyhedron<T>&, const std::vector<bool>&);              \
-  extern template FaceLpResult<T> minimize_on_face<T>(const Face<T>&, const Vec<T>&, Arith, LpCounters&);    \
+  extern template FaceLpResult<T> minimize_on_face<T>(const Face<T>&, const Vec<T>&, Arith, LpCounters&,     \
+                                                      const exact::Deadline&);                               \
   extern template std::vector<FaceVertex<T>> adjacent_on_face<T>(const Face<T>&, const FaceVertex<T>&, long, \
                                                                  LpCounters&);
 CONTACTCERT_FACE_LP_EXTERN(double)

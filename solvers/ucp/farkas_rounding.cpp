@@ -44,95 +44,6 @@ std::optional<FarkasVector> checked_farkas(const exact::IntegerSystem<R>& s, con
   return f;
 }
 
-/// One equation of a square integer system: sum over terms (j, a) of a u_j = rhs.
-template <class R>
-struct Equation {
-  std::vector<std::pair<Index, R>> terms;
-  R rhs;
-};
-
-/// A positive multiple U of the unique solution u of the square system `eqs` in m unknowns; false if it has none
-/// (singular). The basis systems of the UCP's faces are sparse: X's columns come from the sparse rows of P's left
-/// null space, and an artificial's equation has one unknown. So the equations with one open unknown fix it first
-/// (u_j = U_j / D over a common denominator D, each new value substituted into the other equations), repeatedly;
-/// the rest, a small core, is solved by fraction-free elimination (exact::IntMatrix::solve). The matrix of the
-/// system is block-triangular in that order, so it is singular exactly when a pivot or the core is.
-template <class R>
-bool solve_square(const std::vector<Equation<R>>& eqs, Index m, std::vector<R>& U) {
-  const std::size_t ne = eqs.size();
-  std::vector<std::vector<std::size_t>> occurs(static_cast<std::size_t>(m));
-  std::vector<std::size_t> open(ne), ready;
-  for (std::size_t e = 0; e < ne; ++e) {
-    open[e] = eqs[e].terms.size();
-    for (const auto& [j, a] : eqs[e].terms) occurs[static_cast<std::size_t>(j)].push_back(e);
-    if (open[e] == 1) ready.push_back(e);
-  }
-  std::vector<bool> known(static_cast<std::size_t>(m), false), used(ne, false);
-  U.assign(static_cast<std::size_t>(m), R(0));
-  R D(1);
-  // D (rhs - sum of the known terms of e): the right-hand side of e over D once its known unknowns are moved.
-  const auto residual = [&](std::size_t e) {
-    R t = mul(eqs[e].rhs, D);
-    for (const auto& [j, a] : eqs[e].terms)
-      if (known[static_cast<std::size_t>(j)]) t = sub(t, mul(a, U[static_cast<std::size_t>(j)]));
-    return t;
-  };
-  while (!ready.empty()) {
-    const std::size_t e = ready.back();
-    ready.pop_back();
-    if (used[e] || open[e] != 1) continue;
-    const auto& [i, coef] = *std::find_if(eqs[e].terms.begin(), eqs[e].terms.end(),
-                                          [&](const auto& t) { return !known[static_cast<std::size_t>(t.first)]; });
-    // coef u_i = t / D: u_i = t / (coef D); with coef = g a, t = g t', a > 0: U_i = t' over the denominator D a.
-    R t = residual(e);
-    used[e] = true;
-    known[static_cast<std::size_t>(i)] = true;
-    if (sign(t) != 0) {
-      const R g = exact::ring::gcd(coef, t);
-      R a = exact::ring::divexact(coef, g);
-      t = exact::ring::divexact(t, g);
-      if (sign(a) < 0) a = sub(R(0), a), t = sub(R(0), t);
-      if (!(a == R(1))) {
-        for (Index j = 0; j < m; ++j)
-          if (known[static_cast<std::size_t>(j)])
-            U[static_cast<std::size_t>(j)] = mul(U[static_cast<std::size_t>(j)], a);
-        D = mul(D, a);
-      }
-      U[static_cast<std::size_t>(i)] = t;
-    }
-    for (std::size_t e2 : occurs[static_cast<std::size_t>(i)])
-      if (!used[e2] && --open[e2] == 1) ready.push_back(e2);
-  }
-  // The core: the open unknowns (column c of M) and the unused equations (rows of M = [A_core | residual]).
-  std::vector<Index> column(static_cast<std::size_t>(m), -1);
-  Index k = 0;
-  for (Index j = 0; j < m; ++j)
-    if (!known[static_cast<std::size_t>(j)]) column[static_cast<std::size_t>(j)] = k++;
-  if (k == 0) return true;  // every equation was used (as many as unknowns)
-  Index rows = 0;
-  for (std::size_t e = 0; e < ne; ++e) rows += used[e] ? 0 : 1;
-  if (rows != k) return false;
-  exact::IntMatrix<R> M(k, k + 1);
-  Index r = 0;
-  for (std::size_t e = 0; e < ne; ++e) {
-    if (used[e]) continue;
-    R* row = M.row(r++);
-    for (const auto& [j, a] : eqs[e].terms)
-      if (!known[static_cast<std::size_t>(j)]) row[column[static_cast<std::size_t>(j)]] = a;
-    row[k] = residual(e);
-  }
-  std::vector<R> N(static_cast<std::size_t>(k));
-  R d;
-  if (M.solve(N.data(), d) != exact::SolutionKind::kUnique) return false;
-  // D u = N / d on the core (d > 0): U d over the common denominator D d.
-  for (Index j = 0; j < m; ++j) {
-    R& u = U[static_cast<std::size_t>(j)];
-    u = known[static_cast<std::size_t>(j)] ? mul(u, d)
-                                           : N[static_cast<std::size_t>(column[static_cast<std::size_t>(j)])];
-  }
-  return true;
-}
-
 }  // namespace
 
 template <class R>
@@ -141,13 +52,15 @@ std::optional<FarkasVector> basis_farkas(const exact::IntegerSystem<R>& s, const
   // Phase 1 ends with duals y, B^T y = c_B (cost 1 on artificials), and reports f = -y: f^T A_v = 0 for every
   // structural v of the basis, and f_i = -sign(b_i) w_i for the artificial n + i of row i, where w_i = 1, or
   // the power of two the float simplex scaled row i by. Those entries are taken from y_approx, rounded to
-  // signed powers of two; in the rows of s (row i times L_i) they read L_i f'_i = f_i.
+  // signed powers of two; in the rows of s (row i times L_i) they read L_i f'_i = f_i. The system is sparse (X's
+  // columns come from the sparse rows of P's left null space, an artificial's equation has one unknown): the
+  // sparse solve fixes most unknowns without elimination.
   const Index m = s.m;
   if (y_approx.size() != m) return std::nullopt;
   if (static_cast<Index>(basis.size()) != m) return std::nullopt;
-  std::vector<Equation<R>> eqs(static_cast<std::size_t>(m));  // one per basis column, unknowns f'
+  std::vector<exact::SparseEquation<R>> eqs(static_cast<std::size_t>(m));  // one per basis column, unknowns f'
   for (Index r = 0; r < m; ++r) {
-    Equation<R>& eq = eqs[static_cast<std::size_t>(r)];
+    exact::SparseEquation<R>& eq = eqs[static_cast<std::size_t>(r)];
     const Index v = basis[static_cast<std::size_t>(r)];
     if (v < 0 || v >= s.n + m) return std::nullopt;
     if (v < s.n) {
@@ -167,8 +80,9 @@ std::optional<FarkasVector> basis_farkas(const exact::IntegerSystem<R>& s, const
     }
   }
   std::vector<R> F;
-  if (!solve_square(eqs, m, F)) return std::nullopt;
-  return checked_farkas(s, F, zero);  // F is a positive multiple of f'
+  R D;
+  if (exact::solve_sparse_square(eqs, m, F, D) != exact::SolutionKind::kUnique) return std::nullopt;
+  return checked_farkas(s, F, zero);  // F = D f', a positive multiple
 }
 
 template <class R>

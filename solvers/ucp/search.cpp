@@ -19,9 +19,6 @@ struct Learned {
   std::vector<Index> farkas_basis;
 };
 
-/// Thrown out of the recursion when the node or time budget runs out.
-struct BudgetExhausted {};
-
 template <class T>
 class Search {
  public:
@@ -29,13 +26,22 @@ class Search {
       : ucp_(ucp), opts_(opts), out_(out), n_(ucp.n()) {}
 
   /// Explores the node with fixings (zx, zy); x (y) is a vertex of the X (Y) face if that face is unchanged
-  /// from the parent. Returns true when a complementary pair was found.
-  bool visit(long id, std::vector<bool>& zx, std::vector<bool>& zy, std::optional<FaceVertex<T>> x,
-             std::optional<FaceVertex<T>> y) {
+  /// from the parent. Returns kSolvable when a complementary pair was found (out.x, out.y), kJammed when every
+  /// leaf below is dead, kUnknown when the node or time budget ran out.
+  UcpStatus visit(long id, std::vector<bool>& zx, std::vector<bool>& zy, std::optional<FaceVertex<T>> x,
+                  std::optional<FaceVertex<T>> y) {
     const Face<T> FX = make_face(ucp_.X, zx), FY = make_face(ucp_.Y, zy);
-    if (!x && !(x = settle(id, Side::kX, FX, zx, y ? y->x : Vec<T>(Vec<T>::Zero(n_))))) return false;
-    if (!y && !(y = settle(id, Side::kY, FY, zy, x->x))) return false;
-    alternate_lps(FX, FY, *x, *y, opts_.heuristic.arith, opts_.node_rounds, out_.counters);
+    if (!x) {
+      const FaceLpStatus s = settle(id, Side::kX, FX, zx, y ? y->x : Vec<T>(Vec<T>::Zero(n_)), x);
+      if (s != FaceLpStatus::kOptimal) return s == FaceLpStatus::kEmpty ? UcpStatus::kJammed : UcpStatus::kUnknown;
+    }
+    if (!y) {
+      const FaceLpStatus s = settle(id, Side::kY, FY, zy, x->x, y);
+      if (s != FaceLpStatus::kOptimal) return s == FaceLpStatus::kEmpty ? UcpStatus::kJammed : UcpStatus::kUnknown;
+    }
+    if (alternate_lps(FX, FY, *x, *y, opts_.heuristic.arith, opts_.node_rounds, out_.counters, opts_.deadline) ==
+        BilinearStatus::kTimeLimit)
+      return UcpStatus::kUnknown;
     Index branch = -1;
     T best = T(0), xTy = T(0);
     for (Index i = 0; i < n_; ++i) {
@@ -44,40 +50,43 @@ class Search {
       xTy += p;
       if (branch < 0 || exact::sign(T(p - best)) > 0) branch = i, best = p;
     }
-    if (!have_best || exact::sign(T(xTy - out_.xTy)) < 0) out_.xTy = xTy, have_best = true;
+    if (!out_.paired || exact::sign(T(xTy - out_.xTy)) < 0) out_.xTy = xTy, out_.paired = true;
     if (branch < 0) {  // x^T y = 0 exactly
       out_.x = x->x, out_.y = y->x, out_.xTy = T(0);
-      return true;
+      return UcpStatus::kSolvable;
     }
-    const long cx = new_node(), cy = new_node();
+    const long cx = new_node();
+    if (cx < 0) return UcpStatus::kUnknown;
+    const long cy = new_node();
+    if (cy < 0) return UcpStatus::kUnknown;
     out_.tree[static_cast<std::size_t>(id)].branch = branch;
     out_.tree[static_cast<std::size_t>(id)].child_x_zero = cx;
     out_.tree[static_cast<std::size_t>(id)].child_y_zero = cy;
     const auto b = static_cast<std::size_t>(branch);
     zx[b] = true;
-    const bool found = visit(cx, zx, zy, std::nullopt, y);
+    const UcpStatus below_x = visit(cx, zx, zy, std::nullopt, y);
     zx[b] = false;
-    if (found) return true;
+    if (below_x != UcpStatus::kJammed) return below_x;
     zy[b] = true;
-    const bool found_y = visit(cy, zx, zy, x, std::nullopt);
+    const UcpStatus below_y = visit(cy, zx, zy, x, std::nullopt);
     zy[b] = false;
-    return found_y;
+    return below_y;
   }
 
-  bool have_best = false;  ///< out.xTy holds a pair's value
-
+ private:
+  /// A new node's index, or -1 if the node or time budget has run out.
   long new_node() {
-    if (static_cast<long>(out_.tree.size()) >= opts_.max_nodes || opts_.deadline.expired()) throw BudgetExhausted{};
+    if (static_cast<long>(out_.tree.size()) >= opts_.max_nodes || opts_.deadline.expired()) return -1;
     if (opts_.progress) opts_.progress(static_cast<long>(out_.tree.size()), out_.counters.lps);
     out_.tree.emplace_back();
     return static_cast<long>(out_.tree.size()) - 1;
   }
 
- private:
-  /// Makes node `id` a dead leaf for `side` if an earlier Farkas vector or the face LP proves the face
-  /// empty; otherwise returns an optimal vertex of min c^T x over the face.
-  std::optional<FaceVertex<T>> settle(long id, Side side, const Face<T>& F, const std::vector<bool>& zero,
-                                      const Vec<T>& c) {
+  /// Makes node `id` a dead leaf for `side` (kEmpty) if an earlier Farkas vector or the face LP proves the face
+  /// empty; otherwise sets v to an optimal vertex of min c^T x over the face (kOptimal), unless the deadline
+  /// passed inside the LP (kTimeLimit).
+  FaceLpStatus settle(long id, Side side, const Face<T>& F, const std::vector<bool>& zero, const Vec<T>& c,
+                      std::optional<FaceVertex<T>>& v) {
     auto& learned = learned_[side == Side::kX ? 0 : 1];
     SearchNode<T>& node = out_.tree[static_cast<std::size_t>(id)];
     for (const Learned<T>& l : learned) {
@@ -88,11 +97,15 @@ class Search {
         node.farkas = l.farkas;
         node.farkas_basis = l.farkas_basis;
         ++out_.learned_prunes;
-        return std::nullopt;
+        return FaceLpStatus::kEmpty;
       }
     }
-    FaceLpResult<T> r = minimize_on_face(F, c, opts_.heuristic.arith, out_.counters);
-    if (r.status == FaceLpStatus::kOptimal) return r.vertex;
+    FaceLpResult<T> r = minimize_on_face(F, c, opts_.heuristic.arith, out_.counters, opts_.deadline);
+    if (r.status == FaceLpStatus::kTimeLimit) return FaceLpStatus::kTimeLimit;
+    if (r.status == FaceLpStatus::kOptimal) {
+      v = std::move(r.vertex);
+      return FaceLpStatus::kOptimal;
+    }
     const StandardPolyhedron<T>& P = side == Side::kX ? ucp_.X : ucp_.Y;
     Learned<T> l;
     l.farkas = r.farkas;
@@ -104,7 +117,7 @@ class Search {
     out_.tree[static_cast<std::size_t>(id)].farkas = r.farkas;
     out_.tree[static_cast<std::size_t>(id)].farkas_basis = std::move(r.farkas_basis);
     learned.push_back(std::move(l));
-    return std::nullopt;
+    return FaceLpStatus::kEmpty;
   }
 
   const UcpInstance<T>& ucp_;
@@ -121,53 +134,51 @@ SearchResult<T> complete_search(const UcpInstance<T>& ucp, const SearchOptions& 
   SearchResult<T> out;
   const Face<T> FX = make_face(ucp.X, {}), FY = make_face(ucp.Y, {});
   std::optional<FaceVertex<T>> x0, y0;
-  Search<T> search(ucp, opts, out);
   out.tree.assign(1, SearchNode<T>{});  // the root, which fixes nothing (inside every budget)
   std::vector<bool> zx(static_cast<std::size_t>(ucp.n()), false), zy = zx;
-  try {
-    if (opts.bilinear_first) {
-      BilinearResult<T> b = bilinear(FX, FY, opts.heuristic, rng);
-      out.counters = b.counters;
-      out.pairs = b.pairs;
-      if (b.status == BilinearStatus::kXEmpty || b.status == BilinearStatus::kYEmpty) {
-        out.status = UcpStatus::kJammed;
-        out.reason = b.status == BilinearStatus::kXEmpty ? "X is empty" : "Y is empty";
-        out.tree[0].side = b.status == BilinearStatus::kXEmpty ? Side::kX : Side::kY;
-        out.tree[0].farkas = b.farkas;
-        out.nodes = 1;
-        return out;
-      }
-      out.xTy = b.xTy;
-      if (b.status == BilinearStatus::kComplementary) {
-        out.status = UcpStatus::kSolvable;
-        out.reason = "bilinear algorithm";
-        out.x = b.x.x, out.y = b.y.x;
-        out.nodes = 1;
-        out.tree.clear();
-        return out;
-      }
-      if (b.status == BilinearStatus::kTimeLimit) throw BudgetExhausted{};
-      x0 = b.x, y0 = b.y;
-      search.have_best = true;
+  if (opts.bilinear_first) {
+    BilinearResult<T> b = bilinear(FX, FY, opts.heuristic, rng);
+    out.counters = b.counters;
+    out.pairs = b.pairs;
+    if (b.status == BilinearStatus::kXEmpty || b.status == BilinearStatus::kYEmpty) {
+      out.status = UcpStatus::kJammed;
+      out.reason = b.status == BilinearStatus::kXEmpty ? "X is empty" : "Y is empty";
+      out.tree[0].side = b.status == BilinearStatus::kXEmpty ? Side::kX : Side::kY;
+      out.tree[0].farkas = b.farkas;
+      out.nodes = 1;
+      return out;
     }
-    if (opts.deadline.expired()) throw BudgetExhausted{};
-    const bool found = search.visit(0, zx, zy, x0, y0);
-    out.nodes = static_cast<long>(out.tree.size());
-    if (found) {
+    out.paired = b.x.x.size() > 0;  // not if the deadline passed inside Step 0
+    out.xTy = b.xTy;
+    if (b.status == BilinearStatus::kComplementary) {
       out.status = UcpStatus::kSolvable;
+      out.reason = "bilinear algorithm";
+      out.x = b.x.x, out.y = b.y.x;
+      out.nodes = 1;
+      out.tree.clear();
+      return out;
+    }
+    if (b.status != BilinearStatus::kTimeLimit) x0 = b.x, y0 = b.y;
+  }
+  if (opts.deadline.expired())
+    out.status = UcpStatus::kUnknown;
+  else
+    out.status = Search<T>(ucp, opts, out).visit(0, zx, zy, x0, y0);
+  out.nodes = static_cast<long>(out.tree.size());
+  switch (out.status) {
+    case UcpStatus::kSolvable:
       out.reason = "complete search";
       out.tree.clear();
-    } else {
-      out.status = UcpStatus::kJammed;
+      break;
+    case UcpStatus::kJammed:
       out.reason = jammed_reason(out.tree);
-    }
-  } catch (const BudgetExhausted&) {
-    out.nodes = static_cast<long>(out.tree.size());
-    out.status = UcpStatus::kUnknown;
-    out.reason = out.nodes >= opts.max_nodes
-                     ? "node budget of " + std::to_string(opts.max_nodes) + " exhausted"
-                     : opts.deadline.reached_text() + " after " + std::to_string(out.nodes) + " nodes";
-    out.tree.clear();
+      break;
+    case UcpStatus::kUnknown:
+      out.reason = out.nodes >= opts.max_nodes
+                       ? "node budget of " + std::to_string(opts.max_nodes) + " exhausted"
+                       : opts.deadline.reached_text() + " after " + std::to_string(out.nodes) + " nodes";
+      out.tree.clear();
+      break;
   }
   return out;
 }
@@ -175,12 +186,7 @@ SearchResult<T> complete_search(const UcpInstance<T>& ucp, const SearchOptions& 
 template <class T>
 UcpStatus search_subtree(const UcpInstance<T>& ucp, const SearchOptions& opts, SearchResult<T>& out, long id,
                          std::vector<bool>& zx, std::vector<bool>& zy) {
-  Search<T> search(ucp, opts, out);
-  try {
-    return search.visit(id, zx, zy, std::nullopt, std::nullopt) ? UcpStatus::kSolvable : UcpStatus::kJammed;
-  } catch (const BudgetExhausted&) {
-    return UcpStatus::kUnknown;
-  }
+  return Search<T>(ucp, opts, out).visit(id, zx, zy, std::nullopt, std::nullopt);
 }
 
 template UcpStatus search_subtree<Q>(const UcpInstance<Q>&, const SearchOptions&, SearchResult<Q>&, long,

@@ -49,7 +49,8 @@ template <class T>
 struct SearchResult {
   UcpStatus status = UcpStatus::kUnknown;
   Vec<T> x, y;
-  T xTy = T(0);  ///< best x^T y seen
+  T xTy = T(0);         ///< best x^T y seen (if paired)
+  bool paired = false;  ///< a pair was reached (false only if a budget ran out before the first one)
   std::vector<SearchNode<T>> tree;
   std::string reason;       ///< "X is empty", "Y is empty", "search tree", "bilinear algorithm", ...
   long nodes = 0;           ///< nodes created

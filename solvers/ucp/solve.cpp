@@ -165,7 +165,7 @@ void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& o
       case BilinearStatus::kTimeLimit:
         rep.status = UcpStatus::kUnknown;
         rep.reason = deadline.reached_text() + " after " + std::to_string(b.pairs) + " pairs";
-        set_best(rep, b.xTy);
+        if (b.x.x.size() > 0) set_best(rep, b.xTy);  // not if the deadline passed inside Step 0
         break;
       case BilinearStatus::kXEmpty:
       case BilinearStatus::kYEmpty: {
@@ -198,7 +198,7 @@ void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& o
   rep.incomplete_adjacencies = s.counters.incomplete_adjacencies;
   rep.nodes = s.nodes;
   rep.learned_prunes = s.learned_prunes;
-  set_best(rep, s.xTy);
+  if (s.paired || s.status != UcpStatus::kUnknown) set_best(rep, s.xTy);  // a budget may end it before a pair
   if (s.status == UcpStatus::kSolvable) {
     record_pattern(ev, s.x, s.y);
     fill_pair(rep, std::move(s.x), std::move(s.y), problem);
@@ -379,7 +379,7 @@ UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts) {
     rep.lps = e.lps;
     rep.solutions = e.solutions;
     rep.solution_modes = e.solution_modes;
-    if (e.lps == 0)
+    if (e.lps == 0 && e.complete)
       rep.reason = "too many modes for the enumeration budget";
     else
       rep.reason = std::to_string(e.solutions) + " of " + std::to_string(e.lps) + " modes have a solution" +

@@ -1,5 +1,6 @@
 // IntMatrix, the one fraction-free elimination: row echelon form with primitive rows, rank, kernel, make-primitive
-// and the unique solution, in Int128 with the restart in GMP integers on overflow.
+// and the unique solution (dense, and square with a sparse front end), in Int128 with the restart in GMP integers on
+// overflow.
 #include "exact/int_matrix.h"
 
 #include <gtest/gtest.h>
@@ -87,6 +88,45 @@ TEST(IntMatrix, SolveUniqueRankDeficientInconsistent) {
   EXPECT_EQ(M.solve(N, d), SolutionKind::kInconsistent);
   M = matrix<Int128>(2, 3, {1, 2, 3, 2, 4, 6});
   EXPECT_EQ(M.solve(N, d), SolutionKind::kRankDeficient);
+}
+
+// The sparse square solve: singleton equations fix u0, then u1; the core (u2, u3) goes to IntMatrix::solve. u = U / D
+// with D > 0 in every exact ring, equal to the dense solve's N / d; a singular core and an equation left without an
+// open unknown are rank deficient.
+template <class R>
+void expect_sparse_square_solve() {
+  const auto eq = [](std::initializer_list<std::pair<Index, long>> terms, long rhs) {
+    SparseEquation<R> e;
+    for (const auto& [j, a] : terms) e.terms.push_back({j, R(a)});
+    e.rhs = R(rhs);
+    return e;
+  };
+  // 2 u0 = 3, u0 + 3 u1 = 1, u2 + u3 = 5, u1 + u2 - u3 = 0: u = (3/2, -1/6, 31/12, 29/12).
+  std::vector<SparseEquation<R>> eqs{eq({{0, 2}}, 3), eq({{0, 1}, {1, 3}}, 1), eq({{2, 1}, {3, 1}}, 5),
+                                     eq({{1, 1}, {2, 1}, {3, -1}}, 0)};
+  std::vector<R> U;
+  R D;
+  ASSERT_EQ(solve_sparse_square(eqs, 4, U, D), SolutionKind::kUnique);
+  EXPECT_GT(ring::sign(D), 0);
+  const std::vector<Q> u{Q(3, 2), Q(-1, 6), Q(31, 12), Q(29, 12)};
+  for (Index j = 0; j < 4; ++j) EXPECT_EQ(ring::to_field<Q>(U[static_cast<size_t>(j)]) / ring::to_field<Q>(D), u[j]);
+  IntMatrix<R> M = matrix<R>(4, 5, {2, 0, 0, 0, 3, 1, 3, 0, 0, 1, 0, 0, 1, 1, 5, 0, 1, 1, -1, 0});
+  std::vector<R> N(4);
+  R d;
+  ASSERT_EQ(M.solve(N.data(), d), SolutionKind::kUnique);
+  for (Index j = 0; j < 4; ++j)
+    EXPECT_EQ(ring::to_field<Q>(N[static_cast<size_t>(j)]) / ring::to_field<Q>(d), u[j]) << "dense, u" << j;
+  // u2 + u3 = 5, 2 u2 + 2 u3 = 1: a singular core.
+  eqs[3] = eq({{2, 2}, {3, 2}}, 1);
+  EXPECT_EQ(solve_sparse_square(eqs, 4, U, D), SolutionKind::kRankDeficient);
+  // 2 u0 = 3, u0 = 1: the second equation keeps no open unknown and u1 none at all.
+  EXPECT_EQ(solve_sparse_square<R>({eq({{0, 2}}, 3), eq({{0, 1}}, 1)}, 2, U, D), SolutionKind::kRankDeficient);
+}
+
+TEST(IntMatrix, SparseSquareSolveAgreesWithTheDenseSolve) {
+  expect_sparse_square_solve<std::int64_t>();
+  expect_sparse_square_solve<Int128>();
+  expect_sparse_square_solve<Z>();
 }
 
 // Entries near 2^62: after the first elimination step they are near 2^67 and the second step's products need about

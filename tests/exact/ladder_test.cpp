@@ -131,7 +131,7 @@ TEST(Ladder, AdaptiveLpIsExactAndClimbsWhenNeeded) {
     int above_double = 0;
     for (int t = 0; t < 300; ++t) {
       const LpProblem<Q> p = generate(rng);
-      const LpResult<Q> r = solve_lp_ladder(p, adaptive_ladder());
+      const LpResult<Q> r = solve_lp_ladder(p, adaptive_ladder(), testing::with_duals());
       testing::expect_certified_like(p, r, solve_lp<Q>(p), t);
       above_double += r.decided_by == DecidedBy::kFloatBasisCheckedExactly && r.proposed_by.kind != Rung::Kind::kDouble;
     }
@@ -144,7 +144,7 @@ TEST(Ladder, AdaptiveLpIsExactAndClimbsWhenNeeded) {
   const std::vector<Rung> filtered{{Rung::Kind::kInterval, 0}, {Rung::Kind::kExact, 0}};
   for (int t = 0; t < 300; ++t) {
     const LpProblem<Q> p = testing::random_lp(rng);
-    testing::expect_certified_like(p, solve_lp_ladder(p, filtered), solve_lp<Q>(p), t);
+    testing::expect_certified_like(p, solve_lp_ladder(p, filtered, testing::with_duals()), solve_lp<Q>(p), t);
   }
 }
 

@@ -8,6 +8,13 @@
 
 namespace contactcert::exact::testing {
 
+/// Options that ask for the optimal duals, the certificate of an optimum these expectations verify.
+inline LpOptions with_duals() {
+  LpOptions o;
+  o.duals = true;
+  return o;
+}
+
 /// `r` has the reference status and (when optimal) optimal value on problem `p`, and every certificate of
 /// `r` verifies (case `t`).
 inline void expect_certified_like(const LpProblem<Q>& p, const LpResult<Q>& r, LpStatus status, const Q& value, int t) {

@@ -37,7 +37,8 @@ LpProblem<Q> lp(std::initializer_list<std::initializer_list<Q>> A, std::initiali
 TEST(Simplex, TinyOptimalByHand) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
   for (PivotRule rule : {PivotRule::kBland, PivotRule::kDantzigThenBland}) {
-    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 100, .rule = rule, .deadline = {}});
+    const LpResult<Q> r =
+        solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 100, .rule = rule, .deadline = {}, .duals = true});
     ASSERT_EQ(r.status, LpStatus::kOptimal);
     EXPECT_EQ(r.value, q("-14/5"));
     EXPECT_EQ(r.x(0), q("8/5"));
@@ -94,14 +95,15 @@ TEST(Simplex, BealeCyclingExampleTerminates) {
       lp({{q("1/4"), -60, q("-1/25"), 9, 1, 0, 0}, {q("1/2"), -90, q("-1/50"), 3, 0, 1, 0}, {0, 0, 1, 0, 0, 0, 1}},
          {0, 0, 1}, {q("-3/4"), 150, q("-1/50"), 6, 0, 0, 0});
   for (PivotRule rule : {PivotRule::kBland, PivotRule::kDantzigThenBland}) {
-    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}});
+    const LpResult<Q> r =
+        solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}, .duals = true});
     ASSERT_EQ(r.status, LpStatus::kOptimal);
     EXPECT_EQ(r.value, q("-1/20"));
     EXPECT_EQ(r.x(0), q("1/25"));
     EXPECT_EQ(r.x(2), 1);
     EXPECT_TRUE(verify_optimal(p, r.x, r.duals));
-    const LpResult<double> f =
-        solve_lp<double>(to_double(p), {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}});
+    const LpResult<double> f = solve_lp<double>(
+        to_double(p), {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}, .duals = true});
     ASSERT_EQ(f.status, LpStatus::kOptimal);
     EXPECT_NEAR(f.value, -0.05, 1e-12);
   }
@@ -109,7 +111,8 @@ TEST(Simplex, BealeCyclingExampleTerminates) {
   const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{4, 5, 6},
                                            .max_pivots = 10000,
                                            .rule = PivotRule::kDantzigThenBland,
-                                           .deadline = {}});
+                                           .deadline = {},
+                                           .duals = true});
   EXPECT_EQ(warm.value, q("-1/20"));
 }
 
@@ -117,7 +120,7 @@ TEST(Simplex, FreeVariables) {
   // min x1 with x1 free, x1 + x2 = 3, x2 + s = 5: x1 = -2.
   LpProblem<Q> p = lp({{1, 1, 0}, {0, 1, 1}}, {3, 5}, {1, 0, 0});
   p.is_free = {true, false, false};
-  const LpResult<Q> r = solve_lp<Q>(p);
+  const LpResult<Q> r = solve_lp<Q>(p, testing::with_duals());
   ASSERT_EQ(r.status, LpStatus::kOptimal);
   EXPECT_EQ(r.value, -2);
   EXPECT_EQ(r.x(0), -2);
@@ -145,7 +148,7 @@ TEST(Simplex, FreeVariables) {
 
 TEST(Simplex, RedundantRowsGiveABasisOfRankSize) {
   const LpProblem<Q> p = lp({{1, 1, 1}, {2, 2, 2}, {1, -1, 0}}, {2, 4, 0}, {1, 2, 3});
-  const LpResult<Q> r = solve_lp<Q>(p);
+  const LpResult<Q> r = solve_lp<Q>(p, testing::with_duals());
   ASSERT_EQ(r.status, LpStatus::kOptimal);
   EXPECT_EQ(r.basis.size(), 2u);
   EXPECT_EQ(r.value, 3);
@@ -155,11 +158,12 @@ TEST(Simplex, RedundantRowsGiveABasisOfRankSize) {
 TEST(Simplex, WarmStartFromTheOptimalBasisNeedsNoPivot) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
   const LpResult<Q> cold = solve_lp<Q>(p);
-  const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = cold.basis, .deadline = {}});
+  const LpResult<Q> warm = solve_lp<Q>(p, {.warm_basis = cold.basis, .deadline = {}, .duals = true});
   EXPECT_EQ(warm.pivots, 0);
   EXPECT_EQ(warm.value, cold.value);
   // An infeasible warm basis falls back to phase 1 and still finds the optimum.
-  const LpResult<Q> bad = solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{0, 3}, .deadline = {}});
+  const LpResult<Q> bad =
+      solve_lp<Q>(p, {.warm_basis = std::vector<Eigen::Index>{0, 3}, .deadline = {}, .duals = true});
   EXPECT_EQ(bad.value, cold.value);
   // The tableau gives access to pivoting.
   std::optional<SimplexTableau<Q>> tab = SimplexTableau<Q>::from_basis(p.A, p.b, {2, 3});
@@ -174,7 +178,7 @@ TEST(Simplex, WarmStartFromTheOptimalBasisNeedsNoPivot) {
 
 TEST(Simplex, PivotBudgetThrows) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
-  EXPECT_THROW(solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 0, .deadline = {}}), BudgetExceeded);
+  EXPECT_THROW(solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 0, .deadline = {}, .duals = true}), BudgetExceeded);
 }
 
 // The pivot limit is a status of the warm-started phase 2 (the verified LP asks it whether a float basis is
@@ -183,14 +187,16 @@ TEST(Simplex, PivotLimitIsAStatus) {
   const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
   std::optional<SimplexTableau<Q>> slack = SimplexTableau<Q>::from_basis(p.A, p.b, {2, 3});
   ASSERT_TRUE(slack.has_value());
-  const LpResult<Q> r = solve_lp_from_tableau(p, *slack, {.warm_basis = {}, .max_pivots = 0, .deadline = {}});
+  const LpResult<Q> r =
+      solve_lp_from_tableau(p, *slack, {.warm_basis = {}, .max_pivots = 0, .deadline = {}, .duals = true});
   EXPECT_EQ(r.status, LpStatus::kPivotLimit);
   EXPECT_EQ(r.pivots, 0);
   EXPECT_THROW(check_pivot_budget(r.status, {}), BudgetExceeded);
   // At the optimal basis (x1 = 8/5, x2 = 6/5) no pivot is needed.
   std::optional<SimplexTableau<Q>> opt = SimplexTableau<Q>::from_basis(p.A, p.b, {0, 1});
   ASSERT_TRUE(opt.has_value());
-  const LpResult<Q> o = solve_lp_from_tableau(p, *opt, {.warm_basis = {}, .max_pivots = 0, .deadline = {}});
+  const LpResult<Q> o =
+      solve_lp_from_tableau(p, *opt, {.warm_basis = {}, .max_pivots = 0, .deadline = {}, .duals = true});
   ASSERT_EQ(o.status, LpStatus::kOptimal);
   EXPECT_EQ(o.value, q("-14/5"));
 }
@@ -217,7 +223,8 @@ TEST(Simplex, DecideAtBasisOptimalUnboundedOrPivot) {
   EXPECT_EQ(ru->unbounded_column, 1);
   EXPECT_TRUE(verify_ray(u, ru->ray));
   // The same as phase 2 with no pivot allowed.
-  const LpResult<Q> zero = solve_lp_from_tableau(u, tu, {.warm_basis = {}, .max_pivots = 0, .deadline = {}});
+  const LpResult<Q> zero =
+      solve_lp_from_tableau(u, tu, {.warm_basis = {}, .max_pivots = 0, .deadline = {}, .duals = true});
   EXPECT_EQ(zero.status, LpStatus::kUnbounded);
   EXPECT_EQ(zero.ray, ru->ray);
 
@@ -228,13 +235,29 @@ TEST(Simplex, DecideAtBasisOptimalUnboundedOrPivot) {
   EXPECT_FALSE(decide_at_basis(p, slack).has_value());
   const SimplexTableau<Q> opt = priced_tableau(p, {0, 1});
   EXPECT_TRUE(is_optimal_basis(opt, p.is_free));
-  const std::optional<LpResult<Q>> ro = decide_at_basis(p, opt);
+  const std::optional<LpResult<Q>> ro = decide_at_basis(p, opt, testing::with_duals());
   ASSERT_TRUE(ro.has_value());
   EXPECT_EQ(ro->status, LpStatus::kOptimal);
   EXPECT_EQ(ro->value, q("-14/5"));
   EXPECT_TRUE(verify_optimal(p, ro->x, ro->duals));
   // {x2, s1} has x1 = 0, x2 = 6, s1 = 4 - 12 < 0: not primal feasible.
   EXPECT_FALSE(feasible_tableau(p, {1, 2}).has_value());
+}
+
+// The duals are computed on request only (LpOptions::duals), in every number type and on the verified path.
+TEST(Simplex, DualsOnlyOnRequest) {
+  const LpProblem<Q> p = lp({{1, 2, 1, 0}, {3, 1, 0, 1}}, {4, 6}, {-1, -1, 0, 0});
+  const LpResult<Q> none = solve_lp<Q>(p);
+  ASSERT_EQ(none.status, LpStatus::kOptimal);
+  EXPECT_EQ(none.duals.size(), 0);
+  EXPECT_EQ(solve_lp<double>(to_double(p)).duals.size(), 0);
+  EXPECT_EQ(solve_lp_verified(p).duals.size(), 0);
+  const LpResult<Q> r = solve_lp<Q>(p, testing::with_duals());
+  ASSERT_EQ(r.duals.size(), 2);
+  EXPECT_EQ(r.duals(0), q("-2/5"));
+  EXPECT_EQ(r.duals(1), q("-1/5"));
+  EXPECT_EQ(solve_lp_verified(p, testing::with_duals()).duals, r.duals);
+  EXPECT_EQ(solve_lp<double>(to_double(p), testing::with_duals()).duals.size(), 2);
 }
 
 // A deadline that has passed stops the simplex before its first pivot with the status kTimeLimit (no
@@ -263,7 +286,8 @@ TEST(Simplex, RandomLpsAgreeWithCddlibExactly) {
     const LpProblem<Q> p = testing::random_lp(rng);
     const reference::CddLpResult ref = reference::cdd_solve_lp(p);
     const PivotRule rule = t % 2 ? PivotRule::kBland : PivotRule::kDantzigThenBland;
-    const LpResult<Q> r = solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}});
+    const LpResult<Q> r =
+        solve_lp<Q>(p, {.warm_basis = {}, .max_pivots = 10000, .rule = rule, .deadline = {}, .duals = true});
     testing::expect_certified_like(p, r, ref.status, ref.value, t);
     ++counts[static_cast<int>(r.status)];
   }

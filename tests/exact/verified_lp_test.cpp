@@ -21,7 +21,7 @@ TEST(VerifiedLp, EqualsExactOnRandomLps) {
   for (int t = 0; t < 1500; ++t) {
     const LpProblem<Q> p = testing::random_lp(rng);
     const LpResult<Q> e = solve_lp<Q>(p);
-    const LpResult<Q> v = solve_lp_verified(p);
+    const LpResult<Q> v = solve_lp_verified(p, testing::with_duals());
     testing::expect_certified_like(p, v, e, t);
     if (v.decided_by == DecidedBy::kFloatBasisCheckedExactly) {
       ++checked;
@@ -66,7 +66,7 @@ TEST(VerifiedLp, FloatPicksTheWrongBasisAndExactContinues) {
   const LpResult<double> f = solve_lp<double>(to_double(p));
   ASSERT_EQ(f.status, LpStatus::kOptimal);
   EXPECT_EQ(f.x(0), 1.0);  // the float answer is wrong
-  const LpResult<Q> v = solve_lp_verified(p);
+  const LpResult<Q> v = solve_lp_verified(p, testing::with_duals());
   ASSERT_EQ(v.status, LpStatus::kOptimal);
   EXPECT_EQ(v.value, Q(1 - eps));
   EXPECT_EQ(v.x(1), 1);
@@ -106,7 +106,7 @@ TEST(VerifiedLp, IllConditionedLpsEqualExact) {
     for (Eigen::Index i = 0; i < p.b.size(); ++i)
       if (pct(rng) < 30) p.b(i) += eps * small(rng);
     const LpResult<Q> e = solve_lp<Q>(p);
-    const LpResult<Q> v = solve_lp_verified(p);
+    const LpResult<Q> v = solve_lp_verified(p, testing::with_duals());
     testing::expect_certified_like(p, v, e, t);
     const reference::CddLpResult ref = reference::cdd_solve_lp(p);
     ASSERT_EQ(v.status, ref.status) << "case " << t;
@@ -131,7 +131,7 @@ TEST(VerifiedLp, RoundedCertificateAcceptsOnlyAnExactOptimum) {
   const std::optional<IntegerLp> ilp = integer_lp(p);
   ASSERT_TRUE(ilp);
   EXPECT_EQ(ilp->row_scale, (std::vector<std::int64_t>{2, 3}));
-  const LpResult<double> f = solve_lp<double>(ilp->to_double(p.is_free));
+  const LpResult<double> f = solve_lp<double>(ilp->to_double(p.is_free), testing::with_duals());
   ASSERT_EQ(f.status, LpStatus::kOptimal);
   const std::optional<OptimalCertificate> cert = round_and_check_optimal(p, *ilp, f.basis, f.x, f.duals);
   ASSERT_TRUE(cert);

@@ -7,6 +7,7 @@
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/recovery.h"
 #include "solvers/ucp/search.h"
+#include "solvers/ucp/solve.h"
 #include "tests/solvers/ucp/random_problems.h"
 
 namespace contactcert::solvers::ucp {
@@ -208,6 +209,55 @@ TEST(UcpCompleteSearch, NodeBudgetGivesUnknown) {
   so.max_nodes = 2;
   so.bilinear_first = false;
   EXPECT_EQ(complete_search(p.ucp(), so, rng).status, UcpStatus::kUnknown);
+}
+
+// A deadline that has passed stops the run inside its first LP, with a status and no exception, on every path:
+// the face LP (kTimeLimit), the bilinear algorithm's Step 0, the complete search (`unknown`, no pair) and the
+// enumeration (no mode tested); solve_ucp then reports the time limit with what it covered (the CLI's exit 3).
+TEST(UcpTimeLimit, APassedDeadlineStopsInsideTheFirstLp) {
+  const UcpProblem p = load_ucp_problem(scene(4));
+  const exact::Deadline passed = exact::Deadline::after(1e-9);
+  while (!passed.expired()) {
+  }
+  LpCounters count;
+  const Vec<double> zero = Vec<double>::Zero(p.ucp.n());
+  EXPECT_EQ(minimize_on_face(make_face(convert<double>(p.ucp).X, {}), zero, Arith::kFloat, count, passed).status,
+            FaceLpStatus::kTimeLimit);
+  for (Arith a : {Arith::kExact, Arith::kVerified, Arith::kAdaptive}) {
+    const std::string what = exact::arith_name(a);
+    count = {};
+    EXPECT_EQ(minimize_on_face(make_face(p.ucp.X, {}), Vec<Q>(Vec<Q>::Zero(p.ucp.n())), a, count, passed).status,
+              FaceLpStatus::kTimeLimit)
+        << what;
+    EXPECT_EQ(count.lps, 1) << what;
+    BilinearOptions o;
+    o.arith = a;
+    o.deadline = passed;
+    std::mt19937_64 rng(1);
+    const BilinearResult<Q> b = bilinear(make_face(p.ucp.X, {}), make_face(p.ucp.Y, {}), o, rng);
+    EXPECT_EQ(b.status, BilinearStatus::kTimeLimit) << what;
+    EXPECT_EQ(b.counters.lps, 1) << what;
+    SearchOptions so;
+    so.heuristic = o;
+    so.deadline = passed;
+    const SearchResult<Q> s = complete_search(p.ucp, so, rng);
+    EXPECT_EQ(s.status, UcpStatus::kUnknown) << what;
+    EXPECT_FALSE(s.paired) << what;
+    EXPECT_EQ(s.counters.lps, 1) << what;
+    const EnumerateResult e = enumerate_modes(p, a, 1000, passed);
+    EXPECT_EQ(e.status, UcpStatus::kUnknown) << what;
+    EXPECT_FALSE(e.complete) << what;
+    EXPECT_EQ(e.lps, 0) << what;
+  }
+  for (Arith a : {Arith::kFloat, Arith::kExact, Arith::kVerified, Arith::kAdaptive}) {
+    UcpOptions opts;
+    opts.arith = a;
+    opts.time_limit = 1e-9;
+    const UcpReport r = solve_ucp(p, opts);
+    EXPECT_EQ(r.status, UcpStatus::kUnknown) << exact::arith_name(a);
+    EXPECT_NE(r.reason.find("time limit"), std::string::npos) << r.reason;
+    EXPECT_FALSE(r.best_xTy.has_value()) << exact::arith_name(a);
+  }
 }
 
 }  // namespace
