@@ -98,8 +98,9 @@ std::vector<Instance> parallel(double d, std::uint64_t seed) {
   const Q eps = pow10(-k);
   // Bottom edges with inward normals (0, 1) and (-eps, 1): the angle between them is atan(eps).
   const std::vector<Point2> V = {{-2, 0}, {0, 0}, {2, 2 * eps}, {2, 1}, {-2, 1}};
-  const auto scene =
-      polygon_scene(V, {{0, random_q(rng, 1, 3, 4) / 4}, {1, random_q(rng, 1, 3, 4) / 4}}, random_q(rng, 1, 4, 5) / 5);
+  // mu is drawn before the fixels, as gcc evaluated polygon_scene's arguments (right to left).
+  const Q mu = random_q(rng, 1, 4, 5) / 5;
+  const auto scene = polygon_scene(V, {{0, random_q(rng, 1, 3, 4) / 4}, {1, random_q(rng, 1, 3, 4) / 4}}, mu);
   const Vec<Q> g = wrench_at_rest(scene, friction_forces(scene, 1, rng));
   return scene_instances(Family::kParallel, d, seed, "angle " + sci(eps), scene, g, random_mode(2, "nlr", rng));
 }
@@ -131,9 +132,10 @@ std::vector<Instance> lever(double d, std::uint64_t seed) {
   const Q L = pow10(k), h = pow10(-k);
   // A 2L x h plate touched near both ends of its bottom edge and on its left side: arms from h to L.
   const std::vector<Point2> V = {{-L, 0}, {L, 0}, {L, h}, {-L, h}};
+  // mu is drawn before the fixels, as gcc evaluated polygon_scene's arguments (right to left).
+  const Q mu = random_q(rng, 1, 4, 5) / 5;
   const auto scene = polygon_scene(
-      V, {{0, random_q(rng, 1, 4, 8) / 32}, {0, 1 - random_q(rng, 1, 4, 8) / 32}, {3, random_q(rng, 1, 3, 4) / 4}},
-      random_q(rng, 1, 4, 5) / 5);
+      V, {{0, random_q(rng, 1, 4, 8) / 32}, {0, 1 - random_q(rng, 1, 4, 8) / 32}, {3, random_q(rng, 1, 3, 4) / 4}}, mu);
   const Vec<Q> g = wrench_at_rest(scene, friction_forces(scene, 0, rng));
   return scene_instances(Family::kLever, d, seed, "arms 1e-" + std::to_string(k) + "..1e" + std::to_string(k), scene, g,
                          random_mode(3, "nlr", rng));

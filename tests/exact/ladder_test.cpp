@@ -34,7 +34,11 @@ LpProblem<Q> near_degenerate_lp(std::mt19937_64& rng) {
   for (int i = 0; i < m; ++i) d(i) = small(rng);
   p.b = p.A * x0 + eps * d;
   p.c = Vec<Q>(n);
-  for (int j = 0; j < n; ++j) p.c(j) = Q(small(rng)) + Q(small(rng)) * eps;
+  for (int j = 0; j < n; ++j) {
+    // The perturbation is drawn first, as gcc evaluated the two operands of + (right to left).
+    const Q perturbation = Q(small(rng)) * eps;
+    p.c(j) = Q(small(rng)) + perturbation;
+  }
   return p;
 }
 

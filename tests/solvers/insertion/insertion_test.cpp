@@ -15,6 +15,7 @@ namespace {
 using exact::Q;
 using exact::Vec;
 
+using testing::random_wrench;
 using testing::wrench;
 
 geometry::PlanarScene load(const char* name, const char* mu) { return testing::scene_with_mu(name, mu); }
@@ -49,7 +50,7 @@ TEST(Insertion, BothRoutesGiveTheSameGoalSet) {
   std::mt19937_64 rng(3);
   std::uniform_int_distribution<int> d(-5, 5);
   for (int t = 0; t < 200; ++t) {
-    const Vec<Q> g = wrench(d(rng), d(rng), d(rng));
+    const Vec<Q> g = random_wrench(d, rng);
     EXPECT_EQ(a.in_goal(g), b.in_goal(g)) << g.transpose();
   }
   EXPECT_EQ(a.redundant, b.redundant);

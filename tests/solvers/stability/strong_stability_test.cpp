@@ -24,6 +24,7 @@ using exact::Q;
 using exact::Vec;
 using exact::Z;
 
+using testing::random_wrench;
 using testing::wrench;
 
 geometry::PlanarScene section7(const char* mu) { return testing::scene_with_mu("bt2002_section7_disk.json", mu); }
@@ -132,7 +133,7 @@ TEST(StabilityOracle, FloatFirstVerdictEqualsTheExactVerdictIncludingConeFaces) 
     for (const auto& cell : region.cells) wrenches.push_back(cell.point);
     std::mt19937_64 rng(17);
     std::uniform_int_distribution<int> d(-5, 5);
-    for (int t = 0; t < 100; ++t) wrenches.push_back(wrench(d(rng), d(rng), d(rng)));
+    for (int t = 0; t < 100; ++t) wrenches.push_back(random_wrench(d, rng));
     long lps = 0, from_float = 0;
     for (const Vec<Q>& g : wrenches) {
       const auto r = oracle.verdict(g);
@@ -341,7 +342,7 @@ TEST(StrongStability, MembershipLpsAgreeWithTheWrenchConeAlgorithm) {
   const auto modes = moving_modes(2);
   for (const auto& m : modes) cones.push_back(wrench_cone_face<Q>(scene, model, m, Route::kPaper));
   for (int t = 0; t < 60; ++t) {
-    const Vec<Q> g = wrench(d(rng), d(rng), d(rng));
+    const Vec<Q> g = random_wrench(d, rng);
     for (std::size_t i = 0; i < modes.size(); ++i) {
       const auto ms = motion_system(motion_model<Q>(scene), modes[i]);
       const bool lp =
@@ -443,7 +444,7 @@ TEST(StableRegion, SixtyRandomWrenchesAgreeWithTheirCellLabel) {
   std::mt19937_64 rng(5);
   std::uniform_int_distribution<int> d(-4, 4);
   for (int t = 0; t < 60; ++t) {
-    const Vec<Q> g = wrench(d(rng), d(rng), d(rng));
+    const Vec<Q> g = random_wrench(d, rng);
     EXPECT_EQ(region.label(g), strong_stability<Q>(scene, g).verdict) << g.transpose();
   }
 }
@@ -494,7 +495,7 @@ TEST(Margin, BallOfTheMarginStaysStronglyStable) {
   std::mt19937_64 rng(9);
   std::uniform_int_distribution<int> d(-20, 20);
   for (int t = 0; t < 200; ++t) {
-    Vec<Q> delta = wrench(d(rng), d(rng), d(rng));
+    Vec<Q> delta = random_wrench(d, rng);
     const Q n2 = delta.dot(delta);
     if (n2 == 0) continue;
     // Scale delta to squared length just below the margin: |delta|^2 = margin * 99/100 (a rational factor

@@ -64,7 +64,11 @@ ModeString random_mode(std::mt19937_64& rng, const std::vector<Interaction>& let
 
 Vec<Q> random_wrench(std::mt19937_64& rng) {
   Vec<Q> g(3);
-  for (Eigen::Index d = 0; d < 3; ++d) g(d) = Q(static_cast<long>(rng() % 7) - 3, static_cast<long>(1 + rng() % 3));
+  for (Eigen::Index d = 0; d < 3; ++d) {
+    // The denominator is drawn first, as gcc evaluated the two constructor arguments (right to left).
+    const auto den = static_cast<long>(1 + rng() % 3);
+    g(d) = Q(static_cast<long>(rng() % 7) - 3, den);
+  }
   return g;
 }
 

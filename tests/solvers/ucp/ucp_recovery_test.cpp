@@ -413,7 +413,9 @@ TEST(UcpRecovery, RandomCorruptionsOfRandomSolutionsReportTheSameViolations) {
       PhysicalSolution bad = s;
       exact::RationalVector* parts[] = {&bad.c_n, &bad.c_t, &bad.v_n, &bad.v_t, &bad.q_dot, &bad.theta_dot, &bad.tau};
       exact::RationalVector& v = *parts[rng() % 7];
-      Q delta(static_cast<long>(rng() % 7) - 3, static_cast<unsigned long>(1 + rng() % 50));
+      // The denominator is drawn first, as gcc evaluated the two constructor arguments (right to left).
+      const auto den = static_cast<unsigned long>(1 + rng() % 50);
+      Q delta(static_cast<long>(rng() % 7) - 3, den);
       delta.canonicalize();
       const auto at = static_cast<Index>(rng() % static_cast<std::uint64_t>(v.size()));
       change(v, at, v(at) + delta);
