@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/memory.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/solve.h"
 
@@ -202,6 +203,8 @@ void recovery_table(int repeats) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  contactcert::cli::keep_heap_until_exit();
+  contactcert::cli::use_pooled_gmp_memory();
   if (argc > 1 && std::strcmp(argv[1], "--recovery") == 0) {
     recovery_table(argc > 2 ? std::atoi(argv[2]) : 7);
     return 0;

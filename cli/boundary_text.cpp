@@ -11,14 +11,8 @@ namespace {
 
 using exact::Q;
 
-std::string point_text(const geometry::Point2& p) {
-  exact::Vec<Q> v(2);
-  v << p.x, p.y;
-  return tuple_text(v);
-}
-
 /// The angle of direction u in [0, 360) degrees.
-double degrees(const exact::Vec<Q>& u) {
+double degrees_0_360(const exact::Vec<Q>& u) {
   const double a = std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI;
   return a < 0 ? a + 360 : a;
 }
@@ -54,9 +48,9 @@ std::string edge_piece_text(const geometry::PlanarScene& scene, std::size_t edge
 std::string arc_piece_text(const exact::Vec<Q>& from, const exact::Vec<Q>& to, bool from_closed, bool to_closed) {
   const bool same = exact::primitive(from) == exact::primitive(to);
   if (same && !from_closed && !to_closed) return "the whole circle";
-  const double a = degrees(from);
+  const double a = degrees_0_360(from);
   if (same) return "the single direction " + direction_text(from) + " (" + deg(a) + ")";
-  double b = degrees(to);
+  double b = degrees_0_360(to);
   if (b <= a) b += 360;
   return "arc of " + deg(b - a) + " counter-clockwise from " + deg(a) + " (direction " + direction_text(from) +
          (from_closed ? ", included" : ", excluded") + ") to " + deg(b >= 360 ? b - 360 : b) + " (direction " +

@@ -58,8 +58,6 @@ const char* interaction_name(solvers::Interaction l) {
   return "";
 }
 
-std::string point_text(const geometry::Point2& p) { return "(" + to_string(p.x) + ", " + to_string(p.y) + ")"; }
-
 std::string row_text(const Mat<Q>& M, Eigen::Index r) {
   std::string s = "(";
   for (Eigen::Index c = 0; c < M.cols(); ++c) s += (c ? ", " : "") + to_string(M(r, c));

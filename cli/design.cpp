@@ -143,9 +143,6 @@ std::string duration_text(double s) {
 }
 
 json point_json(const geometry::Point2& p) { return json::array({exact::to_string(p.x), exact::to_string(p.y)}); }
-std::string point_text(const geometry::Point2& p) {
-  return "(" + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")";
-}
 
 json statistics_json(const solvers::DesignStatistics& s) {
   json j;

@@ -7,16 +7,16 @@
 namespace contactcert::cli {
 namespace {
 
-struct Box {
+struct Bounds {
   double x0, y0, x1, y1;
 };
 
-Box bounds(const geometry::Shape& shape) {
+Bounds bounds(const geometry::Shape& shape) {
   if (const auto* d = std::get_if<geometry::DiskShape>(&shape)) {
     const double cx = d->center.x.get_d(), cy = d->center.y.get_d(), r = d->radius.get_d();
     return {cx - r, cy - r, cx + r, cy + r};
   }
-  Box b{1e300, 1e300, -1e300, -1e300};
+  Bounds b{1e300, 1e300, -1e300, -1e300};
   for (const auto& v : std::get<geometry::PolygonShape>(shape).vertices) {
     b.x0 = std::min(b.x0, v.x.get_d()), b.x1 = std::max(b.x1, v.x.get_d());
     b.y0 = std::min(b.y0, v.y.get_d()), b.y1 = std::max(b.y1, v.y.get_d());
@@ -49,7 +49,7 @@ std::string design_svg(const solvers::DesignProblem& problem, const std::vector<
   // Wide enough for the title (sans-serif 14 px: at most ~7.8 px a character) and the legend.
   const double width = std::max({columns * kPanel, 16 + 7.8 * static_cast<double>(title.size()), 430.0});
   const double legend_top = kTop + rows * (kPanel + kCaption);
-  const Box b = bounds(problem.workpiece.shape);
+  const Bounds b = bounds(problem.workpiece.shape);
   const double extent = std::max(b.x1 - b.x0, b.y1 - b.y0);
   const double scale = (kPanel - 60) / (extent > 0 ? extent : 1);
   const double fixel_r = 7;

@@ -62,6 +62,10 @@ std::string tuple_text(const exact::Vec<Q>& v) {
   return s + ")";
 }
 
+std::string point_text(const geometry::Point2& p) {
+  return "(" + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")";
+}
+
 std::string tuple_text(const exact::Vec<double>& v) {
   std::string s = "(";
   for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v(i));
@@ -86,9 +90,9 @@ exact::Vec<Q> parse_number_list(const std::string& text, const std::string& opti
     }
   }
   if (static_cast<long>(values.size()) != expected_size || (!text.empty() && text.back() == ','))
-    throw exact::InputError("command line", option,
-                            "expected " + std::to_string(expected_size) + " comma-separated numbers, found \"" +
-                                text + "\"");
+    throw exact::InputError(
+        "command line", option,
+        "expected " + std::to_string(expected_size) + " comma-separated numbers, found \"" + text + "\"");
   exact::Vec<Q> v(expected_size);
   for (long i = 0; i < expected_size; ++i) v(i) = values[static_cast<size_t>(i)];
   return v;

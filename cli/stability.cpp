@@ -70,7 +70,7 @@ json witness_json(const solvers::MotionWitness<T>& w) {
   return j;
 }
 
-double degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
+double signed_degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
 
 }  // namespace
 
@@ -142,8 +142,8 @@ json finger_json(const solvers::FingerPushes<Q>& pushes) {
                     {"to_direction", primitive_json(p.to)},
                     {"from_closed", p.from_closed},
                     {"to_closed", p.to_closed},
-                    {"from_degrees_approx", degrees(p.from)},
-                    {"to_degrees_approx", degrees(p.to)},
+                    {"from_degrees_approx", signed_degrees(p.from)},
+                    {"to_degrees_approx", signed_degrees(p.to)},
                     {"label", solvers::verdict_name(p.label)}});
   json j;
   j["finger"] = {{"edges", edges}, {"arcs", arcs}};
