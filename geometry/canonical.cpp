@@ -1,7 +1,6 @@
 #include "geometry/canonical.h"
 
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "exact/fraction_free.h"
