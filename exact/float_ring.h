@@ -83,8 +83,9 @@ void dot(const F* a, const F* b, Index k, F& out) {
   out = F(0);
   for (Index i = 0; i < k; ++i) out += a[i] * b[i];
 }
+/// out does not overlap the inputs (__restrict: ap and am stay in registers across the loop).
 template <FloatNumber F>
-void combine(const F* rp, const F& ap, const F* rm, const F& am, F* out, Index k) {
+void combine(const F* rp, const F& ap, const F* rm, const F& am, F* __restrict out, Index k) {
   for (Index i = 0; i < k; ++i) out[i] = ap * rm[i] - am * rp[i];
 }
 /// Zeroes the entries F skips as zero (rounding noise of a cancellation below the tolerance, the interval
