@@ -1,10 +1,10 @@
 // Fraction-free row arithmetic over the ring an exact or float algorithm runs in:
 //   std::int64_t  exact, fixed width; every operation checks for overflow and throws RingOverflow,
 //   Z             exact, unbounded (GMP),
-//   double        the float path, with the tolerance sign test of NumberTraits<double>.
+//   a float F     F itself (double, MPFR, intervals) with F's sign test: exact/float_ring.h.
 // Exact callers run in std::int64_t first and restart in Z on overflow (with_exact_ring), so the result
 // is exact either way and fixed width is only a speed-up. Rows of a field matrix become primitive
-// integer rows (Q) or unit max-norm rows (double): both are positive multiples of the field row.
+// integer rows (Q) or unit max-norm rows (a float): both are positive multiples of the field row.
 #pragma once
 
 #include <algorithm>
@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "exact/float_ring.h"  // the same operations for MPFR floats and intervals
+#include "exact/float_ring.h"  // the same operations for every float number type
 #include "exact/number.h"
 
 namespace contactcert::exact {
@@ -79,23 +79,19 @@ inline std::int64_t sub(std::int64_t a, std::int64_t b) {
 /// out = a * b.
 inline void mul(std::int64_t a, std::int64_t b, std::int64_t& out) { out = mul(a, b); }
 inline void mul(const Z& a, const Z& b, Z& out) { mpz_mul(out.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t()); }
-inline void mul(double a, double b, double& out) { out = a * b; }
 
 /// An integer-valued element of the field as a ring element (Q: precondition x is an integer;
-/// double: as is).
+/// a float: as is).
 inline void from_integer(const Z& x, std::int64_t& out);
 inline void from_integer(const Q& x, std::int64_t& out) { from_integer(x.get_num(), out); }
 inline void from_integer(const Q& x, Z& out) { out = x.get_num(); }
-inline void from_integer(double x, double& out) { out = x; }
 
 inline int sign(std::int64_t x) { return (x > 0) - (x < 0); }
 inline int sign(const Z& x) { return sgn(x); }
-inline int sign(double x) { return exact::sign(x); }
 
-/// Pivot choice: the first non-zero entry in the exact rings, the largest in magnitude in double.
+/// Pivot choice: the first non-zero entry in the exact rings (a float's own rule: exact/float_ring.h).
 inline bool better_pivot(std::int64_t, std::int64_t) { return false; }
 inline bool better_pivot(const Z&, const Z&) { return false; }
-inline bool better_pivot(double candidate, double best) { return NumberTraits<double>::better_pivot(candidate, best); }
 
 /// out = a . b over k entries.
 inline void dot(const std::int64_t* a, const std::int64_t* b, Index k, std::int64_t& out) {
@@ -105,10 +101,6 @@ inline void dot(const std::int64_t* a, const std::int64_t* b, Index k, std::int6
 inline void dot(const Z* a, const Z* b, Index k, Z& out) {
   out = 0;
   for (Index i = 0; i < k; ++i) mpz_addmul(out.get_mpz_t(), a[i].get_mpz_t(), b[i].get_mpz_t());
-}
-inline void dot(const double* a, const double* b, Index k, double& out) {
-  out = 0;
-  for (Index i = 0; i < k; ++i) out += a[i] * b[i];
 }
 
 /// out = ap * rm - am * rp: with a . rp = ap and a . rm = am, a . out = 0 (one elimination step);
@@ -123,11 +115,8 @@ inline void combine(const Z* rp, const Z& ap, const Z* rm, const Z& am, Z* out, 
     mpz_submul(out[i].get_mpz_t(), am.get_mpz_t(), rp[i].get_mpz_t());
   }
 }
-inline void combine(const double* rp, double ap, const double* rm, double am, double* out, Index k) {
-  for (Index i = 0; i < k; ++i) out[i] = ap * rm[i] - am * rp[i];
-}
 
-/// Divides v by the positive gcd of its entries (primitive vector) / by its max-norm (double).
+/// Divides v by the positive gcd of its entries (primitive vector; a float: by its max-norm).
 inline void normalize(std::int64_t* v, Index k) {
   std::int64_t g = 0;
   for (Index i = 0; i < k && g != 1; ++i) g = std::gcd(g, v[i]);
@@ -139,16 +128,6 @@ inline void normalize(Z* v, Index k) {
   for (Index i = 0; i < k && g != 1; ++i) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), v[i].get_mpz_t());
   if (g > 1)
     for (Index i = 0; i < k; ++i) mpz_divexact(v[i].get_mpz_t(), v[i].get_mpz_t(), g.get_mpz_t());
-}
-inline void normalize(double* v, Index k) {
-  // Entries below the sign tolerance are rounding noise of a cancellation: zero them before scaling
-  // (scaling would blow them up).
-  for (Index i = 0; i < k; ++i)
-    if (exact::is_zero(v[i])) v[i] = 0;
-  double m = 0;
-  for (Index i = 0; i < k; ++i) m = std::max(m, std::abs(v[i]));
-  if (m > 0)
-    for (Index i = 0; i < k; ++i) v[i] /= m;
 }
 
 /// Int128: true if x fits in 64 bits (two instructions, against four 128-bit comparisons).
@@ -180,9 +159,6 @@ inline int sign(Int128 x) { return (x > 0) - (x < 0); }
 inline Z mul(const Z& a, const Z& b) { return a * b; }
 inline Z add(const Z& a, const Z& b) { return a + b; }
 inline Z sub(const Z& a, const Z& b) { return a - b; }
-inline double mul(double a, double b) { return a * b; }
-inline double add(double a, double b) { return a + b; }
-inline double sub(double a, double b) { return a - b; }
 
 /// The non-negative gcd, and a / b for b dividing a (exact rings).
 inline std::int64_t gcd(std::int64_t a, std::int64_t b) { return std::gcd(a, b); }
@@ -286,9 +262,8 @@ inline void from_integer(const Z& x, Z& out) { out = x; }
 inline void from_integer(long x, std::int64_t& out) { out = checked(x); }
 inline void from_integer(long x, Int128& out) { out = x; }
 inline void from_integer(long x, Z& out) { out = x; }
-inline void from_integer(long x, double& out) { out = static_cast<double>(x); }
 
-/// A rational x = num / den (den > 0, lowest terms) in an exact ring; in double, x rounded and 1.
+/// A rational x = num / den (den > 0, lowest terms) in an exact ring; in a float, x rounded and 1.
 inline void from_rational(const Q& x, std::int64_t& num, std::int64_t& den) {
   from_integer(x.get_num(), num);
   from_integer(x.get_den(), den);
@@ -300,10 +275,6 @@ inline void from_rational(const Q& x, Int128& num, Int128& den) {
 inline void from_rational(const Q& x, Z& num, Z& den) {
   num = x.get_num();
   den = x.get_den();
-}
-inline void from_rational(const Q& x, double& num, double& den) {
-  num = x.get_d();
-  den = 1;
 }
 
 /// An integer matrix for exact work in either exact ring: held in std::int64_t when every entry fits,
@@ -349,12 +320,11 @@ class IntegerMatrix {
   bool is_wide_ = false;
 };
 
-/// Entry (i, j) of a matrix over the ring: an IntegerMatrix (exact rings) or a double matrix.
+/// Entry (i, j) of a matrix over the ring: an IntegerMatrix (exact rings) or a float matrix.
 template <class R>
 void get(const IntegerMatrix& M, Index i, Index j, R& out) {
   M.get(i, j, out);
 }
-inline void get(const Mat<double>& M, Index i, Index j, double& out) { out = M(i, j); }
 
 /// A ring element as an element of the field T.
 template <class T>
@@ -363,10 +333,6 @@ T to_field(std::int64_t x) {
 }
 template <class T>
 T to_field(const Z& x) {
-  return T(x);
-}
-template <class T>
-T to_field(double x) {
   return T(x);
 }
 /// An Int128 as an integer of GMP.
@@ -440,7 +406,7 @@ R to_common_denominator(Index k, Get q, R* out) {
 }
 
 /// A field row as a ring row: the primitive integer multiple (Q: the row over its common denominator, divided
-/// by its content), the unit max-norm multiple (double).
+/// by its content), the unit max-norm multiple (a float).
 inline void to_ring(const Q* row, Index k, std::int64_t* out) {
   to_common_denominator<std::int64_t>(
       k, [row](Index i) -> const Q& { return row[i]; }, out);
@@ -449,10 +415,6 @@ inline void to_ring(const Q* row, Index k, std::int64_t* out) {
 inline void to_ring(const Q* row, Index k, Z* out) {
   to_common_denominator<Z>(
       k, [row](Index i) -> const Q& { return row[i]; }, out);
-  normalize(out, k);
-}
-inline void to_ring(const double* row, Index k, double* out) {
-  std::copy(row, row + k, out);
   normalize(out, k);
 }
 

@@ -1,7 +1,6 @@
 #include "geometry/canonical.h"
 
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "exact/fraction_free.h"
@@ -14,24 +13,15 @@ namespace {
 using Index = Eigen::Index;
 using exact::is_zero;
 
-// Primitive integer row (Q) / row with max |entry| = 1 (double); same direction.
-void normalize_row(std::vector<Q>& v) {
-  exact::with_exact_ring<Q>([&]<class R>() {
+// The row's representative of its direction, the ring's (exact/fraction_free.h): the primitive integer row
+// (Q), the row of max-norm 1 (a float).
+template <class T>
+void normalize_row(std::vector<T>& v) {
+  exact::with_exact_ring<T>([&]<class R>() {
     std::vector<R> r(v.size());
     exact::ring::to_ring(v.data(), static_cast<Index>(v.size()), r.data());
-    for (size_t i = 0; i < v.size(); ++i) v[i] = exact::ring::to_field<Q>(r[i]);
+    for (size_t i = 0; i < v.size(); ++i) v[i] = exact::ring::to_field<T>(r[i]);
   });
-}
-void normalize_row(std::vector<double>& v) {
-  double m = 0;
-  for (double x : v) m = std::max(m, std::abs(x));
-  if (m > 0)
-    for (double& x : v) x /= m;
-}
-// Other float types (MPFR, intervals): scaled by a power of two (exact/float_ring.h).
-template <class F>
-void normalize_row(std::vector<F>& v) {
-  exact::ring::normalize(v.data(), static_cast<Index>(v.size()));
 }
 
 template <class T>

@@ -5,11 +5,13 @@
 #include <array>
 #include <random>
 
+#include "exact/fraction_free.h"
 #include "exact/interval_number.h"
 #include "exact/linalg.h"
 #include "exact/mpfr_number.h"
 #include "exact/simplex.h"
 #include "exact/verified_lp.h"
+#include "geometry/double_description.h"
 #include "tests/exact/lp_expectations.h"
 #include "tests/exact/random_lp.h"
 
@@ -17,6 +19,13 @@ namespace contactcert::exact {
 namespace {
 
 constexpr std::array<long, 4> kBits{53, 113, 256, 1024};
+
+/// q in the number type of `zero` (at MPFR's working precision).
+Q from_exact(const Q& q, const Q&) { return q; }
+template <class T>
+T from_exact(const Q& q, const T&) {
+  return NumberTraits<T>::from_q(q);
+}
 
 /// Near-degenerate LPs: b = A x0 + 2^-e d with x0 >= 0 zero on most columns, so that feasibility and the
 /// optimal basis turn on quantities of size 2^-e; e is drawn from [10, 400].
@@ -125,6 +134,46 @@ TEST(Ladder, LinearAlgebraInstantiates) {
   Mat<Q> thirds = Mat<Q>::Constant(2, 2, Q(1, 3));  // rank 1, but 1/3 - 1/3 is an interval around 0
   EXPECT_THROW(rank<Interval>(to_intervals(thirds)), UncertainSign);
   EXPECT_EQ(rank<Mpfr>(thirds.unaryExpr([](const Q& q) { return to_mpfr(q, 113); })), 1);
+}
+
+// One ring template for every float type (exact/float_ring.h): a row divided by its max-norm, so that parallel
+// rows whose ratio is not a power of two get one representative (scaling by a power of two kept them apart, and
+// the double description then found a ray twice); an interval row is divided by a point, so that its entries
+// enclose one positive multiple of the exact row.
+TEST(Ladder, ParallelRowsHaveOneRepresentativeInEveryFloatType) {
+  std::array<double, 3> d{3, 6, -9}, d1{1, 2, -3};
+  ring::normalize(d.data(), 3);
+  ring::normalize(d1.data(), 3);
+  EXPECT_EQ(d, d1);
+  std::array<Interval, 3> v{Interval(1), Interval(2), Interval(-3)};
+  ring::normalize(v.data(), 3);
+  const std::array<Q, 3> exact{Q(1, 3), Q(2, 3), Q(-1)};
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_LE(Q(v[i].inf()), exact[i]);
+    EXPECT_GE(Q(v[i].sup()), exact[i]);
+  }
+  EXPECT_TRUE(v[2].is_point());
+  // x >= 0, y >= 0, z >= x + y and the redundant x + 3 y >= 0: the ray (0, 0, 1) is tight on three rows, and
+  // two row pairs give it at ratio 3.
+  Mat<Q> A(4, 3);
+  A << -1, 0, 0, 0, -1, 0, 1, 1, -1, -1, -3, 0;
+  const auto rays = [&](auto zero) {
+    using T = decltype(zero);
+    Mat<T> F(4, 3);
+    for (Eigen::Index i = 0; i < 4; ++i)
+      for (Eigen::Index j = 0; j < 3; ++j) F(i, j) = from_exact(A(i, j), zero);
+    return geometry::to_span<T>(geometry::FaceCone<T>::from_rows(3, F, Mat<T>(0, 3), Mat<T>(0, 3))).rays.rows();
+  };
+  EXPECT_EQ(rays(Q(0)), 3);
+  EXPECT_EQ(rays(0.0), 3);
+  for (long bits : kBits) {
+    const MpfrPrecision precision(bits);
+    EXPECT_EQ(rays(Mpfr(0, bits)), 3) << bits << " bits";
+  }
+  try {  // an interval run finds the exact rays or cannot decide, never a ray twice
+    EXPECT_EQ(rays(Interval(0)), 3);
+  } catch (const UncertainSign&) {
+  }
 }
 
 // The adaptive ladder is exact on both families; on the near-degenerate one some LPs are decided above the
