@@ -63,7 +63,11 @@ std::string tuple_text(const exact::Vec<Q>& v) {
 }
 
 std::string point_text(const geometry::Point2& p) {
-  return "(" + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")";
+  std::string s = "(";
+  s += exact::to_string(p.x);
+  s += ", ";
+  s += exact::to_string(p.y);
+  return s + ")";
 }
 
 std::string tuple_text(const exact::Vec<double>& v) {

@@ -220,13 +220,13 @@ TEST(UcpTimeLimit, APassedDeadlineStopsInsideTheFirstLp) {
   while (!passed.expired()) {
   }
   LpCounters count;
-  const Vec<double> zero = Vec<double>::Zero(p.ucp.n());
-  EXPECT_EQ(minimize_on_face(make_face(convert<double>(p.ucp).X, {}), zero, Arith::kFloat, count, passed).status,
+  const Vec<double> zero = Vec<double>::Zero(p.ucp().n());
+  EXPECT_EQ(minimize_on_face(make_face(to_double(p.rows()).X, {}), zero, Arith::kFloat, count, passed).status,
             FaceLpStatus::kTimeLimit);
   for (Arith a : {Arith::kExact, Arith::kVerified, Arith::kAdaptive}) {
     const std::string what = exact::arith_name(a);
     count = {};
-    EXPECT_EQ(minimize_on_face(make_face(p.ucp.X, {}), Vec<Q>(Vec<Q>::Zero(p.ucp.n())), a, count, passed).status,
+    EXPECT_EQ(minimize_on_face(make_face(p.ucp().X, {}), Vec<Q>(Vec<Q>::Zero(p.ucp().n())), a, count, passed).status,
               FaceLpStatus::kTimeLimit)
         << what;
     EXPECT_EQ(count.lps, 1) << what;
@@ -234,13 +234,13 @@ TEST(UcpTimeLimit, APassedDeadlineStopsInsideTheFirstLp) {
     o.arith = a;
     o.deadline = passed;
     std::mt19937_64 rng(1);
-    const BilinearResult<Q> b = bilinear(make_face(p.ucp.X, {}), make_face(p.ucp.Y, {}), o, rng);
+    const BilinearResult<Q> b = bilinear(make_face(p.ucp().X, {}), make_face(p.ucp().Y, {}), o, rng);
     EXPECT_EQ(b.status, BilinearStatus::kTimeLimit) << what;
     EXPECT_EQ(b.counters.lps, 1) << what;
     SearchOptions so;
     so.heuristic = o;
     so.deadline = passed;
-    const SearchResult<Q> s = complete_search(p.ucp, so, rng);
+    const SearchResult<Q> s = complete_search(p.ucp(), so, rng);
     EXPECT_EQ(s.status, UcpStatus::kUnknown) << what;
     EXPECT_FALSE(s.paired) << what;
     EXPECT_EQ(s.counters.lps, 1) << what;
