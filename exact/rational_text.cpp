@@ -59,6 +59,11 @@ std::uint64_t pow10_word(long e) {
   return p;
 }
 
+/// Decimal digits without a leading zero that fit one machine word.
+bool word_digits(std::string_view s) {
+  return !s.empty() && s.size() <= kWordDigits && s.front() != '0' && all_digits(s);
+}
+
 /// out = (negative ? -n : n) / d in lowest terms; n < 2^63, 0 < d.
 void set_ratio(bool negative, std::uint64_t n, std::uint64_t d, Q& out) {
   const std::uint64_t g = std::gcd(n, d);
@@ -149,6 +154,19 @@ Q parse_rational(std::string_view text) {
   Q q;
   if (const char* why = parse_into(text, q)) bad(text, why);
   return q;
+}
+
+bool is_lowest_terms_text(std::string_view text) {
+  if (text == "0") return true;
+  if (!text.empty() && text.front() == '-') text.remove_prefix(1);
+  const std::size_t slash = text.find('/');
+  const std::string_view num = text.substr(0, slash);
+  if (!word_digits(num)) return false;
+  if (slash == std::string_view::npos) return true;
+  const std::string_view den = text.substr(slash + 1);
+  if (!word_digits(den)) return false;
+  const std::uint64_t d = word_of(den);
+  return d > 1 && std::gcd(word_of(num), d) == 1;
 }
 
 std::string to_string(const Q& x) {

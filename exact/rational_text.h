@@ -33,6 +33,10 @@ bool parse_rational_into(std::string_view text, Q& out);
 
 /// Lowest terms: "-7/20", "3", "0".
 std::string to_string(const Q& x);
+/// True if text is what to_string gives for its value: "0", or -?[1-9][0-9]* with an optional /[1-9][0-9]* whose
+/// denominator is above 1 and prime to the numerator. Decided in machine words up to 18 digits a part; longer text
+/// answers false (parse and print it instead).
+bool is_lowest_terms_text(std::string_view text);
 
 /// The primitive integer vector with the same direction as v (integers, gcd 1); zero stays zero.
 std::vector<Z> primitive(const std::vector<Q>& v);

@@ -107,6 +107,18 @@ TEST(ToString, OneLimbTextAgreesWithGmp) {
     }
 }
 
+TEST(ToString, LowestTermsTextIsRecognisedAsItsOwnCanonicalForm) {
+  // is_lowest_terms_text(t) holds exactly when t is to_string of its value (up to 18 digits a part).
+  for (const char* t : {"0", "3", "-3", "-7/20", "123456789012345678", "999999999999999989/999999999999999999"}) {
+    EXPECT_TRUE(is_lowest_terms_text(t)) << t;
+    EXPECT_EQ(to_string(parse_rational(t)), t);
+  }
+  for (const char* t :
+       {"-0", "03", "+3", "6/4", "1/1", "2/-3", "-2/3/4", "1.5", "1e3", "", "-", "/2", "1234567890123456789"}) {
+    EXPECT_FALSE(is_lowest_terms_text(t)) << t;
+  }
+}
+
 TEST(Primitive, IntegerVectorWithGcdOne) {
   auto v = primitive(std::vector<Q>{q(1, 2), q(-3, 4), q(0)});
   ASSERT_EQ(v.size(), 3u);
