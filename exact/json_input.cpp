@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <clocale>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <numeric>
 #include <stdexcept>
 
 #include "exact/rational_text.h"
@@ -222,28 +223,6 @@ bool is_number_text(const J& j) {
          j.template get_ref<const std::string&>().front() == kNumberTag;
 }
 
-/// True if s is the text to_string gives its value: "0", or -?[1-9][0-9]* with an optional /[1-9][0-9]* whose
-/// denominator is above 1 and prime to the numerator. Decided in machine words up to 18 digits; longer numbers
-/// answer false (and take the exact route).
-bool in_lowest_terms(std::string_view s) {
-  if (s == "0") return true;
-  if (!s.empty() && s.front() == '-') s.remove_prefix(1);
-  const auto word = [](std::string_view d, std::uint64_t& v) {
-    if (d.empty() || d.size() > 18 || d.front() == '0') return false;
-    v = 0;
-    for (char c : d) {
-      if (c < '0' || c > '9') return false;
-      v = 10 * v + static_cast<std::uint64_t>(c - '0');
-    }
-    return true;
-  };
-  const std::size_t slash = s.find('/');
-  std::uint64_t n = 0, d = 1;
-  if (!word(s.substr(0, slash), n)) return false;
-  if (slash == std::string_view::npos) return true;
-  return word(s.substr(slash + 1), d) && d > 1 && std::gcd(n, d) == 1;
-}
-
 /// Appends s as a JSON string, escaped as nlohmann's dump() escapes it.
 void append_string(std::string_view s, std::string& out) {
   const bool plain =
@@ -366,7 +345,7 @@ void append_canonical(const J& j, std::string& out) {
     std::string_view s = j.template get_ref<const std::string&>();
     if (is_number_text(j)) s.remove_prefix(1);
     Q q;
-    if (in_lowest_terms(s))
+    if (is_lowest_terms_text(s))
       append_string(s, out);
     else if (parse_rational_into(s, q))
       append_string(to_string(q), out);
@@ -413,7 +392,9 @@ JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   // Valid input is read in one pass, the parser handing over each number token's text. Input it rejects there (as it
   // rejects a number beyond double's range) is read again with its number tokens quoted first: that reading keeps
   // every number, and its errors name the byte of the original text.
-  if (text.find('\0') == std::string::npos) {
+  // The parser writes a float token's decimal point as the C locale's LC_NUMERIC has it ("0,966" under some
+  // locales): the one pass needs '.', so any other setting takes the quoted reading.
+  if (text.find('\0') == std::string::npos && std::strcmp(std::localeconv()->decimal_point, ".") == 0) {
     LiteralNumberBuilder builder(*root, nullptr);
     if (json::sax_parse(text, &builder, json::input_format_t::json, /*strict=*/true))
       return JsonInput(root, root.get(), f, "$");
