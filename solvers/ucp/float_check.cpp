@@ -153,13 +153,14 @@ std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpProblem& problem, c
   const Index n = problem.n();
   const auto point = [&](int side, const Vec<double>& approx, const std::vector<bool>& zero) -> std::optional<Vec<Q>> {
     const IntegerPolyhedron& P = side == 0 ? problem.rows().X : problem.rows().Y;
-    // A vertex (the search's points are): its support columns are independent, so A_S x_S = b has one solution
-    // (only those columns become integers).
+    // A vertex (the search's points are): its support columns are independent, so A_S x_S = b has one solution.
+    // The rows become integers once, for that solve and for the rounded point below.
+    IntegerRows rows(P);
     std::vector<Index> support;
     for (Index j = 0; j < n; ++j)
       if (!zero[static_cast<std::size_t>(j)]) support.push_back(j);
-    if (std::optional<Vec<Q>> xs = exact::with_exact_ring<Q, exact::Int128>(
-            [&]<class R>() { return exact::unique_solution(integer_system<R>(P), support); })) {
+    if (std::optional<Vec<Q>> xs =
+            rows.run([&](const auto& system) { return exact::unique_solution(system, support); })) {
       Vec<Q> x(n);  // zeros (a default rational is 0, cheaper than Zero())
       bool nonnegative = true;
       for (std::size_t t = 0; t < support.size(); ++t) {
@@ -168,7 +169,6 @@ std::optional<std::pair<Vec<Q>, Vec<Q>>> exact_pair(const UcpProblem& problem, c
       }
       if (nonnegative) return x;
     }
-    IntegerRows rows(P);
     if (std::optional<Vec<Q>> x =
             rows.run([&](const auto& system) { return exact::rounded_point(system, approx, zero); }))
       return x;
