@@ -73,21 +73,6 @@ IntegerPolyhedron integer_polyhedron(const Mat<Q>& A, const Vec<Q>& b) {
   return P;
 }
 
-Mat<Q> rational_matrix(const IntegerPolyhedron& P) {
-  Mat<Q> A(P.rows(), P.n);  // zeros (a default rational is 0, cheaper than Zero())
-  for (std::size_t i = 0; i < P.A.size(); ++i) {
-    const SparseRow& r = P.A[i];
-    for (std::size_t e = 0; e < r.col.size(); ++e) {
-      Q& a = A(static_cast<Index>(i), r.col[e]);
-      if (P.den[i] == 1)
-        mpq_set_z(a.get_mpq_t(), r.value[e].get_mpz_t());
-      else
-        ring::to_rational(r.value[e], P.den[i], a);
-    }
-  }
-  return A;
-}
-
 template <class R>
 exact::IntegerSystem<R> integer_system(const IntegerPolyhedron& P) {
   // Row i of [A | b] is [A[i] | L_b b_i] / den_i over den_i and L_b the denominator of b_i: over L = lcm(den_i, L_b),

@@ -39,9 +39,6 @@ std::vector<exact::Z> primitive_integers(const std::vector<const exact::Q*>& v);
 /// entries), b as it is.
 IntegerPolyhedron integer_polyhedron(const exact::Mat<exact::Q>& A, const exact::Vec<exact::Q>& b);
 
-/// A[i] / den[i] as rationals, densely (the form the exact LPs take).
-exact::Mat<exact::Q> rational_matrix(const IntegerPolyhedron& P);
-
 /// The rows of [A | b] over R, each times the lcm of its denominators: exact::integer_system of the rational rows,
 /// made from the integers (Int128: throws RingOverflow if a number does not fit).
 template <class R>

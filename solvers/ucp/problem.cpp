@@ -262,10 +262,7 @@ IntegerUcp build_ucp(const QuasistaticProblem& p) {
 }
 
 const UcpInstance<Q>& UcpProblem::ucp() const {
-  std::call_once(dense_->built, [this] {
-    const auto dense = [](const IntegerPolyhedron& P) { return StandardPolyhedron<Q>{rational_matrix(P), P.b}; };
-    dense_->ucp = {dense(rows_.X), dense(rows_.Y)};
-  });
+  std::call_once(dense_->built, [this] { dense_->ucp = to_dense_rational(rows_); });
   return dense_->ucp;
 }
 
@@ -316,6 +313,11 @@ std::string to_json_text(const UcpProblem& u) { return to_json(u).dump(1) + "\n"
 UcpInstance<double> to_double(const IntegerUcp& u) {
   return convert<double>(
       u, [](const exact::Z& z) { return z.get_d(); }, [](const Q& q) { return q.get_d(); });
+}
+
+UcpInstance<Q> to_dense_rational(const IntegerUcp& u) {
+  return convert<Q>(
+      u, [](const exact::Z& z) { return Q(z); }, [](const Q& q) { return q; });
 }
 
 }  // namespace contactcert::solvers::ucp

@@ -139,6 +139,8 @@ UcpInstance<T> convert(const IntegerUcp& u, FromZ from_z, FromQ from_q) {
 }
 /// X and Y in doubles (each number rounded as Q::get_d rounds it).
 UcpInstance<double> to_double(const IntegerUcp& u);
+/// X and Y as dense rationals (A[i] / den[i]: the form the exact LPs take).
+UcpInstance<Q> to_dense_rational(const IntegerUcp& u);
 
 /// Per-row factors of X's and Y's rows from equilibrate (1 for a row left as it was).
 struct RowFactors {

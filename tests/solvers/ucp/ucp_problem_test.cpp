@@ -328,8 +328,9 @@ TEST(UcpProblem, XAndYInIntegersEqualTheRationalOnes) {
     r.X.A /= Q(2, 7 + 2 * t), r.X.b /= Q(2, 7 + 2 * t);  // rows over a common denominator
     UcpProblem scaled;
     scaled.set(r);
-    EXPECT_EQ(rational_matrix(scaled.rows().X), r.X.A);
-    EXPECT_EQ(rational_matrix(scaled.rows().Y), r.Y.A);
+    const UcpInstance<Q> dense = to_dense_rational(scaled.rows());
+    EXPECT_EQ(dense.X.A, r.X.A);
+    EXPECT_EQ(dense.Y.A, r.Y.A);
     expect_same_floats(scaled, r, "reduction " + std::to_string(t));
   }
   // nc = 40 with Pythagorean normals ((a^2 - b^2) / h, 2ab / h), h = a^2 + b^2 the first 40 primes 1 mod 4: the lcm
