@@ -189,11 +189,12 @@ template <class T>
 std::optional<LpResult<T>> decide_at_basis(const LpProblem<T>& problem, SimplexTableau<T> tab,
                                            const LpOptions& options) {
   tab.set_objective(problem.objective());
-  if (is_optimal_basis(tab, problem.is_free)) return finish(problem, tab, {LoopEnd::kOptimal, -1, 1}, 0, options);
-  // Not optimal, yet decided if the column the pricing rule enters has no blocking row: its edge is an
-  // unbounded ray (the outcome of phase 2 before its first pivot).
+  // Every pricing rule enters a column exactly when one has an improving reduced cost: none means optimal.
   const bool bland = options.rule == PivotRule::kBland;
   const Entering e = entering_column(tab, problem.is_free, bland);
+  if (e.column < 0) return finish(problem, tab, {LoopEnd::kOptimal, -1, 1}, 0, options);
+  // Not optimal, yet decided if the entering column has no blocking row: its edge is an unbounded ray (the outcome
+  // of phase 2 before its first pivot).
   if (blocking_row(tab, problem.is_free, e, bland) >= 0) return std::nullopt;
   return finish(problem, tab, {LoopEnd::kUnbounded, e.column, e.direction}, 0, options);
 }
