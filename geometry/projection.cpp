@@ -138,14 +138,8 @@ FaceCone<T> project_by_polar_rows(const std::vector<std::vector<R>>& rows, Index
   for (std::vector<R>& c : kc) rg::normalize(c.data(), m);
   // K^F: pos(K) = { y : K^F y <= 0, E_K y = 0 } (section 3); its facets are the extreme rays of the
   // polar { f : k_i . f <= 0 }, pointed unless K has a left null space E_K.
-  std::vector<std::vector<R>> kf, ke;
-  if (auto polar = pointed_cone_rays<R>(kc, m, budget)) {
-    kf = std::move(*polar);
-  } else {
-    RingGenerators<R> KF = cone_generators<R>(kc, {}, m, budget);  // facets and equalities, in the ring
-    kf = std::move(KF.rays);
-    ke = std::move(KF.lines);
-  }
+  RingGenerators<R> KF = cone_generators<R>(kc, {}, m, budget);  // facets and equalities, in the ring
+  std::vector<std::vector<R>> kf = std::move(KF.rays), ke = std::move(KF.lines);
   // A facet of pos(K) is open iff it misses a column k_i with z_i > 0: the relative interiors of the
   // faces of pos(K) that contain every such column make up { K z : z >= 0, z_i > 0 on strict }.
   std::vector<std::vector<R>> closed, open, E;
