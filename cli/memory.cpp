@@ -79,9 +79,11 @@ void heap_on_huge_pages() {
   constexpr std::uintptr_t kSpan = 8 * kHuge;
   const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
   void* const failed = reinterpret_cast<void*>(-1);
-  const auto brk = reinterpret_cast<std::uintptr_t>(sbrk(0));
+  void* const top = sbrk(0);
+  if (top == failed) return;
+  const auto brk = reinterpret_cast<std::uintptr_t>(top);
   const std::uintptr_t first = (brk + page + kHuge - 1) & ~(kHuge - 1);
-  if (sbrk(0) == failed || sbrk(static_cast<std::intptr_t>(first - page - brk)) == failed) return;
+  if (sbrk(static_cast<std::intptr_t>(first - page - brk)) == failed) return;
   void* block = std::malloc(kSpan + page);
   const auto at = reinterpret_cast<std::uintptr_t>(block);
   if (block != nullptr && at < first && at + kSpan + page <= reinterpret_cast<std::uintptr_t>(sbrk(0)))
