@@ -270,4 +270,9 @@ check 2 'does not realise it' check "$work/modes_lr.json"
 forge modes_dead_lr 's/"prefix": "\([a-z]*\)l"/"prefix": "\1r"/' "$work/modes.json"
 check 2 'certificate is INVALID' check "$work/modes_dead_lr.json"
 
+# ---- cases by topic: tests/cli/cases/forged_*.sh, each sourced here with the variables and functions above ----
+for cases_file in "$(dirname "$0")"/cases/forged_*.sh; do
+  [ -e "$cases_file" ] && source "$cases_file"
+done
+
 summary forged_certificates

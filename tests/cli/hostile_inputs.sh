@@ -170,4 +170,9 @@ done
 # ---- 8. messages name the file ----
 check 2 'one_fixel.json' insert "$h/one_fixel.json"
 
+# ---- cases by topic: tests/cli/cases/hostile_*.sh, each sourced here with the variables and functions above ----
+for cases_file in "$(dirname "$0")"/cases/hostile_*.sh; do
+  [ -e "$cases_file" ] && source "$cases_file"
+done
+
 summary hostile_inputs
