@@ -194,3 +194,26 @@ awk 'BEGIN { printf "{\"candidates\": ["; for (i = 0; i < 100001; i++) printf "%
 check 2 "$dz/cands.json: \$.candidates: at most 100000 candidates (found 100001)" design "$pent" --candidates \
   "$dz/cands.json" --stable-under 0,-1,0
 check 2 '--candidates: at most 100000 candidates' design "$pent" --candidates 100001 --stable-under 0,-1,0
+
+# ---- figures past the input parser's 4096 digits (a pentagon scaled by 10^2100 + 7: margins of ~8400 digits) ----
+# internal figures (chunk results, checkpoints, MPI messages) are never read back through the input parser
+python3 -c "
+import json
+s = 10**2100 + 7
+V = [[0, 0], [2 * s, 0], [2 * s, s], [s, 2 * s], [0, 2 * s]]
+print(json.dumps({'kind': 'planar', 'workpiece': {'shape': {'type': 'polygon', 'vertices': [[str(x), str(y)] for x, y in V]}},
+                  'fixels': [{'position': [str(s), '0']}], 'mu_s': '1/5'}))" > "$dz/huge_pentagon.json"
+bargs=(design "$dz/huge_pentagon.json" --candidates 6 --stable-under 0,-1,0 --top 1 --chunk-size 4 --out "$dz/huge_out")
+check 0 'best 1:' "${bargs[@]}"
+check 3 'covered: 16 of 20 placements' "${bargs[@]}" --max-placements 16 --checkpoint "$dz/huge_ck.json"
+cases=$((cases + 1))
+grep -qE '"figure":"[0-9]{4097}' "$dz/huge_ck.json" || {
+  failures=$((failures + 1))
+  echo "FAIL: the checkpoint of the scaled pentagon holds no figure past 4096 digits"
+}
+check 0 'best 1:' "${bargs[@]}" --checkpoint "$dz/huge_ck.json"
+if [ -e "$(dirname "$cc")/libcontactcert_mpi.so" ] && command -v mpirun > /dev/null; then
+  cc_serial=$cc cc=mpirun mem=8G
+  check 0 'best 1:' --allow-run-as-root --oversubscribe -np 2 "$cc_serial" "${bargs[@]}"
+  cc=$cc_serial mem=${HOSTILE_MEMORY:-2G}
+fi
