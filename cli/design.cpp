@@ -6,15 +6,14 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <exception>
-#include <limits>
-#include <set>
-#include <stdexcept>
 #include <iostream>
+#include <limits>
 #include <optional>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "cli/command.h"
 #include "cli/design_svg.h"
@@ -406,7 +405,8 @@ int search(const DesignOptions& o, const DesignProblem& problem, const solvers::
   st.total = total;
   st.deadline = exact::Deadline::after(o.common.time_limit);
   st.max_placements = o.max_placements;
-  st.checkpoint = resumed ? std::move(*resumed) : solvers::DesignCheckpoint{key, o.chunk_size, chunks, {}, {solvers::TopK(K), {}}};
+  st.checkpoint =
+      resumed ? std::move(*resumed) : solvers::DesignCheckpoint{key, o.chunk_size, chunks, {}, {solvers::TopK(K), {}}};
   for (const auto& [first, last] : st.checkpoint.done.ranges()) st.chunks_before += last - first + 1;
   st.placements_before = solvers::placements_in(st.checkpoint.done, o.chunk_size, total);
   long cursor = 0;  // chunks are handed out in increasing order, skipping those done before
@@ -446,8 +446,9 @@ int search(const DesignOptions& o, const DesignProblem& problem, const solvers::
     if (!complete) return std::nullopt;
     return solvers::chunk_result_text(r);
   };
-  const bool finished = dist.run(next, work, record, keep_going);
-  if (!dist.is_root()) return finished ? 0 : 3;
+  const bool ran_out = dist.run(next, work, record, keep_going);
+  if (!dist.is_root()) return ran_out ? 0 : 3;
+  const bool finished = ran_out || st.checkpoint.done.next_missing(0) >= chunks;  // a budget met by the last chunk
   progress.finish();
   save();
   const solvers::ChunkResult& result = st.checkpoint.result;

@@ -65,8 +65,8 @@ DesignStatistics read_statistics(const JsonInput& r, long placements) {
     s.by_status[static_cast<std::size_t>(i)] = n;
   }
   if (sum != placements)
-    by.fail("counts adding up to the " + std::to_string(placements) + " placements of the done chunks (they add up to " +
-            std::to_string(sum) + ")");
+    by.fail("counts adding up to the " + std::to_string(placements) +
+            " placements of the done chunks (they add up to " + std::to_string(sum) + ")");
   s.lps = r.at("lps").integer(0, LONG_MAX);
   return s;
 }
@@ -190,13 +190,15 @@ std::optional<DesignCheckpoint> read_checkpoint(const std::string& path, const s
   root.expect_keys({"kind", "problem", "content_digest", "content"});
   if (root.at("kind").string() != "design_checkpoint") root.at("kind").fail("\"design_checkpoint\"");
   if (root.at("problem").string() != problem_key)
-    root.at("problem").fail("a checkpoint of this design (same scene, candidates and options); delete it to start over");
+    root.at("problem").fail(
+        "a checkpoint of this design (same scene, candidates and options); delete it to start over");
   const JsonInput content = root.at("content");
   if (!content.is_object()) content.fail("the checkpoint's content (a JSON object)");
   if (root.at("content_digest").string() != content.canonical_sha256())
     root.at("content_digest")
-        .fail("the SHA-256 of $.content (the checkpoint was edited or damaged after it was written); delete it to "
-              "start over");
+        .fail(
+            "the SHA-256 of $.content (the checkpoint was edited or damaged after it was written); delete it to "
+            "start over");
   content.expect_keys({"chunk_size", "chunks", "done", "result"});
   DesignCheckpoint c;
   c.problem_key = problem_key;

@@ -2,6 +2,8 @@
 // digest is refused; an edit with a recomputed digest is refused by the field it breaks (indices out of range,
 // repeated, fractional or unsorted; counts that do not add up; a figure that is not the placement's own; done
 // ranges out of range or overlapping; another problem). Also the index arithmetic the reader relies on.
+#include "solvers/design/checkpoint.h"
+
 #include <gtest/gtest.h>
 
 #include <climits>
@@ -10,7 +12,6 @@
 
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
-#include "solvers/design/checkpoint.h"
 
 namespace contactcert::solvers {
 namespace {
