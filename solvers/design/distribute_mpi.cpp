@@ -89,7 +89,7 @@ class MpiDistributor : public Distributor {
         record(chunk, *result);
       else
         queue_.push_front(chunk);
-      if (!keep_going()) stop_all();
+      if (!keep_going()) stop_unless_done();
     }
     while (byes_ < size_ - 1) serve(record, keep_going, true);
     return !stopping_ && !has_work() && outstanding_ == 0;
@@ -131,6 +131,11 @@ class MpiDistributor : public Distributor {
     return !queue_.empty();
   }
 
+  /// A budget reached: stop, unless its last chunk has just been recorded (then every rank ends with the result).
+  void stop_unless_done() {
+    if (outstanding_ > 0 || has_work()) stop_all();
+  }
+
   void stop_all() {
     if (stopping_) return;
     stopping_ = true;
@@ -166,7 +171,7 @@ class MpiDistributor : public Distributor {
         const std::size_t nl = text.find('\n');
         --outstanding_;
         record(std::atol(text.substr(0, nl).c_str()), text.substr(nl + 1));
-        if (!keep_going()) stop_all();
+        if (!keep_going()) stop_unless_done();
       }
       if (stop_sent_[static_cast<std::size_t>(from)]) continue;
       if (stopping_ || !has_work()) {

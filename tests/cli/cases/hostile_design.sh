@@ -155,6 +155,10 @@ if [ -e "$(dirname "$cc")/libcontactcert_mpi.so" ] && command -v mpirun > /dev/n
   mpi_refused figure_forged "\$.content.result.top[0].figure: the placement's own figure"
   mpi_refused plain_index '$.content_digest: the SHA-256 of $.content'
   mpi_refused deep '$[0][0][0]'
+  # a budget met by the last chunk: the run is complete, every rank ends with exit 0
+  cc_serial=$cc cc=mpirun mem=8G
+  check 0 'evaluated 56' --allow-run-as-root --oversubscribe -np 2 "$cc_serial" "${dargs[@]}" --max-placements 56
+  cc=$cc_serial mem=${HOSTILE_MEMORY:-2G}
 else
   echo "skipped: design checkpoints under mpirun (no MPI build or no mpirun)"
 fi
@@ -175,6 +179,7 @@ done
 for bad in 0 0x10 100001 -3; do
   check 2 '--push-points' design "$pent" --candidates 8 --insertable --push-points "$bad"
 done
+check 0 'evaluated 56' "${dargs[@]}" --max-placements 56
 # the largest chunk is one chunk of all 56 placements (ceil(total / size) without overflow)
 check 0 'evaluated 56' design "$pent" --candidates 8 --stable-under 0,-1,0 --chunk-size 1000000000 --out "$dz/big_chunk"
 check 0 'evaluated 56' design "$pent" --candidates 8 --stable-under 0,-1,0 --max-placements 9223372036854775807 \
