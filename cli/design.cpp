@@ -6,20 +6,26 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
-#include <cstdint>
+#include <cstdio>
+#include <exception>
 #include <iostream>
+#include <limits>
 #include <optional>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "cli/command.h"
 #include "cli/design_svg.h"
 #include "cli/json_out.h"
+#include "cli/option_checks.h"
 #include "cli/progress_line.h"
 #include "cli/results.h"
 #include "exact/deadline.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
+#include "exact/sha256.h"
 #include "geometry/scene_json.h"
 #include "solvers/design/checkpoint.h"
 #include "solvers/design/distribute.h"
@@ -36,6 +42,10 @@ using solvers::PlacementStatus;
 
 /// Budget on the candidate set (each candidate is a few hundred bytes and one membership test per placement).
 constexpr long kMaxCandidates = 100000;
+/// Most placements reported with --top (each writes its scene and certificates).
+constexpr int kMaxTop = 1000;
+/// Largest --chunk-size (a chunk is the unit of work of one rank and of the checkpoint).
+constexpr long kMaxChunkSize = 1000000000;
 
 struct DesignOptions {
   CommonOptions common;
@@ -95,6 +105,11 @@ std::vector<solvers::Candidate> read_candidates(const DesignOptions& o, const ge
     const Q pitch = parse_number_list(o.lattice, "--lattice", 1)(0);
     if (sgn(pitch) <= 0) throw InputError("command line", "--lattice", "a pitch > 0");
     *how = "lattice of pitch " + exact::to_string(pitch);
+    const long count = solvers::lattice_candidate_count(shape, pitch);  // before any candidate is stored
+    if (count > kMaxCandidates)
+      throw InputError("command line", "--lattice",
+                       "a coarser pitch: " + exact::to_string(pitch) + " makes " + std::to_string(count) +
+                           " candidates, more than the limit of " + std::to_string(kMaxCandidates));
     return solvers::lattice_candidates(shape, pitch);
   }
   if (o.candidates.find_first_not_of("0123456789") == std::string::npos) {
@@ -106,29 +121,28 @@ std::vector<solvers::Candidate> read_candidates(const DesignOptions& o, const ge
   *how = "from " + o.candidates;
   const exact::JsonInput root = exact::JsonInput::load(o.candidates);
   root.expect_keys({"candidates", "description"});
+  const exact::JsonInput list = root.at("candidates");
+  if (list.is_array() && list.size() > static_cast<std::size_t>(kMaxCandidates))  // before any per-point work
+    list.fail("at most " + std::to_string(kMaxCandidates) + " candidates (found " + std::to_string(list.size()) + ")");
   std::vector<solvers::Candidate> out;
-  for (const exact::JsonInput& e : root.at("candidates").elements()) {
+  std::set<std::pair<Q, Q>> seen;
+  for (const exact::JsonInput& e : list.elements()) {
     const exact::Vec<Q> p = e.rational_vector(2);
     const solvers::CandidateCheck c = solvers::candidate_at(shape, {p(0), p(1)});
     if (!c.message.empty()) e.fail(c.message);
-    for (const auto& prev : out)
-      if (prev.point == c.candidate.point) e.fail("distinct candidate points (this one is repeated)");
+    if (!seen.emplace(p(0), p(1)).second) e.fail("distinct candidate points (this one is repeated)");
     out.push_back(c.candidate);
   }
   return out;
 }
 
-/// 64-bit FNV-1a of the problem's description: the identity a checkpoint must match.
+/// SHA-256 of the problem's description: the identity a checkpoint must match.
 std::string problem_key(const std::string& scene_text, const DesignOptions& o, const DesignProblem& p) {
   std::string d = scene_text + "|" + std::to_string(p.fixels) + "|" + o.stable_under + "|" +
                   std::to_string(p.insertable) + std::to_string(p.goal_push) + "|" + solvers::rank_name(p.rank) + "|" +
                   std::to_string(o.top) + "|" + std::to_string(p.pushes.size()) + "|" + o.goal_wrench + "|";
   for (const auto& c : p.candidates) d += exact::to_string(c.point.x) + "," + exact::to_string(c.point.y) + ";";
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char ch : d) h = (h ^ ch) * 1099511628211ull;
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+  return exact::sha256_hex(d);
 }
 
 std::string duration_text(double s) {
@@ -165,7 +179,9 @@ std::string statistics_text(const solvers::DesignStatistics& s) {
 json report_placement(const DesignProblem& problem, const solvers::CandidateSymmetry& symmetry, const DesignOptions& o,
                       std::size_t position, const solvers::Ranked& r, std::string* caption, std::ostream& text) {
   solvers::PlacementEvidence ev;
-  solvers::evaluate_placement(problem, symmetry, r.placement, &ev);
+  const solvers::Evaluation again = solvers::evaluate_placement(problem, symmetry, r.placement, &ev);
+  if (again.status != PlacementStatus::kAccepted || again.figure != r.figure)
+    throw std::logic_error("design: a ranked placement re-decides differently");
   const std::string stem = o.out + "/placement_" + std::to_string(position);
   const std::string scene_text = solvers::placement_scene_text(
       problem, r.placement, "design placement " + std::to_string(position) + " of " + o.file);
@@ -246,9 +262,6 @@ json report_placement(const DesignProblem& problem, const solvers::CandidateSymm
 
 DesignProblem build_problem(const DesignOptions& o, const std::string& scene_text, std::string* how) {
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(scene_text, o.file));
-  if (o.fixels != 2 && o.fixels != 3)
-    throw InputError("command line", "--fixels",
-                     "2 or 3 fixels (Table 5 covers three; got " + std::to_string(o.fixels) + ")");
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw InputError("command line", "--arith", "design is decided exactly (use exact or verified)");
   DesignProblem p;
@@ -278,23 +291,21 @@ DesignProblem build_problem(const DesignOptions& o, const std::string& scene_tex
                      o.candidates.empty() ? "--lattice" : "--candidates",
                      "at least " + std::to_string(std::max(2, p.fixels)) + " candidate points (got " +
                          std::to_string(p.candidates.size()) + ")");
-  if (o.top < 1) throw InputError("command line", "--top", "K >= 1");
-  if (o.push_points < 1 || o.push_points > kMaxCandidates)
-    throw InputError("command line", "--push-points", "1 to " + std::to_string(kMaxCandidates) + " push points");
   if (p.insertable) p.pushes = solvers::arc_length_candidates(p.workpiece.shape, o.push_points);
-  if (o.chunk_size < 1) throw InputError("command line", "--chunk-size", "a chunk size >= 1");
   return p;
 }
 
 /// The root's bookkeeping while chunks finish: merged result, checkpoint, progress line, budgets.
 struct RootState {
   solvers::DesignCheckpoint checkpoint;
-  long total = 0, done_before = 0, done_now = 0;
+  long total = 0;
+  long chunks_before = 0, chunks_now = 0;          ///< chunks done by earlier runs / this run
+  long placements_before = 0, placements_now = 0;  ///< their placements
   exact::Deadline deadline;
   long max_placements = 0;
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now(), last_write = start;
   bool budget_hit = false;
-  long placements_done() const { return std::min(total, (done_before + done_now) * checkpoint.chunk_size); }
+  long placements_done() const { return placements_before + placements_now; }
 };
 
 /// The report of a finished search: the top K re-decided with their evidence, files, text or JSON.
@@ -357,27 +368,53 @@ int report_design(const DesignOptions& o, const DesignProblem& problem, const so
   return 0;
 }
 
+/// The checkpoint to resume from (root), decided on the root and shared: 0 when the search may start (from
+/// `*resumed` if set), else the exit code every rank ends with (2: the root prints the refusal, naming the file and
+/// field); the others learn of it through the broadcast instead of waiting for work that never comes.
+int resume(const DesignOptions& o, const DesignProblem& problem, const solvers::CandidateSymmetry& symmetry,
+           solvers::Distributor& dist, long total, const std::string& key,
+           std::optional<solvers::DesignCheckpoint>* resumed) {
+  std::exception_ptr failure;
+  std::string refusal;
+  int code = 0;
+  if (dist.is_root() && !o.checkpoint.empty()) {
+    try {
+      *resumed = solvers::read_checkpoint(o.checkpoint, key, problem, symmetry, o.chunk_size, total,
+                                          static_cast<std::size_t>(o.top));
+    } catch (const InputError& e) {
+      refusal = std::string("contactcert: ") + e.what() + "\n";
+      code = 2;
+    } catch (...) {
+      failure = std::current_exception();
+      code = 1;
+    }
+  }
+  code = std::stoi(dist.from_root(std::to_string(code)));
+  if (failure) std::rethrow_exception(failure);
+  std::fputs(refusal.c_str(), stderr);  // one write: under mpirun, lines of other ranks cannot split it
+  return code;
+}
+
 /// The distributed search and, on the root, the report.
 int search(const DesignOptions& o, const DesignProblem& problem, const solvers::CandidateSymmetry& symmetry,
-           solvers::Distributor& dist, long total, long chunks, const std::string& key, const std::string& how) {
+           solvers::Distributor& dist, long total, const std::string& key, const std::string& how,
+           std::optional<solvers::DesignCheckpoint> resumed) {
   const std::size_t K = static_cast<std::size_t>(o.top);
+  const long chunks = solvers::chunk_count(total, o.chunk_size);
   RootState st;
   st.total = total;
   st.deadline = exact::Deadline::after(o.common.time_limit);
   st.max_placements = o.max_placements;
-  st.checkpoint = {
-      key, o.chunk_size, chunks, std::vector<bool>(static_cast<std::size_t>(chunks), false), {solvers::TopK(K), {}}};
-  dist.agree(key);
-  std::vector<long> todo;
-  if (dist.is_root()) {
-    if (!o.checkpoint.empty())
-      if (auto c = solvers::read_checkpoint(o.checkpoint, key, o.chunk_size, chunks, K)) st.checkpoint = std::move(*c);
-    for (long c = 0; c < chunks; ++c)
-      if (st.checkpoint.done[static_cast<std::size_t>(c)])
-        ++st.done_before;
-      else
-        todo.push_back(c);
-  }
+  st.checkpoint =
+      resumed ? std::move(*resumed) : solvers::DesignCheckpoint{key, o.chunk_size, chunks, {}, {solvers::TopK(K), {}}};
+  for (const auto& [first, last] : st.checkpoint.done.ranges()) st.chunks_before += last - first + 1;
+  st.placements_before = solvers::placements_in(st.checkpoint.done, o.chunk_size, total);
+  long cursor = 0;  // chunks are handed out in increasing order, skipping those done before
+  auto next = [&]() -> std::optional<long> {
+    cursor = st.checkpoint.done.next_missing(cursor);
+    if (cursor >= chunks) return std::nullopt;
+    return cursor++;
+  };
   ProgressLine progress("design " + o.file);
   auto save = [&] {
     if (!o.checkpoint.empty()) solvers::write_checkpoint(o.checkpoint, st.checkpoint);
@@ -385,21 +422,21 @@ int search(const DesignOptions& o, const DesignProblem& problem, const solvers::
   };
   auto record = [&](long chunk, const std::string& text) {
     st.checkpoint.result.merge(solvers::parse_chunk_result(text, K));
-    st.checkpoint.done[static_cast<std::size_t>(chunk)] = true;
-    ++st.done_now;
+    st.checkpoint.done.insert(chunk);
+    ++st.chunks_now;
+    st.placements_now += solvers::chunk_length(chunk, o.chunk_size, total);
     if (seconds_since(st.last_write) >= 1.0) save();
   };
   auto keep_going = [&] {
     const double t = seconds_since(st.start);
-    const long now = st.done_now * o.chunk_size;
     if (progress.enabled() && t > 0) {
-      const double rate = static_cast<double>(now) / t;
+      const double rate = static_cast<double>(st.placements_now) / t;
       const long left = total - st.placements_done();
       progress.update(std::to_string(st.placements_done()) + " of " + std::to_string(total) + " placements, " +
                       std::to_string(static_cast<long>(rate)) + "/s on " + std::to_string(dist.size()) + " ranks" +
                       (rate > 0 ? ", about " + duration_text(static_cast<double>(left) / rate) + " left" : ""));
     }
-    if (st.deadline.expired() || now >= st.max_placements) st.budget_hit = true;
+    if (st.deadline.expired() || st.placements_now >= st.max_placements) st.budget_hit = true;
     return !st.budget_hit;
   };
   auto work = [&](long chunk, const std::function<bool()>& between) -> std::optional<std::string> {
@@ -409,8 +446,9 @@ int search(const DesignOptions& o, const DesignProblem& problem, const solvers::
     if (!complete) return std::nullopt;
     return solvers::chunk_result_text(r);
   };
-  const bool finished = dist.run(todo, work, record, keep_going);
-  if (!dist.is_root()) return finished ? 0 : 3;
+  const bool ran_out = dist.run(next, work, record, keep_going);
+  if (!dist.is_root()) return ran_out ? 0 : 3;
+  const bool finished = ran_out || st.checkpoint.done.next_missing(0) >= chunks;  // a budget met by the last chunk
   progress.finish();
   save();
   const solvers::ChunkResult& result = st.checkpoint.result;
@@ -418,7 +456,8 @@ int search(const DesignOptions& o, const DesignProblem& problem, const solvers::
     std::cerr << "contactcert: design " << o.file << ": "
               << (st.deadline.expired() ? st.deadline.reached_text() : "placement budget --max-placements reached")
               << " (covered: " << st.placements_done() << " of " << total << " placements in "
-              << (st.done_before + st.done_now) << " of " << chunks << " chunks; " << statistics_text(result.statistics)
+              << (st.chunks_before + st.chunks_now) << " of " << chunks << " chunks; "
+              << statistics_text(result.statistics)
               << (o.checkpoint.empty() ? "" : "; resume with --checkpoint " + o.checkpoint) << ")\n";
     return 3;
   }
@@ -433,13 +472,15 @@ int run_design(const DesignOptions& o) {
   const long total = solvers::placement_count(n, problem.fixels);
   if (total < 0) throw InputError("command line", "--candidates", "fewer candidates (C(N, k) exceeds 2^62)");
   const solvers::CandidateSymmetry symmetry = solvers::candidate_symmetry(problem);
-  const long chunks = (total + o.chunk_size - 1) / o.chunk_size;
   const std::string key = problem_key(scene_text, o, problem);
   if (!o.out.empty()) create_output_dir(o.out);
 
   const std::unique_ptr<solvers::Distributor> dist = solvers::make_distributor();
+  dist->agree(key);
+  std::optional<solvers::DesignCheckpoint> resumed;
+  if (const int code = resume(o, problem, symmetry, *dist, total, key, &resumed)) return code;
   try {
-    return search(o, problem, symmetry, *dist, total, chunks, key, how);
+    return search(o, problem, symmetry, *dist, total, key, how, std::move(resumed));
   } catch (const exact::InputError& e) {
     dist->abort_all(e.what(), 2);
     throw;
@@ -464,7 +505,9 @@ void register_design(CLI::App& app, Action& action) {
                   "N points equally spaced in arc length, or a JSON file {\"candidates\": [[x, y], ...]}");
   sub->add_option("--lattice", o->lattice,
                   "Candidates at the lattice points (i p, j p) on the boundary (modular fixturing)");
-  sub->add_option("--fixels", o->fixels, "Fixels per placement: 2 or 3")->default_str("3");
+  sub->add_option("--fixels", o->fixels, "Fixels per placement: 2 or 3 (Table 5 covers three)")
+      ->check(whole_number(2, 3))
+      ->default_str("3");
   CLI::Option* stable = sub->add_option(
       "--stable-under", o->stable_under,
       "Wrenches to hold strongly stable: fx,fy,tz[;...] (a list) or cone:fx,fy,tz;... (a cone's generators)");
@@ -473,7 +516,7 @@ void register_design(CLI::App& app, Action& action) {
          "--rank", o->rank,
          "margin (least squared stability margin) or goal-fraction (share of the push points whose push is in G_goal)")
       ->check(CLI::IsMember({"margin", "goal-fraction"}));
-  sub->add_option("--top", o->top, "Report the K best placements")->default_str("5");
+  sub->add_option("--top", o->top, "Report the K best placements")->check(whole_number(1, kMaxTop))->default_str("5");
   sub->add_option("--out", o->out, "Folder of the placement scenes, certificates and design.svg")
       ->default_str("contactcert-design");
   sub->add_option("--checkpoint", o->checkpoint, "Resume from and save progress to this file (atomic writes)");
@@ -483,9 +526,14 @@ void register_design(CLI::App& app, Action& action) {
   sub->add_option("--push-points", o->push_points,
                   "With --insertable: the goal fraction and --goal-push use the pushes at M points equally spaced in "
                   "arc length")
+      ->check(whole_number<long>(1, kMaxCandidates))
       ->default_str("120");
-  sub->add_option("--chunk-size", o->chunk_size, "Placements per unit of work handed to a rank")->default_str("16");
-  sub->add_option("--max-placements", o->max_placements, "Budget: placements evaluated in this run (exit 3 beyond)")
+  sub->add_option("--chunk-size", o->chunk_size, "Placements per unit of work handed to a rank")
+      ->check(whole_number<long>(1, kMaxChunkSize))
+      ->default_str("16");
+  sub->add_option("--max-placements", o->max_placements,
+                  "Budget: placements evaluated in this run, checked between chunks (exit 3 beyond)")
+      ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
       ->default_str("100000000");
   sub->callback([o, stable, &action] {
     o->stable_under_given = stable->count() > 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "exact/input_error.h"
 
@@ -133,16 +134,21 @@ std::vector<Candidate> arc_length_candidates(const geometry::Shape& shape, long 
   return out;
 }
 
-std::vector<Candidate> lattice_candidates(const geometry::Shape& shape, const Q& pitch, long max_lines) {
-  std::vector<Candidate> out;
-  long lines = 0;
+namespace {
+
+/// Calls emit(point, inward normal) for each lattice point (i pitch, j pitch) on the boundary that is not a polygon
+/// vertex: along each polygon edge in order (a disk's in the order of the lattice lines). BudgetExceeded beyond
+/// `max_lines` lattice lines.
+void scan_lattice(const geometry::Shape& shape, const Q& pitch, long max_lines,
+                  const std::function<void(const Point2&, const Point2&)>& emit) {
+  long lines = 0, found = 0;
   auto count_lines = [&](const Z& from, const Z& to) {
     const Z span = to - from + 1;
     if (span > 0) {
       if (span > max_lines - lines)
         throw exact::BudgetExceeded(
             "lattice pitch " + pitch.get_str() + " scans more than " + std::to_string(max_lines) + " lattice lines",
-            std::to_string(out.size()) + " lattice candidates found");
+            std::to_string(found) + " lattice candidates found");
       lines += span.get_si();
     }
   };
@@ -157,6 +163,10 @@ std::vector<Candidate> lattice_candidates(const geometry::Shape& shape, const Q&
     return r;
   };
   auto on_lattice = [&](const Q& v) { return Q(v / pitch).get_den() == 1; };
+  auto put = [&](const Point2& p, const Point2& normal) {
+    ++found;
+    emit(p, normal);
+  };
   if (const auto* d = std::get_if<DiskShape>(&shape)) {
     const Z lo = ceil_q((d->center.x - d->radius) / pitch), hi = floor_q((d->center.x + d->radius) / pitch);
     count_lines(lo, hi);
@@ -167,36 +177,45 @@ std::vector<Candidate> lattice_candidates(const geometry::Shape& shape, const Q&
       const Q h = rational_length(h2);
       std::vector<Q> ys{d->center.y - h};
       if (sgn(h) > 0) ys.push_back(d->center.y + h);
-      for (const Q& y : ys) {
-        if (!on_lattice(y)) continue;
-        const Point2 p{x, y};
-        out.push_back({p, d->center - p});
-      }
+      for (const Q& y : ys)
+        if (on_lattice(y)) put({x, y}, d->center - Point2{x, y});
     }
-    std::sort(out.begin(), out.end(),
-              [&](const Candidate& a, const Candidate& b) { return before_on_circle(d->center, a.point, b.point); });
-    return out;
+    return;
   }
   const auto& V = std::get<PolygonShape>(shape).vertices;
   for (std::size_t e = 0; e < V.size(); ++e) {
     const Point2& a = V[e];
     const Point2 ab = V[(e + 1) % V.size()] - a;
-    // Scan the lattice lines across the edge's longer extent; t along the edge is exact.
+    // Scan the lattice lines across the edge's longer extent; t along the edge is exact and monotone in the line.
     const bool by_x = abs(ab.x) >= abs(ab.y);
     const Q a0 = by_x ? a.x : a.y, d0 = by_x ? ab.x : ab.y;
     const Q lo_v = std::min(a0, Q(a0 + d0)), hi_v = std::max(a0, Q(a0 + d0));
     const Z lo = ceil_q(lo_v / pitch), hi = floor_q(hi_v / pitch);
     count_lines(lo, hi);
-    std::vector<Q> ts;
-    for (Z i = lo; i <= hi; ++i) {
+    const bool ascending = sgn(d0) > 0;
+    for (Z i = ascending ? lo : hi; ascending ? i <= hi : i >= lo; ascending ? ++i : --i) {
       const Q t = (Q(i) * pitch - a0) / d0;
       if (sgn(t) <= 0 || t >= 1) continue;
       const Point2 p = a + t * ab;
-      if (on_lattice(by_x ? p.y : p.x)) ts.push_back(t);
+      if (on_lattice(by_x ? p.y : p.x)) put(p, geometry::perp(ab));
     }
-    std::sort(ts.begin(), ts.end());
-    for (const Q& t : ts) out.push_back({a + t * ab, geometry::perp(ab)});
   }
+}
+
+}  // namespace
+
+long lattice_candidate_count(const geometry::Shape& shape, const Q& pitch, long max_lines) {
+  long n = 0;
+  scan_lattice(shape, pitch, max_lines, [&](const Point2&, const Point2&) { ++n; });
+  return n;
+}
+
+std::vector<Candidate> lattice_candidates(const geometry::Shape& shape, const Q& pitch, long max_lines) {
+  std::vector<Candidate> out;
+  scan_lattice(shape, pitch, max_lines, [&](const Point2& p, const Point2& normal) { out.push_back({p, normal}); });
+  if (const auto* d = std::get_if<DiskShape>(&shape))
+    std::sort(out.begin(), out.end(),
+              [&](const Candidate& a, const Candidate& b) { return before_on_circle(d->center, a.point, b.point); });
   return out;
 }
 

@@ -37,5 +37,7 @@ std::vector<Candidate> arc_length_candidates(const geometry::Shape& shape, long 
 /// holes of a fixture plate), in boundary order. At most `max_lines` lattice lines are scanned (BudgetExceeded).
 std::vector<Candidate> lattice_candidates(const geometry::Shape& shape, const geometry::Q& pitch,
                                           long max_lines = 1000000);
+/// How many candidates lattice_candidates would give, counted without storing them (the same scan and budget).
+long lattice_candidate_count(const geometry::Shape& shape, const geometry::Q& pitch, long max_lines = 1000000);
 
 }  // namespace contactcert::solvers

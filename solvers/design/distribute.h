@@ -10,7 +10,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace contactcert::solvers {
 
@@ -18,6 +17,9 @@ namespace contactcert::solvers {
 using ChunkWork = std::function<std::optional<std::string>(long chunk, const std::function<bool()>& between)>;
 /// Root only: a finished chunk's result text.
 using ChunkRecord = std::function<void(long chunk, const std::string& result)>;
+/// Root only: the next chunk to hand out, or nullopt when none is left (chunks are produced as they are handed
+/// out, so no list of every chunk is ever built).
+using ChunkSource = std::function<std::optional<long>()>;
 
 class Distributor {
  public:
@@ -28,9 +30,12 @@ class Distributor {
   /// Every rank must call this with the text that identifies its problem (candidates, options): a rank whose text
   /// differs from the root's (e.g. another scene file at the same path on its node) ends the run with exit 2.
   virtual void agree(const std::string& problem) = 0;
-  /// Runs the chunks of `todo` (read on the root only) until all are recorded or `keep_going` (root, polled
+  /// Every rank must call this: the root's `text` on every rank (how the root tells the others of a decision
+  /// only it can make, such as refusing a checkpoint, so that no rank waits for work that never comes).
+  virtual std::string from_root(const std::string& text) = 0;
+  /// Runs the chunks of `next` (called on the root only) until all are recorded or `keep_going` (root, polled
   /// between placements) returns false. Returns true on every rank when every chunk was recorded.
-  virtual bool run(const std::vector<long>& todo, const ChunkWork& work, const ChunkRecord& record,
+  virtual bool run(const ChunkSource& next, const ChunkWork& work, const ChunkRecord& record,
                    const std::function<bool()>& keep_going) = 0;
   /// An error on one rank that the others cannot learn of: MPI prints `message` and ends every rank with `code`
   /// (MPI_Abort; waiting ranks would otherwise hang); serial returns and the caller reports the error.

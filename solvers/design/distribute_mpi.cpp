@@ -45,12 +45,16 @@ class MpiDistributor : public Distributor {
   ~MpiDistributor() override { MPI_Finalize(); }
   int rank() const override { return rank_; }
   int size() const override { return size_; }
-  void agree(const std::string& problem) override {
-    long length = static_cast<long>(problem.size());
+  std::string from_root(const std::string& text) override {
+    long length = static_cast<long>(text.size());
     MPI_Bcast(&length, 1, MPI_LONG, 0, MPI_COMM_WORLD);
     std::string root(static_cast<std::size_t>(length), '\0');
-    if (rank_ == 0) root = problem;
+    if (rank_ == 0) root = text;
     MPI_Bcast(root.data(), static_cast<int>(length), MPI_CHAR, 0, MPI_COMM_WORLD);
+    return root;
+  }
+  void agree(const std::string& problem) override {
+    const std::string root = from_root(problem);
     if (root != problem)
       abort_all("rank " + std::to_string(rank_) + " read another design problem than rank 0 (" + problem + " vs " +
                     root + "): every node needs the same scene and candidate files",
@@ -62,10 +66,11 @@ class MpiDistributor : public Distributor {
     MPI_Abort(MPI_COMM_WORLD, code);
   }
 
-  bool run(const std::vector<long>& todo, const ChunkWork& work, const ChunkRecord& record,
+  bool run(const ChunkSource& next, const ChunkWork& work, const ChunkRecord& record,
            const std::function<bool()>& keep_going) override {
     if (rank_ != 0) return work_loop(work);
-    queue_.assign(todo.begin(), todo.end());
+    next_ = &next;
+    queue_.clear();
     stopping_ = false;
     outstanding_ = 0;
     byes_ = 0;
@@ -74,7 +79,7 @@ class MpiDistributor : public Distributor {
       serve(record, keep_going, false);
       return !stopping_;
     };
-    while (size_ < kRootWorksBelow && !stopping_ && !queue_.empty()) {
+    while (size_ < kRootWorksBelow && !stopping_ && has_work()) {
       const long chunk = queue_.front();
       queue_.pop_front();
       ++outstanding_;
@@ -84,10 +89,10 @@ class MpiDistributor : public Distributor {
         record(chunk, *result);
       else
         queue_.push_front(chunk);
-      if (!keep_going()) stop_all();
+      if (!keep_going()) stop_unless_done();
     }
     while (byes_ < size_ - 1) serve(record, keep_going, true);
-    return !stopping_ && queue_.empty() && outstanding_ == 0;
+    return !stopping_ && !has_work() && outstanding_ == 0;
   }
 
  private:
@@ -116,6 +121,19 @@ class MpiDistributor : public Distributor {
     }
     send_text("", 0, kBye);
     return code == 0;
+  }
+
+  /// Is a chunk left to hand out? The queue holds chunks given back (the root's own, abandoned between
+  /// placements); the source the rest, taken one at a time.
+  bool has_work() {
+    if (queue_.empty())
+      if (const std::optional<long> chunk = (*next_)()) queue_.push_back(*chunk);
+    return !queue_.empty();
+  }
+
+  /// A budget reached: stop, unless its last chunk has just been recorded (then every rank ends with the result).
+  void stop_unless_done() {
+    if (outstanding_ > 0 || has_work()) stop_all();
   }
 
   void stop_all() {
@@ -153,10 +171,10 @@ class MpiDistributor : public Distributor {
         const std::size_t nl = text.find('\n');
         --outstanding_;
         record(std::atol(text.substr(0, nl).c_str()), text.substr(nl + 1));
-        if (!keep_going()) stop_all();
+        if (!keep_going()) stop_unless_done();
       }
       if (stop_sent_[static_cast<std::size_t>(from)]) continue;
-      if (stopping_ || queue_.empty()) {
+      if (stopping_ || !has_work()) {
         send_stop(from);
         continue;
       }
@@ -167,6 +185,7 @@ class MpiDistributor : public Distributor {
   }
 
   int rank_ = 0, size_ = 1;
+  const ChunkSource* next_ = nullptr;
   std::deque<long> queue_;
   std::vector<bool> stop_sent_;
   bool stopping_ = false;

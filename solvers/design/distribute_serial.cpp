@@ -15,17 +15,19 @@ class SerialDistributor : public Distributor {
  public:
   int rank() const override { return 0; }
   int size() const override { return 1; }
-  bool run(const std::vector<long>& todo, const ChunkWork& work, const ChunkRecord& record,
+  bool run(const ChunkSource& next, const ChunkWork& work, const ChunkRecord& record,
            const std::function<bool()>& keep_going) override {
-    for (long chunk : todo) {
+    for (;;) {
+      const std::optional<long> chunk = next();
+      if (!chunk) return true;
       if (!keep_going()) return false;
-      const std::optional<std::string> result = work(chunk, keep_going);
+      const std::optional<std::string> result = work(*chunk, keep_going);
       if (!result) return false;
-      record(chunk, *result);
+      record(*chunk, *result);
     }
-    return true;
   }
   void agree(const std::string&) override {}
+  std::string from_root(const std::string& text) override { return text; }
   void abort_all(const std::string&, int) override {}
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
@@ -28,6 +29,24 @@ Placement placement_at(long index, long n, int k) {
     p.push_back(static_cast<int>(a++));
   }
   return p;
+}
+
+long placement_index(const Placement& p, long n) {
+  const int k = static_cast<int>(p.size());
+  long index = 0, lo = 0;
+  for (int s = 0; s < k; ++s) {
+    const long a = p[static_cast<std::size_t>(s)];
+    index += placement_count(n - lo, k - s) - placement_count(n - a, k - s);
+    lo = a + 1;
+  }
+  return index;
+}
+
+long chunk_count(long total, long size) { return total / size + (total % size != 0 ? 1 : 0); }
+
+long chunk_length(long chunk, long size, long total) {
+  const long first = chunk * size;  // chunk < chunk_count(total, size): below total, no overflow
+  return std::min(size, total - first);
 }
 
 bool ranks_before(const Ranked& a, const Ranked& b) {
@@ -60,7 +79,7 @@ void DesignStatistics::add(const DesignStatistics& o) {
 ChunkResult run_chunk(const DesignProblem& problem, const CandidateSymmetry& symmetry, long chunk, long size,
                       long total, std::size_t k, const std::function<bool()>& between, bool* complete) {
   ChunkResult out{TopK(k), {}};
-  const long first = chunk * size, last = std::min(total, first + size);
+  const long first = chunk * size, last = first + chunk_length(chunk, size, total);
   const long n = static_cast<long>(problem.candidates.size());
   Placement p = placement_at(first, n, problem.fixels);
   *complete = true;
@@ -94,11 +113,32 @@ std::string chunk_result_text(const ChunkResult& r) {
   return nlohmann::json{{"top", top}, {"by_status", by}, {"lps", r.statistics.lps}}.dump();
 }
 
+bool figure_from_text(std::string_view text, exact::Q& out) {
+  std::size_t i = text.size() > 0 && text[0] == '-' ? 1 : 0;
+  const std::size_t slash = text.find('/');
+  const std::string_view num = text.substr(i, slash == std::string_view::npos ? text.npos : slash - i);
+  const std::string_view den = slash == std::string_view::npos ? std::string_view() : text.substr(slash + 1);
+  auto digits = [](std::string_view d) {
+    return !d.empty() && d.find_first_not_of("0123456789") == std::string_view::npos && (d[0] != '0' || d.size() == 1);
+  };
+  if (!digits(num) || (slash != std::string_view::npos && !digits(den))) return false;
+  if (mpq_set_str(out.get_mpq_t(), std::string(text).c_str(), 10) != 0 || sgn(out.get_den()) == 0) return false;
+  const exact::Z den_before = out.get_den();
+  out.canonicalize();
+  // The lowest-terms form: nothing cancelled, a denominator above 1, no "-0".
+  return out.get_den() == den_before && (slash == std::string_view::npos || out.get_den() != 1) &&
+         !(i == 1 && sgn(out) == 0);
+}
+
 ChunkResult parse_chunk_result(const std::string& text, std::size_t k) {
   const nlohmann::json j = nlohmann::json::parse(text);  // written by chunk_result_text
   ChunkResult out{TopK(k), {}};
-  for (const auto& x : j.at("top"))
-    out.top.offer({x.at("placement").get<Placement>(), exact::parse_rational(x.at("figure").get<std::string>())});
+  for (const auto& x : j.at("top")) {
+    exact::Q figure;
+    if (!figure_from_text(x.at("figure").get<std::string>(), figure))
+      throw std::logic_error("a chunk result with a malformed figure");
+    out.top.offer({x.at("placement").get<Placement>(), figure});
+  }
   for (int i = 0; i < kPlacementStatusCount; ++i) out.statistics.by_status[i] = j.at("by_status").at(i).get<long>();
   out.statistics.lps = j.at("lps").get<long>();
   return out;

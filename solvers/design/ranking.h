@@ -7,6 +7,7 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "solvers/design/evaluate.h"
@@ -18,6 +19,16 @@ long placement_count(long n, int k);
 
 /// The placement with lexicographic index `index` among the k-subsets of {0..n-1}.
 Placement placement_at(long index, long n, int k);
+
+/// The lexicographic index of a placement (increasing indices in [0, n)): the inverse of placement_at. Slot s
+/// skips the subsets led by each a in (previous, p_s), sum_a C(n-1-a, k-1-s) = C(n-lo, k-s) - C(n-p_s, k-s)
+/// (hockey stick), so the index costs k binomials, not n.
+long placement_index(const Placement& p, long n);
+
+/// Chunks of `size` consecutive placements covering `total`: ceil(total / size), without overflow.
+long chunk_count(long total, long size);
+/// Placements in chunk `chunk`: [chunk size, min(total, (chunk + 1) size)), as their count.
+long chunk_length(long chunk, long size, long total);
 
 /// An accepted placement and its figure.
 struct Ranked {
@@ -64,8 +75,13 @@ struct ChunkResult {
 ChunkResult run_chunk(const DesignProblem& problem, const CandidateSymmetry& symmetry, long chunk, long size,
                       long total, std::size_t k, const std::function<bool()>& between, bool* complete);
 
-/// Text form of a chunk result (exact figures as strings), for messages between ranks and checkpoints.
+/// Text form of a chunk result (exact figures as strings), for the messages between ranks.
 std::string chunk_result_text(const ChunkResult& r);
+/// The chunk result of chunk_result_text's text (internal: figures of any length, no input limits).
 ChunkResult parse_chunk_result(const std::string& text, std::size_t k);
+
+/// A figure as exact::to_string writes it ("-7/20", "3"), of any length; false unless text is exactly that form.
+/// Internal figures are read back here, never by the input parser and its digit limit.
+bool figure_from_text(std::string_view text, exact::Q& out);
 
 }  // namespace contactcert::solvers

@@ -23,7 +23,7 @@ expect_2() {
 echo '{"candidates": [[1, 0], [2, "1/2"], [1, 1]]}' > off_boundary.json
 expect_2 "--candidates: at least 3 candidate points" "$pentagon" --candidates 1 --stable-under 0,-1,0
 expect_2 "--candidates: at least 2 candidate points" "$pentagon" --candidates 1 --fixels 2 --stable-under 0,-1,0
-expect_2 "--fixels: 2 or 3 fixels" "$pentagon" --candidates 8 --fixels 4 --stable-under 0,-1,0
+expect_2 "--fixels: expected a decimal integer from 2 to 3" "$pentagon" --candidates 8 --fixels 4 --stable-under 0,-1,0
 expect_2 "--stable-under: a non-empty wrench set" "$pentagon" --candidates 8 --stable-under ""
 expect_2 "--stable-under: a non-empty wrench set" "$pentagon" --candidates 8 --stable-under "cone:"
 expect_2 'off_boundary.json: $.candidates[2]: a point on the polygon boundary' "$pentagon" --candidates off_boundary.json --stable-under 0,-1,0

@@ -2,6 +2,7 @@
 // of the top K (independent of how the placements were split), symmetry, chunk results as text.
 #include <gtest/gtest.h>
 
+#include "exact/input_error.h"
 #include "solvers/design/candidates.h"
 #include "solvers/design/ranking.h"
 #include "solvers/design/symmetry.h"
@@ -54,6 +55,21 @@ TEST(DesignCandidates, LatticePointsOfACircle) {
   EXPECT_EQ(c.size(), 12u);
   EXPECT_EQ(c[0].point, (Point2{5, 0}));  // counter-clockwise from angle 0
   EXPECT_EQ(c[1].point, (Point2{4, 3}));
+}
+
+TEST(DesignCandidates, LatticeCountIsTheCandidatesWithoutStoringThem) {
+  const geometry::Shape disk = geometry::DiskShape{{Q(0), Q(0)}, Q(5)};
+  EXPECT_EQ(lattice_candidate_count(disk, Q(1)), 12);
+  for (const Q& pitch : {Q(1), Q(1, 2), Q(1, 3), Q(2, 7)}) {
+    const auto c = lattice_candidates(pawl(), pitch);
+    EXPECT_EQ(lattice_candidate_count(pawl(), pitch), static_cast<long>(c.size())) << pitch;
+    for (std::size_t i = 0; i < c.size(); ++i) EXPECT_TRUE(candidate_at(pawl(), c[i].point).message.empty());
+  }
+  // Points in boundary order along each edge: on the bottom edge (0, 0) -> (7, 0), x increases.
+  const auto c = lattice_candidates(pawl(), Q(1));
+  EXPECT_EQ(c[0].point, (Point2{1, 0}));
+  EXPECT_EQ(c[5].point, (Point2{6, 0}));
+  EXPECT_THROW(lattice_candidate_count(pawl(), Q(1, 1000000), 1000), exact::BudgetExceeded);
 }
 
 TEST(DesignPlacements, UnrankingIsLexicographic) {
