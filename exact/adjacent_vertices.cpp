@@ -55,13 +55,18 @@ AdjacentResult<T> adjacent_vertices(const LpProblem<T>& problem, const std::vect
                                     const AdjacencyOptions& options) {
   for (Index j = 0; j < problem.cols(); ++j)
     if (problem.free(j)) throw std::invalid_argument("adjacent_vertices: free variables are not allowed");
-  std::optional<SimplexTableau<T>> start = SimplexTableau<T>::from_basis(problem.A, problem.b, basis);
-  if (!start) throw std::invalid_argument("adjacent_vertices: not a basis of A x = b");
-  const SimplexTableau<T>& tab = *start;
-  for (Index r = 0; r < tab.rows(); ++r)
-    if (exact::is_negative(tab.rhs(r))) throw std::invalid_argument("adjacent_vertices: basis is not feasible");
-
   AdjacentResult<T> res;
+  std::optional<SimplexTableau<T>> start = SimplexTableau<T>::from_basis(problem.A, problem.b, basis);
+  const auto infeasible = [](const SimplexTableau<T>& t) {
+    for (Index r = 0; r < t.rows(); ++r)
+      if (exact::is_negative(t.rhs(r))) return true;
+    return false;
+  };
+  if (!start || infeasible(*start)) {
+    res.status = AdjacencyStatus::kBasisNotFeasible;
+    return res;
+  }
+  const SimplexTableau<T>& tab = *start;
   res.vertex = tab.primal();
   res.vertex_bases.push_back(sorted(tab.basis()));
   const Index n = problem.cols(), m = tab.rows();

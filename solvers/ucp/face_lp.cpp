@@ -93,7 +93,7 @@ std::vector<FaceVertex<T>> adjacent_on_face(const Face<T>& F, const FaceVertex<T
   exact::AdjacencyOptions ao;
   ao.max_bases = max_bases;
   const exact::AdjacentResult<T> adj = exact::adjacent_vertices<T>(lp, v.basis, ao);
-  if (adj.status == exact::AdjacencyStatus::kBudgetExceeded) ++count.incomplete_adjacencies;
+  if (adj.status != exact::AdjacencyStatus::kComplete) ++count.incomplete_adjacencies;
   for (const auto& e : adj.edges)
     if (e.bounded) out.push_back({expand(F, e.neighbour), e.neighbour_basis});
   return out;

@@ -18,7 +18,8 @@ using exact::Arith;
 struct LpCounters {
   long lps = 0;                     ///< linear programs solved
   long adjacencies = 0;             ///< adjacent-vertex enumerations (Step 3)
-  long incomplete_adjacencies = 0;  ///< enumerations cut short by the basis budget at a degenerate vertex
+  long incomplete_adjacencies = 0;  ///< enumerations cut short by the basis budget at a degenerate vertex, or
+                                    ///< whose float basis T's own tableau found infeasible (no edges then)
 };
 
 /// The face of P where the columns in `zero` are fixed to 0, as a smaller standard-form polyhedron.

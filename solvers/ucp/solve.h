@@ -58,7 +58,7 @@ struct UcpReport {
   std::optional<PhysicalSolution> physical;   ///< quasistatic problems, kSolvable
   std::optional<ConditionsCheck> conditions;  ///< (2)-(10) checked exactly on `physical`
   long pairs = 0, lps = 0, nodes = 0, learned_prunes = 0;
-  long incomplete_adjacencies = 0;  ///< Step 3 enumerations cut short by max_bases
+  long incomplete_adjacencies = 0;  ///< Step 3 enumerations cut short by max_bases or by a float basis (face_lp.h)
   long solutions = -1;              ///< enumerate: solution modes (-1 = not counted)
   std::vector<std::string> solution_modes;
   std::optional<SearchResult<Q>> proof;  ///< kJammed on an exact path: the tree for the certificate

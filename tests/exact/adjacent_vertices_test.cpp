@@ -144,7 +144,8 @@ TEST(AdjacentVertices, SquarePyramidApexHasFourNeighbours) {
   EXPECT_TRUE(res.rays().empty());
   check_polyhedron(A, b);
   // The float path finds the same four neighbours.
-  const AdjacentResult<double> f = adjacent_vertices(LpProblem<double>{to_double(A), to_double(b), {}, {}}, {0, 1, 2, 3});
+  const AdjacentResult<double> f =
+      adjacent_vertices(LpProblem<double>{to_double(A), to_double(b), {}, {}}, {0, 1, 2, 3});
   EXPECT_EQ(f.neighbours().size(), 4u);
   // A budget of one intermediate ray cannot see all edges of the apex; the single pivots remain.
   const AdjacentResult<Q> cut = adjacent_vertices(p, {0, 1, 2, 3}, {.max_bases = 1});
@@ -179,7 +180,11 @@ TEST(AdjacentVertices, RaysOfAnUnboundedPolyhedron) {
   ASSERT_EQ(res.rays().size(), 1u);
   EXPECT_EQ(res.rays()[0], (Vec<Q>(vec({1, 1, 0}))));
   check_polyhedron(A, b);
-  EXPECT_THROW(adjacent_vertices(LpProblem<Q>{A, vec({-1}), {}, {}}, {0}), std::invalid_argument);
+  // x_0 = -1 < 0 and a singular basis: statuses, no edges, no exception
+  EXPECT_EQ(adjacent_vertices(LpProblem<Q>{A, vec({-1}), {}, {}}, {0}).status, AdjacencyStatus::kBasisNotFeasible);
+  const AdjacentResult<Q> singular = adjacent_vertices(LpProblem<Q>{mat({{1, 1, 0}}), vec({1}), {}, {}}, {2});
+  EXPECT_EQ(singular.status, AdjacencyStatus::kBasisNotFeasible);
+  EXPECT_TRUE(singular.edges.empty());
 }
 
 // Random small polyhedra, degenerate by construction (b = A x0 with sparse x0, repeated rows), bounded and
