@@ -4,9 +4,9 @@
 // wrench from the push point.
 #include <sstream>
 
-#include "geometry/scene_json.h"
 #include "solvers/design/candidates.h"
 #include "solvers/design/goal_certificate.h"
+#include "solvers/stability/frame_check.h"
 #include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers {
@@ -67,7 +67,10 @@ GoalCertificateCheck check_goal_certificate(const exact::JsonInput& c) {
   const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
   if (c.at("problem_sha256").string() != embedded.canonical_sha256())
     return {false, "problem_sha256 is not the digest of the embedded scene"};
-  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
+  // The frames are the checker's own (frame_check.h), never the solvers'.
+  const frame_check::CheckedSceneRead read = frame_check::read_checked_scene(embedded);
+  if (!read.violation.empty()) return {false, read.violation};
+  const geometry::PlanarScene& scene = read.scene;
   const std::size_t k = scene.fixels.size();
   if (k != 2 && k != 3)
     return {false, "G_goal is defined for 2 or 3 fixels (eq. 21, Table 5), found " + std::to_string(k)};
