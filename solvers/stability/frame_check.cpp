@@ -89,8 +89,10 @@ std::string polygon_closest_violation(const std::vector<Point2>& V, const Point2
     const Point2 q = closest_on_segment(V[i], V[(i + 1) % V.size()], f);
     const Q d2 = geometry::norm2(f - q);
     if (d2 < gap2 || (d2 == gap2 && !(q == p)))
-      return "the point " + text(q) + " of edge " + std::to_string(i) + " is " + (d2 < gap2 ? "closer" : "as close") +
-             " to the fixel at " + text(f) + " than " + text(p);
+      return "the point " + text(q) + " of edge " + std::to_string(i) + " is " +
+             (d2 < gap2 ? "closer to the fixel at " + text(f) + " than "
+                        : "as close to the fixel at " + text(f) + " as ") +
+             text(p);
   }
   return "";
 }
