@@ -4,7 +4,6 @@
 // wrench from the push point.
 #include <sstream>
 
-#include "solvers/design/candidates.h"
 #include "solvers/design/goal_certificate.h"
 #include "solvers/stability/frame_check.h"
 #include "solvers/stability/table2_rows_check.h"
@@ -47,11 +46,16 @@ std::vector<std::pair<std::string, std::string>> goal_sets_as_printed(std::size_
   return out;
 }
 
-/// Is g a positive multiple of the frictionless push (n, (p - com) x n) at boundary point p? Empty if so.
+/// Is g a positive multiple of the frictionless push (n, (p - com) x n) at boundary point p? Empty if so. The normal
+/// is the checker's own (frame_check.h): that of a fixel touching at p.
 std::string push_mismatch(const geometry::Workpiece& w, const geometry::Point2& p, const Vec<Q>& g) {
-  const CandidateCheck at = candidate_at(w.shape, p);
-  if (!at.message.empty()) return "the push point is not " + at.message;
-  const geometry::Point2& n = at.candidate.normal;
+  const geometry::FrameResult at = frame_check::checked_frame(w.shape, {p, {}, {}, {}});
+  if (at.status == geometry::FrameStatus::kNormalNotUnique)
+    return "the push point is not a boundary point that is not a polygon vertex (" + at.message + ")";
+  if (at.status != geometry::FrameStatus::kOk || !at.frame.touching())
+    return std::string("the push point is not a point on the ") +
+           (std::holds_alternative<geometry::DiskShape>(w.shape) ? "disk" : "polygon") + " boundary";
+  const geometry::Point2& n = at.frame.normal;
   Vec<Q> push(3);
   push << n.x, n.y, geometry::cross(p - w.com, n);
   const Q scale = g.dot(push) / push.dot(push);
