@@ -15,6 +15,7 @@
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
 #include "solvers/stability/contact_modes.h"
+#include "solvers/ucp/problem.h"
 
 namespace contactcert::solvers {
 namespace {
@@ -119,6 +120,22 @@ TEST(FrameCheck, ReadsTheScenesFramesItself) {
   read = frame_check::read_checked_scene(exact::JsonInput::parse(L + R"({"position":[1,1]}]})", "L"));
   EXPECT_NE(read.violation.find("fixel 0"), std::string::npos) << read.violation;
   EXPECT_NE(read.violation.find("inside"), std::string::npos) << read.violation;
+}
+
+TEST(FrameCheck, BuildsQuasistaticScenesWithItsOwnFrames) {
+  const std::string qs = R"({"kind":"quasistatic_scene","workpiece":{"shape":{"type":"polygon",
+    "vertices":[[0,0],[4,0],[4,1],[2,1],[2,3],[0,3]]}},"gravity":[-2,1],"contacts":[)";
+  const exact::JsonInput right = exact::JsonInput::parse(qs + R"({"position":[0,1],"mu":"1/3"},
+    {"point":[0,2],"normal":[1,0],"mu":"1/3"}]})",
+                                                         "qs");
+  const ucp::UcpProblem checked = ucp::read_ucp_problem(right, nullptr, frame_check::checked_frame);
+  EXPECT_EQ(ucp::to_json_text(checked), ucp::to_json_text(ucp::read_ucp_problem(right)));
+  // W^T's first row is contact 0's (n, r x n) = (3, 0, (0,1) x (3,0)) = (3, 0, -3).
+  EXPECT_EQ(checked.quasistatic->P(0, 0), Q(3));
+  EXPECT_EQ(checked.quasistatic->P(0, 2), Q(-3));
+  const exact::JsonInput inner =
+      exact::JsonInput::parse(qs + R"({"point":[0,1],"normal":[0,-2],"mu":"1/3"}]})", "qs_inner");
+  EXPECT_THROW(ucp::read_ucp_problem(inner, nullptr, frame_check::checked_frame), exact::InputError);
 }
 
 // ---- seeded random star-shaped polygons against a brute-force oracle ----
