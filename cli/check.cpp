@@ -12,9 +12,9 @@
 #include "cli/results.h"
 #include "exact/json_input.h"
 #include "exact/sha256.h"
-#include "geometry/scene_json.h"
 #include "solvers/design/goal_certificate.h"
 #include "solvers/stability/contact_modes.h"
+#include "solvers/stability/frame_check.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/ucp/certificate.h"
 #include "solvers/ucp/problem.h"
@@ -49,11 +49,13 @@ exact::JsonInput embedded_problem(const exact::JsonInput& cert, const std::strin
 }
 
 /// The canonical text of the problem file `path` as the certificate kind reads it: a UCP problem through its
-/// reader and writer (so equal problems compare equal whatever their spelling), a scene as its canonical JSON.
+/// reader (a quasistatic_scene with the checker's frames) and writer (so equal problems compare equal whatever their
+/// spelling), a scene as its canonical JSON.
 std::string problem_file_text(const std::string& path, const std::string& kind) {
   const exact::JsonInput in = exact::JsonInput::load(path);
   if (embeds_scene(kind)) return in.canonical_text();
-  const std::string text = solvers::ucp::to_json_text(solvers::ucp::read_ucp_problem(in));
+  const std::string text =
+      solvers::ucp::to_json_text(solvers::ucp::read_ucp_problem(in, nullptr, solvers::frame_check::checked_frame));
   return exact::JsonInput::parse(text, path).canonical_text();
 }
 
@@ -61,7 +63,7 @@ std::string problem_file_text(const std::string& path, const std::string& kind) 
 /// from its z. The certificate's own readable "contacts" and "acceleration", if any, must be exactly these, else
 /// it is INVALID.
 void cone_view(const exact::JsonInput& cert, const solvers::ConeCertificateCheck& checked, CheckOutcome& c) {
-  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded_problem(cert, c.kind));
+  const geometry::PlanarScene scene = solvers::frame_check::read_checked_scene(embedded_problem(cert, c.kind)).scene;
   const exact::Vec<exact::Q> g = cert.at("wrench").rational_vector(3);
   const json view = witness_json(scene, checked.touching, checked.forces, g);
   c.details["witness"] = view;
@@ -135,7 +137,7 @@ void add_contacts(const exact::JsonInput& evidence, const std::string& key, cons
 /// The world forces of a valid stability certificate's resting and moving witnesses, in details and text.
 void stability_view(const exact::JsonInput& cert, CheckOutcome& c) {
   const exact::JsonInput embedded = embedded_problem(cert, c.kind);
-  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
+  const geometry::PlanarScene scene = solvers::frame_check::read_checked_scene(embedded).scene;
   std::vector<Eigen::Index> touching;
   solvers::touching_scene(scene, &touching);
   const exact::Vec<exact::Q> g = cert.at("wrench").rational_vector(3);

@@ -43,6 +43,22 @@ FrameResult disk_frame(const DiskShape& disk, const Point2& f) {
   return {FrameStatus::kOk, {disk.center + Q(disk.radius / len) * d, disk.center - f, gap * gap}, {}};
 }
 
+/// Whether p lies on the closed segment [a, b]: collinear with it and between its ends.
+bool on_segment(const Point2& a, const Point2& b, const Point2& p) {
+  const Point2 e = b - a;
+  if (sgn(Q(cross(e, p - a))) != 0) return false;
+  const Q s = dot(p - a, e);
+  return sgn(s) >= 0 && s <= norm2(e);
+}
+
+/// The index of the first edge (V[i], V[i+1]) whose segment holds p, or V.size() if none does.
+std::size_t edge_holding(const std::vector<Point2>& V, const Point2& p) {
+  const std::size_t n = V.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (on_segment(V[i], V[(i + 1) % n], p)) return i;
+  return n;
+}
+
 FrameResult polygon_frame(const std::vector<Point2>& V, const Point2& f) {
   const std::size_t n = V.size();
   const ShapeLocation where = locate_in_shape(PolygonShape{V}, f);
@@ -55,10 +71,10 @@ FrameResult polygon_frame(const std::vector<Point2>& V, const Point2& f) {
         return failure(FrameStatus::kNormalNotUnique,
                        "fixel at " + text(f) + " touches polygon vertex " + std::to_string(i) +
                            ", where the contact normal is not unique; give an explicit contact {point, normal, gap}");
-    for (std::size_t i = 0; i < n; ++i) {
-      const Point2 e = V[(i + 1) % n] - V[i];
-      if (sgn(Q(cross(e, f - V[i]))) == 0) return {FrameStatus::kOk, {f, perp(e), Q(0)}, {}};
-    }
+    // Not a vertex, so exactly one edge segment of the simple polygon holds f (a line through another edge may
+    // pass through f on a non-convex polygon: only the segment counts).
+    const std::size_t i = edge_holding(V, f);
+    return {FrameStatus::kOk, {f, perp(V[(i + 1) % n] - V[i]), Q(0)}, {}};
   }
   // Outside: the closest point of every edge; it must be the same point for all minimising edges.
   Q best = -1;
@@ -93,27 +109,28 @@ bool in_cone2(const Point2& u, const Point2& v, const Point2& x) {
   return sgn(Q(cross(u, x))) >= 0 && sgn(Q(cross(x, v))) >= 0;
 }
 
+// At vertex i the contact normal may be any non-zero n in pos(u, v), u and v the inward normals of the two edges
+// that meet there: the normal forces the two edges can exert, at a convex vertex (cross(u, v) > 0) and at a reflex
+// one (cross(u, v) < 0) alike. On the inside of an edge segment it is a positive multiple of the edge's inward
+// normal. The caller has checked that p is on the boundary.
 std::string check_polygon_normal(const std::vector<Point2>& V, const Point2& p, const Point2& nrm) {
   const std::size_t n = V.size();
   for (std::size_t i = 0; i < n; ++i) {
     if (!(V[i] == p)) continue;
     const Point2 u = perp(V[i] - V[(i + n - 1) % n]);  // inward normal of the edge ending at vertex i
     const Point2 v = perp(V[(i + 1) % n] - V[i]);      // inward normal of the edge starting there
-    const bool convex = sgn(Q(cross(u, v))) > 0;
-    const bool ok = convex ? in_cone2(u, v, nrm) : (sgn(Q(dot(nrm, u))) >= 0 || sgn(Q(dot(nrm, v))) >= 0);
-    if (!ok) return "a normal that points into the polygon at vertex " + std::to_string(i);
+    const bool ok = sgn(Q(cross(u, v))) > 0 ? in_cone2(u, v, nrm) : in_cone2(v, u, nrm);
+    if (!ok)
+      return "a normal that points into the polygon at vertex " + std::to_string(i) + ", in the cone of " + text(u) +
+             " and " + text(v);
     return {};
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point2 e = V[(i + 1) % n] - V[i];
-    if (sgn(Q(cross(e, p - V[i]))) != 0) continue;
-    const Point2 in = perp(e);
-    if (sgn(Q(cross(in, nrm))) != 0 || sgn(Q(dot(in, nrm))) <= 0)
-      return "a normal perpendicular to edge " + std::to_string(i) +
-             " and pointing into the polygon, a positive multiple of " + text(in);
-    return {};
-  }
-  return "a point on the polygon boundary";
+  const std::size_t i = edge_holding(V, p);
+  const Point2 in = perp(V[(i + 1) % n] - V[i]);
+  if (sgn(Q(cross(in, nrm))) != 0 || sgn(Q(dot(in, nrm))) <= 0)
+    return "a normal perpendicular to edge " + std::to_string(i) +
+           " and pointing into the polygon, a positive multiple of " + text(in);
+  return {};
 }
 
 }  // namespace
@@ -138,6 +155,11 @@ FrameResult frame_from_contact(const Shape& shape, const Point2& point, const Po
     if (!why.empty()) return failure(FrameStatus::kNormalNotUnique, why);
   }
   return {FrameStatus::kOk, {point, normal, gap * gap}, {}};
+}
+
+FrameResult frame_of(const Shape& shape, const FrameInput& given) {
+  if (given.position) return frame_from_position(shape, *given.position);
+  return frame_from_contact(shape, given.point, given.normal, given.gap);
 }
 
 }  // namespace contactcert::geometry

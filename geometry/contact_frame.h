@@ -4,6 +4,7 @@
 // not change when a frame (n, t) is scaled by a positive factor.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "geometry/workpiece.h"
@@ -35,11 +36,24 @@ struct FrameResult {
   std::string message;  ///< empty when kOk
 };
 
+/// What a scene file gives for one fixel (SPEC section 3): its position, or an explicit contact.
+struct FrameInput {
+  std::optional<Point2> position;  ///< the "position" form; the fields below are then unused
+  Point2 point, normal;            ///< the explicit contact's workpiece point and inward normal
+  Q gap;                           ///< the explicit contact's gap, >= 0
+};
+
+/// A way of turning what the file gives into a frame: frame_of (the solvers'), or a certificate checker's own.
+using FrameRule = FrameResult (*)(const Shape& shape, const FrameInput& given);
+
 /// The frame of a fixel at `fixel` (SPEC section 3, "position" form).
 FrameResult frame_from_position(const Shape& shape, const Point2& fixel);
 
 /// Checks an explicit contact (SPEC section 3, "point"/"normal"/"gap" form): the point lies on the
 /// boundary, the normal is non-zero and points into the workpiece. Returns the frame or why not.
 FrameResult frame_from_contact(const Shape& shape, const Point2& point, const Point2& normal, const Q& gap);
+
+/// frame_from_position or frame_from_contact, as the file gives the fixel.
+FrameResult frame_of(const Shape& shape, const FrameInput& given);
 
 }  // namespace contactcert::geometry

@@ -62,10 +62,10 @@ Workpiece read_workpiece(const JsonInput& node) {
   return w;
 }
 
-PlanarScene read_planar_scene(const JsonInput& root) {
+PlanarSceneInput read_planar_scene_input(const JsonInput& root) {
   if (root.at("kind").string() != "planar") root.at("kind").fail("\"planar\" (a planar fixture scene)");
   root.expect_keys({"kind", "name", "description", "workpiece", "fixels", "mu_s", "mu_k"});
-  PlanarScene scene;
+  PlanarSceneInput scene;
   scene.workpiece = read_workpiece(root.at("workpiece"));
   const auto mu_s = root.find("mu_s");
   const auto mu_k = root.find("mu_k");
@@ -74,23 +74,17 @@ PlanarScene read_planar_scene(const JsonInput& root) {
   const JsonInput fixels = root.at("fixels");
   for (const JsonInput& f : fixels.elements()) {
     f.expect_keys({"name", "position", "point", "normal", "gap", "mu_s", "mu_k"});
-    Fixel fixel;
-    FrameResult frame;
+    FixelInput fixel;
     if (const auto pos = f.find("position")) {
       if (f.find("point") || f.find("normal") || f.find("gap"))
         f.fail("either \"position\" or an explicit contact {point, normal, gap}, not both");
-      fixel.position = read_point(*pos);
-      frame = frame_from_position(scene.workpiece.shape, *fixel.position);
-      if (frame.status != FrameStatus::kOk) pos->fail(frame.message);
+      fixel.given.position = read_point(*pos);
     } else {
-      const Point2 point = read_point(f.at("point"));
-      const Point2 normal = read_point(f.at("normal"));
+      fixel.given.point = read_point(f.at("point"));
+      fixel.given.normal = read_point(f.at("normal"));
       const auto gap_node = f.find("gap");
-      const Q gap = gap_node ? read_nonnegative(*gap_node) : Q(0);
-      frame = frame_from_contact(scene.workpiece.shape, point, normal, gap);
-      if (frame.status != FrameStatus::kOk) f.fail(frame.message);
+      fixel.given.gap = gap_node ? read_nonnegative(*gap_node) : Q(0);
     }
-    fixel.frame = frame.frame;
     const auto s = f.find("mu_s");
     const auto k = f.find("mu_k");
     if (s) {
@@ -104,6 +98,19 @@ PlanarScene read_planar_scene(const JsonInput& root) {
     scene.fixels.push_back(fixel);
   }
   if (scene.fixels.empty()) fixels.fail("at least one fixel");
+  return scene;
+}
+
+PlanarScene read_planar_scene(const JsonInput& root) {
+  const PlanarSceneInput in = read_planar_scene_input(root);
+  const std::vector<JsonInput> nodes = root.at("fixels").elements();
+  PlanarScene scene{in.workpiece, {}};
+  for (std::size_t i = 0; i < in.fixels.size(); ++i) {
+    const FixelInput& f = in.fixels[i];
+    const FrameResult frame = frame_of(in.workpiece.shape, f.given);
+    if (frame.status != FrameStatus::kOk) (f.given.position ? nodes[i].at("position") : nodes[i]).fail(frame.message);
+    scene.fixels.push_back({frame.frame, f.mu_s, f.mu_k, f.given.position});
+  }
   return scene;
 }
 

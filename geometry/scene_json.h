@@ -9,6 +9,22 @@
 
 namespace contactcert::geometry {
 
+/// A fixel as its scene file gives it, before its frame is derived.
+struct FixelInput {
+  FrameInput given;
+  Q mu_s, mu_k;  ///< its own, else the scene's; mu_k defaults to mu_s
+};
+
+/// A planar scene as its file gives it: the workpiece and what each fixel's frame is to be derived from.
+struct PlanarSceneInput {
+  Workpiece workpiece;
+  std::vector<FixelInput> fixels;
+};
+
+/// Parses a planar scene without deriving its frames (a certificate checker derives them itself). Throws
+/// exact::InputError on any invalid field, as read_planar_scene does, but for the frames.
+PlanarSceneInput read_planar_scene_input(const exact::JsonInput& root);
+
 /// Parses a planar scene from its JSON root. Throws exact::InputError on any invalid field: a
 /// degenerate or clockwise polygon, a non-positive radius, mass or inertia, a fixel inside the
 /// workpiece, a fixel whose closest point or normal is not unique, a disk fixel at irrational

@@ -4,9 +4,8 @@
 // wrench from the push point.
 #include <sstream>
 
-#include "geometry/scene_json.h"
-#include "solvers/design/candidates.h"
 #include "solvers/design/goal_certificate.h"
+#include "solvers/stability/frame_check.h"
 #include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers {
@@ -47,11 +46,16 @@ std::vector<std::pair<std::string, std::string>> goal_sets_as_printed(std::size_
   return out;
 }
 
-/// Is g a positive multiple of the frictionless push (n, (p - com) x n) at boundary point p? Empty if so.
+/// Is g a positive multiple of the frictionless push (n, (p - com) x n) at boundary point p? Empty if so. The normal
+/// is the checker's own (frame_check.h): that of a fixel touching at p.
 std::string push_mismatch(const geometry::Workpiece& w, const geometry::Point2& p, const Vec<Q>& g) {
-  const CandidateCheck at = candidate_at(w.shape, p);
-  if (!at.message.empty()) return "the push point is not " + at.message;
-  const geometry::Point2& n = at.candidate.normal;
+  const geometry::FrameResult at = frame_check::checked_frame(w.shape, {p, {}, {}, {}});
+  if (at.status == geometry::FrameStatus::kNormalNotUnique)
+    return "the push point is not a boundary point that is not a polygon vertex (" + at.message + ")";
+  if (at.status != geometry::FrameStatus::kOk || !at.frame.touching())
+    return std::string("the push point is not a point on the ") +
+           (std::holds_alternative<geometry::DiskShape>(w.shape) ? "disk" : "polygon") + " boundary";
+  const geometry::Point2& n = at.frame.normal;
   Vec<Q> push(3);
   push << n.x, n.y, geometry::cross(p - w.com, n);
   const Q scale = g.dot(push) / push.dot(push);
@@ -67,7 +71,10 @@ GoalCertificateCheck check_goal_certificate(const exact::JsonInput& c) {
   const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
   if (c.at("problem_sha256").string() != embedded.canonical_sha256())
     return {false, "problem_sha256 is not the digest of the embedded scene"};
-  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
+  // The frames are the checker's own (frame_check.h), never the solvers'.
+  const frame_check::CheckedSceneRead read = frame_check::read_checked_scene(embedded);
+  if (!read.violation.empty()) return {false, read.violation};
+  const geometry::PlanarScene& scene = read.scene;
   const std::size_t k = scene.fixels.size();
   if (k != 2 && k != 3)
     return {false, "G_goal is defined for 2 or 3 fixels (eq. 21, Table 5), found " + std::to_string(k)};

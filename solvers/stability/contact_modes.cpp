@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "exact/rational_text.h"
-#include "geometry/scene_json.h"
+#include "solvers/stability/frame_check.h"
 #include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers {
@@ -99,7 +99,10 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
   const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
   if (c.at("problem_sha256").string() != embedded.canonical_sha256())
     return {false, "problem_sha256 is not the digest of the embedded scene", 0, 0};
-  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
+  // The frames are the checker's own (frame_check.h), never the solvers'.
+  const frame_check::CheckedSceneRead read = frame_check::read_checked_scene(embedded);
+  if (!read.violation.empty()) return {false, read.violation, 0, 0};
+  const geometry::PlanarScene& scene = read.scene;
   const std::string table2 = c.at("table2").string();
   if (table2 != "strict" && table2 != "printed") c.at("table2").fail("expected \"strict\" or \"printed\"");
   const ModeAlphabet alphabet = alphabet_of(scene, table2 == "printed", c.at("unions").boolean());

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "exact/rational_text.h"
-#include "geometry/scene_json.h"
+#include "solvers/stability/frame_check.h"
 
 namespace contactcert::solvers {
 namespace {
@@ -58,7 +58,10 @@ StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& c)
   const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
   if (c.at("problem_sha256").string() != embedded.canonical_sha256())
     return {false, "problem_sha256 is not the digest of the embedded scene"};
-  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
+  // The frames are the checker's own (frame_check.h), never the solvers'.
+  const frame_check::CheckedSceneRead read = frame_check::read_checked_scene(embedded);
+  if (!read.violation.empty()) return {false, read.violation};
+  const geometry::PlanarScene& scene = read.scene;
   const std::size_t k = touching_scene(scene).fixels.size();
   StabilityResult<Q> claim;
   const std::string verdict = c.at("verdict").string();

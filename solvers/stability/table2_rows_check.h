@@ -41,7 +41,7 @@ struct CheckedScene {
 };
 
 /// The checker's model of `scene`; with `touching_only`, of its touching fixels in scene order (the fixels strong
-/// stability considers).
+/// stability considers). A checker's scene has its own frames (frame_check::read_checked_scene), never the solver's.
 CheckedScene checked_scene(const geometry::PlanarScene& scene, bool touching_only);
 
 /// A linear system A x = b with signs on x: rows by their non-zero entries, per column free, x >= 0 or x > 0.

@@ -4,6 +4,7 @@
 
 #include "exact/linalg.h"
 #include "exact/rational_text.h"
+#include "solvers/stability/frame_check.h"
 #include "solvers/ucp/integer_rows.h"
 
 namespace contactcert::solvers::ucp {
@@ -296,8 +297,9 @@ CertificateCheck check_ucp_certificate(const JsonInput& cert) {
   const std::string kind = cert.at("kind").string();
   CertificateCheck out;
   out.kind = kind;
-  // An unreadable embedded problem is bad input (exit 2); errors in the evidence make the certificate invalid.
-  const UcpProblem problem = read_ucp_problem(cert.at("problem"));
+  // An unreadable embedded problem is bad input (exit 2); errors in the evidence make the certificate invalid. The
+  // frames of a quasistatic_scene are the checker's own (frame_check.h), never the solvers'.
+  const UcpProblem problem = read_ucp_problem(cert.at("problem"), nullptr, frame_check::checked_frame);
   try {
     if (kind == "ucp_jammed")
       cert.expect_keys({"kind", "format", "problem_sha256", "problem", "reason", "nodes"});

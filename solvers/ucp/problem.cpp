@@ -121,7 +121,7 @@ void validate(const QuasistaticProblem& p, const std::string& file) {
     if (sgn(p.mu(i)) < 0) fail("$.mu[" + std::to_string(i) + "]", "expected a friction coefficient >= 0");
 }
 
-UcpProblem read_ucp_problem(const JsonInput& in, UcpPhases* phases) {
+UcpProblem read_ucp_problem(const JsonInput& in, UcpPhases* phases, geometry::FrameRule frames) {
   double parse = 0, build = 0;
   UcpProblem out;
   {
@@ -130,7 +130,7 @@ UcpProblem read_ucp_problem(const JsonInput& in, UcpPhases* phases) {
     if (kind == "quasistatic") {
       out.quasistatic = read_quasistatic(in);
     } else if (kind == "quasistatic_scene") {
-      out.quasistatic = build_quasistatic_scene(in);
+      out.quasistatic = build_quasistatic_scene(in, frames);
     } else if (kind == "ucp") {
       in.expect_keys({"kind", "n", "X", "Y", "source", "note"});
       const auto n = static_cast<std::size_t>(in.at("n").integer(1, 100000));

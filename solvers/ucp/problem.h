@@ -12,6 +12,7 @@
 
 #include "exact/json_input.h"
 #include "exact/number.h"
+#include "geometry/contact_frame.h"
 #include "solvers/ucp/integer_rows.h"
 #include "solvers/ucp/phases.h"
 
@@ -88,8 +89,10 @@ struct UcpProblem {
 
 /// Reads and validates a problem (SPEC section 2, or the generic `"kind": "ucp"` form); throws
 /// exact::InputError naming the field. phases (optional): receives the seconds of reading (parse) and of
-/// building X and Y (build).
-UcpProblem read_ucp_problem(const exact::JsonInput& in, UcpPhases* phases = nullptr);
+/// building X and Y (build). A `"kind": "quasistatic_scene"` problem takes its contact frames from `frames`: the
+/// solvers' geometry::frame_of, or a certificate checker's own.
+UcpProblem read_ucp_problem(const exact::JsonInput& in, UcpPhases* phases = nullptr,
+                            geometry::FrameRule frames = geometry::frame_of);
 /// Loads a problem file (the file's JSON parse counts as parse).
 UcpProblem load_ucp_problem(const std::string& path, UcpPhases* phases = nullptr);
 

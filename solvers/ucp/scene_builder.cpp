@@ -21,18 +21,24 @@ struct Contact {
   Point2 given;  ///< the velocity (velocity control) or the force (force control), in the finger's axes
 };
 
-Contact read_contact(const geometry::Shape& shape, const JsonInput& c) {
+Contact read_contact(const geometry::Shape& shape, const JsonInput& c, geometry::FrameRule frames) {
   c.expect_keys({"name", "point", "normal", "position", "mu", "finger"});
   Contact out;
-  geometry::FrameResult frame;
-  if (const auto pos = c.find("position")) {
+  geometry::FrameInput given;
+  const auto pos = c.find("position");
+  if (pos) {
     if (c.find("point") || c.find("normal")) c.fail("either \"position\" or \"point\" and \"normal\", not both");
-    frame = geometry::frame_from_position(shape, read_point(*pos));
+    given.position = read_point(*pos);
+  } else {
+    given.point = read_point(c.at("point"));
+    given.normal = read_point(c.at("normal"));
+  }
+  const geometry::FrameResult frame = frames(shape, given);
+  if (pos) {
     if (frame.status == geometry::FrameStatus::kOk && !frame.frame.touching())
       pos->fail("a position on the workpiece boundary (a contact touches; this one is off the workpiece)");
     if (frame.status != geometry::FrameStatus::kOk) pos->fail(frame.message);
   } else {
-    frame = geometry::frame_from_contact(shape, read_point(c.at("point")), read_point(c.at("normal")), Q(0));
     if (frame.status == geometry::FrameStatus::kClosestNotUnique) c.at("point").fail(frame.message);
     if (frame.status != geometry::FrameStatus::kOk) c.at("normal").fail(frame.message);
   }
@@ -58,10 +64,10 @@ Contact read_contact(const geometry::Shape& shape, const JsonInput& c) {
 }
 
 /// The contacts of the scene `root` on the workpiece `w`, at least one.
-std::vector<Contact> read_contacts(const JsonInput& root, const geometry::Workpiece& w) {
+std::vector<Contact> read_contacts(const JsonInput& root, const geometry::Workpiece& w, geometry::FrameRule frames) {
   std::vector<Contact> contacts;
   const JsonInput list = root.at("contacts");
-  for (const JsonInput& c : list.elements()) contacts.push_back(read_contact(w.shape, c));
+  for (const JsonInput& c : list.elements()) contacts.push_back(read_contact(w.shape, c, frames));
   if (contacts.empty()) list.fail("at least one contact");
   return contacts;
 }
@@ -70,16 +76,16 @@ std::vector<Contact> read_contacts(const JsonInput& root, const geometry::Workpi
 
 std::vector<geometry::ContactFrame> quasistatic_scene_frames(const JsonInput& root) {
   std::vector<geometry::ContactFrame> out;
-  for (const Contact& c : read_contacts(root, geometry::read_workpiece(root.at("workpiece"))))
+  for (const Contact& c : read_contacts(root, geometry::read_workpiece(root.at("workpiece")), geometry::frame_of))
     out.push_back({c.r, c.n, Q(0)});
   return out;
 }
 
-QuasistaticProblem build_quasistatic_scene(const JsonInput& root) {
+QuasistaticProblem build_quasistatic_scene(const JsonInput& root, geometry::FrameRule frames) {
   root.expect_keys({"kind", "name", "description", "source", "note", "workpiece", "gravity", "contacts"});
   const geometry::Workpiece w = geometry::read_workpiece(root.at("workpiece"));
   const Point2 gravity = root.find("gravity") ? read_point(root.at("gravity")) : Point2{Q(0), Q(0)};
-  const std::vector<Contact> contacts = read_contacts(root, w);
+  const std::vector<Contact> contacts = read_contacts(root, w, frames);
 
   QuasistaticProblem p;
   p.nc = static_cast<int>(contacts.size());

@@ -18,8 +18,9 @@ namespace contactcert::solvers::ucp {
 /// J_n and J_t of eqs. (3)-(5) are selection rows or n_i^T, t_i^T; an obstacle adds none (zero rows). A
 /// velocity-controlled finger's joints are in alpha with theta_dot its velocity; a force-controlled finger's
 /// are in abar with tau its force (g_man = 0). g_obj = (gravity, com x gravity). Throws exact::InputError
-/// naming the field.
-QuasistaticProblem build_quasistatic_scene(const exact::JsonInput& root);
+/// naming the field. The frames are `frames`' (the solvers' geometry::frame_of, or a certificate checker's own).
+QuasistaticProblem build_quasistatic_scene(const exact::JsonInput& root,
+                                           geometry::FrameRule frames = geometry::frame_of);
 
 /// The contact frames of a `"kind": "quasistatic_scene"` file, in contact order, as build_quasistatic_scene
 /// uses them: point r_i, inward normal n_i as written (gap 0), t_i = tangent(). Throws exact::InputError.

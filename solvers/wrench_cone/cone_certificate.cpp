@@ -4,7 +4,7 @@
 
 #include "exact/rational_text.h"
 #include "exact/strict_feasibility.h"
-#include "geometry/scene_json.h"
+#include "solvers/stability/frame_check.h"
 #include "solvers/stability/table2_rows_check.h"
 #include "solvers/wrench_cone/cone_form.h"
 #include "solvers/wrench_cone/contact_model.h"
@@ -73,7 +73,10 @@ ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
   const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
   if (c.at("problem_sha256").string() != embedded.canonical_sha256())
     return {false, "problem_sha256 is not the digest of the embedded scene"};
-  const geometry::PlanarScene scene = geometry::read_planar_scene(embedded);
+  // The frames are the checker's own (frame_check.h), never the solvers'.
+  const frame_check::CheckedSceneRead read = frame_check::read_checked_scene(embedded);
+  if (!read.violation.empty()) return {false, read.violation};
+  const geometry::PlanarScene& scene = read.scene;
   std::vector<bool> touching;
   for (const auto& f : scene.fixels) touching.push_back(f.frame.touching());
   const ModeParse mode = parse_mode(c.at("mode").string(), touching);
