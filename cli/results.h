@@ -70,7 +70,8 @@ solvers::ucp::UcpProblem generated_problem(const std::string& kind, std::uint64_
                                            const std::string& mu_max, int abar, int rows, int cols, bool planted);
 json ucp_json(const solvers::ucp::UcpReport& r, const std::string& certificate);
 
-// check.cpp: `check` of a parsed certificate.
-json check_json(const exact::JsonInput& certificate);
+// check.cpp: `check` of a parsed certificate; with `problem` (a problem or scene file), INVALID unless the
+// certificate is about that problem (`check --problem`).
+json check_json(const exact::JsonInput& certificate, const exact::JsonInput* problem = nullptr);
 
 }  // namespace contactcert::cli

@@ -279,7 +279,20 @@ void register_ucp(CLI::App& app, Action& action) {
       ->check(whole_number(1, 60))
       ->capture_default_str();
   sub->add_flag("--planted", o->planted, "reduction: plant a 0-1 solution (solvable)");
-  sub->callback([o, &action] { action = [o] { return run_ucp(*o); }; });
+  sub->callback([o, sub, &action] {
+    // Options the chosen run would ignore are refused rather than dropped silently.
+    if (o->generate.empty())
+      refuse_given(*sub, {"--out", "--nc", "--mu-max", "--abar", "--rows", "--cols", "--planted"},
+                   "an option of --generate (without it, ucp solves FILE and writes no problem)");
+    else
+      refuse_given(*sub, {"file", "--certificate", "--method", "--max-nodes", "--max-bases", "--arith", "--json"},
+                   "--generate writes a problem and solves none");
+    if (o->generate == "random")
+      refuse_given(*sub, {"--rows", "--cols", "--planted"}, "an option of --generate reduction");
+    if (o->generate == "reduction")
+      refuse_given(*sub, {"--nc", "--mu-max", "--abar"}, "an option of --generate random");
+    action = [o] { return run_ucp(*o); };
+  });
 }
 
 }  // namespace contactcert::cli

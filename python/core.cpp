@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/json_out.h"
+#include "cli/option_checks.h"
 #include "cli/results.h"
 #include "cli/stability_svg.h"
 #include "exact/arith.h"
@@ -178,8 +179,13 @@ WithCertificate solve(const Ucp& u, const std::string& method, const std::string
   return {cli::ucp_json(r, text.empty() ? "" : certificate).dump(), text};
 }
 
-std::string check(const std::string& text, const std::string& name) {
-  return cli::check_json(exact::JsonInput::parse(text, name)).dump();
+/// `check FILE [--problem PROBLEM]` on texts; an empty `problem_text` means no --problem.
+std::string check(const std::string& text, const std::string& name, const std::string& problem_text,
+                  const std::string& problem_name) {
+  const exact::JsonInput cert = exact::JsonInput::parse(text, name);
+  if (problem_text.empty()) return cli::check_json(cert).dump();
+  const exact::JsonInput problem = exact::JsonInput::parse(problem_text, problem_name);
+  return cli::check_json(cert, &problem).dump();
 }
 
 }  // namespace
@@ -233,4 +239,7 @@ PYBIND11_MODULE(_core, m) {
       },
       Release());
   m.def("check", &check, Release());
+  // A file's text through the CLI's reader: its size limit, and no blocking on a pipe without a writer.
+  m.def("read_text", &exact::JsonInput::read_text, Release());
+  m.attr("MAX_TIME_LIMIT") = cli::kMaxTimeLimit;
 }
