@@ -402,7 +402,7 @@ std::string json_text(const nlohmann::ordered_json& value, int indent) {
 JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   if (text.size() > kMaxInputBytes) throw InputError(file, "", too_large_text());
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw InputError(file, "", "no JSON text (the input is empty; a pipe without a writer reads as empty)");
+    throw InputError(file, "$", "malformed JSON: no JSON text (the input is empty; a pipe without a writer reads as empty)");
   auto root = std::make_shared<json>();
   auto f = std::make_shared<const std::string>(file);
   // Valid input is read in one pass, the parser handing over each number token's text. Input it rejects there (as it
@@ -557,9 +557,11 @@ Q JsonInput::rational() const {
 
 long JsonInput::integer(long lo, long hi) const {
   Q q = rational();
-  if (q.get_den() != 1 || q < lo || q > hi)
+  if (q.get_den() != 1 || q < lo || q > hi) {
+    const std::string found = to_string(q);
     fail("expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " +
-         quoted_excerpt(to_string(q)));
+         (found.size() <= 40 ? found : quoted_excerpt(found)));
+  }
   return q.get_num().get_si();
 }
 

@@ -117,7 +117,7 @@ TEST(JsonInput, ReadingIsBoundedAndNeverBlocks) {
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   EXPECT_EQ(JsonInput::read_text(fifo), "");
   EXPECT_EQ(error_of(JsonInput::read_text(fifo), [](const JsonInput&) {}),
-            "f.json: no JSON text (the input is empty; a pipe without a writer reads as empty)");
+            "f.json: $: malformed JSON: no JSON text (the input is empty; a pipe without a writer reads as empty)");
   ::unlink(fifo.c_str());
   ::rmdir(dir);
 }

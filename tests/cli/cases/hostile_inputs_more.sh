@@ -40,15 +40,16 @@ check 0 'modes of' modes "$scene" --time-limit .5e1
 check 2 '--time-limit' check "$scene" --time-limit 1e8
 
 # ---- 2. an option the run would ignore is refused ----
+rm -f "$work/refused_cert.json" "$work/refused.svg"
 printf '0,-1,0\n1,1,0\n' > "$work/wrenches.txt"
-check 2 '--certificate: --wrenches writes no certificate' stability "$scene" --wrenches "$work/wrenches.txt" --certificate "$work/c.json"
-check 2 '--certificate: --region writes no certificate' stability "$scene" --region --certificate "$work/c.json"
-check 2 '--certificate: --finger writes no certificate' stability "$scene" --finger --certificate "$work/c.json"
-check 2 '--svg: a picture is drawn only with --region or --finger' stability "$scene" --wrench 0,-1,0 --svg "$work/p.svg"
-check 2 '--svg: a picture is drawn only with --region or --finger' stability "$scene" --wrenches "$work/wrenches.txt" --svg "$work/p.svg"
-[ -e "$work/c.json" ] || [ -e "$work/p.svg" ] && { failures=$((failures + 1)); echo "FAIL: a refused run wrote a file"; }
-check 2 '--svg: a picture needs --arith exact or verified' cone "$scene" --mode nn --arith float --svg "$work/p.svg"
-check 2 '--certificate: --generate writes a problem and solves none' ucp --generate random --certificate "$work/c.json"
+check 2 '--certificate: --wrenches writes no certificate' stability "$scene" --wrenches "$work/wrenches.txt" --certificate "$work/refused_cert.json"
+check 2 '--certificate: --region writes no certificate' stability "$scene" --region --certificate "$work/refused_cert.json"
+check 2 '--certificate: --finger writes no certificate' stability "$scene" --finger --certificate "$work/refused_cert.json"
+check 2 '--svg: a picture is drawn only with --region or --finger' stability "$scene" --wrench 0,-1,0 --svg "$work/refused.svg"
+check 2 '--svg: a picture is drawn only with --region or --finger' stability "$scene" --wrenches "$work/wrenches.txt" --svg "$work/refused.svg"
+[ -e "$work/refused_cert.json" ] || [ -e "$work/refused.svg" ] && { failures=$((failures + 1)); echo "FAIL: a refused run wrote a file"; }
+check 2 '--svg: a picture needs --arith exact or verified' cone "$scene" --mode nn --arith float --svg "$work/refused.svg"
+check 2 '--certificate: --generate writes a problem and solves none' ucp --generate random --certificate "$work/refused_cert.json"
 check 2 '--method: --generate writes a problem and solves none' ucp --generate random --method paper
 check 2 '--max-nodes: --generate writes a problem and solves none' ucp --generate reduction --max-nodes 5
 check 2 'file: --generate writes a problem and solves none' ucp "$ds4" --generate random
@@ -89,18 +90,19 @@ check 2 'st_deep_scene.json (embedded scene): $.note[0]' check "$work/st_deep_sc
 check 2 'deep.json: $[0][0]' stability "$scene" --wrenches "$work/deep.json"
 
 # ---- 4. a named pipe without a writer reads as empty (exit 2) and never blocks; endless files stop at 32 MiB ----
+rm -f "$work/fifo"
 mkfifo "$work/fifo"
 for cmd in "ucp" "convert" "check" "modes" "insert" "cone --mode n" "stability --region"; do
   # shellcheck disable=SC2086
-  check 2 'fifo: no JSON text (the input is empty' $cmd "$work/fifo"
+  check 2 'fifo: $: malformed JSON: no JSON text (the input is empty' $cmd "$work/fifo"
   # shellcheck disable=SC2086
   check 2 '/dev/zero: larger than the input limit of 32 MiB' $cmd /dev/zero
 done
-check 2 'fifo: no JSON text' check "$work/sol1.json" --problem "$work/fifo"
+check 2 'fifo: $: malformed JSON: no JSON text' check "$work/sol1.json" --problem "$work/fifo"
 check 2 '/dev/zero: larger than the input limit' check "$work/sol1.json" --problem /dev/zero
 check 2 'fifo: at least one wrench' stability "$scene" --wrenches "$work/fifo"
 check 2 '/dev/zero: larger than the input limit' stability "$scene" --wrenches /dev/zero
-check 2 '-: no JSON text' ucp -
+check 2 '-: $: malformed JSON: no JSON text' ucp -
 check 2 "$work: is a directory" cone "$work" --mode n
 # a pipe with a writer is read as it is written (process substitution)
 check 0 'solvable' ucp <(cat "$s/pang1994_dataset1.json")
