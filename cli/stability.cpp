@@ -325,6 +325,8 @@ int run_stability(const StabilityOptions& options) {
   if (arith == exact::Arith::kFloat) {
     if (!o.certificate.empty())
       throw exact::InputError("command line", "--certificate", "certificates need --arith exact or verified");
+    if (o.margin)
+      throw exact::InputError("command line", "--margin", "the margin is computed exactly (use exact or verified)");
     return report(o, scene, g, solvers::strong_stability<double>(scene, exact::to_double(g), budget(o, arith)));
   }
   const auto r = solvers::strong_stability<Q>(scene, g, budget(o, arith));

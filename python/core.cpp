@@ -67,6 +67,8 @@ WithCertificate stability(const Scene& s, const std::string& wrench, std::string
   if (a == exact::Arith::kFloat) {
     if (!certificate.empty())
       throw exact::InputError("command line", "--certificate", "certificates need --arith exact or verified");
+    if (margin)
+      throw exact::InputError("command line", "--margin", "the margin is computed exactly (use exact or verified)");
     return {cli::stability_json(s.scene, g, solvers::strong_stability<double>(s.scene, exact::to_double(g), {a}), arith,
                                 "", std::nullopt)
                 .dump(),

@@ -181,3 +181,10 @@ def test_python_and_cli_check_agree_on_forgeries(tmp_path):
     assert len(paths) >= 30
     for path in paths:
         assert python_check(path) == cli_check(path), path.name
+
+
+def test_ignored_options_refused_as_by_cli():
+    disk = cc.Scene.from_file(DISK)
+    with pytest.raises(ValueError) as e:
+        disk.stability("0,-1,0", margin=True, arith="float")
+    assert str(e.value) == cli_error("stability", DISK, "--wrench", "0,-1,0", "--margin", "--arith", "float")

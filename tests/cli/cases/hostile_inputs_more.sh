@@ -48,6 +48,7 @@ check 2 '--certificate: --finger writes no certificate' stability "$scene" --fin
 check 2 '--svg: a picture is drawn only with --region or --finger' stability "$scene" --wrench 0,-1,0 --svg "$work/refused.svg"
 check 2 '--svg: a picture is drawn only with --region or --finger' stability "$scene" --wrenches "$work/wrenches.txt" --svg "$work/refused.svg"
 [ -e "$work/refused_cert.json" ] || [ -e "$work/refused.svg" ] && { failures=$((failures + 1)); echo "FAIL: a refused run wrote a file"; }
+check 2 '--margin: the margin is computed exactly' stability "$scene" --wrench 0,-1,0 --margin --arith float
 check 2 '--svg: a picture needs --arith exact or verified' cone "$scene" --mode nn --arith float --svg "$work/refused.svg"
 check 2 '--certificate: --generate writes a problem and solves none' ucp --generate random --certificate "$work/refused_cert.json"
 check 2 '--method: --generate writes a problem and solves none' ucp --generate random --method paper
