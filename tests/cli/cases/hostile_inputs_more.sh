@@ -125,3 +125,8 @@ check_clean 2 '(5000 characters)' check "$work/huge_kind.json"
 check_clean 2 '--wrench' stability "$scene" --wrench "$(head -c 5000 /dev/zero | tr '\0' 1)"
 check_clean 2 '--time-limit' ucp "$ds4" --time-limit "$(head -c 5000 /dev/zero | tr '\0' 1)"
 check_clean 2 '--max-nodes' ucp "$ds4" --max-nodes "$(head -c 5000 /dev/zero | tr '\0' 1)"
+# a file name that is not UTF-8 cannot go into the --json output: exit 2 saying so, not an internal error
+check_clean 2 'command line: a text given on it (a file name?) is not UTF-8' ucp "$s/pang1994_dataset1.json" --json \
+  --certificate "$work/"$'\xff'".json"
+check_clean 2 'is not UTF-8' modes "$scene" --json --certificate "$work/"$'\xfe'".json"
+check 0 'certificate' modes "$scene" --certificate "$work/"$'\xfe'".json"
