@@ -102,6 +102,12 @@ QuotedText quote_numbers(const std::string& in) {
   return q;
 }
 
+/// The JSON path piece of an object member, ".key", with a key longer than 40 characters cut short ("...").
+std::string member_segment(std::string_view key) {
+  constexpr std::size_t kShown = 40;
+  return "." + std::string(key.substr(0, kShown)) + (key.size() > kShown ? "..." : "");
+}
+
 class LiteralNumberBuilder {
  public:
   /// quoted: the text as quote_numbers rewrote it; nullptr when the parser reads the original text, whose number
@@ -130,7 +136,7 @@ class LiteralNumberBuilder {
   bool key(std::string& k) {
     if (next_from_number()) return fail("malformed JSON: an object key must be a string");
     key_ = k;
-    if (stack_.back()->contains(k)) return fail("duplicate key \"" + k + "\"");
+    if (stack_.back()->contains(k)) return fail("duplicate key " + quoted_excerpt(k));
     return true;
   }
   bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
@@ -176,7 +182,7 @@ class LiteralNumberBuilder {
   std::string next_segment() const {
     if (stack_.empty()) return "";
     if (stack_.back()->is_array()) return "[" + std::to_string(stack_.back()->size()) + "]";
-    return key_.empty() ? "" : "." + key_;
+    return key_.empty() ? "" : member_segment(key_);
   }
   // The JSON path of the next value, e.g. "$.P[1]".
   std::string here() const {
@@ -402,7 +408,8 @@ std::string json_text(const nlohmann::ordered_json& value, int indent) {
 JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   if (text.size() > kMaxInputBytes) throw InputError(file, "", too_large_text());
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw InputError(file, "$", "malformed JSON: no JSON text (the input is empty; a pipe without a writer reads as empty)");
+    throw InputError(file, "$",
+                     "malformed JSON: no JSON text (the input is empty; a pipe without a writer reads as empty)");
   auto root = std::make_shared<json>();
   auto f = std::make_shared<const std::string>(file);
   // Valid input is read in one pass, the parser handing over each number token's text. Input it rejects there (as it
@@ -507,7 +514,7 @@ std::size_t JsonInput::size() const {
 
 JsonInput JsonInput::at(std::string_view key) const {
   auto j = find(key);
-  if (!j) JsonInput(root_, node_, file_, path_ + "." + std::string(key)).fail("required field is missing");
+  if (!j) JsonInput(root_, node_, file_, path_ + member_segment(key)).fail("required field is missing");
   return *j;
 }
 
@@ -515,7 +522,7 @@ std::optional<JsonInput> JsonInput::find(std::string_view key) const {
   if (!node_->is_object()) fail("expected an object, found " + kind());
   auto it = node_->find(std::string(key));
   if (it == node_->end() || it->is_null()) return std::nullopt;
-  return JsonInput(root_, &*it, file_, path_ + "." + std::string(key));
+  return JsonInput(root_, &*it, file_, path_ + member_segment(key));
 }
 
 JsonInput JsonInput::at(std::size_t i) const {
@@ -537,7 +544,7 @@ void JsonInput::expect_keys(std::initializer_list<std::string_view> allowed) con
     if (!known) {
       std::string list;
       for (auto a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-      JsonInput(root_, &*it, file_, path_ + "." + it.key()).fail("unknown field (allowed: " + list + ")");
+      JsonInput(root_, &*it, file_, path_ + member_segment(it.key())).fail("unknown field (allowed: " + list + ")");
     }
   }
 }

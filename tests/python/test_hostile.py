@@ -188,3 +188,10 @@ def test_ignored_options_refused_as_by_cli():
     with pytest.raises(ValueError) as e:
         disk.stability("0,-1,0", margin=True, arith="float")
     assert str(e.value) == cli_error("stability", DISK, "--wrench", "0,-1,0", "--margin", "--arith", "float")
+
+
+def test_insertion_error_names_the_file():
+    one = SCENES.parent / "tests" / "cli" / "hostile" / "one_fixel.json"
+    with pytest.raises(ValueError) as e:
+        cc.Scene.from_file(one).insertion()
+    assert str(e.value) == cli_error("insert", one)

@@ -130,3 +130,8 @@ check_clean 2 'command line: a text given on it (a file name?) is not UTF-8' ucp
   --certificate "$work/"$'\xff'".json"
 check_clean 2 'is not UTF-8' modes "$scene" --json --certificate "$work/"$'\xfe'".json"
 check 0 'certificate' modes "$scene" --certificate "$work/"$'\xfe'".json"
+# huge strings are quoted as excerpts: a duplicate key, a problem kind
+{ printf '{"%s":1,"%s":2}' "$(head -c 3000 /dev/zero | tr '\0' d)" "$(head -c 3000 /dev/zero | tr '\0' d)"; } > "$work/dup_key.json"
+check_clean 2 'dup_key.json: $.dddddddddddddddddddddddddddddddddddddddd...: duplicate key "dddddddddddddddddddddddddddddddddddddddd..." (3000 characters)' ucp "$work/dup_key.json"
+printf '{"kind":"%s"}' "$(head -c 3000 /dev/zero | tr '\0' q)" > "$work/huge_problem_kind.json"
+check_clean 2 'huge_problem_kind.json: $.kind: expected "quasistatic", "quasistatic_scene" or "ucp", found "qqqq' ucp "$work/huge_problem_kind.json"
