@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <string>
+#include <type_traits>
 
 #include "exact/json_input.h"
 
@@ -25,7 +26,9 @@ CLI::Validator whole_number(T lo, T hi) {
         T v{};
         const char* end = s.data() + s.size();
         const auto [p, ec] = std::from_chars(s.data(), end, v);
-        if (s.empty() || ec != std::errc() || p != end || v < lo || v > hi)
+        bool sign_allowed = false;  // "-0" is not a spelling of a count
+        if constexpr (std::is_signed_v<T>) sign_allowed = lo < 0;
+        if (s.empty() || ec != std::errc() || p != end || v < lo || v > hi || (s.front() == '-' && !sign_allowed))
           return "expected a decimal integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " +
                  exact::quoted_excerpt(s);
         return "";

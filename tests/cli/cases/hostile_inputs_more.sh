@@ -20,9 +20,12 @@ int_options=0
 for sub in ucp modes stability cone insert convert check demo bench; do
   for opt in $("$cc" "$sub" --help | grep -oE -- '--[a-z-]+ (UINT|INT)' | cut -d' ' -f1 | sort -u); do
     int_options=$((int_options + 1))
-    for bad in 0x10 +3 -1 1e3 1.5 '' ' 5' 5x 18446744073709551616; do
+    for bad in 0x10 +3 -1 -0 1e3 1.5 '' ' 5' 5x 18446744073709551616; do
       check_clean 2 "$opt: expected a decimal integer from" "$sub" "$scene" "$opt" "$bad"
     done
+    if [ "$opt" != --seed ]; then  # 2^63: one past every signed option's range (a seed takes any 64-bit value)
+      check_clean 2 "$opt: expected a decimal integer from" "$sub" "$scene" "$opt" 9223372036854775808
+    fi
   done
 done
 [ "$int_options" -ge 8 ] || { failures=$((failures + 1)); echo "FAIL: only $int_options integer options found in --help"; }
