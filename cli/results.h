@@ -69,6 +69,9 @@ std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::Bou
 solvers::ucp::UcpProblem generated_problem(const std::string& kind, std::uint64_t seed, int nc,
                                            const std::string& mu_max, int abar, int rows, int cols, bool planted);
 json ucp_json(const solvers::ucp::UcpReport& r, const std::string& certificate);
+/// Refuses (InputError) a budget that `method` would ignore: --max-nodes budgets only the complete search's tree,
+/// --max-bases only Step 3 (every method but enumerate).
+void refuse_ignored_budgets(const std::string& method, bool max_nodes_given, bool max_bases_given);
 
 // check.cpp: `check` of a parsed certificate; with `problem` (a problem or scene file), INVALID unless the
 // certificate is about that problem (`check --problem`).

@@ -169,15 +169,17 @@ Ucp parse_ucp(const std::string& text, const std::string& name) {
   return {name, solvers::ucp::read_ucp_problem(exact::JsonInput::parse(text, name))};
 }
 
-/// `ucp FILE` with its options; `certificate`: the file to write, or empty.
+/// `ucp FILE` with its options (a budget not given: the CLI's default); `certificate`: the file to write, or empty.
 WithCertificate solve(const Ucp& u, const std::string& method, const std::string& arith, std::uint64_t seed,
-                      long max_nodes, long max_bases, double time_limit, const std::string& certificate) {
+                      std::optional<long> max_nodes, std::optional<long> max_bases, double time_limit,
+                      const std::string& certificate) {
+  cli::refuse_ignored_budgets(method, max_nodes.has_value(), max_bases.has_value());
   solvers::ucp::UcpOptions opts;
   opts.method = solvers::ucp::parse_method(method);
   opts.arith = exact::parse_arith(arith);
   opts.seed = seed;
-  opts.max_nodes = max_nodes;
-  opts.max_bases = max_bases;
+  opts.max_nodes = max_nodes.value_or(opts.max_nodes);
+  opts.max_bases = max_bases.value_or(opts.max_bases);
   opts.time_limit = time_limit;
   if (!certificate.empty() && opts.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");

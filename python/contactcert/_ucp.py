@@ -51,15 +51,16 @@ class Ucp(FromSource):
     def to_dict(self):
         return json.loads(self._core.text())
 
-    def solve(self, method="complete", arith="verified", seed=1, max_nodes=200000, max_bases=100000, time_limit=0,
+    def solve(self, method="complete", arith="verified", seed=1, max_nodes=None, max_bases=None, time_limit=0,
               certificate=None):
         """`contactcert ucp FILE`: solvable (with the pair and its physics) or jammed. An `unknown` verdict (a
-        budget ran out) raises BudgetExceeded with the result as its `result`."""
+        budget ran out) raises BudgetExceeded with the result as its `result`. max_nodes (default 200000) budgets
+        the complete search only, max_bases (default 100000) Step 3 (not in method enumerate), as in the CLI."""
         choice(method, ("paper", "modified", "complete", "enumerate"), "--method")
         choice(arith, ARITHS, "--arith")
         seed = whole_number(seed, 0, UINT64_MAX, "--seed")
-        max_nodes = whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
-        max_bases = whole_number(max_bases, 1, LONG_MAX, "--max-bases")
+        max_nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
+        max_bases = None if max_bases is None else whole_number(max_bases, 1, LONG_MAX, "--max-bases")
         time_limit = seconds(time_limit)
         path = os.fspath(certificate) if certificate is not None else ""
         data, text = self._core.solve(method, arith, seed, max_nodes, max_bases, time_limit, path)

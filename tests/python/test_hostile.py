@@ -207,3 +207,12 @@ def test_python_and_cli_check_agree_on_the_forged_suite():
     paths = [p for p in sorted(FORGED_WORK.glob("*.json")) if p.stat().st_size < (1 << 20)]
     for path in paths:
         assert python_check(path) == cli_check(path), path.name
+
+
+@pytest.mark.parametrize("method,kwargs,flag", [("paper", {"max_nodes": 5}, "--max-nodes"),
+                                                ("enumerate", {"max_nodes": 5}, "--max-nodes"),
+                                                ("enumerate", {"max_bases": 5}, "--max-bases")])
+def test_ignored_budgets_refused_as_by_cli(method, kwargs, flag):
+    with pytest.raises(ValueError) as e:
+        cc.Ucp.from_file(DS1).solve(method=method, **kwargs)
+    assert str(e.value) == cli_error("ucp", DS1, "--method", method, flag, 5)

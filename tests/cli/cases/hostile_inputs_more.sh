@@ -63,6 +63,12 @@ check 2 '--planted: an option of --generate' ucp "$ds4" --planted
 check 2 '--rows: an option of --generate reduction' ucp --generate random --rows 3
 check 2 '--mu-max: an option of --generate random' ucp --generate reduction --mu-max 1/2
 check 0 'certificate' stability "$scene" --wrench 0,-1,0 --certificate "$work/st_ok.json" --margin
+for method in paper modified enumerate; do
+  check 2 "--max-nodes: the node budget of --method complete's search; --method $method has no search tree" \
+    ucp "$ds4" --method "$method" --max-nodes 5
+done
+check 2 '--max-bases: the basis budget of Step 3; --method enumerate has no Step 3' ucp "$ds4" --method enumerate --max-bases 5
+check 0 'solvable' ucp "$s/pang1994_dataset1.json" --method modified --max-bases 5
 check 0 '' ucp --generate reduction --rows 2 --cols 3 --planted --seed 4 --out "$work/g.json"
 
 # ---- 3. nesting deeper than 64 levels is refused before any recursion, on every reader ----
