@@ -222,7 +222,12 @@ void register_check(CLI::App& app, Action& action) {
   sub->add_option("file", o->file, "Certificate file")->required();
   sub->add_option("--problem", o->problem,
                   "Problem (or scene) file the certificate must be about: INVALID if its embedded problem differs");
-  sub->callback([o, &action] { action = [o] { return run_check(*o); }; });
+  sub->callback([o, &action] {
+    // The checkers re-derive everything in rationals: a float check would be ignored, so it is refused.
+    if (o->common.arith == "float")
+      throw exact::InputError("command line", "--arith", "check verifies exactly (use exact or verified)");
+    action = [o] { return run_check(*o); };
+  });
 }
 
 }  // namespace contactcert::cli

@@ -69,6 +69,8 @@ for method in paper modified enumerate; do
 done
 check 2 '--max-bases: the basis budget of Step 3; --method enumerate has no Step 3' ucp "$ds4" --method enumerate --max-bases 5
 check 0 'solvable' ucp "$s/pang1994_dataset1.json" --method modified --max-bases 5
+check 2 '--arith: check verifies exactly' check "$work/st_ok.json" --arith float
+check 0 'VALID' check "$work/st_ok.json" --arith exact
 check 0 '' ucp --generate reduction --rows 2 --cols 3 --planted --seed 4 --out "$work/g.json"
 
 # ---- 3. nesting deeper than 64 levels is refused before any recursion, on every reader ----
