@@ -79,14 +79,18 @@ class Ucp(FromSource):
 
 def generate_random(nc=3, mu_max=1, abar=0, seed=1):
     """`contactcert ucp --generate random`: a random quasistatic problem of section 5."""
-    return Ucp(_core.generate("random", whole_number(seed, 0, UINT64_MAX, "--seed"), whole_number(nc, 1, 1000, "--nc"),
-                              number_text(mu_max, "--mu-max"), whole_number(abar, 0, 2000, "--abar"), 2, 6, False))
+    seed = whole_number(seed, 0, UINT64_MAX, "--seed")
+    nc = whole_number(nc, 1, 1000, "--nc")
+    abar = whole_number(abar, 0, 2000, "--abar")
+    return Ucp(_core.generate("random", seed, nc, number_text(mu_max, "--mu-max"), abar, 2, 6, False))
 
 
 def generate_reduction(rows=2, cols=6, planted=False, seed=1):
     """`contactcert ucp --generate reduction`: Proposition 2's UCP of a random 0-1 problem."""
-    return Ucp(_core.generate("reduction", whole_number(seed, 0, UINT64_MAX, "--seed"), 3, "1", 0,
-                              whole_number(rows, 1, 1000, "--rows"), whole_number(cols, 1, 60, "--cols"), bool(planted)))
+    seed = whole_number(seed, 0, UINT64_MAX, "--seed")
+    rows = whole_number(rows, 1, 1000, "--rows")
+    cols = whole_number(cols, 1, 60, "--cols")
+    return Ucp(_core.generate("reduction", seed, 3, "1", 0, rows, cols, bool(planted)))
 
 
 def _certificate_text(certificate):
