@@ -57,8 +57,10 @@ nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchC
 std::string cone_svg(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
                      const solvers::WrenchCone<exact::Q>& c);
 
-// insert.cpp: G_goal without --sweep-mu, the values of --sweep-mu (InputError unless each is >= 0), the
-// sweep's entry for one mu (every fixel's mu_s = mu_k = mu), and the --svg picture.
+// insert.cpp: G_goal of the scene read from `file` (an InputError names the file), G_goal without --sweep-mu, the
+// values of --sweep-mu (InputError unless each is >= 0), the sweep's entry for one mu (every fixel's mu_s = mu_k =
+// mu), and the --svg picture.
+solvers::Insertion<exact::Q> insertion_of(const geometry::PlanarScene& scene, const std::string& file);
 json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion<exact::Q>& ins,
                     const solvers::BoundaryPieces<exact::Q, bool>& pushes);
 std::vector<exact::Q> sweep_mus(const std::string& text);

@@ -135,18 +135,9 @@ std::string finger_svg(const Scene& s) {
 }
 
 /// `insert FILE [--sweep-mu a,b,...]`.
-/// The insertion analysis of a scene; an error names the scene's file, as `insert` does.
-solvers::Insertion<Q> insertion_of(const Scene& s) {
-  try {
-    return solvers::insertion<Q>(s.scene);
-  } catch (const exact::InputError& e) {
-    throw exact::InputError(s.name, e.json_path, e.expected);
-  }
-}
-
 std::string insertion(const Scene& s, const std::string& sweep_mu) {
   const std::vector<Q> mus = cli::sweep_mus(sweep_mu);
-  const auto ins = insertion_of(s);
+  const auto ins = cli::insertion_of(s.scene, s.name);
   cli::json j = cli::insertion_json(s.scene, ins, solvers::insertion_pushes<Q>(s.scene, ins));
   if (!mus.empty()) {
     cli::json sweep = cli::json::array();
@@ -156,7 +147,7 @@ std::string insertion(const Scene& s, const std::string& sweep_mu) {
   return j.dump();
 }
 std::string insertion_svg(const Scene& s) {
-  return cli::insertion_svg(s.scene, solvers::insertion_pushes<Q>(s.scene, insertion_of(s)));
+  return cli::insertion_svg(s.scene, solvers::insertion_pushes<Q>(s.scene, cli::insertion_of(s.scene, s.name)));
 }
 
 /// A quasistatic (or plain UCP) problem file, with the name its messages use.

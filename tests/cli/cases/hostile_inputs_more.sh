@@ -146,3 +146,9 @@ check 0 'certificate' modes "$scene" --certificate "$work/"$'\xfe'".json"
 check_clean 2 'dup_key.json: $.dddddddddddddddddddddddddddddddddddddddd...: duplicate key "dddddddddddddddddddddddddddddddddddddddd..." (3000 characters)' ucp "$work/dup_key.json"
 printf '{"kind":"%s"}' "$(head -c 3000 /dev/zero | tr '\0' q)" > "$work/huge_problem_kind.json"
 check_clean 2 'huge_problem_kind.json: $.kind: expected "quasistatic", "quasistatic_scene" or "ucp", found "qqqq' ucp "$work/huge_problem_kind.json"
+# a scene that does not suit insertion is named, also when the demo reads it from --scenes
+mkdir -p "$work/demo_scenes"
+cp "$s/bt2002_section7_disk.json" "$work/demo_scenes/"
+cp "$repo/tests/cli/hostile/one_fixel.json" "$work/demo_scenes/bt2002_fig10_pentagon_insert.json"
+check_clean 2 'demo_scenes/bt2002_fig10_pentagon_insert.json: $.fixels: insertion needs 2 or 3 fixels' \
+  demo --scenes "$work/demo_scenes" --out "$work/demo_out"
