@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "cli/command.h"
 #include "cli/contact_forces.h"
@@ -48,15 +49,14 @@ exact::JsonInput embedded_problem(const exact::JsonInput& cert, const std::strin
   return cert.at("problem");
 }
 
-/// The canonical text of the problem file `path` as the certificate kind reads it: a UCP problem through its
-/// reader (a quasistatic_scene with the checker's frames) and writer (so equal problems compare equal whatever their
-/// spelling), a scene as its canonical JSON.
-std::string problem_file_text(const std::string& path, const std::string& kind) {
-  const exact::JsonInput in = exact::JsonInput::load(path);
+/// The canonical text of a problem file as the certificate kind reads it: a UCP problem through its reader (a
+/// quasistatic_scene with the checker's frames) and writer (so equal problems compare equal whatever their spelling),
+/// a scene as its canonical JSON.
+std::string problem_file_text(const exact::JsonInput& in, const std::string& kind) {
   if (embeds_scene(kind)) return in.canonical_text();
   const std::string text =
       solvers::ucp::to_json_text(solvers::ucp::read_ucp_problem(in, nullptr, solvers::frame_check::checked_frame));
-  return exact::JsonInput::parse(text, path).canonical_text();
+  return exact::JsonInput::parse(text, in.file()).canonical_text();
 }
 
 /// The world forces of a valid "cone_nonempty" certificate's witness, from the contact forces the checker derived
@@ -115,8 +115,8 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
   }
   cert.at("kind").fail(
       "expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, cone_empty, cone_nonempty or "
-      "goal_nonempty, found \"" +
-      kind + "\"");
+      "goal_nonempty, found " +
+      exact::quoted_excerpt(kind));
 }
 
 /// The contact forces of a checked stability witness as a person reads them (cli/contact_forces.h), recomputed
@@ -163,44 +163,49 @@ void stability_view(const exact::JsonInput& cert, CheckOutcome& c) {
   }
 }
 
-/// The answer for one certificate, checked against `problem_path` too unless it is empty.
-CheckOutcome check_certificate(const exact::JsonInput& cert, const std::string& problem_path) {
+/// The answer for one certificate, checked against the problem file `given` too unless it is null.
+CheckOutcome check_certificate(const exact::JsonInput& cert, const exact::JsonInput* given) {
   CheckOutcome c = check_any(cert);
   if (c.valid && c.kind == "stability") stability_view(cert, c);
   const exact::JsonInput problem = embedded_problem(cert, c.kind);
   c.digest = problem.canonical_sha256();
-  if (!problem_path.empty()) {
-    const std::string file_text = problem_file_text(problem_path, c.kind);
+  if (given != nullptr) {
+    const std::string file_text = problem_file_text(*given, c.kind);
     if (c.valid && file_text != problem.canonical_text()) {
       c.valid = false;
-      c.reason = "the certificate is about another problem than " + problem_path + " (its problem_sha256 is " +
+      c.reason = "the certificate is about another problem than " + given->file() + " (its problem_sha256 is " +
                  c.digest + ", the file's " + exact::sha256_hex(file_text) + ")";
     }
   }
   return c;
 }
 
-json outcome_json(const CheckOutcome& c, const std::string& problem_path) {
+json outcome_json(const CheckOutcome& c, const exact::JsonInput* given) {
   json j;
   j["valid"] = c.valid;
   j["kind"] = c.kind;
   j["reason"] = c.reason;
   j["problem_sha256"] = c.digest;
-  if (!problem_path.empty()) j["problem"] = problem_path;
+  if (given != nullptr) j["problem"] = given->file();
   for (auto it = c.details.begin(); it != c.details.end(); ++it) j[it.key()] = it.value();
   return j;
 }
 
 }  // namespace
 
-json check_json(const exact::JsonInput& certificate) { return outcome_json(check_certificate(certificate, ""), ""); }
+json check_json(const exact::JsonInput& certificate, const exact::JsonInput* problem) {
+  return outcome_json(check_certificate(certificate, problem), problem);
+}
 
 namespace {
 
 int run_check(const CheckOptions& o) {
-  const CheckOutcome c = check_certificate(exact::JsonInput::load(o.file), o.problem);
+  const exact::JsonInput cert = exact::JsonInput::load(o.file);
+  std::optional<exact::JsonInput> problem;
+  if (!o.problem.empty()) problem = exact::JsonInput::load(o.problem);
+  const CheckOutcome c = check_certificate(cert, problem ? &*problem : nullptr);
   if (o.common.json) {
-    std::cout << outcome_json(c, o.problem).dump() << "\n";
+    std::cout << outcome_json(c, problem ? &*problem : nullptr).dump() << "\n";
   } else {
     std::cout << "check " << o.file << ": " << c.kind << " certificate is " << (c.valid ? "VALID" : "INVALID")
               << (o.problem.empty() || !c.valid ? "" : " for " + o.problem) << "\n  " << c.reason << "\n"
@@ -219,7 +224,12 @@ void register_check(CLI::App& app, Action& action) {
   sub->add_option("file", o->file, "Certificate file")->required();
   sub->add_option("--problem", o->problem,
                   "Problem (or scene) file the certificate must be about: INVALID if its embedded problem differs");
-  sub->callback([o, &action] { action = [o] { return run_check(*o); }; });
+  sub->callback([o, &action] {
+    // The checkers re-derive everything in rationals: a float check would be ignored, so it is refused.
+    if (o->common.arith == "float")
+      throw exact::InputError("command line", "--arith", "check verifies exactly (use exact or verified)");
+    action = [o] { return run_check(*o); };
+  });
 }
 
 }  // namespace contactcert::cli

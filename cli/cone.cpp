@@ -231,8 +231,8 @@ geometry::DdBudget cone_budget(const ConeOptions& o) {
   return budget;
 }
 
-int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const solvers::ModeString& mode,
-              solvers::Route route) {
+int run_exact(const ConeOptions& o, const std::string& text, const geometry::PlanarScene& scene,
+              const solvers::ModeString& mode, solvers::Route route) {
   const solvers::WrenchCone<Q> c = solvers::wrench_cone<Q>(scene, mode, route, cone_budget(o));
   const geometry::NncForm<Q>& f = c.cone;
   const bool empty = c.status == solvers::ConeStatus::kEmpty;
@@ -242,7 +242,7 @@ int run_exact(const ConeOptions& o, const geometry::PlanarScene& scene, const so
   }
   ConeCertificateFile certificate;
   if (!o.certificate.empty()) {
-    certificate = cone_certificate_file(exact::JsonInput::read_text(o.file), scene, mode, c.form);
+    certificate = cone_certificate_file(text, scene, mode, c.form);
     write_text_file(o.certificate, certificate.file.dump(1) + "\n");
   }
   if (o.common.json) {
@@ -329,13 +329,16 @@ int run_float(const ConeOptions& o, const geometry::PlanarScene& scene, const so
 }
 
 int run_cone(const ConeOptions& o) {
-  const geometry::PlanarScene scene = geometry::load_planar_scene(o.file);
+  const std::string text = exact::JsonInput::read_text(o.file);  // read once: a pipe cannot be read again
+  const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
   const solvers::ModeString mode = cone_mode(scene, o.file, o.mode, o.table2 == "printed");
   const solvers::Route route = o.route == "paper" ? solvers::Route::kPaper : solvers::Route::kProject;
   if (!o.certificate.empty() && o.common.arith == "float")
     throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
+  if (!o.svg.empty() && o.common.arith == "float")
+    throw exact::InputError("command line", "--svg", "a picture needs --arith exact or verified");
   // The verified path is the exact one here: the cone's combinatorics are decided in rationals.
-  return o.common.arith == "float" ? run_float(o, scene, mode, route) : run_exact(o, scene, mode, route);
+  return o.common.arith == "float" ? run_float(o, scene, mode, route) : run_exact(o, text, scene, mode, route);
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include "cli/html_report.h"
 #include "cli/json_out.h"
 #include "cli/line_plot.h"
+#include "cli/results.h"
 #include "cli/stability_svg.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -157,7 +158,7 @@ void insertion(const DemoOptions& o, HtmlReport& rep) {
     for (const char* mu : {"0.01", "0.2", "0.4", "0.6"}) {
       auto scene = base;
       for (auto& f : scene.fixels) f.mu_s = f.mu_k = exact::parse_rational(mu);
-      const auto ins = solvers::insertion<Q>(scene);
+      const auto ins = insertion_of(scene, (fs::path(o.scenes) / file).string());
       const auto p = solvers::insertion_pushes<Q>(scene, ins);
       if (std::string(mu) == "0.2")
         rep.figure(wrench_cone_svg(scene, exact::Mat<Q>(0, 3), exact::Mat<Q>(0, 3), std::string(file) + ", mu = 0.2",

@@ -78,6 +78,14 @@ std::vector<Q> sweep_mus(const std::string& text) {
   return mus;
 }
 
+solvers::Insertion<Q> insertion_of(const geometry::PlanarScene& scene, const std::string& file) {
+  try {
+    return solvers::insertion<Q>(scene);
+  } catch (const exact::InputError& e) {  // the scene's fixels do not suit insertion: name the file
+    throw exact::InputError(file, e.json_path, e.expected);
+  }
+}
+
 json sweep_entry_json(const geometry::PlanarScene& scene, const Q& mu) {
   geometry::PlanarScene s = scene;
   for (auto& f : s.fixels) f.mu_s = f.mu_k = mu;
@@ -102,13 +110,7 @@ int run_insert(const InsertOptions& o) {
     throw exact::InputError("command line", "--arith", "insert is computed exactly (use exact or verified)");
   const std::vector<Q> mus = sweep_mus(o.sweep_mu);
   auto analyse = [&](const geometry::PlanarScene& s) {
-    auto ins = [&] {
-      try {
-        return solvers::insertion<Q>(s);
-      } catch (const exact::InputError& e) {  // the scene's fixels do not suit insertion: name the file
-        throw exact::InputError(o.file, e.json_path, e.expected);
-      }
-    }();
+    auto ins = insertion_of(s, o.file);
     auto pushes = solvers::insertion_pushes<Q>(s, ins);
     return std::make_pair(std::move(ins), std::move(pushes));
   };

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "exact/input_error.h"
+#include "exact/json_input.h"
 #include "exact/rational_text.h"
 
 namespace contactcert::cli {
@@ -96,7 +97,7 @@ exact::Vec<Q> parse_number_list(const std::string& text, const std::string& opti
   if (static_cast<long>(values.size()) != expected_size || (!text.empty() && text.back() == ','))
     throw exact::InputError(
         "command line", option,
-        "expected " + std::to_string(expected_size) + " comma-separated numbers, found \"" + text + "\"");
+        "expected " + std::to_string(expected_size) + " comma-separated numbers, found " + exact::quoted_excerpt(text));
   exact::Vec<Q> v(expected_size);
   for (long i = 0; i < expected_size; ++i) v(i) = values[static_cast<size_t>(i)];
   return v;

@@ -131,6 +131,16 @@ int main(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     std::cerr << "contactcert: out of memory\n";
     return 3;
+  } catch (const nlohmann::json::type_error& e) {
+    // JSON text is UTF-8; input files are checked when read, so only a command-line text (a file name echoed in
+    // the --json output) can bring other bytes. Other type errors are internal.
+    if (e.id != 316) {
+      std::cerr << "contactcert: internal error: a JSON value of an unexpected type\n";
+      return 1;
+    }
+    std::cerr << "contactcert: command line: a text given on it (a file name?) is not UTF-8, which the JSON output "
+                 "cannot hold\n";
+    return 2;
   } catch (const std::logic_error& e) {
     if (!cli::float_arith(app)) {
       std::cerr << "contactcert: internal error: " << e.what() << "\n";

@@ -57,8 +57,10 @@ nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchC
 std::string cone_svg(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
                      const solvers::WrenchCone<exact::Q>& c);
 
-// insert.cpp: G_goal without --sweep-mu, the values of --sweep-mu (InputError unless each is >= 0), the
-// sweep's entry for one mu (every fixel's mu_s = mu_k = mu), and the --svg picture.
+// insert.cpp: G_goal of the scene read from `file` (an InputError names the file), G_goal without --sweep-mu, the
+// values of --sweep-mu (InputError unless each is >= 0), the sweep's entry for one mu (every fixel's mu_s = mu_k =
+// mu), and the --svg picture.
+solvers::Insertion<exact::Q> insertion_of(const geometry::PlanarScene& scene, const std::string& file);
 json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion<exact::Q>& ins,
                     const solvers::BoundaryPieces<exact::Q, bool>& pushes);
 std::vector<exact::Q> sweep_mus(const std::string& text);
@@ -69,8 +71,12 @@ std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::Bou
 solvers::ucp::UcpProblem generated_problem(const std::string& kind, std::uint64_t seed, int nc,
                                            const std::string& mu_max, int abar, int rows, int cols, bool planted);
 json ucp_json(const solvers::ucp::UcpReport& r, const std::string& certificate);
+/// Refuses (InputError) a budget that `method` would ignore: --max-nodes budgets only the complete search's tree,
+/// --max-bases only Step 3 (every method but enumerate).
+void refuse_ignored_budgets(const std::string& method, bool max_nodes_given, bool max_bases_given);
 
-// check.cpp: `check` of a parsed certificate.
-json check_json(const exact::JsonInput& certificate);
+// check.cpp: `check` of a parsed certificate; with `problem` (a problem or scene file), INVALID unless the
+// certificate is about that problem (`check --problem`).
+json check_json(const exact::JsonInput& certificate, const exact::JsonInput* problem = nullptr);
 
 }  // namespace contactcert::cli

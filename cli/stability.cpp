@@ -11,6 +11,7 @@
 #include "cli/contact_forces.h"
 #include "cli/contact_notes.h"
 #include "cli/json_out.h"
+#include "cli/option_checks.h"
 #include "cli/region_data.h"
 #include "cli/results.h"
 #include "cli/stability_svg.h"
@@ -324,6 +325,8 @@ int run_stability(const StabilityOptions& options) {
   if (arith == exact::Arith::kFloat) {
     if (!o.certificate.empty())
       throw exact::InputError("command line", "--certificate", "certificates need --arith exact or verified");
+    if (o.margin)
+      throw exact::InputError("command line", "--margin", "the margin is computed exactly (use exact or verified)");
     return report(o, scene, g, solvers::strong_stability<double>(scene, exact::to_double(g), budget(o, arith)));
   }
   const auto r = solvers::strong_stability<Q>(scene, g, budget(o, arith));
@@ -354,8 +357,16 @@ void register_stability(CLI::App& app, Action& action) {
   sub->add_flag("--finger", o->finger, "Where a frictionless finger push along the boundary normal is strongly stable");
   sub->add_option("--svg", o->svg,
                   "With --region: the sphere of wrench directions; with --finger: the boundary coloured by verdict");
-  sub->add_option("--certificate", o->certificate, "Write the evidence for `contactcert check` to this file");
-  sub->callback([o, &action] { action = [o] { return run_stability(*o); }; });
+  sub->add_option("--certificate", o->certificate, "With --wrench: write the evidence for `contactcert check` here");
+  sub->callback([o, sub, &action] {
+    // Options the chosen question would ignore are refused rather than dropped silently.
+    for (const char* question : {"--wrenches", "--region", "--finger"})
+      if (sub->count(question) > 0)
+        refuse_given(*sub, {"--certificate"}, std::string(question) + " writes no certificate (only --wrench does)");
+    if (sub->count("--region") == 0 && sub->count("--finger") == 0)
+      refuse_given(*sub, {"--svg"}, "a picture is drawn only with --region or --finger");
+    action = [o] { return run_stability(*o); };
+  });
 }
 
 }  // namespace contactcert::cli

@@ -56,6 +56,16 @@ ucp::UcpProblem generated_problem(const std::string& kind, std::uint64_t seed, i
   return p;
 }
 
+void refuse_ignored_budgets(const std::string& method, bool max_nodes_given, bool max_bases_given) {
+  if (max_nodes_given && method != "complete")
+    throw exact::InputError(
+        "command line", "--max-nodes",
+        "the node budget of --method complete's search; --method " + method + " has no search tree");
+  if (max_bases_given && method == "enumerate")
+    throw exact::InputError("command line", "--max-bases",
+                            "the basis budget of Step 3; --method enumerate has no Step 3");
+}
+
 json ucp_json(const ucp::UcpReport& r, const std::string& certificate) {
   json j;
   j["status"] = ucp::status_name(r.status);
@@ -279,7 +289,22 @@ void register_ucp(CLI::App& app, Action& action) {
       ->check(whole_number(1, 60))
       ->capture_default_str();
   sub->add_flag("--planted", o->planted, "reduction: plant a 0-1 solution (solvable)");
-  sub->callback([o, &action] { action = [o] { return run_ucp(*o); }; });
+  sub->callback([o, sub, &action] {
+    // Options the chosen run would ignore are refused rather than dropped silently.
+    if (o->generate.empty()) {
+      refuse_given(*sub, {"--out", "--nc", "--mu-max", "--abar", "--rows", "--cols", "--planted"},
+                   "an option of --generate (without it, ucp solves FILE and writes no problem)");
+      refuse_ignored_budgets(o->method, sub->count("--max-nodes") > 0, sub->count("--max-bases") > 0);
+    } else {
+      refuse_given(*sub, {"file", "--certificate", "--method", "--max-nodes", "--max-bases", "--arith", "--json"},
+                   "--generate writes a problem and solves none");
+    }
+    if (o->generate == "random")
+      refuse_given(*sub, {"--rows", "--cols", "--planted"}, "an option of --generate reduction");
+    if (o->generate == "reduction")
+      refuse_given(*sub, {"--nc", "--mu-max", "--abar"}, "an option of --generate random");
+    action = [o] { return run_ucp(*o); };
+  });
 }
 
 }  // namespace contactcert::cli

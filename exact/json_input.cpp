@@ -1,13 +1,15 @@
 #include "exact/json_input.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <clocale>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -100,6 +102,12 @@ QuotedText quote_numbers(const std::string& in) {
   return q;
 }
 
+/// The JSON path piece of an object member, ".key", with a key longer than 40 characters cut short ("...").
+std::string member_segment(std::string_view key) {
+  constexpr std::size_t kShown = 40;
+  return "." + std::string(key.substr(0, kShown)) + (key.size() > kShown ? "..." : "");
+}
+
 class LiteralNumberBuilder {
  public:
   /// quoted: the text as quote_numbers rewrote it; nullptr when the parser reads the original text, whose number
@@ -128,15 +136,21 @@ class LiteralNumberBuilder {
   bool key(std::string& k) {
     if (next_from_number()) return fail("malformed JSON: an object key must be a string");
     key_ = k;
-    if (stack_.back()->contains(k)) return fail("duplicate key \"" + k + "\"");
+    if (stack_.back()->contains(k)) return fail("duplicate key " + quoted_excerpt(k));
     return true;
   }
   bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) {
     error_byte_ = quoted_ ? quoted_->original(pos) : pos;
+    // nlohmann's text without its "[json.exception.parse_error.101] parse error at line 1, column 5: " head, and
+    // with the token it read cut short: "syntax error while parsing value - invalid literal; last read: 'tru!'".
     std::string what = e.what();
-    auto cut = what.find("syntax error");
-    return fail("malformed JSON at byte " + std::to_string(error_byte_) + ": " +
-                (cut == std::string::npos ? what : what.substr(cut)));
+    const auto cut = what.find("syntax error");
+    what = cut == std::string::npos ? "not JSON text" : what.substr(cut);
+    if (const auto last = what.find("; last read: '"); last != std::string::npos) {
+      const std::size_t from = last + 14, to = what.rfind('\'');
+      if (to != std::string::npos && to > from + 40) what = what.substr(0, from + 40) + "...'";
+    }
+    return fail("malformed JSON at byte " + std::to_string(error_byte_) + ": " + what);
   }
 
   const std::string& error() const { return error_; }
@@ -168,7 +182,7 @@ class LiteralNumberBuilder {
   std::string next_segment() const {
     if (stack_.empty()) return "";
     if (stack_.back()->is_array()) return "[" + std::to_string(stack_.back()->size()) + "]";
-    return key_.empty() ? "" : "." + key_;
+    return key_.empty() ? "" : member_segment(key_);
   }
   // The JSON path of the next value, e.g. "$.P[1]".
   std::string here() const {
@@ -373,6 +387,12 @@ bool rational_of(const json& node, Q& out) {
 
 }  // namespace
 
+std::string quoted_excerpt(std::string_view text) {
+  constexpr std::size_t kShown = 40;
+  if (text.size() <= kShown) return "\"" + std::string(text) + "\"";
+  return "\"" + std::string(text.substr(0, kShown)) + "...\" (" + std::to_string(text.size()) + " characters)";
+}
+
 std::string JsonInput::canonical_text() const { return canonical(*node_); }
 
 std::string JsonInput::canonical_sha256() const { return sha256_hex(canonical_text()); }
@@ -387,6 +407,9 @@ std::string json_text(const nlohmann::ordered_json& value, int indent) {
 
 JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
   if (text.size() > kMaxInputBytes) throw InputError(file, "", too_large_text());
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw InputError(file, "$",
+                     "malformed JSON: no JSON text (the input is empty; a pipe without a writer reads as empty)");
   auto root = std::make_shared<json>();
   auto f = std::make_shared<const std::string>(file);
   // Valid input is read in one pass, the parser handing over each number token's text. Input it rejects there (as it
@@ -412,27 +435,58 @@ JsonInput JsonInput::parse(const std::string& text, const std::string& file) {
 
 JsonInput JsonInput::load(const std::string& path) { return parse(read_text(path), path); }
 
-std::string JsonInput::read_text(const std::string& path) {
-  std::error_code ec;
-  if (path != "-" && std::filesystem::is_directory(path, ec))
-    throw InputError(path, "", "is a directory; expected a JSON file");
-  std::ifstream file;
-  if (path != "-") {
-    file.open(path, std::ios::binary);
-    if (!file) throw InputError(path, "", "cannot open the file for reading");
+namespace {
+
+/// Opens `path` for reading without blocking: open(2) of a FIFO waits for a writer unless O_NONBLOCK is given, so
+/// the file is opened non-blocking and made blocking again once it is known to be something readable. A FIFO (or
+/// pipe) without a writer then reads as empty. Anything but a regular file, a character device or a FIFO is
+/// refused (a directory, a block device).
+int open_input(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0)
+    throw InputError(path, "", std::string("cannot open the file for reading (") + std::strerror(errno) + ")");
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !(S_ISREG(st.st_mode) || S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode))) {
+    const bool dir = S_ISDIR(st.st_mode);
+    ::close(fd);
+    throw InputError(path, "",
+                     dir ? "is a directory; expected a JSON file"
+                         : "is not a regular file, a character device or a pipe; expected a JSON file");
   }
-  std::istream& in = path == "-" ? std::cin : file;
-  // Straight into the text, in chunks doubling from 64 KiB (no buffer larger than the file is touched), up to one
+  const int flags = ::fcntl(fd, F_GETFL);
+  if (flags < 0 || ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0) {
+    ::close(fd);
+    throw InputError(path, "", "cannot open the file for reading");
+  }
+  return fd;
+}
+
+}  // namespace
+
+std::string JsonInput::read_text(const std::string& path) {
+  const bool stdin_input = path == "-";
+  const std::string name = stdin_input ? "standard input" : path;
+  const int fd = stdin_input ? STDIN_FILENO : open_input(path);
+  // Into a buffer doubled from 64 KiB whenever it is full (no buffer much larger than the file is touched), up to one
   // byte past the limit: an endless source (/dev/zero) stops there.
   std::string text;
-  for (std::size_t chunk = std::size_t{1} << 16; in && text.size() <= kMaxInputBytes; chunk *= 2) {
-    const std::size_t had = text.size(), want = std::min(chunk, kMaxInputBytes + 1 - had);
-    text.resize(had + want);
-    in.read(text.data() + had, static_cast<std::streamsize>(want));
-    text.resize(had + static_cast<std::size_t>(in.gcount()));
+  std::size_t filled = 0;
+  int error = 0;
+  while (filled <= kMaxInputBytes) {
+    if (filled == text.size())
+      text.resize(std::min(std::max(2 * text.size(), std::size_t{1} << 16), kMaxInputBytes + 1));
+    const ssize_t got = ::read(fd, text.data() + filled, text.size() - filled);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) {
+      error = got < 0 ? errno : 0;
+      break;
+    }
+    filled += static_cast<std::size_t>(got);
   }
-  if (text.size() > kMaxInputBytes) throw InputError(path == "-" ? "standard input" : path, "", too_large_text());
-  if (in.bad()) throw InputError(path, "", "read error");
+  text.resize(filled);
+  if (!stdin_input) ::close(fd);
+  if (text.size() > kMaxInputBytes) throw InputError(name, "", too_large_text());
+  if (error != 0) throw InputError(name, "", std::string("read error (") + std::strerror(error) + ")");
   return text;
 }
 
@@ -460,7 +514,7 @@ std::size_t JsonInput::size() const {
 
 JsonInput JsonInput::at(std::string_view key) const {
   auto j = find(key);
-  if (!j) JsonInput(root_, node_, file_, path_ + "." + std::string(key)).fail("required field is missing");
+  if (!j) JsonInput(root_, node_, file_, path_ + member_segment(key)).fail("required field is missing");
   return *j;
 }
 
@@ -468,7 +522,7 @@ std::optional<JsonInput> JsonInput::find(std::string_view key) const {
   if (!node_->is_object()) fail("expected an object, found " + kind());
   auto it = node_->find(std::string(key));
   if (it == node_->end() || it->is_null()) return std::nullopt;
-  return JsonInput(root_, &*it, file_, path_ + "." + std::string(key));
+  return JsonInput(root_, &*it, file_, path_ + member_segment(key));
 }
 
 JsonInput JsonInput::at(std::size_t i) const {
@@ -490,7 +544,7 @@ void JsonInput::expect_keys(std::initializer_list<std::string_view> allowed) con
     if (!known) {
       std::string list;
       for (auto a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-      JsonInput(root_, &*it, file_, path_ + "." + it.key()).fail("unknown field (allowed: " + list + ")");
+      JsonInput(root_, &*it, file_, path_ + member_segment(it.key())).fail("unknown field (allowed: " + list + ")");
     }
   }
 }
@@ -510,8 +564,11 @@ Q JsonInput::rational() const {
 
 long JsonInput::integer(long lo, long hi) const {
   Q q = rational();
-  if (q.get_den() != 1 || q < lo || q > hi)
-    fail("expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " + to_string(q));
+  if (q.get_den() != 1 || q < lo || q > hi) {
+    const std::string found = to_string(q);
+    fail("expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " +
+         (found.size() <= 40 ? found : quoted_excerpt(found)));
+  }
   return q.get_num().get_si();
 }
 

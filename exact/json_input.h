@@ -30,9 +30,11 @@ class JsonInput {
   static JsonInput parse(const std::string& text, const std::string& file);
   /// Reads and parses a file ("-" reads standard input).
   static JsonInput load(const std::string& path);
-  /// The whole text of a file ("-" = standard input); InputError if it cannot be read.
+  /// The whole text of a file ("-" = standard input), at most kMaxInputBytes; InputError if it cannot be read, is
+  /// larger, or is not a regular file, a character device or a pipe. Opening never blocks: a named pipe without a
+  /// writer reads as empty.
   static std::string read_text(const std::string& path);
-  /// "larger than the input limit of 64 MiB".
+  /// "larger than the input limit of 32 MiB".
   static std::string too_large_text();
 
   const std::string& file() const { return *file_; }
@@ -79,6 +81,10 @@ class JsonInput {
   std::shared_ptr<const std::string> file_;
   std::string path_;
 };
+
+/// A text as a message quotes it: in double quotes, cut after 40 characters ("1234...", 5000 characters), so that
+/// no message repeats a huge input.
+std::string quoted_excerpt(std::string_view text);
 
 /// The digest JsonInput::canonical_sha256 gives the text value.dump(), without writing and parsing that text (for a
 /// value built in memory, such as a problem a certificate embeds).

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/json_out.h"
+#include "cli/option_checks.h"
 #include "cli/results.h"
 #include "cli/stability_svg.h"
 #include "exact/arith.h"
@@ -66,6 +67,8 @@ WithCertificate stability(const Scene& s, const std::string& wrench, std::string
   if (a == exact::Arith::kFloat) {
     if (!certificate.empty())
       throw exact::InputError("command line", "--certificate", "certificates need --arith exact or verified");
+    if (margin)
+      throw exact::InputError("command line", "--margin", "the margin is computed exactly (use exact or verified)");
     return {cli::stability_json(s.scene, g, solvers::strong_stability<double>(s.scene, exact::to_double(g), {a}), arith,
                                 "", std::nullopt)
                 .dump(),
@@ -134,7 +137,7 @@ std::string finger_svg(const Scene& s) {
 /// `insert FILE [--sweep-mu a,b,...]`.
 std::string insertion(const Scene& s, const std::string& sweep_mu) {
   const std::vector<Q> mus = cli::sweep_mus(sweep_mu);
-  const auto ins = solvers::insertion<Q>(s.scene);
+  const auto ins = cli::insertion_of(s.scene, s.name);
   cli::json j = cli::insertion_json(s.scene, ins, solvers::insertion_pushes<Q>(s.scene, ins));
   if (!mus.empty()) {
     cli::json sweep = cli::json::array();
@@ -144,7 +147,7 @@ std::string insertion(const Scene& s, const std::string& sweep_mu) {
   return j.dump();
 }
 std::string insertion_svg(const Scene& s) {
-  return cli::insertion_svg(s.scene, solvers::insertion_pushes<Q>(s.scene, solvers::insertion<Q>(s.scene)));
+  return cli::insertion_svg(s.scene, solvers::insertion_pushes<Q>(s.scene, cli::insertion_of(s.scene, s.name)));
 }
 
 /// A quasistatic (or plain UCP) problem file, with the name its messages use.
@@ -157,15 +160,17 @@ Ucp parse_ucp(const std::string& text, const std::string& name) {
   return {name, solvers::ucp::read_ucp_problem(exact::JsonInput::parse(text, name))};
 }
 
-/// `ucp FILE` with its options; `certificate`: the file to write, or empty.
+/// `ucp FILE` with its options (a budget not given: the CLI's default); `certificate`: the file to write, or empty.
 WithCertificate solve(const Ucp& u, const std::string& method, const std::string& arith, std::uint64_t seed,
-                      long max_nodes, long max_bases, double time_limit, const std::string& certificate) {
+                      std::optional<long> max_nodes, std::optional<long> max_bases, double time_limit,
+                      const std::string& certificate) {
+  cli::refuse_ignored_budgets(method, max_nodes.has_value(), max_bases.has_value());
   solvers::ucp::UcpOptions opts;
   opts.method = solvers::ucp::parse_method(method);
   opts.arith = exact::parse_arith(arith);
   opts.seed = seed;
-  opts.max_nodes = max_nodes;
-  opts.max_bases = max_bases;
+  opts.max_nodes = max_nodes.value_or(opts.max_nodes);
+  opts.max_bases = max_bases.value_or(opts.max_bases);
   opts.time_limit = time_limit;
   if (!certificate.empty() && opts.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--certificate", "a certificate needs --arith exact or verified");
@@ -178,8 +183,13 @@ WithCertificate solve(const Ucp& u, const std::string& method, const std::string
   return {cli::ucp_json(r, text.empty() ? "" : certificate).dump(), text};
 }
 
-std::string check(const std::string& text, const std::string& name) {
-  return cli::check_json(exact::JsonInput::parse(text, name)).dump();
+/// `check FILE [--problem PROBLEM]` on texts; an empty `problem_text` means no --problem.
+std::string check(const std::string& text, const std::string& name, const std::string& problem_text,
+                  const std::string& problem_name) {
+  const exact::JsonInput cert = exact::JsonInput::parse(text, name);
+  if (problem_text.empty()) return cli::check_json(cert).dump();
+  const exact::JsonInput problem = exact::JsonInput::parse(problem_text, problem_name);
+  return cli::check_json(cert, &problem).dump();
 }
 
 }  // namespace
@@ -233,4 +243,7 @@ PYBIND11_MODULE(_core, m) {
       },
       Release());
   m.def("check", &check, Release());
+  // A file's text through the CLI's reader: its size limit, and no blocking on a pipe without a writer.
+  m.def("read_text", &exact::JsonInput::read_text, Release());
+  m.attr("MAX_TIME_LIMIT") = cli::kMaxTimeLimit;
 }

@@ -6,6 +6,7 @@ import os
 
 from . import _core
 from ._numbers import number_text
+from ._options import LONG_MAX, UINT64_MAX, seconds, whole_number
 from ._results import CheckResult, UcpResult
 from ._scene import ARITHS, Scene, choice
 from ._source import FromSource
@@ -50,16 +51,19 @@ class Ucp(FromSource):
     def to_dict(self):
         return json.loads(self._core.text())
 
-    def solve(self, method="complete", arith="verified", seed=1, max_nodes=200000, max_bases=100000, time_limit=0,
+    def solve(self, method="complete", arith="verified", seed=1, max_nodes=None, max_bases=None, time_limit=0,
               certificate=None):
         """`contactcert ucp FILE`: solvable (with the pair and its physics) or jammed. An `unknown` verdict (a
-        budget ran out) raises BudgetExceeded with the result as its `result`."""
+        budget ran out) raises BudgetExceeded with the result as its `result`. max_nodes (default 200000) budgets
+        the complete search only, max_bases (default 100000) Step 3 (not in method enumerate), as in the CLI."""
         choice(method, ("paper", "modified", "complete", "enumerate"), "--method")
         choice(arith, ARITHS, "--arith")
-        if max_nodes < 1 or max_bases < 1 or time_limit < 0:
-            raise ValueError("--max-nodes/--max-bases/--time-limit: expected max-nodes, max-bases >= 1, time-limit >= 0")
+        seed = whole_number(seed, 0, UINT64_MAX, "--seed")
+        max_nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
+        max_bases = None if max_bases is None else whole_number(max_bases, 1, LONG_MAX, "--max-bases")
+        time_limit = seconds(time_limit)
         path = os.fspath(certificate) if certificate is not None else ""
-        data, text = self._core.solve(method, arith, seed, max_nodes, max_bases, float(time_limit), path)
+        data, text = self._core.solve(method, arith, seed, max_nodes, max_bases, time_limit, path)
         result = UcpResult(json.loads(data), Certificate(text, path) if text else None)
         if result.status == "unknown":
             d = result.to_dict()
@@ -75,16 +79,23 @@ class Ucp(FromSource):
 
 def generate_random(nc=3, mu_max=1, abar=0, seed=1):
     """`contactcert ucp --generate random`: a random quasistatic problem of section 5."""
+    seed = whole_number(seed, 0, UINT64_MAX, "--seed")
+    nc = whole_number(nc, 1, 1000, "--nc")
+    abar = whole_number(abar, 0, 2000, "--abar")
     return Ucp(_core.generate("random", seed, nc, number_text(mu_max, "--mu-max"), abar, 2, 6, False))
 
 
 def generate_reduction(rows=2, cols=6, planted=False, seed=1):
     """`contactcert ucp --generate reduction`: Proposition 2's UCP of a random 0-1 problem."""
-    return Ucp(_core.generate("reduction", seed, 3, "1", 0, rows, cols, planted))
+    seed = whole_number(seed, 0, UINT64_MAX, "--seed")
+    rows = whole_number(rows, 1, 1000, "--rows")
+    cols = whole_number(cols, 1, 60, "--cols")
+    return Ucp(_core.generate("reduction", seed, 3, "1", 0, rows, cols, bool(planted)))
 
 
 def _certificate_text(certificate):
-    """(text, name) of a Certificate, a dict, JSON text or a file path."""
+    """(text, name) of a Certificate, a dict, JSON text or a file path (read as the CLI reads it: at most 32 MiB,
+    never blocking on a pipe without a writer)."""
     if isinstance(certificate, Certificate):
         return certificate.text, certificate.path or "<certificate>"
     if isinstance(certificate, dict):
@@ -92,22 +103,22 @@ def _certificate_text(certificate):
     if isinstance(certificate, str) and certificate.lstrip().startswith("{"):
         return certificate, "<certificate>"
     path = os.fspath(certificate)
-    with open(path) as f:
-        return f.read(), path
+    return _core.read_text(path), path
+
+
+def _problem_text(problem):
+    """(text, name) of the problem a certificate must be about: a Scene's file text or a Ucp's."""
+    if isinstance(problem, Scene):
+        return problem._core.text, problem.name
+    if isinstance(problem, Ucp):
+        return problem._core.text(), problem._core.name
+    raise TypeError(f"problem: expected a Scene or a Ucp, found {type(problem).__name__}")
 
 
 def check(certificate, problem=None):
     """`contactcert check`: verifies the certificate from its embedded problem alone. With `problem` (a Scene
-    or a Ucp) the certificate must also be about that problem."""
+    or a Ucp) the certificate must also be about that problem, compared as `check --problem` compares them (the
+    exact values, whatever their spelling)."""
     text, name = _certificate_text(certificate)
-    result = CheckResult(json.loads(_core.check(text, name)))
-    if problem is None or not result.valid:
-        return result
-    cert = json.loads(text)
-    if isinstance(problem, Scene):
-        same = "scene" in cert and json.loads(cert["scene"]) == problem.to_dict()
-    else:
-        same = cert.get("problem") == problem.to_dict()
-    if same:
-        return result
-    return CheckResult({"valid": False, "kind": result.kind, "reason": "the certificate is about another problem"})
+    problem_text, problem_name = ("", "") if problem is None else _problem_text(problem)
+    return CheckResult(json.loads(_core.check(text, name, problem_text, problem_name)))

@@ -139,7 +139,8 @@ UcpProblem read_ucp_problem(const JsonInput& in, UcpPhases* phases, geometry::Fr
       u.Y = read_polyhedron(in.at("Y"), n);
       out.set(std::move(u));
     } else {
-      in.at("kind").fail("expected \"quasistatic\", \"quasistatic_scene\" or \"ucp\", found \"" + kind + "\"");
+      in.at("kind").fail("expected \"quasistatic\", \"quasistatic_scene\" or \"ucp\", found " +
+                         exact::quoted_excerpt(kind));
     }
     if (auto s = in.find("source")) out.source = s->string();
   }

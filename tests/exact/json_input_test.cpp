@@ -1,7 +1,10 @@
 #include "exact/json_input.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -92,6 +95,54 @@ TEST(JsonInput, CanonicalTextIgnoresSpellingOrderAndLabels) {
 
 // Valid input is read in one pass and only rejected input is read again with its numbers quoted: the messages are
 // those of the quoted reading, byte for byte (these are the messages of the build before the one-pass reading).
+/// The InputError of reading `path`, or "" if it reads.
+std::string read_error(const std::string& path) {
+  try {
+    JsonInput::read_text(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(JsonInput, ReadingIsBoundedAndNeverBlocks) {
+  EXPECT_EQ(read_error("/dev/zero"), "/dev/zero: larger than the input limit of 32 MiB");
+  EXPECT_EQ(read_error("/"), "/: is a directory; expected a JSON file");
+  EXPECT_NE(read_error("/no/such/file.json").find("/no/such/file.json: cannot open the file for reading"),
+            std::string::npos);
+  // A named pipe without a writer opens at once and reads as empty, which the parser refuses by name.
+  char dir[] = "/tmp/json_input_testXXXXXX";
+  ASSERT_NE(::mkdtemp(dir), nullptr);
+  const std::string fifo = std::string(dir) + "/fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(JsonInput::read_text(fifo), "");
+  EXPECT_EQ(error_of(JsonInput::read_text(fifo), [](const JsonInput&) {}),
+            "f.json: $: malformed JSON: no JSON text (the input is empty; a pipe without a writer reads as empty)");
+  ::unlink(fifo.c_str());
+  ::rmdir(dir);
+}
+
+TEST(JsonInput, DeepNestingNamesTheFieldWhereItStops) {
+  const std::string deep = "{\"a\": " + std::string(100000, '[') + "}";
+  std::string path = "$.a";
+  for (std::size_t k = 0; k < kMaxJsonDepth - 1; ++k) path += "[0]";
+  EXPECT_EQ(error_of(deep, [](const JsonInput&) {}), "f.json: " + path + ": nesting deeper than 64 levels");
+  EXPECT_EQ(error_of(std::string(64, '[') + std::string(64, ']'), [](const JsonInput&) {}), "");
+}
+
+TEST(JsonInput, MessagesQuoteAtMostAnExcerpt) {
+  EXPECT_EQ(quoted_excerpt("abc"), "\"abc\"");
+  EXPECT_EQ(quoted_excerpt(std::string(5000, '7')), "\"" + std::string(40, '7') + "...\" (5000 characters)");
+  const std::string huge = R"({"n": )" + std::string(4000, '9') + "}";
+  EXPECT_EQ(
+      error_of(huge, [](const JsonInput& j) { j.at("n").integer(0, 10); }),
+      "f.json: $.n: expected an integer from 0 to 10, found \"" + std::string(40, '9') + "...\" (4000 characters)");
+  const std::string token = R"({"n": )" + std::string(30000, 'x') + "}";
+  const std::string e = error_of(token, [](const JsonInput&) {});
+  EXPECT_EQ(e.find("json.exception"), std::string::npos);
+  EXPECT_LT(e.size(), 200u) << e;
+}
+
 TEST(JsonInput, MalformedInputKeepsItsMessages) {
   const auto none = [](const JsonInput&) {};
   EXPECT_EQ(error_of(R"({"a": 1,})", none),
