@@ -22,9 +22,8 @@ for sub in $subs; do
 done
 echo "docs: $checked options of $(echo "$subs" | wc -w) subcommands checked"
 # Every numeric option goes through the strict checks of cli/option_checks.h, whose ranges --help shows: an integer
-# as "INT:INT in [lo, hi]", a duration as "FLOAT:SECONDS in [0, 1e7]". (design: checked once its options carry them.)
+# as "INT:INT in [lo, hi]", a duration as "FLOAT:SECONDS in [0, 1e7]".
 for sub in $subs; do
-  [ "$sub" = design ] && continue
   for opt in $("$cc" "$sub" --help | grep -E -- '--[a-z-]+ (U?INT|FLOAT|NUMBER|POSITIVE)' |
     grep -vE -- '--[a-z-]+ (U?INT:INT in \[|FLOAT:SECONDS in \[)' | awk '{print $1}'); do
     echo "options: $sub $opt takes a number without the strict check (cli/option_checks.h)"
