@@ -133,9 +133,10 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
     return out;
   }
   out.valid = true;
-  out.reason = "every feasible mode is listed once, realised by its acceleration, and every other mode extends "
-               "exactly one proven dead prefix: " +
-               std::to_string(out.modes) + " feasible modes, " + std::to_string(out.dead) + " dead prefixes";
+  out.reason =
+      "every feasible mode is listed once, realised by its acceleration, and every other mode extends "
+      "exactly one proven dead prefix: " +
+      std::to_string(out.modes) + " feasible modes, " + std::to_string(out.dead) + " dead prefixes";
   return out;
 }
 

@@ -113,7 +113,7 @@ class Walker {
   // walk - up to the number of fixels - never becomes call depth. False once on_mode stopped the walk.
   bool walk() {
     struct Frame {
-      Vec<T> vdot;            // realises the live prefix of this depth
+      Vec<T> vdot;           // realises the live prefix of this depth
       std::size_t next = 0;  // the index of the next letter to try at the following fixel
     };
     ModeString prefix;
@@ -347,7 +347,8 @@ std::optional<CoverageGap> mode_coverage(std::size_t k, const ModeAlphabet& alph
   PrefixTrie trie;
   for (const auto* list : {&dead, &leaves})
     for (const auto& s : *list)
-      if (s.size() <= k && (list == &dead || s.size() == k) && !trie.insert(s)) return CoverageGap{Kind::kRepeated, s, {}};
+      if (s.size() <= k && (list == &dead || s.size() == k) && !trie.insert(s))
+        return CoverageGap{Kind::kRepeated, s, {}};
   // The listed strings are disjoint sets of modes exactly when none is a proper prefix of another: a listed node
   // has no children. (Every trie leaf is listed, so a child leads down to the listed string inside.)
   for (std::size_t at = 0; at < trie.size(); ++at) {

@@ -50,7 +50,8 @@ std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g
                    {"acceleration", strings(r.moving.acceleration)}};
   json proofs = json::array();
   for (const auto& p : r.proofs)
-    proofs.push_back({{"mode", p.mode.text()}, {"kinematic", p.kinematic}, {"motzkin", sparse_motzkin_json(p.motzkin)}});
+    proofs.push_back(
+        {{"mode", p.mode.text()}, {"kinematic", p.kinematic}, {"motzkin", sparse_motzkin_json(p.motzkin)}});
   j["proofs"] = proofs;
   return j.dump(1) + "\n";
 }

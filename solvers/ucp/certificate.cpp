@@ -146,7 +146,7 @@ CertificateCheck check_jammed(const JsonInput& cert, const CheckData& c) {
   std::vector<bool> zx(static_cast<std::size_t>(c.n), false), zy = zx;
   struct Frame {
     std::size_t id;
-    int stage = 0;  // 0: not entered; 1: x-child done; 2: y-child done
+    int stage = 0;                        // 0: not entered; 1: x-child done; 2: y-child done
     std::size_t branch = 0, y_child = 0;  // branch is free on the path above (checked on entry)
   };
   std::vector<Frame> stack{{0}};

@@ -85,7 +85,8 @@ ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
   t2::ConeColumns cols;
   if (!t2::cone_columns(checked, mode.mode.text(), cols)) c.at("mode").fail("not a mode of Table 2 for this scene");
   if (empty) {
-    const std::string why = t2::cone_empty_violation(cols, read_sparse_motzkin(c.at("motzkin"), cols.row_wrenches.size()));
+    const std::string why =
+        t2::cone_empty_violation(cols, read_sparse_motzkin(c.at("motzkin"), cols.row_wrenches.size()));
     if (!why.empty()) return {false, why};
     return {true,
             "the Motzkin vector proves that no wrench has the mode (y^T K >= 0, y^T P = 0, > 0 on a strict component)"};

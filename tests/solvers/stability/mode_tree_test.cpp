@@ -396,8 +396,8 @@ TEST(ModeTree, TwentyThousandFixelsDoNotDeepenTheCallStack) {
   // call stack (the recursive walk overflowed 8 MiB of stack near 17 000 fixels).
   const int k = 20000;
   std::ostringstream text;
-  text << R"({"kind": "planar", "workpiece": {"shape": {"type": "polygon", "vertices": [[0,0],[)" << 2 * k
-       << R"(,0],[)" << 2 * k << R"(,1],[0,1]]}}, "mu_s": "1/2", "mu_k": "1/2", "fixels": [)";
+  text << R"({"kind": "planar", "workpiece": {"shape": {"type": "polygon", "vertices": [[0,0],[)" << 2 * k << R"(,0],[)"
+       << 2 * k << R"(,1],[0,1]]}}, "mu_s": "1/2", "mu_k": "1/2", "fixels": [)";
   for (int i = 0; i < k; ++i) text << (i ? "," : "") << R"({"position": [)" << 2 * i + 1 << ", -1]}";
   text << "]}";
   ContactModeOptions options;
