@@ -3,7 +3,7 @@
 // increasing and the weights the non-zero entries of the primitive integer multiple of the vector. A positive
 // multiple of a Motzkin certificate is one (its conditions are signs of y^T A and y^T b), so the scale carries
 // no information and the primitive multiple is the vector's one spelling; a certificate's size is linear in the
-// rows it weighs (at most four in wrench space, Caratheodory) rather than in the rows of its system.
+// rows it weighs (typically a handful) rather than in the rows of its system.
 #pragma once
 
 #include <cstddef>
