@@ -122,9 +122,9 @@ class Walker {
     while (!path.empty()) {
       const std::size_t i = path.size() - 1;  // == prefix.letters.size()
       if (i == k_) {
+        count_mode();
         out_.modes.push_back(prefix);
         out_.accelerations.push_back(path.back().vdot);
-        count_mode();
         if (on_mode_ && !on_mode_(prefix, path.back().vdot)) return false;
       }
       if (i == k_ || path.back().next == letters_of(i).size()) {  // the subtree of this prefix is done
@@ -169,10 +169,10 @@ class Walker {
           covered());
   }
 
-  // Past options.max_modes listed modes: BudgetExceeded (the output of --unions or a printed `s` can be
-  // exponential in the fixels).
+  // Before listing a mode beyond options.max_modes: BudgetExceeded (the output of --unions or a printed `s` can
+  // be exponential in the fixels).
   void count_mode() const {
-    if (static_cast<long>(out_.modes.size()) > options_.max_modes)
+    if (static_cast<long>(out_.modes.size()) >= options_.max_modes)
       throw exact::BudgetExceeded(
           "mode enumeration: output budget of " + std::to_string(options_.max_modes) + " modes exhausted", covered());
   }
