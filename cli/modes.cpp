@@ -4,10 +4,12 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
+#include <limits>
 #include <map>
 
 #include "cli/command.h"
 #include "cli/json_out.h"
+#include "cli/option_checks.h"
 #include "cli/results.h"
 #include "exact/json_input.h"
 #include "geometry/scene_json.h"
@@ -141,12 +143,12 @@ void register_modes(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"strict", "printed"}))
       ->default_str("strict");
   sub->add_option("--max-nodes", o->max_nodes, "Budget on the prefixes the tree visits (exit 3 beyond it)")
-      ->check(CLI::PositiveNumber)
+      ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
       ->default_str("4194304");
   sub->add_option("--max-modes", o->max_modes,
                   "Budget on the modes listed (exit 3 beyond it; with --unions or --table2 printed the list can be "
                   "exponential in the fixels)")
-      ->check(CLI::PositiveNumber)
+      ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
       ->default_str(std::to_string(o->max_modes));
   sub->add_option("--certificate", o->certificate, "Write the completeness proof for `contactcert check` here");
   sub->callback([o, &action] { action = [o] { return run_modes(*o); }; });

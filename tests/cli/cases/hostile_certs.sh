@@ -40,6 +40,8 @@ check 0 '"modes":[' modes "$s/bt2002_section7_disk.json" --unions --json
 check 2 '--max-modes' modes "$s/bt2002_section7_disk.json" --unions --max-modes 0
 check 2 '--max-modes' modes "$s/bt2002_section7_disk.json" --unions --max-modes -3
 check 2 '--max-modes' modes "$s/bt2002_section7_disk.json" --unions --max-modes many
+check 2 'expected a decimal integer from 1' modes "$s/bt2002_section7_disk.json" --max-modes 0x10
+check 2 'expected a decimal integer from 1' modes "$s/bt2002_section7_disk.json" --max-modes 9223372036854775808
 # a time limit ends a long exponential walk too
 bar 2000 -1 > "$work/bar2000_gap.json"
 check 3 'time limit' modes "$work/bar2000_gap.json" --unions --kinematic --time-limit 1
