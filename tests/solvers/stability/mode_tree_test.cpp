@@ -369,25 +369,34 @@ void recursive_walk(const MotionModel<Q>& model, const ModeAlphabet& alphabet, s
   }
 }
 
+// The iterative walk's modes and dead prefixes, in order, against recursive_walk's.
+void expect_recursive_order(const geometry::PlanarScene& scene, bool unions, bool printed, const std::string& what) {
+  ContactModeOptions options;
+  options.unions = unions;
+  options.printed_separation = printed;
+  const ContactModes m = contact_modes(scene, options);
+  std::vector<std::string> modes, dead, tree_modes, tree_dead;
+  ModeString prefix;
+  recursive_walk(m.model, m.alphabet, scene.fixels.size(), prefix, modes, dead);
+  for (const ModeString& mode : m.tree.modes) tree_modes.push_back(mode.text());
+  for (const DeadPrefix<Q>& d : m.tree.dead) tree_dead.push_back(d.prefix.text());
+  EXPECT_EQ(tree_modes, modes) << what;
+  EXPECT_EQ(tree_dead, dead) << what;
+}
+
 TEST(ModeTree, TheIterativeWalkListsWhatTheRecursiveOneDidInItsOrder) {
   std::mt19937_64 rng(29);
   for (int t = 0; t < 60; ++t) {
-    const std::size_t k = 1 + static_cast<std::size_t>(rng() % 5);
-    const geometry::PlanarScene scene = parse(random_scene(rng, k));
-    for (bool unions : {false, true}) {
-      ContactModeOptions options;
-      options.unions = unions;
-      options.printed_separation = t % 2 == 1;
-      const ContactModes m = contact_modes(scene, options);
-      std::vector<std::string> modes, dead, tree_modes, tree_dead;
-      ModeString prefix;
-      recursive_walk(m.model, m.alphabet, k, prefix, modes, dead);
-      for (const ModeString& mode : m.tree.modes) tree_modes.push_back(mode.text());
-      for (const DeadPrefix<Q>& d : m.tree.dead) tree_dead.push_back(d.prefix.text());
-      EXPECT_EQ(tree_modes, modes);
-      EXPECT_EQ(tree_dead, dead);
-    }
+    const std::string text = random_scene(rng, 1 + static_cast<std::size_t>(rng() % 5));
+    for (bool unions : {false, true}) expect_recursive_order(parse(text), unions, t % 2 == 1, text);
   }
+  for (const auto& entry : std::filesystem::directory_iterator(CONTACTCERT_SCENES_DIR)) {
+    const std::string text = exact::JsonInput::read_text(entry.path().string());
+    if (text.find("\"planar\"") == std::string::npos) continue;
+    for (bool unions : {false, true})
+      for (bool printed : {false, true}) expect_recursive_order(parse(text), unions, printed, entry.path());
+  }
+  for (const std::string& text : {block(6), block(12)}) expect_recursive_order(parse(text), false, false, text);
 }
 
 TEST(ModeTree, TwentyThousandFixelsDoNotDeepenTheCallStack) {
