@@ -110,6 +110,11 @@ int report(const ModesOptions& o, const solvers::ContactModes& m) {
 }
 
 int run_modes(const ModesOptions& o) {
+  // The default time budget of the enumerations that can be exponential (modes_of) has the watchdog of an explicit
+  // --time-limit too: a single LP over thousands of rows is not interrupted by the tree's deadline.
+  if ((o.unions || o.table2 == "printed") && o.common.time_limit == 0)
+    start_watchdog("modes (the default budget of --unions and --table2 printed; --time-limit sets another)",
+                   kModesDefaultSeconds);
   const std::string text = exact::JsonInput::read_text(o.file);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
   const solvers::ContactModes m =
