@@ -23,6 +23,10 @@ using Action = std::function<int()>;
 /// Adds --json, --arith and --time-limit to a subcommand.
 void add_common_options(CLI::App& sub, CommonOptions& opts);
 
+/// Ends the process with exit code 3 if the command is still running `limit` seconds (+ grace) from now: the
+/// backstop of --time-limit (main.cpp), and of a command's own default time budget.
+void start_watchdog(const std::string& command, double limit);
+
 // One registration function per subcommand; each stores its work in `action` when selected.
 void register_demo(CLI::App& app, Action& action);
 void register_ucp(CLI::App& app, Action& action);

@@ -56,7 +56,8 @@ void report_float_undecided(const CLI::App& app, const std::string& what) {
 
 double no_time_limit = 0;  // --time-limit of the subcommands that do not register it themselves
 
-/// Ends the process with exit code 3 if the command is still running `limit` seconds (+ grace) from now.
+}  // namespace
+
 void start_watchdog(const std::string& command, double limit) {
   const double grace = std::max(1.0, 0.05 * limit);
   std::thread([command, limit, grace] {
@@ -66,8 +67,6 @@ void start_watchdog(const std::string& command, double limit) {
     std::_Exit(3);
   }).detach();
 }
-
-}  // namespace
 
 }  // namespace contactcert::cli
 

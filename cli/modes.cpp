@@ -27,6 +27,7 @@ struct ModesOptions {
   bool unions = false;
   std::string table2 = "strict";
   long max_nodes = 1L << 22;
+  long max_modes = solvers::ModeTreeOptions{}.max_modes;
   std::string certificate;
 };
 
@@ -61,13 +62,16 @@ json modes_json(const solvers::ContactModes& m, bool kinematic, const std::strin
 }
 
 solvers::ContactModes modes_of(const geometry::PlanarScene& scene, const std::string& arith, const std::string& table2,
-                               bool unions, long max_nodes, double time_limit) {
+                               bool unions, long max_nodes, double time_limit, long max_modes) {
   if (exact::parse_arith(arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "modes are enumerated exactly (use exact or verified)");
   solvers::ContactModeOptions options;
   options.printed_separation = table2 == "printed";
   options.unions = unions;
-  options.tree = {exact::parse_arith(arith), max_nodes, exact::Deadline::after(time_limit)};
+  // Overlapping letters (the unions, a printed `s`) can list exponentially many modes: a default time budget.
+  const bool overlapping = unions || options.printed_separation;
+  if (overlapping && time_limit == 0) time_limit = kModesDefaultSeconds;
+  options.tree = {exact::parse_arith(arith), max_nodes, max_modes, exact::Deadline::after(time_limit)};
   return solvers::contact_modes(scene, options);
 }
 
@@ -106,10 +110,26 @@ int report(const ModesOptions& o, const solvers::ContactModes& m) {
 }
 
 int run_modes(const ModesOptions& o) {
+  // The default time budget of the enumerations that can be exponential (modes_of) has the watchdog of an explicit
+  // --time-limit too: a single LP over thousands of rows is not interrupted by the tree's deadline.
+  if ((o.unions || o.table2 == "printed") && o.common.time_limit == 0)
+    start_watchdog("modes (the default budget of --unions and --table2 printed; --time-limit sets another)",
+                   kModesDefaultSeconds);
   const std::string text = exact::JsonInput::read_text(o.file);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
-  const solvers::ContactModes m = modes_of(scene, o.common.arith, o.table2, o.unions, o.max_nodes, o.common.time_limit);
-  if (!o.certificate.empty()) write_text_file(o.certificate, solvers::modes_certificate(text, m));
+  const solvers::ContactModes m =
+      modes_of(scene, o.common.arith, o.table2, o.unions, o.max_nodes, o.common.time_limit, o.max_modes);
+  if (!o.certificate.empty()) {
+    // A certificate that `check` could not read is not written: check reads at most kMaxInputBytes.
+    const std::string certificate = solvers::modes_certificate(text, m);
+    if (certificate.size() > exact::kMaxInputBytes)
+      throw exact::BudgetExceeded("modes --certificate: the certificate would take " +
+                                      std::to_string(certificate.size()) + " bytes, more than the " +
+                                      std::to_string(exact::kMaxInputBytes >> 20) + " MiB that check reads",
+                                  std::to_string(m.tree.modes.size()) + " feasible modes found, " +
+                                      std::to_string(m.tree.dead.size()) + " dead prefixes; no certificate written");
+    write_text_file(o.certificate, certificate);
+  }
   return report(o, m);
 }
 
@@ -130,6 +150,11 @@ void register_modes(CLI::App& app, Action& action) {
   sub->add_option("--max-nodes", o->max_nodes, "Budget on the prefixes the tree visits (exit 3 beyond it)")
       ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
       ->default_str("4194304");
+  sub->add_option("--max-modes", o->max_modes,
+                  "Budget on the modes listed (exit 3 beyond it; with --unions or --table2 printed the list can be "
+                  "exponential in the fixels)")
+      ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
+      ->default_str(std::to_string(o->max_modes));
   sub->add_option("--certificate", o->certificate, "Write the completeness proof for `contactcert check` here");
   sub->callback([o, &action] { action = [o] { return run_modes(*o); }; });
 }

@@ -41,9 +41,12 @@ json finger_json(const solvers::FingerPushes<exact::Q>& pushes);
 std::string finger_svg(const geometry::PlanarScene& scene, const solvers::FingerPushes<exact::Q>& pushes);
 
 // modes.cpp: the feasible contact modes of a scene (arith, table2, unions and the budgets as `modes` reads
-// them) and the JSON of `modes --json`.
+// them: with --unions or a printed `s` a time limit of 0 means the default budget kModesDefaultSeconds) and
+// the JSON of `modes --json`.
+inline constexpr double kModesDefaultSeconds = 60;
 solvers::ContactModes modes_of(const geometry::PlanarScene& scene, const std::string& arith, const std::string& table2,
-                               bool unions, long max_nodes, double time_limit);
+                               bool unions, long max_nodes, double time_limit,
+                               long max_modes = solvers::ModeTreeOptions{}.max_modes);
 json modes_json(const solvers::ContactModes& m, bool kinematic, const std::string& certificate);
 
 // cone.cpp: the mode named by --mode (InputError naming `file` and --mode otherwise), the exact and the

@@ -5,6 +5,7 @@
 
 #include "exact/rational_text.h"
 #include "solvers/insertion/insertion.h"
+#include "solvers/stability/sparse_motzkin.h"
 #include "solvers/wrench_cone/cone_form.h"
 #include "solvers/wrench_cone/contact_model.h"
 
@@ -38,7 +39,8 @@ std::string goal_certificate(const std::string& scene_text, const geometry::Plan
     if (r.status != exact::StrictStatus::kInfeasible)
       throw std::logic_error("goal certificate: the witness lies in G_" + set.mode.text() + " of state " +
                              set.state_text());
-    outside.push_back({{"state", set.state_text()}, {"mode", set.mode.text()}, {"motzkin", strings(r.motzkin)}});
+    outside.push_back(
+        {{"state", set.state_text()}, {"mode", set.mode.text()}, {"motzkin", sparse_motzkin_json(r.motzkin)}});
   }
   nlohmann::ordered_json j;
   j["kind"] = "goal_nonempty";

@@ -6,6 +6,7 @@
 
 #include "solvers/design/goal_certificate.h"
 #include "solvers/stability/frame_check.h"
+#include "solvers/stability/sparse_motzkin.h"
 #include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers {
@@ -107,7 +108,7 @@ GoalCertificateCheck check_goal_certificate(const exact::JsonInput& c) {
     t2::ConeColumns cols;
     if (!t2::cone_columns(checked, mode_text, cols))
       return {false, mode_text + " is not a mode of Table 2 in state " + state};
-    const Vec<Q> y = o.at("motzkin").rational_vector(cols.row_wrenches.size());
+    const Vec<Q> y = read_sparse_motzkin(o.at("motzkin"), cols.row_wrenches.size());
     if (const std::string why = t2::wrench_outside_violation(checked, cols, y, g); !why.empty())
       return {false, "the Motzkin vector of " + mode_text + " in state " + state +
                          " does not prove the wrench outside its cone: " + why};

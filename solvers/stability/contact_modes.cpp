@@ -4,6 +4,7 @@
 
 #include "exact/rational_text.h"
 #include "solvers/stability/frame_check.h"
+#include "solvers/stability/sparse_motzkin.h"
 #include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers {
@@ -89,7 +90,7 @@ std::string modes_certificate(const std::string& scene_text, const ContactModes&
   j["modes"] = modes;
   json dead = json::array();
   for (const DeadPrefix<Q>& d : m.tree.dead)
-    dead.push_back({{"prefix", d.prefix.text()}, {"motzkin", strings(d.motzkin)}});
+    dead.push_back({{"prefix", d.prefix.text()}, {"motzkin", sparse_motzkin_json(d.motzkin)}});
   j["dead"] = dead;
   return j.dump(1) + "\n";
 }
@@ -124,19 +125,21 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
     const ModeString p = read_letters(e.at("prefix"), alphabet, k, true);
     table2_check::Rows rows;
     if (!table2_check::kinematic_rows(checked, p.text(), printed, rows) ||
-        !table2_check::motzkin_holds(rows, e.at("motzkin").rational_vector()))
+        !table2_check::motzkin_holds(rows, read_sparse_motzkin(e.at("motzkin"), rows.rows.size())))
       return {false, "the certificate of dead prefix " + p.text() + " does not verify", 0, 0};
     dead.push_back(p.text());
   }
   out.modes = static_cast<long>(leaves.size());
   out.dead = static_cast<long>(dead.size());
   if (auto gap = mode_coverage(k, alphabet, dead, leaves)) {
-    out.reason = "the modes starting with '" + *gap + "' are neither listed nor proven infeasible";
+    out.reason = coverage_gap_text(*gap);
     return out;
   }
   out.valid = true;
-  out.reason = "every listed mode is realised by its acceleration and every other mode extends a proven dead prefix: " +
-               std::to_string(out.modes) + " feasible modes, " + std::to_string(out.dead) + " dead prefixes";
+  out.reason =
+      "every feasible mode is listed once, realised by its acceleration, and every other mode extends "
+      "exactly one proven dead prefix: " +
+      std::to_string(out.modes) + " feasible modes, " + std::to_string(out.dead) + " dead prefixes";
   return out;
 }
 

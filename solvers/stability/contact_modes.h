@@ -38,7 +38,7 @@ ContactModes contact_modes(const geometry::PlanarScene& scene, const ContactMode
 const char* mode_group(const ModeString& mode, const std::vector<bool>& touching);
 
 /// The "modes" certificate: the scene text, the alphabet, every mode with its acceleration, every dead prefix
-/// with its Motzkin certificate.
+/// with its Motzkin certificate (sparse, sparse_motzkin.h).
 std::string modes_certificate(const std::string& scene_text, const ContactModes& modes);
 
 struct ModesCertificateCheck {
@@ -49,9 +49,10 @@ struct ModesCertificateCheck {
 
 /// Verifies a "modes" certificate against its embedded scene: each listed acceleration realises its mode
 /// (Table 2, exact signs), each dead prefix's certificate proves its kinematic rows infeasible (both with the
-/// checker's own rows, table2_rows_check.h), and together they
-/// cover every mode string (mode_coverage): the list is exactly the feasible modes. Malformed certificates
-/// throw InputError naming the field.
+/// checker's own rows, table2_rows_check.h), and together they partition the mode strings (mode_coverage: no
+/// string listed twice or inside a dead prefix, none missing), so the list is exactly the feasible modes, each
+/// once, and its count is theirs. Malformed certificates (among them a Motzkin vector with a repeated or
+/// out-of-range row, sparse_motzkin.h) throw InputError naming the field.
 ModesCertificateCheck check_modes_certificate(const exact::JsonInput& certificate);
 
 }  // namespace contactcert::solvers

@@ -103,37 +103,58 @@ class Walker {
         on_mode_(on_mode),
         out_(out),
         k_(static_cast<std::size_t>(model.J.cols() / 2)),
-        known_(k_) {}
+        known_(k_) {
+    for (std::size_t i = 0; i < k_; ++i)
+      (alphabet.rules.touches(i) ? touching_letters_ : gap_letters_) = alphabet.letters(i);
+  }
 
-  // Visits the live prefix (vdot realises it) and its subtree; false once on_mode stopped the walk.
-  bool visit(ModeString& prefix, const Vec<T>& vdot) {
-    const std::size_t i = prefix.letters.size();
-    if (i == k_) {
-      out_.modes.push_back(prefix);
-      out_.accelerations.push_back(vdot);
-      return !on_mode_ || on_mode_(prefix, vdot);
-    }
-    for (Interaction L : alphabet_.letters(i)) {
+  // Walks the subtree of the empty prefix depth first, letters in alphabet order, with an explicit stack (one
+  // frame per live prefix on the current path: its realising vdot and its next letter), so the depth of the
+  // walk - up to the number of fixels - never becomes call depth. False once on_mode stopped the walk.
+  bool walk() {
+    struct Frame {
+      Vec<T> vdot;           // realises the live prefix of this depth
+      std::size_t next = 0;  // the index of the next letter to try at the following fixel
+    };
+    ModeString prefix;
+    std::vector<Frame> path;
+    path.push_back({Vec<T>::Zero(3), 0});  // the empty prefix: no rows, realised by vdot = 0
+    while (!path.empty()) {
+      const std::size_t i = path.size() - 1;  // == prefix.letters.size()
+      if (i == k_) {
+        count_mode();
+        out_.modes.push_back(prefix);
+        out_.accelerations.push_back(path.back().vdot);
+        if (on_mode_ && !on_mode_(prefix, path.back().vdot)) return false;
+      }
+      if (i == k_ || path.back().next == letters_of(i).size()) {  // the subtree of this prefix is done
+        path.pop_back();
+        if (!prefix.letters.empty()) prefix.letters.pop_back();
+        continue;
+      }
+      const Interaction L = letters_of(i)[path.back().next++];
       count_node();
       prefix.letters.push_back(L);
-      bool go_on = true;
-      if (meets(model_, alphabet_.rules, vdot, i, L)) {
-        go_on = visit(prefix, vdot);
-      } else if (Vec<T> y = reuse(prefix); y.size()) {
-        out_.dead.push_back({prefix, std::move(y)});
-      } else {
-        auto kin = exact::strict_feasibility(kinematic_system(model_, prefix, alphabet_.rules), options_.arith);
-        out_.lps += kin.lps;
-        if (kin.rounded_float_checked) out_.lps_checked_from_float += kin.lps;
-        if (kin.status == exact::StrictStatus::kFeasible) {
-          go_on = visit(prefix, Vec<T>(kin.x.head(3)));
-        } else {
-          remember(prefix, kin.motzkin);
-          out_.dead.push_back({prefix, std::move(kin.motzkin)});
-        }
+      if (meets(model_, alphabet_.rules, path.back().vdot, i, L)) {
+        Vec<T> vdot = path.back().vdot;  // copied before push_back can move the frames
+        path.push_back({std::move(vdot), 0});
+        continue;
       }
+      if (Vec<T> y = reuse(prefix); y.size()) {
+        out_.dead.push_back({prefix, std::move(y)});
+        prefix.letters.pop_back();
+        continue;
+      }
+      auto kin = exact::strict_feasibility(kinematic_system(model_, prefix, alphabet_.rules), options_.arith);
+      out_.lps += kin.lps;
+      if (kin.rounded_float_checked) out_.lps_checked_from_float += kin.lps;
+      if (kin.status == exact::StrictStatus::kFeasible) {
+        path.push_back({Vec<T>(kin.x.head(3)), 0});
+        continue;
+      }
+      remember(prefix, kin.motzkin);
+      out_.dead.push_back({prefix, std::move(kin.motzkin)});
       prefix.letters.pop_back();
-      if (!go_on) return false;
     }
     return true;
   }
@@ -145,11 +166,28 @@ class Walker {
           out_.nodes > options_.max_nodes
               ? "mode enumeration: node budget of " + std::to_string(options_.max_nodes) + " prefixes exhausted"
               : "mode enumeration: " + options_.deadline.reached_text(),
-          std::to_string(out_.nodes - 1) + " prefixes visited, " + std::to_string(out_.modes.size()) +
-              " feasible modes found");
+          covered());
+  }
+
+  // Before listing a mode beyond options.max_modes: BudgetExceeded (the output of --unions or a printed `s` can
+  // be exponential in the fixels).
+  void count_mode() const {
+    if (static_cast<long>(out_.modes.size()) >= options_.max_modes)
+      throw exact::BudgetExceeded(
+          "mode enumeration: output budget of " + std::to_string(options_.max_modes) + " modes exhausted", covered());
   }
 
  private:
+  std::string covered() const {
+    return std::to_string(out_.nodes - 1) + " prefixes visited, " + std::to_string(out_.modes.size()) +
+           " feasible modes found";
+  }
+
+  // The letters of fixel i (alphabet.letters), kept once per kind of fixel.
+  const std::vector<Interaction>& letters_of(std::size_t i) const {
+    return alphabet_.rules.touches(i) ? touching_letters_ : gap_letters_;
+  }
+
   bool strict_s(std::size_t fixel) const {
     return alphabet_.rules.touches(fixel) && !alphabet_.rules.printed_separation;
   }
@@ -216,6 +254,7 @@ class Walker {
   ModeTree<T>& out_;
   std::size_t k_;
   std::vector<std::vector<KnownProof<T>>> known_;  ///< by the last fixel of their support
+  std::vector<Interaction> touching_letters_, gap_letters_;
 };
 
 }  // namespace
@@ -233,9 +272,8 @@ ModeTree<T> walk_modes(const MotionModel<T>& model, const ModeAlphabet& alphabet
                        const OnMode<T>& on_mode) {
   ModeTree<T> out;
   Walker<T> walker(model, alphabet, options, on_mode, out);
-  walker.count_node();  // the empty prefix: no rows, realised by vdot = 0
-  ModeString prefix;
-  out.complete = walker.visit(prefix, Vec<T>::Zero(3));
+  walker.count_node();  // the empty prefix
+  out.complete = walker.walk();
   return out;
 }
 
@@ -255,7 +293,8 @@ class PrefixTrie {
 
   PrefixTrie() : nodes_(1) {}
 
-  void insert(const std::string& s) {
+  /// Adds s; false if s was listed already.
+  bool insert(const std::string& s) {
     std::size_t at = 0;
     for (const char c : s) {
       std::size_t next = child(at, c);
@@ -271,8 +310,12 @@ class PrefixTrie {
       }
       at = next;
     }
+    const bool fresh = !nodes_[at].listed;
     nodes_[at].listed = true;
+    return fresh;
   }
+
+  std::size_t size() const { return nodes_.size(); }
 
   std::size_t child(std::size_t at, char c) const {
     std::size_t n = nodes_[at].first_child;
@@ -295,29 +338,51 @@ class PrefixTrie {
 
 }  // namespace
 
-std::optional<std::string> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
+std::optional<CoverageGap> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
                                          const std::vector<std::string>& dead, const std::vector<std::string>& leaves) {
+  using Kind = CoverageGap::Kind;
   // A prefix is accounted for if it is listed (dead, or a full-length leaf); the walk descends only into
   // proper prefixes of listed strings, so it never expands more than the lists spell out. Memory and time are
   // linear in the lists' total length (each trie node is visited once, each with at most the fixel's letters).
   PrefixTrie trie;
-  for (const auto& s : dead)
-    if (s.size() <= k) trie.insert(s);
-  for (const auto& s : leaves)
-    if (s.size() == k) trie.insert(s);
+  for (const auto* list : {&dead, &leaves})
+    for (const auto& s : *list)
+      if (s.size() <= k && (list == &dead || s.size() == k) && !trie.insert(s))
+        return CoverageGap{Kind::kRepeated, s, {}};
+  // The listed strings are disjoint sets of modes exactly when none is a proper prefix of another: a listed node
+  // has no children. (Every trie leaf is listed, so a child leads down to the listed string inside.)
+  for (std::size_t at = 0; at < trie.size(); ++at) {
+    if (!trie[at].listed || trie[at].first_child == PrefixTrie::kNone) continue;
+    std::size_t inside = trie[at].first_child;
+    while (!trie[inside].listed) inside = trie[inside].first_child;
+    return CoverageGap{Kind::kInside, trie.text(inside), trie.text(at)};
+  }
   if (trie[0].listed) return std::nullopt;  // the empty prefix itself is listed: every mode is covered
   std::vector<std::size_t> stack{0};
   while (!stack.empty()) {
     const std::size_t at = stack.back();
     stack.pop_back();
-    if (trie[at].depth == k) return trie.text(at);  // a full mode that nothing lists
+    if (trie[at].depth == k) return CoverageGap{Kind::kMissing, trie.text(at), {}};  // a full mode nothing lists
     for (Interaction L : alphabet.letters(trie[at].depth)) {
       const std::size_t next = trie.child(at, static_cast<char>(L));
-      if (next == PrefixTrie::kNone) return trie.text(at) + static_cast<char>(L);
+      if (next == PrefixTrie::kNone) return CoverageGap{Kind::kMissing, trie.text(at) + static_cast<char>(L), {}};
       if (!trie[next].listed) stack.push_back(next);
     }
   }
   return std::nullopt;
+}
+
+std::string coverage_gap_text(const CoverageGap& gap) {
+  switch (gap.kind) {
+    case CoverageGap::Kind::kMissing:
+      return "the modes starting with '" + gap.prefix + "' are neither listed nor proven infeasible";
+    case CoverageGap::Kind::kRepeated:
+      return "'" + gap.prefix + "' is listed twice (each mode and each dead prefix belongs in the list once)";
+    case CoverageGap::Kind::kInside:
+      return "'" + gap.prefix + "' extends the listed prefix '" + gap.within +
+             "', which accounts for its modes already (an extra entry)";
+  }
+  return {};
 }
 
 #define CONTACTCERT_MODE_TREE_INSTANTIATE(T)                                                             \

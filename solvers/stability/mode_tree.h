@@ -3,10 +3,13 @@
 // velocity products neglected) are linear in the workpiece acceleration vdot in R^3, so the letters of a mode
 // put rows on vdot alone (kinematic_system), and a prefix of a mode - letters for fixels 1..i - whose rows have
 // no solution has no feasible completion. The depth-first tree over the fixels that stops at such a prefix
-// visits (letters per fixel) x (feasible prefixes) nodes: the feasible modes of i fixels are cells of an
-// arrangement of 2i planes through the origin of R^3, O(i^2) of them (O(i) when every a_n must be >= 0), never
-// 4^k. Every dead prefix carries a Motzkin certificate, so the tree is a completeness proof that a checker
-// verifies by walking only the prefixes it lists (mode_coverage).
+// visits (letters per fixel) x (feasible prefixes) nodes. With the strict `s` and no unions the letters of a fixel
+// split its accelerations into disjoint sets, so each feasible mode of i fixels is a union of cells of an
+// arrangement of 2i planes through the origin of R^3 and there are O(i^2) of them (O(i) when every a_n must be
+// >= 0), never 4^k. The unions (m, u) and Table 2's printed `s` (a_n >= 0 at a touching fixel) give overlapping
+// modes - vdot = 0 alone realises 2^(touching) printed ones - so there the walk is only output-sensitive and its
+// output can be exponential: ModeTreeOptions bounds it. Every dead prefix carries a Motzkin certificate, so the
+// tree is a completeness proof that a checker verifies by walking only the prefixes it lists (mode_coverage).
 #pragma once
 
 #include <cstddef>
@@ -41,8 +44,9 @@ struct DeadPrefix {
 
 struct ModeTreeOptions {
   exact::Arith arith = exact::Arith::kVerified;
-  long max_nodes = 1L << 22;  ///< prefixes visited at most; beyond: BudgetExceeded
-  exact::Deadline deadline{}; ///< tested at every node; expired: BudgetExceeded
+  long max_nodes = 1L << 22;   ///< prefixes visited at most; beyond: BudgetExceeded
+  long max_modes = 100000;     ///< modes listed at most (the output); beyond: BudgetExceeded
+  exact::Deadline deadline{};  ///< tested at every node; expired: BudgetExceeded
 };
 
 /// The walk's result: the feasible modes with a realising acceleration, and the dead prefixes with their proofs.
@@ -61,8 +65,9 @@ struct ModeTree {
 template <class T>
 using OnMode = std::function<bool(const ModeString&, const Vec<T>&)>;
 
-/// Walks the prefix tree of the model's fixels depth first. Throws exact::BudgetExceeded (with the nodes
-/// covered) past options.max_nodes or the deadline.
+/// Walks the prefix tree of the model's fixels depth first, iteratively (memory O(fixels) for the path, whatever
+/// the depth). Throws exact::BudgetExceeded (with the nodes covered) past options.max_nodes, options.max_modes or
+/// the deadline.
 template <class T>
 ModeTree<T> walk_modes(const MotionModel<T>& model, const ModeAlphabet& alphabet, const ModeTreeOptions& options,
                        const OnMode<T>& on_mode = {});
@@ -72,12 +77,25 @@ ModeTree<T> walk_modes(const MotionModel<T>& model, const ModeAlphabet& alphabet
 template <class T>
 bool realises(const MotionModel<T>& model, const KinematicRules& rules, const Vec<T>& vdot, const ModeString& mode);
 
-/// Whether the listed prefixes cover every mode of k fixels over the alphabet: each mode extends some `dead`
-/// prefix or equals some `leaves` mode. Walks only the prefixes of listed strings, at most (total length of the
-/// lists) x (letters per fixel) of them, so a forged list is rejected in time linear in its size. Returns nullopt
-/// if covered, else a mode prefix that no listed string accounts for (as text).
-std::optional<std::string> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
+/// Why listed prefixes do not partition the modes: a mode prefix that no listed string accounts for
+/// (kMissing), a string listed twice (kRepeated), or a listed string that extends another one (kInside: its
+/// modes are already accounted for, so a count of the list would count them twice).
+struct CoverageGap {
+  enum class Kind { kMissing, kRepeated, kInside };
+  Kind kind;
+  std::string prefix;  ///< the prefix no string accounts for, the repeated string, or the string inside another
+  std::string within;  ///< kInside: the listed string that `prefix` extends
+};
+
+/// Whether the listed prefixes partition the modes of k fixels over the alphabet: each mode extends exactly one
+/// `dead` prefix or equals exactly one `leaves` mode, and no listed string is listed twice or extends another.
+/// Walks only the prefixes of listed strings, at most (total length of the lists) x (letters per fixel) of them,
+/// so a forged list is rejected in time linear in its size. Returns nullopt if they do, else the first gap found.
+std::optional<CoverageGap> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
                                          const std::vector<std::string>& dead, const std::vector<std::string>& leaves);
+
+/// The gap as a checker's reason.
+std::string coverage_gap_text(const CoverageGap& gap);
 
 #define CONTACTCERT_MODE_TREE_EXTERN(T)                                                                         \
   extern template ModeTree<T> walk_modes<T>(const MotionModel<T>&, const ModeAlphabet&, const ModeTreeOptions&, \

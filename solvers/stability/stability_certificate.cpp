@@ -4,6 +4,8 @@
 
 #include "exact/rational_text.h"
 #include "solvers/stability/frame_check.h"
+#include "solvers/stability/sparse_motzkin.h"
+#include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers {
 namespace {
@@ -41,14 +43,15 @@ std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g
   if (r.has_resting)
     j["resting"] = {{"forces", strings(r.resting_forces)}};
   else
-    j["resting"] = {{"motzkin", strings(r.resting_farkas)}};
+    j["resting"] = {{"motzkin", sparse_motzkin_json(r.resting_farkas)}};
   if (r.has_moving)
     j["moving"] = {{"mode", r.moving.mode.text()},
                    {"forces", strings(r.moving.forces)},
                    {"acceleration", strings(r.moving.acceleration)}};
   json proofs = json::array();
   for (const auto& p : r.proofs)
-    proofs.push_back({{"mode", p.mode.text()}, {"kinematic", p.kinematic}, {"motzkin", strings(p.motzkin)}});
+    proofs.push_back(
+        {{"mode", p.mode.text()}, {"kinematic", p.kinematic}, {"motzkin", sparse_motzkin_json(p.motzkin)}});
   j["proofs"] = proofs;
   return j.dump(1) + "\n";
 }
@@ -74,22 +77,34 @@ StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& c)
   else
     c.at("verdict").fail("expected strongly_stable, weakly_stable or unstable");
   const Vec<Q> g = c.at("wrench").rational_vector(3);
+  // The Motzkin vectors are read against the row counts of the checker's own systems (table2_rows_check.h).
+  namespace t2 = table2_check;
+  const t2::CheckedScene checked = t2::checked_scene(scene, /*touching_only=*/true);
   const exact::JsonInput resting = c.at("resting");
   if (auto f = resting.find("forces")) {
+    resting.expect_keys({"forces", "contacts"});
     claim.has_resting = true;
     claim.resting_forces = f->rational_vector(2 * k);
   } else {
-    claim.resting_farkas = resting.at("motzkin").rational_vector();
+    resting.expect_keys({"motzkin"});
+    claim.resting_farkas = read_sparse_motzkin(resting.at("motzkin"), t2::resting_rows(checked, g).rows.size());
   }
   if (auto m = c.find("moving")) {
+    m->expect_keys({"mode", "forces", "acceleration", "contacts"});
     claim.has_moving = true;
     claim.moving = {read_mode(m->at("mode"), k), m->at("forces").rational_vector(2 * k),
                     m->at("acceleration").rational_vector(3)};
   }
   if (auto ps = c.find("proofs"))
     for (const auto& p : ps->elements()) {
+      p.expect_keys({"mode", "kinematic", "motzkin"});
       const bool kinematic = p.at("kinematic").boolean();
-      claim.proofs.push_back({read_mode(p.at("mode"), k, kinematic), kinematic, p.at("motzkin").rational_vector()});
+      const ModeString mode = read_mode(p.at("mode"), k, kinematic);
+      t2::Rows rows;  // read_mode admits only modes and prefixes that have these rows
+      if (kinematic ? !t2::kinematic_rows(checked, mode.text(), false, rows)
+                    : !t2::motion_rows(checked, mode.text(), g, rows))
+        p.at("mode").fail("a mode of the touching fixels over s l r n");
+      claim.proofs.push_back({mode, kinematic, read_sparse_motzkin(p.at("motzkin"), rows.rows.size())});
     }
   const std::string why = check_stability(scene, g, claim);
   return {why.empty(), why.empty() ? std::string("every vector of the evidence verifies exactly: ") + verdict : why};

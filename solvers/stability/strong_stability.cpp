@@ -1,5 +1,7 @@
 #include "solvers/stability/strong_stability.h"
 
+#include <limits>
+
 #include "exact/input_error.h"
 #include "exact/ladder_numbers.h"
 #include "solvers/stability/table2_rows_check.h"
@@ -74,7 +76,10 @@ bool nonzero(const Vec<T>& v) {
   return false;
 }
 
-ModeTreeOptions tree_options(const StabilityOptions& o) { return {o.arith, o.max_nodes, o.deadline}; }
+// The moving modes over s l r n with a strict `s` are disjoint, O(k^2) of them: the node budget bounds them.
+ModeTreeOptions tree_options(const StabilityOptions& o) {
+  return {o.arith, o.max_nodes, std::numeric_limits<long>::max(), o.deadline};
+}
 
 // One feasible mode as the verdict sees it: its name, system and LP.
 template <class T>
@@ -276,8 +281,13 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
       }
     }
     if (auto gap = mode_coverage(k, moving_alphabet(k), dead, leaves))
-      return "no proof covers the moving modes that start with '" + *gap + "'";
+      return gap->kind == CoverageGap::Kind::kMissing
+                 ? "no proof covers the moving modes that start with '" + gap->prefix + "'"
+                 : coverage_gap_text(*gap);
   }
+  if (claim.proofs.size() && (!resting || moving))
+    return "the proofs are extra entries: they are evidence only beside a resting solution and no moving witness "
+           "(strongly stable)";
   const StabilityVerdict v = !resting ? StabilityVerdict::kUnstable
                              : moving ? StabilityVerdict::kWeaklyStable
                                       : StabilityVerdict::kStronglyStable;

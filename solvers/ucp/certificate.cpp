@@ -122,6 +122,16 @@ std::string check_velocity_farkas(const CheckData& c, const std::vector<bool>& z
 
 Vec<Q> read_vector(const JsonInput& in) { return in.rational_vector(); }
 
+/// Whether u is written as documented: integers with gcd 1 (the zero vector fails the Farkas conditions itself).
+bool primitive_or_zero(const Vec<Q>& u) {
+  exact::Z g = 0;
+  for (Index i = 0; i < u.size(); ++i) {
+    if (u(i).get_den() != 1) return false;
+    g = gcd(g, u(i).get_num());
+  }
+  return g == 0 || g == 1;
+}
+
 CertificateCheck check_jammed(const JsonInput& cert, const CheckData& c) {
   CertificateCheck out;
   out.kind = "ucp_jammed";
@@ -131,29 +141,27 @@ CertificateCheck check_jammed(const JsonInput& cert, const CheckData& c) {
     out.reason = "the tree has no nodes";
     return out;
   }
-  // Depth-first with one set of fixings, set on the way down and restored on the way up: memory O(n + depth),
-  // bounded by the certificate's size whatever the tree.
+  // Depth-first with one set of fixings, set on the way down and cleared on the way up: memory O(n + depth),
+  // bounded by the certificate's size whatever the tree (and depth <= n: a path splits each pair once).
   std::vector<bool> seen(count, false);
   std::vector<bool> zx(static_cast<std::size_t>(c.n), false), zy = zx;
   struct Frame {
     std::size_t id;
-    int stage = 0;  // 0: not entered; 1: x-child done; 2: y-child done
-    std::size_t branch = 0, y_child = 0;
-    bool was_x = false, was_y = false;  // zx[branch], zy[branch] before this node
+    int stage = 0;                        // 0: not entered; 1: x-child done; 2: y-child done
+    std::size_t branch = 0, y_child = 0;  // branch is free on the path above (checked on entry)
   };
   std::vector<Frame> stack{{0}};
   while (!stack.empty()) {
     Frame& f = stack.back();
     if (f.stage == 1) {  // x_i = 0 explored; now y_i = 0
-      zx[f.branch] = f.was_x;
-      f.was_y = zy[f.branch];
+      zx[f.branch] = false;
       zy[f.branch] = true;
       f.stage = 2;
       stack.push_back({f.y_child});
       continue;
     }
     if (f.stage == 2) {
-      zy[f.branch] = f.was_y;
+      zy[f.branch] = false;
       stack.pop_back();
       continue;
     }
@@ -168,10 +176,15 @@ CertificateCheck check_jammed(const JsonInput& cert, const CheckData& c) {
     if (node.find("branch")) {
       node.expect_keys({"branch", "x_zero", "y_zero"});
       f.branch = static_cast<std::size_t>(node.at("branch").integer(0, static_cast<long>(c.n) - 1));
+      // A pair already split on this path has x_i = 0 or y_i = 0: one child would repeat its parent's face.
+      if (zx[f.branch] || zy[f.branch]) {
+        out.reason = where + "branches on " + std::to_string(f.branch) +
+                     ", which this path has fixed already (an extra node: one child repeats its parent)";
+        return out;
+      }
       const long limit = static_cast<long>(count) - 1;
       const auto a = static_cast<std::size_t>(node.at("x_zero").integer(0, limit));
       f.y_child = static_cast<std::size_t>(node.at("y_zero").integer(0, limit));
-      f.was_x = zx[f.branch];
       zx[f.branch] = true;  // x_i = 0
       f.stage = 1;
       stack.push_back({a});  // invalidates f
@@ -181,13 +194,14 @@ CertificateCheck check_jammed(const JsonInput& cert, const CheckData& c) {
     ++out.leaves;
     const std::string side = node.at("empty").string();
     const Vec<Q> u = read_vector(node.at("farkas"));
+    if (side != "X" && side != "Y") node.at("empty").fail("expected \"X\" or \"Y\"");
     std::string why;
-    if (side == "X")
+    if (!primitive_or_zero(u))
+      why = "it is not a primitive integer vector (integers with gcd 1)";
+    else if (side == "X")
       why = c.quasistatic ? check_velocity_farkas(c, zx, u) : check_farkas(c.AX, c.bX, zx, u);
-    else if (side == "Y")
-      why = check_farkas(c.AY, c.bY, zy, u);
     else
-      node.at("empty").fail("expected \"X\" or \"Y\"");
+      why = check_farkas(c.AY, c.bY, zy, u);
     if (!why.empty()) {
       out.reason = where + "the Farkas vector for " + side + " fails: " + why;
       return out;

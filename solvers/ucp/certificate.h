@@ -6,8 +6,9 @@
 //
 // "ucp_jammed": "nodes" is a flat array (node 0 is the root, which fixes nothing). An internal node is
 // {"branch": i, "x_zero": a, "y_zero": b}: child a adds x_i = 0, child b adds y_i = 0; every complementary
-// pair satisfies one of the two, so the leaves cover all cases. A leaf is {"empty": "X" | "Y", "farkas":
-// [integers]} proving that the leaf's face of X or Y is empty:
+// pair satisfies one of the two, so the leaves cover all cases. A path splits each pair at most once (a second
+// split would repeat a face) and each node is reached once. A leaf is {"empty": "X" | "Y", "farkas":
+// [integers with gcd 1]} proving that the leaf's face of X or Y is empty:
 //   - generic UCP, or side Y: u over the rows of A (Y: of C) with u^T A_j >= 0 for every column j not fixed
 //     to 0 on that side and u^T b < 0 (Y: u^T d > 0, since C y = -d);
 //   - quasistatic side X: w in R^{2nc} with w^T P = 0 (so w = Z^T u for the Z of section 2), (w_n, w_t, -w_t)_j

@@ -5,6 +5,7 @@
 #include "exact/rational_text.h"
 #include "exact/strict_feasibility.h"
 #include "solvers/stability/frame_check.h"
+#include "solvers/stability/sparse_motzkin.h"
 #include "solvers/stability/table2_rows_check.h"
 #include "solvers/wrench_cone/cone_form.h"
 #include "solvers/wrench_cone/contact_model.h"
@@ -49,7 +50,7 @@ ConeCertificate cone_certificate(const std::string& scene_text, const geometry::
   j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
   j["mode"] = mode.text();
   if (empty) {
-    j["motzkin"] = strings(r.motzkin);
+    j["motzkin"] = sparse_motzkin_json(r.motzkin);
   } else {
     out.wrench = r.x.tail(d);
     out.z = r.x.head(k);
@@ -87,7 +88,8 @@ ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
   t2::ConeColumns cols;
   if (!t2::cone_columns(checked, mode.mode.text(), cols)) c.at("mode").fail("not a mode of Table 2 for this scene");
   if (empty) {
-    const std::string why = t2::cone_empty_violation(cols, c.at("motzkin").rational_vector(cols.row_wrenches.size()));
+    const std::string why =
+        t2::cone_empty_violation(cols, read_sparse_motzkin(c.at("motzkin"), cols.row_wrenches.size()));
     if (!why.empty()) return {false, why};
     return {true,
             "the Motzkin vector proves that no wrench has the mode (y^T K >= 0, y^T P = 0, > 0 on a strict component)"};

@@ -5,7 +5,8 @@
 //   "cone_nonempty": a witness, "wrench" g and "z" (forces and accelerations, named in "z_names") with
 //     K z = P g, z >= 0 and z_j > 0 on the strict components (a readable view of the witness, "contacts" and
 //     "acceleration", may follow; cli/cone.cpp writes it and `check` compares it with its own);
-//   "cone_empty": a Motzkin vector y with y^T K >= 0, y^T P = 0 and (y^T K)_j > 0 on some strict component j
+//   "cone_empty": a Motzkin vector y (sparse, solvers/stability/sparse_motzkin.h) with y^T K >= 0, y^T P = 0 and (y^T
+//   K)_j > 0 on some strict component j
 //     (if some (z, g) solved the system, 0 = y^T P g = y^T K z > 0).
 // The checker rebuilds K, P and the strict components from the embedded scene and mode with its own code
 // (solvers/stability/table2_rows_check.h, not cone_form.h).

@@ -307,13 +307,116 @@ TEST(ModeTree, ForgedCompletenessProofsAreRejected) {
   EXPECT_THROW(check_stability_certificate(exact::JsonInput::parse(cert, "forged.json")), exact::InputError);
 }
 
+// The first prefix a coverage gap names, or "" when the lists partition the modes.
+std::string gap_prefix(const std::optional<CoverageGap>& gap, CoverageGap::Kind kind = CoverageGap::Kind::kMissing) {
+  if (!gap) return "";
+  EXPECT_EQ(gap->kind, kind) << coverage_gap_text(*gap);
+  return gap->prefix;
+}
+
 TEST(ModeTree, CoverageWalksOnlyWhatTheListsSpellOut) {
   const ModeAlphabet four = moving_alphabet(40);
   // Forty fixels, nothing listed: the first uncovered prefix is found at once (no 4^40 walk).
-  EXPECT_EQ(mode_coverage(40, four, {}, {}), std::optional<std::string>("s"));
+  EXPECT_EQ(gap_prefix(mode_coverage(40, four, {}, {})), "s");
   // "s", "l", "r" dead and the n branch closed by n..n alone is not complete: "ns" is uncovered.
-  EXPECT_EQ(mode_coverage(3, moving_alphabet(3), {"s", "l", "r"}, {"nnn"}), std::optional<std::string>("ns"));
+  EXPECT_EQ(gap_prefix(mode_coverage(3, moving_alphabet(3), {"s", "l", "r"}, {"nnn"})), "ns");
   EXPECT_EQ(mode_coverage(1, moving_alphabet(1), {"s", "l", "r"}, {"n"}), std::nullopt);
+}
+
+TEST(ModeTree, CoverageCountsEachModeOnce) {
+  using Kind = CoverageGap::Kind;
+  const ModeAlphabet two = moving_alphabet(2);
+  const std::vector<std::string> dead{"s", "l", "r"}, leaves{"ns", "nl", "nr", "nn"};
+  EXPECT_EQ(mode_coverage(2, two, dead, leaves), std::nullopt);
+  // A mode listed twice, or a thousand times: the count would be wrong.
+  std::vector<std::string> twice = leaves;
+  twice.push_back("nl");
+  EXPECT_EQ(gap_prefix(mode_coverage(2, two, dead, twice), Kind::kRepeated), "nl");
+  std::vector<std::string> many = leaves;
+  for (int i = 0; i < 1000; ++i) many.push_back("nn");
+  EXPECT_EQ(gap_prefix(mode_coverage(2, two, dead, many), Kind::kRepeated), "nn");
+  // A dead prefix listed twice, or one inside another, or a listed mode inside a dead prefix: extra entries.
+  EXPECT_EQ(gap_prefix(mode_coverage(2, two, {"s", "l", "r", "l"}, leaves), Kind::kRepeated), "l");
+  const auto inside = mode_coverage(2, two, {"s", "l", "r", "sl"}, leaves);
+  EXPECT_EQ(gap_prefix(inside, Kind::kInside), "sl");
+  EXPECT_EQ(inside->within, "s");
+  std::vector<std::string> under_dead = leaves;
+  under_dead.push_back("rn");
+  EXPECT_EQ(gap_prefix(mode_coverage(2, two, dead, under_dead), Kind::kInside), "rn");
+  // A leaf equal to a full-length dead prefix is listed twice.
+  EXPECT_EQ(gap_prefix(mode_coverage(2, two, {"s", "l", "r", "nn"}, leaves), Kind::kRepeated), "nn");
+  // A dropped entry leaves a gap.
+  EXPECT_EQ(gap_prefix(mode_coverage(2, two, {"s", "r"}, leaves)), "l");
+  EXPECT_EQ(gap_prefix(mode_coverage(2, two, dead, {"ns", "nl", "nn"})), "nr");
+}
+
+// The mode tree by plain recursion, as it was written before the walk became iterative: at a live prefix, each
+// letter in alphabet order either extends it (its rows feasible: recurse) or is a dead prefix.
+void recursive_walk(const MotionModel<Q>& model, const ModeAlphabet& alphabet, std::size_t k, ModeString& prefix,
+                    std::vector<std::string>& modes, std::vector<std::string>& dead) {
+  if (prefix.letters.size() == k) {
+    modes.push_back(prefix.text());
+    return;
+  }
+  for (Interaction L : alphabet.letters(prefix.letters.size())) {
+    prefix.letters.push_back(L);
+    if (exact::strict_feasibility(kinematic_system(model, prefix, alphabet.rules), exact::Arith::kExact).status ==
+        exact::StrictStatus::kFeasible)
+      recursive_walk(model, alphabet, k, prefix, modes, dead);
+    else
+      dead.push_back(prefix.text());
+    prefix.letters.pop_back();
+  }
+}
+
+// The iterative walk's modes and dead prefixes, in order, against recursive_walk's.
+void expect_recursive_order(const geometry::PlanarScene& scene, bool unions, bool printed, const std::string& what) {
+  ContactModeOptions options;
+  options.unions = unions;
+  options.printed_separation = printed;
+  const ContactModes m = contact_modes(scene, options);
+  std::vector<std::string> modes, dead, tree_modes, tree_dead;
+  ModeString prefix;
+  recursive_walk(m.model, m.alphabet, scene.fixels.size(), prefix, modes, dead);
+  for (const ModeString& mode : m.tree.modes) tree_modes.push_back(mode.text());
+  for (const DeadPrefix<Q>& d : m.tree.dead) tree_dead.push_back(d.prefix.text());
+  EXPECT_EQ(tree_modes, modes) << what;
+  EXPECT_EQ(tree_dead, dead) << what;
+}
+
+TEST(ModeTree, TheIterativeWalkListsWhatTheRecursiveOneDidInItsOrder) {
+  std::mt19937_64 rng(29);
+  for (int t = 0; t < 60; ++t) {
+    const std::string text = random_scene(rng, 1 + static_cast<std::size_t>(rng() % 5));
+    for (bool unions : {false, true}) expect_recursive_order(parse(text), unions, t % 2 == 1, text);
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(CONTACTCERT_SCENES_DIR)) {
+    const std::string text = exact::JsonInput::read_text(entry.path().string());
+    if (text.find("\"planar\"") == std::string::npos) continue;
+    for (bool unions : {false, true})
+      for (bool printed : {false, true}) expect_recursive_order(parse(text), unions, printed, entry.path());
+  }
+  for (const std::string& text : {block(6), block(12)}) expect_recursive_order(parse(text), false, false, text);
+}
+
+TEST(ModeTree, TwentyThousandFixelsDoNotDeepenTheCallStack) {
+  // 20 000 gap fixels under a bar: vdot = 0 realises s at each, so the first path of the walk is s..s, 20 000
+  // live prefixes deep, with no LP. The node budget ends the walk right after it: its depth was a vector, not the
+  // call stack (the recursive walk overflowed 8 MiB of stack near 17 000 fixels).
+  const int k = 20000;
+  std::ostringstream text;
+  text << R"({"kind": "planar", "workpiece": {"shape": {"type": "polygon", "vertices": [[0,0],[)" << 2 * k << R"(,0],[)"
+       << 2 * k << R"(,1],[0,1]]}}, "mu_s": "1/2", "mu_k": "1/2", "fixels": [)";
+  for (int i = 0; i < k; ++i) text << (i ? "," : "") << R"({"position": [)" << 2 * i + 1 << ", -1]}";
+  text << "]}";
+  ContactModeOptions options;
+  options.tree.max_nodes = k + 1;  // the empty prefix and the k letters of s..s
+  try {
+    contact_modes(parse(text.str()), options);
+    FAIL() << "no budget error";
+  } catch (const exact::BudgetExceeded& e) {
+    EXPECT_EQ(std::string(e.covered), std::to_string(k + 1) + " prefixes visited, 1 feasible modes found");
+  }
 }
 
 TEST(ModeTree, BudgetsStopTheWalkWithWhatItCovered) {
@@ -326,6 +429,18 @@ TEST(ModeTree, BudgetsStopTheWalkWithWhatItCovered) {
     FAIL() << "no budget error";
   } catch (const exact::BudgetExceeded& e) {
     EXPECT_NE(std::string(e.covered).find("prefixes visited"), std::string::npos);
+  }
+  // The output budget: the unions of 12 gap fixels list many overlapping modes.
+  options = ModeTreeOptions();
+  options.max_modes = 50;
+  ModeAlphabet unions = moving_alphabet(12);
+  unions.unions = true;
+  try {
+    walk_modes(model, unions, options);
+    FAIL() << "no budget error";
+  } catch (const exact::BudgetExceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("output budget of 50 modes"), std::string::npos);
+    EXPECT_NE(std::string(e.covered).find("50 feasible modes found"), std::string::npos);
   }
 }
 

@@ -1,0 +1,54 @@
+// Sparse Motzkin vectors (sparse_motzkin.h): written as the weighted rows of the primitive integer multiple,
+// read back to the same direction, and every other spelling refused with the entry named.
+#include "solvers/stability/sparse_motzkin.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace contactcert::solvers {
+namespace {
+
+using exact::Q;
+using exact::Vec;
+
+Vec<Q> read(const std::string& text, std::size_t rows) {
+  return read_sparse_motzkin(exact::JsonInput::parse(text, "y.json"), rows);
+}
+
+// The message of the InputError that reading `text` throws, or "" if it reads.
+std::string refusal(const std::string& text, std::size_t rows) {
+  try {
+    read(text, rows);
+  } catch (const exact::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SparseMotzkin, WritesTheWeightedRowsOfThePrimitiveMultiple) {
+  const Vec<Q> y = (Vec<Q>(6) << 0, 0, Q(-1, 2), 0, Q(3, 2), 0).finished();
+  EXPECT_EQ(sparse_motzkin_json(y).dump(), R"([[2,"-1"],[4,"3"]])");
+  const Vec<Q> back = read(sparse_motzkin_json(y).dump(), 6);
+  EXPECT_EQ(back, Vec<Q>(2 * y));  // the same direction, scaled by 2 > 0
+  EXPECT_EQ(sparse_motzkin_json((Vec<Q>(3) << 6, 0, -4).finished()).dump(), R"([[0,"3"],[2,"-2"]])");
+}
+
+TEST(SparseMotzkin, RefusesEveryOtherSpelling) {
+  EXPECT_EQ(refusal(R"([[0, "1"], [3, "-2"]])", 4), "");
+  EXPECT_NE(refusal("[]", 4).find("at least one [row, weight] pair"), std::string::npos);
+  EXPECT_NE(refusal(R"([[1, "1"], [1, "2"]])", 4).find("$[1][0]: a row above 1"), std::string::npos);
+  EXPECT_NE(refusal(R"([[1, "1"], [1, "2"]])", 4).find("(row 1 is repeated)"), std::string::npos);
+  EXPECT_NE(refusal(R"([[2, "1"], [1, "2"]])", 4).find("$[1][0]: a row above 2"), std::string::npos);
+  EXPECT_NE(refusal(R"([[4, "1"]])", 4).find("$[0][0]: expected an integer from 0 to 3"), std::string::npos);
+  EXPECT_NE(refusal(R"([[-1, "1"]])", 4).find("$[0][0]: expected an integer"), std::string::npos);
+  EXPECT_NE(refusal(R"([[0, "1"]])", 0).find("which has none"), std::string::npos);
+  EXPECT_NE(refusal(R"([[0, "0"]])", 4).find("$[0][1]: a non-zero integer weight"), std::string::npos);
+  EXPECT_NE(refusal(R"([[0, "1/2"]])", 4).find("$[0][1]: a non-zero integer weight"), std::string::npos);
+  EXPECT_NE(refusal(R"([[0, "2"], [1, "-4"]])", 4).find("common factor 2"), std::string::npos);
+  EXPECT_NE(refusal(R"(["1", "0"])", 4).find("$[0]: a pair [row, weight]"), std::string::npos);
+  EXPECT_NE(refusal(R"([[0, "1", "2"]])", 4).find("$[0]: a pair [row, weight]"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace contactcert::solvers
