@@ -3,6 +3,11 @@
 #include "cli/command.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <thread>
 
 #include "cli/option_checks.h"
 
@@ -19,6 +24,16 @@ void add_common_options(CLI::App& sub, CommonOptions& opts) {
   sub.add_option("--time-limit", opts.time_limit, "Seconds of wall clock before the run stops with exit 3 (0 = none)")
       ->check(seconds_in_range())
       ->default_str("0");
+}
+
+void start_watchdog(const std::string& command, double limit) {
+  const double grace = std::max(1.0, 0.05 * limit);
+  std::thread([command, limit, grace] {
+    std::this_thread::sleep_for(std::chrono::duration<double>(limit + grace));
+    std::fprintf(stderr, "\ncontactcert: %s: time limit of %g s reached before an answer (stopped)\n", command.c_str(),
+                 limit);
+    std::_Exit(3);
+  }).detach();
 }
 
 }  // namespace contactcert::cli

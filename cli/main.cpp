@@ -10,16 +10,11 @@
 // process with exit 3 shortly after the limit (a 5% grace, at least one second, lets the loops report first).
 // Every subcommand takes the option: those that do not register it themselves get it here.
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <new>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 #include "cli/command.h"
 #include "cli/memory.h"
@@ -57,17 +52,6 @@ void report_float_undecided(const CLI::App& app, const std::string& what) {
 double no_time_limit = 0;  // --time-limit of the subcommands that do not register it themselves
 
 }  // namespace
-
-void start_watchdog(const std::string& command, double limit) {
-  const double grace = std::max(1.0, 0.05 * limit);
-  std::thread([command, limit, grace] {
-    std::this_thread::sleep_for(std::chrono::duration<double>(limit + grace));
-    std::fprintf(stderr, "\ncontactcert: %s: time limit of %g s reached before an answer (stopped)\n", command.c_str(),
-                 limit);
-    std::_Exit(3);
-  }).detach();
-}
-
 }  // namespace contactcert::cli
 
 int main(int argc, char** argv) {
