@@ -1,0 +1,87 @@
+#include "solvers/motion/compare.h"
+
+#include <cmath>
+#include <map>
+
+namespace contactcert::solvers::motion {
+namespace {
+
+/// The float pose's own numbers as rationals (each double is a rational), to check them exactly.
+Pose<Q> as_rational(const Pose<double>& p) { return {Q(p.c), Q(p.s), {Q(p.t.x), Q(p.t.y)}}; }
+
+std::map<std::string, char> modes(const std::vector<ContactRecord<Q>>& c) {
+  std::map<std::string, char> m;
+  for (const auto& x : c) m[x.name] = x.mode;
+  return m;
+}
+std::map<std::string, char> modes(const std::vector<ContactRecord<double>>& c) {
+  std::map<std::string, char> m;
+  for (const auto& x : c) m[x.name] = x.mode;
+  return m;
+}
+
+/// The first difference of one step's contacts, or empty.
+std::string contact_difference(const StepRecord<Q>& e, const StepRecord<double>& f) {
+  const auto me = modes(e.contacts), mf = modes(f.contacts);
+  for (const auto& [name, mode] : me) {
+    const auto it = mf.find(name);
+    if (it == mf.end()) return "missed contact: " + name;
+    if (it->second != mode) return "mode of " + name + ": " + mode + " (exact) vs " + it->second + " (float)";
+  }
+  for (const auto& [name, mode] : mf)
+    if (!me.count(name)) return "phantom contact: " + name;
+  return "";
+}
+
+}  // namespace
+
+double pose_distance(const MotionScene& scene, const Pose<Q>& a, const Pose<double>& b) {
+  const Pose<double> ad = geometry::to_double(a);
+  double d = 0;
+  for (const Point2& p : std::get<geometry::PolygonShape>(scene.workpiece.shape).vertices) {
+    const Vec2<double> q{p.x.get_d(), p.y.get_d()};
+    const Vec2<double> delta = ad.apply(q) - b.apply(q);
+    d = std::max(d, std::hypot(delta.x, delta.y));
+  }
+  return d;
+}
+
+Divergence compare_runs(const MotionScene& scene, const Trajectory<Q>& ex, const Trajectory<double>& fl) {
+  const SceneGeometry<Q> g = scene_geometry<Q>(scene);
+  const std::size_t n = std::min(ex.steps.size(), fl.steps.size());
+  Divergence d;
+  for (std::size_t k = 0; k < n; ++k) {
+    const StepRecord<Q>& e = ex.steps[k];
+    const StepRecord<double>& f = fl.steps[k];
+    std::string what;
+    if (e.verdict != f.verdict)
+      what = std::string("verdict: ") + ucp::status_name(e.verdict) + " (exact) vs " + ucp::status_name(f.verdict) +
+             " (float)";
+    if (what.empty()) what = contact_difference(e, f);
+    if (what.empty()) {
+      std::vector<Vec2<Q>> tips;
+      for (const Vec2<double>& t : f.tips_after) tips.push_back({Q(t.x), Q(t.y)});
+      if (const std::string o = overlap(g, as_rational(f.pose_after), tips); !o.empty())
+        what = "penetration (the float pose checked exactly): " + o;
+    }
+    if (what.empty()) continue;
+    d.step = static_cast<long>(k);
+    d.what = what;
+    d.pose_distance = pose_distance(scene, e.pose_after, f.pose_after);
+    d.time_exact = e.time.get_d();
+    d.time_float = f.time;
+    return d;
+  }
+  if (ex.steps.size() != fl.steps.size() || ex.status != fl.status) {
+    d.step = static_cast<long>(n);
+    d.what = std::string("run end: ") + run_status_name(ex.status) + " after " + std::to_string(ex.steps.size()) +
+             " steps (exact) vs " + run_status_name(fl.status) + " after " + std::to_string(fl.steps.size()) +
+             " (float)";
+  }
+  d.pose_distance = pose_distance(scene, ex.final_pose, fl.final_pose);
+  d.time_exact = ex.final_time.get_d();
+  d.time_float = fl.final_time;
+  return d;
+}
+
+}  // namespace contactcert::solvers::motion

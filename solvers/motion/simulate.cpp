@@ -1,0 +1,250 @@
+#include "solvers/motion/simulate.h"
+
+#include <chrono>
+#include <set>
+
+#include <Eigen/QR>
+#include <nlohmann/json.hpp>
+
+#include "exact/input_error.h"
+#include "solvers/motion/step_problem.h"
+
+namespace contactcert::solvers::motion {
+namespace {
+
+using Index = Eigen::Index;
+using exact::sign;
+
+/// The solution's physics in T: per contact v_n, v_t, c_n, c_t; q_dot; every joint velocity.
+template <class T>
+struct StepPhysics {
+  std::vector<T> vn, vt, cn, ct, theta;
+  Vec2<T> v;
+  T omega;
+};
+
+StepPhysics<Q> physics(const ucp::UcpProblem&, const ucp::UcpReport& r, const Q*) {
+  const ucp::PhysicalSolution& s = *r.physical;
+  StepPhysics<Q> out;
+  for (Index i = 0; i < s.v_n.size(); ++i) {
+    out.vn.push_back(s.v_n(i));
+    out.vt.push_back(s.v_t(i));
+    out.cn.push_back(s.c_n(i));
+    out.ct.push_back(s.c_t(i));
+  }
+  for (Index j = 0; j < s.theta_dot.size(); ++j) out.theta.push_back(s.theta_dot(j));
+  out.v = {s.q_dot(0), s.q_dot(1)};
+  out.omega = s.q_dot(2);
+  return out;
+}
+
+/// The float path's physics from its pair: u = [q_dot; -theta_abar] solves P u = v + J_alpha theta_alpha (least
+/// squares in doubles), c_t = s_t^+ - mu c_n.
+StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport& r, const double*) {
+  const ucp::QuasistaticProblem& p = *problem.quasistatic;
+  const Index nc = p.nc;
+  StepPhysics<double> out;
+  exact::Vec<double> rhs = exact::to_double(p.J_alpha_theta_alpha());
+  for (Index i = 0; i < nc; ++i) {
+    out.vn.push_back(r.x_approx(i));
+    out.vt.push_back(r.x_approx(nc + i) - r.x_approx(2 * nc + i));
+    out.cn.push_back(r.y_approx(i));
+    out.ct.push_back(r.y_approx(nc + i) - p.mu(i).get_d() * r.y_approx(i));
+    rhs(i) += out.vn.back();
+    rhs(nc + i) += out.vt.back();
+  }
+  const exact::Vec<double> u = exact::to_double(p.P).colPivHouseholderQr().solve(rhs);
+  out.theta.assign(static_cast<std::size_t>(p.ntheta), 0.0);
+  for (int j : p.alpha) out.theta[static_cast<std::size_t>(j)] = p.theta_dot(j).get_d();
+  for (std::size_t k = 0; k < p.abar.size(); ++k) out.theta[static_cast<std::size_t>(p.abar[k])] = -u(3 + Index(k));
+  out.v = {u(0), u(1)};
+  out.omega = u(2);
+  return out;
+}
+
+template <class T>
+char mode_letter(const T& vn, const T& vt) {
+  if (sign(vn) > 0) return 's';
+  const int s = sign(vt);
+  return s == 0 ? 'r' : (s > 0 ? '+' : '-');
+}
+
+std::vector<std::string> minus(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  const std::set<std::string> bs(b.begin(), b.end());
+  std::vector<std::string> out;
+  for (const std::string& x : a)
+    if (!bs.count(x)) out.push_back(x);
+  return out;
+}
+
+template <class T>
+T from_q(const Q& q) {
+  if constexpr (std::is_same_v<T, Q>)
+    return q;
+  else
+    return q.get_d();
+}
+
+}  // namespace
+
+const char* run_status_name(RunStatus s) {
+  switch (s) {
+    case RunStatus::kCompleted: return "completed";
+    case RunStatus::kJammed: return "jammed";
+    case RunStatus::kNoContact: return "no_contact";
+    case RunStatus::kUnsupportedContact: return "unsupported_contact";
+    case RunStatus::kOverlap: return "overlap";
+    case RunStatus::kUnknown: return "unknown";
+  }
+  return "unknown";
+}
+
+template <class T>
+Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
+  constexpr bool exact_path = std::is_same_v<T, Q>;
+  const auto start = std::chrono::steady_clock::now();
+  const SceneGeometry<T> g = scene_geometry<T>(scene);
+  const T H = from_q<T>(opts.dt.value_or(scene.dt));
+  const long N = opts.steps.value_or(scene.steps);
+  ucp::UcpOptions uopts = opts.ucp;
+  uopts.arith = exact_path ? (opts.arith == exact::Arith::kFloat ? exact::Arith::kVerified : opts.arith)
+                           : exact::Arith::kFloat;
+  const std::size_t nf = scene.fingers.size();
+
+  Trajectory<T> out;
+  Pose<T> pose;
+  T t(0);
+  std::vector<Vec2<T>> tips;
+  for (const Finger& f : scene.fingers) tips.push_back({from_q<T>(f.tip.x), from_q<T>(f.tip.y)});
+  std::vector<std::string> previous;
+  const auto finish = [&](RunStatus s, std::string why) {
+    out.status = s;
+    out.reason = std::move(why);
+  };
+  if (const std::string o = overlap(g, pose, tips); !o.empty()) finish(RunStatus::kOverlap, o + " at time 0");
+  for (long k = 0; k < N && out.status == RunStatus::kCompleted; ++k) {
+    const auto step_start = std::chrono::steady_clock::now();
+    StepRecord<T> r;
+    r.index = k;
+    r.time = t;
+    r.pose = pose;
+    const ContactSet<T> cs = find_contacts(g, pose, tips);
+    if (!cs.unsupported.empty()) {
+      finish(RunStatus::kUnsupportedContact, cs.unsupported);
+      break;
+    }
+    if (cs.contacts.empty()) {
+      finish(RunStatus::kNoContact, "no contact holds the body (a quasistatic body needs one)");
+      break;
+    }
+    std::vector<std::string> names;
+    for (const Contact<T>& c : cs.contacts) names.push_back(c.name);
+    r.made = minus(names, previous);
+    r.broken = minus(previous, names);
+    previous = names;
+
+    // This step's finger commands, and the step's length: H, or to the next schedule change.
+    std::vector<FingerCommand<T>> commands(nf);
+    T Hk = H;
+    for (std::size_t f = 0; f < nf; ++f) {
+      Q tq;
+      if constexpr (exact_path)
+        tq = t;
+      else
+        tq = Q(t);
+      const ScheduleAt at = schedule_at(scene.fingers[f], tq);
+      commands[f] = {at.segment->force, {from_q<T>(at.segment->value.x), from_q<T>(at.segment->value.y)}};
+      if (at.ends && from_q<T>(*at.ends - tq) < Hk) Hk = from_q<T>(*at.ends - tq);
+    }
+
+    const nlohmann::ordered_json step_json = step_scene(g, pose, cs.contacts, commands);
+    ucp::UcpProblem problem;
+    try {
+      problem = step_problem(step_json, exact_path, "step " + std::to_string(k));
+    } catch (const exact::InputError& e) {
+      finish(RunStatus::kUnsupportedContact, std::string("the step's problem was refused: ") + e.what());
+      break;
+    }
+    const ucp::UcpReport rep = ucp::solve_ucp(problem, uopts);
+    r.verdict = rep.status;
+    r.reason = rep.reason;
+    if (exact_path && opts.certificates) r.certificate = ucp::certificate_text(problem, rep);
+    if (rep.status != ucp::UcpStatus::kSolvable) {
+      for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal, {T(0), T(0)}});
+      r.pose_after = pose;
+      r.tips_after = tips;
+      r.h = T(0);
+      r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+      out.steps.push_back(r);
+      if (rep.status == ucp::UcpStatus::kJammed)
+        finish(RunStatus::kJammed, "jammed at step " + std::to_string(k) + ": " + rep.reason);
+      else
+        finish(RunStatus::kUnknown, "step " + std::to_string(k) + ": " + rep.reason);
+      break;
+    }
+    const StepPhysics<T> ph = physics(problem, rep, static_cast<const T*>(nullptr));
+    r.v = ph.v;
+    r.omega = ph.omega;
+    if (exact_path && opts.uniqueness)
+      r.uniqueness = motion_uniqueness(problem, uopts.arith, opts.max_uniqueness_modes);
+
+    // Fingers: one in contact with v_n = 0 is carried with the body (it slides along its edge by its relative
+    // tangential velocity); one that is free or separating moves by its velocity; a free force finger holds still.
+    std::vector<std::optional<Vec2<T>>> free_velocity(nf);
+    std::vector<std::optional<Vec2<T>>> carried_slip(nf);
+    std::size_t joint = 0;
+    for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
+      const Contact<T>& c = cs.contacts[i];
+      const T& cn = ph.cn[i];
+      const T& ct = ph.ct[i];
+      const Vec2<T> tvec = perp2(c.normal);
+      r.contacts.push_back({c.name, mode_letter(ph.vn[i], ph.vt[i]), c.point, c.normal,
+                            Vec2<T>{cn * c.normal.x + ct * tvec.x, cn * c.normal.y + ct * tvec.y}});
+      if (c.kind != ContactKind::kFinger) continue;
+      const auto f = static_cast<std::size_t>(c.other);
+      const Vec2<T> vf{ph.theta[joint], ph.theta[joint + 1]};
+      joint += 2;
+      if (sign(ph.vn[i]) == 0)
+        carried_slip[f] = vf - (ph.v + ph.omega * perp2(c.point));
+      else
+        free_velocity[f] = vf;
+    }
+    for (std::size_t f = 0; f < nf; ++f) {
+      bool touching = false;
+      for (const Contact<T>& c : cs.contacts) touching |= c.kind == ContactKind::kFinger && c.other == int(f);
+      if (!touching && !commands[f].force) free_velocity[f] = commands[f].value;
+    }
+
+    const auto closing = first_closing(g, pose, tips, ph.v, ph.omega, free_velocity, Hk);
+    r.h = closing ? closing->tau : Hk;
+    if (closing) {
+      r.cut_by = closing->name;
+      r.cut_exact = closing->exact;
+    }
+    const Pose<T> step = geometry::twist_step(ph.v, ph.omega, r.h);
+    pose = compose(step, pose);
+    for (std::size_t f = 0; f < nf; ++f) {
+      if (carried_slip[f])
+        tips[f] = step.apply(tips[f]) + step.rotate(r.h * *carried_slip[f]);
+      else if (free_velocity[f])
+        tips[f] = tips[f] + r.h * *free_velocity[f];
+    }
+    t = t + r.h;
+    r.pose_after = pose;
+    r.tips_after = tips;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+    out.steps.push_back(r);
+    if (const std::string o = overlap(g, pose, tips); !o.empty())
+      finish(RunStatus::kOverlap, o + " after step " + std::to_string(k));
+  }
+  out.final_pose = pose;
+  out.final_time = t;
+  out.final_tips = tips;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+template Trajectory<Q> simulate<Q>(const MotionScene&, const SimulateOptions&);
+template Trajectory<double> simulate<double>(const MotionScene&, const SimulateOptions&);
+
+}  // namespace contactcert::solvers::motion

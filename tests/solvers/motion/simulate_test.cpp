@@ -1,0 +1,192 @@
+// The pushed box of issue 32 (a 2 x 2 box on a floor, mu = 1, a frictionless finger at height h pushing along +x
+// with speed 1, weight 1 at the centre): it slides for h < 1 (the push needed to slide, mu N = 1, is below the
+// push that tips it about the front corner, 1 / h), tips for h > 1, and can do both at h = 1.
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "exact/json_input.h"
+#include "exact/rational_text.h"
+#include "solvers/motion/compare.h"
+#include "solvers/motion/simulate.h"
+#include "solvers/ucp/certificate.h"
+
+namespace contactcert::solvers::motion {
+namespace {
+
+using geometry::Vec2;
+
+const char* kFloor = R"({"name": "floor", "vertices": [[-10, -1], [10, -1], [10, 0], [-10, 0]], "mu": 1})";
+
+/// The pushed box with the finger at height h, extra obstacles, N steps of H.
+MotionScene pushed_box(const std::string& h, const std::string& extra_obstacles = "", const std::string& dt = "1/10",
+                       long steps = 5) {
+  const std::string text = R"({"kind": "quasistatic_scene",
+    "workpiece": {"shape": {"type": "polygon", "vertices": [[0, 0], [2, 0], [2, 2], [0, 2]]}, "com": [1, 1]},
+    "gravity": [0, -1],
+    "obstacles": [)" + std::string(kFloor) + extra_obstacles + R"(],
+    "fingers": [{"name": "pusher", "tip": [0, ")" + h + R"("], "mu": 0, "schedule": [{"velocity": [1, 0]}]}],
+    "motion": {"dt": ")" + dt + R"(", "steps": )" + std::to_string(steps) + "}}";
+  return read_motion_scene(exact::JsonInput::parse(text, "pushed_box.json"));
+}
+
+SimulateOptions exact_options(exact::Arith arith = exact::Arith::kVerified) {
+  SimulateOptions o;
+  o.arith = arith;
+  return o;
+}
+
+/// Every step's certificate is accepted by the existing checker, and no recorded pose overlaps a shape.
+void expect_certified_and_apart(const MotionScene& scene, const Trajectory<Q>& run) {
+  const SceneGeometry<Q> g = scene_geometry<Q>(scene);
+  for (const StepRecord<Q>& s : run.steps) {
+    ASSERT_FALSE(s.certificate.empty()) << "step " << s.index;
+    const ucp::CertificateCheck c = ucp::check_ucp_certificate(exact::JsonInput::parse(s.certificate, "step"));
+    EXPECT_EQ(c.verdict, ucp::CertificateVerdict::kValid) << "step " << s.index << ": " << c.reason;
+    EXPECT_EQ(overlap(g, s.pose_after, s.tips_after), "") << "step " << s.index;
+  }
+}
+
+TEST(PushedBox, LowPushSlidesByExactlyNHV) {
+  const MotionScene scene = pushed_box("1/2", "", "1/10", 8);
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
+  ASSERT_EQ(run.steps.size(), 8u);
+  for (const StepRecord<Q>& s : run.steps) {
+    EXPECT_EQ(s.v, (Vec2<Q>{Q(1), Q(0)}));
+    EXPECT_EQ(s.omega, Q(0));
+    ASSERT_TRUE(s.uniqueness);
+    EXPECT_EQ(s.uniqueness->status, UniquenessStatus::kUnique) << "step " << s.index;
+    EXPECT_TRUE(s.cut_by.empty());
+  }
+  // N H v = 8 * 1/10 * 1, exactly; no rotation.
+  EXPECT_EQ(run.final_pose.t, (Vec2<Q>{Q(4, 5), Q(0)}));
+  EXPECT_EQ(run.final_pose.c, Q(1));
+  EXPECT_EQ(run.final_time, Q(4, 5));
+  // The three contacts at every step: both floor corners slide along -t (t = (-20, 0)), the finger slides.
+  EXPECT_EQ(run.steps[0].contacts.size(), 3u);
+  for (const ContactRecord<Q>& c : run.steps[3].contacts) {
+    if (c.name.rfind("body vertex", 0) == 0) {
+      EXPECT_EQ(c.mode, '-') << c.name;
+    }
+  }
+  // Forces in world coordinates: the floor carries the weight, friction mu N = 1 balances the push.
+  Q fx(0), fy(0);
+  for (const ContactRecord<Q>& c : run.steps[0].contacts) {
+    fx += c.force.x;
+    fy += c.force.y;
+  }
+  EXPECT_EQ(fx, Q(0));
+  EXPECT_EQ(fy, Q(1));
+  expect_certified_and_apart(scene, run);
+}
+
+TEST(PushedBox, HighPushTipsAboutTheFrontCorner) {
+  const MotionScene scene = pushed_box("3/2", "", "1/10", 6);
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
+  ASSERT_EQ(run.steps.size(), 6u);
+  const Vec2<Q> corner{Q(2), Q(0)}, body_corner{Q(2), Q(0)};
+  for (const StepRecord<Q>& s : run.steps) {
+    EXPECT_LT(s.omega, 0) << "step " << s.index;  // clockwise
+    EXPECT_EQ(s.pose_after.apply(body_corner), corner) << "step " << s.index;
+    EXPECT_EQ(s.pose_after.c * s.pose_after.c + s.pose_after.s * s.pose_after.s, Q(1));
+    ASSERT_TRUE(s.uniqueness);
+    EXPECT_EQ(s.uniqueness->status, UniquenessStatus::kUnique) << "step " << s.index;
+  }
+  // The first step: omega = -2/3 (the finger's speed 1 at lever 3/2), the rear corner lifts (broken at step 1).
+  EXPECT_EQ(run.steps[0].omega, Q(-2, 3));
+  EXPECT_EQ(run.steps[1].broken, std::vector<std::string>{"body vertex 0 on floor edge 2"});
+  for (const ContactRecord<Q>& c : run.steps[0].contacts) {
+    if (c.name == "body vertex 0 on floor edge 2") {
+      EXPECT_EQ(c.mode, 's');
+    }
+    if (c.name == "body vertex 1 on floor edge 2") {
+      EXPECT_EQ(c.mode, 'r');
+    }
+  }
+  expect_certified_and_apart(scene, run);
+}
+
+TEST(PushedBox, PushAtHeightOneHasTwoMotions) {
+  const MotionScene scene = pushed_box("1", "", "1/10", 1);
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(run.steps.size(), 1u);
+  const auto& u = run.steps[0].uniqueness;
+  ASSERT_TRUE(u);
+  EXPECT_EQ(u->status, UniquenessStatus::kNotUnique);
+  // Sliding (q_dot = (1, 0, 0)) and tipping about (2, 0) with omega = -1 (q_dot = (0, 2, -1)) are both solutions.
+  const auto has = [&](const Q& a, const Q& b, const Q& c) {
+    for (const exact::Vec<Q>& m : u->motions)
+      if (m(0) == a && m(1) == b && m(2) == c) return true;
+    return false;
+  };
+  EXPECT_TRUE(has(Q(1), Q(0), Q(0)));
+  EXPECT_TRUE(has(Q(0), Q(2), Q(-1)));
+  for (const exact::Vec<Q>& m : u->motions)
+    std::cout << "motion " << exact::to_string(m(0)) << " " << exact::to_string(m(1)) << " " << exact::to_string(m(2))
+              << "\n";
+  expect_certified_and_apart(scene, run);
+}
+
+TEST(PushedBox, BlockIntoAWallStopsWithAJammingProof) {
+  // A wall 1 away: the third step is cut exactly when the box's front face reaches it (t = 1), then the box jams.
+  const MotionScene scene =
+      pushed_box("1/2", R"(, {"name": "wall", "vertices": [[3, -1], [5, -1], [5, 5], [3, 5]], "mu": 1})", "2/5", 10);
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(run.status, RunStatus::kJammed) << run.reason;
+  ASSERT_EQ(run.steps.size(), 4u);
+  EXPECT_EQ(run.steps[2].h, Q(1, 5));
+  EXPECT_TRUE(run.steps[2].cut_exact);
+  EXPECT_NE(run.steps[2].cut_by.find("wall"), std::string::npos);
+  EXPECT_EQ(run.steps[3].time, Q(1));
+  EXPECT_EQ(run.steps[3].made.size(), 2u);  // both front corners on the wall
+  EXPECT_EQ(run.steps[3].verdict, ucp::UcpStatus::kJammed);
+  const ucp::CertificateCheck c = ucp::check_ucp_certificate(exact::JsonInput::parse(run.steps[3].certificate, "jam"));
+  EXPECT_EQ(c.verdict, ucp::CertificateVerdict::kValid) << c.reason;
+  EXPECT_EQ(c.kind, "ucp_jammed");
+  expect_certified_and_apart(scene, run);
+}
+
+TEST(PushedBox, ExactAndVerifiedAgree) {
+  const MotionScene scene = pushed_box("3/2", "", "1/10", 3);
+  SimulateOptions fast = exact_options(exact::Arith::kExact);
+  fast.uniqueness = false;
+  const Trajectory<Q> a = simulate<Q>(scene, fast);
+  const Trajectory<Q> b = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(a.steps.size(), b.steps.size());
+  EXPECT_EQ(a.final_pose.t, b.final_pose.t);
+  EXPECT_EQ(a.final_pose.s, b.final_pose.s);
+}
+
+TEST(FloatDrift, SlidingBoxDriftsOnlyByRounding) {
+  // The float path's least-squares twist has |v_y|, |omega| ~ 1e-18: its poses, checked exactly, dip into the floor
+  // by rounding (the report says so), but every verdict, contact and mode agrees with the exact run.
+  const MotionScene scene = pushed_box("1/2", "", "1/10", 5);
+  const Trajectory<Q> ex = simulate<Q>(scene, exact_options());
+  const Trajectory<double> fl = simulate<double>(scene, exact_options(exact::Arith::kFloat));
+  const Divergence d = compare_runs(scene, ex, fl);
+  if (d.step >= 0) {
+    EXPECT_EQ(d.what.rfind("penetration", 0), 0u) << d.what;
+  }
+  EXPECT_LT(d.pose_distance, 1e-12);
+  ASSERT_EQ(fl.status, RunStatus::kCompleted);
+  EXPECT_NEAR(fl.final_pose.t.x, 0.5, 1e-12);
+}
+
+TEST(FloatDrift, GrazingCeilingIsAPhantomContactInFloat) {
+  // A ceiling 10^-12 above the box's top: exactly, the box slides under it untouched; the float path's sign
+  // tolerance (1e-9) takes the gap for a contact.
+  const MotionScene scene = pushed_box(
+      "1/2", R"(, {"name": "ceiling", "vertices": [[-1, "2.000000000001"], [9, "2.000000000001"], [9, 3], [-1, 3]], "mu": 1})",
+      "1/10", 3);
+  const Trajectory<Q> ex = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(ex.status, RunStatus::kCompleted) << ex.reason;
+  const Trajectory<double> fl = simulate<double>(scene, exact_options(exact::Arith::kFloat));
+  const Divergence d = compare_runs(scene, ex, fl);
+  EXPECT_EQ(d.step, 0);
+  EXPECT_NE(d.what.find("phantom contact"), std::string::npos) << d.what;
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::motion
