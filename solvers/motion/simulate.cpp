@@ -85,6 +85,20 @@ T from_q(const Q& q) {
     return q.get_d();
 }
 
+/// A finger carried along body edge c.body with relative velocity `slip` (along the edge): the time it reaches the
+/// edge's end and which body vertex that is, if it ever does (linear in the body's frame).
+template <class T>
+std::optional<std::pair<T, int>> slide_to_vertex(const SceneGeometry<T>& g, const Pose<T>& pose, const Contact<T>& c,
+                                                 const Vec2<T>& slip) {
+  const auto nb = static_cast<int>(g.body.size());
+  const Vec2<T> a = pose.apply(g.body[static_cast<std::size_t>(c.body)]);
+  const Vec2<T> e = pose.apply(g.body[static_cast<std::size_t>((c.body + 1) % nb)]) - a;
+  const T s0 = dot2(c.point - a, e), rate = dot2(slip, e);
+  if (sign(rate) == 0) return std::nullopt;
+  if (sign(rate) > 0) return std::pair<T, int>{T(dot2(e, e) - s0) / rate, (c.body + 1) % nb};
+  return std::pair<T, int>{-s0 / rate, c.body};
+}
+
 }  // namespace
 
 const char* run_status_name(RunStatus s) {
@@ -94,6 +108,7 @@ const char* run_status_name(RunStatus s) {
     case RunStatus::kNoContact: return "no_contact";
     case RunStatus::kUnsupportedContact: return "unsupported_contact";
     case RunStatus::kOverlap: return "overlap";
+    case RunStatus::kIrrationalContactTime: return "irrational_contact_time";
     case RunStatus::kUnknown: return "unknown";
   }
   return "unknown";
@@ -221,6 +236,16 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
       r.cut_by = closing->name;
       r.cut_exact = closing->exact;
     }
+    for (const Contact<T>& c : cs.contacts) {
+      if (c.kind != ContactKind::kFinger || !carried_slip[static_cast<std::size_t>(c.other)]) continue;
+      if (const auto end = slide_to_vertex(g, pose, c, *carried_slip[static_cast<std::size_t>(c.other)]);
+          end && end->first < r.h) {
+        r.h = end->first;
+        r.cut_by = g.finger_names[static_cast<std::size_t>(c.other)] + " reaches body vertex " +
+                   std::to_string(end->second);
+        r.cut_exact = true;
+      }
+    }
     const Pose<T> step = geometry::twist_step(ph.v, ph.omega, r.h);
     pose = compose(step, pose);
     for (std::size_t f = 0; f < nf; ++f) {
@@ -236,6 +261,10 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
     out.steps.push_back(r);
     if (const std::string o = overlap(g, pose, tips); !o.empty())
       finish(RunStatus::kOverlap, o + " after step " + std::to_string(k));
+    else if (!r.cut_exact)
+      finish(RunStatus::kIrrationalContactTime,
+             r.cut_by + " closes at an irrational time: the run stops just before it, the gap > 0 (step " +
+                 std::to_string(k) + ")");
   }
   out.final_pose = pose;
   out.final_time = t;

@@ -16,8 +16,9 @@ namespace contactcert::solvers::motion {
 
 /// How a run ended: all steps done; jammed (a proof, at the last step); no contact left to hold the body; a
 /// vertex-on-vertex contact (normal not determined); two shapes overlap after a step (a sliding contact that turns
-/// leaves its line at second order); unknown (a solver budget).
-enum class RunStatus { kCompleted, kJammed, kNoContact, kUnsupportedContact, kOverlap, kUnknown };
+/// leaves its line at second order); a contact closes at an irrational time (rational poses cannot reach it: the
+/// last step ends at a rational time just before it, the gap > 0); unknown (a solver budget).
+enum class RunStatus { kCompleted, kJammed, kNoContact, kUnsupportedContact, kOverlap, kIrrationalContactTime, kUnknown };
 const char* run_status_name(RunStatus s);
 
 struct SimulateOptions {
@@ -46,7 +47,7 @@ template <class T>
 struct StepRecord {
   long index = 0;
   T time = T(0), h = T(0);
-  std::string cut_by;     ///< the contact that closed and cut the step short (empty: a full step)
+  std::string cut_by;  ///< what cut the step short: the contact that closed, or a finger reaching a body vertex
   bool cut_exact = true;  ///< false: the closing time is irrational; h is a rational time just before it
   Pose<T> pose, pose_after;
   std::vector<Vec2<T>> tips_after;

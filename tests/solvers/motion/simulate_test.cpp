@@ -3,6 +3,7 @@
 // push that tips it about the front corner, 1 / h), tips for h > 1, and can do both at h = 1.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <iostream>
 
 #include "exact/json_input.h"
@@ -186,6 +187,47 @@ TEST(FloatDrift, GrazingCeilingIsAPhantomContactInFloat) {
   const Divergence d = compare_runs(scene, ex, fl);
   EXPECT_EQ(d.step, 0);
   EXPECT_NE(d.what.find("phantom contact"), std::string::npos) << d.what;
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::motion
+
+namespace contactcert::solvers::motion {
+namespace {
+
+// The tipping box (h = 3/2, omega = -2/3 about the front corner (2, 0)) caught by a post. Its top-right corner
+// (2, 2) is at (2 + 2 s, 2 c) with s = 2|u|/(1 + u^2), c = (1 - u^2)/(1 + u^2), u = omega tau / 2 = -tau / 3.
+TEST(TippingBox, CaughtByAPostAtTheDerivedTime) {
+  // Post face at x = 16/5: 4|u|/(1 + u^2) = 6/5, |u| = 1/3 (or 3): tau = 1 exactly, the corner at (16/5, 8/5).
+  const MotionScene scene = pushed_box(
+      "3/2", R"(, {"name": "post", "vertices": [["16/5", 0], [5, 0], [5, 3], ["16/5", 3]], "mu": 1})", "6/5", 4);
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_GE(run.steps.size(), 2u) << run.reason;
+  EXPECT_EQ(run.steps[0].h, Q(1));
+  EXPECT_TRUE(run.steps[0].cut_exact);
+  EXPECT_EQ(run.steps[0].cut_by, "body vertex 2 on post edge 3");
+  EXPECT_EQ(run.steps[0].pose_after.apply(Vec2<Q>{Q(2), Q(2)}), (Vec2<Q>{Q(16, 5), Q(8, 5)}));
+  // Step 1: the post contact is made, the rear corner's floor contact is broken; pinned, the box jams.
+  EXPECT_EQ(run.steps[1].made, std::vector<std::string>{"body vertex 2 on post edge 3"});
+  EXPECT_EQ(run.steps[1].broken, std::vector<std::string>{"body vertex 0 on floor edge 2"});
+  EXPECT_EQ(run.status, RunStatus::kJammed) << run.reason;
+  expect_certified_and_apart(scene, run);
+}
+
+TEST(TippingBox, IrrationalFirstContactStopsJustBeforeIt) {
+  // Post face at x = 3: u^2 - 4|u| + 1 = 0, |u| = 2 - sqrt(3), tau = 3 (2 - sqrt(3)) = 0.80384...
+  const MotionScene scene =
+      pushed_box("3/2", R"(, {"name": "post", "vertices": [[3, 0], [5, 0], [5, 3], [3, 3]], "mu": 1})", "1", 3);
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(run.status, RunStatus::kIrrationalContactTime) << run.reason;
+  ASSERT_EQ(run.steps.size(), 1u);
+  EXPECT_FALSE(run.steps[0].cut_exact);
+  const double tau = 3 * (2 - std::sqrt(3.0));
+  EXPECT_LT(run.steps[0].h, Q(tau));
+  EXPECT_GT(run.steps[0].h, Q(tau - 1e-9));
+  // Just before: the corner is left of the post face, exactly.
+  EXPECT_LT(run.steps[0].pose_after.apply(Vec2<Q>{Q(2), Q(2)}).x, Q(3));
+  expect_certified_and_apart(scene, run);
 }
 
 }  // namespace
