@@ -46,42 +46,37 @@ double pose_distance(const MotionScene& scene, const Pose<Q>& a, const Pose<doub
   return d;
 }
 
-Divergence compare_runs(const MotionScene& scene, const Trajectory<Q>& ex, const Trajectory<double>& fl) {
+std::vector<Divergence> compare_runs(const MotionScene& scene, const Trajectory<Q>& ex, const Trajectory<double>& fl) {
   const SceneGeometry<Q> g = scene_geometry<Q>(scene);
   const std::size_t n = std::min(ex.steps.size(), fl.steps.size());
-  Divergence d;
+  std::vector<Divergence> out;
+  const auto note = [&](const std::string& kind, std::size_t k, const std::string& what, const Pose<Q>& pe,
+                        const Pose<double>& pf, double te, double tf) {
+    for (const Divergence& d : out)
+      if (d.kind == kind) return;
+    out.push_back({static_cast<long>(k), kind, what, pose_distance(scene, pe, pf), te, tf});
+  };
   for (std::size_t k = 0; k < n; ++k) {
     const StepRecord<Q>& e = ex.steps[k];
     const StepRecord<double>& f = fl.steps[k];
-    std::string what;
+    const double te = e.time.get_d();
     if (e.verdict != f.verdict)
-      what = std::string("verdict: ") + ucp::status_name(e.verdict) + " (exact) vs " + ucp::status_name(f.verdict) +
-             " (float)";
-    if (what.empty()) what = contact_difference(e, f);
-    if (what.empty()) {
-      std::vector<Vec2<Q>> tips;
-      for (const Vec2<double>& t : f.tips_after) tips.push_back({Q(t.x), Q(t.y)});
-      if (const std::string o = overlap(g, as_rational(f.pose_after), tips); !o.empty())
-        what = "penetration (the float pose checked exactly): " + o;
-    }
-    if (what.empty()) continue;
-    d.step = static_cast<long>(k);
-    d.what = what;
-    d.pose_distance = pose_distance(scene, e.pose_after, f.pose_after);
-    d.time_exact = e.time.get_d();
-    d.time_float = f.time;
-    return d;
+      note("verdict", k,
+           std::string(ucp::status_name(e.verdict)) + " (exact) vs " + ucp::status_name(f.verdict) + " (float)",
+           e.pose_after, f.pose_after, te, f.time);
+    if (const std::string c = contact_difference(e, f); !c.empty())
+      note(c.rfind("mode", 0) == 0 ? "mode" : "contacts", k, c, e.pose_after, f.pose_after, te, f.time);
+    std::vector<Vec2<Q>> tips;
+    for (const Vec2<double>& t : f.tips_after) tips.push_back({Q(t.x), Q(t.y)});
+    if (const std::string o = overlap(g, as_rational(f.pose_after), tips); !o.empty())
+      note("penetration", k, o, e.pose_after, f.pose_after, te, f.time);
   }
-  if (ex.steps.size() != fl.steps.size() || ex.status != fl.status) {
-    d.step = static_cast<long>(n);
-    d.what = std::string("run end: ") + run_status_name(ex.status) + " after " + std::to_string(ex.steps.size()) +
-             " steps (exact) vs " + run_status_name(fl.status) + " after " + std::to_string(fl.steps.size()) +
-             " (float)";
-  }
-  d.pose_distance = pose_distance(scene, ex.final_pose, fl.final_pose);
-  d.time_exact = ex.final_time.get_d();
-  d.time_float = fl.final_time;
-  return d;
+  if (ex.steps.size() != fl.steps.size() || ex.status != fl.status)
+    note("run_end", n,
+         std::string(run_status_name(ex.status)) + " after " + std::to_string(ex.steps.size()) + " steps (exact) vs " +
+             run_status_name(fl.status) + " after " + std::to_string(fl.steps.size()) + " (float)",
+         ex.final_pose, fl.final_pose, ex.final_time.get_d(), fl.final_time);
+  return out;
 }
 
 }  // namespace contactcert::solvers::motion

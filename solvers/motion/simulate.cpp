@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "exact/input_error.h"
+#include "solvers/motion/first_root.h"
 #include "solvers/motion/step_problem.h"
 
 namespace contactcert::solvers::motion {
@@ -61,6 +62,17 @@ StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport
   out.omega = u(2);
   return out;
 }
+
+/// x rounded to the nearest multiple of 2^-40 (x itself for double): the grid of the applied twist, on which the
+/// pose's numbers keep a bounded size (mpq_class keeps lowest terms, so a pose reached by an exact motion has the
+/// size of its own value, not of the path to it).
+Q on_grid(const Q& x) {
+  const Q scaled = x * Q(exact::Z(1) << 40) + Q(1, 2);
+  exact::Z n;
+  mpz_fdiv_q(n.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
+  return Q(n, exact::Z(1) << 40);
+}
+double on_grid(double x) { return x; }
 
 template <class T>
 char mode_letter(const T& vn, const T& vt) {
@@ -219,8 +231,13 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
       const auto f = static_cast<std::size_t>(c.other);
       const Vec2<T> vf{ph.theta[joint], ph.theta[joint + 1]};
       joint += 2;
-      if (sign(ph.vn[i]) == 0)
-        carried_slip[f] = vf - (ph.v + ph.omega * perp2(c.point));
+      if (sign(ph.vn[i]) == 0) {
+        // The slide along the edge e = J^T n over Hk, rounded to a multiple of e on the grid: the tip stays exactly
+        // on the edge.
+        const Vec2<T> slip = vf - (ph.v + ph.omega * perp2(c.point));
+        const Vec2<T> e{c.normal.y, -c.normal.x};
+        carried_slip[f] = T(on_grid(T(Hk * dot2(slip, e) / dot2(e, e))) / Hk) * e;
+      }
       else
         free_velocity[f] = vf;
     }
@@ -230,7 +247,31 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
       if (!touching && !commands[f].force) free_velocity[f] = commands[f].value;
     }
 
-    const auto closing = first_closing(g, pose, tips, ph.v, ph.omega, free_velocity, Hk);
+    // The applied twist: turning, about a rolling obstacle contact's point (exactly the instantaneous centre: the
+    // body's velocity is zero there) or else the instantaneous centre on the grid, by the rotation that brings the
+    // pose's tan(theta / 2) after a full step, U_old (+) omega Hk / 2 = (U_old + u) / (1 - U_old u), to the grid.
+    r.applied_omega = ph.omega;
+    r.applied_v = ph.v;
+    if (sign(ph.omega) != 0) {
+      Vec2<T> centre{-ph.v.y / ph.omega, ph.v.x / ph.omega};
+      bool pivot = false;
+      for (std::size_t i = 0; i < cs.contacts.size() && !pivot; ++i)
+        if (cs.contacts[i].kind != ContactKind::kFinger && r.contacts[i].mode == 'r') {
+          centre = cs.contacts[i].point;
+          pivot = true;
+        }
+      if (!pivot) centre = {on_grid(centre.x), on_grid(centre.y)};
+      const T u = ph.omega * Hk / T(2);
+      if constexpr (exact_path) {
+        if (sign(T(T(1) + pose.c)) != 0 && sign(T(T(1) - pose.s / (T(1) + pose.c) * u)) != 0) {
+          const T U_old = pose.s / (T(1) + pose.c);
+          const T U_new = on_grid(T((U_old + u) / (T(1) - U_old * u)));
+          r.applied_omega = T(2) * ((U_new - U_old) / (T(1) + U_old * U_new)) / Hk;
+        }
+      }
+      r.applied_v = r.applied_omega * Vec2<T>{centre.y, -centre.x};  // omega J (0 - centre)
+    }
+    const auto closing = first_closing(g, pose, tips, r.applied_v, r.applied_omega, free_velocity, Hk);
     r.h = closing ? closing->tau : Hk;
     if (closing) {
       r.cut_by = closing->name;
@@ -246,7 +287,7 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
         r.cut_exact = true;
       }
     }
-    const Pose<T> step = geometry::twist_step(ph.v, ph.omega, r.h);
+    const Pose<T> step = geometry::twist_step(r.applied_v, r.applied_omega, r.h);
     pose = compose(step, pose);
     for (std::size_t f = 0; f < nf; ++f) {
       if (carried_slip[f])
