@@ -72,7 +72,14 @@ Q on_grid(const Q& x) {
   mpz_fdiv_q(n.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
   return Q(n, exact::Z(1) << 40);
 }
-double on_grid(double x) { return x; }
+
+/// x itself while its numerator and denominator take at most 128 bits together, else on_grid(x): exact where that
+/// is cheap (the derived contact times of simple scenes stay exact), bounded where it is not.
+Q bounded(const Q& x) {
+  const std::size_t bits = mpz_sizeinbase(x.get_num_mpz_t(), 2) + mpz_sizeinbase(x.get_den_mpz_t(), 2);
+  return bits <= 128 ? x : on_grid(x);
+}
+double bounded(double x) { return x; }
 
 template <class T>
 char mode_letter(const T& vn, const T& vt) {
@@ -232,11 +239,11 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
       const Vec2<T> vf{ph.theta[joint], ph.theta[joint + 1]};
       joint += 2;
       if (sign(ph.vn[i]) == 0) {
-        // The slide along the edge e = J^T n over Hk, rounded to a multiple of e on the grid: the tip stays exactly
-        // on the edge.
+        // The slide along the edge e = J^T n over Hk, a multiple of e (bounded: on the grid if large): the tip stays
+        // exactly on the edge.
         const Vec2<T> slip = vf - (ph.v + ph.omega * perp2(c.point));
         const Vec2<T> e{c.normal.y, -c.normal.x};
-        carried_slip[f] = T(on_grid(T(Hk * dot2(slip, e) / dot2(e, e))) / Hk) * e;
+        carried_slip[f] = T(bounded(T(Hk * dot2(slip, e) / dot2(e, e))) / Hk) * e;
       }
       else
         free_velocity[f] = vf;
@@ -248,8 +255,8 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
     }
 
     // The applied twist: turning, about a rolling obstacle contact's point (exactly the instantaneous centre: the
-    // body's velocity is zero there) or else the instantaneous centre on the grid, by the rotation that brings the
-    // pose's tan(theta / 2) after a full step, U_old (+) omega Hk / 2 = (U_old + u) / (1 - U_old u), to the grid.
+    // body's velocity is zero there) or else the instantaneous centre (bounded), by the rotation that brings the
+    // pose's tan(theta / 2) after a full step, U_old (+) omega Hk / 2 = (U_old + u) / (1 - U_old u), bounded.
     r.applied_omega = ph.omega;
     r.applied_v = ph.v;
     if (sign(ph.omega) != 0) {
@@ -260,12 +267,12 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
           centre = cs.contacts[i].point;
           pivot = true;
         }
-      if (!pivot) centre = {on_grid(centre.x), on_grid(centre.y)};
+      if (!pivot) centre = {bounded(centre.x), bounded(centre.y)};
       const T u = ph.omega * Hk / T(2);
       if constexpr (exact_path) {
         if (sign(T(T(1) + pose.c)) != 0 && sign(T(T(1) - pose.s / (T(1) + pose.c) * u)) != 0) {
           const T U_old = pose.s / (T(1) + pose.c);
-          const T U_new = on_grid(T((U_old + u) / (T(1) - U_old * u)));
+          const T U_new = bounded(T((U_old + u) / (T(1) - U_old * u)));
           r.applied_omega = T(2) * ((U_new - U_old) / (T(1) + U_old * U_new)) / Hk;
         }
       }

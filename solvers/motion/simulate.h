@@ -58,9 +58,10 @@ struct StepRecord {
   Vec2<T> v{T(0), T(0)};  ///< q_dot: velocity of the body point at the world origin
   T omega = T(0);         ///< q_dot: angular velocity
   /// The twist the step applies: (v, omega) itself when omega = 0; turning, a rotation about a rolling obstacle
-  /// contact's point (exactly the instantaneous centre) or else about the instantaneous centre rounded to the grid
-  /// 2^-40, whose Cayley parameter brings the pose's tan(theta / 2) after a full step to the grid 2^-40 (exact
-  /// paths), so the pose's numbers stay bounded; the float path applies (v, omega).
+  /// contact's point (exactly the instantaneous centre) or else about the instantaneous centre, by the Cayley
+  /// parameter that brings the pose's tan(theta / 2) after a full step to its exact value if that takes at most 128
+  /// bits, else to the nearest multiple of 2^-40 (the centre likewise): exact where cheap, and the pose's numbers
+  /// stay bounded (exact paths). The float path applies (v, omega).
   Vec2<T> applied_v{T(0), T(0)};
   T applied_omega = T(0);
   std::string certificate;  ///< "ucp_solvable" / "ucp_jammed" (exact paths)
