@@ -16,14 +16,15 @@ namespace contactcert::solvers::motion {
 struct Divergence {
   long step = -1;
   std::string kind;
-  std::string what;  ///< e.g. "phantom contact: body vertex 2 on ceiling edge 3"
+  std::string what;          ///< e.g. "phantom contact: body vertex 2 on ceiling edge 3"
   double pose_distance = 0;  ///< max over body vertices of |p_exact - p_float| after that step (or at the end)
   double time_exact = 0, time_float = 0;  ///< the step's start times
 };
 
 /// Compares the exact (or verified) run with the float run of the same scene: the first divergence of each kind, in
 /// step order (empty: the runs agree on every verdict, contact and mode, and no float pose overlaps).
-std::vector<Divergence> compare_runs(const MotionScene& scene, const Trajectory<Q>& exact_run, const Trajectory<double>& float_run);
+std::vector<Divergence> compare_runs(const MotionScene& scene, const Trajectory<Q>& exact_run,
+                                     const Trajectory<double>& float_run);
 
 /// max over the body's vertices of the distance between their positions under the two poses.
 double pose_distance(const MotionScene& scene, const Pose<Q>& a, const Pose<double>& b);

@@ -95,12 +95,12 @@ ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Pose<T>& pose, cons
         const Vec2<T> e = ob[(k + 1) % ob.size()] - ob[k];
         const int where = on_segment(body[i], ob[k], e);
         if (where == 0 && out.unsupported.empty())
-          out.unsupported = "body vertex " + std::to_string(i) + " on " + g.obstacle_names[o] + " vertex (normal not determined)";
+          out.unsupported =
+              "body vertex " + std::to_string(i) + " on " + g.obstacle_names[o] + " vertex (normal not determined)";
         if (where != 1) continue;
         // The obstacle edge's outward normal (e turned by -90 degrees) points into the body.
         out.contacts.push_back({ContactKind::kBodyVertex, int(i), int(o), int(k), body[i], Vec2<T>{e.y, -e.x},
-                                g.obstacle_mu[o],
-                                vertex_name("body", i) + " on " + edge_name(g.obstacle_names[o], k)});
+                                g.obstacle_mu[o], vertex_name("body", i) + " on " + edge_name(g.obstacle_names[o], k)});
       }
     for (std::size_t k = 0; k < ob.size(); ++k)
       for (std::size_t i = 0; i < nb; ++i) {
@@ -150,7 +150,8 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
   T limit = H;
   // g: the gap (times 1 + u^2) of point p, moving with velocity pv in the world (unless it is the body's own
   // vertex, body_point), against the segment a -> a + e (a body edge when !body_point), in powers of tau.
-  const auto consider = [&](const Vec2<T>& p, const Vec2<T>& pv, bool body_point, const Vec2<T>& a, const Vec2<T>& e, const std::string& name) {
+  const auto consider = [&](const Vec2<T>& p, const Vec2<T>& pv, bool body_point, const Vec2<T>& a, const Vec2<T>& e,
+                            const std::string& name) {
     std::vector<T> poly;
     if (!turning) {
       const Vec2<T> rel = body_point ? v : pv - v;
@@ -204,11 +205,11 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
   return best;
 }
 
-#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                          \
-  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                                   \
-  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&);     \
-  template std::string overlap<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&);             \
-  template std::optional<ClosingContact<T>> first_closing<T>(const SceneGeometry<T>&, const Pose<T>&,                \
+#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                         \
+  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                                  \
+  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&);    \
+  template std::string overlap<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&);            \
+  template std::optional<ClosingContact<T>> first_closing<T>(const SceneGeometry<T>&, const Pose<T>&,               \
                                                              const std::vector<Vec2<T>>&, const Vec2<T>&, const T&, \
                                                              const std::vector<std::optional<Vec2<T>>>&, const T&);
 CONTACTCERT_MOTION_CONTACTS_INST(Q)

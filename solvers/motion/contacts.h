@@ -83,13 +83,13 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
                                                const std::vector<Vec2<T>>& tips, const Vec2<T>& v, const T& omega,
                                                const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H);
 
-#define CONTACTCERT_MOTION_CONTACTS_EXTERN(T)                                                                       \
-  extern template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                           \
-  extern template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Pose<T>&,                           \
-                                                 const std::vector<Vec2<T>>&);                                      \
-  extern template std::string overlap<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&);    \
-  extern template std::optional<ClosingContact<T>> first_closing<T>(                                                \
-      const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&, const Vec2<T>&, const T&,               \
+#define CONTACTCERT_MOTION_CONTACTS_EXTERN(T)                                                                   \
+  extern template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                       \
+  extern template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Pose<T>&,                       \
+                                                 const std::vector<Vec2<T>>&);                                  \
+  extern template std::string overlap<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&); \
+  extern template std::optional<ClosingContact<T>> first_closing<T>(                                            \
+      const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&, const Vec2<T>&, const T&,           \
       const std::vector<std::optional<Vec2<T>>>&, const T&);
 CONTACTCERT_MOTION_CONTACTS_EXTERN(Q)
 CONTACTCERT_MOTION_CONTACTS_EXTERN(double)

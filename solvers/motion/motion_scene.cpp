@@ -69,8 +69,8 @@ ScheduleAt schedule_at(const Finger& f, const Q& t) {
 }
 
 MotionScene read_motion_scene(const JsonInput& root) {
-  root.expect_keys({"kind", "name", "description", "source", "note", "workpiece", "gravity", "obstacles", "fingers",
-                    "motion"});
+  root.expect_keys(
+      {"kind", "name", "description", "source", "note", "workpiece", "gravity", "obstacles", "fingers", "motion"});
   if (root.at("kind").string() != "quasistatic_scene") root.at("kind").fail("\"quasistatic_scene\"");
   MotionScene s;
   s.file = root.file();

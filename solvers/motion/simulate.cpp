@@ -1,10 +1,9 @@
 #include "solvers/motion/simulate.h"
 
-#include <chrono>
-#include <set>
-
 #include <Eigen/QR>
+#include <chrono>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "exact/input_error.h"
 #include "solvers/motion/first_root.h"
@@ -122,13 +121,20 @@ std::optional<std::pair<T, int>> slide_to_vertex(const SceneGeometry<T>& g, cons
 
 const char* run_status_name(RunStatus s) {
   switch (s) {
-    case RunStatus::kCompleted: return "completed";
-    case RunStatus::kJammed: return "jammed";
-    case RunStatus::kNoContact: return "no_contact";
-    case RunStatus::kUnsupportedContact: return "unsupported_contact";
-    case RunStatus::kOverlap: return "overlap";
-    case RunStatus::kIrrationalContactTime: return "irrational_contact_time";
-    case RunStatus::kUnknown: return "unknown";
+    case RunStatus::kCompleted:
+      return "completed";
+    case RunStatus::kJammed:
+      return "jammed";
+    case RunStatus::kNoContact:
+      return "no_contact";
+    case RunStatus::kUnsupportedContact:
+      return "unsupported_contact";
+    case RunStatus::kOverlap:
+      return "overlap";
+    case RunStatus::kIrrationalContactTime:
+      return "irrational_contact_time";
+    case RunStatus::kUnknown:
+      return "unknown";
   }
   return "unknown";
 }
@@ -141,8 +147,8 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
   const T H = from_q<T>(opts.dt.value_or(scene.dt));
   const long N = opts.steps.value_or(scene.steps);
   ucp::UcpOptions uopts = opts.ucp;
-  uopts.arith = exact_path ? (opts.arith == exact::Arith::kFloat ? exact::Arith::kVerified : opts.arith)
-                           : exact::Arith::kFloat;
+  uopts.arith =
+      exact_path ? (opts.arith == exact::Arith::kFloat ? exact::Arith::kVerified : opts.arith) : exact::Arith::kFloat;
   const std::size_t nf = scene.fingers.size();
 
   Trajectory<T> out;
@@ -188,7 +194,10 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
         tq = Q(t);
       const ScheduleAt at = schedule_at(scene.fingers[f], tq);
       commands[f] = {at.segment->force, {from_q<T>(at.segment->value.x), from_q<T>(at.segment->value.y)}};
-      if (at.ends && from_q<T>(*at.ends - tq) < Hk) Hk = from_q<T>(*at.ends - tq);
+      if (at.ends && from_q<T>(*at.ends - tq) < Hk) {
+        Hk = from_q<T>(*at.ends - tq);
+        r.cut_by = "schedule change of " + g.finger_names[f];
+      }
     }
 
     const nlohmann::ordered_json step_json = step_scene(g, pose, cs.contacts, commands);
@@ -244,8 +253,7 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
         const Vec2<T> slip = vf - (ph.v + ph.omega * perp2(c.point));
         const Vec2<T> e{c.normal.y, -c.normal.x};
         carried_slip[f] = T(bounded(T(Hk * dot2(slip, e) / dot2(e, e))) / Hk) * e;
-      }
-      else
+      } else
         free_velocity[f] = vf;
     }
     for (std::size_t f = 0; f < nf; ++f) {
@@ -289,8 +297,8 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
       if (const auto end = slide_to_vertex(g, pose, c, *carried_slip[static_cast<std::size_t>(c.other)]);
           end && end->first < r.h) {
         r.h = end->first;
-        r.cut_by = g.finger_names[static_cast<std::size_t>(c.other)] + " reaches body vertex " +
-                   std::to_string(end->second);
+        r.cut_by =
+            g.finger_names[static_cast<std::size_t>(c.other)] + " reaches body vertex " + std::to_string(end->second);
         r.cut_exact = true;
       }
     }

@@ -18,16 +18,24 @@ namespace contactcert::solvers::motion {
 /// vertex-on-vertex contact (normal not determined); two shapes overlap after a step (a sliding contact that turns
 /// leaves its line at second order); a contact closes at an irrational time (rational poses cannot reach it: the
 /// last step ends at a rational time just before it, the gap > 0); unknown (a solver budget).
-enum class RunStatus { kCompleted, kJammed, kNoContact, kUnsupportedContact, kOverlap, kIrrationalContactTime, kUnknown };
+enum class RunStatus {
+  kCompleted,
+  kJammed,
+  kNoContact,
+  kUnsupportedContact,
+  kOverlap,
+  kIrrationalContactTime,
+  kUnknown
+};
 const char* run_status_name(RunStatus s);
 
 struct SimulateOptions {
   /// kExact: exact geometry and exact LPs; kVerified (default): exact geometry, the UCP's verified path;
   /// kFloat: doubles throughout (geometry with the float sign tolerance, the UCP's float path), nothing proven.
   exact::Arith arith = exact::Arith::kVerified;
-  std::optional<long> steps;  ///< N, overriding the scene's
-  std::optional<Q> dt;        ///< H, overriding the scene's
-  bool uniqueness = true;     ///< decide per step whether the motion is unique (exact paths)
+  std::optional<long> steps;             ///< N, overriding the scene's
+  std::optional<Q> dt;                   ///< H, overriding the scene's
+  bool uniqueness = true;                ///< decide per step whether the motion is unique (exact paths)
   long max_uniqueness_modes = 1L << 12;  ///< the enumeration's budget (4^nc modes): above it, `unknown`
   bool certificates = true;              ///< keep each step's UCP certificate text (exact paths)
   ucp::UcpOptions ucp;                   ///< method, seed, budgets (its arith is set from `arith`)
@@ -47,7 +55,9 @@ template <class T>
 struct StepRecord {
   long index = 0;
   T time = T(0), h = T(0);
-  std::string cut_by;  ///< what cut the step short: the contact that closed, or a finger reaching a body vertex
+  /// What cut the step short (empty: a full step): the contact that closed, a finger reaching a body vertex, or
+  /// "schedule change of finger NAME".
+  std::string cut_by;
   bool cut_exact = true;  ///< false: the closing time is irrational; h is a rational time just before it
   Pose<T> pose, pose_after;
   std::vector<Vec2<T>> tips_after;

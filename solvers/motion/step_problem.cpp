@@ -23,13 +23,15 @@ geometry::FrameResult frame_as_written(const geometry::Shape&, const geometry::F
 }  // namespace
 
 template <class T>
-nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<Contact<T>>& contacts,
+nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose,
+                                  const std::vector<Contact<T>>& contacts,
                                   const std::vector<FingerCommand<T>>& commands) {
   nlohmann::ordered_json vertices = nlohmann::ordered_json::array();
   for (const Vec2<T>& p : g.body) vertices.push_back(pair(pose.apply(p)));
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const Contact<T>& c : contacts) {
-    nlohmann::ordered_json j{{"name", c.name}, {"point", pair(c.point)}, {"normal", pair(c.normal)}, {"mu", text(c.mu)}};
+    nlohmann::ordered_json j{
+        {"name", c.name}, {"point", pair(c.point)}, {"normal", pair(c.normal)}, {"mu", text(c.mu)}};
     if (c.kind == ContactKind::kFinger) {
       const FingerCommand<T>& cmd = commands[static_cast<std::size_t>(c.other)];
       j["finger"] = {{"axes", "world"}, {cmd.force ? "force" : "velocity", pair(cmd.value)}};
@@ -48,9 +50,9 @@ ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, bool exact_fra
 }
 
 template nlohmann::ordered_json step_scene<Q>(const SceneGeometry<Q>&, const Pose<Q>&, const std::vector<Contact<Q>>&,
-                                               const std::vector<FingerCommand<Q>>&);
+                                              const std::vector<FingerCommand<Q>>&);
 template nlohmann::ordered_json step_scene<double>(const SceneGeometry<double>&, const Pose<double>&,
-                                                    const std::vector<Contact<double>>&,
-                                                    const std::vector<FingerCommand<double>>&);
+                                                   const std::vector<Contact<double>>&,
+                                                   const std::vector<FingerCommand<double>>&);
 
 }  // namespace contactcert::solvers::motion

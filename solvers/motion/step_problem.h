@@ -22,7 +22,8 @@ struct FingerCommand {
 /// and mu; a finger contact carries its command ("axes": "world"). Numbers are exact strings (a double is written
 /// as the rational it is).
 template <class T>
-nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<Contact<T>>& contacts,
+nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose,
+                                  const std::vector<Contact<T>>& contacts,
                                   const std::vector<FingerCommand<T>>& commands);
 
 /// The problem of a step scene. exact_frames: each contact's frame is checked by geometry::frame_of (the point on
@@ -31,10 +32,10 @@ nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose
 ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, bool exact_frames, const std::string& name);
 
 extern template nlohmann::ordered_json step_scene<Q>(const SceneGeometry<Q>&, const Pose<Q>&,
-                                                      const std::vector<Contact<Q>>&,
-                                                      const std::vector<FingerCommand<Q>>&);
+                                                     const std::vector<Contact<Q>>&,
+                                                     const std::vector<FingerCommand<Q>>&);
 extern template nlohmann::ordered_json step_scene<double>(const SceneGeometry<double>&, const Pose<double>&,
-                                                           const std::vector<Contact<double>>&,
-                                                           const std::vector<FingerCommand<double>>&);
+                                                          const std::vector<Contact<double>>&,
+                                                          const std::vector<FingerCommand<double>>&);
 
 }  // namespace contactcert::solvers::motion

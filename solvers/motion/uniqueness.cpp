@@ -27,9 +27,12 @@ exact::LpProblem<Q> mode_lp(const ucp::QuasistaticProblem& p, const std::string&
   lp.A.leftCols(m) = p.P;
   for (std::size_t k = 0; k < kept.size(); ++k) {
     const Index j = kept[k], col = m + static_cast<Index>(k);
-    if (j < nc) lp.A(j, col) = -1;                   // v_n
-    else if (j < 2 * nc) lp.A(j, col) = -1;          // v_t^+ in row nc + i
-    else lp.A(j - nc, col) = 1;                      // v_t^- in row nc + i
+    if (j < nc)
+      lp.A(j, col) = -1;  // v_n
+    else if (j < 2 * nc)
+      lp.A(j, col) = -1;  // v_t^+ in row nc + i
+    else
+      lp.A(j - nc, col) = 1;  // v_t^- in row nc + i
   }
   lp.b = p.J_alpha_theta_alpha();
   lp.is_free.assign(static_cast<std::size_t>(lp.A.cols()), false);
@@ -41,9 +44,12 @@ exact::LpProblem<Q> mode_lp(const ucp::QuasistaticProblem& p, const std::string&
 
 const char* uniqueness_name(UniquenessStatus s) {
   switch (s) {
-    case UniquenessStatus::kUnique: return "unique";
-    case UniquenessStatus::kNotUnique: return "not_unique";
-    case UniquenessStatus::kUnknown: return "unknown";
+    case UniquenessStatus::kUnique:
+      return "unique";
+    case UniquenessStatus::kNotUnique:
+      return "not_unique";
+    case UniquenessStatus::kUnknown:
+      return "unknown";
   }
   return "unknown";
 }

@@ -1,17 +1,17 @@
 // The pushed box of issue 32 (a 2 x 2 box on a floor, mu = 1, a frictionless finger at height h pushing along +x
 // with speed 1, weight 1 at the centre): it slides for h < 1 (the push needed to slide, mu N = 1, is below the
 // push that tips it about the front corner, 1 / h), tips for h > 1, and can do both at h = 1.
-#include <gtest/gtest.h>
+#include "solvers/motion/simulate.h"
 
-#include <nlohmann/json.hpp>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "solvers/motion/compare.h"
-#include "solvers/motion/simulate.h"
 #include "solvers/ucp/certificate.h"
 
 namespace contactcert::solvers::motion {
@@ -27,9 +27,12 @@ MotionScene pushed_box(const std::string& h, const std::string& extra_obstacles 
   const std::string text = R"({"kind": "quasistatic_scene",
     "workpiece": {"shape": {"type": "polygon", "vertices": [[0, 0], [2, 0], [2, 2], [0, 2]]}, "com": [1, 1]},
     "gravity": [0, -1],
-    "obstacles": [)" + std::string(kFloor) + extra_obstacles + R"(],
-    "fingers": [{"name": "pusher", "tip": [0, ")" + h + R"("], "mu": 0, "schedule": [{"velocity": [1, 0]}]}],
-    "motion": {"dt": ")" + dt + R"(", "steps": )" + std::to_string(steps) + "}}";
+    "obstacles": [)" + std::string(kFloor) +
+                           extra_obstacles + R"(],
+    "fingers": [{"name": "pusher", "tip": [0, ")" +
+                           h + R"("], "mu": 0, "schedule": [{"velocity": [1, 0]}]}],
+    "motion": {"dt": ")" + dt +
+                           R"(", "steps": )" + std::to_string(steps) + "}}";
   return read_motion_scene(exact::JsonInput::parse(text, "pushed_box.json"));
 }
 
@@ -180,7 +183,8 @@ TEST(FloatDrift, GrazingCeilingIsAPhantomContactInFloat) {
   // A ceiling 10^-12 above the box's top: exactly, the box slides under it untouched; the float path's sign
   // tolerance (1e-9) takes the gap for a contact.
   const MotionScene scene = pushed_box(
-      "1/2", R"(, {"name": "ceiling", "vertices": [[-1, "2.000000000001"], [9, "2.000000000001"], [9, 3], [-1, 3]], "mu": 1})",
+      "1/2",
+      R"(, {"name": "ceiling", "vertices": [[-1, "2.000000000001"], [9, "2.000000000001"], [9, 3], [-1, 3]], "mu": 1})",
       "1/10", 3);
   const Trajectory<Q> ex = simulate<Q>(scene, exact_options());
   ASSERT_EQ(ex.status, RunStatus::kCompleted) << ex.reason;
@@ -290,13 +294,21 @@ TEST(PushedBox, DISABLED_StepsPerSecond) {
       const Trajectory<double> f = simulate<double>(scene, o);
       std::cout << "h = " << h << (extras ? " with uniqueness and certificates" : " bare") << ": exact "
                 << double(e.steps.size()) / e.seconds << " steps/s, verified " << double(v.steps.size()) / v.seconds
-                << ", float " << double(f.steps.size()) / f.seconds << " (" << e.steps.size() << ", "
-                << v.steps.size() << ", " << f.steps.size() << " steps; " << run_status_name(e.status) << ": " << e.reason
+                << ", float " << double(f.steps.size()) / f.seconds << " (" << e.steps.size() << ", " << v.steps.size()
+                << ", " << f.steps.size() << " steps; " << run_status_name(e.status) << ": " << e.reason
                 << "; float: " << run_status_name(f.status) << ")\n";
-      for (const auto& st : e.steps)
-        std::cout << "  step " << st.index << " " << st.seconds << " s, h " << exact::to_string(st.h) << " cut " << st.cut_by
-                  << " pose.c bits " << mpz_sizeinbase(st.pose_after.c.get_den_mpz_t(), 2) << "\n";
+      std::cout << "  last pose: cos theta has " << mpz_sizeinbase(e.final_pose.c.get_den_mpz_t(), 2)
+                << " bits of denominator\n";
     }
+  }
+  // 1000 steps, verified, with every step's certificate, no uniqueness: the tipping box (H = 1/20000, until the
+  // finger nears the rear corner) and the sliding one.
+  for (const char* h : {"3/2", "1/2"}) {
+    SimulateOptions o;
+    o.uniqueness = false;
+    const Trajectory<Q> v = simulate<Q>(pushed_box(h, "", "1/20000", 1000), o);
+    std::cout << "h = " << h << ", 1000 steps verified with certificates: " << v.seconds << " s (" << v.steps.size()
+              << " steps, " << run_status_name(v.status) << ")\n";
   }
 }
 
@@ -304,7 +316,8 @@ TEST(MotionScene, BadInputNamesTheField) {
   const auto read = [](const std::string& obstacles, const std::string& schedule) {
     const std::string text = R"({"kind": "quasistatic_scene",
       "workpiece": {"shape": {"type": "polygon", "vertices": [[0, 0], [2, 0], [2, 2], [0, 2]]}},
-      "obstacles": [)" + obstacles + R"(], "fingers": [{"tip": [0, 1], "mu": 0, "schedule": )" + schedule + R"(}],
+      "obstacles": [)" + obstacles +
+                             R"(], "fingers": [{"tip": [0, 1], "mu": 0, "schedule": )" + schedule + R"(}],
       "motion": {"dt": "1/10", "steps": 3}})";
     try {
       read_motion_scene(exact::JsonInput::parse(text, "s.json"));
@@ -315,9 +328,10 @@ TEST(MotionScene, BadInputNamesTheField) {
   };
   const std::string floor = kFloor;
   EXPECT_EQ(read(floor, R"([{"velocity": [1, 0]}])"), "");
-  EXPECT_NE(read(R"({"vertices": [[0, -1], [4, -1], [2, "-1/2"], [4, 0], [0, 0]], "mu": 1})", R"([{"velocity": [1, 0]}])")
-                .find("$.obstacles[0].vertices"),
-            std::string::npos);
+  EXPECT_NE(
+      read(R"({"vertices": [[0, -1], [4, -1], [2, "-1/2"], [4, 0], [0, 0]], "mu": 1})", R"([{"velocity": [1, 0]}])")
+          .find("$.obstacles[0].vertices"),
+      std::string::npos);
   EXPECT_NE(read(floor, R"([{"velocity": [1, 0]}, {"force": [1, 0]}])").find("$.fingers[0].schedule[0]"),
             std::string::npos);
   EXPECT_NE(read(floor, R"([{"velocity": [1, 0], "force": [1, 0]}])").find("exactly one of"), std::string::npos);
@@ -335,6 +349,61 @@ TEST(PushedBox, ACorruptedStepCertificateIsRefused) {
                                     : nlohmann::json(farkas[0].get<long>() + 1);
   const ucp::CertificateCheck c = ucp::check_ucp_certificate(exact::JsonInput::parse(cert.dump(), "forged"));
   EXPECT_EQ(c.verdict, ucp::CertificateVerdict::kInvalid);
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::motion
+
+namespace contactcert::solvers::motion {
+namespace {
+
+TEST(Schedule, AStepIsCutAtTheScheduleChangeAndAForceFingerHolds) {
+  // Velocity 1 for 3/20, then a force 1/2 (below the friction mu N = 1): the box slides 3/20, then rests.
+  const std::string text = R"({"kind": "quasistatic_scene",
+    "workpiece": {"shape": {"type": "polygon", "vertices": [[0, 0], [2, 0], [2, 2], [0, 2]]}, "com": [1, 1]},
+    "gravity": [0, -1], "obstacles": [)" +
+                           std::string(kFloor) + R"(],
+    "fingers": [{"name": "pusher", "tip": [0, "1/2"], "mu": 0,
+                 "schedule": [{"duration": "3/20", "velocity": [1, 0]}, {"force": ["1/2", 0]}]}],
+    "motion": {"dt": "1/10", "steps": 4}})";
+  const MotionScene scene = read_motion_scene(exact::JsonInput::parse(text, "schedule.json"));
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
+  ASSERT_EQ(run.steps.size(), 4u);
+  EXPECT_EQ(run.steps[0].h, Q(1, 10));
+  EXPECT_EQ(run.steps[1].h, Q(1, 20));  // cut at the schedule change, 3/20
+  EXPECT_EQ(run.steps[1].cut_by, "schedule change of finger pusher");
+  EXPECT_EQ(run.steps[1].v, (Vec2<Q>{Q(1), Q(0)}));
+  for (std::size_t k = 2; k < 4; ++k) {
+    EXPECT_EQ(run.steps[k].v, (Vec2<Q>{Q(0), Q(0)}));
+    EXPECT_EQ(run.steps[k].omega, Q(0));
+    ASSERT_TRUE(run.steps[k].uniqueness);
+    EXPECT_EQ(run.steps[k].uniqueness->status, UniquenessStatus::kUnique);
+  }
+  EXPECT_EQ(run.final_pose.t, (Vec2<Q>{Q(3, 20), Q(0)}));
+  EXPECT_EQ(run.final_time, Q(7, 20));
+  // The force finger pushes with 1/2 (world force on the body), friction holds it.
+  for (const ContactRecord<Q>& c : run.steps[2].contacts)
+    if (c.name == "finger pusher on body edge 3") {
+      EXPECT_EQ(c.force, (Vec2<Q>{Q(1, 2), Q(0)}));
+    }
+  expect_certified_and_apart(scene, run);
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::motion
+
+namespace contactcert::solvers::motion {
+namespace {
+
+TEST(BundledScene, PushedBoxTipsForFiveSteps) {
+  const MotionScene scene = read_motion_scene(exact::JsonInput::load(CONTACTCERT_SCENES_DIR "/motion_pushed_box.json"));
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
+  ASSERT_EQ(run.steps.size(), 5u);
+  EXPECT_EQ(run.final_pose.apply(Vec2<Q>{Q(2), Q(0)}), (Vec2<Q>{Q(2), Q(0)}));
+  EXPECT_EQ(run.final_time, Q(1, 2));
+  expect_certified_and_apart(scene, run);
 }
 
 }  // namespace
