@@ -164,6 +164,14 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
   if (const std::string o = overlap(g, pose, tips); !o.empty()) finish(RunStatus::kOverlap, o + " at time 0");
   for (long k = 0; k < N && out.status == RunStatus::kCompleted; ++k) {
     const auto step_start = std::chrono::steady_clock::now();
+    if (opts.time_limit > 0) {
+      const double left = opts.time_limit - std::chrono::duration<double>(step_start - start).count();
+      if (left <= 0) {
+        finish(RunStatus::kUnknown, "time limit after " + std::to_string(k) + " steps");
+        break;
+      }
+      uopts.time_limit = left;
+    }
     StepRecord<T> r;
     r.index = k;
     r.time = t;

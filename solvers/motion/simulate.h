@@ -17,7 +17,7 @@ namespace contactcert::solvers::motion {
 /// How a run ended: all steps done; jammed (a proof, at the last step); no contact left to hold the body; a
 /// vertex-on-vertex contact (normal not determined); two shapes overlap after a step (a sliding contact that turns
 /// leaves its line at second order); a contact closes at an irrational time (rational poses cannot reach it: the
-/// last step ends at a rational time just before it, the gap > 0); unknown (a solver budget).
+/// last step ends at a rational time just before it, the gap > 0); unknown (a solver budget or the time limit).
 enum class RunStatus {
   kCompleted,
   kJammed,
@@ -38,6 +38,9 @@ struct SimulateOptions {
   bool uniqueness = true;                ///< decide per step whether the motion is unique (exact paths)
   long max_uniqueness_modes = 1L << 12;  ///< the enumeration's budget (4^nc modes): above it, `unknown`
   bool certificates = true;              ///< keep each step's UCP certificate text (exact paths)
+  /// Seconds of wall clock for the whole run (0 = none): then `unknown`, with the steps done so far. Each step's
+  /// solve gets what is left (UcpOptions::time_limit).
+  double time_limit = 0;
   ucp::UcpOptions ucp;                   ///< method, seed, budgets (its arith is set from `arith`)
 };
 

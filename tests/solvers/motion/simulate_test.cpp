@@ -408,3 +408,18 @@ TEST(BundledScene, PushedBoxTipsForFiveSteps) {
 
 }  // namespace
 }  // namespace contactcert::solvers::motion
+
+namespace contactcert::solvers::motion {
+namespace {
+
+TEST(Budget, TheTimeLimitEndsTheRunUnknownWithTheStepsDone) {
+  SimulateOptions o = exact_options();
+  o.time_limit = 1e-9;  // passed before the first step
+  const Trajectory<Q> run = simulate<Q>(pushed_box("1/2", "", "1/10", 1000), o);
+  EXPECT_EQ(run.status, RunStatus::kUnknown);
+  EXPECT_EQ(run.reason, "time limit after 0 steps");
+  EXPECT_TRUE(run.steps.empty());
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::motion
