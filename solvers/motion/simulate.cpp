@@ -117,6 +117,123 @@ std::optional<std::pair<T, int>> slide_to_vertex(const SceneGeometry<T>& g, cons
   return std::pair<T, int>{-s0 / rate, c.body};
 }
 
+/// The fingers' commands at time t and the step's length: H, or up to the next schedule change (then `cut_by`).
+template <class T>
+struct StepSchedule {
+  std::vector<FingerCommand<T>> commands;
+  T H;
+  std::string cut_by;
+};
+
+template <class T>
+StepSchedule<T> step_schedule(const MotionScene& scene, const SceneGeometry<T>& g, const T& t, const T& H) {
+  StepSchedule<T> out{std::vector<FingerCommand<T>>(scene.fingers.size()), H, ""};
+  Q tq;
+  if constexpr (std::is_same_v<T, Q>)
+    tq = t;
+  else
+    tq = Q(t);
+  for (std::size_t f = 0; f < scene.fingers.size(); ++f) {
+    const ScheduleAt at = schedule_at(scene.fingers[f], tq);
+    out.commands[f] = {at.segment->force, {from_q<T>(at.segment->value.x), from_q<T>(at.segment->value.y)}};
+    if (at.ends && from_q<T>(*at.ends - tq) < out.H) {
+      out.H = from_q<T>(*at.ends - tq);
+      out.cut_by = "schedule change of " + g.finger_names[f];
+    }
+  }
+  return out;
+}
+
+/// How each finger moves over the step: carried along its edge with a slide (in contact, v_n = 0), or by a
+/// velocity (free, or separating), or not at all (a free force-controlled finger).
+template <class T>
+struct FingerMotion {
+  std::vector<std::optional<Vec2<T>>> free_velocity, carried_slip;
+};
+
+/// Records each contact's mode and world force in r, and says how each finger moves. A carried finger's slide along
+/// its edge e = J^T n over the step is a multiple of e (bounded), so the tip stays exactly on the edge.
+template <class T>
+FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& ph, const StepSchedule<T>& sched,
+                                StepRecord<T>& r) {
+  const std::size_t nf = sched.commands.size();
+  FingerMotion<T> m{std::vector<std::optional<Vec2<T>>>(nf), std::vector<std::optional<Vec2<T>>>(nf)};
+  std::vector<bool> touching(nf, false);
+  std::size_t joint = 0;
+  for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
+    const Contact<T>& c = cs.contacts[i];
+    const Vec2<T> tvec = perp2(c.normal);
+    r.contacts.push_back(
+        {c.name, mode_letter(ph.vn[i], ph.vt[i]), c.point, c.normal,
+         Vec2<T>{ph.cn[i] * c.normal.x + ph.ct[i] * tvec.x, ph.cn[i] * c.normal.y + ph.ct[i] * tvec.y}});
+    if (c.kind != ContactKind::kFinger) continue;
+    const auto f = static_cast<std::size_t>(c.other);
+    touching[f] = true;
+    const Vec2<T> vf{ph.theta[joint], ph.theta[joint + 1]};
+    joint += 2;
+    if (sign(ph.vn[i]) != 0) {
+      m.free_velocity[f] = vf;
+      continue;
+    }
+    const Vec2<T> slip = vf - (ph.v + ph.omega * perp2(c.point));
+    const Vec2<T> e{c.normal.y, -c.normal.x};
+    m.carried_slip[f] = T(bounded(T(sched.H * dot2(slip, e) / dot2(e, e))) / sched.H) * e;
+  }
+  for (std::size_t f = 0; f < nf; ++f)
+    if (!touching[f] && !sched.commands[f].force) m.free_velocity[f] = sched.commands[f].value;
+  return m;
+}
+
+/// The applied twist (StepRecord::applied_v, applied_omega): turning, about a rolling obstacle contact's point
+/// (exactly the instantaneous centre: the body's velocity is zero there) or else the instantaneous centre (bounded),
+/// by the rotation that brings the pose's tan(theta / 2) after a full step, (U + u) / (1 - U u) with u = omega H / 2,
+/// to a bounded value (exact paths).
+template <class T>
+void apply_twist(const ContactSet<T>& cs, const StepPhysics<T>& ph, const Pose<T>& pose, const T& H, StepRecord<T>& r) {
+  r.applied_omega = ph.omega;
+  r.applied_v = ph.v;
+  if (sign(ph.omega) == 0) return;
+  Vec2<T> centre{-ph.v.y / ph.omega, ph.v.x / ph.omega};
+  bool pivot = false;
+  for (std::size_t i = 0; i < cs.contacts.size() && !pivot; ++i)
+    if (cs.contacts[i].kind != ContactKind::kFinger && r.contacts[i].mode == 'r') {
+      centre = cs.contacts[i].point;
+      pivot = true;
+    }
+  if (!pivot) centre = {bounded(centre.x), bounded(centre.y)};
+  if constexpr (std::is_same_v<T, Q>) {
+    const Q u = ph.omega * H / 2;
+    if (sgn(Q(1 + pose.c)) != 0 && sgn(Q(1 - pose.s / (1 + pose.c) * u)) != 0) {
+      const Q U_old = pose.s / (1 + pose.c);
+      const Q U_new = bounded(Q((U_old + u) / (1 - U_old * u)));
+      r.applied_omega = 2 * ((U_new - U_old) / (1 + U_old * U_new)) / H;
+    }
+  }
+  r.applied_v = r.applied_omega * Vec2<T>{centre.y, -centre.x};  // omega J (0 - centre)
+}
+
+/// Cuts the step (r.h, cut_by, cut_exact) at the first contact that closes, or where a carried finger reaches the
+/// end of its edge, if before H.
+template <class T>
+void cut_step(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<Vec2<T>>& tips, const ContactSet<T>& cs,
+              const FingerMotion<T>& m, const T& H, StepRecord<T>& r) {
+  r.h = H;
+  if (const auto closing = first_closing(g, pose, tips, r.applied_v, r.applied_omega, m.free_velocity, H)) {
+    r.h = closing->tau;
+    r.cut_by = closing->name;
+    r.cut_exact = closing->exact;
+  }
+  for (const Contact<T>& c : cs.contacts) {
+    const auto f = static_cast<std::size_t>(c.other);
+    if (c.kind != ContactKind::kFinger || !m.carried_slip[f]) continue;
+    if (const auto end = slide_to_vertex(g, pose, c, *m.carried_slip[f]); end && end->first < r.h) {
+      r.h = end->first;
+      r.cut_by = g.finger_names[f] + " reaches body vertex " + std::to_string(end->second);
+      r.cut_exact = true;
+    }
+  }
+}
+
 }  // namespace
 
 const char* run_status_name(RunStatus s) {
@@ -142,14 +259,14 @@ const char* run_status_name(RunStatus s) {
 template <class T>
 Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
   constexpr bool exact_path = std::is_same_v<T, Q>;
-  const auto start = std::chrono::steady_clock::now();
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
   const SceneGeometry<T> g = scene_geometry<T>(scene);
   const T H = from_q<T>(opts.dt.value_or(scene.dt));
   const long N = opts.steps.value_or(scene.steps);
   ucp::UcpOptions uopts = opts.ucp;
   uopts.arith =
       exact_path ? (opts.arith == exact::Arith::kFloat ? exact::Arith::kVerified : opts.arith) : exact::Arith::kFloat;
-  const std::size_t nf = scene.fingers.size();
 
   Trajectory<T> out;
   Pose<T> pose;
@@ -163,26 +280,24 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
   };
   if (const std::string o = overlap(g, pose, tips); !o.empty()) finish(RunStatus::kOverlap, o + " at time 0");
   for (long k = 0; k < N && out.status == RunStatus::kCompleted; ++k) {
-    const auto step_start = std::chrono::steady_clock::now();
+    const auto step_start = clock::now();
     if (opts.time_limit > 0) {
-      const double left = opts.time_limit - std::chrono::duration<double>(step_start - start).count();
-      if (left <= 0) {
+      uopts.time_limit = opts.time_limit - std::chrono::duration<double>(step_start - start).count();
+      if (uopts.time_limit <= 0) {
         finish(RunStatus::kUnknown, "time limit after " + std::to_string(k) + " steps");
         break;
       }
-      uopts.time_limit = left;
     }
     StepRecord<T> r;
     r.index = k;
     r.time = t;
-    r.pose = pose;
+    r.pose = r.pose_after = pose;
+    r.tips_after = tips;
     const ContactSet<T> cs = find_contacts(g, pose, tips);
-    if (!cs.unsupported.empty()) {
-      finish(RunStatus::kUnsupportedContact, cs.unsupported);
-      break;
-    }
-    if (cs.contacts.empty()) {
-      finish(RunStatus::kNoContact, "no contact holds the body (a quasistatic body needs one)");
+    if (!cs.unsupported.empty() || cs.contacts.empty()) {
+      const bool none = cs.unsupported.empty();
+      finish(none ? RunStatus::kNoContact : RunStatus::kUnsupportedContact,
+             none ? "no contact holds the body (a quasistatic body needs one)" : cs.unsupported);
       break;
     }
     std::vector<std::string> names;
@@ -190,28 +305,12 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
     r.made = minus(names, previous);
     r.broken = minus(previous, names);
     previous = names;
+    const StepSchedule<T> sched = step_schedule(scene, g, t, H);
+    r.cut_by = sched.cut_by;
 
-    // This step's finger commands, and the step's length: H, or to the next schedule change.
-    std::vector<FingerCommand<T>> commands(nf);
-    T Hk = H;
-    for (std::size_t f = 0; f < nf; ++f) {
-      Q tq;
-      if constexpr (exact_path)
-        tq = t;
-      else
-        tq = Q(t);
-      const ScheduleAt at = schedule_at(scene.fingers[f], tq);
-      commands[f] = {at.segment->force, {from_q<T>(at.segment->value.x), from_q<T>(at.segment->value.y)}};
-      if (at.ends && from_q<T>(*at.ends - tq) < Hk) {
-        Hk = from_q<T>(*at.ends - tq);
-        r.cut_by = "schedule change of " + g.finger_names[f];
-      }
-    }
-
-    const nlohmann::ordered_json step_json = step_scene(g, pose, cs.contacts, commands);
     ucp::UcpProblem problem;
     try {
-      problem = step_problem(step_json, exact_path, "step " + std::to_string(k));
+      problem = step_problem(step_scene(g, pose, cs.contacts, sched.commands), exact_path, "step " + std::to_string(k));
     } catch (const exact::InputError& e) {
       finish(RunStatus::kUnsupportedContact, std::string("the step's problem was refused: ") + e.what());
       break;
@@ -222,15 +321,11 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
     if (exact_path && opts.certificates) r.certificate = ucp::certificate_text(problem, rep);
     if (rep.status != ucp::UcpStatus::kSolvable) {
       for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal, {T(0), T(0)}});
-      r.pose_after = pose;
-      r.tips_after = tips;
-      r.h = T(0);
-      r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+      r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
       out.steps.push_back(r);
-      if (rep.status == ucp::UcpStatus::kJammed)
-        finish(RunStatus::kJammed, "jammed at step " + std::to_string(k) + ": " + rep.reason);
-      else
-        finish(RunStatus::kUnknown, "step " + std::to_string(k) + ": " + rep.reason);
+      const bool jammed = rep.status == ucp::UcpStatus::kJammed;
+      finish(jammed ? RunStatus::kJammed : RunStatus::kUnknown,
+             (jammed ? "jammed at step " : "step ") + std::to_string(k) + ": " + rep.reason);
       break;
     }
     const StepPhysics<T> ph = physics(problem, rep, static_cast<const T*>(nullptr));
@@ -238,90 +333,22 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
     r.omega = ph.omega;
     if (exact_path && opts.uniqueness)
       r.uniqueness = motion_uniqueness(problem, uopts.arith, opts.max_uniqueness_modes);
+    const FingerMotion<T> fm = record_contacts(cs, ph, sched, r);
+    apply_twist(cs, ph, pose, sched.H, r);
+    cut_step(g, pose, tips, cs, fm, sched.H, r);
 
-    // Fingers: one in contact with v_n = 0 is carried with the body (it slides along its edge by its relative
-    // tangential velocity); one that is free or separating moves by its velocity; a free force finger holds still.
-    std::vector<std::optional<Vec2<T>>> free_velocity(nf);
-    std::vector<std::optional<Vec2<T>>> carried_slip(nf);
-    std::size_t joint = 0;
-    for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
-      const Contact<T>& c = cs.contacts[i];
-      const T& cn = ph.cn[i];
-      const T& ct = ph.ct[i];
-      const Vec2<T> tvec = perp2(c.normal);
-      r.contacts.push_back({c.name, mode_letter(ph.vn[i], ph.vt[i]), c.point, c.normal,
-                            Vec2<T>{cn * c.normal.x + ct * tvec.x, cn * c.normal.y + ct * tvec.y}});
-      if (c.kind != ContactKind::kFinger) continue;
-      const auto f = static_cast<std::size_t>(c.other);
-      const Vec2<T> vf{ph.theta[joint], ph.theta[joint + 1]};
-      joint += 2;
-      if (sign(ph.vn[i]) == 0) {
-        // The slide along the edge e = J^T n over Hk, a multiple of e (bounded: on the grid if large): the tip stays
-        // exactly on the edge.
-        const Vec2<T> slip = vf - (ph.v + ph.omega * perp2(c.point));
-        const Vec2<T> e{c.normal.y, -c.normal.x};
-        carried_slip[f] = T(bounded(T(Hk * dot2(slip, e) / dot2(e, e))) / Hk) * e;
-      } else
-        free_velocity[f] = vf;
-    }
-    for (std::size_t f = 0; f < nf; ++f) {
-      bool touching = false;
-      for (const Contact<T>& c : cs.contacts) touching |= c.kind == ContactKind::kFinger && c.other == int(f);
-      if (!touching && !commands[f].force) free_velocity[f] = commands[f].value;
-    }
-
-    // The applied twist: turning, about a rolling obstacle contact's point (exactly the instantaneous centre: the
-    // body's velocity is zero there) or else the instantaneous centre (bounded), by the rotation that brings the
-    // pose's tan(theta / 2) after a full step, U_old (+) omega Hk / 2 = (U_old + u) / (1 - U_old u), bounded.
-    r.applied_omega = ph.omega;
-    r.applied_v = ph.v;
-    if (sign(ph.omega) != 0) {
-      Vec2<T> centre{-ph.v.y / ph.omega, ph.v.x / ph.omega};
-      bool pivot = false;
-      for (std::size_t i = 0; i < cs.contacts.size() && !pivot; ++i)
-        if (cs.contacts[i].kind != ContactKind::kFinger && r.contacts[i].mode == 'r') {
-          centre = cs.contacts[i].point;
-          pivot = true;
-        }
-      if (!pivot) centre = {bounded(centre.x), bounded(centre.y)};
-      const T u = ph.omega * Hk / T(2);
-      if constexpr (exact_path) {
-        if (sign(T(T(1) + pose.c)) != 0 && sign(T(T(1) - pose.s / (T(1) + pose.c) * u)) != 0) {
-          const T U_old = pose.s / (T(1) + pose.c);
-          const T U_new = bounded(T((U_old + u) / (T(1) - U_old * u)));
-          r.applied_omega = T(2) * ((U_new - U_old) / (T(1) + U_old * U_new)) / Hk;
-        }
-      }
-      r.applied_v = r.applied_omega * Vec2<T>{centre.y, -centre.x};  // omega J (0 - centre)
-    }
-    const auto closing = first_closing(g, pose, tips, r.applied_v, r.applied_omega, free_velocity, Hk);
-    r.h = closing ? closing->tau : Hk;
-    if (closing) {
-      r.cut_by = closing->name;
-      r.cut_exact = closing->exact;
-    }
-    for (const Contact<T>& c : cs.contacts) {
-      if (c.kind != ContactKind::kFinger || !carried_slip[static_cast<std::size_t>(c.other)]) continue;
-      if (const auto end = slide_to_vertex(g, pose, c, *carried_slip[static_cast<std::size_t>(c.other)]);
-          end && end->first < r.h) {
-        r.h = end->first;
-        r.cut_by =
-            g.finger_names[static_cast<std::size_t>(c.other)] + " reaches body vertex " + std::to_string(end->second);
-        r.cut_exact = true;
-      }
-    }
     const Pose<T> step = geometry::twist_step(r.applied_v, r.applied_omega, r.h);
     pose = compose(step, pose);
-    for (std::size_t f = 0; f < nf; ++f) {
-      if (carried_slip[f])
-        tips[f] = step.apply(tips[f]) + step.rotate(r.h * *carried_slip[f]);
-      else if (free_velocity[f])
-        tips[f] = tips[f] + r.h * *free_velocity[f];
+    for (std::size_t f = 0; f < tips.size(); ++f) {
+      if (fm.carried_slip[f])
+        tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);
+      else if (fm.free_velocity[f])
+        tips[f] = tips[f] + r.h * *fm.free_velocity[f];
     }
     t = t + r.h;
     r.pose_after = pose;
     r.tips_after = tips;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+    r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
     out.steps.push_back(r);
     if (const std::string o = overlap(g, pose, tips); !o.empty())
       finish(RunStatus::kOverlap, o + " after step " + std::to_string(k));
@@ -333,7 +360,7 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
   out.final_pose = pose;
   out.final_time = t;
   out.final_tips = tips;
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = std::chrono::duration<double>(clock::now() - start).count();
   return out;
 }
 
