@@ -234,6 +234,42 @@ void cut_step(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<
   }
 }
 
+/// The step's translation corrected so that every maintained obstacle contact stays exactly on its line: a turning
+/// step moves a sliding contact point along a circle, off its line by O(h^2). Rows m . delta = m . (x - step(x)),
+/// with x the contact point and m the obstacle edge's normal (a body vertex on it) or the body edge's normal turned
+/// by the step (an obstacle vertex on it); a rolling contact gives two rows (both axes: it stays exactly fixed), then
+/// the sliding ones, up to two independent rows in all; delta is their least-norm solution. Rows beyond those may
+/// stay unsatisfied (the overlap test then has the last word).
+template <class T>
+Pose<T> keep_contacts(Pose<T> step, const ContactSet<T>& cs, const StepRecord<T>& r) {
+  if (sign(r.applied_omega) == 0) return step;  // a translation keeps every line
+  std::vector<std::pair<Vec2<T>, T>> rows;
+  const auto add = [&](const Vec2<T>& m, const Vec2<T>& x) {
+    if (rows.size() == 2 || (rows.size() == 1 && sign(cross2(rows[0].first, m)) == 0)) return;
+    rows.push_back({m, dot2(m, x - step.apply(x))});
+  };
+  for (int rolling = 1; rolling >= 0; --rolling)
+    for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
+      const Contact<T>& c = cs.contacts[i];
+      const char mode = r.contacts[i].mode;
+      if (c.kind == ContactKind::kFinger || mode == 's' || (mode == 'r') != bool(rolling)) continue;
+      const Vec2<T> m = c.kind == ContactKind::kBodyVertex ? c.normal : step.rotate(c.normal);
+      add(m, c.point);
+      if (rolling) add(perp2(m), c.point);
+    }
+  Vec2<T> delta{T(0), T(0)};
+  if (rows.size() == 1) {
+    delta = T(rows[0].second / dot2(rows[0].first, rows[0].first)) * rows[0].first;
+  } else if (rows.size() == 2) {
+    const Vec2<T>&m1 = rows[0].first, &m2 = rows[1].first;
+    const T det = cross2(m1, m2);  // [m1; m2] delta = (r1, r2) by Cramer's rule
+    delta = {T(rows[0].second * m2.y - m1.y * rows[1].second) / det,
+             T(m1.x * rows[1].second - rows[0].second * m2.x) / det};
+  }
+  step.t = step.t + delta;
+  return step;
+}
+
 }  // namespace
 
 const char* run_status_name(RunStatus s) {
@@ -337,7 +373,7 @@ Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
     apply_twist(cs, ph, pose, sched.H, r);
     cut_step(g, pose, tips, cs, fm, sched.H, r);
 
-    const Pose<T> step = geometry::twist_step(r.applied_v, r.applied_omega, r.h);
+    const Pose<T> step = keep_contacts(geometry::twist_step(r.applied_v, r.applied_omega, r.h), cs, r);
     pose = compose(step, pose);
     for (std::size_t f = 0; f < tips.size(); ++f) {
       if (fm.carried_slip[f])

@@ -423,3 +423,57 @@ TEST(Budget, TheTimeLimitEndsTheRunUnknownWithTheStepsDone) {
 
 }  // namespace
 }  // namespace contactcert::solvers::motion
+
+namespace contactcert::solvers::motion {
+namespace {
+
+TEST(FirstContact, AnObstacleVertexMeetsTheSlidingFace) {
+  // A frictionless wedge whose tip (3, 1) points at the box's front face (x = 2 + t): it closes at t = 1 (a cut
+  // step of 1/10). Pushed low and held high, the box then turns up (omega = 2 about (1, 1)): its rear corner slides
+  // on the floor, the wedge tip slides down its face (both kept exactly on their lines), and its front corner
+  // rises to the wedge's lower edge at an irrational time, where the run stops just before.
+  const MotionScene scene =
+      pushed_box("1/2", R"(, {"name": "wedge", "vertices": [[3, 1], [5, 0], [5, 2]], "mu": 0})", "3/10", 10);
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(run.steps.size(), 5u) << run.reason;
+  EXPECT_EQ(run.steps[3].h, Q(1, 10));
+  EXPECT_EQ(run.steps[3].cut_by, "wedge vertex 0 on body edge 1");
+  EXPECT_EQ(run.steps[4].made, std::vector<std::string>{"wedge vertex 0 on body edge 1"});
+  EXPECT_EQ(run.steps[4].omega, Q(2));
+  EXPECT_EQ(run.steps[4].v, (Vec2<Q>{Q(2), Q(-2)}));
+  EXPECT_EQ(run.steps[4].cut_by, "body vertex 1 on wedge edge 0");
+  EXPECT_EQ(run.status, RunStatus::kIrrationalContactTime);
+  const Pose<Q>& p = run.steps[4].pose_after;
+  const Vec2<Q> a = p.apply(Vec2<Q>{Q(2), Q(0)}), b = p.apply(Vec2<Q>{Q(2), Q(2)});
+  EXPECT_EQ(cross2(Vec2<Q>{b.x - a.x, b.y - a.y}, Vec2<Q>{Q(3) - a.x, Q(1) - a.y}), Q(0));  // tip on the face
+  EXPECT_EQ(p.apply(Vec2<Q>{Q(0), Q(0)}).y, Q(0));                                          // rear corner on the floor
+  expect_certified_and_apart(scene, run);
+}
+
+TEST(FirstContact, AFreeFingerMeetsTheBody) {
+  // A second finger at (3, 1) moving left at 1 meets the box's front face (moving right at 1) at t = 1/2 (a cut
+  // step of 1/10). Squeezed, the box turns up (omega = 4) and the stopper slides down its face to the body's
+  // corner (2, 0) after 1/8, where the contact normal is not determined: the run stops there.
+  const std::string text = R"({"kind": "quasistatic_scene",
+    "workpiece": {"shape": {"type": "polygon", "vertices": [[0, 0], [2, 0], [2, 2], [0, 2]]}, "com": [1, 1]},
+    "gravity": [0, -1], "obstacles": [)" +
+                           std::string(kFloor) + R"(],
+    "fingers": [{"name": "pusher", "tip": [0, "1/2"], "mu": 0, "schedule": [{"velocity": [1, 0]}]},
+                {"name": "stopper", "tip": [3, 1], "mu": 0, "schedule": [{"velocity": [-1, 0]}]}],
+    "motion": {"dt": "1/5", "steps": 10}})";
+  const MotionScene scene = read_motion_scene(exact::JsonInput::parse(text, "two_fingers.json"));
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(run.steps.size(), 4u) << run.reason;
+  EXPECT_EQ(run.steps[2].h, Q(1, 10));
+  EXPECT_EQ(run.steps[2].cut_by, "finger stopper on body edge 1");
+  EXPECT_EQ(run.steps[3].made, std::vector<std::string>{"finger stopper on body edge 1"});
+  EXPECT_EQ(run.steps[3].omega, Q(4));
+  EXPECT_EQ(run.steps[3].h, Q(1, 8));
+  EXPECT_EQ(run.steps[3].cut_by, "finger stopper reaches body vertex 1");
+  EXPECT_EQ(run.steps[3].tips_after[1], run.steps[3].pose_after.apply(Vec2<Q>{Q(2), Q(0)}));
+  EXPECT_EQ(run.status, RunStatus::kUnsupportedContact);
+  expect_certified_and_apart(scene, run);
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::motion
