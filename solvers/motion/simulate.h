@@ -94,7 +94,8 @@ struct Trajectory {
   double seconds = 0;
 };
 
-/// Runs the scene for N steps (or until the run ends). T = Q for the exact and verified paths, double for float.
+/// Runs the scene for N steps (or until the run ends). T = Q: the exact or verified path (opts.arith kExact or
+/// kVerified; kFloat is taken as kVerified); T = double: the float path, whatever opts.arith says.
 template <class T>
 Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts);
 
