@@ -1,0 +1,219 @@
+#include "solvers/motion/contacts.h"
+
+#include "solvers/motion/first_root.h"
+
+namespace contactcert::solvers::motion {
+namespace {
+
+using exact::sign;
+
+template <class T>
+T from_q(const Q& q) {
+  if constexpr (std::is_same_v<T, Q>)
+    return q;
+  else
+    return q.get_d();
+}
+
+template <class T>
+Vec2<T> from_point(const Point2& p) {
+  return {from_q<T>(p.x), from_q<T>(p.y)};
+}
+
+template <class T>
+std::vector<Vec2<T>> world_body(const SceneGeometry<T>& g, const Pose<T>& pose) {
+  std::vector<Vec2<T>> out;
+  for (const Vec2<T>& p : g.body) out.push_back(pose.apply(p));
+  return out;
+}
+
+/// Where p lies against the segment a -> a + e: 1 strictly inside it, 0 at an end, -1 off it (or off its line).
+template <class T>
+int on_segment(const Vec2<T>& p, const Vec2<T>& a, const Vec2<T>& e) {
+  if (sign(cross2(e, p - a)) != 0) return -1;
+  const T s = dot2(p - a, e);
+  const int lo = sign(s), hi = sign(T(dot2(e, e) - s));
+  if (lo < 0 || hi < 0) return -1;
+  return lo > 0 && hi > 0 ? 1 : 0;
+}
+
+/// True if no vertex of `other` is strictly on the inner (left) side of x's edge i.
+template <class T>
+bool separates(const std::vector<Vec2<T>>& x, std::size_t i, const std::vector<Vec2<T>>& other) {
+  const Vec2<T>& a = x[i];
+  const Vec2<T> e = x[(i + 1) % x.size()] - a;
+  for (const Vec2<T>& q : other)
+    if (sign(cross2(e, q - a)) > 0) return false;
+  return true;
+}
+
+template <class T>
+bool convex_overlap(const std::vector<Vec2<T>>& x, const std::vector<Vec2<T>>& y) {
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (separates(x, i, y)) return false;
+  for (std::size_t i = 0; i < y.size(); ++i)
+    if (separates(y, i, x)) return false;
+  return true;
+}
+
+std::string edge_name(const std::string& shape, std::size_t i) { return shape + " edge " + std::to_string(i); }
+std::string vertex_name(const std::string& shape, std::size_t i) { return shape + " vertex " + std::to_string(i); }
+
+}  // namespace
+
+template <class T>
+SceneGeometry<T> scene_geometry(const MotionScene& scene) {
+  SceneGeometry<T> g;
+  for (const Point2& p : std::get<geometry::PolygonShape>(scene.workpiece.shape).vertices)
+    g.body.push_back(from_point<T>(p));
+  g.com = from_point<T>(scene.workpiece.com);
+  g.gravity = from_point<T>(scene.gravity);
+  for (std::size_t k = 0; k < scene.obstacles.size(); ++k) {
+    const Obstacle& o = scene.obstacles[k];
+    std::vector<Vec2<T>> v;
+    for (const Point2& p : o.vertices) v.push_back(from_point<T>(p));
+    g.obstacles.push_back(v);
+    g.obstacle_mu.push_back(from_q<T>(o.mu));
+    g.obstacle_names.push_back(o.name.empty() ? "obstacle " + std::to_string(k) : o.name);
+  }
+  for (std::size_t k = 0; k < scene.fingers.size(); ++k) {
+    g.finger_mu.push_back(from_q<T>(scene.fingers[k].mu));
+    g.finger_names.push_back("finger " + (scene.fingers[k].name.empty() ? std::to_string(k) : scene.fingers[k].name));
+  }
+  return g;
+}
+
+template <class T>
+ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<Vec2<T>>& tips) {
+  ContactSet<T> out;
+  const std::vector<Vec2<T>> body = world_body(g, pose);
+  const std::size_t nb = body.size();
+  for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
+    const std::vector<Vec2<T>>& ob = g.obstacles[o];
+    for (std::size_t i = 0; i < nb; ++i)
+      for (std::size_t k = 0; k < ob.size(); ++k) {
+        const Vec2<T> e = ob[(k + 1) % ob.size()] - ob[k];
+        const int where = on_segment(body[i], ob[k], e);
+        if (where == 0 && out.unsupported.empty())
+          out.unsupported =
+              "body vertex " + std::to_string(i) + " on " + g.obstacle_names[o] + " vertex (normal not determined)";
+        if (where != 1) continue;
+        // The obstacle edge's outward normal (e turned by -90 degrees) points into the body.
+        out.contacts.push_back({ContactKind::kBodyVertex, int(i), int(o), int(k), body[i], Vec2<T>{e.y, -e.x},
+                                g.obstacle_mu[o], vertex_name("body", i) + " on " + edge_name(g.obstacle_names[o], k)});
+      }
+    for (std::size_t k = 0; k < ob.size(); ++k)
+      for (std::size_t i = 0; i < nb; ++i) {
+        const Vec2<T> e = body[(i + 1) % nb] - body[i];
+        if (on_segment(ob[k], body[i], e) != 1) continue;
+        out.contacts.push_back({ContactKind::kObstacleVertex, int(i), int(o), int(k), ob[k], perp2(e), g.obstacle_mu[o],
+                                vertex_name(g.obstacle_names[o], k) + " on " + edge_name("body", i)});
+      }
+  }
+  for (std::size_t f = 0; f < tips.size(); ++f)
+    for (std::size_t i = 0; i < nb; ++i) {
+      const Vec2<T> e = body[(i + 1) % nb] - body[i];
+      const int where = on_segment(tips[f], body[i], e);
+      if (where == 0 && out.unsupported.empty())
+        out.unsupported = g.finger_names[f] + " on a body vertex (normal not determined)";
+      if (where != 1) continue;
+      out.contacts.push_back({ContactKind::kFinger, int(i), int(f), -1, tips[f], perp2(e), g.finger_mu[f],
+                              g.finger_names[f] + " on " + edge_name("body", i)});
+    }
+  return out;
+}
+
+template <class T>
+std::string overlap(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<Vec2<T>>& tips) {
+  const std::vector<Vec2<T>> body = world_body(g, pose);
+  for (std::size_t o = 0; o < g.obstacles.size(); ++o)
+    if (convex_overlap(body, g.obstacles[o])) return "the body overlaps " + g.obstacle_names[o];
+  for (std::size_t f = 0; f < tips.size(); ++f) {
+    bool inside = true;
+    for (std::size_t i = 0; i < body.size() && inside; ++i)
+      inside = sign(cross2(body[(i + 1) % body.size()] - body[i], tips[f] - body[i])) > 0;
+    if (inside) return g.finger_names[f] + " is inside the body";
+  }
+  return "";
+}
+
+template <class T>
+std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const Pose<T>& pose,
+                                               const std::vector<Vec2<T>>& tips, const Vec2<T>& v, const T& omega,
+                                               const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H) {
+  const std::vector<Vec2<T>> body = world_body(g, pose);
+  const std::size_t nb = body.size();
+  const bool turning = sign(omega) != 0;
+  const T k = omega / T(2);  // u = k tau
+  const Vec2<T> c = turning ? Vec2<T>{-v.y / omega, v.x / omega} : Vec2<T>{T(0), T(0)};
+  std::optional<ClosingContact<T>> best;
+  T limit = H;
+  // g: the gap (times 1 + u^2) of point p, moving with velocity pv in the world (unless it is the body's own
+  // vertex, body_point), against the segment a -> a + e (a body edge when !body_point), in powers of tau.
+  const auto consider = [&](const Vec2<T>& p, const Vec2<T>& pv, bool body_point, const Vec2<T>& a, const Vec2<T>& e,
+                            const std::string& name) {
+    std::vector<T> poly;
+    if (!turning) {
+      const Vec2<T> rel = body_point ? v : pv - v;
+      poly = {cross2(p - a, e), cross2(rel, e)};
+    } else {
+      const Vec2<T> w = p - c;
+      const T K = cross2(c - a, e), C = cross2(w, e), D = dot2(w, e);
+      if (body_point) {
+        poly = {K + C, T(-2) * D * k, (K - C) * k * k};
+      } else {
+        // The point relative to the body: c + R(-u)(p + tau pv - c); eq. for a fixed point when pv = 0.
+        const T Cv = cross2(pv, e), Dv = dot2(pv, e);
+        poly = {K + C, Cv + T(2) * D * k, (K - C) * k * k + T(2) * Dv * k, -Cv * k * k};
+      }
+    }
+    if (sign(poly[0]) <= 0) return;  // touching (or beyond the edge's line) at the start
+    const auto accept = [&](const T& tau) {
+      const Pose<T> m = geometry::twist_step(v, omega, tau);
+      Vec2<T> q = body_point ? m.apply(p) : p + tau * pv, a2 = a, e2 = e;
+      if (!body_point) {
+        a2 = m.apply(a);
+        e2 = m.rotate(e);
+      }
+      const T s = dot2(q - a2, e2);
+      return sign(s) >= 0 && sign(T(dot2(e2, e2) - s)) >= 0;
+    };
+    const auto root = first_gap_root<T>(poly, limit, accept);
+    if (!root) return;
+    if (best && !(root->tau < best->tau)) return;
+    best = ClosingContact<T>{root->tau, root->exact, name};
+    limit = root->tau;
+  };
+  const Vec2<T> zero{T(0), T(0)};
+  for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
+    const std::vector<Vec2<T>>& ob = g.obstacles[o];
+    for (std::size_t i = 0; i < nb; ++i)
+      for (std::size_t j = 0; j < ob.size(); ++j)
+        consider(body[i], zero, true, ob[j], ob[(j + 1) % ob.size()] - ob[j],
+                 vertex_name("body", i) + " on " + edge_name(g.obstacle_names[o], j));
+    for (std::size_t j = 0; j < ob.size(); ++j)
+      for (std::size_t i = 0; i < nb; ++i)
+        consider(ob[j], zero, false, body[i], body[(i + 1) % nb] - body[i],
+                 vertex_name(g.obstacle_names[o], j) + " on " + edge_name("body", i));
+  }
+  for (std::size_t f = 0; f < tips.size(); ++f) {
+    if (!free_velocity[f]) continue;
+    for (std::size_t i = 0; i < nb; ++i)
+      consider(tips[f], *free_velocity[f], false, body[i], body[(i + 1) % nb] - body[i],
+               g.finger_names[f] + " on " + edge_name("body", i));
+  }
+  return best;
+}
+
+#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                         \
+  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                                  \
+  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&);    \
+  template std::string overlap<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&);            \
+  template std::optional<ClosingContact<T>> first_closing<T>(const SceneGeometry<T>&, const Pose<T>&,               \
+                                                             const std::vector<Vec2<T>>&, const Vec2<T>&, const T&, \
+                                                             const std::vector<std::optional<Vec2<T>>>&, const T&);
+CONTACTCERT_MOTION_CONTACTS_INST(Q)
+CONTACTCERT_MOTION_CONTACTS_INST(double)
+#undef CONTACTCERT_MOTION_CONTACTS_INST
+
+}  // namespace contactcert::solvers::motion

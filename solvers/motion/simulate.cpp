@@ -1,0 +1,406 @@
+#include "solvers/motion/simulate.h"
+
+#include <Eigen/QR>
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "exact/input_error.h"
+#include "solvers/motion/first_root.h"
+#include "solvers/motion/step_problem.h"
+
+namespace contactcert::solvers::motion {
+namespace {
+
+using Index = Eigen::Index;
+using exact::sign;
+
+/// The solution's physics in T: per contact v_n, v_t, c_n, c_t; q_dot; every joint velocity.
+template <class T>
+struct StepPhysics {
+  std::vector<T> vn, vt, cn, ct, theta;
+  Vec2<T> v;
+  T omega;
+};
+
+StepPhysics<Q> physics(const ucp::UcpProblem&, const ucp::UcpReport& r, const Q*) {
+  const ucp::PhysicalSolution& s = *r.physical;
+  StepPhysics<Q> out;
+  for (Index i = 0; i < s.v_n.size(); ++i) {
+    out.vn.push_back(s.v_n(i));
+    out.vt.push_back(s.v_t(i));
+    out.cn.push_back(s.c_n(i));
+    out.ct.push_back(s.c_t(i));
+  }
+  for (Index j = 0; j < s.theta_dot.size(); ++j) out.theta.push_back(s.theta_dot(j));
+  out.v = {s.q_dot(0), s.q_dot(1)};
+  out.omega = s.q_dot(2);
+  return out;
+}
+
+/// The float path's physics from its pair: u = [q_dot; -theta_abar] solves P u = v + J_alpha theta_alpha (least
+/// squares in doubles), c_t = s_t^+ - mu c_n.
+StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport& r, const double*) {
+  const ucp::QuasistaticProblem& p = *problem.quasistatic;
+  const Index nc = p.nc;
+  StepPhysics<double> out;
+  exact::Vec<double> rhs = exact::to_double(p.J_alpha_theta_alpha());
+  for (Index i = 0; i < nc; ++i) {
+    out.vn.push_back(r.x_approx(i));
+    out.vt.push_back(r.x_approx(nc + i) - r.x_approx(2 * nc + i));
+    out.cn.push_back(r.y_approx(i));
+    out.ct.push_back(r.y_approx(nc + i) - p.mu(i).get_d() * r.y_approx(i));
+    rhs(i) += out.vn.back();
+    rhs(nc + i) += out.vt.back();
+  }
+  const exact::Vec<double> u = exact::to_double(p.P).colPivHouseholderQr().solve(rhs);
+  out.theta.assign(static_cast<std::size_t>(p.ntheta), 0.0);
+  for (int j : p.alpha) out.theta[static_cast<std::size_t>(j)] = p.theta_dot(j).get_d();
+  for (std::size_t k = 0; k < p.abar.size(); ++k) out.theta[static_cast<std::size_t>(p.abar[k])] = -u(3 + Index(k));
+  out.v = {u(0), u(1)};
+  out.omega = u(2);
+  return out;
+}
+
+/// x rounded to the nearest multiple of 2^-40 (x itself for double): the grid of the applied twist, on which the
+/// pose's numbers keep a bounded size (mpq_class keeps lowest terms, so a pose reached by an exact motion has the
+/// size of its own value, not of the path to it).
+Q on_grid(const Q& x) {
+  const Q scaled = x * Q(exact::Z(1) << 40) + Q(1, 2);
+  exact::Z n;
+  mpz_fdiv_q(n.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
+  return Q(n, exact::Z(1) << 40);
+}
+
+/// x itself while its numerator and denominator take at most 128 bits together, else on_grid(x): exact where that
+/// is cheap (the derived contact times of simple scenes stay exact), bounded where it is not.
+Q bounded(const Q& x) {
+  const std::size_t bits = mpz_sizeinbase(x.get_num_mpz_t(), 2) + mpz_sizeinbase(x.get_den_mpz_t(), 2);
+  return bits <= 128 ? x : on_grid(x);
+}
+double bounded(double x) { return x; }
+
+template <class T>
+char mode_letter(const T& vn, const T& vt) {
+  if (sign(vn) > 0) return 's';
+  const int s = sign(vt);
+  return s == 0 ? 'r' : (s > 0 ? '+' : '-');
+}
+
+std::vector<std::string> minus(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  const std::set<std::string> bs(b.begin(), b.end());
+  std::vector<std::string> out;
+  for (const std::string& x : a)
+    if (!bs.count(x)) out.push_back(x);
+  return out;
+}
+
+template <class T>
+T from_q(const Q& q) {
+  if constexpr (std::is_same_v<T, Q>)
+    return q;
+  else
+    return q.get_d();
+}
+
+/// A finger carried along body edge c.body with relative velocity `slip` (along the edge): the time it reaches the
+/// edge's end and which body vertex that is, if it ever does (linear in the body's frame).
+template <class T>
+std::optional<std::pair<T, int>> slide_to_vertex(const SceneGeometry<T>& g, const Pose<T>& pose, const Contact<T>& c,
+                                                 const Vec2<T>& slip) {
+  const auto nb = static_cast<int>(g.body.size());
+  const Vec2<T> a = pose.apply(g.body[static_cast<std::size_t>(c.body)]);
+  const Vec2<T> e = pose.apply(g.body[static_cast<std::size_t>((c.body + 1) % nb)]) - a;
+  const T s0 = dot2(c.point - a, e), rate = dot2(slip, e);
+  if (sign(rate) == 0) return std::nullopt;
+  if (sign(rate) > 0) return std::pair<T, int>{T(dot2(e, e) - s0) / rate, (c.body + 1) % nb};
+  return std::pair<T, int>{-s0 / rate, c.body};
+}
+
+/// The fingers' commands at time t and the step's length: H, or up to the next schedule change (then `cut_by`).
+template <class T>
+struct StepSchedule {
+  std::vector<FingerCommand<T>> commands;
+  T H;
+  std::string cut_by;
+};
+
+template <class T>
+StepSchedule<T> step_schedule(const MotionScene& scene, const SceneGeometry<T>& g, const T& t, const T& H) {
+  StepSchedule<T> out{std::vector<FingerCommand<T>>(scene.fingers.size()), H, ""};
+  Q tq;
+  if constexpr (std::is_same_v<T, Q>)
+    tq = t;
+  else
+    tq = Q(t);
+  for (std::size_t f = 0; f < scene.fingers.size(); ++f) {
+    const ScheduleAt at = schedule_at(scene.fingers[f], tq);
+    out.commands[f] = {at.segment->force, {from_q<T>(at.segment->value.x), from_q<T>(at.segment->value.y)}};
+    if (at.ends && from_q<T>(*at.ends - tq) < out.H) {
+      out.H = from_q<T>(*at.ends - tq);
+      out.cut_by = "schedule change of " + g.finger_names[f];
+    }
+  }
+  return out;
+}
+
+/// How each finger moves over the step: carried along its edge with a slide (in contact, v_n = 0), or by a
+/// velocity (free, or separating), or not at all (a free force-controlled finger).
+template <class T>
+struct FingerMotion {
+  std::vector<std::optional<Vec2<T>>> free_velocity, carried_slip;
+};
+
+/// Records each contact's mode and world force in r, and says how each finger moves. A carried finger's slide along
+/// its edge e = J^T n over the step is a multiple of e (bounded), so the tip stays exactly on the edge.
+template <class T>
+FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& ph, const StepSchedule<T>& sched,
+                                StepRecord<T>& r) {
+  const std::size_t nf = sched.commands.size();
+  FingerMotion<T> m{std::vector<std::optional<Vec2<T>>>(nf), std::vector<std::optional<Vec2<T>>>(nf)};
+  std::vector<bool> touching(nf, false);
+  std::size_t joint = 0;
+  for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
+    const Contact<T>& c = cs.contacts[i];
+    const Vec2<T> tvec = perp2(c.normal);
+    r.contacts.push_back(
+        {c.name, mode_letter(ph.vn[i], ph.vt[i]), c.point, c.normal,
+         Vec2<T>{ph.cn[i] * c.normal.x + ph.ct[i] * tvec.x, ph.cn[i] * c.normal.y + ph.ct[i] * tvec.y}});
+    if (c.kind != ContactKind::kFinger) continue;
+    const auto f = static_cast<std::size_t>(c.other);
+    touching[f] = true;
+    const Vec2<T> vf{ph.theta[joint], ph.theta[joint + 1]};
+    joint += 2;
+    if (sign(ph.vn[i]) != 0) {
+      m.free_velocity[f] = vf;
+      continue;
+    }
+    const Vec2<T> slip = vf - (ph.v + ph.omega * perp2(c.point));
+    const Vec2<T> e{c.normal.y, -c.normal.x};
+    m.carried_slip[f] = T(bounded(T(sched.H * dot2(slip, e) / dot2(e, e))) / sched.H) * e;
+  }
+  for (std::size_t f = 0; f < nf; ++f)
+    if (!touching[f] && !sched.commands[f].force) m.free_velocity[f] = sched.commands[f].value;
+  return m;
+}
+
+/// The applied twist (StepRecord::applied_v, applied_omega): turning, about a rolling obstacle contact's point
+/// (exactly the instantaneous centre: the body's velocity is zero there) or else the instantaneous centre (bounded),
+/// by the rotation that brings the pose's tan(theta / 2) after a full step, (U + u) / (1 - U u) with u = omega H / 2,
+/// to a bounded value (exact paths).
+template <class T>
+void apply_twist(const ContactSet<T>& cs, const StepPhysics<T>& ph, const Pose<T>& pose, const T& H, StepRecord<T>& r) {
+  r.applied_omega = ph.omega;
+  r.applied_v = ph.v;
+  if (sign(ph.omega) == 0) return;
+  Vec2<T> centre{-ph.v.y / ph.omega, ph.v.x / ph.omega};
+  bool pivot = false;
+  for (std::size_t i = 0; i < cs.contacts.size() && !pivot; ++i)
+    if (cs.contacts[i].kind != ContactKind::kFinger && r.contacts[i].mode == 'r') {
+      centre = cs.contacts[i].point;
+      pivot = true;
+    }
+  if (!pivot) centre = {bounded(centre.x), bounded(centre.y)};
+  if constexpr (std::is_same_v<T, Q>) {
+    const Q u = ph.omega * H / 2;
+    if (sgn(Q(1 + pose.c)) != 0 && sgn(Q(1 - pose.s / (1 + pose.c) * u)) != 0) {
+      const Q U_old = pose.s / (1 + pose.c);
+      const Q U_new = bounded(Q((U_old + u) / (1 - U_old * u)));
+      r.applied_omega = 2 * ((U_new - U_old) / (1 + U_old * U_new)) / H;
+    }
+  }
+  r.applied_v = r.applied_omega * Vec2<T>{centre.y, -centre.x};  // omega J (0 - centre)
+}
+
+/// Cuts the step (r.h, cut_by, cut_exact) at the first contact that closes, or where a carried finger reaches the
+/// end of its edge, if before H.
+template <class T>
+void cut_step(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<Vec2<T>>& tips, const ContactSet<T>& cs,
+              const FingerMotion<T>& m, const T& H, StepRecord<T>& r) {
+  r.h = H;
+  if (const auto closing = first_closing(g, pose, tips, r.applied_v, r.applied_omega, m.free_velocity, H)) {
+    r.h = closing->tau;
+    r.cut_by = closing->name;
+    r.cut_exact = closing->exact;
+  }
+  for (const Contact<T>& c : cs.contacts) {
+    const auto f = static_cast<std::size_t>(c.other);
+    if (c.kind != ContactKind::kFinger || !m.carried_slip[f]) continue;
+    if (const auto end = slide_to_vertex(g, pose, c, *m.carried_slip[f]); end && end->first < r.h) {
+      r.h = end->first;
+      r.cut_by = g.finger_names[f] + " reaches body vertex " + std::to_string(end->second);
+      r.cut_exact = true;
+    }
+  }
+}
+
+/// The step's translation corrected so that every maintained obstacle contact stays exactly on its line: a turning
+/// step moves a sliding contact point along a circle, off its line by O(h^2). Rows m . delta = m . (x - step(x)),
+/// with x the contact point and m the obstacle edge's normal (a body vertex on it) or the body edge's normal turned
+/// by the step (an obstacle vertex on it); a rolling contact gives two rows (both axes: it stays exactly fixed), then
+/// the sliding ones, up to two independent rows in all; delta is their least-norm solution. Rows beyond those may
+/// stay unsatisfied (the overlap test then has the last word).
+template <class T>
+Pose<T> keep_contacts(Pose<T> step, const ContactSet<T>& cs, const StepRecord<T>& r) {
+  if (sign(r.applied_omega) == 0) return step;  // a translation keeps every line
+  std::vector<std::pair<Vec2<T>, T>> rows;
+  const auto add = [&](const Vec2<T>& m, const Vec2<T>& x) {
+    if (rows.size() == 2 || (rows.size() == 1 && sign(cross2(rows[0].first, m)) == 0)) return;
+    rows.push_back({m, dot2(m, x - step.apply(x))});
+  };
+  for (int rolling = 1; rolling >= 0; --rolling)
+    for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
+      const Contact<T>& c = cs.contacts[i];
+      const char mode = r.contacts[i].mode;
+      if (c.kind == ContactKind::kFinger || mode == 's' || (mode == 'r') != bool(rolling)) continue;
+      const Vec2<T> m = c.kind == ContactKind::kBodyVertex ? c.normal : step.rotate(c.normal);
+      add(m, c.point);
+      if (rolling) add(perp2(m), c.point);
+    }
+  Vec2<T> delta{T(0), T(0)};
+  if (rows.size() == 1) {
+    delta = T(rows[0].second / dot2(rows[0].first, rows[0].first)) * rows[0].first;
+  } else if (rows.size() == 2) {
+    const Vec2<T>&m1 = rows[0].first, &m2 = rows[1].first;
+    const T det = cross2(m1, m2);  // [m1; m2] delta = (r1, r2) by Cramer's rule
+    delta = {T(rows[0].second * m2.y - m1.y * rows[1].second) / det,
+             T(m1.x * rows[1].second - rows[0].second * m2.x) / det};
+  }
+  step.t = step.t + delta;
+  return step;
+}
+
+}  // namespace
+
+const char* run_status_name(RunStatus s) {
+  switch (s) {
+    case RunStatus::kCompleted:
+      return "completed";
+    case RunStatus::kJammed:
+      return "jammed";
+    case RunStatus::kNoContact:
+      return "no_contact";
+    case RunStatus::kUnsupportedContact:
+      return "unsupported_contact";
+    case RunStatus::kOverlap:
+      return "overlap";
+    case RunStatus::kIrrationalContactTime:
+      return "irrational_contact_time";
+    case RunStatus::kUnknown:
+      return "unknown";
+  }
+  return "unknown";
+}
+
+template <class T>
+Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
+  constexpr bool exact_path = std::is_same_v<T, Q>;
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  const SceneGeometry<T> g = scene_geometry<T>(scene);
+  const T H = from_q<T>(opts.dt.value_or(scene.dt));
+  const long N = opts.steps.value_or(scene.steps);
+  ucp::UcpOptions uopts = opts.ucp;
+  uopts.arith =
+      exact_path ? (opts.arith == exact::Arith::kFloat ? exact::Arith::kVerified : opts.arith) : exact::Arith::kFloat;
+
+  Trajectory<T> out;
+  Pose<T> pose;
+  T t(0);
+  std::vector<Vec2<T>> tips;
+  for (const Finger& f : scene.fingers) tips.push_back({from_q<T>(f.tip.x), from_q<T>(f.tip.y)});
+  std::vector<std::string> previous;
+  const auto finish = [&](RunStatus s, std::string why) {
+    out.status = s;
+    out.reason = std::move(why);
+  };
+  if (const std::string o = overlap(g, pose, tips); !o.empty()) finish(RunStatus::kOverlap, o + " at time 0");
+  for (long k = 0; k < N && out.status == RunStatus::kCompleted; ++k) {
+    const auto step_start = clock::now();
+    if (opts.time_limit > 0) {
+      uopts.time_limit = opts.time_limit - std::chrono::duration<double>(step_start - start).count();
+      if (uopts.time_limit <= 0) {
+        finish(RunStatus::kUnknown, "time limit after " + std::to_string(k) + " steps");
+        break;
+      }
+    }
+    StepRecord<T> r;
+    r.index = k;
+    r.time = t;
+    r.pose = r.pose_after = pose;
+    r.tips_after = tips;
+    const ContactSet<T> cs = find_contacts(g, pose, tips);
+    if (!cs.unsupported.empty() || cs.contacts.empty()) {
+      const bool none = cs.unsupported.empty();
+      finish(none ? RunStatus::kNoContact : RunStatus::kUnsupportedContact,
+             none ? "no contact holds the body (a quasistatic body needs one)" : cs.unsupported);
+      break;
+    }
+    std::vector<std::string> names;
+    for (const Contact<T>& c : cs.contacts) names.push_back(c.name);
+    r.made = minus(names, previous);
+    r.broken = minus(previous, names);
+    previous = names;
+    const StepSchedule<T> sched = step_schedule(scene, g, t, H);
+    r.cut_by = sched.cut_by;
+
+    ucp::UcpProblem problem;
+    try {
+      problem = step_problem(step_scene(g, pose, cs.contacts, sched.commands), exact_path, "step " + std::to_string(k));
+    } catch (const exact::InputError& e) {
+      finish(RunStatus::kUnsupportedContact, std::string("the step's problem was refused: ") + e.what());
+      break;
+    }
+    const ucp::UcpReport rep = ucp::solve_ucp(problem, uopts);
+    r.verdict = rep.status;
+    r.reason = rep.reason;
+    if (exact_path && opts.certificates) r.certificate = ucp::certificate_text(problem, rep);
+    if (rep.status != ucp::UcpStatus::kSolvable) {
+      for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal, {T(0), T(0)}});
+      r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
+      out.steps.push_back(r);
+      const bool jammed = rep.status == ucp::UcpStatus::kJammed;
+      finish(jammed ? RunStatus::kJammed : RunStatus::kUnknown,
+             (jammed ? "jammed at step " : "step ") + std::to_string(k) + ": " + rep.reason);
+      break;
+    }
+    const StepPhysics<T> ph = physics(problem, rep, static_cast<const T*>(nullptr));
+    r.v = ph.v;
+    r.omega = ph.omega;
+    if (exact_path && opts.uniqueness)
+      r.uniqueness = motion_uniqueness(problem, uopts.arith, opts.max_uniqueness_modes);
+    const FingerMotion<T> fm = record_contacts(cs, ph, sched, r);
+    apply_twist(cs, ph, pose, sched.H, r);
+    cut_step(g, pose, tips, cs, fm, sched.H, r);
+
+    const Pose<T> step = keep_contacts(geometry::twist_step(r.applied_v, r.applied_omega, r.h), cs, r);
+    pose = compose(step, pose);
+    for (std::size_t f = 0; f < tips.size(); ++f) {
+      if (fm.carried_slip[f])
+        tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);
+      else if (fm.free_velocity[f])
+        tips[f] = tips[f] + r.h * *fm.free_velocity[f];
+    }
+    t = t + r.h;
+    r.pose_after = pose;
+    r.tips_after = tips;
+    r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
+    out.steps.push_back(r);
+    if (const std::string o = overlap(g, pose, tips); !o.empty())
+      finish(RunStatus::kOverlap, o + " after step " + std::to_string(k));
+    else if (!r.cut_exact)
+      finish(RunStatus::kIrrationalContactTime,
+             r.cut_by + " closes at an irrational time: the run stops just before it, the gap > 0 (step " +
+                 std::to_string(k) + ")");
+  }
+  out.final_pose = pose;
+  out.final_time = t;
+  out.final_tips = tips;
+  out.seconds = std::chrono::duration<double>(clock::now() - start).count();
+  return out;
+}
+
+template Trajectory<Q> simulate<Q>(const MotionScene&, const SimulateOptions&);
+template Trajectory<double> simulate<double>(const MotionScene&, const SimulateOptions&);
+
+}  // namespace contactcert::solvers::motion

@@ -1,0 +1,105 @@
+// Quasistatic time-stepping of one movable body (docs/motion.md): at each step the contacts of the current pose
+// are found exactly, the quasistatic problem of those contacts is solved by the complete method (solvers/ucp), and
+// the body moves by the exact rigid motion of the solution's twist (geometry/rigid_motion.h), cut at the first
+// contact that closes during the step. One algorithm over T: Q (exact and verified paths) or double (float path).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solvers/motion/contacts.h"
+#include "solvers/motion/uniqueness.h"
+#include "solvers/ucp/solve.h"
+
+namespace contactcert::solvers::motion {
+
+/// How a run ended: all steps done; jammed (a proof, at the last step); no contact left to hold the body; a
+/// vertex-on-vertex contact (normal not determined); two shapes overlap after a step (a sliding contact that turns
+/// leaves its line at second order); a contact closes at an irrational time (rational poses cannot reach it: the
+/// last step ends at a rational time just before it, the gap > 0); unknown (a solver budget or the time limit).
+enum class RunStatus {
+  kCompleted,
+  kJammed,
+  kNoContact,
+  kUnsupportedContact,
+  kOverlap,
+  kIrrationalContactTime,
+  kUnknown
+};
+const char* run_status_name(RunStatus s);
+
+struct SimulateOptions {
+  /// kExact: exact geometry and exact LPs; kVerified (default): exact geometry, the UCP's verified path;
+  /// kFloat: doubles throughout (geometry with the float sign tolerance, the UCP's float path), nothing proven.
+  exact::Arith arith = exact::Arith::kVerified;
+  std::optional<long> steps;             ///< N, overriding the scene's
+  std::optional<Q> dt;                   ///< H, overriding the scene's
+  bool uniqueness = true;                ///< decide per step whether the motion is unique (exact paths)
+  long max_uniqueness_modes = 1L << 12;  ///< the enumeration's budget (4^nc modes): above it, `unknown`
+  bool certificates = true;              ///< keep each step's UCP certificate text (exact paths)
+  /// Seconds of wall clock for the whole run (0 = none): then `unknown`, with the steps done so far. Each step's
+  /// solve gets what is left (UcpOptions::time_limit).
+  double time_limit = 0;
+  ucp::UcpOptions ucp;                   ///< method, seed, budgets (its arith is set from `arith`)
+};
+
+/// A contact of a step: its name (contacts.h), mode (s separate, r roll, + / - slide along +t / -t, t = n turned
+/// by +90 degrees), point, inward normal (as written, non-unit) and the force on the body c_n n + c_t t.
+template <class T>
+struct ContactRecord {
+  std::string name;
+  char mode = 's';
+  Vec2<T> point, normal, force;
+};
+
+/// One step: the problem at `pose` (time `time`), its verdict and certificate, the twist, the motion over `h`.
+template <class T>
+struct StepRecord {
+  long index = 0;
+  T time = T(0), h = T(0);
+  /// What cut the step short (empty: a full step): the contact that closed, a finger reaching a body vertex, or
+  /// "schedule change of finger NAME".
+  std::string cut_by;
+  bool cut_exact = true;  ///< false: the closing time is irrational; h is a rational time just before it
+  Pose<T> pose, pose_after;
+  std::vector<Vec2<T>> tips_after;
+  std::vector<ContactRecord<T>> contacts;
+  std::vector<std::string> made, broken;  ///< contacts new at this step, and gone since the previous one
+  ucp::UcpStatus verdict = ucp::UcpStatus::kUnknown;
+  std::string reason;
+  Vec2<T> v{T(0), T(0)};  ///< q_dot: velocity of the body point at the world origin
+  T omega = T(0);         ///< q_dot: angular velocity
+  /// The twist the step applies: (v, omega) itself when omega = 0; turning, a rotation about a rolling obstacle
+  /// contact's point (exactly the instantaneous centre) or else about the instantaneous centre, by the Cayley
+  /// parameter that brings the pose's tan(theta / 2) after a full step to its exact value if that takes at most 128
+  /// bits, else to the nearest multiple of 2^-40 (the centre likewise): exact where cheap, and the pose's numbers
+  /// stay bounded (exact paths). The float path applies (v, omega).
+  Vec2<T> applied_v{T(0), T(0)};
+  T applied_omega = T(0);
+  std::string certificate;  ///< "ucp_solvable" / "ucp_jammed" (exact paths)
+  std::optional<MotionUniqueness> uniqueness;
+  double seconds = 0;
+};
+
+/// A whole run: its steps, how it ended and the final state.
+template <class T>
+struct Trajectory {
+  RunStatus status = RunStatus::kCompleted;
+  std::string reason;
+  std::vector<StepRecord<T>> steps;
+  Pose<T> final_pose;
+  T final_time = T(0);
+  std::vector<Vec2<T>> final_tips;
+  double seconds = 0;
+};
+
+/// Runs the scene for N steps (or until the run ends). T = Q: the exact or verified path (opts.arith kExact or
+/// kVerified; kFloat is taken as kVerified); T = double: the float path, whatever opts.arith says.
+template <class T>
+Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts);
+
+extern template Trajectory<Q> simulate<Q>(const MotionScene&, const SimulateOptions&);
+extern template Trajectory<double> simulate<double>(const MotionScene&, const SimulateOptions&);
+
+}  // namespace contactcert::solvers::motion

@@ -1,0 +1,42 @@
+// Is the motion of a step unique? Every solution of a quasistatic problem lies in a contact mode (per contact:
+// separate, roll, slide +, slide -, enumerate.h), and because X and Y are uncoupled the solutions of a mode are
+// all of (its face of X) x (its face of Y). So the body velocities of all solutions are, over the solution modes
+// (those whose two faces are non-empty), the sets {q_dot : P u = v + J_alpha theta_alpha, u = [q_dot; ...],
+// x = (v_n, v_t^+, v_t^-) >= 0 in the mode's face}. The motion is unique iff one LP per component and direction
+// (min and max of each q_dot_k over each solution mode's face) gives the same value everywhere.
+// Cost: 4^nc mode LPs (the enumeration) plus 2 nq LPs per solution mode, all exact (or verified).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "exact/arith.h"
+#include "solvers/ucp/problem.h"
+
+namespace contactcert::solvers::motion {
+
+using exact::Q;
+
+enum class UniquenessStatus {
+  kUnique,     ///< every solution has the same q_dot (proven: the LP bounds agree over every solution mode)
+  kNotUnique,  ///< two solutions with different q_dot (both in `motions`), or a q_dot range unbounded
+  kUnknown     ///< the enumeration's budget (max_modes) was too small
+};
+
+const char* uniqueness_name(UniquenessStatus s);
+
+/// The verdict and its evidence: distinct body velocities reached (each an LP optimum, with its mode).
+struct MotionUniqueness {
+  UniquenessStatus status = UniquenessStatus::kUnknown;
+  std::vector<exact::Vec<Q>> motions;  ///< distinct q_dot, each attained by a solution
+  std::vector<std::string> modes;      ///< the mode of each motion (letters s r + - per contact)
+  std::vector<std::string> solution_modes;
+  bool unbounded = false;  ///< some q_dot component is unbounded over a solution mode
+  long lps = 0;
+};
+
+/// Decides whether all solutions of a quasistatic problem have the same q_dot (exact or verified LPs; kUnknown
+/// when 4^nc exceeds max_modes).
+MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith arith, long max_modes);
+
+}  // namespace contactcert::solvers::motion

@@ -1,0 +1,49 @@
+#include "geometry/rigid_motion.h"
+
+#include <gtest/gtest.h>
+
+namespace contactcert::geometry {
+namespace {
+
+using exact::Q;
+
+TEST(RigidMotion, CayleyRotationIsExactlyOrthogonal) {
+  for (const Q& u : {Q(1, 3), Q(-7, 5), Q(123456789, 1000)}) {
+    const Pose<Q> r = cayley_rotation<Q>(u);
+    EXPECT_EQ(r.c * r.c + r.s * r.s, Q(1));
+    const Vec2<Q> p{Q(3), Q(-4, 7)};
+    const Vec2<Q> q = r.apply(p);
+    EXPECT_EQ(q.x * q.x + q.y * q.y, p.x * p.x + p.y * p.y);  // lengths kept exactly
+    EXPECT_EQ(r.unrotate(q), p);
+  }
+  // u = tan(phi / 2): u = 1 is a quarter turn.
+  const Pose<Q> quarter = cayley_rotation<Q>(Q(1));
+  EXPECT_EQ(quarter.c, Q(0));
+  EXPECT_EQ(quarter.s, Q(1));
+}
+
+TEST(RigidMotion, TwistStepKeepsThePivotFixed) {
+  // A body turning about (2, 0) with omega = -2/3: v (velocity of the body point at the origin) = omega J (0 - c).
+  const Vec2<Q> c{Q(2), Q(0)};
+  const Q omega(-2, 3);
+  const Vec2<Q> v = omega * perp2(Vec2<Q>{Q(0) - c.x, Q(0) - c.y});
+  const Pose<Q> step = twist_step(v, omega, Q(1, 10));
+  EXPECT_EQ(step.apply(c), c);
+  EXPECT_EQ(step.c * step.c + step.s * step.s, Q(1));
+  // The Cayley parameter is omega h / 2: tan of half the turned angle.
+  EXPECT_EQ(step.s / (Q(1) + step.c), Q(-1, 30));
+  // Composition keeps the pivot too.
+  const Pose<Q> twice = compose(step, step);
+  EXPECT_EQ(twice.apply(c), c);
+  EXPECT_EQ(twice.c * twice.c + twice.s * twice.s, Q(1));
+}
+
+TEST(RigidMotion, ZeroOmegaIsATranslation) {
+  const Pose<Q> step = twist_step(Vec2<Q>{Q(1), Q(-2)}, Q(0), Q(3, 10));
+  EXPECT_EQ(step.c, Q(1));
+  EXPECT_EQ(step.s, Q(0));
+  EXPECT_EQ(step.t, (Vec2<Q>{Q(3, 10), Q(-3, 5)}));
+}
+
+}  // namespace
+}  // namespace contactcert::geometry
