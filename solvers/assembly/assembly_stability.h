@@ -1,0 +1,67 @@
+// Stability of an assembly from rest (Balkcom-Trinkle section 7 for N bodies; SPEC section 7):
+//   strongly_stable: every solution of the rigid-body model (assembly_system.h) has every body at rest;
+//   weakly_stable:   some solution has every body at rest and some has not;
+//   unstable:        no solution has every body at rest.
+// A resting solution is one LP (vdot = 0). A moving solution lies in some mode other than n..n (each has a strict
+// row, so vdot != 0), or in n..n with vdot != 0 (a body pivoting about a single rolling contact); the latter
+// cannot coexist with a resting solution, since M vdot - g in range(J) and J^T vdot = 0 fix vdot uniquely (M is
+// positive definite) and a resting solution makes it 0. So with a resting solution only the modes other than
+// n..n need a proof. They are not listed (4^k strings, each with a kinematically feasible set that grows like
+// k^(3N)): a depth-first walk over the contacts keeps the loads' Newton-Euler rows in every partial system (the
+// later contacts relaxed) and stops at a prefix whose system is infeasible, with its Motzkin certificate.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "exact/arith.h"
+#include "exact/deadline.h"
+#include "solvers/assembly/assembly_system.h"
+
+namespace contactcert::solvers::assembly {
+
+enum class AssemblyVerdict { kStronglyStable, kWeaklyStable, kUnstable };
+const char* verdict_name(AssemblyVerdict v);
+
+/// kDecided, or the budget that ran out first (then `verdict` is not decided unless it is kUnstable).
+enum class AssemblyStatus { kDecided, kNodeLimit, kTimeLimit };
+const char* status_name(AssemblyStatus s);
+
+/// A solution of the model: its mode (one letter s l r n per contact), every body's acceleration
+/// (vdot_0..vdot_{N-1}, 3 each) and the contact forces (c_1n..c_kn, c_1t..c_kt).
+struct AssemblyMotion {
+  std::string mode;
+  Vec<Q> acceleration;
+  Vec<Q> forces;
+};
+
+/// A prefix (letters s l r n for the first contacts) whose system, the later contacts `*`, has no solution.
+struct AssemblyDeadPrefix {
+  std::string prefix;
+  Vec<Q> motzkin;  ///< a Motzkin certificate of assembly_system(model, prefix + "*"...)
+};
+
+struct AssemblyStabilityResult {
+  AssemblyStatus status = AssemblyStatus::kDecided;
+  AssemblyVerdict verdict = AssemblyVerdict::kUnstable;  ///< meaningful when status is kDecided
+  bool has_resting = false;
+  Vec<Q> resting_forces;  ///< a resting solution (c_1n..c_kn, c_1t..c_kt), if has_resting
+  Vec<Q> resting_farkas;  ///< unstable: a Motzkin certificate of the resting system
+  bool has_moving = false;
+  AssemblyMotion moving;                 ///< weakly stable (and unstable when found): a moving solution
+  std::vector<AssemblyDeadPrefix> dead;  ///< strongly stable: they cover every mode but n..n
+  long nodes = 0;                        ///< prefixes visited, the empty one included
+  long lps = 0;                          ///< LPs solved (a prefix its parent's point already meets needs none)
+  std::string covered;                   ///< on a limit: how far the walk got
+};
+
+struct AssemblyStabilityOptions {
+  exact::Arith arith = exact::Arith::kVerified;
+  long max_nodes = 1L << 20;   ///< prefixes visited at most; beyond: status kNodeLimit
+  exact::Deadline deadline{};  ///< tested at every prefix; expired: status kTimeLimit
+};
+
+/// The verdict of assembly `a` under its loads, with its evidence.
+AssemblyStabilityResult assembly_stability(const geometry::Assembly& a, const AssemblyStabilityOptions& options = {});
+
+}  // namespace contactcert::solvers::assembly
