@@ -72,7 +72,19 @@ Rows checked_rows(const geometry::Assembly& a, const std::vector<CheckedContact>
                   bool resting) {
   const std::size_t N = a.bodies.size();
   Rows R;
-  if (!resting) R.columns.assign(3 * N, Sign::kFree);
+  if (!resting) {
+    // vdot, then e > 0 of the energy row g . vdot - e = 0 (every moving solution has g . vdot >= vdot^T M vdot > 0).
+    R.columns.assign(3 * N, Sign::kFree);
+    R.columns.push_back(Sign::kPositive);
+    R.rows.emplace_back();
+    for (std::size_t b = 0; b < N; ++b) {
+      const geometry::Body& body = a.bodies[b];
+      R.rows.back().push_back({3 * b, body.load_fx});
+      R.rows.back().push_back({3 * b + 1, body.load_fy});
+      R.rows.back().push_back({3 * b + 2, body.load_torque});
+    }
+    R.rows.back().push_back({3 * N, Q(-1)});
+  }
   const auto col = [&R](Sign s) {
     R.columns.push_back(s);
     return R.columns.size() - 1;
@@ -180,7 +192,7 @@ std::string resting_violation(const geometry::Assembly& a, const std::vector<Che
   return newton_euler_violation(a, cs, Vec<Q>::Zero(static_cast<Eigen::Index>(3 * a.bodies.size())), c);
 }
 
-/// Every mode over s l r n of k contacts but n..n extends a dead prefix: walks only prefixes of listed strings.
+/// Every mode over s l r n of k contacts extends a dead prefix: walks only prefixes of listed strings.
 std::string coverage_violation(std::size_t k, const std::vector<AssemblyDeadPrefix>& dead) {
   std::set<std::string> is_dead, is_prefix;
   for (const AssemblyDeadPrefix& d : dead) {
@@ -189,16 +201,12 @@ std::string coverage_violation(std::size_t k, const std::vector<AssemblyDeadPref
     is_dead.insert(d.prefix);
     for (std::size_t j = 0; j <= d.prefix.size(); ++j) is_prefix.insert(d.prefix.substr(0, j));
   }
-  const std::string rolling(k, 'n');
   std::vector<std::string> stack{""};
   while (!stack.empty()) {
     const std::string p = std::move(stack.back());
     stack.pop_back();
     if (is_dead.count(p)) continue;
-    if (p == rolling) continue;
-    const bool on_rolling = rolling.compare(0, p.size(), p) == 0;
-    if (p.size() == k || (!is_prefix.count(p) && !on_rolling))
-      return "no dead prefix covers the modes that start \"" + p + "\"";
+    if (p.size() == k || !is_prefix.count(p)) return "no dead prefix covers the modes that start \"" + p + "\"";
     for (const char L : {'s', 'l', 'r', 'n'}) stack.push_back(p + L);
   }
   return {};

@@ -14,8 +14,8 @@
 namespace contactcert::solvers::assembly {
 
 /// "" if `claim` is a valid decided verdict for assembly `a` with valid evidence, else why not:
-///   strongly_stable: a resting solution, no moving one, and dead prefixes that cover every mode over s l r n but
-///     n..n, each with a Motzkin certificate of its system;
+///   strongly_stable: a resting solution, no moving one, and dead prefixes that cover every mode over s l r n, each
+///     with a Motzkin certificate of its system (the energy row included: assembly_system.h says why it is valid);
 ///   weakly_stable: a resting solution and a moving solution (some body's acceleration non-zero);
 ///   unstable: a Motzkin certificate of the resting system (and a moving solution, if one is given, valid).
 std::string check_assembly_stability(const geometry::Assembly& a, const AssemblyStabilityResult& claim);

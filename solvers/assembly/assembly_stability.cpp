@@ -12,6 +12,7 @@ struct Node {
 /// Whether (vdot, c), a point of the parent's system (contact i relaxed), already satisfies letter L at contact i:
 /// then it is a point of the child's system and no LP is needed.
 bool meets(const AssemblyModel& model, std::size_t i, char L, const Vec<Q>& vdot, const Vec<Q>& c) {
+  // The energy row g^T vdot > 0 holds already: the parent's point satisfies it.
   const auto k = static_cast<Eigen::Index>(model.contacts.size());
   const auto [a_n, a_t] = contact_acceleration(model, i, vdot);
   const Q& c_n = c(static_cast<Eigen::Index>(i));
@@ -29,12 +30,10 @@ bool meets(const AssemblyModel& model, std::size_t i, char L, const Vec<Q>& vdot
   }
 }
 
-/// The depth-first walk over the contacts' letters. Stops at the first feasible whole mode (a moving solution),
-/// skipping n..n when `skip_all_rolling` (a resting solution exists).
-void walk(const AssemblyModel& model, bool skip_all_rolling, const AssemblyStabilityOptions& options,
-          AssemblyStabilityResult& r) {
+/// The depth-first walk over the contacts' letters, every system with the energy row (so a feasible whole mode is
+/// a moving solution). Stops at the first one.
+void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, AssemblyStabilityResult& r) {
   const std::size_t k = model.contacts.size();
-  const std::string all_rolling(k, 'n');
   std::vector<Node> stack;
   {
     const AssemblySystem root = assembly_system(model, std::string(k, '*'));
@@ -54,7 +53,6 @@ void walk(const AssemblyModel& model, bool skip_all_rolling, const AssemblyStabi
     // Children in reverse so that s is taken first.
     for (const char L : {'n', 'r', 'l', 's'}) {
       std::string prefix = node.prefix + L;
-      if (skip_all_rolling && prefix == all_rolling) continue;
       if (r.nodes >= options.max_nodes || options.deadline.expired()) {
         r.status = r.nodes >= options.max_nodes ? AssemblyStatus::kNodeLimit : AssemblyStatus::kTimeLimit;
         r.covered = std::to_string(r.nodes) + " prefixes visited, " + std::to_string(r.dead.size()) + " proved dead, " +
@@ -120,7 +118,7 @@ AssemblyStabilityResult assembly_stability(const geometry::Assembly& a, const As
     r.resting_forces = rest.forces(f.x);
   else
     r.resting_farkas = f.motzkin;
-  walk(model, r.has_resting, options, r);
+  walk(model, options, r);
   if (!r.has_resting) {
     r.verdict = AssemblyVerdict::kUnstable;
     r.status = AssemblyStatus::kDecided;  // the resting system's certificate decides, whatever the walk covered

@@ -2,13 +2,12 @@
 //   strongly_stable: every solution of the rigid-body model (assembly_system.h) has every body at rest;
 //   weakly_stable:   some solution has every body at rest and some has not;
 //   unstable:        no solution has every body at rest.
-// A resting solution is one LP (vdot = 0). A moving solution lies in some mode other than n..n (each has a strict
-// row, so vdot != 0), or in n..n with vdot != 0 (a body pivoting about a single rolling contact); the latter
-// cannot coexist with a resting solution, since M vdot - g in range(J) and J^T vdot = 0 fix vdot uniquely (M is
-// positive definite) and a resting solution makes it 0. So with a resting solution only the modes other than
-// n..n need a proof. They are not listed (4^k strings, each with a kinematically feasible set that grows like
-// k^(3N)): a depth-first walk over the contacts keeps the loads' Newton-Euler rows in every partial system (the
-// later contacts relaxed) and stops at a prefix whose system is infeasible, with its Motzkin certificate.
+// A resting solution is one LP (vdot = 0). The moving solutions of a mode are the solutions of its system with the
+// energy row g^T vdot > 0 (assembly_system.h), n..n included (a body may pivot about a single rolling contact).
+// The modes are not listed (4^k strings, their kinematically feasible ones growing like k^(3N)): a depth-first walk
+// over the contacts keeps the loads' Newton-Euler rows and the energy row in every partial system (the later
+// contacts relaxed) and stops at a prefix whose system is infeasible, with its Motzkin certificate. Under gravity
+// alone a structure whose every allowed acceleration lowers no com has an infeasible root: one LP.
 #pragma once
 
 #include <string>
@@ -49,7 +48,7 @@ struct AssemblyStabilityResult {
   Vec<Q> resting_farkas;  ///< unstable: a Motzkin certificate of the resting system
   bool has_moving = false;
   AssemblyMotion moving;                 ///< weakly stable (and unstable when found): a moving solution
-  std::vector<AssemblyDeadPrefix> dead;  ///< strongly stable: they cover every mode but n..n
+  std::vector<AssemblyDeadPrefix> dead;  ///< strongly stable: they cover every mode
   long nodes = 0;                        ///< prefixes visited, the empty one included
   long lps = 0;                          ///< LPs solved (a prefix its parent's point already meets needs none)
   std::string covered;                   ///< on a limit: how far the walk got

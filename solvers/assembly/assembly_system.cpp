@@ -64,11 +64,19 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
     S.strict.push_back(strict);
     return S.cols++;
   };
-  if (!resting)
-    for (Index j = 0; j < 3 * N; ++j) column(true, false);
   const auto add = [&S](Index row, Index col, const Q& v) {
     if (sgn(v) != 0) S.entries.push_back({row, col, v});
   };
+  if (!resting) {
+    for (Index j = 0; j < 3 * N; ++j) column(true, false);
+    // The energy row g^T vdot - e = 0, e > 0 (header comment).
+    const Index e = column(false, true);
+    for (Index b = 0; b < N; ++b)
+      for (Index d = 0; d < 3; ++d)
+        add(0, 3 * b + d, model.g[static_cast<std::size_t>(b)][static_cast<std::size_t>(d)]);
+    add(0, e, Q(-1));
+    ++S.rows;
+  }
   // a row sum_b w^b . vdot_b (+ slack sign * sigma)
   const auto kinematic = [&](std::size_t i, bool normal, Index sigma, int slack_sign) {
     for (const ContactJacobian::Side& s : model.contacts[i].sides) {

@@ -7,6 +7,11 @@
 // M_b = diag(m_b, m_b, I_b), g_b the load of body b. The letters of a mode are Table 2's s l r n (every contact
 // touches); a prefix of a mode leaves the later contacts `*`: relaxed to the convex hull of the four letters,
 // a_n >= 0 and |c_t| <= max(mu_s, mu_k) c_n, so a prefix whose system is infeasible has no feasible completion.
+// The energy row. In every solution of every mode, c_in a_in = 0 (s: c = 0, else a_n = 0) and c_it a_it <= 0 (l r:
+// friction opposes sliding, n: a_t = 0), so vdot^T M vdot = g^T vdot + sum_i (c_in a_in + c_it a_it) <= g^T vdot:
+// a moving solution (vdot != 0, M positive definite) has g^T vdot > 0, and every solution with g^T vdot > 0 moves.
+// So the moving solutions of a mode are exactly the solutions of its system with the row g^T vdot > 0; the row
+// holds for every mode, n..n included (a body pivoting about a rolling contact), and it cuts every partial system.
 #pragma once
 
 #include <array>
@@ -41,10 +46,11 @@ struct AssemblyModel {
 AssemblyModel assembly_model(const geometry::Assembly& a);
 
 /// The system of a mode or prefix (letters s l r n, `*` for a relaxed contact; docs/formats.md section 5a fixes
-/// this layout for certificates). Columns: vdot (3N, free, body by body) unless resting; then per contact
+/// this layout for certificates). Columns: vdot (3N, free, body by body) and e > 0, unless resting; then per contact
 ///   s: sigma > 0   l r: sigma > 0, c_n   n: c_n, c_t (free), rho+, rho-   *: sigma >= 0, c_n, c_t (free), rho+, rho-
 ///   resting (vdot = 0): c_n, c_t (free), rho+, rho-        (every other column >= 0)
-/// Rows: per contact  s: a_n - sigma = 0   l: a_n = 0, a_t - sigma = 0   r: a_n = 0, a_t + sigma = 0
+/// Rows: unless resting, the energy row sum_b g_b . vdot_b - e = 0; then per contact  s: a_n - sigma = 0   l: a_n = 0,
+/// a_t - sigma = 0   r: a_n = 0, a_t + sigma = 0
 ///   n: a_n = 0, a_t = 0, then the friction rows mu c_n - c_t - rho+ = 0, mu c_n + c_t - rho- = 0 (mu = mu_s)
 ///   *: a_n - sigma = 0, then the friction rows with mu = max(mu_s, mu_k)     resting: the friction rows (mu_s)
 /// then the 3N Newton-Euler rows, body by body, with c_t = -mu_k c_n for l and +mu_k c_n for r; b = g there.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "exact/json_input.h"
@@ -71,6 +72,47 @@ inline std::size_t stack_box(SceneText& s, const std::string& below, const Q& x0
   const std::size_t b = s.body(box(x0, y0, x1, y1));
   for (const Q& x : {lo, hi}) s.contact(below, body(b), point(x, y0), "[0, 1]", mu(m));
   return b;
+}
+
+/// A stack of n boxes [0, 2] x [i, i + 1] on the ground, two contacts per interface (k = 2n).
+inline SceneText box_stack(std::size_t n, const char* m = "1/2") {
+  SceneText s;
+  std::string below = obstacle(ground(s));
+  for (std::size_t i = 0; i < n; ++i)
+    below = body(stack_box(s, below, 0, Q(static_cast<long>(i)), 2, Q(static_cast<long>(i + 1)), 0, 2, m));
+  return s;
+}
+
+/// A row of n boxes [2i, 2i + 2] x [0, 1] on the ground, each touching the next along x = 2i + 2: two contacts per
+/// interface (k = 2n + 2(n - 1)), normals (0, 1) from the ground and (1, 0) from each box into the next.
+inline SceneText box_row(std::size_t n, const char* m = "1/2") {
+  SceneText s;
+  const std::string g = obstacle(ground(s));
+  for (std::size_t i = 0; i < n; ++i) {
+    const Q x(static_cast<long>(2 * i));
+    const std::size_t b = stack_box(s, g, x, 0, x + 2, 1, x, x + 2, m);
+    if (i == 0) continue;
+    for (const Q y : {Q(0), Q(1)}) s.contact(body(b - 1), body(b), point(x, y), "[1, 0]", mu(m));
+  }
+  return s;
+}
+
+/// A corbelled arch of 9 blocks: two piers of four 2 x 1 blocks stepping 1/4 inward per course (left from [0, 2],
+/// right from [6, 8]) and a keystone [7/4, 25/4] x [4, 5] over both; two contacts per interface (k = 20).
+inline SceneText corbel_arch(const char* m = "1/2") {
+  SceneText s;
+  const std::string g = obstacle(ground(s));
+  std::string left = g, right = g;
+  for (long i = 0; i < 4; ++i) {
+    const Q step(i, 4), below_step(i == 0 ? 0 : i - 1, 4);  // the course below starts at below_step (ground: 0)
+    // Left block [step, step + 2] on [below_step, below_step + 2] (the ground: [0, 2]); the right one mirrored.
+    left = body(stack_box(s, left, step, i, step + 2, i + 1, step, Q(below_step + 2), m));
+    right = body(stack_box(s, right, 6 - step, i, 8 - step, i + 1, Q(6 - below_step), 8 - step, m));
+  }
+  const std::size_t key = s.body(box(Q(7, 4), 4, Q(25, 4), 5));
+  for (const auto& [below, lo, hi] : {std::tuple{left, Q(7, 4), Q(11, 4)}, std::tuple{right, Q(21, 4), Q(25, 4)}})
+    for (const Q& x : {lo, hi}) s.contact(below, body(key), point(x, 4), "[0, 1]", mu(m));
+  return s;
 }
 
 }  // namespace contactcert::solvers::assembly::testing
