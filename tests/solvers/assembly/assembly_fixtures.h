@@ -92,7 +92,7 @@ inline SceneText box_row(std::size_t n, const char* m = "1/2") {
     const Q x(static_cast<long>(2 * i));
     const std::size_t b = stack_box(s, g, x, 0, x + 2, 1, x, x + 2, m);
     if (i == 0) continue;
-    for (const Q y : {Q(0), Q(1)}) s.contact(body(b - 1), body(b), point(x, y), "[1, 0]", mu(m));
+    for (const Q& y : {Q(0), Q(1)}) s.contact(body(b - 1), body(b), point(x, y), "[1, 0]", mu(m));
   }
   return s;
 }

@@ -14,7 +14,6 @@
 namespace contactcert::solvers::assembly {
 namespace {
 
-using exact::Mat;
 using geometry::Point2;
 using testing::body;
 using testing::box;
