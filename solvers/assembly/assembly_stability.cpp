@@ -101,6 +101,8 @@ const char* status_name(AssemblyStatus s) {
       return "decided";
     case AssemblyStatus::kNodeLimit:
       return "node_limit";
+    case AssemblyStatus::kLpLimit:
+      return "lp_limit";
     default:
       return "time_limit";
   }
@@ -110,15 +112,21 @@ AssemblyStabilityResult assembly_stability(const geometry::Assembly& a, const As
   const AssemblyModel model = assembly_model(a);
   const std::size_t k = model.contacts.size();
   AssemblyStabilityResult r;
-  const AssemblySystem rest = assembly_system(model, std::string(k, 'n'), true);
-  const auto f = exact::StrictSolver<Q>(rest.system, options.arith).solve(rest.b);
-  ++r.lps;
-  r.has_resting = f.status == exact::StrictStatus::kFeasible;
-  if (r.has_resting)
-    r.resting_forces = rest.forces(f.x);
-  else
-    r.resting_farkas = f.motzkin;
-  walk(model, options, r);
+  try {
+    const AssemblySystem rest = assembly_system(model, std::string(k, 'n'), true);
+    const auto f = exact::StrictSolver<Q>(rest.system, options.arith).solve(rest.b);
+    ++r.lps;
+    r.has_resting = f.status == exact::StrictStatus::kFeasible;
+    if (r.has_resting)
+      r.resting_forces = rest.forces(f.x);
+    else
+      r.resting_farkas = f.motzkin;
+    walk(model, options, r);
+  } catch (const exact::BudgetExceeded& e) {  // an LP's pivot budget: a status with what was covered
+    r.status = AssemblyStatus::kLpLimit;
+    r.covered = std::string(e.what()) + " after " + std::to_string(r.nodes) + " prefixes";
+    if (r.lps == 0) return r;  // not even the resting LP: nothing is decided
+  }
   if (!r.has_resting) {
     r.verdict = AssemblyVerdict::kUnstable;
     r.status = AssemblyStatus::kDecided;  // the resting system's certificate decides, whatever the walk covered

@@ -22,8 +22,9 @@ namespace contactcert::solvers::assembly {
 enum class AssemblyVerdict { kStronglyStable, kWeaklyStable, kUnstable };
 const char* verdict_name(AssemblyVerdict v);
 
-/// kDecided, or the budget that ran out first (then `verdict` is not decided unless it is kUnstable).
-enum class AssemblyStatus { kDecided, kNodeLimit, kTimeLimit };
+/// kDecided, or the budget that ran out first (then `verdict` is not decided unless it is kUnstable): the walk's
+/// nodes, its time, or an LP's pivots (exact::BudgetExceeded from the simplex).
+enum class AssemblyStatus { kDecided, kNodeLimit, kTimeLimit, kLpLimit };
 const char* status_name(AssemblyStatus s);
 
 /// A solution of the model: its mode (one letter s l r n per contact), every body's acceleration
