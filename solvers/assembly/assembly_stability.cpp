@@ -3,6 +3,17 @@
 namespace contactcert::solvers::assembly {
 namespace {
 
+/// Strict feasibility of A x = b: the verified route, and if its float simplex runs out of pivots (it can cycle on
+/// these degenerate systems) the exact simplex alone.
+exact::StrictFeasibility<Q> solve(const AssemblySystem& s, exact::Arith arith) {
+  try {
+    return exact::StrictSolver<Q>(s.system, arith).solve(s.b);
+  } catch (const exact::BudgetExceeded&) {
+    if (arith == exact::Arith::kExact) throw;
+    return exact::StrictSolver<Q>(s.system, exact::Arith::kExact).solve(s.b);
+  }
+}
+
 /// A prefix the walk will extend, with a point of its system: accelerations and forces.
 struct Node {
   std::string prefix;
@@ -37,7 +48,7 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
   std::vector<Node> stack;
   {
     const AssemblySystem root = assembly_system(model, std::string(k, '*'));
-    const auto f = exact::StrictSolver<Q>(root.system, options.arith).solve(root.b);
+    const auto f = solve(root, options.arith);
     ++r.lps;
     ++r.nodes;
     if (f.status == exact::StrictStatus::kInfeasible) {  // no solution at all: every mode is dead
@@ -63,7 +74,7 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
       Node child{prefix, node.vdot, node.c};
       if (!meets(model, i, L, node.vdot, node.c)) {
         const AssemblySystem s = assembly_system(model, prefix + std::string(k - prefix.size(), '*'));
-        const auto f = exact::StrictSolver<Q>(s.system, options.arith).solve(s.b);
+        const auto f = solve(s, options.arith);
         ++r.lps;
         if (f.status == exact::StrictStatus::kInfeasible) {
           r.dead.push_back({std::move(prefix), f.motzkin});
@@ -114,7 +125,7 @@ AssemblyStabilityResult assembly_stability(const geometry::Assembly& a, const As
   AssemblyStabilityResult r;
   try {
     const AssemblySystem rest = assembly_system(model, std::string(k, 'n'), true);
-    const auto f = exact::StrictSolver<Q>(rest.system, options.arith).solve(rest.b);
+    const auto f = solve(rest, options.arith);
     ++r.lps;
     r.has_resting = f.status == exact::StrictStatus::kFeasible;
     if (r.has_resting)

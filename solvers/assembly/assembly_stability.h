@@ -7,7 +7,8 @@
 // The modes are not listed (4^k strings, their kinematically feasible ones growing like k^(3N)): a depth-first walk
 // over the contacts keeps the loads' Newton-Euler rows and the energy row in every partial system (the later
 // contacts relaxed) and stops at a prefix whose system is infeasible, with its Motzkin certificate. Under gravity
-// alone a structure whose every allowed acceleration lowers no com has an infeasible root: one LP.
+// alone a structure whose every allowed acceleration lowers no com has an infeasible root: one LP after the resting
+// one.
 #pragma once
 
 #include <string>
