@@ -148,7 +148,7 @@ std::optional<StrictFeasibility<Q>> check_rounded(const IntegerLp& ilp, const St
 }
 
 // The float LP on the integer rows, its point or certificate rounded to fractions and checked exactly;
-// nullopt if the check fails or a number outgrows 128 bits.
+// nullopt if the check fails, a number outgrows 128 bits or the float LP runs out of pivots.
 std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const LpProblem<double>& hint,
                                                   const std::vector<bool>& is_free, const std::vector<bool>& strict,
                                                   const std::vector<Index>& S, const Vec<Q>& b) {
@@ -158,10 +158,12 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
   if (!B) return std::nullopt;
   LpProblem<double> lp = hint;
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
-  const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp, with_duals()), m, n, S);
   try {
+    const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp, with_duals()), m, n, S);
     return check_rounded(ilp, f, is_free, strict, *B, d);
   } catch (const RingOverflow&) {
+    return std::nullopt;
+  } catch (const BudgetExceeded&) {  // the float simplex cycled on a degenerate LP: the verified LP decides
     return std::nullopt;
   }
 }

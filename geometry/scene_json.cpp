@@ -22,6 +22,8 @@ Q read_nonnegative(const JsonInput& node) {
   return x;
 }
 
+}  // namespace
+
 Shape read_shape(const JsonInput& node) {
   const std::string type = node.at("type").string();
   if (type == "polygon") {
@@ -41,8 +43,6 @@ Shape read_shape(const JsonInput& node) {
   }
   node.at("type").fail("\"polygon\" or \"disk\"");
 }
-
-}  // namespace
 
 Workpiece read_workpiece(const JsonInput& node) {
   node.expect_keys({"shape", "com", "mass", "inertia"});

@@ -31,6 +31,10 @@ PlanarSceneInput read_planar_scene_input(const exact::JsonInput& root);
 /// distance from the centre, negative friction, a negative gap, unknown keys.
 PlanarScene read_planar_scene(const exact::JsonInput& root);
 
+/// Parses a shape ({"type": "polygon", "vertices"} or {"type": "disk", "center", "radius"}, SPEC section 3). Throws
+/// exact::InputError on a degenerate, clockwise or self-intersecting polygon or a non-positive radius.
+Shape read_shape(const exact::JsonInput& node);
+
 /// Parses a workpiece ({"shape", "com", "mass", "inertia"}, SPEC section 3): com defaults to the centroid, I/m
 /// to uniform density. Throws exact::InputError on an invalid field.
 Workpiece read_workpiece(const exact::JsonInput& node);

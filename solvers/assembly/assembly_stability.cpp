@@ -1,0 +1,153 @@
+#include "solvers/assembly/assembly_stability.h"
+
+namespace contactcert::solvers::assembly {
+namespace {
+
+/// Strict feasibility of A x = b: the verified route, and if its float simplex runs out of pivots (it can cycle on
+/// these degenerate systems) the exact simplex alone.
+exact::StrictFeasibility<Q> solve(const AssemblySystem& s, exact::Arith arith) {
+  try {
+    return exact::StrictSolver<Q>(s.system, arith).solve(s.b);
+  } catch (const exact::BudgetExceeded&) {
+    if (arith == exact::Arith::kExact) throw;
+    return exact::StrictSolver<Q>(s.system, exact::Arith::kExact).solve(s.b);
+  }
+}
+
+/// A prefix the walk will extend, with a point of its system: accelerations and forces.
+struct Node {
+  std::string prefix;
+  Vec<Q> vdot, c;
+};
+
+/// Whether (vdot, c), a point of the parent's system (contact i relaxed), already satisfies letter L at contact i:
+/// then it is a point of the child's system and no LP is needed.
+bool meets(const AssemblyModel& model, std::size_t i, char L, const Vec<Q>& vdot, const Vec<Q>& c) {
+  // The energy row g^T vdot > 0 holds already: the parent's point satisfies it.
+  const auto k = static_cast<Eigen::Index>(model.contacts.size());
+  const auto [a_n, a_t] = contact_acceleration(model, i, vdot);
+  const Q& c_n = c(static_cast<Eigen::Index>(i));
+  const Q& c_t = c(k + static_cast<Eigen::Index>(i));
+  const ContactJacobian& J = model.contacts[i];
+  switch (L) {
+    case 's':
+      return sgn(a_n) > 0 && sgn(c_n) == 0 && sgn(c_t) == 0;
+    case 'l':
+      return sgn(a_n) == 0 && sgn(a_t) > 0 && c_t == -J.mu_k * c_n;
+    case 'r':
+      return sgn(a_n) == 0 && sgn(a_t) < 0 && c_t == J.mu_k * c_n;
+    default:
+      return sgn(a_n) == 0 && sgn(a_t) == 0 && abs(c_t) <= J.mu_s * c_n;
+  }
+}
+
+/// The depth-first walk over the contacts' letters, every system with the energy row (so a feasible whole mode is
+/// a moving solution). Stops at the first one.
+void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, AssemblyStabilityResult& r) {
+  const std::size_t k = model.contacts.size();
+  std::vector<Node> stack;
+  {
+    const AssemblySystem root = assembly_system(model, std::string(k, '*'));
+    const auto f = solve(root, options.arith);
+    ++r.lps;
+    ++r.nodes;
+    if (f.status == exact::StrictStatus::kInfeasible) {  // no solution at all: every mode is dead
+      r.dead.push_back({"", f.motzkin});
+      return;
+    }
+    stack.push_back({"", root.acceleration(f.x), root.forces(f.x)});
+  }
+  while (!stack.empty()) {
+    Node node = std::move(stack.back());
+    stack.pop_back();
+    const std::size_t i = node.prefix.size();
+    // Children in reverse so that s is taken first.
+    for (const char L : {'n', 'r', 'l', 's'}) {
+      std::string prefix = node.prefix + L;
+      if (r.nodes >= options.max_nodes || options.deadline.expired()) {
+        r.status = r.nodes >= options.max_nodes ? AssemblyStatus::kNodeLimit : AssemblyStatus::kTimeLimit;
+        r.covered = std::to_string(r.nodes) + " prefixes visited, " + std::to_string(r.dead.size()) + " proved dead, " +
+                    std::to_string(stack.size() + 1) + " open";
+        return;
+      }
+      ++r.nodes;
+      Node child{prefix, node.vdot, node.c};
+      if (!meets(model, i, L, node.vdot, node.c)) {
+        const AssemblySystem s = assembly_system(model, prefix + std::string(k - prefix.size(), '*'));
+        const auto f = solve(s, options.arith);
+        ++r.lps;
+        if (f.status == exact::StrictStatus::kInfeasible) {
+          r.dead.push_back({std::move(prefix), f.motzkin});
+          continue;
+        }
+        child.vdot = s.acceleration(f.x);
+        child.c = s.forces(f.x);
+      }
+      if (child.prefix.size() == k) {
+        r.has_moving = true;
+        r.moving = {child.prefix, child.vdot, child.c};
+        return;
+      }
+      stack.push_back(std::move(child));
+    }
+  }
+}
+
+}  // namespace
+
+const char* verdict_name(AssemblyVerdict v) {
+  switch (v) {
+    case AssemblyVerdict::kStronglyStable:
+      return "strongly_stable";
+    case AssemblyVerdict::kWeaklyStable:
+      return "weakly_stable";
+    default:
+      return "unstable";
+  }
+}
+
+const char* status_name(AssemblyStatus s) {
+  switch (s) {
+    case AssemblyStatus::kDecided:
+      return "decided";
+    case AssemblyStatus::kNodeLimit:
+      return "node_limit";
+    case AssemblyStatus::kLpLimit:
+      return "lp_limit";
+    default:
+      return "time_limit";
+  }
+}
+
+AssemblyStabilityResult assembly_stability(const geometry::Assembly& a, const AssemblyStabilityOptions& options) {
+  const AssemblyModel model = assembly_model(a);
+  const std::size_t k = model.contacts.size();
+  AssemblyStabilityResult r;
+  try {
+    const AssemblySystem rest = assembly_system(model, std::string(k, 'n'), true);
+    const auto f = solve(rest, options.arith);
+    ++r.lps;
+    r.has_resting = f.status == exact::StrictStatus::kFeasible;
+    if (r.has_resting)
+      r.resting_forces = rest.forces(f.x);
+    else
+      r.resting_farkas = f.motzkin;
+    walk(model, options, r);
+  } catch (const exact::BudgetExceeded& e) {  // an LP's pivot budget: a status with what was covered
+    r.status = AssemblyStatus::kLpLimit;
+    r.covered = std::string(e.what()) + " after " + std::to_string(r.nodes) + " prefixes";
+    if (r.lps == 0) return r;  // not even the resting LP: nothing is decided
+  }
+  if (!r.has_resting) {
+    r.verdict = AssemblyVerdict::kUnstable;
+    r.status = AssemblyStatus::kDecided;  // the resting system's certificate decides, whatever the walk covered
+    r.dead.clear();
+    return r;
+  }
+  if (r.status != AssemblyStatus::kDecided) return r;
+  r.verdict = r.has_moving ? AssemblyVerdict::kWeaklyStable : AssemblyVerdict::kStronglyStable;
+  if (r.has_moving) r.dead.clear();
+  return r;
+}
+
+}  // namespace contactcert::solvers::assembly

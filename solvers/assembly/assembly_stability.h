@@ -1,0 +1,68 @@
+// Stability of an assembly from rest (Balkcom-Trinkle section 7 for N bodies; SPEC section 7):
+//   strongly_stable: every solution of the rigid-body model (assembly_system.h) has every body at rest;
+//   weakly_stable:   some solution has every body at rest and some has not;
+//   unstable:        no solution has every body at rest.
+// A resting solution is one LP (vdot = 0). The moving solutions of a mode are the solutions of its system with the
+// energy row g^T vdot > 0 (assembly_system.h), n..n included (a body may pivot about a single rolling contact).
+// The modes are not listed (4^k strings, their kinematically feasible ones growing like k^(3N)): a depth-first walk
+// over the contacts keeps the loads' Newton-Euler rows and the energy row in every partial system (the later
+// contacts relaxed) and stops at a prefix whose system is infeasible, with its Motzkin certificate. Under gravity
+// alone a structure whose every allowed acceleration lowers no com has an infeasible root: one LP after the resting
+// one.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "exact/arith.h"
+#include "exact/deadline.h"
+#include "solvers/assembly/assembly_system.h"
+
+namespace contactcert::solvers::assembly {
+
+enum class AssemblyVerdict { kStronglyStable, kWeaklyStable, kUnstable };
+const char* verdict_name(AssemblyVerdict v);
+
+/// kDecided, or the budget that ran out first (then `verdict` is not decided unless it is kUnstable): the walk's
+/// nodes, its time, or an LP's pivots (exact::BudgetExceeded from the simplex).
+enum class AssemblyStatus { kDecided, kNodeLimit, kTimeLimit, kLpLimit };
+const char* status_name(AssemblyStatus s);
+
+/// A solution of the model: its mode (one letter s l r n per contact), every body's acceleration
+/// (vdot_0..vdot_{N-1}, 3 each) and the contact forces (c_1n..c_kn, c_1t..c_kt).
+struct AssemblyMotion {
+  std::string mode;
+  Vec<Q> acceleration;
+  Vec<Q> forces;
+};
+
+/// A prefix (letters s l r n for the first contacts) whose system, the later contacts `*`, has no solution.
+struct AssemblyDeadPrefix {
+  std::string prefix;
+  Vec<Q> motzkin;  ///< a Motzkin certificate of assembly_system(model, prefix + "*"...)
+};
+
+struct AssemblyStabilityResult {
+  AssemblyStatus status = AssemblyStatus::kDecided;
+  AssemblyVerdict verdict = AssemblyVerdict::kUnstable;  ///< meaningful when status is kDecided
+  bool has_resting = false;
+  Vec<Q> resting_forces;  ///< a resting solution (c_1n..c_kn, c_1t..c_kt), if has_resting
+  Vec<Q> resting_farkas;  ///< unstable: a Motzkin certificate of the resting system
+  bool has_moving = false;
+  AssemblyMotion moving;                 ///< weakly stable (and unstable when found): a moving solution
+  std::vector<AssemblyDeadPrefix> dead;  ///< strongly stable: they cover every mode
+  long nodes = 0;                        ///< prefixes visited, the empty one included
+  long lps = 0;                          ///< LPs solved (a prefix its parent's point already meets needs none)
+  std::string covered;                   ///< on a limit: how far the walk got
+};
+
+struct AssemblyStabilityOptions {
+  exact::Arith arith = exact::Arith::kVerified;
+  long max_nodes = 1L << 20;   ///< prefixes visited at most; beyond: status kNodeLimit
+  exact::Deadline deadline{};  ///< tested at every prefix; expired: status kTimeLimit
+};
+
+/// The verdict of assembly `a` under its loads, with its evidence.
+AssemblyStabilityResult assembly_stability(const geometry::Assembly& a, const AssemblyStabilityOptions& options = {});
+
+}  // namespace contactcert::solvers::assembly
