@@ -1,12 +1,13 @@
-// Memory of the command-line process. Exact arithmetic makes and drops millions of small numbers (a rational's
-// denominator is one limb, most numerators one or two), and GMP asks its allocator for every one: blocks of up to
-// kPooledBytes come from per-thread free lists, one per size in limbs, carved from 64 KiB slabs; larger blocks from
-// malloc. Out of memory throws std::bad_alloc (GMP's default functions abort), which the CLI reports as exit 3.
+// Memory of a contactcert process (the CLI, the benchmarks, the Python module). Exact arithmetic makes and drops
+// millions of small numbers (a rational's denominator is one limb, most numerators one or two), and GMP asks its
+// allocator for every one: blocks of up to kPooledBytes come from per-thread free lists, one per size in limbs, carved
+// from 64 KiB slabs; larger blocks from malloc. Out of memory throws std::bad_alloc (GMP's default functions abort),
+// which the CLI reports as exit 3.
 #pragma once
 
 #include <cstddef>
 
-namespace contactcert::cli {
+namespace contactcert::runtime {
 
 /// Largest block served from the free lists (8 limbs); a freed block is kept for the next request of its size.
 inline constexpr std::size_t kPooledBytes = 64;
@@ -25,4 +26,4 @@ void use_pooled_gmp_memory();
 /// touches are ever backed.
 void keep_heap_until_exit();
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::runtime

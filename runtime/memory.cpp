@@ -1,4 +1,4 @@
-#include "cli/memory.h"
+#include "runtime/memory.h"
 
 #include <gmp.h>
 #include <malloc.h>
@@ -12,7 +12,7 @@
 #include <limits>
 #include <new>
 
-namespace contactcert::cli {
+namespace contactcert::runtime {
 namespace {
 
 constexpr std::size_t kGrain = sizeof(mp_limb_t);         // block sizes are whole limbs
@@ -101,4 +101,4 @@ void keep_heap_until_exit() {
   heap_on_huge_pages();
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::runtime
