@@ -15,6 +15,13 @@ inline constexpr std::size_t kPooledBytes = 64;
 /// Makes GMP, and MPFR through it, allocate with these functions (before any GMP number is made).
 void use_pooled_gmp_memory();
 
+/// For a library loaded into a process it does not own (the Python module): use_pooled_gmp_memory() if GMP still
+/// allocates with its default functions, i.e. no other library in the process has replaced them (else nothing);
+/// returns whether it did. Numbers made before stay valid: the default functions allocate with malloc, as these do
+/// above kPooledBytes, and a smaller block freed here joins a free list. A library that replaces GMP's functions
+/// later (Sage, python-gmp) would free pooled blocks with its own: it cannot share the process.
+bool use_pooled_gmp_memory_if_default();
+
 /// glibc gives the top of the heap back to the system once 128 KiB are free there, and serves large blocks from mmap:
 /// a search that makes and drops one LP tableau after another then pays page faults for the same memory each time
 /// (a jammed nc = 40 problem: 479 heap resizes and 4 times the solve time). The process keeps its heap until it
