@@ -13,6 +13,7 @@
 #include <random>
 
 #include "geometry/scene_json.h"
+#include "runtime/scenes.h"
 #include "solvers/design/ranking.h"
 
 namespace {
@@ -21,7 +22,8 @@ using namespace contactcert;
 using solvers::DesignProblem;
 
 DesignProblem pawl(long n) {
-  const geometry::PlanarScene scene = geometry::load_planar_scene(CONTACTCERT_SCENES_DIR "/design_ratchet_pawl.json");
+  const geometry::PlanarScene scene =
+      geometry::load_planar_scene(runtime::bundled_scenes_dir() + "/design_ratchet_pawl.json");
   DesignProblem p;
   p.workpiece = scene.workpiece;
   p.mu_s = scene.fixels.front().mu_s;

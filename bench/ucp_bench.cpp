@@ -18,7 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/memory.h"
+#include "runtime/memory.h"
+#include "runtime/scenes.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/solve.h"
 
@@ -139,7 +140,7 @@ std::vector<Case> paper_cases(int last) {
   for (int k = 1; k <= last; ++k)
     cases.push_back(
         {"Data Set " + std::to_string(k),
-         load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json")});
+         load_ucp_problem(runtime::bundled_scenes_dir() + "/pang1994_dataset" + std::to_string(k) + ".json")});
   return cases;
 }
 
@@ -203,8 +204,8 @@ void recovery_table(int repeats) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  contactcert::cli::keep_heap_until_exit();
-  contactcert::cli::use_pooled_gmp_memory();
+  contactcert::runtime::keep_heap_until_exit();
+  contactcert::runtime::use_pooled_gmp_memory();
   if (argc > 1 && std::strcmp(argv[1], "--recovery") == 0) {
     recovery_table(argc > 2 ? std::atoi(argv[2]) : 7);
     return 0;

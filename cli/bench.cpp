@@ -9,7 +9,7 @@
 #include <memory>
 #include <optional>
 
-#include "bench/families/rungs.h"
+#include "cli/bench/rungs.h"
 #include "cli/bench_report.h"
 #include "cli/command.h"
 #include "cli/progress_line.h"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/families/rungs.h"
+#include "cli/bench/rungs.h"
 #include "cli/json_out.h"
 
 namespace contactcert::cli {

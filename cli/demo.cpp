@@ -24,6 +24,7 @@
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "runtime/scenes.h"
 #include "solvers/insertion/insertion.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
@@ -39,22 +40,9 @@ namespace fs = std::filesystem;
 using exact::Q;
 
 struct DemoOptions {
-  std::string scenes;  ///< empty: the bundled scenes (bundled_scenes_dir)
+  std::string scenes;  ///< empty: the bundled scenes (runtime::bundled_scenes_dir)
   std::string out = "contactcert-out";
 };
-
-/// The bundled paper scenes: an installed data folder beside the executable (<prefix>/bin/contactcert ->
-/// <prefix>/share/contactcert/scenes), else the source tree's scenes/ the executable was built from.
-std::string bundled_scenes_dir() {
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec)
-    for (const char* rel : {"../share/contactcert/scenes", "scenes"}) {
-      const fs::path p = (exe.parent_path() / rel).lexically_normal();
-      if (fs::exists(p / "pang1994_dataset1.json", ec)) return p.string();
-    }
-  return CONTACTCERT_SCENES_DIR;
-}
 
 /// True when every named file is in the scenes folder (a section of the paper report runs only then).
 bool has(const DemoOptions& o, std::initializer_list<const char*> files) {
@@ -301,7 +289,7 @@ void own_scenes(const DemoOptions& o, HtmlReport& rep) {
 
 int run_demo(const DemoOptions& options) {
   DemoOptions o = options;
-  if (o.scenes.empty()) o.scenes = bundled_scenes_dir();
+  if (o.scenes.empty()) o.scenes = runtime::bundled_scenes_dir();
   if (!fs::is_directory(o.scenes)) throw exact::InputError(o.scenes, "", "the scenes folder does not exist");
   create_output_dir(o.out);
   const auto t0 = std::chrono::steady_clock::now();

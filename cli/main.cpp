@@ -3,7 +3,7 @@
 // written, an INVALID certificate), 3 budget exceeded (also: out of memory, a float run that cannot decide).
 //
 // Out of memory, in GMP as elsewhere, is exit 3 "out of memory": GMP allocates through functions that throw
-// std::bad_alloc (its default ones abort; cli/memory.h).
+// std::bad_alloc (its default ones abort; runtime/memory.h).
 //
 // --time-limit: commands with a search loop (ucp) test the deadline between units of work and end with
 // `unknown`, exit 3 and what they covered. As a backstop for every command, a watchdog thread ends the
@@ -17,9 +17,9 @@
 #include <string>
 
 #include "cli/command.h"
-#include "cli/memory.h"
 #include "cli/option_checks.h"
 #include "exact/input_error.h"
+#include "runtime/memory.h"
 
 #ifndef CONTACTCERT_VERSION
 #define CONTACTCERT_VERSION "unknown"
@@ -56,8 +56,8 @@ double no_time_limit = 0;  // --time-limit of the subcommands that do not regist
 
 int main(int argc, char** argv) {
   using namespace contactcert;
-  cli::keep_heap_until_exit();
-  cli::use_pooled_gmp_memory();
+  runtime::keep_heap_until_exit();
+  runtime::use_pooled_gmp_memory();
   CLI::App app{"contactcert " CONTACTCERT_VERSION
                ": exact answers for planar rigid bodies in frictional contact.\n"
                "Quasistatic contact problems (Pang, Trinkle, Lo 1994) solved or proven jammed; wrench cones, strong\n"

@@ -1,9 +1,10 @@
-// One list of the LP layer's templates (simplex, tableau, linear algebra, tangent cone, adjacent vertices)
-// declared `extern` for a number type of the precision ladder, so that every file including the number
-// type's header uses the one instantiation compiled in exact/ instead of compiling its own.
+// One list of the LP layer's templates (simplex, tableau, linear algebra, double description, tangent cone,
+// adjacent vertices) declared `extern` for a number type of the precision ladder, so that every file including
+// the number type's header uses the one instantiation compiled in exact/ instead of compiling its own.
 #pragma once
 
 #include "exact/adjacent_vertices.h"
+#include "exact/double_description.h"
 #include "exact/linalg.h"
 #include "exact/lp_problem.h"
 #include "exact/simplex.h"
@@ -15,6 +16,7 @@
   extern template LpResult<T> solve_lp_from_tableau<T>(const LpProblem<T>&, SimplexTableau<T>, const LpOptions&); \
   CONTACTCERT_LINALG_EXTERN(T)                                                                                    \
   extern template OrthantConeRays<T> orthant_cone_rays<T>(const Mat<T>&, long);                                   \
+  CONTACTCERT_DD_RING_EXTERN(T)                                                                                   \
   extern template struct AdjacentResult<T>;                                                                       \
   extern template AdjacentResult<T> adjacent_vertices<T>(const LpProblem<T>&, const std::vector<Eigen::Index>&,   \
                                                          const AdjacencyOptions&);

@@ -1,114 +1,41 @@
 #include "exact/tangent_cone.h"
 
-#include <bit>
-#include <cstdint>
+#include <algorithm>
 
-#include "exact/field_ops.h"
+#include "exact/double_description.h"
+#include "exact/fraction_free.h"
 #include "exact/interval_number.h"
 #include "exact/mpfr_number.h"
 
 namespace contactcert::exact {
 
-namespace {
-
-using Index = Eigen::Index;
-using Bits = std::vector<std::uint64_t>;
-
-template <class T>
-struct Ray {
-  std::vector<T> w;
-  Bits zero;  // constraints tight at the ray: bit j < p for w_j >= 0, bit p + i for row i of G
-};
-
-void set(Bits& b, Index i) { b[static_cast<size_t>(i / 64)] |= std::uint64_t(1) << (i % 64); }
-
-template <class T>
-void scale_first_to_one(std::vector<T>& w) {
-  for (const T& x : w) {
-    if (exact::is_zero(x)) continue;
-    const T inv = T(1) / (exact::sign(x) > 0 ? x : T(-x));
-    for (T& y : w) mul_by(y, inv);
-    return;
-  }
-}
-
-}  // namespace
-
+// The one double description (double_description.h) started from the orthant, the rows of G as given, in the
+// ring of T: the rays come in the order of Motzkin's iteration on the orthant (the order in which the UCP
+// search visits the adjacent vertices). A ring ray is a positive multiple of the field ray.
 template <class T>
 OrthantConeRays<T> orthant_cone_rays(const Mat<T>& G, long max_rays) {
-  const Index p = G.cols(), k = G.rows();
-  const size_t words = static_cast<size_t>((p + k + 63) / 64);
-  std::vector<Ray<T>> rays;
-  for (Index j = 0; j < p; ++j) {
-    Ray<T> r{std::vector<T>(static_cast<size_t>(p), T(0)), Bits(words, 0)};
-    r.w[static_cast<size_t>(j)] = T(1);
-    for (Index l = 0; l < p; ++l)
-      if (l != j) set(r.zero, l);
-    rays.push_back(std::move(r));
-  }
+  const Eigen::Index p = G.cols();
+  DdBudget budget;
+  budget.max_rays = static_cast<std::size_t>(std::max(max_rays, 0L));
   OrthantConeRays<T> out;
-  T tmp;
-  Bits common(words);
-  for (Index i = 0; i < k; ++i) {
-    // Constraint g w <= 0: rays with g r > 0 leave; pairs (positive, negative) that are adjacent give new rays.
-    std::vector<T> val(rays.size());
-    std::vector<size_t> pos, neg;
-    for (size_t a = 0; a < rays.size(); ++a) {
-      T v = T(0);
-      for (Index j = 0; j < p; ++j)
-        if (!exact::is_zero(rays[a].w[static_cast<size_t>(j)]))
-          sub_mul(v, T(-G(i, j)), rays[a].w[static_cast<size_t>(j)], tmp);
-      const int s = exact::sign(v);
-      if (s > 0) pos.push_back(a);
-      if (s < 0) neg.push_back(a);
-      if (s == 0) set(rays[a].zero, p + i);
-      val[a] = v;
-    }
-    if (pos.empty()) continue;
-    std::vector<Ray<T>> next;
-    for (size_t a = 0; a < rays.size(); ++a)
-      if (!exact::is_positive(val[a])) next.push_back(rays[a]);
-    for (size_t a : pos) {
-      for (size_t b : neg) {
-        long count = 0;
-        for (size_t w = 0; w < words; ++w) {
-          common[w] = rays[a].zero[w] & rays[b].zero[w];
-          count += std::popcount(common[w]);
-        }
-        if (count < p - 2) continue;
-        bool adjacent = true;
-        for (size_t c = 0; c < rays.size() && adjacent; ++c) {
-          if (c == a || c == b) continue;
-          bool contains = true;
-          for (size_t w = 0; w < words && contains; ++w) contains = (rays[c].zero[w] & common[w]) == common[w];
-          adjacent = !contains;
-        }
-        if (!adjacent) continue;
-        // val_a * r_b - val_b * r_a has g . r = 0 and positive coefficients.
-        Ray<T> r{std::vector<T>(static_cast<size_t>(p), T(0)), common};
-        for (Index j = 0; j < p; ++j) {
-          T& x = r.w[static_cast<size_t>(j)];
-          if (!exact::is_zero(rays[b].w[static_cast<size_t>(j)]))
-            sub_mul(x, T(-val[a]), rays[b].w[static_cast<size_t>(j)], tmp);
-          if (!exact::is_zero(rays[a].w[static_cast<size_t>(j)]))
-            sub_mul(x, val[b], rays[a].w[static_cast<size_t>(j)], tmp);
-          if (exact::is_zero(x)) x = T(0);
-        }
-        scale_first_to_one(r.w);
-        set(r.zero, p + i);
-        next.push_back(std::move(r));
-        if (static_cast<long>(next.size()) > max_rays) {
-          out.status = ConeStatus::kBudgetExceeded;
-          return out;
-        }
-      }
-    }
-    rays = std::move(next);
+  Mat<T> W;
+  try {
+    W = with_exact_ring<T>(
+        [&]<class R>() { return ring::to_field_rows<T>(orthant_rays<R>(ring::to_ring_rows<R>(G), p, budget), p); });
+  } catch (const BudgetExceeded&) {
+    out.status = ConeStatus::kBudgetExceeded;
+    return out;
   }
-  for (Ray<T>& r : rays) {
-    Vec<T> v(p);
-    for (Index j = 0; j < p; ++j) v(j) = r.w[static_cast<size_t>(j)];
-    out.rays.push_back(std::move(v));
+  for (Eigen::Index r = 0; r < W.rows(); ++r) {
+    Vec<T> w = W.row(r).transpose();
+    for (Eigen::Index j = 0; j < p; ++j) {
+      if (is_zero(w(j))) continue;
+      if (w(j) == T(1)) break;
+      const T first = w(j);
+      for (Eigen::Index l = j; l < p; ++l) w(l) /= first;  // entries before j are 0; w(j) becomes 1
+      break;
+    }
+    out.rays.push_back(std::move(w));
   }
   return out;
 }

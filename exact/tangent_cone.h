@@ -1,6 +1,6 @@
-// Extreme rays of the cone {w in R^p : w >= 0, G w <= 0} by the double description method (Motzkin et al.,
-// as described by Fukuda and Prodon), written once over T. This is the tangent cone of a degenerate vertex in
-// the non-basic coordinates of one of its bases (adjacent_vertices.h).
+// Extreme rays of the cone {w in R^p : w >= 0, G w <= 0}, by the one double description engine
+// (double_description.h) in the ring of T. This is the tangent cone of a degenerate vertex in the non-basic
+// coordinates of one of its bases (adjacent_vertices.h).
 #pragma once
 
 #include <vector>
@@ -17,8 +17,9 @@ struct OrthantConeRays {
   std::vector<Vec<T>> rays;  ///< the extreme rays, each scaled so that its first non-zero entry is 1
 };
 
-/// The extreme rays of {w >= 0 : G w <= 0} (G is k x p; a pointed cone). Budget: at most max_rays
-/// intermediate rays, else status kBudgetExceeded and no rays.
+/// The extreme rays of {w >= 0 : G w <= 0} (G is k x p; a pointed cone), in the order of the double
+/// description on the orthant's rays e_1, ..., e_p with the rows of G added in order. Budget: at most max_rays
+/// rays held at once (DdBudget::max_rays), else status kBudgetExceeded and no rays.
 template <class T>
 OrthantConeRays<T> orthant_cone_rays(const Mat<T>& G, long max_rays);
 

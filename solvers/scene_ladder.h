@@ -9,18 +9,33 @@
 #pragma once
 
 #include "exact/ladder_numbers.h"
+#include "exact/strict_feasibility.h"
 #include "geometry/canonical.h"
+#include "geometry/double_description.h"
+#include "geometry/nnc_cone.h"
+#include "geometry/projection.h"
+#include "solvers/stability/mode_tree.h"
+#include "solvers/stability/motion_system.h"
 #include "solvers/stability/strong_stability.h"
+#include "solvers/wrench_cone/cone_form.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 
 #define CONTACTCERT_SCENE_LADDER_EXTERN(T)                                                                           \
   namespace contactcert::exact {                                                                                     \
+  extern template struct SparseStrictSystem<T>;                                                                      \
   extern template class StrictSolver<T>;                                                                             \
   extern template StrictFeasibility<T> strict_feasibility<T>(const SparseStrictSystem<T>&, Arith);                   \
   }                                                                                                                  \
   namespace contactcert::geometry {                                                                                  \
   extern template FaceCone<T> to_face<T>(const SpanCone<T>&, const DdBudget&);                                       \
   extern template SpanCone<T> to_span<T>(const FaceCone<T>&, const DdBudget&);                                       \
+  extern template ConePair<T> both_forms<T>(const SpanCone<T>&, const DdBudget&);                                    \
+  extern template ConePair<T> both_forms<T>(const FaceCone<T>&, const DdBudget&);                                    \
+  extern template bool identical<T>(const FaceCone<T>&, const FaceCone<T>&);                                         \
+  extern template bool identical<T>(const SpanCone<T>&, const SpanCone<T>&);                                         \
+  extern template bool contains_point<T>(const FaceCone<T>&, const Vec<T>&);                                         \
+  extern template PointPosition<T> locate<T>(const FaceCone<T>&, const Vec<T>&);                                     \
+  extern template AffineFace<T> theorem1<T>(const Mat<T>&, const Mat<T>&, const Vec<T>&, const DdBudget&);           \
   extern template SpanCone<T> canonical<T>(const SpanCone<T>&);                                                      \
   extern template FaceCone<T> canonical<T>(const FaceCone<T>&);                                                      \
   extern template struct NncForm<T>;                                                                                 \
@@ -30,7 +45,22 @@
   }                                                                                                                  \
   namespace contactcert::solvers {                                                                                   \
   extern template ContactModel<T> contact_model<T>(const geometry::PlanarScene&);                                    \
+  extern template ModeMatrices<T> mode_matrices<T>(const geometry::PlanarScene&, const ModeString&);                 \
   extern template ConeForm<T> cone_form<T>(const geometry::PlanarScene&, const ContactModel<T>&, const ModeString&); \
+  extern template geometry::FaceCone<T> wrench_cone_face<T>(const geometry::PlanarScene&, const ContactModel<T>&,    \
+                                                            const ModeString&, Route, const geometry::DdBudget&,     \
+                                                            Preconditioning);                                        \
+  extern template bool is_empty_cone<T>(const geometry::FaceCone<T>&);                                               \
+  extern template geometry::AffineFace<T> wrench_set_with_minimum_acceleration<T>(const geometry::PlanarScene&,      \
+                                                                                  const ModeString&, const Q&,       \
+                                                                                  const geometry::DdBudget&);        \
+  extern template MotionModel<T> motion_model<T>(const geometry::PlanarScene&);                                      \
+  extern template exact::SparseStrictSystem<T> kinematic_system<T>(const MotionModel<T>&, const ModeString&,         \
+                                                                   const KinematicRules&);                           \
+  extern template struct MotionSystem<T>;                                                                            \
+  extern template ModeTree<T> walk_modes<T>(const MotionModel<T>&, const ModeAlphabet&, const ModeTreeOptions&,      \
+                                            const OnMode<T>&);                                                       \
+  extern template bool realises<T>(const MotionModel<T>&, const KinematicRules&, const Vec<T>&, const ModeString&);  \
   extern template WrenchCone<T> wrench_cone<T>(const geometry::PlanarScene&, const ModeString&, Route,               \
                                                const geometry::DdBudget&, Preconditioning);                          \
   extern template MotionSystem<T> motion_system<T>(const MotionModel<T>&, const ModeString&, bool);                  \

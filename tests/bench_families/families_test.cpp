@@ -1,13 +1,13 @@
 // The hard-case families of `contactcert bench`: deterministic per seed, valid instances, the verified rung
 // never disagreeing with the exact one, and error measures that are zero exactly when they should be.
-#include "bench/families/families.h"
+#include "cli/bench/families.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
 
-#include "bench/families/rungs.h"
+#include "cli/bench/rungs.h"
 #include "exact/rational_text.h"
 #include "geometry/contact_frame.h"
 

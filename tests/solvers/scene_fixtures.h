@@ -6,12 +6,13 @@
 
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "runtime/scenes.h"
 
 namespace contactcert::solvers::testing {
 
-/// scenes/<name> with mu_s = mu_k = mu at every fixel (needs CONTACTCERT_SCENES_DIR).
+/// scenes/<name> with mu_s = mu_k = mu at every fixel (runtime/scenes.h).
 inline geometry::PlanarScene scene_with_mu(const std::string& name, const char* mu) {
-  auto s = geometry::load_planar_scene(std::string(CONTACTCERT_SCENES_DIR "/") + name);
+  auto s = geometry::load_planar_scene((contactcert::runtime::bundled_scenes_dir() + "/") + name);
   for (auto& f : s.fixels) f.mu_s = f.mu_k = exact::parse_rational(mu);
   return s;
 }

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "geometry/scene_json.h"
+#include "runtime/scenes.h"
 #include "solvers/stability/strong_stability.h"
 #include "tests/solvers/assembly/assembly_fixtures.h"
 
@@ -57,7 +58,7 @@ TEST(AssemblyCheck, OneBodyAgreesWithTheSingleBodySolverOnTheBundledScenes) {
   for (const char* name :
        {"bt2002_fig4a_lla.json", "bt2002_fig4b_nnn.json", "bt2002_fig4c_peg_lra.json", "bt2002_fig4d_peg_nn.json",
         "bt2002_section4_disk.json", "bt2002_section7_disk.json", "bt2002_fig10_pentagon_insert.json"}) {
-    const geometry::PlanarScene scene = geometry::load_planar_scene(std::string(CONTACTCERT_SCENES_DIR "/") + name);
+    const geometry::PlanarScene scene = geometry::load_planar_scene(runtime::bundled_scenes_dir() + "/" + name);
     for (int w = 0; w < 12; ++w) {
       Vec<Q> g(3);
       g(2) = d(rng);

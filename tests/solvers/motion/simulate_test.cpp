@@ -11,6 +11,7 @@
 
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
+#include "runtime/scenes.h"
 #include "solvers/motion/compare.h"
 #include "solvers/ucp/certificate.h"
 
@@ -397,7 +398,7 @@ namespace contactcert::solvers::motion {
 namespace {
 
 TEST(BundledScene, PushedBoxTipsForFiveSteps) {
-  const MotionScene scene = read_motion_scene(exact::JsonInput::load(CONTACTCERT_SCENES_DIR "/motion_pushed_box.json"));
+  const MotionScene scene = read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_pushed_box.json"));
   const Trajectory<Q> run = simulate<Q>(scene, exact_options());
   ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
   ASSERT_EQ(run.steps.size(), 5u);

@@ -12,6 +12,7 @@
 #include "exact/json_input.h"
 #include "geometry/nnc_cone.h"
 #include "geometry/scene_json.h"
+#include "runtime/scenes.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
@@ -154,7 +155,7 @@ TEST(ModeTree, RandomStabilityVerdictsRegionsAndCertificatesEqualThe4ToTheKRoute
 
 TEST(ModeTree, EveryBundledPlanarSceneGivesTheModesVerdictsAndRegionOfThe4ToTheKRoute) {
   int planar = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(CONTACTCERT_SCENES_DIR)) {
+  for (const auto& entry : std::filesystem::directory_iterator(contactcert::runtime::bundled_scenes_dir())) {
     const std::string text = exact::JsonInput::read_text(entry.path().string());
     if (text.find("\"planar\"") == std::string::npos) continue;
     const geometry::PlanarScene scene = parse(text);
@@ -390,7 +391,7 @@ TEST(ModeTree, TheIterativeWalkListsWhatTheRecursiveOneDidInItsOrder) {
     const std::string text = random_scene(rng, 1 + static_cast<std::size_t>(rng() % 5));
     for (bool unions : {false, true}) expect_recursive_order(parse(text), unions, t % 2 == 1, text);
   }
-  for (const auto& entry : std::filesystem::directory_iterator(CONTACTCERT_SCENES_DIR)) {
+  for (const auto& entry : std::filesystem::directory_iterator(runtime::bundled_scenes_dir())) {
     const std::string text = exact::JsonInput::read_text(entry.path().string());
     if (text.find("\"planar\"") == std::string::npos) continue;
     for (bool unions : {false, true})

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/scenes.h"
 #include "tests/solvers/scene_fixtures.h"
 
 namespace contactcert::solvers {
@@ -105,7 +106,7 @@ TEST(SceneLadder, PapersConesAtEveryRung) {
                                                        {"bt2002_fig4d_peg_nn.json", "nn"}};
   for (const auto& [file, text] : cones) {
     SCOPED_TRACE(file);
-    const auto scene = geometry::load_planar_scene(std::string(CONTACTCERT_SCENES_DIR "/") + file);
+    const auto scene = geometry::load_planar_scene((contactcert::runtime::bundled_scenes_dir() + "/") + file);
     std::vector<bool> touching;
     for (const auto& f : scene.fixels) touching.push_back(f.frame.touching());
     const ModeParse p = parse_mode(text, touching);

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "../scene_fixtures.h"
+#include "runtime/scenes.h"
 
 namespace contactcert::solvers {
 namespace {
@@ -50,7 +51,7 @@ TEST(StrongCones, MaximalConesWhoseUnionIsTheStronglyStableSet) {
   for (const char* name : {"bt2002_section7_disk.json", "bt2002_fig10_pentagon_insert.json", "bt2002_fig4a_lla.json",
                            "bt2002_fig4c_peg_lra.json"}) {
     SCOPED_TRACE(name);
-    const auto scene = geometry::load_planar_scene(std::string(CONTACTCERT_SCENES_DIR "/") + name);
+    const auto scene = geometry::load_planar_scene((contactcert::runtime::bundled_scenes_dir() + "/") + name);
     const auto region = stable_region<Q>(scene);
     const auto cones = strongly_stable_cones(region);
     std::vector<std::string> signs;

@@ -8,11 +8,12 @@
 #include <string>
 
 #include "exact/input_error.h"
+#include "runtime/scenes.h"
 
 namespace contactcert::solvers::ucp {
 namespace {
 
-const std::string kScenes = CONTACTCERT_SCENES_DIR "/";
+const std::string kScenes = contactcert::runtime::bundled_scenes_dir() + "/";
 
 TEST(SceneBuilder, DataSetsOneToFourAsGeometryGiveThePapersMatrices) {
   for (int ds = 1; ds <= 4; ++ds) {

@@ -8,6 +8,7 @@
 #include "exact/integer_system.h"
 #include "exact/json_input.h"
 #include "exact/rounded_check.h"
+#include "runtime/scenes.h"
 #include "solvers/ucp/certificate.h"
 #include "solvers/ucp/face_lp.h"
 #include "solvers/ucp/farkas_rounding.h"
@@ -208,8 +209,8 @@ TEST(UcpAdaptive, PaperDataSetsAreDecidedInDoubleWithoutARepairedLeaf) {
   // rows, a phase-1 residual of rounding size called a non-empty face empty (with a zero Farkas vector) and
   // the adaptive check had to repair that leaf with an exact search.
   for (int k = 1; k <= 4; ++k) {
-    const UcpProblem p =
-        load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json");
+    const UcpProblem p = load_ucp_problem(contactcert::runtime::bundled_scenes_dir() + "/pang1994_dataset" +
+                                          std::to_string(k) + ".json");
     const std::string what = "Data Set " + std::to_string(k);
     expect_certified_like_exact(p, what);
     const UcpReport a = solve(p, Arith::kAdaptive);
@@ -255,7 +256,7 @@ TEST(UcpAdaptive, ALeafIsProvenFromItsFloatLpBasisWhenRoundingFails) {
 TEST(UcpAdaptive, VertexOfDataSet1IsSolvedIn128BitsWithoutOverflow) {
   // X of Data Set 1 has rows of size 3e8 (b scaled by 50): Cramer's rule by back substitution needed 136-bit
   // products; after dividing out column contents the fraction-free Gauss-Jordan stays within 66 bits.
-  const UcpProblem p = load_ucp_problem(std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset1.json");
+  const UcpProblem p = load_ucp_problem(contactcert::runtime::bundled_scenes_dir() + "/pang1994_dataset1.json");
   const std::vector<Eigen::Index> support{2, 6, 8};
   std::optional<Vec<Q>> x;
   ASSERT_NO_THROW(x = exact::unique_solution(exact::integer_system<exact::Int128>(p.ucp().X.A, p.ucp().X.b, support)));

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "exact/json_input.h"
+#include "runtime/scenes.h"
 #include "solvers/ucp/certificate.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/search.h"
@@ -12,7 +13,7 @@ namespace contactcert::solvers::ucp {
 namespace {
 
 std::string scene(int k) {
-  return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json";
+  return contactcert::runtime::bundled_scenes_dir() + "/pang1994_dataset" + std::to_string(k) + ".json";
 }
 
 CertificateCheck check_text(const std::string& text) {

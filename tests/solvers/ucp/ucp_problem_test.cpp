@@ -9,6 +9,7 @@
 #include "exact/linalg.h"
 #include "exact/mpfr_number.h"
 #include "exact/rational_text.h"
+#include "runtime/scenes.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/problem.h"
 #include "tests/solvers/ucp/random_problems.h"
@@ -20,7 +21,7 @@ using exact::InputError;
 using exact::JsonInput;
 
 std::string scene(int k) {
-  return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json";
+  return contactcert::runtime::bundled_scenes_dir() + "/pang1994_dataset" + std::to_string(k) + ".json";
 }
 
 Q frac(long a, long b) {

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "exact/linalg.h"
+#include "runtime/scenes.h"
 #include "solvers/ucp/bilinear.h"
 #include "solvers/ucp/recovery.h"
 #include "solvers/ucp/solve.h"
@@ -18,7 +19,7 @@ using exact::Z;
 using Index = Eigen::Index;
 
 std::string scene(int k) {
-  return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json";
+  return contactcert::runtime::bundled_scenes_dir() + "/pang1994_dataset" + std::to_string(k) + ".json";
 }
 
 /// PhysicalSolution's vectors as Eigen vectors over Q, for the reference and for corrupting solutions.

@@ -2,6 +2,7 @@
 
 #include <random>
 
+#include "runtime/scenes.h"
 #include "solvers/ucp/bilinear.h"
 #include "solvers/ucp/enumerate.h"
 #include "solvers/ucp/generate.h"
@@ -14,7 +15,7 @@ namespace contactcert::solvers::ucp {
 namespace {
 
 std::string scene(int k) {
-  return std::string(CONTACTCERT_SCENES_DIR) + "/pang1994_dataset" + std::to_string(k) + ".json";
+  return contactcert::runtime::bundled_scenes_dir() + "/pang1994_dataset" + std::to_string(k) + ".json";
 }
 
 bool in_polyhedron(const StandardPolyhedron<Q>& P, const Vec<Q>& x) {

@@ -9,6 +9,7 @@
 #include "exact/linalg.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "runtime/scenes.h"
 #include "solvers/wrench_cone/cone_form.h"
 
 namespace contactcert::solvers {
@@ -18,7 +19,7 @@ using exact::Z;
 using geometry::PlanarScene;
 
 PlanarScene section4_scene() {
-  return geometry::load_planar_scene(CONTACTCERT_SCENES_DIR "/bt2002_section4_disk.json");
+  return geometry::load_planar_scene(contactcert::runtime::bundled_scenes_dir() + "/bt2002_section4_disk.json");
 }
 
 Mat<Q> mat(std::initializer_list<std::initializer_list<const char*>> rows) {
@@ -95,7 +96,7 @@ TEST(ConeForm, DirectKEqualsTheLiteralProductECNRSVOnEveryModeOfSeveralScenes) {
                          "/bt2002_fig4b_nnn.json"};
   int checked = 0;
   for (const char* file : files) {
-    const PlanarScene s = geometry::load_planar_scene(std::string(CONTACTCERT_SCENES_DIR) + file);
+    const PlanarScene s = geometry::load_planar_scene(contactcert::runtime::bundled_scenes_dir() + file);
     const ContactModel<Q> m = contact_model<Q>(s);
     const std::size_t n = s.fixels.size();
     // Every mode: odometer over the letters that fit each fixel.
@@ -172,7 +173,8 @@ TEST(Modes, ParseValidatesLettersAgainstTheTouchingState) {
 TEST(Model, FloatModelIsTheExactModelUpToThePositiveScaleOfM) {
   // fig4a: unit normals, integer torques, I/m = 5/3: the exact model uses M^-1 ~ diag(5, 5, 3), the
   // float model diag(1, 1, 3/5), a factor 5 apart.
-  const PlanarScene s = geometry::load_planar_scene(CONTACTCERT_SCENES_DIR "/bt2002_fig4a_lla.json");
+  const PlanarScene s =
+      geometry::load_planar_scene(contactcert::runtime::bundled_scenes_dir() + "/bt2002_fig4a_lla.json");
   const ContactModel<Q> e = contact_model<Q>(s);
   const ContactModel<double> d = contact_model<double>(s);
   EXPECT_EQ(s.workpiece.inertia_per_mass, Q(5, 3));

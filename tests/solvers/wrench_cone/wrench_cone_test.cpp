@@ -13,6 +13,7 @@
 #include "exact/rational_text.h"
 #include "geometry/canonical.h"
 #include "geometry/scene_json.h"
+#include "runtime/scenes.h"
 
 namespace contactcert::solvers {
 namespace {
@@ -20,7 +21,7 @@ namespace {
 using geometry::PlanarScene;
 
 PlanarScene load(const std::string& name) {
-  return geometry::load_planar_scene(std::string(CONTACTCERT_SCENES_DIR) + "/" + name);
+  return geometry::load_planar_scene(contactcert::runtime::bundled_scenes_dir() + "/" + name);
 }
 PlanarScene parse(const std::string& text) {
   return geometry::read_planar_scene(exact::JsonInput::parse(text, "test.json"));

@@ -1,4 +1,4 @@
-#include "cli/memory.h"
+#include "runtime/memory.h"
 
 #include <gmp.h>
 #include <malloc.h>
@@ -12,7 +12,14 @@
 #include <limits>
 #include <new>
 
-namespace contactcert::cli {
+// GMP's default memory functions (exported by libgmp, declared in its internal gmp-impl.h only).
+extern "C" {
+void* __gmp_default_allocate(std::size_t);
+void* __gmp_default_reallocate(void*, std::size_t, std::size_t);
+void __gmp_default_free(void*, std::size_t);
+}
+
+namespace contactcert::runtime {
 namespace {
 
 constexpr std::size_t kGrain = sizeof(mp_limb_t);         // block sizes are whole limbs
@@ -95,10 +102,21 @@ void heap_on_huge_pages() {
 
 void use_pooled_gmp_memory() { mp_set_memory_functions(allocate, reallocate, release); }
 
+bool use_pooled_gmp_memory_if_default() {
+  void* (*a)(std::size_t) = nullptr;
+  void* (*r)(void*, std::size_t, std::size_t) = nullptr;
+  void (*f)(void*, std::size_t) = nullptr;
+  mp_get_memory_functions(&a, &r, &f);
+  if (a == allocate && r == reallocate && f == release) return true;
+  if (a != __gmp_default_allocate || r != __gmp_default_reallocate || f != __gmp_default_free) return false;
+  use_pooled_gmp_memory();
+  return true;
+}
+
 void keep_heap_until_exit() {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
   heap_on_huge_pages();
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::runtime

@@ -1,4 +1,4 @@
-#include "bench/families/families.h"
+#include "cli/bench/families.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "geometry/scene_json.h"
+#include "runtime/scenes.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/wrench_cone/contact_model.h"
 
@@ -190,7 +191,7 @@ std::vector<Instance> large(double d, std::uint64_t seed) {
 /// Figure 4 (Balkcom, Trinkle), as in README.md.
 std::vector<Instance> paper(double d, std::uint64_t seed) {
   if (d != 0 || seed != 1) return {};
-  const std::string dir = CONTACTCERT_SCENES_DIR;
+  const std::string dir = runtime::bundled_scenes_dir();
   std::vector<Instance> out;
   for (int k = 1; k <= 4; ++k) {
     const std::string file = "pang1994_dataset" + std::to_string(k) + ".json";

@@ -1,4 +1,4 @@
-#include "bench/families/rungs.h"
+#include "cli/bench/rungs.h"
 
 #include <algorithm>
 #include <cmath>

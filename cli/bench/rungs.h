@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/families/families.h"
+#include "cli/bench/families.h"
 #include "exact/arith.h"
 
 namespace contactcert::bench {
