@@ -102,6 +102,7 @@ function(contactcert_install_headers source includedir out)
 endfunction()
 
 if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
+  list(APPEND CONTACTCERT_PUBLIC_HEADERS ${EXTRA_PUBLIC})  # -DEXTRA_PUBLIC=PATH: the check's own test
   contactcert_check_headers(${SOURCE})
   list(LENGTH CONTACTCERT_PUBLIC_HEADERS n_public)
   list(LENGTH CONTACTCERT_DETAIL_HEADERS n_detail)
