@@ -1,17 +1,11 @@
-// The C++ package in a few lines (docs/cpp.md): the section 4 disk's wrench cone of mode "na", the section 7
-// disk's strong stability under g = (1, -2, 0), its certificate and the independent check of it.
-// Usage: consumer SCENES_DIR (the installed PREFIX/share/contactcert/scenes).
+// The C++ package in a few lines (docs/cpp.md, which shows this file and its output): the section 4 disk's wrench
+// cone of mode "na", the section 7 disk's strong stability under g = (1, -2, 0), Data Set 4's jamming, and the
+// independent check of both certificates. Usage: consumer SCENES_DIR (the installed PREFIX/share/contactcert/scenes).
+#include <contactcert/contactcert.h>  // the whole public API; or one header, e.g. <contactcert/solvers/ucp/solve.h>
+
 #include <iostream>
 #include <string>
 #include <vector>
-
-#include "exact/input_error.h"
-#include "exact/json_input.h"
-#include "exact/rational_text.h"
-#include "geometry/scene_json.h"
-#include "solvers/stability/stability_certificate.h"
-#include "solvers/stability/strong_stability.h"
-#include "solvers/wrench_cone/wrench_cone.h"
 
 using namespace contactcert;
 
@@ -40,11 +34,20 @@ int main(int argc, char** argv) try {
   g << exact::parse_rational("1"), exact::parse_rational("-2"), exact::parse_rational("0");
   const auto r = solvers::strong_stability<exact::Q>(disk7, g);
   std::cout << "stability g = (1, -2, 0): " << solvers::verdict_name(r.verdict) << " (" << r.lps << " LPs)\n";
-
   const std::string cert = solvers::stability_certificate(text, g, r);
   const auto check = solvers::check_stability_certificate(exact::JsonInput::parse(cert, "certificate"));
   std::cout << "certificate: " << (check.valid ? "VALID" : "INVALID") << " (" << check.reason << ")\n";
-  return check.valid && r.verdict == solvers::StabilityVerdict::kStronglyStable ? 0 : 1;
+
+  // Pang, Trinkle and Lo's Data Set 4: the commanded motion jams; the search tree is the proof.
+  const solvers::ucp::UcpProblem problem = solvers::ucp::load_ucp_problem(dir + "/pang1994_dataset4.json");
+  const solvers::ucp::UcpReport ucp = solvers::ucp::solve_ucp(problem, {});
+  std::cout << "ucp dataset 4: " << solvers::ucp::status_name(ucp.status) << " (" << ucp.nodes << " nodes)\n";
+  const std::string jam = solvers::ucp::certificate_text(problem, ucp);
+  const auto jam_check = solvers::ucp::check_ucp_certificate(exact::JsonInput::parse(jam, "certificate"));
+  const bool jam_valid = jam_check.verdict == solvers::ucp::CertificateVerdict::kValid;
+  std::cout << "certificate: " << (jam_valid ? "VALID" : "INVALID") << " (" << jam_check.reason << ")\n";
+
+  return check.valid && r.verdict == solvers::StabilityVerdict::kStronglyStable && jam_valid ? 0 : 1;
 } catch (const exact::InputError& e) {
   std::cerr << "consumer: " << e.what() << "\n";
   return 2;
