@@ -23,7 +23,7 @@ def choice(value: str, allowed: tuple[str, ...], option: str) -> str:
     return value
 
 
-class Scene(FromSource):
+class Scene(FromSource[_core.Scene]):
     """A planar scene: a workpiece held by fixels. Queries run in C++ with the GIL released."""
 
     _core_type = _core.Scene

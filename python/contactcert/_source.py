@@ -4,19 +4,20 @@ from __future__ import annotations
 
 import json
 import os
-from typing import Any, TypeVar, Union
+from typing import Any, Generic, TypeVar, Union
 
 #: A file path as open() takes it.
 Path = Union[str, "os.PathLike[str]"]
-S = TypeVar("S", bound="FromSource")
+C = TypeVar("C")  # the extension class: _core.Scene or _core.Ucp
+S = TypeVar("S", bound="FromSource[Any]")
 
 
-class FromSource:
+class FromSource(Generic[C]):
     """Constructors over the extension class `_core_type` (its static load(path) and parse(text, name))."""
 
     _core_type: Any = None  # _core.Scene or _core.Ucp
 
-    def __init__(self, core: Any) -> None:  # an instance of _core_type
+    def __init__(self, core: C) -> None:
         self._core = core
 
     @classmethod

@@ -42,7 +42,7 @@ class Certificate:
         return f"Certificate({self.kind}{', ' + self.path if self.path else ''})"
 
 
-class Ucp(FromSource):
+class Ucp(FromSource[_core.Ucp]):
     """A quasistatic (or plain UCP) problem."""
 
     _core_type = _core.Ucp

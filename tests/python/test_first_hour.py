@@ -114,6 +114,51 @@ def test_stub_names_match_the_extension():
             assert public(stub_names(node.body)) == public(own), name
 
 
+def core_signature(f):
+    """A pybind11 function's parameters (name, or None for pybind11's unnamed argN; type) and return type, from
+    its docstring's signature line, spelled as the stub spells them."""
+
+    def spell(t):
+        t = t.replace("contactcert._core.", "").replace("List[", "list[").replace("Tuple[", "tuple[")
+        return re.sub(r"Optional\[(\w+)\]", r"\1 | None", t)
+
+    params, ret = re.fullmatch(r"\w+\((.*)\) -> (.*)", f.__doc__.splitlines()[0]).groups()
+    out = []
+    for p in re.split(r", (?![^\[]*\])", params) if params else []:
+        name, _, type_ = p.partition(": ")
+        unnamed = re.fullmatch(r"arg\d+", name)
+        out.append(("self", None) if name == "self" else (None if unnamed else name, spell(type_)))
+    return out, spell(ret)
+
+
+def stub_signature(node):
+    """The same for a stub's function: positional-only parameters have no name (pybind11's argN)."""
+    a = node.args
+    out = [("self", None) if p.arg == "self" else (None if p in a.posonlyargs else p.arg, ast.unparse(p.annotation))
+           for p in a.posonlyargs + a.args]
+    return out, ast.unparse(node.returns)
+
+
+def test_stub_signatures_match_the_extension():
+    checked = 0
+    for name, node in stub_names(ast.parse((PACKAGE / "_core.pyi").read_text()).body).items():
+        members = stub_names(node.body).items() if isinstance(node, ast.ClassDef) else [(None, node)]
+        for member, f in members:
+            if isinstance(f, ast.FunctionDef) and not any(ast.unparse(d) == "property" for d in f.decorator_list):
+                core = getattr(_core, name) if member is None else getattr(getattr(_core, name), member)
+                assert stub_signature(f) == core_signature(core), (name, member)
+                checked += 1
+    assert checked == 21  # every function and method of the stub
+
+
+def test_annotations_check_against_the_stub(tmp_path):
+    """mypy (Debian: python3-mypy, optional) finds the package's annotations consistent with _core.pyi."""
+    pytest.importorskip("mypy")
+    p = python("-m", "mypy", "--strict", "--no-warn-return-any", "--cache-dir", tmp_path, "-p", "contactcert",
+               cwd=PACKAGE.parent)
+    assert p.returncode == 0, p.stdout
+
+
 # -- python -m contactcert -------------------------------------------------------------------------------------
 
 
