@@ -1,6 +1,7 @@
 # Stub of the extension contactcert._core (python/core.cpp): each query returns the JSON text the CLI prints with
 # --json (and, where the CLI writes one, the certificate text, "" if none). Arguments without a keyword are
-# positional only, as pybind11 binds them. tests/python/test_first_hour.py checks these names against _core's.
+# positional only, as pybind11 binds them. tests/python/test_first_hour.py checks the names and signatures against
+# _core's docstrings, and mypy checks the package's calls against them.
 
 __version__: str
 pooled_gmp_memory: bool
