@@ -197,6 +197,7 @@ std::string check(const std::string& text, const std::string& name, const std::s
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "contactcert's C++ engine (use the package contactcert)";
+  m.attr("__version__") = CONTACTCERT_VERSION;  // the project version (python/CMakeLists.txt)
   // GMP's block allocator of the CLI (runtime/memory.h), unless another library has replaced GMP's functions: modes
   // on 32 fixels in 0.69x the time. Not the CLI's heap policy: it would keep the interpreter's heap until exit, and
   // gains nothing measurable on these queries.

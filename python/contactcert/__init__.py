@@ -3,10 +3,10 @@
 Scene (wrench cones, strong stability, stable regions, finger pushes, insertion) and Ucp (the quasistatic
 contact problem) run the same C++ code as the contactcert CLI; every result's to_dict() is the CLI's --json
 object for the same query. Exact numbers are fractions.Fraction (inputs: int, str or Fraction). See
-docs/python.md.
+docs/python.md. `python -m contactcert ARGS` runs the CLI itself.
 """
 
-from ._core import BudgetExceeded
+from ._core import BudgetExceeded, __version__
 from ._results import CheckResult, Cone, Finger, Insertion, Modes, Region, Stability, UcpResult
 from ._scene import Scene
 from ._ucp import Certificate, Ucp, check, generate_random, generate_reduction

@@ -2,6 +2,8 @@
 refuses, with a ValueError naming the option: integers are ints (no bool, float or string) within the option's
 range, and a time limit is a finite number of seconds from 0 to the CLI's limit (no nan, inf or overflow)."""
 
+from __future__ import annotations
+
 import math
 import numbers
 
@@ -9,17 +11,17 @@ from . import _core
 
 LONG_MAX = 2**63 - 1
 UINT64_MAX = 2**64 - 1
-MAX_TIME_LIMIT = _core.MAX_TIME_LIMIT
+MAX_TIME_LIMIT: float = _core.MAX_TIME_LIMIT
 
 
-def whole_number(value, lo, hi, option):
+def whole_number(value: object, lo: int, hi: int, option: str) -> int:
     """value as an int in [lo, hi], else ValueError naming the option."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral) or not lo <= int(value) <= hi:
         raise ValueError(f"{option}: expected a decimal integer from {lo} to {hi}, found {value!r}")
     return int(value)
 
 
-def seconds(value, option="--time-limit"):
+def seconds(value: object, option: str = "--time-limit") -> float:
     """value as a float number of seconds in [0, MAX_TIME_LIMIT], else ValueError naming the option."""
     v = math.nan
     if isinstance(value, numbers.Real) and not isinstance(value, bool):

@@ -1,45 +1,58 @@
 """Result classes: each holds the object the CLI prints with --json (to_dict() returns it unchanged), with
 exact numbers as Fractions, float views as numpy arrays and, where the CLI draws one, a picture."""
 
+from __future__ import annotations
+
 import copy
 import json
+from collections.abc import Callable
+from fractions import Fraction
+from typing import TYPE_CHECKING, Any
 
 from ._numbers import exact, floats
+
+if TYPE_CHECKING:
+    from numpy.typing import NDArray
+
+    from ._ucp import Certificate
+
+Vector = tuple[Fraction, ...]
+Directions = tuple[tuple[int, ...], ...]
 
 
 class Result:
     """A result as the CLI's --json object."""
 
-    def __init__(self, data, svg=None):
+    def __init__(self, data: dict[str, Any], svg: Callable[[], str] | None = None) -> None:
         self._data = data
         self._svg = svg  # a function drawing the picture, or None
 
-    def to_dict(self):
+    def to_dict(self) -> dict[str, Any]:
         """The CLI's --json object for the same query."""
         return copy.deepcopy(self._data)
 
-    def to_json(self):
+    def to_json(self) -> str:
         return json.dumps(self._data)
 
-    def __getitem__(self, key):
+    def __getitem__(self, key: str) -> Any:
         return self._data[key]
 
-    def __eq__(self, other):
-        return type(self) is type(other) and self._data == other._data
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Result) and type(self) is type(other) and self._data == other._data
 
-    def _repr_svg_(self):
+    def _repr_svg_(self) -> str | None:
         return self._svg() if self._svg else None
 
 
-def _field(key):
+def _field(key: str) -> Any:
     """A property: the --json object's member `key`."""
     return property(lambda self: self._data[key])
 
 
-def _directions(form, key, doc):
+def _directions(form: str, key: str, doc: str) -> Any:
     """A property: the primitive integer rows `key` of the --json object's `form` as int tuples (() if absent)."""
 
-    def get(self):
+    def get(self: Result) -> Directions:
         d = self._data.get(form)
         return tuple(tuple(int(x) for x in row) for row in d[key]) if d and key in d else ()
 
@@ -54,7 +67,7 @@ class Cone(Result):
     empty = _field("empty")
 
     @property
-    def dimension(self):
+    def dimension(self) -> int | None:
         return self._data.get("dimension")
 
     inequalities = _directions("face", "inequalities", "Rows f of the face form with f . g <= 0.")
@@ -64,25 +77,25 @@ class Cone(Result):
     lines = _directions("span", "lines", "Lines (both senses) of the closure.")
 
     @property
-    def open_faces(self):
+    def open_faces(self) -> tuple[tuple[int, ...], ...]:
         return tuple(tuple(f) for f in self._data.get("open_faces", []))
 
     @property
-    def K(self):
+    def K(self) -> tuple[Vector, ...] | None:
         return exact(self._data["K"]) if "K" in self._data else None
 
     @property
-    def P(self):
+    def P(self) -> tuple[Vector, ...] | None:
         return exact(self._data["P"]) if "P" in self._data else None
 
     @property
-    def rays_approx(self):
+    def rays_approx(self) -> NDArray[Any]:
         """The closure's generators as doubles (rows)."""
         if "span_approx" in self._data:
             return floats(self._data["span_approx"]["rays"], 3)
         return floats([list(r) for r in self.rays], 3)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         if self.empty:
             return f"Cone(mode={self.mode!r}, empty)"
         if "dimension" not in self._data:
@@ -95,22 +108,22 @@ class Stability(Result):
     """Strong stability under one wrench (Balkcom-Trinkle 2002, section 7): the verdict with a resting and
     a moving solution where they exist."""
 
-    def __init__(self, data, certificate=None):
+    def __init__(self, data: dict[str, Any], certificate: Certificate | None = None) -> None:
         super().__init__(data)
         self.certificate = certificate  # a Certificate when one was written
 
     verdict = _field("verdict")
 
     @property
-    def wrench(self):
+    def wrench(self) -> Vector:
         return exact(self._data["wrench"])
 
     @property
-    def touching_fixels(self):
+    def touching_fixels(self) -> tuple[int, ...]:
         return tuple(self._data["touching_fixels"])
 
     @property
-    def resting_forces(self):
+    def resting_forces(self) -> tuple[Fraction, ...] | tuple[float, ...] | None:
         """Contact forces (c_n..., c_t...) balancing g at rest: Fractions (doubles on the float path), or None."""
         f = self._data["witness"].get("resting_forces")
         if f is None:
@@ -118,29 +131,29 @@ class Stability(Result):
         return exact(f) if self._data["arith"] != "float" else tuple(f)
 
     @property
-    def moving_mode(self):
+    def moving_mode(self) -> str | None:
         m = self._data["witness"].get("moving")
         return m["mode"] if m else None
 
     @property
-    def acceleration(self):
+    def acceleration(self) -> Vector | None:
         """The moving solution's acceleration vdot (Fractions), or None."""
         m = self._data["witness"].get("moving")
         return exact(m["acceleration"]) if m and "acceleration" in m else None
 
     @property
-    def acceleration_approx(self):
+    def acceleration_approx(self) -> NDArray[Any] | None:
         m = self._data["witness"].get("moving")
         return floats(m["acceleration_approx"]) if m else None
 
     @property
-    def squared_margin(self):
+    def squared_margin(self) -> Fraction | None:
         """With margin=True on a strongly stable verdict: the squared radius of the largest strongly stable
         ball around g (Fraction), else None."""
         m = self._data.get("margin")
         return exact(m["squared_radius"]) if m else None
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         w = ", ".join(str(x) for x in self.wrench)
         extra = f", moving mode {self.moving_mode!r}" if self.moving_mode else ""
         return f"Stability({self.verdict}, wrench=({w}), {len(self.touching_fixels)} touching fixels{extra})"
@@ -151,20 +164,20 @@ class Modes(Result):
     acceleration that realises it and, in the dynamic list, a wrench in its cone."""
 
     @property
-    def modes(self):
+    def modes(self) -> list[str]:
         """The mode strings, one Table 2 letter per fixel, in the order of the prefix tree."""
         return [m["mode"] for m in self._data["modes"]]
 
     counts = _field("counts")
 
-    def acceleration(self, mode):
+    def acceleration(self, mode: str) -> Vector:
         """The exact acceleration vdot listed for `mode`, as Fractions."""
         for m in self._data["modes"]:
             if m["mode"] == mode:
                 return exact(m["acceleration"])
         raise KeyError(mode)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         t = self._data["tree"]
         return f"Modes({len(self._data['modes'])} feasible modes, {t['nodes']} prefixes, {t['dead_prefixes']} dead)"
 
@@ -173,13 +186,13 @@ class Region(Result):
     """The labelled cells of wrench space (section 7, Figure 5): every g is in exactly one cell."""
 
     @property
-    def cells(self):
+    def cells(self) -> list[dict[str, Any]]:
         return self._data["region"]["cells"]
 
-    def count(self, label, dimension=None):
+    def count(self, label: str, dimension: int | None = None) -> int:
         return sum(1 for c in self.cells if c["label"] == label and dimension in (None, c["dimension"]))
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         r = self._data["region"]
         return (f"Region({len(r['cells'])} cells, {len(r['planes'])} planes, "
                 f"{self.count('strongly_stable', 3)} strongly stable open regions)")
@@ -188,7 +201,7 @@ class Region(Result):
 class Finger(Result):
     """Where a frictionless finger push along the inward normal is strongly stable, weakly or unstable."""
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         f = self._data["finger"]
         return f"Finger({len(f['edges'])} edge pieces, {len(f['arcs'])} arcs)"
 
@@ -197,15 +210,15 @@ class Insertion(Result):
     """G_goal (sections 8-9, eq. 21): the wrenches that seat the workpiece from any contact state."""
 
     @property
-    def goal_boundary_fraction(self):
+    def goal_boundary_fraction(self) -> float:
         return self._data["goal_boundary_fraction_approx"]
 
     @property
-    def sweep(self):
+    def sweep(self) -> tuple[tuple[Fraction, float], ...]:
         """With sweep_mu: (mu, fraction of the boundary whose pushes seat the part) per value (Figure 11)."""
         return tuple((exact(e["mu"]), e["goal_boundary_fraction_approx"]) for e in self._data.get("sweep", []))
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return (f"Insertion({len(self._data['sets'])} contact states, "
                 f"boundary fraction in G_goal ~{self.goal_boundary_fraction:.4f})")
 
@@ -214,27 +227,27 @@ class UcpResult(Result):
     """The quasistatic problem's verdict (Pang-Trinkle-Lo 1994): solvable with a pair x, y (x^T y = 0) and its
     physical reading, or jammed."""
 
-    def __init__(self, data, certificate=None):
+    def __init__(self, data: dict[str, Any], certificate: Certificate | None = None) -> None:
         super().__init__(data)
         self.certificate = certificate
 
     status = _field("status")
 
     @property
-    def x(self):
+    def x(self) -> Vector | None:
         return exact(self._data["x"]) if "x" in self._data else None
 
     @property
-    def y(self):
+    def y(self) -> Vector | None:
         return exact(self._data["y"]) if "y" in self._data else None
 
     @property
-    def physical(self):
+    def physical(self) -> dict[str, Vector] | None:
         """c_n, c_t, v_n, v_t, q_dot, theta_dot, tau as Fractions, or None."""
         p = self._data.get("physical")
         return {k: exact(v) for k, v in p.items() if isinstance(v, list)} if p else None
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"UcpResult({self.status}, {self._data['reason']!r}, method {self._data['method']})"
 
 
@@ -245,8 +258,8 @@ class CheckResult(Result):
     kind = _field("kind")
     reason = _field("reason")
 
-    def __bool__(self):
+    def __bool__(self) -> bool:
         return self.valid
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"CheckResult({self.kind}, {'VALID' if self.valid else 'INVALID'}: {self.reason})"

@@ -1,40 +1,45 @@
 """Planar fixture scenes (SPEC section 3) and the Balkcom-Trinkle queries on them."""
 
+from __future__ import annotations
+
 import json
 import os
+from collections.abc import Iterable
+from typing import Any, Literal, get_args
 
 from . import _core
-from ._numbers import vector_text
+from ._numbers import Exact, ExactVector, vector_text
 from ._results import Cone, Finger, Insertion, Modes, Region, Stability
-from ._source import FromSource
+from ._source import FromSource, Path
 
-ARITHS = ("exact", "float", "verified", "adaptive")
+Arith = Literal["exact", "float", "verified", "adaptive"]
+ARITHS: tuple[str, ...] = get_args(Arith)
 
 
-def choice(value, allowed, option):
+def choice(value: str, allowed: tuple[str, ...], option: str) -> str:
     """`value` if it is one of `allowed`, else ValueError naming the CLI option."""
     if value not in allowed:
         raise ValueError(f"{option}: {value!r} not in {{{', '.join(allowed)}}}")
     return value
 
 
-class Scene(FromSource):
+class Scene(FromSource[_core.Scene]):
     """A planar scene: a workpiece held by fixels. Queries run in C++ with the GIL released."""
 
     _core_type = _core.Scene
 
-    def __init__(self, core):
+    def __init__(self, core: _core.Scene) -> None:
         super().__init__(core)
-        self._oracles = {}
+        self._oracles: dict[str, _core.Oracle] = {}
 
     @property
-    def name(self):
+    def name(self) -> str:
         return self._core.name
 
-    def to_dict(self):
+    def to_dict(self) -> dict[str, Any]:
         return json.loads(self._core.text)
 
-    def cone(self, mode, route="paper", arith="verified"):
+    def cone(self, mode: str, route: Literal["paper", "project"] = "paper", arith: Arith = "verified") -> Cone:
         """`contactcert cone FILE --mode MODE`: the wrench cone of an augmented contact mode (Table 2 letters)."""
         choice(route, ("paper", "project"), "--route")
         choice(arith, ARITHS, "--arith")
@@ -42,7 +47,8 @@ class Scene(FromSource):
         svg = None if arith == "float" else (lambda: self._core.cone_svg(mode, route))
         return Cone(data, svg)
 
-    def stability(self, wrench, margin=False, arith="verified", certificate=None):
+    def stability(self, wrench: ExactVector, margin: bool = False, arith: Arith = "verified",
+                  certificate: Path | None = None) -> Stability:
         """`contactcert stability FILE --wrench fx,fy,tz [--margin] [--certificate PATH]`: strongly stable,
         weakly stable or unstable; `certificate` is the file the evidence is written to."""
         from ._ucp import Certificate
@@ -52,7 +58,7 @@ class Scene(FromSource):
         data, text = self._core.stability(vector_text(wrench, "--wrench"), arith, bool(margin), path)
         return Stability(json.loads(data), Certificate(text, path) if text else None)
 
-    def stability_many(self, wrenches, arith="verified"):
+    def stability_many(self, wrenches: Iterable[ExactVector], arith: Arith = "verified") -> list[Stability]:
         """The verdicts for many wrenches, from a StabilityOracle prepared once per scene and arithmetic. Each
         equals stability(g)'s except `lps`, which counts only the LPs solved for g."""
         choice(arith, ARITHS, "--arith")
@@ -62,7 +68,8 @@ class Scene(FromSource):
         texts = [vector_text(w, f"wrenches[{i}]") for i, w in enumerate(wrenches)]
         return [Stability(json.loads(d)) for d in oracle.verdicts(texts)]
 
-    def modes(self, kinematic=False, table2="strict", unions=False, arith="verified", certificate=None):
+    def modes(self, kinematic: bool = False, table2: Literal["strict", "printed"] = "strict", unions: bool = False,
+              arith: Arith = "verified", certificate: Path | None = None) -> Modes:
         """`contactcert modes FILE`: every kinematically feasible contact mode from rest (the prefix tree over the
         fixels, never the 4^k strings); `certificate` is the file its completeness proof is written to."""
         choice(table2, ("strict", "printed"), "--table2")
@@ -70,20 +77,20 @@ class Scene(FromSource):
         return Modes(json.loads(self._core.modes(bool(kinematic), table2, bool(unions), arith,
                                                  "" if certificate is None else os.fspath(certificate))))
 
-    def region(self):
+    def region(self) -> Region:
         """`contactcert stability FILE --region`: the strongly stable set as labelled cells (picture: the sphere
         of wrench directions)."""
         return Region(json.loads(self._core.region()), self._core.region_svg)
 
-    def finger(self):
+    def finger(self) -> Finger:
         """`contactcert stability FILE --finger`: the boundary labelled by the verdict of a frictionless push."""
         return Finger(json.loads(self._core.finger()), self._core.finger_svg)
 
-    def insertion(self, sweep_mu=None):
+    def insertion(self, sweep_mu: str | Iterable[Exact] | None = None) -> Insertion:
         """`contactcert insert FILE [--sweep-mu ...]`: G_goal and the pushes that seat the workpiece from any
         contact state; `sweep_mu` (exact numbers) repeats the pushes with every fixel's mu set to each value."""
         sweep = vector_text(sweep_mu, "--sweep-mu") if sweep_mu is not None else ""
         return Insertion(json.loads(self._core.insertion(sweep)), self._core.insertion_svg)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"Scene({self.name!r}, {self._core.fixels} fixels)"

@@ -1,15 +1,18 @@
 """The quasistatic contact problem (Pang-Trinkle-Lo 1994, SPEC section 2), its generators, certificates and
 their independent check."""
 
+from __future__ import annotations
+
 import json
 import os
+from typing import Any, Literal, Union
 
 from . import _core
-from ._numbers import number_text
+from ._numbers import Exact, number_text
 from ._options import LONG_MAX, UINT64_MAX, seconds, whole_number
 from ._results import CheckResult, UcpResult
-from ._scene import ARITHS, Scene, choice
-from ._source import FromSource
+from ._scene import ARITHS, Arith, Scene, choice
+from ._source import FromSource, Path
 
 BudgetExceeded = _core.BudgetExceeded
 
@@ -17,42 +20,43 @@ BudgetExceeded = _core.BudgetExceeded
 class Certificate:
     """A certificate file's text (`contactcert check` verifies it); `path` is where it was written, if anywhere."""
 
-    def __init__(self, text, path=""):
+    def __init__(self, text: str, path: str = "") -> None:
         self.text = text
         self.path = path
 
-    def to_dict(self):
+    def to_dict(self) -> dict[str, Any]:
         return json.loads(self.text)
 
     @property
-    def kind(self):
+    def kind(self) -> str:
         return self.to_dict()["kind"]
 
-    def save(self, path):
+    def save(self, path: Path) -> None:
         with open(path, "w") as f:
             f.write(self.text)
 
-    def check(self, problem=None):
+    def check(self, problem: Scene | Ucp | None = None) -> CheckResult:
         return check(self, problem)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"Certificate({self.kind}{', ' + self.path if self.path else ''})"
 
 
-class Ucp(FromSource):
+class Ucp(FromSource[_core.Ucp]):
     """A quasistatic (or plain UCP) problem."""
 
     _core_type = _core.Ucp
 
-    def to_json(self):
+    def to_json(self) -> str:
         """The problem file's text (what `ucp --generate` writes)."""
         return self._core.text()
 
-    def to_dict(self):
+    def to_dict(self) -> dict[str, Any]:
         return json.loads(self._core.text())
 
-    def solve(self, method="complete", arith="verified", seed=1, max_nodes=None, max_bases=None, time_limit=0,
-              certificate=None):
+    def solve(self, method: Literal["paper", "modified", "complete", "enumerate"] = "complete",
+              arith: Arith = "verified", seed: int = 1, max_nodes: int | None = None, max_bases: int | None = None,
+              time_limit: float = 0, certificate: Path | None = None) -> UcpResult:
         """`contactcert ucp FILE`: solvable (with the pair and its physics) or jammed. An `unknown` verdict (a
         budget ran out) raises BudgetExceeded with the result as its `result`. max_nodes (default 200000) budgets
         the complete search only, max_bases (default 100000) Step 3 (not in method enumerate), as in the CLI."""
@@ -69,15 +73,15 @@ class Ucp(FromSource):
             d = result.to_dict()
             covered = ", ".join(f"{d[k]} {k}" for k in ("nodes", "pairs", "lps") if k in d)
             e = BudgetExceeded(f"budget exceeded: {d['reason']} (covered: {covered})")
-            e.result = result
+            e.result = result  # type: ignore[attr-defined]  # set here, not by the extension
             raise e
         return result
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"Ucp({self._core.name!r})"
 
 
-def generate_random(nc=3, mu_max=1, abar=0, seed=1):
+def generate_random(nc: int = 3, mu_max: Exact = 1, abar: int = 0, seed: int = 1) -> Ucp:
     """`contactcert ucp --generate random`: a random quasistatic problem of section 5."""
     seed = whole_number(seed, 0, UINT64_MAX, "--seed")
     nc = whole_number(nc, 1, 1000, "--nc")
@@ -85,7 +89,7 @@ def generate_random(nc=3, mu_max=1, abar=0, seed=1):
     return Ucp(_core.generate("random", seed, nc, number_text(mu_max, "--mu-max"), abar, 2, 6, False))
 
 
-def generate_reduction(rows=2, cols=6, planted=False, seed=1):
+def generate_reduction(rows: int = 2, cols: int = 6, planted: bool = False, seed: int = 1) -> Ucp:
     """`contactcert ucp --generate reduction`: Proposition 2's UCP of a random 0-1 problem."""
     seed = whole_number(seed, 0, UINT64_MAX, "--seed")
     rows = whole_number(rows, 1, 1000, "--rows")
@@ -93,7 +97,11 @@ def generate_reduction(rows=2, cols=6, planted=False, seed=1):
     return Ucp(_core.generate("reduction", seed, 3, "1", 0, rows, cols, bool(planted)))
 
 
-def _certificate_text(certificate):
+#: What check() takes: a Certificate, its dict, its JSON text or its file's path.
+CertificateSource = Union[Certificate, dict[str, Any], str, "os.PathLike[str]"]
+
+
+def _certificate_text(certificate: CertificateSource) -> tuple[str, str]:
     """(text, name) of a Certificate, a dict, JSON text or a file path (read as the CLI reads it: at most 32 MiB,
     never blocking on a pipe without a writer)."""
     if isinstance(certificate, Certificate):
@@ -106,7 +114,7 @@ def _certificate_text(certificate):
     return _core.read_text(path), path
 
 
-def _problem_text(problem):
+def _problem_text(problem: Scene | Ucp) -> tuple[str, str]:
     """(text, name) of the problem a certificate must be about: a Scene's file text or a Ucp's."""
     if isinstance(problem, Scene):
         return problem._core.text, problem.name
@@ -115,7 +123,7 @@ def _problem_text(problem):
     raise TypeError(f"problem: expected a Scene or a Ucp, found {type(problem).__name__}")
 
 
-def check(certificate, problem=None):
+def check(certificate: CertificateSource, problem: Scene | Ucp | None = None) -> CheckResult:
     """`contactcert check`: verifies the certificate from its embedded problem alone. With `problem` (a Scene
     or a Ucp) the certificate must also be about that problem, compared as `check --problem` compares them (the
     exact values, whatever their spelling)."""
