@@ -21,7 +21,7 @@ def disk(angles, radius=2, centre=(1, -1), mu=0.1 + 0.2):
 
 def test_disk_fixel_at_cos_sin_snapped_onto_the_circle_and_accepted():
     data = disk([0.3, 2.4, 4.5])
-    with pytest.raises(ValueError, match=r"<dict>: \$\.mu_s: .*from_floats"):
+    with pytest.raises(ValueError, match=r"<dict>: \$\.fixels\[0\]\.position\[0\]: 2\.91.* computed float.*from_floats"):
         cc.Scene.from_dict(data)
     scene, snaps = cc.Scene.from_floats(data, snap=1e-9)
     fields = [s.field for s in snaps]
@@ -64,6 +64,15 @@ def test_unsnappable_point_refused_with_its_field():
     assert cc.Scene.from_floats(data, snap=1e-3)[1][0].field == "$.fixels[1].point"
     with pytest.raises(ValueError, match="tolerance > 0"):
         cc.Scene.from_floats(data, snap=0)
+
+
+def test_from_dict_refuses_point_one_plus_point_two():
+    data = {"kind": "planar", "workpiece": {"shape": {"type": "disk", "center": [0, 0], "radius": 1}},
+            "fixels": [{"position": [0.6, 0.8]}, {"position": [-1, 0]}], "mu_s": 0.1 + 0.2}
+    with pytest.raises(ValueError, match=r"<dict>: \$\.mu_s: 0\.30000000000000004 is a computed float"):
+        cc.Scene.from_dict(data)
+    scene, snaps = cc.Scene.from_floats(data, snap=1e-9)
+    assert scene.to_dict()["mu_s"] == "3/10" and [s.field for s in snaps] == ["$.mu_s"]
 
 
 def test_from_dict_keeps_written_decimals():

@@ -9,7 +9,7 @@ printf '{"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"rad
 printf '{"kind":"planar","workpiece":{"shape":{"type":"polygon","vertices":[[0,0],[1,0],[1,1],[0,1]]}},"mu_s":"1/2","fixels":[{"point":[0.5,-0.001],"normal":[0,1],"gap":0},{"position":[0,0.5]},{"position":[1,0.5]}]}\n' \
   > "$work/snap_square.json"
 
-check 2 "irrational distance" cone "$work/snap_disk.json" --mode sss
+check 2 'lies inside the disk' cone "$work/snap_disk.json" --mode sss
 check 0 'snapped $.fixels[0].position' cone "$work/snap_disk.json" --mode sss --snap 1e-9
 check 0 'snapped $.mu_s: 7500000000000001/25000000000000000 -> 3/10' cone "$work/snap_disk.json" --mode sss --snap 1e-9
 check 0 'snapped $.fixels[2].position' cone "$work/snap_disk.json" --mode nnn --snap 1e-9 --json
@@ -23,4 +23,4 @@ check 2 '$.fixels[0].point' cone "$work/snap_square.json" --mode sss --snap 1e-9
 check 0 'snapped $.fixels[0].point: [1/2, -1/1000] -> [1/2, 0]' cone "$work/snap_square.json" --mode sss --snap 1e-2
 # The certificate embeds the snapped scene: `check` verifies it on its own.
 check 0 '"verdict"' stability "$work/snap_disk.json" --wrench 0,-1,0 --snap 1e-9 --json --certificate "$work/snap_cert.json"
-check 0 '"valid": true' check "$work/snap_cert.json" --json
+check 0 '"valid":true' check "$work/snap_cert.json" --json
