@@ -1,5 +1,7 @@
 #include "geometry/snap.h"
 
+#include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "exact/json_input.h"
@@ -53,6 +55,14 @@ using Json = nlohmann::ordered_json;
 
 std::string text(const Point2& p) { return "[" + exact::to_string(p.x) + ", " + exact::to_string(p.y) + "]"; }
 
+/// A float view of a tolerance or distance for messages ("1e-09"), never an exact text thousands of digits long.
+std::string view(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+std::string view(const Q& q) { return q.get_d() == 0 && sgn(q) > 0 ? "< 1e-308" : view(q.get_d()); }
+
 /// 2^-bits <= tol / 8: the bits of the square roots bracketing a distance.
 unsigned long bits_for(const Q& tol) {
   const Q inv = Q(8) / tol;
@@ -93,7 +103,7 @@ std::optional<Point2> onto_circle(const Point2& c, const Q& rho, const Point2& p
   const Q s = rational_length(norm2(u), nullptr, bits);  // s <= |u| <= s + ulp
   const Q t_lo = u.y / (s + ulp + u.x), t_hi = u.y / (s + u.x);
   Q delta = tol / (4 * rho);
-  for (unsigned long k = 0; k < 4 * bits; ++k, delta /= 2) {
+  for (int k = 0; k < 256; ++k, delta /= 2) {  // bounded: a point this close to the limit is refused
     const Point2 q = circle_point(c, rho, simplest_between(t_lo - delta, t_hi + delta), quadrant);
     if (norm2(q - p) <= tol * tol) return q;
   }
@@ -106,10 +116,10 @@ Point2 snap_on_disk(const DiskShape& d, const Point2& p, const Q& tol, bool must
   if (sgn(d2) == 0) field.fail("a point away from the disk centre (its direction is undefined)");
   const Q far = d.radius + tol, near = d.radius - tol;
   const bool touching = d2 <= far * far && (sgn(near) <= 0 || d2 >= near * near);
-  const std::string tol_text = exact::to_string(tol);
+  const std::string tol_text = view(tol);
   if (!touching && must_touch)
     field.fail("a point within " + tol_text + " of the disk boundary (--snap tolerance); it is " +
-               std::to_string(std::abs(std::sqrt(d2.get_d()) - d.radius.get_d())) + " away");
+               view(std::abs(std::sqrt(d2.get_d()) - d.radius.get_d())) + " away");
   const unsigned long bits = bits_for(tol);
   bool rational = true;
   const Q s = rational_length(d2, &rational, bits);
@@ -117,8 +127,8 @@ Point2 snap_on_disk(const DiskShape& d, const Point2& p, const Q& tol, bool must
   const Q ulp(Z(1), Z(1) << bits);
   const Q rho = touching ? d.radius : simplest_between(s + ulp - tol / 2, s + tol / 2);
   if (auto q = onto_circle(d.center, rho, p, tol, bits)) return *q;
-  field.fail("a point that a rational point of the circle of radius " + exact::to_string(rho) + " lies within " +
-             tol_text + " of (--snap tolerance)");
+  field.fail("a point that a rational point of the circle of radius ~" + view(rho) + " lies within " + tol_text +
+             " of (--snap tolerance)");
 }
 
 Point2 snap_on_polygon(const std::vector<Point2>& V, const Point2& p, const Q& tol, bool must_touch,
@@ -138,8 +148,8 @@ Point2 snap_on_polygon(const std::vector<Point2>& V, const Point2& p, const Q& t
   if (sgn(best_d2) == 0) return p;
   if (best_d2 <= tol * tol) return best;
   if (must_touch)
-    field.fail("a point within " + exact::to_string(tol) + " of the polygon boundary (--snap tolerance); it is " +
-               std::to_string(std::sqrt(best_d2.get_d())) + " away");
+    field.fail("a point within " + view(tol) + " of the polygon boundary (--snap tolerance); it is " +
+               view(std::sqrt(best_d2.get_d())) + " away");
   // Not meant to touch: its coordinates are plain numbers, each moved by at most tol / 2.
   const Q h = tol / 2;
   return {simplest_between(p.x - h, p.x + h), simplest_between(p.y - h, p.y + h)};
@@ -198,6 +208,18 @@ SnappedScene snap_planar_scene(const std::string& text_in, const std::string& fi
       }
     }
   }
+  // The labels canonical_text leaves out, back where the reader allows them.
+  const auto keep_labels = [](const exact::JsonInput& from, Json& to, std::initializer_list<const char*> keys) {
+    for (const char* key : keys)
+      if (const auto label = from.find(key); label && label->is_string_or_number()) try {
+          to[key] = label->string();
+        } catch (const exact::InputError&) {  // a number where a label was expected: the reader ignores it too
+        }
+  };
+  keep_labels(original, j, {"name", "description"});
+  if (const auto fixels = original.find("fixels"); fixels && fixels->is_array() && j["fixels"].is_array())
+    for (std::size_t i = 0; i < fixels->size() && i < j["fixels"].size(); ++i)
+      if (fixels->at(i).is_object()) keep_labels(fixels->at(i), j["fixels"][i], {"name"});
   out.text = j.dump(2);
   return out;
 }

@@ -40,7 +40,9 @@ struct SnappedScene {
 /// the boundary (the exact projection onto the nearest polygon edge; on a disk a rational point of the circle),
 /// refused if that is farther than tol. A "position" within tol of the boundary goes onto it the same way;
 /// farther, on a polygon its coordinates are snapped as numbers, on a disk it moves to a rational distance
-/// along a Pythagorean direction. Every point moves by at most tol (checked exactly). Throws exact::InputError
+/// along a Pythagorean direction. An explicit contact's normal within angle asin(tol) of the exact inward normal at
+/// the snapped point becomes its projection onto it. Every point moves by at most tol (checked exactly). The
+/// labels name and description are kept, source and note dropped. Throws exact::InputError
 /// naming the file and field for what cannot be snapped, or for an invalid tolerance or shape.
 SnappedScene snap_planar_scene(const std::string& text, const std::string& file, const Q& tol);
 

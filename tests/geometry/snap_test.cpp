@@ -32,7 +32,7 @@ std::string disk_scene(const std::string& fixels) {
 }
 
 std::string square_scene(const std::string& fixels) {
-  return R"({"kind": "planar", "workpiece": {"shape": {"type": "polygon", "vertices": [[0,0],[2,0],[2,2],[0,2]]}},
+  return R"({"kind": "planar", "name": "square", "workpiece": {"shape": {"type": "polygon", "vertices": [[0,0],[2,0],[2,2],[0,2]]}},
   "fixels": [)" +
          fixels + R"(], "mu_s": 0.30000000000000004})";
 }
@@ -110,6 +110,7 @@ TEST(SnapScene, PolygonPointProjectedOntoTheNearestEdge) {
   EXPECT_EQ(s.snaps[0].snapped, "3/10");
   EXPECT_EQ(s.snaps[1].field, "$.fixels[0].position");
   EXPECT_EQ(s.snaps[1].distance_squared, q("1e-24"));
+  EXPECT_NE(s.text.find(R"("name": "square")"), std::string::npos);  // labels kept
   EXPECT_TRUE(snap_planar_scene(s.text, "in", q("1e-9")).snaps.empty());
 }
 

@@ -59,7 +59,7 @@ def test_unsnappable_point_refused_with_its_field():
     data = {"kind": "planar", "workpiece": {"shape": {"type": "disk", "center": [0, 0], "radius": 1}},
             "fixels": [{"position": [1, 0]}, {"point": [0.6, 0.8001], "normal": [-0.6, -0.8], "gap": 0}],
             "mu_s": "1/2"}
-    with pytest.raises(ValueError, match=r"<dict>: \$\.fixels\[1\]\.point: a point within 1/1000000000 of the disk"):
+    with pytest.raises(ValueError, match=r"<dict>: \$\.fixels\[1\]\.point: a point within 1e-09 of the disk"):
         cc.Scene.from_floats(data, snap=1e-9)
     assert cc.Scene.from_floats(data, snap=1e-3)[1][0].field == "$.fixels[1].point"
     with pytest.raises(ValueError, match="tolerance > 0"):

@@ -24,3 +24,11 @@ check 0 'snapped $.fixels[0].point: [1/2, -1/1000] -> [1/2, 0]' cone "$work/snap
 # The certificate embeds the snapped scene: `check` verifies it on its own.
 check 0 '"verdict"' stability "$work/snap_disk.json" --wrench 0,-1,0 --snap 1e-9 --json --certificate "$work/snap_cert.json"
 check 0 '"valid":true' check "$work/snap_cert.json" --json
+# Hostile sizes stay bounded: a tolerance of 1e-4000, a point at 1e300.
+printf '{"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":1}},"mu_s":"1/2","fixels":[{"position":[0.8,0.6000000001]},{"point":[-0.6,-0.8000000001],"normal":[0.6,0.8],"gap":0}]}\n' \
+  > "$work/snap_far.json"
+check 2 '$.fixels[1].point: a point within < 1e-308 of the disk boundary' cone "$work/snap_far.json" --mode ss --snap 1e-4000
+check 0 'snapped $.fixels[1].point' cone "$work/snap_far.json" --mode ss --snap 1e-9
+printf '{"kind":"planar","workpiece":{"shape":{"type":"disk","center":[0,0],"radius":1}},"mu_s":"1/2","fixels":[{"point":[1e300,1e300],"normal":[0.6,0.8],"gap":0}]}\n' \
+  > "$work/snap_huge.json"
+check 2 '$.fixels[0].point' cone "$work/snap_huge.json" --mode s --snap 1e-9
