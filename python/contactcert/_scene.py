@@ -24,7 +24,7 @@ def _computed_float(value, path):
     of at most 15 digits is the decimal it was written as, one of 16 or 17 was computed."""
     if isinstance(value, float):
         digits = repr(value).lower().split("e")[0].replace("-", "").replace(".", "").lstrip("0")
-        return (path, value) if len(digits) > 15 or value != value or value in (float("inf"), -float("inf")) else None
+        return (path, value) if len(digits) > 15 else None
     items = value.items() if isinstance(value, dict) else enumerate(value) if isinstance(value, list) else ()
     for k, v in items:
         found = _computed_float(v, f"{path}.{k}" if isinstance(k, str) else f"{path}[{k}]")

@@ -21,7 +21,8 @@ def disk(angles, radius=2, centre=(1, -1), mu=0.1 + 0.2):
 
 def test_disk_fixel_at_cos_sin_snapped_onto_the_circle_and_accepted():
     data = disk([0.3, 2.4, 4.5])
-    with pytest.raises(ValueError, match=r"<dict>: \$\.fixels\[0\]\.position\[0\]: 2\.91.* computed float.*from_floats"):
+    computed = r"<dict>: \$\.fixels\[0\]\.position\[0\]: 2\.91.* computed float.*from_floats"
+    with pytest.raises(ValueError, match=computed):
         cc.Scene.from_dict(data)
     scene, snaps = cc.Scene.from_floats(data, snap=1e-9)
     fields = [s.field for s in snaps]
