@@ -10,6 +10,7 @@
 #include "cli/contact_forces.h"
 #include "cli/json_out.h"
 #include "cli/results.h"
+#include "cli/snap_option.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -29,6 +30,7 @@ using exact::to_string;
 struct ConeOptions {
   CommonOptions common;
   std::string file;
+  std::string snap;  ///< --snap TOL ("" = none)
   std::string mode;
   std::string route = "paper";
   std::string svg;
@@ -329,7 +331,7 @@ int run_float(const ConeOptions& o, const geometry::PlanarScene& scene, const so
 }
 
 int run_cone(const ConeOptions& o) {
-  const std::string text = exact::JsonInput::read_text(o.file);  // read once: a pipe cannot be read again
+  const std::string text = read_scene_text(o.file, o.snap);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
   const solvers::ModeString mode = cone_mode(scene, o.file, o.mode, o.table2 == "printed");
   const solvers::Route route = o.route == "paper" ? solvers::Route::kPaper : solvers::Route::kProject;
@@ -358,6 +360,7 @@ void register_cone(CLI::App& app, Action& action) {
       ->default_str("strict");
   sub->add_option("--certificate", opts->certificate,
                   "Write the evidence for `contactcert check`: a Motzkin vector (empty cone) or a witness wrench");
+  add_snap_option(*sub, opts->snap);
   add_common_options(*sub, opts->common);
   sub->callback([opts, &action] { action = [opts] { return run_cone(*opts); }; });
 }

@@ -12,6 +12,7 @@
 #include "cli/json_out.h"
 #include "cli/progress_line.h"
 #include "cli/results.h"
+#include "cli/snap_option.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
@@ -25,6 +26,7 @@ using exact::Q;
 struct InsertOptions {
   CommonOptions common;
   std::string file;
+  std::string snap;  ///< --snap TOL ("" = none)
   std::string sweep_mu;
   std::string svg;
 };
@@ -105,7 +107,8 @@ std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::Bou
 namespace {
 
 int run_insert(const InsertOptions& o) {
-  const geometry::PlanarScene scene = geometry::load_planar_scene(o.file);
+  const geometry::PlanarScene scene =
+      geometry::read_planar_scene(exact::JsonInput::parse(read_scene_text(o.file, o.snap), o.file));
   if (exact::parse_arith(o.common.arith) == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "insert is computed exactly (use exact or verified)");
   const std::vector<Q> mus = sweep_mus(o.sweep_mu);
@@ -157,6 +160,7 @@ int run_insert(const InsertOptions& o) {
 void register_insert(CLI::App& app, Action& action) {
   auto o = std::make_shared<InsertOptions>();
   CLI::App* sub = app.add_subcommand("insert", "Wrenches that seat the workpiece from any contact state (G_goal)");
+  add_snap_option(*sub, o->snap);
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Planar scene in its goal configuration (every fixel touching)")->required();
   sub->add_option("--svg", o->svg, "Picture of the workpiece with the seating pushes in green");

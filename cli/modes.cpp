@@ -11,6 +11,7 @@
 #include "cli/json_out.h"
 #include "cli/option_checks.h"
 #include "cli/results.h"
+#include "cli/snap_option.h"
 #include "exact/json_input.h"
 #include "geometry/scene_json.h"
 #include "solvers/stability/contact_modes.h"
@@ -23,6 +24,7 @@ using exact::Q;
 struct ModesOptions {
   CommonOptions common;
   std::string file;
+  std::string snap;  ///< --snap TOL ("" = none)
   bool kinematic = false;
   bool unions = false;
   std::string table2 = "strict";
@@ -115,7 +117,7 @@ int run_modes(const ModesOptions& o) {
   if ((o.unions || o.table2 == "printed") && o.common.time_limit == 0)
     start_watchdog("modes (the default budget of --unions and --table2 printed; --time-limit sets another)",
                    kModesDefaultSeconds);
-  const std::string text = exact::JsonInput::read_text(o.file);
+  const std::string text = read_scene_text(o.file, o.snap);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
   const solvers::ContactModes m =
       modes_of(scene, o.common.arith, o.table2, o.unions, o.max_nodes, o.common.time_limit, o.max_modes);
@@ -138,6 +140,7 @@ int run_modes(const ModesOptions& o) {
 void register_modes(CLI::App& app, Action& action) {
   auto o = std::make_shared<ModesOptions>();
   CLI::App* sub = app.add_subcommand("modes", "Every kinematically feasible contact mode of a scene, with a proof");
+  add_snap_option(*sub, o->snap);
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Planar scene file (docs/formats.md)")->required();
   sub->add_flag("--kinematic", o->kinematic, "List the modes with their accelerations only (no witness wrench)");

@@ -14,6 +14,7 @@
 #include "cli/option_checks.h"
 #include "cli/region_data.h"
 #include "cli/results.h"
+#include "cli/snap_option.h"
 #include "cli/stability_svg.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -33,6 +34,7 @@ using solvers::StabilityResult;
 struct StabilityOptions {
   CommonOptions common;
   std::string file;
+  std::string snap;  ///< --snap TOL ("" = none)
   std::string wrench;
   std::string certificate;
   bool region = false;
@@ -307,7 +309,7 @@ int run_stability(const StabilityOptions& options) {
   // from a float answer checked exactly, so adaptive runs (and is reported) as verified here.
   StabilityOptions o = options;
   if (o.common.arith == "adaptive") o.common.arith = "verified";
-  const std::string text = exact::JsonInput::read_text(o.file);
+  const std::string text = read_scene_text(o.file, o.snap);
   const geometry::PlanarScene scene = geometry::read_planar_scene(exact::JsonInput::parse(text, o.file));
   if (int(o.region) + int(o.finger) + int(!o.wrench.empty() && !o.region) + int(!o.wrenches.empty()) != 1)
     throw exact::InputError("command line", "--wrench",
@@ -343,6 +345,7 @@ void register_stability(CLI::App& app, Action& action) {
   auto o = std::make_shared<StabilityOptions>();
   CLI::App* sub = app.add_subcommand(
       "stability", "Is the workpiece strongly stable, only weakly stable, or unstable under a wrench?");
+  add_snap_option(*sub, o->snap);
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Planar scene file (format: docs/formats.md, section 3)")->required();
   CLI::Option* wrench = sub->add_option("--wrench", o->wrench,

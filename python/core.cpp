@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -18,7 +19,9 @@
 #include "exact/arith.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
+#include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "geometry/snap.h"
 #include "runtime/memory.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/ucp/problem.h"
@@ -249,6 +252,20 @@ PYBIND11_MODULE(_core, m) {
       },
       Release());
   m.def("check", &check, Release());
+  // geometry::snap_planar_scene: the snapped text and the snaps as (field, original, snapped, distance^2) texts.
+  m.def(
+      "snap_scene",
+      [](const std::string& text, const std::string& name, const std::string& tol_text) {
+        Q tol;
+        if (!exact::parse_rational_into(tol_text, tol) || sgn(tol) <= 0)
+          throw exact::InputError(name, "snap", "a tolerance > 0 such as 1e-9, got " + exact::quoted_excerpt(tol_text));
+        const geometry::SnappedScene s = geometry::snap_planar_scene(text, name, tol);
+        std::vector<std::tuple<std::string, std::string, std::string, std::string>> snaps;
+        for (const geometry::Snap& x : s.snaps)
+          snaps.emplace_back(x.field, x.original, x.snapped, exact::to_string(x.distance_squared));
+        return std::make_pair(s.text, snaps);
+      },
+      Release());
   // A file's text through the CLI's reader: its size limit, and no blocking on a pipe without a writer.
   m.def("read_text", &exact::JsonInput::read_text, Release());
   m.attr("MAX_TIME_LIMIT") = cli::kMaxTimeLimit;

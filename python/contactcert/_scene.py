@@ -5,7 +5,8 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Iterable
-from typing import Any, Literal, get_args
+from fractions import Fraction
+from typing import Any, Literal, Union, get_args
 
 from . import _core
 from ._numbers import Exact, ExactVector, vector_text
@@ -23,6 +24,57 @@ def choice(value: str, allowed: tuple[str, ...], option: str) -> str:
     return value
 
 
+def _computed_float(value: Any, path: str) -> tuple[str, float] | None:
+    """(path, x) of the first float with more than 15 significant digits in a JSON-like value, else None: a float
+    of at most 15 digits is the decimal it was written as, one of 16 or 17 was computed."""
+    if isinstance(value, float):
+        digits = repr(value).lower().split("e")[0].replace("-", "").replace(".", "").lstrip("0")
+        return (path, value) if len(digits) > 15 else None
+    items: Iterable[tuple[Any, Any]] = (
+        value.items() if isinstance(value, dict) else enumerate(value) if isinstance(value, list) else ()
+    )
+    for k, v in items:
+        found = _computed_float(v, f"{path}.{k}" if isinstance(k, str) else f"{path}[{k}]")
+        if found is not None:
+            return found
+    return None
+
+
+SnapValue = Union[Fraction, tuple[Fraction, ...]]
+
+
+def _exact(text: str) -> SnapValue:
+    """A Fraction, or a tuple of Fractions for a point "[x, y]"."""
+    if text.startswith("["):
+        return tuple(Fraction(t) for t in text[1:-1].split(","))
+    return Fraction(text)
+
+
+class Snap:
+    """One snap of Scene.from_floats: the field (JSON path), the exact value before and after (Fractions, or
+    (x, y) tuples for a point) and the squared distance moved (Fraction); distance_approx its square root."""
+
+    def __init__(self, field: str, original: str, snapped: str, distance_squared: str) -> None:
+        self.field = field
+        self.original = _exact(original)
+        self.snapped = _exact(snapped)
+        self.distance_squared = Fraction(distance_squared)
+
+    @property
+    def distance_approx(self) -> float:
+        return float(self.distance_squared) ** 0.5
+
+    def to_dict(self) -> dict[str, Any]:
+        def text(v: SnapValue) -> list[str] | str:
+            return [str(x) for x in v] if isinstance(v, tuple) else str(v)
+
+        return {"field": self.field, "original": text(self.original), "snapped": text(self.snapped),
+                "distance_squared": str(self.distance_squared), "distance_approx": self.distance_approx}
+
+    def __repr__(self) -> str:
+        return f"Snap({self.field}: {self.original} -> {self.snapped}, moved ~{self.distance_approx:.3g})"
+
+
 class Scene(FromSource[_core.Scene]):
     """A planar scene: a workpiece held by fixels. Queries run in C++ with the GIL released."""
 
@@ -31,6 +83,35 @@ class Scene(FromSource[_core.Scene]):
     def __init__(self, core: _core.Scene) -> None:
         super().__init__(core)
         self._oracles: dict[str, _core.Oracle] = {}
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any], name: str = "<dict>") -> Scene:
+        """The scene a dict gives, every number read exactly as written. A float computed in Python (more than 15
+        significant digits, e.g. 0.1 + 0.2 or cos(0.3)) is refused: read such input with from_floats."""
+        computed = _computed_float(data, "$")
+        if computed is not None:
+            path, x = computed
+            raise ValueError(f"{name}: {path}: {x!r} is a computed float, whose exact value is not what was meant; "
+                             f"read float input with Scene.from_floats(data, snap=1e-9), or write the number as a "
+                             f"string such as \"3/10\"")
+        return cls(cls._core_type.parse(json.dumps(data), name))
+
+    @classmethod
+    def from_floats(
+        cls, data: dict[str, Any] | Path, snap: float | str, name: str | None = None
+    ) -> tuple[Scene, list[Snap]]:
+        """`--snap TOL`: the scene a dict or a file gives with float input made exact on purpose (fixel points put
+        exactly on the boundary they touch, other numbers on the simplest rational within `snap`), and the list
+        of every Snap made. ValueError naming the field for what cannot be snapped within `snap`."""
+        if isinstance(data, dict):
+            name = name or "<dict>"
+            text = json.dumps(data)
+        else:
+            name = name or os.fspath(data)
+            text = _core.read_text(os.fspath(data))
+        tol = repr(snap) if isinstance(snap, float) else str(snap)
+        snapped, snaps = _core.snap_scene(text, name, tol)
+        return cls(cls._core_type.parse(snapped, name)), [Snap(*s) for s in snaps]
 
     @property
     def name(self) -> str:

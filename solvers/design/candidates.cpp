@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "exact/input_error.h"
+#include "geometry/snap.h"
 
 namespace contactcert::solvers {
 namespace {
@@ -14,29 +15,6 @@ using geometry::DiskShape;
 using geometry::Point2;
 using geometry::PolygonShape;
 using geometry::Q;
-
-/// floor(sqrt(q)) for q >= 0, an integer.
-Z isqrt_floor(const Q& q) {
-  Z f = q.get_num() / q.get_den();
-  Z r;
-  mpz_sqrt(r.get_mpz_t(), f.get_mpz_t());
-  return r;
-}
-
-/// sqrt(q) when it is rational, else floor(sqrt(q) 2^40) / 2^40 (and *rational = false).
-Q rational_length(const Q& squared, bool* rational = nullptr) {
-  if (mpz_perfect_square_p(squared.get_num_mpz_t()) && mpz_perfect_square_p(squared.get_den_mpz_t())) {
-    Z n, d;
-    mpz_sqrt(n.get_mpz_t(), squared.get_num_mpz_t());
-    mpz_sqrt(d.get_mpz_t(), squared.get_den_mpz_t());
-    return Q(n, d);
-  }
-  if (rational) *rational = false;
-  const Z scale = Z(1) << 40;
-  Q r(isqrt_floor(squared * Q(scale * scale)), scale);
-  r.canonicalize();
-  return r;
-}
 
 bool is_vertex(const std::vector<Point2>& V, const Point2& p) {
   return std::any_of(V.begin(), V.end(), [&](const Point2& v) { return v == p; });
@@ -84,10 +62,7 @@ std::vector<Candidate> arc_length_candidates(const geometry::Shape& shape, long 
       const double phi = theta - quadrant * (M_PI / 2);
       Q t(Z(static_cast<long>(std::llround(std::tan(phi / 2) * scale.get_d()))), scale);
       t.canonicalize();
-      const Q den = 1 + t * t;
-      Point2 u{(1 - t * t) / den, 2 * t / den};
-      for (long q = 0; q < quadrant; ++q) u = geometry::perp(u);
-      const Point2 p = d->center + d->radius * u;
+      const Point2 p = geometry::circle_point(d->center, d->radius, t, quadrant);
       out.push_back({p, d->center - p});
     }
     return out;
@@ -97,7 +72,7 @@ std::vector<Candidate> arc_length_candidates(const geometry::Shape& shape, long 
   Q perimeter = 0;
   bool rational = true;
   for (std::size_t e = 0; e < V.size(); ++e) {
-    length[e] = rational_length(geometry::norm2(V[(e + 1) % V.size()] - V[e]), &rational);
+    length[e] = geometry::rational_length(geometry::norm2(V[(e + 1) % V.size()] - V[e]), &rational);
     perimeter += length[e];
   }
   auto add = [&](std::size_t e, const Q& t) {
@@ -174,7 +149,7 @@ void scan_lattice(const geometry::Shape& shape, const Q& pitch, long max_lines,
       const Q x = Q(i) * pitch, dx = x - d->center.x;
       const Q h2 = d->radius * d->radius - dx * dx;
       if (!mpz_perfect_square_p(h2.get_num_mpz_t()) || !mpz_perfect_square_p(h2.get_den_mpz_t())) continue;
-      const Q h = rational_length(h2);
+      const Q h = geometry::rational_length(h2);
       std::vector<Q> ys{d->center.y - h};
       if (sgn(h) > 0) ys.push_back(d->center.y + h);
       for (const Q& y : ys)
