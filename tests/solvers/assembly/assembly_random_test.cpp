@@ -222,10 +222,18 @@ std::optional<geometry::Assembly> random_assembly(std::mt19937_64& rng) {
   }
 }
 
+// The ASan + UBSan build of CI (-O0, where this test alone took over five minutes) checks the first 20 of the
+// normal build's 100 cases.
+#ifdef CONTACTCERT_SANITIZED
+constexpr int kCases = 20;
+#else
+constexpr int kCases = 100;
+#endif
+
 TEST(AssemblyRandom, AgreesWithBruteForceOn4PowerKModes) {
   std::mt19937_64 rng(31);
   int cases = 0, counts[3] = {0, 0, 0};
-  for (int draw = 0; cases < 100 && draw < 2000; ++draw) {
+  for (int draw = 0; cases < kCases && draw < 2000; ++draw) {
     const std::optional<geometry::Assembly> a = random_assembly(rng);
     if (!a) continue;
     ++cases;
@@ -236,9 +244,10 @@ TEST(AssemblyRandom, AgreesWithBruteForceOn4PowerKModes) {
     EXPECT_EQ(check_assembly_stability(*a, r), "") << "draw " << draw;
     ++counts[static_cast<int>(want)];
   }
-  EXPECT_EQ(cases, 100);
-  // The draws reach every verdict (seed 31: 18 strongly stable, 4 weakly stable, 78 unstable).
-  for (const int c : counts) EXPECT_GE(c, 3) << counts[0] << " " << counts[1] << " " << counts[2];
+  EXPECT_EQ(cases, kCases);
+  // The draws reach every verdict (seed 31: 18 strongly stable, 4 weakly stable, 78 unstable in 100 cases).
+  if (kCases == 100)
+    for (const int c : counts) EXPECT_GE(c, 3) << counts[0] << " " << counts[1] << " " << counts[2];
 }
 
 }  // namespace
