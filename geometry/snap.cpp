@@ -53,7 +53,13 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::string text(const Point2& p) { return "[" + exact::to_string(p.x) + ", " + exact::to_string(p.y) + "]"; }
+std::string text(const Point2& p) {
+  std::string s = "[";  // appended, not "[" + string: gcc 12's -Wrestrict false positive
+  s += exact::to_string(p.x);
+  s += ", ";
+  s += exact::to_string(p.y);
+  return s += "]";
+}
 
 /// A float view of a tolerance or distance for messages ("1e-09"), never an exact text thousands of digits long.
 std::string view(double x) {

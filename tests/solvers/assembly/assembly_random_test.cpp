@@ -246,8 +246,9 @@ TEST(AssemblyRandom, AgreesWithBruteForceOn4PowerKModes) {
   }
   EXPECT_EQ(cases, kCases);
   // The draws reach every verdict (seed 31: 18 strongly stable, 4 weakly stable, 78 unstable in 100 cases).
-  if (kCases == 100)
+  if (kCases == 100) {
     for (const int c : counts) EXPECT_GE(c, 3) << counts[0] << " " << counts[1] << " " << counts[2];
+  }
 }
 
 }  // namespace
