@@ -10,23 +10,6 @@ namespace {
 
 using exact::JsonInput;
 
-Point2 read_point(const JsonInput& node) {
-  const exact::Vec<Q> v = node.rational_vector(2);
-  return {v(0), v(1)};
-}
-
-Q read_positive(const JsonInput& node) {
-  Q x = node.rational();
-  if (sgn(x) <= 0) node.fail("a positive number");
-  return x;
-}
-
-Q read_nonnegative(const JsonInput& node) {
-  Q x = node.rational();
-  if (sgn(x) < 0) node.fail("a friction coefficient >= 0");
-  return x;
-}
-
 /// A body: com defaults to the centroid, mass to the area (density 1; a disk's area is irrational, so a disk
 /// needs its mass), inertia to uniform density, load to its weight m gravity at the com.
 Body read_body(const JsonInput& node, const Point2& gravity) {
@@ -102,7 +85,9 @@ Point2 position_of(const Assembly& a, const Party& p) {
   return p.kind == Party::Kind::kFixel ? a.fixels[p.index] : a.fingers[p.index].position;
 }
 
-std::string text(const Point2& p) { return "(" + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")"; }
+std::string text(const Point2& p) {
+  return std::string("(") + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")";
+}
 
 /// The normal at boundary point p of shape s pointing into it, if the boundary determines it (not at a vertex).
 std::optional<Point2> inward_normal(const Shape& s, const Point2& p) {

@@ -1,26 +1,26 @@
 #include "geometry/scene_json.h"
 
 namespace contactcert::geometry {
-namespace {
-
-using exact::JsonInput;
-
-Point2 read_point(const JsonInput& node) {
+Point2 read_point(const exact::JsonInput& node) {
   const exact::Vec<Q> v = node.rational_vector(2);
   return {v(0), v(1)};
 }
 
-Q read_positive(const JsonInput& node) {
+Q read_positive(const exact::JsonInput& node) {
   Q x = node.rational();
   if (sgn(x) <= 0) node.fail("a positive number");
   return x;
 }
 
-Q read_nonnegative(const JsonInput& node) {
+Q read_nonnegative(const exact::JsonInput& node) {
   Q x = node.rational();
   if (sgn(x) < 0) node.fail("a number >= 0");
   return x;
 }
+
+namespace {
+
+using exact::JsonInput;
 
 }  // namespace
 

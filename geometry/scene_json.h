@@ -31,6 +31,13 @@ PlanarSceneInput read_planar_scene_input(const exact::JsonInput& root);
 /// distance from the centre, negative friction, a negative gap, unknown keys.
 PlanarScene read_planar_scene(const exact::JsonInput& root);
 
+/// A point [x, y] of two exact numbers (SPEC section 1); InputError naming the field otherwise.
+Point2 read_point(const exact::JsonInput& node);
+/// An exact number > 0; InputError naming the field otherwise.
+Q read_positive(const exact::JsonInput& node);
+/// An exact number >= 0 (a friction coefficient, a gap); InputError naming the field otherwise.
+Q read_nonnegative(const exact::JsonInput& node);
+
 /// Parses a shape ({"type": "polygon", "vertices"} or {"type": "disk", "center", "radius"}, SPEC section 3). Throws
 /// exact::InputError on a degenerate, clockwise or self-intersecting polygon or a non-positive radius.
 Shape read_shape(const exact::JsonInput& node);

@@ -6,11 +6,7 @@ namespace contactcert::solvers::motion {
 namespace {
 
 using exact::JsonInput;
-
-Point2 read_point(const JsonInput& node) {
-  const exact::Vec<Q> v = node.rational_vector(2);
-  return {v(0), v(1)};
-}
+using geometry::read_point;
 
 /// Fails unless the vertices form a convex counter-clockwise polygon (simple, no collinear vertex).
 void expect_convex(const std::vector<Point2>& v, const JsonInput& node) {

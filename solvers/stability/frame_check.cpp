@@ -17,7 +17,9 @@ using geometry::FrameStatus;
 using geometry::Point2;
 using geometry::Shape;
 
-std::string text(const Point2& p) { return "(" + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")"; }
+std::string text(const Point2& p) {
+  return std::string("(") + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")";
+}
 
 FrameResult fails(FrameStatus s, std::string why) { return {s, {}, std::move(why)}; }
 

@@ -7,11 +7,7 @@ namespace {
 
 using exact::JsonInput;
 using geometry::Point2;
-
-Point2 read_point(const JsonInput& node) {
-  const Vec<Q> v = node.rational_vector(2);
-  return {v(0), v(1)};
-}
+using geometry::read_point;
 
 /// One contact as read: its frame and, for a finger, its control.
 struct Contact {

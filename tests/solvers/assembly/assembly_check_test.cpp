@@ -95,8 +95,8 @@ SceneText two_boxes(bool swapped, const char* lateral) {
     s.body(lower, load_lower);
     s.body(upper, load_upper);
   }
-  for (const Q x : {Q(0), Q(2)}) s.contact(obstacle(g), body(L), point(x, 0), "[0, 1]", testing::mu("1/2"));
-  for (const Q x : {Q(0), Q(1)}) s.contact(body(L), body(U), point(x, 1), "[0, 1]", testing::mu("1/2"));
+  for (const Q& x : {Q(0), Q(2)}) s.contact(obstacle(g), body(L), point(x, 0), "[0, 1]", testing::mu("1/2"));
+  for (const Q& x : {Q(0), Q(1)}) s.contact(body(L), body(U), point(x, 1), "[0, 1]", testing::mu("1/2"));
   return s;
 }
 
@@ -160,7 +160,9 @@ TEST(AssemblyCheck, ForgedWitnessesAreRefused) {
   {  // the bodies' accelerations relabelled
     AssemblyStabilityResult f = r;
     for (Eigen::Index d = 0; d < 3; ++d) std::swap(f.moving.acceleration(d), f.moving.acceleration(3 + d));
-    if (f.moving.acceleration != r.moving.acceleration) EXPECT_NE(check_assembly_stability(a, f), "");
+    if (f.moving.acceleration != r.moving.acceleration) {
+      EXPECT_NE(check_assembly_stability(a, f), "");
+    }
   }
   {  // a force scaled
     AssemblyStabilityResult f = r;

@@ -14,8 +14,8 @@ namespace contactcert::solvers::assembly::testing {
 
 using exact::Q;
 
-inline std::string num(const Q& q) { return "\"" + exact::to_string(q) + "\""; }
-inline std::string point(const Q& x, const Q& y) { return "[" + num(x) + ", " + num(y) + "]"; }
+inline std::string num(const Q& q) { return std::string("\"") + exact::to_string(q) + "\""; }
+inline std::string point(const Q& x, const Q& y) { return std::string("[") + num(x) + ", " + num(y) + "]"; }
 
 /// {"type": "polygon"} of the box [x0, x1] x [y0, y1].
 inline std::string box(const Q& x0, const Q& y0, const Q& x1, const Q& y1) {

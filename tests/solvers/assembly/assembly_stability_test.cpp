@@ -143,7 +143,7 @@ TEST(AssemblyStability, PushedBoxWeakAndStrong) {
     SceneText s;
     const std::size_t g = ground(s);
     s.body(box(0, 0, 2, 1), "\"load\": [1, -2, 0]");
-    for (const Q x : {Q(0), Q(2)})
+    for (const Q& x : {Q(0), Q(2)})
       s.contact(obstacle(g), body(0), point(x, 0), "[0, 1]",
                 std::string("\"mu_s\": \"") + mu_s + "\", \"mu_k\": \"" + mu_k + "\"");
     return decided(s.read());

@@ -66,12 +66,12 @@ ucp::UcpProblem pushed_boxes(const char* v_n, bool wall) {
   const std::size_t g = testing::ground(s);
   s.body(box(0, 0, 1, 1));
   s.body(box(1, 0, 2, 1));
-  for (const Q x : {Q(0), Q(1)}) s.contact(obstacle(g), body(0), point(x, 0), "[0, 1]", testing::mu("3/10"));
-  for (const Q x : {Q(1), Q(2)}) s.contact(obstacle(g), body(1), point(x, 0), "[0, 1]", testing::mu("3/10"));
-  for (const Q y : {Q(1, 4), Q(3, 4)}) s.contact(body(0), body(1), point(1, y), "[1, 0]", testing::mu("1/5"));
+  for (const Q& x : {Q(0), Q(1)}) s.contact(obstacle(g), body(0), point(x, 0), "[0, 1]", testing::mu("3/10"));
+  for (const Q& x : {Q(1), Q(2)}) s.contact(obstacle(g), body(1), point(x, 0), "[0, 1]", testing::mu("3/10"));
+  for (const Q& y : {Q(1, 4), Q(3, 4)}) s.contact(body(0), body(1), point(1, y), "[1, 0]", testing::mu("1/5"));
   if (wall) {
     const std::size_t w = s.obstacle(box(2, 0, 3, 2));
-    for (const Q y : {Q(1, 4), Q(3, 4)}) s.contact(obstacle(w), body(1), point(2, y), "[-1, 0]", testing::mu("1/5"));
+    for (const Q& y : {Q(1, 4), Q(3, 4)}) s.contact(obstacle(w), body(1), point(2, y), "[-1, 0]", testing::mu("1/5"));
   }
   s.fingers.push_back(std::string("{\"position\": [0, \"1/2\"], \"velocity\": [\"") + v_n + "\", 0]}");
   s.contacts.push_back("{\"from\": {\"finger\": 0}, \"to\": {\"body\": 0}, \"mu\": \"1/2\"}");
