@@ -8,14 +8,6 @@ namespace {
 using exact::sign;
 
 template <class T>
-T from_q(const Q& q) {
-  if constexpr (std::is_same_v<T, Q>)
-    return q;
-  else
-    return q.get_d();
-}
-
-template <class T>
 Vec2<T> from_point(const Point2& p) {
   return {from_q<T>(p.x), from_q<T>(p.y)};
 }

@@ -14,6 +14,15 @@ namespace contactcert::solvers::motion {
 using geometry::Pose;
 using geometry::Vec2;
 
+/// An exact scene number in the run's number type: itself for Q, its nearest double for the float run.
+template <class T>
+T from_q(const Q& q) {
+  if constexpr (std::is_same_v<T, Q>)
+    return q;
+  else
+    return q.get_d();
+}
+
 /// The scene's shapes in T: the body's vertices in its own frame (the world frame at time 0), obstacles and
 /// friction coefficients.
 template <class T>

@@ -95,14 +95,6 @@ std::vector<std::string> minus(const std::vector<std::string>& a, const std::vec
   return out;
 }
 
-template <class T>
-T from_q(const Q& q) {
-  if constexpr (std::is_same_v<T, Q>)
-    return q;
-  else
-    return q.get_d();
-}
-
 /// A finger carried along body edge c.body with relative velocity `slip` (along the edge): the time it reaches the
 /// edge's end and which body vertex that is, if it ever does (linear in the body's frame).
 template <class T>
