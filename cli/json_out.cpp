@@ -63,14 +63,6 @@ std::string tuple_text(const exact::Vec<Q>& v) {
   return s + ")";
 }
 
-std::string point_text(const geometry::Point2& p) {
-  std::string s = "(";
-  s += exact::to_string(p.x);
-  s += ", ";
-  s += exact::to_string(p.y);
-  return s + ")";
-}
-
 std::string tuple_text(const exact::Vec<double>& v) {
   std::string s = "(";
   for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + std::to_string(v(i));

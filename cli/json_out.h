@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "exact/number.h"
+#include "geometry/point_text.h"
 #include "geometry/workpiece.h"
 
 namespace contactcert::cli {
@@ -28,8 +29,6 @@ json primitive_json(const exact::Vec<exact::Q>& v);
 std::string tuple_text(const exact::Vec<exact::Q>& v);
 std::string tuple_text(const exact::Vec<double>& v);
 std::string tuple_text(const std::vector<exact::Z>& v);
-/// "(x, y)" of a point, exact.
-std::string point_text(const geometry::Point2& p);
 /// Reads "a,b,c" (each an exact number, SPEC section 1) for option `option`; InputError names the option.
 exact::Vec<exact::Q> parse_number_list(const std::string& text, const std::string& option, long expected_size);
 /// Writes text to path ("-" = stdout), flushed and checked: InputError naming the file if it cannot be opened

@@ -2,6 +2,7 @@
 
 #include "exact/rational_text.h"
 #include "geometry/contact_frame.h"
+#include "geometry/point_text.h"
 #include "geometry/scene_json.h"
 #include "geometry/shape_overlap.h"
 
@@ -85,10 +86,6 @@ Point2 position_of(const Assembly& a, const Party& p) {
   return p.kind == Party::Kind::kFixel ? a.fixels[p.index] : a.fingers[p.index].position;
 }
 
-std::string text(const Point2& p) {
-  return std::string("(") + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")";
-}
-
 /// The normal at boundary point p of shape s pointing into it, if the boundary determines it (not at a vertex).
 std::optional<Point2> inward_normal(const Shape& s, const Point2& p) {
   const FrameResult f = frame_from_position(s, p);
@@ -105,10 +102,11 @@ void frame_from_positions(const Assembly& a, AssemblyContact& c, const JsonInput
   std::optional<Point2> n_from = from ? inward_normal(*from, c.point) : std::nullopt;
   if (n_from) n_from = Q(-1) * *n_from;
   if (n_to && n_from && (sgn(Q(cross(*n_to, *n_from))) != 0 || sgn(Q(dot(*n_to, *n_from))) <= 0))
-    node.fail("a point where the two boundaries have a common normal; at " + text(c.point) + " they have " +
-              text(*n_to) + " and " + text(*n_from));
+    node.fail("a point where the two boundaries have a common normal; at " + point_text(c.point) + " they have " +
+              point_text(*n_to) + " and " + point_text(*n_from));
   if (!n_to && !n_from)
-    node.fail("an explicit \"normal\": at " + text(c.point) + " neither boundary determines the normal (vertices)");
+    node.fail("an explicit \"normal\": at " + point_text(c.point) +
+              " neither boundary determines the normal (vertices)");
   c.normal = n_to ? *n_to : *n_from;
 }
 
@@ -126,7 +124,7 @@ void check_contact(const Assembly& a, const AssemblyContact& c, const JsonInput&
         node.fail(std::string("a common normal pointing from `from` into `to`; at `") + (is_to ? "to" : "from") +
                   "`: " + f.message + (is_to ? "" : " (negated: the normal points out of `from`)"));
     } else if (!(position_of(a, *side) == c.point)) {
-      node.fail("the point " + text(position_of(a, *side)) + " of the point party, not " + text(c.point));
+      node.fail("the point " + point_text(position_of(a, *side)) + " of the point party, not " + point_text(c.point));
     }
   }
 }
@@ -152,7 +150,7 @@ AssemblyContact read_contact(const JsonInput& node, const Assembly& a, const std
     c.point = read_point(*position);
     for (const Party* side : {&c.from, &c.to})
       if (const Shape* s = shape_of(a, *side); s && locate_in_shape(*s, c.point) != ShapeLocation::kBoundary)
-        position->fail("a point on the boundary of both parties, not " + text(c.point));
+        position->fail("a point on the boundary of both parties, not " + point_text(c.point));
     frame_from_positions(a, c, node);
   } else if (point_from || point_to) {  // the frame from the point party's position (docs/formats.md section 3)
     const Party& body = point_from ? c.to : c.from;

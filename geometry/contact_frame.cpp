@@ -1,13 +1,10 @@
 #include "geometry/contact_frame.h"
 
 #include "exact/rational_text.h"
+#include "geometry/point_text.h"
 
 namespace contactcert::geometry {
 namespace {
-
-std::string text(const Point2& p) {
-  return std::string("(") + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")";
-}
 
 FrameResult failure(FrameStatus s, std::string message) { return {s, {}, std::move(message)}; }
 
@@ -30,12 +27,12 @@ FrameResult disk_frame(const DiskShape& disk, const Point2& f) {
   const int s = sgn(Q(d2 - r2));
   if (s < 0)
     return failure(FrameStatus::kInsideWorkpiece,
-                   "fixel at " + text(f) + " lies inside the disk; move it onto or outside the boundary");
+                   "fixel at " + point_text(f) + " lies inside the disk; move it onto or outside the boundary");
   if (s == 0) return {FrameStatus::kOk, {f, disk.center - f, Q(0)}, {}};
   Q len;
   if (!rational_sqrt(d2, len))
     return failure(FrameStatus::kIrrationalDirection,
-                   "fixel at " + text(f) + " is at irrational distance sqrt(" + exact::to_string(d2) +
+                   "fixel at " + point_text(f) + " is at irrational distance sqrt(" + exact::to_string(d2) +
                        ") from the disk centre, so its closest point is not rational; place it along a "
                        "Pythagorean direction such as centre + s*(3/5, 4/5), or give an explicit contact "
                        "{point, normal, gap}");
@@ -64,12 +61,12 @@ FrameResult polygon_frame(const std::vector<Point2>& V, const Point2& f) {
   const ShapeLocation where = locate_in_shape(PolygonShape{V}, f);
   if (where == ShapeLocation::kInside)
     return failure(FrameStatus::kInsideWorkpiece,
-                   "fixel at " + text(f) + " lies inside the polygon; move it onto or outside the boundary");
+                   "fixel at " + point_text(f) + " lies inside the polygon; move it onto or outside the boundary");
   if (where == ShapeLocation::kBoundary) {
     for (std::size_t i = 0; i < n; ++i)
       if (V[i] == f)
         return failure(FrameStatus::kNormalNotUnique,
-                       "fixel at " + text(f) + " touches polygon vertex " + std::to_string(i) +
+                       "fixel at " + point_text(f) + " touches polygon vertex " + std::to_string(i) +
                            ", where the contact normal is not unique; give an explicit contact {point, normal, gap}");
     // Not a vertex, so exactly one edge segment of the simple polygon holds f (a line through another edge may
     // pass through f on a non-convex polygon: only the segment counts).
@@ -98,7 +95,7 @@ FrameResult polygon_frame(const std::vector<Point2>& V, const Point2& f) {
   }
   if (!unique)
     return failure(FrameStatus::kClosestNotUnique,
-                   "fixel at " + text(f) +
+                   "fixel at " + point_text(f) +
                        " is equally close to two points of the polygon, so its frame is not "
                        "defined; move it or give an explicit contact {point, normal, gap}");
   return {FrameStatus::kOk, {p, p - f, best}, {}};
@@ -121,15 +118,15 @@ std::string check_polygon_normal(const std::vector<Point2>& V, const Point2& p, 
     const Point2 v = perp(V[(i + 1) % n] - V[i]);      // inward normal of the edge starting there
     const bool ok = sgn(Q(cross(u, v))) > 0 ? in_cone2(u, v, nrm) : in_cone2(v, u, nrm);
     if (!ok)
-      return "a normal that points into the polygon at vertex " + std::to_string(i) + ", in the cone of " + text(u) +
-             " and " + text(v);
+      return "a normal that points into the polygon at vertex " + std::to_string(i) + ", in the cone of " +
+             point_text(u) + " and " + point_text(v);
     return {};
   }
   const std::size_t i = edge_holding(V, p);
   const Point2 in = perp(V[(i + 1) % n] - V[i]);
   if (sgn(Q(cross(in, nrm))) != 0 || sgn(Q(dot(in, nrm))) <= 0)
     return "a normal perpendicular to edge " + std::to_string(i) +
-           " and pointing into the polygon, a positive multiple of " + text(in);
+           " and pointing into the polygon, a positive multiple of " + point_text(in);
   return {};
 }
 
@@ -144,12 +141,12 @@ FrameResult frame_from_contact(const Shape& shape, const Point2& point, const Po
   if (sgn(gap) < 0) return failure(FrameStatus::kInsideWorkpiece, "a gap >= 0");
   if (sgn(norm2(normal)) == 0) return failure(FrameStatus::kNormalNotUnique, "a non-zero normal");
   if (locate_in_shape(shape, point) != ShapeLocation::kBoundary)
-    return failure(FrameStatus::kClosestNotUnique, "a point on the workpiece boundary, not " + text(point));
+    return failure(FrameStatus::kClosestNotUnique, "a point on the workpiece boundary, not " + point_text(point));
   if (const auto* d = std::get_if<DiskShape>(&shape)) {
     const Point2 in = d->center - point;
     if (sgn(Q(cross(in, normal))) != 0 || sgn(Q(dot(in, normal))) <= 0)
       return failure(FrameStatus::kNormalNotUnique,
-                     "a normal pointing at the disk centre, a positive multiple of " + text(in));
+                     "a normal pointing at the disk centre, a positive multiple of " + point_text(in));
   } else {
     const std::string why = check_polygon_normal(std::get<PolygonShape>(shape).vertices, point, normal);
     if (!why.empty()) return failure(FrameStatus::kNormalNotUnique, why);

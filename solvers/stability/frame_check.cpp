@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "exact/rational_text.h"
+#include "geometry/point_text.h"
 #include "geometry/scene_json.h"
 
 namespace contactcert::solvers::frame_check {
@@ -16,10 +17,6 @@ using geometry::FrameResult;
 using geometry::FrameStatus;
 using geometry::Point2;
 using geometry::Shape;
-
-std::string text(const Point2& p) {
-  return std::string("(") + exact::to_string(p.x) + ", " + exact::to_string(p.y) + ")";
-}
 
 FrameResult fails(FrameStatus s, std::string why) { return {s, {}, std::move(why)}; }
 
@@ -68,21 +65,22 @@ FrameResult polygon_piece_violation(const std::vector<Point2>& V, const Point2& 
     // alpha = cross(n, v) / cross(u, v) >= 0 and beta = cross(u, n) / cross(u, v) >= 0, n != 0.
     const int s = sgn(Q(geometry::cross(u, v)));
     if (sgn(geometry::norm2(n)) == 0 || sgn(Q(geometry::cross(n, v))) * s < 0 || sgn(Q(geometry::cross(u, n))) * s < 0)
-      return fails(FrameStatus::kNormalNotUnique, "the normal " + text(n) + " at vertex " + std::to_string(i) +
-                                                      " is not in the cone of its edges' inward normals " + text(u) +
-                                                      " and " + text(v));
+      return fails(FrameStatus::kNormalNotUnique, "the normal " + point_text(n) + " at vertex " + std::to_string(i) +
+                                                      " is not in the cone of its edges' inward normals " +
+                                                      point_text(u) + " and " + point_text(v));
     return {};
   }
   for (std::size_t i = 0; i < k; ++i) {
     if (!on_segment(V[i], V[(i + 1) % k], p)) continue;
     const Point2 in = geometry::perp(V[(i + 1) % k] - V[i]);
     if (!positive_multiple(n, in))
-      return fails(FrameStatus::kNormalNotUnique,
-                   "the normal " + text(n) + " is not a positive multiple of the inward normal " + text(in) +
-                       " of edge " + std::to_string(i) + ", whose segment holds the point " + text(p));
+      return fails(FrameStatus::kNormalNotUnique, "the normal " + point_text(n) +
+                                                      " is not a positive multiple of the inward normal " +
+                                                      point_text(in) + " of edge " + std::to_string(i) +
+                                                      ", whose segment holds the point " + point_text(p));
     return {};
   }
-  return fails(FrameStatus::kClosestNotUnique, "the point " + text(p) + " is on no edge segment of the polygon");
+  return fails(FrameStatus::kClosestNotUnique, "the point " + point_text(p) + " is on no edge segment of the polygon");
 }
 
 /// Why p is not the unique closest polygon point to f at squared distance gap2, or "".
@@ -91,10 +89,10 @@ std::string polygon_closest_violation(const std::vector<Point2>& V, const Point2
     const Point2 q = closest_on_segment(V[i], V[(i + 1) % V.size()], f);
     const Q d2 = geometry::norm2(f - q);
     if (d2 < gap2 || (d2 == gap2 && !(q == p)))
-      return "the point " + text(q) + " of edge " + std::to_string(i) + " is " +
-             (d2 < gap2 ? "closer to the fixel at " + text(f) + " than "
-                        : "as close to the fixel at " + text(f) + " as ") +
-             text(p);
+      return "the point " + point_text(q) + " of edge " + std::to_string(i) + " is " +
+             (d2 < gap2 ? "closer to the fixel at " + point_text(f) + " than "
+                        : "as close to the fixel at " + point_text(f) + " as ") +
+             point_text(p);
   }
   return "";
 }
@@ -113,11 +111,11 @@ std::optional<Q> rational_sqrt(const Q& q) {
 FrameResult disk_frame(const DiskShape& d, const Point2& f) {
   const Q d2 = geometry::norm2(f - d.center);
   if (d2 < d.radius * d.radius)
-    return fails(FrameStatus::kInsideWorkpiece, "the fixel at " + text(f) + " is inside the disk");
+    return fails(FrameStatus::kInsideWorkpiece, "the fixel at " + point_text(f) + " is inside the disk");
   const std::optional<Q> len = rational_sqrt(d2);
   if (!len)
     return fails(FrameStatus::kIrrationalDirection,
-                 "the fixel at " + text(f) + " is at irrational distance from the disk centre");
+                 "the fixel at " + point_text(f) + " is at irrational distance from the disk centre");
   const Q gap = *len - d.radius;
   return {FrameStatus::kOk, {d.center + Q(d.radius / *len) * (f - d.center), d.center - f, gap * gap}, {}};
 }
@@ -126,11 +124,11 @@ FrameResult disk_frame(const DiskShape& d, const Point2& f) {
 /// inward normal of the edge segment that holds f.
 FrameResult polygon_frame(const std::vector<Point2>& V, const Point2& f) {
   if (strictly_inside(V, f))
-    return fails(FrameStatus::kInsideWorkpiece, "the fixel at " + text(f) + " is inside the polygon");
+    return fails(FrameStatus::kInsideWorkpiece, "the fixel at " + point_text(f) + " is inside the polygon");
   for (std::size_t i = 0; i < V.size(); ++i)
     if (V[i] == f)
-      return fails(FrameStatus::kNormalNotUnique, "the fixel at " + text(f) + " touches vertex " + std::to_string(i) +
-                                                      ", where the normal is not unique");
+      return fails(FrameStatus::kNormalNotUnique, "the fixel at " + point_text(f) + " touches vertex " +
+                                                      std::to_string(i) + ", where the normal is not unique");
   std::size_t edge = 0;
   Point2 p = closest_on_segment(V[0], V[1], f);
   for (std::size_t i = 1; i < V.size(); ++i)
@@ -153,10 +151,11 @@ FrameResult frame_violation(const Shape& shape, const FrameInput& given, const C
   // The point on a boundary piece and the normal perpendicular to it, into the workpiece.
   if (disk) {
     if (geometry::norm2(p - disk->center) != disk->radius * disk->radius)
-      return fails(FrameStatus::kClosestNotUnique, "the point " + text(p) + " is not on the disk's circle");
+      return fails(FrameStatus::kClosestNotUnique, "the point " + point_text(p) + " is not on the disk's circle");
     if (!positive_multiple(n, disk->center - p))
-      return fails(FrameStatus::kNormalNotUnique, "the normal " + text(n) + " is not a positive multiple of " +
-                                                      text(disk->center - p) + ", from the point to the disk centre");
+      return fails(FrameStatus::kNormalNotUnique, "the normal " + point_text(n) + " is not a positive multiple of " +
+                                                      point_text(disk->center - p) +
+                                                      ", from the point to the disk centre");
   } else if (FrameResult piece = polygon_piece_violation(*V, p, n); piece.status != FrameStatus::kOk) {
     return piece;
   }
@@ -170,17 +169,18 @@ FrameResult frame_violation(const Shape& shape, const FrameInput& given, const C
   // A fixel at f: outside or on the boundary, p its unique closest point, n from f toward p.
   const Point2& f = *given.position;
   if (disk ? geometry::norm2(f - disk->center) < disk->radius * disk->radius : strictly_inside(*V, f))
-    return fails(FrameStatus::kInsideWorkpiece, "the fixel at " + text(f) + " is inside the workpiece");
+    return fails(FrameStatus::kInsideWorkpiece, "the fixel at " + point_text(f) + " is inside the workpiece");
   if (gap2 != geometry::norm2(p - f))
     return fails(FrameStatus::kClosestNotUnique, "the squared gap " + exact::to_string(gap2) +
                                                      " is not |p - f|^2 = " + exact::to_string(geometry::norm2(p - f)));
   if (sgn(gap2) != 0 && !positive_multiple(n, p - f))
-    return fails(FrameStatus::kNormalNotUnique, "the normal " + text(n) + " is not a positive multiple of " +
-                                                    text(p - f) + ", from the fixel to the point");
+    return fails(FrameStatus::kNormalNotUnique, "the normal " + point_text(n) + " is not a positive multiple of " +
+                                                    point_text(p - f) + ", from the fixel to the point");
   if (disk) {
     if (!positive_multiple(p - disk->center, f - disk->center))
-      return fails(FrameStatus::kClosestNotUnique,
-                   "the point " + text(p) + " is not the circle's point closest to the fixel at " + text(f));
+      return fails(
+          FrameStatus::kClosestNotUnique,
+          "the point " + point_text(p) + " is not the circle's point closest to the fixel at " + point_text(f));
   } else if (std::string why = polygon_closest_violation(*V, f, p, gap2); !why.empty()) {
     return fails(FrameStatus::kClosestNotUnique, why);
   }
