@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "cli/bench_aggregate.h"
-#include "cli/html_report.h"
+#include "queries/html_report.h"
 
 namespace contactcert::cli {
 

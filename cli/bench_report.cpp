@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include "cli/bench_tables.h"
-#include "cli/html_report.h"
 #include "exact/input_error.h"
+#include "queries/html_report.h"
 
 namespace contactcert::cli {
 

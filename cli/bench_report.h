@@ -6,9 +6,11 @@
 #include <vector>
 
 #include "cli/bench/rungs.h"
-#include "cli/json_out.h"
+#include "queries/json_out.h"
 
 namespace contactcert::cli {
+
+using namespace queries;  // the front end names the query layer's writers unqualified
 
 /// One rung's result on one instance.
 struct RungRecord {

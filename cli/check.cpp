@@ -9,10 +9,10 @@
 #include <optional>
 
 #include "cli/command.h"
-#include "cli/contact_forces.h"
 #include "cli/results.h"
 #include "exact/json_input.h"
 #include "exact/sha256.h"
+#include "queries/contact_forces.h"
 #include "solvers/design/goal_certificate.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/frame_check.h"
@@ -119,7 +119,7 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
       exact::quoted_excerpt(kind));
 }
 
-/// The contact forces of a checked stability witness as a person reads them (cli/contact_forces.h), recomputed
+/// The contact forces of a checked stability witness as a person reads them (queries/contact_forces.h), recomputed
 /// from the verified raw vector `forces` under `key`. The certificate's own readable "contacts", if any, must be
 /// exactly these, else the certificate is INVALID: it would show a person numbers that were not checked.
 void add_contacts(const exact::JsonInput& evidence, const std::string& key, const geometry::PlanarScene& scene,

@@ -4,17 +4,21 @@
 #include <functional>
 #include <string>
 
+#include "queries/options.h"
+
 namespace CLI {
 class App;
 }
 
 namespace contactcert::cli {
 
+using namespace queries;  // the front end names the query layer's writers unqualified
+
 /// Options every subcommand takes (SPEC section 6).
 struct CommonOptions {
-  bool json = false;                ///< machine output: one JSON object on stdout
-  std::string arith = "verified";   ///< exact | float | verified | adaptive
-  double time_limit = 0;            ///< --time-limit seconds (0 = none); see main.cpp for how it is enforced
+  bool json = false;               ///< machine output: one JSON object on stdout
+  std::string arith = "verified";  ///< exact | float | verified | adaptive
+  double time_limit = 0;           ///< --time-limit seconds (0 = none); see main.cpp for how it is enforced
 };
 
 /// A subcommand's work, run after parsing; returns the exit code.

@@ -6,15 +6,15 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.h"
-#include "cli/cone_svg.h"
-#include "cli/contact_forces.h"
-#include "cli/json_out.h"
 #include "cli/results.h"
 #include "cli/snap_option.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "queries/cone_svg.h"
+#include "queries/contact_forces.h"
+#include "queries/json_out.h"
 #include "solvers/stability/strong_stability.h"
 #include "solvers/wrench_cone/cone_certificate.h"
 #include "solvers/wrench_cone/line_of_force.h"
@@ -195,7 +195,7 @@ solvers::ModeString cone_mode(const geometry::PlanarScene& scene, const std::str
 namespace {
 
 /// The certificate of `cone --certificate` and, for a witness, the wrench g and the contact forces c of the
-/// touching fixels that its z applies (solvers::contact_forces), for the views of cli/contact_forces.h.
+/// touching fixels that its z applies (solvers::contact_forces), for the views of queries/contact_forces.h.
 struct ConeCertificateFile {
   json file;  ///< solvers::cone_certificate, with the witness's "contacts" and "acceleration" before "scene"
   bool witness = false;
@@ -215,7 +215,7 @@ ConeCertificateFile cone_certificate_file(const std::string& scene_text, const g
   out.g = certificate.wrench;
   solvers::touching_scene(scene, &out.touching);
   out.c = solvers::contact_forces(form, out.touching, certificate.z);
-  const json view = witness_json(scene, out.touching, out.c, out.g);
+  const json view = queries::witness_json(scene, out.touching, out.c, out.g);
   for (auto it = certificate.file.begin(); it != certificate.file.end(); ++it) {
     if (it.key() == "scene") {
       out.file["contacts"] = view.at("contacts");
@@ -250,7 +250,7 @@ int run_exact(const ConeOptions& o, const std::string& text, const geometry::Pla
   if (o.common.json) {
     json j = cone_json(scene, mode, c, o.route, o.common.arith);
     if (!o.certificate.empty()) j["certificate"] = o.certificate;
-    if (certificate.witness) j["witness"] = witness_json(scene, certificate.touching, certificate.c, certificate.g);
+    if (certificate.witness) j["witness"] = queries::witness_json(scene, certificate.touching, certificate.c, certificate.g);
     std::cout << j.dump() << "\n";
     return 0;
   }

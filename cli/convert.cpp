@@ -117,7 +117,8 @@ int run_convert(const ConvertOptions& opts) {
 
 void register_convert(CLI::App& app, Action& action) {
   auto opts = std::make_shared<ConvertOptions>();
-  CLI::App* sub = app.add_subcommand("convert", "Span <-> face conversion of a cone (format: docs/formats.md, section 4)");
+  CLI::App* sub =
+      app.add_subcommand("convert", "Span <-> face conversion of a cone (format: docs/formats.md, section 4)");
   sub->add_option("FILE", opts->file, "Cone file: {dim, rays, lines} or {dim, inequalities, strict, equalities}")
       ->required();
   add_common_options(*sub, opts->common);

@@ -16,8 +16,6 @@
 #include <stdexcept>
 
 #include "cli/command.h"
-#include "cli/design_svg.h"
-#include "cli/json_out.h"
 #include "cli/option_checks.h"
 #include "cli/progress_line.h"
 #include "cli/results.h"
@@ -27,6 +25,8 @@
 #include "exact/rational_text.h"
 #include "exact/sha256.h"
 #include "geometry/scene_json.h"
+#include "queries/design_svg.h"
+#include "queries/json_out.h"
 #include "solvers/design/checkpoint.h"
 #include "solvers/design/distribute.h"
 #include "solvers/design/goal_certificate.h"

@@ -4,18 +4,18 @@
 #include <cmath>
 #include <iostream>
 
-#include "cli/boundary_fraction.h"
-#include "cli/boundary_marks.h"
-#include "cli/boundary_text.h"
 #include "cli/command.h"
-#include "cli/contact_notes.h"
-#include "cli/json_out.h"
 #include "cli/progress_line.h"
 #include "cli/results.h"
 #include "cli/snap_option.h"
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "queries/boundary_fraction.h"
+#include "queries/boundary_marks.h"
+#include "queries/boundary_text.h"
+#include "queries/contact_notes.h"
+#include "queries/json_out.h"
 #include "solvers/insertion/insertion.h"
 
 namespace contactcert::cli {

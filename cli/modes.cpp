@@ -8,12 +8,12 @@
 #include <map>
 
 #include "cli/command.h"
-#include "cli/json_out.h"
 #include "cli/option_checks.h"
 #include "cli/results.h"
 #include "cli/snap_option.h"
 #include "exact/json_input.h"
 #include "geometry/scene_json.h"
+#include "queries/json_out.h"
 #include "solvers/stability/contact_modes.h"
 
 namespace contactcert::cli {

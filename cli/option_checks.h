@@ -12,11 +12,11 @@
 #include <type_traits>
 
 #include "exact/json_input.h"
+#include "queries/options.h"
 
 namespace contactcert::cli {
 
-/// Largest --time-limit accepted, in seconds (about 116 days): keeps the deadline's clock arithmetic exact.
-inline constexpr double kMaxTimeLimit = 1e7;
+using queries::kMaxTimeLimit;  ///< the largest --time-limit accepted
 
 /// The option's text is a decimal integer in [lo, hi]: digits only, with a '-' only where lo < 0.
 template <class T>

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/json_out.h"
 #include "exact/json_input.h"
 #include "geometry/planar_scene.h"
+#include "queries/json_out.h"
 #include "solvers/insertion/insertion.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/finger_push.h"
@@ -23,6 +23,8 @@
 
 namespace contactcert::cli {
 
+using namespace queries;  // the front end names the query layer's writers unqualified
+
 // stability.cpp: `stability --wrench` (T = Q on the exact and verified paths, double with --arith float),
 // `--region` and `--finger`, and the --finger picture.
 // The witness's contact forces are also given in world coordinates (solvers/stability/world_forces.h), which
@@ -32,7 +34,7 @@ json stability_json(const geometry::PlanarScene& scene, const exact::Vec<exact::
                     const solvers::StabilityResult<T>& r, const std::string& arith, const std::string& certificate,
                     const std::optional<solvers::Margin<exact::Q>>& margin);
 /// The `stability` certificate file (solvers/stability/stability_certificate.h) with its readable part: the
-/// witness's world forces under "resting"/"contacts" and "moving"/"contacts" (contacts_json, cli/contact_forces.h).
+/// witness's world forces under "resting"/"contacts" and "moving"/"contacts" (contacts_json, queries/contact_forces.h).
 /// The checker verifies the raw "forces"; `check` recomputes the contacts from them and compares.
 std::string stability_certificate_file(const std::string& scene_text, const geometry::PlanarScene& scene,
                                        const exact::Vec<exact::Q>& g, const solvers::StabilityResult<exact::Q>& r);

@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "queries/scene_input.h"
+
 namespace CLI {
 class App;
 }
@@ -12,8 +14,11 @@ namespace contactcert::cli {
 /// Adds --snap TOL to a subcommand that reads a planar scene.
 void add_snap_option(CLI::App& sub, std::string& snap);
 
-/// The text of a planar scene file; with `snap` (a tolerance, "" = none) the text snapped by
-/// geometry::snap_planar_scene, each snap reported on stderr ("snapped FIELD: ORIGINAL -> SNAPPED (moved ~D)").
+/// The scene of `file` (queries::load_scene) with `snap` (a tolerance, "" = none), each snap reported on stderr
+/// ("snapped FIELD: ORIGINAL -> SNAPPED (moved ~D)").
+queries::SceneInput read_scene(const std::string& file, const std::string& snap);
+
+/// The text of that scene (read_scene's text).
 std::string read_scene_text(const std::string& file, const std::string& snap);
 
 }  // namespace contactcert::cli

@@ -8,15 +8,15 @@
 #include <random>
 
 #include "cli/command.h"
-#include "cli/json_out.h"
 #include "cli/option_checks.h"
 #include "cli/progress_line.h"
 #include "cli/results.h"
-#include "cli/ucp_forces.h"
 #include "exact/arith.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
+#include "queries/json_out.h"
+#include "queries/ucp_forces.h"
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/solve.h"
 

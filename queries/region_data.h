@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/json_out.h"
+#include "queries/json_out.h"
 #include "solvers/stability/stable_region.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 /// Per cell of the region, in order: an integer vector of the cell with smallest max-norm up to 24 where one
 /// exists, else the primitive integer multiple of the cell's exact point.
@@ -25,4 +25,4 @@ json region_data_json(const solvers::StableRegion<exact::Q>& region);
 /// lines starting with # skipped). InputError names the file and the entry.
 std::vector<exact::Vec<exact::Q>> read_wrenches(const std::string& path);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

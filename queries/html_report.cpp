@@ -1,11 +1,11 @@
-#include "cli/html_report.h"
+#include "queries/html_report.h"
 
 #include <filesystem>
 #include <sstream>
 
-#include "cli/json_out.h"
+#include "queries/json_out.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 std::string html_escape(const std::string& s) {
   std::string out;
@@ -95,4 +95,4 @@ std::string HtmlReport::write(const std::string& dir) const {
   return path;
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

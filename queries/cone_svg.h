@@ -10,7 +10,7 @@
 #include "exact/number.h"
 #include "geometry/planar_scene.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 /// How a boundary mark is drawn: its colour and what it means (the legend's text; empty: no legend entry).
 struct MarkStyle {
@@ -30,4 +30,4 @@ std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat
                             const exact::Mat<exact::Q>& lines, const std::string& title,
                             const std::vector<BoundaryMark>& marks = {});
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

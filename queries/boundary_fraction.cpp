@@ -1,8 +1,8 @@
-#include "cli/boundary_fraction.h"
+#include "queries/boundary_fraction.h"
 
 #include <cmath>
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 namespace {
 
 using exact::Q;
@@ -36,4 +36,4 @@ double boundary_fraction(const geometry::PlanarScene& scene, const solvers::Boun
   return total > 0 ? in / total : 0;
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -1,10 +1,10 @@
-#include "cli/contact_notes.h"
+#include "queries/contact_notes.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 std::string tiny_gap_notes(const geometry::PlanarScene& scene, const std::string& indent) {
   // size^2 = the squared largest distance from the com to the workpiece (a disk: (|c - com| + r)^2 >= r^2).
@@ -28,4 +28,4 @@ std::string tiny_gap_notes(const geometry::PlanarScene& scene, const std::string
   return out;
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -1,10 +1,10 @@
-#include "cli/design_svg.h"
+#include "queries/design_svg.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 namespace {
 
 struct Bounds {
@@ -116,4 +116,4 @@ std::string design_svg(const solvers::DesignProblem& problem, const std::vector<
   return s.str();
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

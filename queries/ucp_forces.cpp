@@ -1,11 +1,11 @@
-#include "cli/ucp_forces.h"
+#include "queries/ucp_forces.h"
 
 #include <optional>
 
-#include "cli/contact_forces.h"
+#include "queries/contact_forces.h"
 #include "solvers/ucp/scene_builder.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 using exact::Q;
 using exact::Vec;
@@ -62,4 +62,4 @@ std::string ucp_forces_text(const std::vector<geometry::ContactFrame>& frames, c
          forces_text(scene_world_forces(frames, c_n, c_t), "contact", "    ");
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

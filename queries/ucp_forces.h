@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "cli/json_out.h"
 #include "geometry/contact_frame.h"
+#include "queries/json_out.h"
 #include "solvers/stability/world_forces.h"
 #include "solvers/ucp/problem.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 /// A `ucp` problem file as read: the problem and, for a quasistatic_scene, its contact frames (else empty).
 struct UcpFile {
@@ -40,4 +40,4 @@ json ucp_forces_json(const std::vector<geometry::ContactFrame>& frames, const ex
 std::string ucp_forces_text(const std::vector<geometry::ContactFrame>& frames, const exact::Vec<exact::Q>& c_n,
                             const exact::Vec<exact::Q>& c_t);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

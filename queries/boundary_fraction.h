@@ -4,10 +4,10 @@
 #include "geometry/planar_scene.h"
 #include "solvers/stability/finger_push.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 /// The fraction of the boundary (by length on a polygon, by angle on a disk; in doubles: a summary, not a
 /// verdict) on the pieces labelled true.
 double boundary_fraction(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<exact::Q, bool>& p);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

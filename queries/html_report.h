@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 /// Collects sections of text, aligned tables and inline SVG pictures, then writes one HTML file.
 class HtmlReport {
@@ -27,4 +27,4 @@ class HtmlReport {
 /// Escapes &, <, > and quotes for HTML text.
 std::string html_escape(const std::string& s);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -1,12 +1,12 @@
-#include "cli/boundary_text.h"
+#include "queries/boundary_text.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "cli/json_out.h"
 #include "exact/rational_text.h"
+#include "queries/json_out.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 namespace {
 
 using exact::Q;
@@ -57,4 +57,4 @@ std::string arc_piece_text(const exact::Vec<Q>& from, const exact::Vec<Q>& to, b
          direction_text(to) + (to_closed ? ", included" : ", excluded") + ")";
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

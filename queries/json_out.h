@@ -11,7 +11,7 @@
 #include "geometry/point_text.h"
 #include "geometry/workpiece.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 using json = nlohmann::ordered_json;
 
@@ -39,4 +39,4 @@ void create_output_dir(const std::string& dir);
 /// Wall-clock seconds since t.
 double seconds_since(std::chrono::steady_clock::time_point t);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -1,4 +1,4 @@
-#include "cli/cone_svg.h"
+#include "queries/cone_svg.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <sstream>
 #include <vector>
 
-#include "cli/html_report.h"
+#include "queries/html_report.h"
 #include "solvers/wrench_cone/line_of_force.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 namespace {
 
 struct P2 {
@@ -301,4 +301,4 @@ std::string wrench_cone_svg(const geometry::PlanarScene& scene, const exact::Mat
   return svg.str();
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

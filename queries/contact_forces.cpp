@@ -1,8 +1,8 @@
-#include "cli/contact_forces.h"
+#include "queries/contact_forces.h"
 
 #include "exact/rational_text.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 namespace {
 
 using exact::Q;
@@ -116,4 +116,4 @@ template std::string contacts_text(const geometry::PlanarScene&, const std::vect
 template std::string contacts_text(const geometry::PlanarScene&, const std::vector<Eigen::Index>&,
                                    const exact::Vec<double>&, const std::string&);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -9,7 +9,7 @@
 #include "geometry/planar_scene.h"
 #include "solvers/stability/finger_push.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 /// "edge 2 runs from vertex 2 (x, y) to vertex 3 (x, y); s is the fraction of the way along it:".
 std::string edge_header_text(const geometry::PlanarScene& scene, std::size_t edge);
@@ -42,4 +42,4 @@ std::string pieces_text(const geometry::PlanarScene& scene, const solvers::Bound
   return out.empty() ? indent + "none\n" : out;
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

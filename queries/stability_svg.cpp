@@ -1,4 +1,4 @@
-#include "cli/stability_svg.h"
+#include "queries/stability_svg.h"
 
 #include <array>
 #include <cstdio>
@@ -6,9 +6,9 @@
 #include <sstream>
 #include <vector>
 
-#include "cli/html_report.h"
+#include "queries/html_report.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 namespace {
 
 using exact::Q;
@@ -214,4 +214,4 @@ std::string stability_sphere_svg(const solvers::StableRegion<Q>& region, const s
   return s.str();
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/cone_svg.h"
+#include "queries/cone_svg.h"
 #include "solvers/stability/finger_push.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 /// One mark per piece whose style(label) has a colour: edge pieces as segments, disk arcs sampled
 /// counter-clockwise, single points as dots.
@@ -62,4 +62,4 @@ std::vector<BoundaryMark> verdict_marks(const geometry::PlanarScene& scene,
 std::vector<BoundaryMark> seating_marks(const geometry::PlanarScene& scene,
                                         const solvers::BoundaryPieces<exact::Q, bool>& pushes);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -1,4 +1,4 @@
-#include "cli/json_out.h"
+#include "queries/json_out.h"
 
 #include <cerrno>
 #include <cstring>
@@ -11,7 +11,7 @@
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 using exact::Q;
 
@@ -121,4 +121,4 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

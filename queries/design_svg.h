@@ -8,10 +8,10 @@
 
 #include "solvers/design/ranking.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 /// A complete <svg> element; `captions` holds one line per placement.
 std::string design_svg(const solvers::DesignProblem& problem, const std::vector<solvers::Ranked>& best,
                        const std::vector<std::string>& captions, const std::string& title);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

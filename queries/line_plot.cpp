@@ -1,13 +1,13 @@
-#include "cli/line_plot.h"
+#include "queries/line_plot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
-#include "cli/html_report.h"
+#include "queries/html_report.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 namespace {
 
 std::string num(double v) {
@@ -79,4 +79,4 @@ std::string line_plot_svg(const std::vector<LineSeries>& series, const std::stri
   return s.str();
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

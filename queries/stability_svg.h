@@ -6,7 +6,7 @@
 
 #include "solvers/stability/stable_region.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 /// The colour of a verdict in every picture (strongly stable green, weakly stable yellow, unstable red).
 const char* verdict_colour(solvers::StabilityVerdict v);
@@ -19,4 +19,4 @@ const char* verdict_colour(solvers::StabilityVerdict v);
 std::string stability_sphere_svg(const solvers::StableRegion<exact::Q>& region,
                                  const std::optional<exact::Vec<exact::Q>>& mark = std::nullopt);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/json_out.h"
 #include "geometry/planar_scene.h"
+#include "queries/json_out.h"
 #include "solvers/stability/world_forces.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 /// A vector as exact strings (T = Q) or doubles.
 template <class T>
@@ -49,4 +49,4 @@ json witness_json(const geometry::PlanarScene& scene, const std::vector<Eigen::I
 std::string witness_text(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
                          const exact::Vec<exact::Q>& c, const exact::Vec<exact::Q>& g, const std::string& indent);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

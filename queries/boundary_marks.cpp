@@ -1,8 +1,8 @@
-#include "cli/boundary_marks.h"
+#include "queries/boundary_marks.h"
 
-#include "cli/stability_svg.h"
+#include "queries/stability_svg.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 std::vector<BoundaryMark> verdict_marks(const geometry::PlanarScene& scene,
                                         const solvers::BoundaryPieces<exact::Q, solvers::StabilityVerdict>& pushes) {
@@ -22,4 +22,4 @@ std::vector<BoundaryMark> seating_marks(const geometry::PlanarScene& scene,
   });
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -1,4 +1,4 @@
-#include "cli/region_data.h"
+#include "queries/region_data.h"
 
 #include <algorithm>
 #include <map>
@@ -8,7 +8,7 @@
 #include "exact/rational_text.h"
 #include "solvers/stability/strong_cones.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 namespace {
 
 using exact::Q;
@@ -134,4 +134,4 @@ std::vector<Vec<Q>> read_wrenches(const std::string& path) {
   return out;
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

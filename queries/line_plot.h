@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 struct LineSeries {
   std::string name;
@@ -16,4 +16,4 @@ struct LineSeries {
 std::string line_plot_svg(const std::vector<LineSeries>& series, const std::string& title, const std::string& x_label,
                           const std::string& y_label);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -1,0 +1,38 @@
+// The pieces of contactcert._core (python/core.cpp), one file per family of queries: each binds the query layer's
+// functions (queries/) on the classes declared here and returns the JSON text that the CLI's --json prints.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <utility>
+
+#include "queries/scene_input.h"
+#include "solvers/ucp/problem.h"
+
+namespace contactcert::python {
+
+namespace py = pybind11;
+
+/// The work of a call runs with the GIL released.
+using Release = py::call_guard<py::gil_scoped_release>;
+/// A result's JSON text and, where the CLI writes one, the certificate text (empty if none).
+using WithCertificate = std::pair<std::string, std::string>;
+
+/// A planar scene with its text (a stability certificate embeds it) and the name its messages use.
+using Scene = queries::SceneInput;
+
+/// A quasistatic (or plain UCP) problem file, with the name its messages use.
+struct Ucp {
+  std::string name;
+  solvers::ucp::UcpProblem problem;
+};
+
+/// Scene.stability, .region, .region_svg, .finger, .finger_svg and the class Oracle (stability_bindings.cpp).
+void bind_stability(py::module_& m, py::class_<Scene>& scene);
+/// Scene.cone, .cone_svg, .modes, .insertion, .insertion_svg (scene_bindings.cpp).
+void bind_scene_queries(py::class_<Scene>& scene);
+/// The class Ucp, generate and check (ucp_bindings.cpp).
+void bind_ucp(py::module_& m);
+
+}  // namespace contactcert::python

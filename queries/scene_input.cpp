@@ -1,0 +1,30 @@
+#include "queries/scene_input.h"
+
+#include "exact/input_error.h"
+#include "exact/json_input.h"
+#include "exact/rational_text.h"
+#include "geometry/scene_json.h"
+
+namespace contactcert::queries {
+
+SceneInput parse_scene(const std::string& text, const std::string& name, const std::string& snap_tolerance,
+                       const std::string& snap_field) {
+  SceneInput in{name, text, {}, {}};
+  if (!snap_tolerance.empty()) {
+    exact::Q tol;
+    if (!exact::parse_rational_into(snap_tolerance, tol) || sgn(tol) <= 0)
+      throw exact::InputError(snap_field == "--snap" ? "command line" : name, snap_field,
+                              "a tolerance > 0 such as 1e-9, got " + exact::quoted_excerpt(snap_tolerance));
+    geometry::SnappedScene s = geometry::snap_planar_scene(text, name, tol);
+    in.text = std::move(s.text);
+    in.snaps = std::move(s.snaps);
+  }
+  in.scene = geometry::read_planar_scene(exact::JsonInput::parse(in.text, name));
+  return in;
+}
+
+SceneInput load_scene(const std::string& path, const std::string& snap_tolerance, const std::string& snap_field) {
+  return parse_scene(exact::JsonInput::read_text(path), path, snap_tolerance, snap_field);
+}
+
+}  // namespace contactcert::queries
