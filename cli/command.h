@@ -19,6 +19,8 @@ struct CommonOptions {
   bool json = false;               ///< machine output: one JSON object on stdout
   std::string arith = "verified";  ///< exact | float | verified | adaptive
   double time_limit = 0;           ///< --time-limit seconds (0 = none); see main.cpp for how it is enforced
+  /// The typed options of the query layer (queries/options.h).
+  queries::CommonOptions query() const { return {queries::parse_arith(arith, "--arith"), time_limit}; }
 };
 
 /// A subcommand's work, run after parsing; returns the exit code.
