@@ -1,43 +1,22 @@
-// `contactcert convert FILE`: span <-> face conversion of a cone (SPEC sections 4 and 6).
-// Span in: the minimal face form out (and the minimal span form). Face in (strict rows allowed): the
-// closure's generators out, with the open faces, and the minimal face form of the cone itself.
+// `contactcert convert FILE`: span <-> face conversion of a cone (queries/convert_query.h): the options and the
+// text report.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "cli/command.h"
 #include "exact/json_input.h"
-#include "exact/number.h"
-#include "geometry/canonical.h"
-#include "geometry/cone_json.h"
-#include "geometry/double_description.h"
-#include "geometry/nnc_cone.h"
+#include "queries/convert_query.h"
 
 namespace contactcert::cli {
 namespace {
-
-using exact::Mat;
-using exact::Q;
-using geometry::FaceCone;
-using geometry::SpanCone;
 
 struct ConvertOptions {
   std::string file;
   CommonOptions common;
 };
 
-nlohmann::json float_rows(const Mat<double>& M) {
-  nlohmann::json a = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < M.rows(); ++i) {
-    nlohmann::json row = nlohmann::json::array();
-    for (Eigen::Index j = 0; j < M.cols(); ++j) row.push_back(M(i, j));
-    a.push_back(std::move(row));
-  }
-  return a;
-}
-
-void print_rows(std::ostream& os, const char* title, const Mat<Q>& M, const char* rel) {
+void print_rows(std::ostream& os, const char* title, const exact::Mat<exact::Q>& M, const char* rel) {
   if (M.rows() == 0) return;
   os << title << ":\n";
   for (Eigen::Index i = 0; i < M.rows(); ++i) {
@@ -47,51 +26,15 @@ void print_rows(std::ostream& os, const char* title, const Mat<Q>& M, const char
   }
 }
 
-int run_float(const geometry::ConeInput& in, const ConvertOptions& opts, const geometry::DdBudget& budget) {
-  nlohmann::json j;
-  if (in.form == geometry::ConeInput::Form::kSpan) {
-    const auto s =
-        SpanCone<double>::from_rows(in.span.dim, exact::to_double(in.span.rays), exact::to_double(in.span.lines));
-    const FaceCone<double> f = geometry::canonical(geometry::to_face(s, budget));
-    j = {{"input", "span"},
-         {"arith", "float"},
-         {"dim", f.dim},
-         {"face_approx", {{"inequalities", float_rows(f.inequalities)}, {"equalities", float_rows(f.equalities)}}}};
-  } else {
-    const auto c = FaceCone<double>::from_rows(in.face.dim, exact::to_double(in.face.inequalities),
-                                               exact::to_double(in.face.equalities), exact::to_double(in.face.strict));
-    const geometry::NncForm<double> n = geometry::nnc_form(c, budget);
-    j = {{"input", "face"},
-         {"arith", "float"},
-         {"dim", c.dim},
-         {"empty", n.status == geometry::NncStatus::kEmpty},
-         {"span_approx", {{"rays", float_rows(n.closure.rays)}, {"lines", float_rows(n.closure.lines)}}},
-         {"open_faces", n.open_faces}};
-  }
-  if (opts.common.json) {
-    std::cout << j.dump() << "\n";
-  } else {
-    std::cout << j.dump(2) << "\n";
-  }
-  return 0;
-}
-
 int run_convert(const ConvertOptions& opts) {
-  const geometry::ConeInput in = geometry::read_cone(exact::JsonInput::load(opts.file));
-  geometry::DdBudget budget;
-  budget.deadline = exact::Deadline::after(opts.common.time_limit);  // checked inside the conversion: exit 3
-  if (opts.common.arith == "float") return run_float(in, opts, budget);
-  // Exact (the verified path has nothing to check here: the conversion is exact and cheap in R^d).
-  const geometry::NncForm<Q> n = in.form == geometry::ConeInput::Form::kSpan ? geometry::nnc_form(in.span, budget)
-                                                                             : geometry::nnc_form(in.face, budget);
-  if (opts.common.json) {
-    nlohmann::json j = geometry::nnc_to_json(n);
-    j["input"] = in.form == geometry::ConeInput::Form::kSpan ? "span" : "face";
-    std::cout << j.dump() << "\n";
+  const queries::ConvertAnswer a = queries::run_convert(exact::JsonInput::load(opts.file), {opts.common.query()});
+  if (opts.common.json || !a.exact) {  // the float answer is printed as its JSON, indented without --json
+    std::cout << (opts.common.json ? queries::to_json(a).dump() : queries::to_json(a).dump(2)) << "\n";
     return 0;
   }
+  const geometry::NncForm<exact::Q>& n = *a.exact;
   std::ostream& os = std::cout;
-  os << "cone in R^" << n.face.dim << ", given in " << (in.form == geometry::ConeInput::Form::kSpan ? "span" : "face")
+  os << "cone in R^" << n.face.dim << ", given in " << (a.input == geometry::ConeInput::Form::kSpan ? "span" : "face")
      << " form\n";
   if (n.status == geometry::NncStatus::kEmpty) {
     os << "empty\n";

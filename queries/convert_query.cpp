@@ -1,0 +1,70 @@
+#include "queries/convert_query.h"
+
+#include "geometry/canonical.h"
+#include "geometry/double_description.h"
+
+namespace contactcert::queries {
+namespace {
+
+using exact::Mat;
+using exact::Q;
+
+nlohmann::json float_rows(const Mat<double>& M) {
+  nlohmann::json a = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (Eigen::Index j = 0; j < M.cols(); ++j) row.push_back(M(i, j));
+    a.push_back(std::move(row));
+  }
+  return a;
+}
+
+const char* form_name(geometry::ConeInput::Form f) { return f == geometry::ConeInput::Form::kSpan ? "span" : "face"; }
+
+}  // namespace
+
+ConvertAnswer run_convert(const exact::JsonInput& file, const ConvertOptions& o) {
+  const geometry::ConeInput in = geometry::read_cone(file);
+  geometry::DdBudget budget;
+  budget.deadline = o.common.deadline();  // checked inside the conversion
+  ConvertAnswer a;
+  a.input = in.form;
+  const bool span = in.form == geometry::ConeInput::Form::kSpan;
+  if (o.common.arith != exact::Arith::kFloat) {
+    a.exact = span ? geometry::nnc_form(in.span, budget) : geometry::nnc_form(in.face, budget);
+  } else if (span) {
+    const auto s = geometry::SpanCone<double>::from_rows(in.span.dim, exact::to_double(in.span.rays),
+                                                         exact::to_double(in.span.lines));
+    a.float_face = geometry::canonical(geometry::to_face(s, budget));
+  } else {
+    const auto c =
+        geometry::FaceCone<double>::from_rows(in.face.dim, exact::to_double(in.face.inequalities),
+                                              exact::to_double(in.face.equalities), exact::to_double(in.face.strict));
+    a.float_closure = geometry::nnc_form(c, budget);
+  }
+  return a;
+}
+
+nlohmann::json to_json(const ConvertAnswer& a) {
+  if (a.exact) {
+    nlohmann::json j = geometry::nnc_to_json(*a.exact);
+    j["input"] = form_name(a.input);
+    return j;
+  }
+  if (a.float_face)
+    return nlohmann::json{{"input", "span"},
+                          {"arith", "float"},
+                          {"dim", a.float_face->dim},
+                          {"face_approx",
+                           {{"inequalities", float_rows(a.float_face->inequalities)},
+                            {"equalities", float_rows(a.float_face->equalities)}}}};
+  const geometry::NncForm<double>& n = *a.float_closure;
+  return nlohmann::json{{"input", "face"},
+                        {"arith", "float"},
+                        {"dim", n.face.dim},
+                        {"empty", n.status == geometry::NncStatus::kEmpty},
+                        {"span_approx", {{"rays", float_rows(n.closure.rays)}, {"lines", float_rows(n.closure.lines)}}},
+                        {"open_faces", n.open_faces}};
+}
+
+}  // namespace contactcert::queries
