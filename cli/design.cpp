@@ -89,11 +89,11 @@ int run_design(DesignOptions& o) {
     case queries::DesignStatus::kWorkerFinished:
       return 0;
     case queries::DesignStatus::kLimit:
-      if (!run.message.empty()) std::cerr << "contactcert: " << run.message << "\n";
+      if (run.limit) std::cerr << "contactcert: " << run.limit->text() << "\n";
       return 3;
     case queries::DesignStatus::kRefused:
-      if (!run.message.empty())  // one write: under mpirun, lines of other ranks cannot split it
-        std::fputs(("contactcert: " + run.message + "\n").c_str(), stderr);
+      if (!run.refusal.empty())  // one write: under mpirun, lines of other ranks cannot split it
+        std::fputs(("contactcert: " + run.refusal + "\n").c_str(), stderr);
       return 2;
     case queries::DesignStatus::kFinished:
       break;

@@ -217,14 +217,14 @@ struct DesignPlan {
 std::optional<DesignRun> resume(const DesignOptions& o, const DesignPlan& plan, solvers::Distributor& dist,
                                 std::optional<solvers::DesignCheckpoint>* resumed) {
   std::exception_ptr failure;
-  DesignRun refused{DesignStatus::kRefused, "", std::nullopt};
+  DesignRun refused{DesignStatus::kRefused, std::nullopt, "", std::nullopt};
   int code = 0;
   if (dist.is_root() && !o.checkpoint.empty()) {
     try {
       *resumed = solvers::read_checkpoint(o.checkpoint, plan.key, plan.problem, plan.symmetry, o.chunk_size, plan.total,
                                           static_cast<std::size_t>(o.top));
     } catch (const InputError& e) {
-      refused.message = e.what();
+      refused.refusal = e.what();
       code = 2;
     } catch (...) {
       failure = std::current_exception();
@@ -288,18 +288,19 @@ DesignRun search(const SceneInput& in, const DesignOptions& o, const DesignPlan&
     return solvers::chunk_result_text(r);
   };
   const bool ran_out = dist.run(next, work, record, keep_going);
-  if (!dist.is_root()) return {ran_out ? DesignStatus::kWorkerFinished : DesignStatus::kLimit, "", std::nullopt};
+  if (!dist.is_root()) return {ran_out ? DesignStatus::kWorkerFinished : DesignStatus::kLimit, std::nullopt, "", std::nullopt};
   const bool finished = ran_out || st.checkpoint.done.next_missing(0) >= chunks;  // a budget met by the last chunk
   save();
   const solvers::ChunkResult& result = st.checkpoint.result;
   if (!finished)
     return {DesignStatus::kLimit,
-            "design " + in.name + ": " +
-                (st.deadline.expired() ? st.deadline.reached_text() : "placement budget --max-placements reached") +
-                " (covered: " + std::to_string(st.placements_done()) + " of " + std::to_string(total) +
-                " placements in " + std::to_string(st.chunks_before + st.chunks_now) + " of " + std::to_string(chunks) +
-                " chunks; " + statistics_text(result.statistics) +
-                (o.checkpoint.empty() ? "" : "; resume with --checkpoint " + o.checkpoint) + ")",
+            Limit{"design " + in.name + ": " +
+                      (st.deadline.expired() ? st.deadline.reached_text() : "placement budget --max-placements reached"),
+                  std::to_string(st.placements_done()) + " of " + std::to_string(total) + " placements in " +
+                      std::to_string(st.chunks_before + st.chunks_now) + " of " + std::to_string(chunks) +
+                      " chunks; " + statistics_text(result.statistics) +
+                      (o.checkpoint.empty() ? "" : "; resume with --checkpoint " + o.checkpoint)},
+            "",
             std::nullopt};
   DesignReport rep{in.name,
                    o.stable_under,
@@ -319,7 +320,7 @@ DesignRun search(const SceneInput& in, const DesignOptions& o, const DesignPlan&
                   design_svg(plan.problem, result.top.items(), captions,
                              "contactcert design " + in.name + ": best " + std::to_string(result.top.items().size()) +
                                  " placements by " + solvers::rank_name(plan.problem.rank)));
-  return {DesignStatus::kFinished, "", std::move(rep)};
+  return {DesignStatus::kFinished, std::nullopt, "", std::move(rep)};
 }
 
 json placement_json(const DesignReport& report, const PlacementReport& p) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 #include "queries/scene_input.h"
 #include "solvers/design/distribute.h"
@@ -72,14 +73,15 @@ struct DesignReport {
 };
 
 /// How a run ended on this rank: kFinished (the root, with the report), kWorkerFinished (another rank, all chunks
-/// done), kLimit (a budget: `message` says what was covered, on the root), kRefused (a checkpoint that does not
-/// fit: `message` names the file and field, on the root).
+/// done), kLimit (a budget; on the root with the limit), kRefused (a checkpoint that does not fit; on the root
+/// with the message naming the file and field).
 enum class DesignStatus { kFinished, kWorkerFinished, kLimit, kRefused };
 
 struct DesignRun {
   DesignStatus status = DesignStatus::kFinished;
-  std::string message;
-  std::optional<DesignReport> report;
+  std::optional<Limit> limit;          ///< kLimit, on the root
+  std::string refusal;                 ///< kRefused, on the root
+  std::optional<DesignReport> report;  ///< kFinished
 };
 
 /// Progress text while chunks finish ("12 of 120 placements, 40/s on 2 ranks, about 3 s left").

@@ -49,4 +49,26 @@ class Ucp:
 def generate(kind: str, seed: int, nc: int, mu_max: str, abar: int, rows: int, cols: int, planted: bool, /) -> Ucp: ...
 def check(text: str, name: str, problem_text: str, problem_name: str, /) -> str: ...
 def read_text(path: str, /) -> str: ...
+
+class DesignArgs:
+    def __init__(self) -> None: ...
+    candidates: str
+    lattice: str
+    fixels: int
+    stable_under: str | None
+    insertable: bool
+    goal_push: bool
+    goal_wrench: str
+    rank: str
+    top: int
+    out: str
+    checkpoint: str
+    chunk_size: int
+    push_points: int
+    max_placements: int
+    arith: str
+    time_limit: float
+
+def design(scene: Scene, args: DesignArgs, /) -> str: ...
+def convert(text: str, name: str, arith: str, time_limit: float, /) -> str: ...
 def snap_scene(text: str, name: str, tol_text: str, /) -> tuple[str, list[tuple[str, str, str, str]]]: ...
