@@ -1,7 +1,8 @@
 """`python -m contactcert ARGS` runs the contactcert CLI with ARGS: it replaces this process with the executable
-(so stdin, stdout, signals and the exit code are the CLI's own). The executable is looked up first in this
-interpreter's scripts directory (sysconfig "scripts": where `cmake --install --prefix VENV` and pip put programs,
-e.g. VENV/bin), then on PATH; without one it exits 127 (the shell's "command not found") with a message."""
+(so stdin, stdout, signals and the exit code are the CLI's own). The executable is looked up first in the package
+(contactcert/bin, where `pip install .` puts it), then in this interpreter's scripts directory (sysconfig
+"scripts": where `cmake --install --prefix VENV` puts programs, e.g. VENV/bin), then on PATH; without one it exits
+127 (the shell's "command not found") with a message."""
 
 from __future__ import annotations
 
@@ -14,8 +15,10 @@ EXIT_NOT_FOUND = 127
 
 
 def find_cli() -> str | None:
-    """The contactcert executable to run: the scripts directory's, else the first on PATH, else None."""
-    return shutil.which("contactcert", path=sysconfig.get_path("scripts")) or shutil.which("contactcert")
+    """The contactcert executable to run: the package's, else the scripts directory's, else the first on PATH,
+    else None."""
+    return (shutil.which("contactcert", path=os.path.join(os.path.dirname(__file__), "bin"))
+            or shutil.which("contactcert", path=sysconfig.get_path("scripts")) or shutil.which("contactcert"))
 
 
 def main() -> None:

@@ -163,8 +163,10 @@ def test_annotations_check_against_the_stub(tmp_path):
 
 
 def scripts_cli():
-    """The CLI in this interpreter's scripts directory, which `python -m contactcert` prefers to PATH's."""
-    return shutil.which("contactcert", path=sysconfig.get_path("scripts"))
+    """The CLI in the package (`pip install .`) or in this interpreter's scripts directory, which `python -m
+    contactcert` prefers to PATH's."""
+    return (shutil.which("contactcert", path=str(PACKAGE / "bin"))
+            or shutil.which("contactcert", path=sysconfig.get_path("scripts")))
 
 
 def test_main_runs_the_cli(tmp_path):
@@ -182,7 +184,7 @@ def test_main_runs_the_cli(tmp_path):
 
 def test_main_without_an_executable(tmp_path):
     if scripts_cli():
-        pytest.skip("a contactcert executable is installed in this interpreter's scripts directory")
+        pytest.skip("a contactcert executable is installed in the package or the scripts directory")
     p = python("-m", "contactcert", "--version", env={"PATH": str(tmp_path)})
     assert p.returncode == 127
     assert p.stdout == ""
