@@ -26,7 +26,7 @@ def kind(path):
 
 
 PLANAR = [p for p in FILES if kind(p) == "planar"]
-UCP = [p for p in FILES if kind(p) in ("quasistatic", "quasistatic_scene")]
+UCP = [p for p in FILES if kind(p) in ("quasistatic", "quasistatic_scene", "ucp")]
 SOLVABLE_SCENES = ("pang1994_dataset1_geometry.json", "pang1994_dataset2_geometry.json",
                    "pang1994_dataset3_geometry.json")
 
