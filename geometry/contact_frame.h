@@ -1,4 +1,4 @@
-// Contact frames of the wrench cone paper (section 2.1, with the seeds/README.md errata): for fixel
+// Contact frames of the wrench cone paper (section 2.1, with the docs/papers.md errata): for fixel
 // i, p_i is the unique closest workpiece point, n_i points from the fixel toward p_i (into the
 // workpiece) and t_i = (-n_iy, n_ix). Normals are rational and need not be unit: a wrench cone does
 // not change when a frame (n, t) is scaled by a positive factor.

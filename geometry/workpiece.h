@@ -28,7 +28,7 @@ inline Q dot(const Point2& a, const Point2& b) { return a.x * b.x + a.y * b.y; }
 inline Q cross(const Point2& a, const Point2& b) { return a.x * b.y - a.y * b.x; }
 /// |a|^2
 inline Q norm2(const Point2& a) { return dot(a, a); }
-/// a rotated by +90 degrees: (-a_y, a_x). The paper's t_i from n_i (seeds/README.md errata).
+/// a rotated by +90 degrees: (-a_y, a_x). The paper's t_i from n_i (docs/papers.md errata).
 inline Point2 perp(const Point2& a) { return {-a.y, a.x}; }
 
 /// A simple polygon, vertices counter-clockwise.

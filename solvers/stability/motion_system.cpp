@@ -112,7 +112,7 @@ exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const
     if (separates || L == Interaction::kApproach || L == Interaction::kSlideLeft || L == Interaction::kSlideRight) {
       sigma = s.cols++;
       s.is_free.push_back(false);
-      // s is strict at a touching fixel (seeds/README.md), a_n >= 0 at a gap or as Table 2 prints it (S).
+      // s is strict at a touching fixel (docs/papers.md), a_n >= 0 at a gap or as Table 2 prints it (S).
       s.strict.push_back(!separates || (L == Interaction::kSeparate && rules.touches(u) && !rules.printed_separation));
     }
     switch (L) {

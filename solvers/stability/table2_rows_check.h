@@ -1,7 +1,7 @@
 // The certificate checkers' own reading of the wrench cone paper (Balkcom, Trinkle 2002), written apart from the
 // solver's model (contact_model.h, motion_system.h, cone_form.h) so that a modelling error is not shared by the
 // solver and the checker that verifies it. From each fixel's contact frame (p_i on the workpiece, n_i from the
-// fixel to the workpiece, t_i = n_i turned by +90 degrees; seeds/README.md errata) and the workpiece's com and I/m:
+// fixel to the workpiece, t_i = n_i turned by +90 degrees; docs/papers.md errata) and the workpiece's com and I/m:
 //   w_in = (n_i, (p_i - com) x n_i), w_it = (t_i, (p_i - com) x t_i)   the wrenches of unit contact forces (eq. 4)
 //   a_in = w_in . vdot, a_it = w_it . vdot                              contact accelerations from rest (eq. 6)
 //   M vdot = g + sum_i (c_in w_in + c_it w_it),  M = diag(1, 1, I/m)    the workpiece's motion (eq. 4, unit mass)

@@ -10,7 +10,7 @@ namespace contactcert::solvers {
 
 /// One contact interaction of Table 2.
 enum class Interaction : char {
-  kSeparate = 's',         ///< a_n >= 0 (> 0 when touching: strictly separating, seeds/README.md), c = 0
+  kSeparate = 's',         ///< a_n >= 0 (> 0 when touching: strictly separating, docs/papers.md), c = 0
   kApproach = 'a',         ///< a_n < 0, c = 0; needs a gap
   kUnconstrained = 'u',    ///< c = 0; needs a gap
   kSlideLeft = 'l',        ///< a_n = 0, a_t > 0, c_n >= 0, c_t = -mu_k c_n; needs contact
@@ -38,7 +38,7 @@ struct InteractionConstraints {
   FrictionConstraint c_t;
 };
 
-/// Table 2, with the strict separation of a touching fixel (seeds/README.md errata).
+/// Table 2, with the strict separation of a touching fixel (docs/papers.md errata).
 InteractionConstraints table2(Interaction letter, bool touching);
 
 /// Can this letter be used at a fixel that touches (l r n m s) or does not (a u s)?

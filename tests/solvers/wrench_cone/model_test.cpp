@@ -127,7 +127,7 @@ TEST(ConeForm, DirectKEqualsTheLiteralProductECNRSVOnEveryModeOfSeveralScenes) {
 }
 
 TEST(ConeForm, SlidingFrictionOpposesTheSlidingDirection) {
-  // Table 2: l has c_t = -mu_k c_n, r has c_t = +mu_k c_n (seeds/README.md errata).
+  // Table 2: l has c_t = -mu_k c_n, r has c_t = +mu_k c_n (docs/papers.md errata).
   const PlanarScene s = unit_normal_section4();
   const ContactModel<Q> m = contact_model<Q>(s);
   const ConeForm<Q> l = cone_form(s, m, mode_of(s, "ls"));
