@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import pathlib
 from collections.abc import Iterable
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, Literal
@@ -22,7 +23,8 @@ Arith = Literal["exact", "float", "verified", "adaptive"]
 
 class Design(Result):
     """The best placements of `design`: to_dict() is the CLI's --json object (rank, candidates, points,
-    figure, verdicts with their certificate files, the goal's certificates, the picture's file)."""
+    figure, verdicts with their certificate files, the goal's certificates, the picture's file); _repr_svg_ is
+    the picture (design.svg)."""
 
     @property
     def top(self) -> list[dict[str, Any]]:
@@ -78,7 +80,8 @@ def design(scene: Scene, candidates: int | Path | None = None, *, lattice: Exact
     a.max_placements = whole_number(max_placements, 1, LONG_MAX, "--max-placements")
     a.arith = arith
     a.time_limit = seconds(time_limit)
-    return Design(json.loads(_core.design(scene._core, a)))
+    data = json.loads(_core.design(scene._core, a))
+    return Design(data, lambda: pathlib.Path(data["svg"]).read_text())
 
 
 class Converted(Result):
