@@ -1,7 +1,8 @@
 // Contact forces of the rigid-body model in world coordinates (wrench cone paper, eq. 4). The model's force
 // vector c = (c_1n..c_kn, c_1t..c_kt) is measured against frames (n_i, t_i) that the exact model scales by a
 // positive factor (contact_model.h, jacobian); the world force f_i = c_n,i n_i + c_t,i t_i and its torque
-// about the centre of mass p_i x f_i do not depend on that scale, so they are what a user reads.
+// about the centre of mass p_i x f_i do not depend on that scale, so they are what a user reads, with the
+// components against the frame the user wrote (reported_normal): the internal scaling stays internal.
 #pragma once
 
 #include <vector>
@@ -18,12 +19,17 @@ template <class T>
 struct WorldForce {
   Eigen::Index fixel = 0;  ///< index of the fixel in the scene (0-based, the scene's order)
   Vec<T> point;            ///< p_i, the contact point (x, y)
-  Vec<T> normal;           ///< n_i (x, y), pointing into the workpiece: as the model scales it, or as a file writes it
+  Vec<T> normal;           ///< n_i (x, y), pointing into the workpiece: reported_normal of the fixel
   Vec<T> tangent;          ///< t_i = (-n_iy, n_ix)
   T c_n, c_t;              ///< the components against (n_i, t_i)
   Vec<T> force;            ///< f_i = c_n n_i + c_t t_i, world coordinates (x, y)
   T torque;                ///< f_i's torque: (p_i - com) x f_i here; about the world origin for a quasistatic scene
 };
+
+/// The normal a report measures a fixel's force against: an explicit contact's normal as written; for a frame
+/// found from a `position`, the unit inward normal when its length is rational, else its primitive integer
+/// direction (docs/formats.md section 3).
+geometry::Point2 reported_normal(const geometry::Fixel& f);
 
 /// The world forces of `c` (the layout of StabilityResult: normals then tangents of the touching fixels
 /// `touching`, in that order). Then sum_i (f_i, torque_i) = J c, so a resting solution has

@@ -121,8 +121,13 @@ TEST(WorldForces, IndependentOfHowTheSceneGivesANormal) {
     const auto fa = world_forces<Q>(scene, a.touching, a.resting_forces);
     const auto fb = world_forces<Q>(scaled, b.touching, b.resting_forces);
     for (std::size_t i = 0; i < fa.size(); ++i) {
-      EXPECT_EQ(fa[i].normal, fb[i].normal);  // the frame the output states is the model's, not the input's scale
+      // The frame the output states is the one the scene writes (the model's scaling stays internal): the same
+      // world force, against a normal 7/3 as long, has components 3/7 as large.
+      EXPECT_EQ(fb[i].normal, Vec<Q>(frac(7, 3) * fa[i].normal));
+      EXPECT_EQ(fb[i].c_n, frac(3, 7) * fa[i].c_n);
+      EXPECT_EQ(fb[i].c_t, frac(3, 7) * fa[i].c_t);
       EXPECT_EQ(fa[i].force, fb[i].force);
+      EXPECT_EQ(fa[i].force, Vec<Q>(fa[i].c_n * fa[i].normal + fa[i].c_t * fa[i].tangent));
     }
   }
   EXPECT_GT(compared, 5);
