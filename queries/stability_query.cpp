@@ -62,10 +62,6 @@ json result_json(const StabilityAnswer& a, const StabilityResult<T>& r) {
 
 }  // namespace
 
-solvers::StabilityVerdict StabilityAnswer::verdict() const {
-  return std::visit([](const auto& r) { return r.verdict; }, outcome);
-}
-
 solvers::StabilityOptions stability_options(exact::Arith arith, const exact::Deadline& deadline) {
   solvers::StabilityOptions s;
   s.arith = scene_arith(arith);

@@ -34,7 +34,6 @@ struct StabilityAnswer {
   std::optional<solvers::Margin<exact::Q>> margin;  ///< asked for and g strongly stable
   std::string certificate;                          ///< the file written ("" = none)
   std::string certificate_text;                     ///< its text ("" = none)
-  solvers::StabilityVerdict verdict() const;
 };
 
 /// The solver's options of a run: its arithmetic (as scene_arith runs it), the default node budget and `deadline`.
