@@ -27,7 +27,6 @@
 #include "geometry/scene_json.h"
 #include "queries/design_svg.h"
 #include "queries/json_out.h"
-#include "queries/stability_query.h"
 #include "solvers/design/checkpoint.h"
 #include "solvers/design/distribute.h"
 #include "solvers/design/goal_certificate.h"

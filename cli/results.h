@@ -11,6 +11,7 @@
 #include "exact/json_input.h"
 #include "geometry/planar_scene.h"
 #include "queries/json_out.h"
+#include "queries/stability_certificate_file.h"  // design.cpp writes stability certificates
 #include "solvers/insertion/insertion.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/finger_push.h"

@@ -4,7 +4,7 @@
 
 #include "exact/input_error.h"
 #include "queries/contact_forces.h"
-#include "solvers/stability/stability_certificate.h"
+#include "queries/stability_certificate_file.h"
 #include "solvers/stability/stable_region.h"
 
 namespace contactcert::queries {
@@ -99,14 +99,6 @@ StabilityAnswer run_stability(const SceneInput& input, const StabilityQueryOptio
 
 json to_json(const StabilityAnswer& answer) {
   return std::visit([&](const auto& r) { return result_json(answer, r); }, answer.outcome);
-}
-
-std::string stability_certificate_file(const std::string& scene_text, const geometry::PlanarScene& scene,
-                                       const exact::Vec<Q>& g, const StabilityResult<Q>& r) {
-  json j = json::parse(solvers::stability_certificate(scene_text, g, r));
-  if (r.has_resting) j["resting"]["contacts"] = contacts_json(scene, r.touching, r.resting_forces);
-  if (r.has_moving) j["moving"]["contacts"] = contacts_json(scene, r.touching, r.moving.forces);
-  return j.dump(1) + "\n";
 }
 
 }  // namespace contactcert::queries

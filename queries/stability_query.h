@@ -46,10 +46,4 @@ StabilityAnswer run_stability(const SceneInput& input, const StabilityQueryOptio
 /// The object `stability --wrench --json` prints.
 json to_json(const StabilityAnswer& answer);
 
-/// The `stability` certificate file (solvers/stability/stability_certificate.h) with its readable part: the
-/// witness's world forces under "resting"/"contacts" and "moving"/"contacts" (contacts_json, queries/contact_forces.h).
-/// The checker verifies the raw "forces"; `check` recomputes the contacts from them and compares.
-std::string stability_certificate_file(const std::string& scene_text, const geometry::PlanarScene& scene,
-                                       const exact::Vec<exact::Q>& g, const solvers::StabilityResult<exact::Q>& r);
-
 }  // namespace contactcert::queries
