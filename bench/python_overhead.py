@@ -62,7 +62,7 @@ def main():
     disk7 = cc.Scene.from_file(SCENES / "bt2002_section7_disk.json")
     disk4 = cc.Scene.from_file(SCENES / "bt2002_section4_disk.json")
     ds1 = cc.Ucp.from_file(SCENES / "pang1994_dataset1.json")
-    text = disk7._core.stability("1,-2,0", "verified", False, "")[0]
+    text = disk7._core.stability("1,-2,0", "verified", False, "", 0)[0]
     queries = [
         ("section 7 stability g = (1, -2, 0)", lambda: disk7.stability("1,-2,0"),
          cli("stability", SCENES / "bt2002_section7_disk.json", "--wrench", "1,-2,0")),
@@ -76,7 +76,7 @@ def main():
     for name, py, sub in queries:
         p, c = per_call(py), per_call(sub)
         print(f"{name:40s} {p * 1e6:10.1f} {c * 1e6:10.1f} {c / p:7.1f}")
-    raw = per_call(lambda: disk7._core.stability("1,-2,0", "verified", False, ""))
+    raw = per_call(lambda: disk7._core.stability("1,-2,0", "verified", False, "", 0))
     wrap = per_call(lambda: json.loads(text))
     print(f"section 7 stability: _core call {raw * 1e6:.1f} us, json.loads of its result {wrap * 1e6:.1f} us")
 

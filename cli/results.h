@@ -11,6 +11,7 @@
 #include "exact/json_input.h"
 #include "geometry/planar_scene.h"
 #include "queries/json_out.h"
+#include "queries/stability_certificate_file.h"  // design.cpp writes stability certificates
 #include "solvers/insertion/insertion.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/finger_push.h"
@@ -24,23 +25,6 @@
 namespace contactcert::cli {
 
 using namespace queries;  // the front end names the query layer's writers unqualified
-
-// stability.cpp: `stability --wrench` (T = Q on the exact and verified paths, double with --arith float),
-// `--region` and `--finger`, and the --finger picture.
-// The witness's contact forces are also given in world coordinates (solvers/stability/world_forces.h), which
-// needs the scene.
-template <class T>
-json stability_json(const geometry::PlanarScene& scene, const exact::Vec<exact::Q>& g,
-                    const solvers::StabilityResult<T>& r, const std::string& arith, const std::string& certificate,
-                    const std::optional<solvers::Margin<exact::Q>>& margin);
-/// The `stability` certificate file (solvers/stability/stability_certificate.h) with its readable part: the
-/// witness's world forces under "resting"/"contacts" and "moving"/"contacts" (contacts_json, queries/contact_forces.h).
-/// The checker verifies the raw "forces"; `check` recomputes the contacts from them and compares.
-std::string stability_certificate_file(const std::string& scene_text, const geometry::PlanarScene& scene,
-                                       const exact::Vec<exact::Q>& g, const solvers::StabilityResult<exact::Q>& r);
-json region_json(const solvers::StableRegion<exact::Q>& region);
-json finger_json(const solvers::FingerPushes<exact::Q>& pushes);
-std::string finger_svg(const geometry::PlanarScene& scene, const solvers::FingerPushes<exact::Q>& pushes);
 
 // modes.cpp: the feasible contact modes of a scene (arith, table2, unions and the budgets as `modes` reads
 // them: with --unions or a printed `s` a time limit of 0 means the default budget kModesDefaultSeconds) and

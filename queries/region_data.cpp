@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <map>
-#include <sstream>
 
-#include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "solvers/stability/strong_cones.h"
 
@@ -98,40 +96,6 @@ json region_data_json(const solvers::StableRegion<Q>& region) {
                      {"strict", primitive_rows(c.cone.strict)},
                      {"equalities", primitive_rows(c.cone.equalities)}});
   return {{"planes", planes}, {"cells", cells}, {"strongly_stable_cones", cones}};
-}
-
-std::vector<Vec<Q>> read_wrenches(const std::string& path) {
-  const std::string text = exact::JsonInput::read_text(path);
-  std::vector<Vec<Q>> out;
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first != std::string::npos && text[first] == '[') {
-    const auto in = exact::JsonInput::parse(text, path);
-    for (const auto& e : in.elements()) out.push_back(e.rational_vector(3));
-  } else {
-    std::istringstream lines(text);
-    std::string line;
-    for (int n = 1; std::getline(lines, line); ++n) {
-      const auto a = line.find_first_not_of(" \t\r");
-      if (a == std::string::npos || line[a] == '#') continue;
-      const auto b = line.find_last_not_of(" \t\r");
-      try {
-        std::string w = line.substr(a, b - a + 1);
-        const bool commas = w.find(',') != std::string::npos;
-        std::string t;
-        for (char ch : w)
-          if (ch == ' ' || ch == '\t') {
-            if (!commas && !t.empty() && t.back() != ',') t += ',';
-          } else {
-            t += ch;
-          }
-        out.push_back(parse_number_list(t, "wrench", 3));
-      } catch (const exact::InputError&) {
-        throw exact::InputError(path, "line " + std::to_string(n), "a wrench fx,fy,tz of exact numbers");
-      }
-    }
-  }
-  if (out.empty()) throw exact::InputError(path, "", "at least one wrench");
-  return out;
 }
 
 }  // namespace contactcert::queries

@@ -1,9 +1,8 @@
 // The stable region as data a program can use (`stability --region --json`): the arrangement's planes, each
 // cell's sign vector and a small-integer representative, and the strongly stable set as a union of merged cones
-// in face form; and the batch query `stability --wrenches FILE`.
+// in face form.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "queries/json_out.h"
@@ -20,9 +19,5 @@ std::vector<exact::Vec<exact::Q>> cell_representatives(const solvers::StableRegi
 /// label) and `strongly_stable_cones`: the strongly stable set as maximal sign cones (solvers/stability/
 /// strong_cones.h), each in face form. g is strongly stable iff it lies in one of them.
 json region_data_json(const solvers::StableRegion<exact::Q>& region);
-
-/// The wrenches of a file: a JSON array of [fx, fy, tz], or text with one "fx,fy,tz" per line (blank lines and
-/// lines starting with # skipped). InputError names the file and the entry.
-std::vector<exact::Vec<exact::Q>> read_wrenches(const std::string& path);
 
 }  // namespace contactcert::queries

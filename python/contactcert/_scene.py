@@ -10,6 +10,7 @@ from typing import Any, Literal, Union, get_args
 
 from . import _core
 from ._numbers import Exact, ExactVector, vector_text
+from ._options import seconds
 from ._results import Cone, Finger, Insertion, Modes, Region, Stability
 from ._source import FromSource, Path
 
@@ -129,23 +130,28 @@ class Scene(FromSource[_core.Scene]):
         return Cone(data, svg)
 
     def stability(self, wrench: ExactVector, margin: bool = False, arith: Arith = "verified",
-                  certificate: Path | None = None) -> Stability:
-        """`contactcert stability FILE --wrench fx,fy,tz [--margin] [--certificate PATH]`: strongly stable,
-        weakly stable or unstable; `certificate` is the file the evidence is written to."""
+                  certificate: Path | None = None, time_limit: float = 0) -> Stability:
+        """`contactcert stability FILE --wrench fx,fy,tz [--margin] [--certificate PATH] [--time-limit S]`:
+        strongly stable, weakly stable or unstable; `certificate` is the file the evidence is written to. Past
+        `time_limit` seconds (0 = none; the verdict and the margin together) raises BudgetExceeded."""
         from ._ucp import Certificate
 
         choice(arith, ARITHS, "--arith")
+        time_limit = seconds(time_limit)
         path = os.fspath(certificate) if certificate is not None else ""
-        data, text = self._core.stability(vector_text(wrench, "--wrench"), arith, bool(margin), path)
+        data, text = self._core.stability(vector_text(wrench, "--wrench"), arith, bool(margin), path, time_limit)
         return Stability(json.loads(data), Certificate(text, path) if text else None)
 
-    def stability_many(self, wrenches: Iterable[ExactVector], arith: Arith = "verified") -> list[Stability]:
-        """The verdicts for many wrenches, from a StabilityOracle prepared once per scene and arithmetic. Each
+    def stability_many(self, wrenches: Iterable[ExactVector], arith: Arith = "verified",
+                       time_limit: float = 0) -> list[Stability]:
+        """`contactcert stability FILE --wrenches FILE`: the verdicts for many wrenches, from a StabilityOracle
+        prepared once per scene and arithmetic (within `time_limit` seconds, 0 = none, else BudgetExceeded). Each
         equals stability(g)'s except `lps`, which counts only the LPs solved for g."""
         choice(arith, ARITHS, "--arith")
+        time_limit = seconds(time_limit)
         oracle = self._oracles.get(arith)
         if oracle is None:
-            oracle = self._oracles[arith] = _core.Oracle(self._core, arith)
+            oracle = self._oracles[arith] = _core.Oracle(self._core, arith, time_limit)
         texts = [vector_text(w, f"wrenches[{i}]") for i, w in enumerate(wrenches)]
         return [Stability(json.loads(d)) for d in oracle.verdicts(texts)]
 
@@ -158,14 +164,19 @@ class Scene(FromSource[_core.Scene]):
         return Modes(json.loads(self._core.modes(bool(kinematic), table2, bool(unions), arith,
                                                  "" if certificate is None else os.fspath(certificate))))
 
-    def region(self) -> Region:
-        """`contactcert stability FILE --region`: the strongly stable set as labelled cells (picture: the sphere
-        of wrench directions)."""
-        return Region(json.loads(self._core.region()), self._core.region_svg)
+    def region(self, wrench: ExactVector | None = None, time_limit: float = 0) -> Region:
+        """`contactcert stability FILE --region [--wrench fx,fy,tz] [--time-limit S]`: the strongly stable set as
+        labelled cells, with the label of `wrench` (picture: the sphere of wrench directions, `wrench` marked).
+        Past `time_limit` seconds (0 = none) raises BudgetExceeded."""
+        g = vector_text(wrench, "--wrench") if wrench is not None else ""
+        time_limit = seconds(time_limit)
+        return Region(json.loads(self._core.region(g, time_limit)), lambda: self._core.region_svg(g, time_limit))
 
-    def finger(self) -> Finger:
-        """`contactcert stability FILE --finger`: the boundary labelled by the verdict of a frictionless push."""
-        return Finger(json.loads(self._core.finger()), self._core.finger_svg)
+    def finger(self, time_limit: float = 0) -> Finger:
+        """`contactcert stability FILE --finger [--time-limit S]`: the boundary labelled by the verdict of a
+        frictionless push. Past `time_limit` seconds (0 = none) raises BudgetExceeded."""
+        time_limit = seconds(time_limit)
+        return Finger(json.loads(self._core.finger(time_limit)), lambda: self._core.finger_svg(time_limit))
 
     def insertion(self, sweep_mu: str | Iterable[Exact] | None = None) -> Insertion:
         """`contactcert insert FILE [--sweep-mu ...]`: G_goal and the pushes that seat the workpiece from any

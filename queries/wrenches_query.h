@@ -1,0 +1,58 @@
+// Many stability verdicts on one scene (a planner's question): `contactcert stability FILE --wrenches FILE` and
+// Python's Oracle. One solvers::StabilityOracle is prepared for the scene (the touching fixels, the mode tree with its
+// g-independent proofs, one LP per feasible moving mode); each verdict then solves 1 + (modes visited) LPs.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "queries/stability_query.h"
+
+namespace contactcert::queries {
+
+/// The oracle of one scene in the run's number type (Q on the exact and verified paths, double with float), prepared
+/// under the time limit of `common` (BudgetExceeded past it; a verdict itself has no budget to exceed).
+class StabilityVerdicts {
+ public:
+  StabilityVerdicts(const geometry::PlanarScene& scene, const CommonOptions& common);
+  /// The verdict for g, as strong_stability's; its lps count only the LPs solved for g.
+  StabilityOutcome verdict(const exact::Vec<exact::Q>& g) const;
+  /// The answer for g: run_stability's without margin or certificate, except for lps (g's only) and the mode tree
+  /// (walked whole by the preparation, where a single verdict stops at the first mode that moves).
+  StabilityAnswer answer(const exact::Vec<exact::Q>& g) const;
+  /// LPs solved while preparing.
+  long preparation_lps() const;
+
+ private:
+  geometry::PlanarScene scene_;
+  exact::Arith arith_;
+  std::optional<solvers::StabilityOracle<exact::Q>> exact_;
+  std::optional<solvers::StabilityOracle<double>> float_;
+};
+
+struct WrenchesOptions {
+  CommonOptions common;  ///< adaptive runs as verified (scene_arith); the time limit bounds the preparation
+  std::string wrenches;  ///< the file of wrenches (read_wrenches)
+};
+
+struct WrenchesAnswer {
+  exact::Arith arith = exact::Arith::kVerified;     ///< as run (never adaptive)
+  std::vector<exact::Vec<exact::Q>> wrenches;       ///< in the file's order
+  std::vector<solvers::StabilityVerdict> verdicts;  ///< one per wrench
+  std::array<long, 3> counts{};                     ///< strongly stable, weakly stable, unstable
+  long lps = 0;                                     ///< the preparation's and every verdict's
+};
+
+/// The wrenches of a file: a JSON array of [fx, fy, tz], or text with one "fx,fy,tz" per line (blank lines and
+/// lines starting with # skipped). InputError names the file and the entry.
+std::vector<exact::Vec<exact::Q>> read_wrenches(const std::string& path);
+
+/// One verdict per wrench of options.wrenches, from one StabilityVerdicts.
+WrenchesAnswer run_wrenches(const SceneInput& input, const WrenchesOptions& options);
+
+/// The object `stability --wrenches --json` prints: each wrench with its verdict, the counts, arith and lps.
+json to_json(const WrenchesAnswer& answer);
+
+}  // namespace contactcert::queries
