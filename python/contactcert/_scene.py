@@ -10,6 +10,7 @@ from typing import Any, Literal, Union, get_args
 
 from . import _core
 from ._numbers import Exact, ExactVector, vector_text
+from ._options import LONG_MAX, seconds, whole_number
 from ._results import Cone, Finger, Insertion, Modes, Region, Stability
 from ._source import FromSource, Path
 
@@ -120,12 +121,18 @@ class Scene(FromSource[_core.Scene]):
     def to_dict(self) -> dict[str, Any]:
         return json.loads(self._core.text)
 
-    def cone(self, mode: str, route: Literal["paper", "project"] = "paper", arith: Arith = "verified") -> Cone:
-        """`contactcert cone FILE --mode MODE`: the wrench cone of an augmented contact mode (Table 2 letters)."""
+    def cone(self, mode: str, route: Literal["paper", "project"] = "paper", arith: Arith = "verified",
+             table2: Literal["strict", "printed"] = "strict", certificate: Path | None = None,
+             time_limit: float = 0) -> Cone:
+        """`contactcert cone FILE --mode MODE [--route R] [--table2 T] [--certificate PATH] [--time-limit S]`: the
+        wrench cone of an augmented contact mode (Table 2 letters); `certificate` is the file its evidence is
+        written to (a Motzkin vector for an empty cone, a witness wrench otherwise)."""
         choice(route, ("paper", "project"), "--route")
         choice(arith, ARITHS, "--arith")
-        data = json.loads(self._core.cone(mode, route, arith))
-        svg = None if arith == "float" else (lambda: self._core.cone_svg(mode, route))
+        choice(table2, ("strict", "printed"), "--table2")
+        path = "" if certificate is None else os.fspath(certificate)
+        data = json.loads(self._core.cone(mode, route, arith, table2, path, seconds(time_limit)))
+        svg = None if arith == "float" else (lambda: self._core.cone_svg(mode, route, table2))
         return Cone(data, svg)
 
     def stability(self, wrench: ExactVector, margin: bool = False, arith: Arith = "verified",
@@ -150,13 +157,19 @@ class Scene(FromSource[_core.Scene]):
         return [Stability(json.loads(d)) for d in oracle.verdicts(texts)]
 
     def modes(self, kinematic: bool = False, table2: Literal["strict", "printed"] = "strict", unions: bool = False,
-              arith: Arith = "verified", certificate: Path | None = None) -> Modes:
+              arith: Arith = "verified", certificate: Path | None = None, max_nodes: int | None = None,
+              max_modes: int | None = None, time_limit: float = 0) -> Modes:
         """`contactcert modes FILE`: every kinematically feasible contact mode from rest (the prefix tree over the
-        fixels, never the 4^k strings); `certificate` is the file its completeness proof is written to."""
+        fixels, never the 4^k strings); `certificate` is the file its completeness proof is written to. Budgets as
+        the CLI's: max_nodes prefixes, max_modes modes (None: the CLI's defaults), time_limit seconds (0: none, but
+        60 with unions or table2="printed"); beyond one, BudgetExceeded."""
         choice(table2, ("strict", "printed"), "--table2")
         choice(arith, ARITHS, "--arith")
-        return Modes(json.loads(self._core.modes(bool(kinematic), table2, bool(unions), arith,
-                                                 "" if certificate is None else os.fspath(certificate))))
+        nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
+        count = None if max_modes is None else whole_number(max_modes, 1, LONG_MAX, "--max-modes")
+        path = "" if certificate is None else os.fspath(certificate)
+        return Modes(json.loads(self._core.modes(bool(kinematic), table2, bool(unions), arith, path, nodes, count,
+                                                 seconds(time_limit))))
 
     def region(self) -> Region:
         """`contactcert stability FILE --region`: the strongly stable set as labelled cells (picture: the sphere
@@ -167,11 +180,12 @@ class Scene(FromSource[_core.Scene]):
         """`contactcert stability FILE --finger`: the boundary labelled by the verdict of a frictionless push."""
         return Finger(json.loads(self._core.finger()), self._core.finger_svg)
 
-    def insertion(self, sweep_mu: str | Iterable[Exact] | None = None) -> Insertion:
+    def insertion(self, sweep_mu: str | Iterable[Exact] | None = None, arith: Arith = "verified") -> Insertion:
         """`contactcert insert FILE [--sweep-mu ...]`: G_goal and the pushes that seat the workpiece from any
         contact state; `sweep_mu` (exact numbers) repeats the pushes with every fixel's mu set to each value."""
+        choice(arith, ARITHS, "--arith")
         sweep = vector_text(sweep_mu, "--sweep-mu") if sweep_mu is not None else ""
-        return Insertion(json.loads(self._core.insertion(sweep)), self._core.insertion_svg)
+        return Insertion(json.loads(self._core.insertion(sweep, arith)), self._core.insertion_svg)
 
     def __repr__(self) -> str:
         return f"Scene({self.name!r}, {self._core.fixels} fixels)"
