@@ -22,12 +22,13 @@ queries::ConeOptions cone_options(const std::string& mode, const std::string& ro
 }
 
 /// `cone FILE --mode MODE --route R --arith A --table2 T [--certificate F] [--time-limit S]`.
-std::string cone(const Scene& s, const std::string& mode, const std::string& route, const std::string& arith,
-                 const std::string& table2, const std::string& certificate, double time_limit) {
+WithCertificate cone(const Scene& s, const std::string& mode, const std::string& route, const std::string& arith,
+                     const std::string& table2, const std::string& certificate, double time_limit) {
   queries::ConeOptions o = cone_options(mode, route, table2);
   o.common = {queries::parse_arith(arith, "--arith"), time_limit};
   o.certificate = certificate;
-  return queries::to_json(queries::run_cone(s, o)).dump();
+  const queries::ConeAnswer a = queries::run_cone(s, o);
+  return {queries::to_json(a).dump(), a.certificate_text};
 }
 
 std::string cone_svg(const Scene& s, const std::string& mode, const std::string& route, const std::string& table2) {
@@ -35,9 +36,9 @@ std::string cone_svg(const Scene& s, const std::string& mode, const std::string&
 }
 
 /// `modes FILE` with its options (a budget not given: the CLI's default).
-std::string modes(const Scene& s, bool kinematic, const std::string& table2, bool unions, const std::string& arith,
-                  const std::string& certificate, std::optional<long> max_nodes, std::optional<long> max_modes,
-                  double time_limit) {
+WithCertificate modes(const Scene& s, bool kinematic, const std::string& table2, bool unions, const std::string& arith,
+                      const std::string& certificate, std::optional<long> max_nodes, std::optional<long> max_modes,
+                      double time_limit) {
   queries::ModesOptions o;
   o.common = {queries::parse_arith(arith, "--arith"), time_limit};
   o.kinematic = kinematic;
@@ -46,7 +47,8 @@ std::string modes(const Scene& s, bool kinematic, const std::string& table2, boo
   o.max_nodes = max_nodes.value_or(o.max_nodes);
   o.max_modes = max_modes.value_or(o.max_modes);
   o.certificate = certificate;
-  return queries::to_json(queries::run_modes(s, o)).dump();
+  const queries::ModesAnswer a = queries::run_modes(s, o);
+  return {queries::to_json(a).dump(), a.certificate_text};
 }
 
 queries::InsertOptions insert_options(const std::string& sweep_mu, const std::string& arith) {

@@ -17,35 +17,33 @@ using exact::Mat;
 using exact::Q;
 using exact::to_string;
 
-nlohmann::json matrix_json(const Mat<Q>& M) {
+/// The rows of M as JSON arrays, row r written as the entries of `row(r-th row of M)`.
+template <class T, class Row>
+nlohmann::json rows_json(const Mat<T>& M, Row row) {
   nlohmann::json rows = nlohmann::json::array();
-  for (Eigen::Index r = 0; r < M.rows(); ++r) {
-    nlohmann::json row = nlohmann::json::array();
-    for (Eigen::Index c = 0; c < M.cols(); ++c) row.push_back(to_string(M(r, c)));
-    rows.push_back(row);
-  }
+  for (Eigen::Index r = 0; r < M.rows(); ++r) rows.push_back(row(exact::Vec<T>(M.row(r).transpose())));
   return rows;
+}
+
+nlohmann::json matrix_json(const Mat<Q>& M) {
+  return rows_json(M, [](const exact::Vec<Q>& v) {
+    std::vector<std::string> entries;
+    for (Eigen::Index i = 0; i < v.size(); ++i) entries.push_back(to_string(v(i)));
+    return entries;
+  });
+}
+
+nlohmann::json matrix_json(const Mat<double>& M) {
+  return rows_json(M, [](const exact::Vec<double>& v) { return std::vector<double>(v.data(), v.data() + v.size()); });
 }
 
 /// Rows as primitive integer direction vectors (SPEC section 1), as strings.
 nlohmann::json directions_json(const Mat<Q>& M) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (Eigen::Index r = 0; r < M.rows(); ++r) {
-    nlohmann::json row = nlohmann::json::array();
-    for (const exact::Z& x : exact::primitive(exact::Vec<Q>(M.row(r).transpose()))) row.push_back(x.get_str());
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-nlohmann::json matrix_json(const Mat<double>& M) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (Eigen::Index r = 0; r < M.rows(); ++r) {
-    nlohmann::json row = nlohmann::json::array();
-    for (Eigen::Index c = 0; c < M.cols(); ++c) row.push_back(M(r, c));
-    rows.push_back(row);
-  }
-  return rows;
+  return rows_json(M, [](const exact::Vec<Q>& v) {
+    std::vector<std::string> entries;
+    for (const exact::Z& x : exact::primitive(v)) entries.push_back(x.get_str());
+    return entries;
+  });
 }
 
 nlohmann::json line_of_force_json(const exact::Vec<Q>& g, const geometry::Point2& com) {
@@ -152,7 +150,7 @@ solvers::ModeString cone_mode(const geometry::PlanarScene& scene, const std::str
 }
 
 ConeAnswer run_cone(const SceneInput& input, const ConeOptions& options) {
-  ConeAnswer a{input.scene, options, {}, {}, {}, {}};
+  ConeAnswer a{input.scene, options, {}, {}, {}, {}, {}};
   a.mode = cone_mode(input.scene, input.name, options.mode, options.table2 == Table2::kPrinted);
   const bool float_path = options.common.arith == exact::Arith::kFloat;
   if (!options.certificate.empty() && float_path)
@@ -167,7 +165,10 @@ ConeAnswer run_cone(const SceneInput& input, const ConeOptions& options) {
   }
   a.cone = solvers::wrench_cone<Q>(input.scene, a.mode, options.route, budget);
   if (!options.svg.empty()) write_text_file(options.svg, cone_svg(a));
-  if (!options.certificate.empty()) write_text_file(options.certificate, certificate_file(input, a).dump(1) + "\n");
+  if (!options.certificate.empty()) {
+    a.certificate_text = certificate_file(input, a).dump(1) + "\n";
+    write_text_file(options.certificate, a.certificate_text);
+  }
   return a;
 }
 

@@ -38,6 +38,7 @@ struct ConeAnswer {
   std::optional<solvers::WrenchCone<exact::Q>> cone;      ///< the exact and verified paths
   std::optional<solvers::WrenchCone<double>> cone_float;  ///< --arith float
   std::optional<ConeWitness> witness;                     ///< with a certificate of a non-empty cone
+  std::string certificate_text;                           ///< the certificate written ("" = none)
   bool empty() const;
 };
 

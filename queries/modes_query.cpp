@@ -23,10 +23,10 @@ ModesAnswer run_modes(const SceneInput& input, const ModesOptions& options) {
   tree.unions = options.unions;
   tree.tree = {options.common.arith, options.max_nodes, options.max_modes,
                exact::Deadline::after(options.time_budget())};
-  ModesAnswer a{options, solvers::contact_modes(input.scene, tree)};
+  ModesAnswer a{options, solvers::contact_modes(input.scene, tree), {}};
   if (!options.certificate.empty()) {
     // A certificate that `check` could not read is not written: check reads at most kMaxInputBytes.
-    const std::string certificate = solvers::modes_certificate(input.text, a.modes);
+    std::string certificate = solvers::modes_certificate(input.text, a.modes);
     if (certificate.size() > exact::kMaxInputBytes)
       throw exact::BudgetExceeded(
           "modes --certificate: the certificate would take " + std::to_string(certificate.size()) +
@@ -34,6 +34,7 @@ ModesAnswer run_modes(const SceneInput& input, const ModesOptions& options) {
           std::to_string(a.modes.tree.modes.size()) + " feasible modes found, " +
               std::to_string(a.modes.tree.dead.size()) + " dead prefixes; no certificate written");
     write_text_file(options.certificate, certificate);
+    a.certificate_text = std::move(certificate);
   }
   return a;
 }

@@ -34,6 +34,7 @@ struct ModesOptions {
 struct ModesAnswer {
   ModesOptions options;
   solvers::ContactModes modes;
+  std::string certificate_text;  ///< the certificate written ("" = none)
 };
 
 /// The feasible modes (InputError for --arith float; BudgetExceeded past a budget, or for a certificate larger than

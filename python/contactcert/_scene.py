@@ -131,9 +131,11 @@ class Scene(FromSource[_core.Scene]):
         choice(arith, ARITHS, "--arith")
         choice(table2, ("strict", "printed"), "--table2")
         path = "" if certificate is None else os.fspath(certificate)
-        data = json.loads(self._core.cone(mode, route, arith, table2, path, seconds(time_limit)))
+        from ._ucp import Certificate
+
+        data, text = self._core.cone(mode, route, arith, table2, path, seconds(time_limit))
         svg = None if arith == "float" else (lambda: self._core.cone_svg(mode, route, table2))
-        return Cone(data, svg)
+        return Cone(json.loads(data), svg, Certificate(text, path) if text else None)
 
     def stability(self, wrench: ExactVector, margin: bool = False, arith: Arith = "verified",
                   certificate: Path | None = None) -> Stability:
@@ -167,9 +169,12 @@ class Scene(FromSource[_core.Scene]):
         choice(arith, ARITHS, "--arith")
         nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
         count = None if max_modes is None else whole_number(max_modes, 1, LONG_MAX, "--max-modes")
+        from ._ucp import Certificate
+
         path = "" if certificate is None else os.fspath(certificate)
-        return Modes(json.loads(self._core.modes(bool(kinematic), table2, bool(unions), arith, path, nodes, count,
-                                                 seconds(time_limit))))
+        data, text = self._core.modes(bool(kinematic), table2, bool(unions), arith, path, nodes, count,
+                                      seconds(time_limit))
+        return Modes(json.loads(data), certificate=Certificate(text, path) if text else None)
 
     def region(self) -> Region:
         """`contactcert stability FILE --region`: the strongly stable set as labelled cells (picture: the sphere

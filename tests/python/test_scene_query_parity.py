@@ -48,8 +48,10 @@ def test_cone_certificates_equal_cli(name, tmp_path):
         EMPTY.add(want["empty"])
         written = path.read_text()
         path.unlink()
-        assert cc.Scene.from_file(f).cone(mode, certificate=path).to_dict() == want, mode
-        assert path.read_text() == written
+        cone = cc.Scene.from_file(f).cone(mode, certificate=path)
+        assert cone.to_dict() == want, mode
+        assert path.read_text() == written == cone.certificate.text
+        assert cone.certificate.check()
 
 
 EMPTY = set()
@@ -75,8 +77,10 @@ def test_modes_equal_cli(name, tmp_path):
     want = cli_json("modes", f, "--certificate", path)
     written = path.read_text()
     path.unlink()
-    assert scene.modes(certificate=path).to_dict() == want
-    assert path.read_text() == written
+    modes = scene.modes(certificate=path)
+    assert modes.to_dict() == want
+    assert path.read_text() == written == modes.certificate.text
+    assert scene.modes().certificate is None
 
 
 @pytest.mark.parametrize("option,value", [("max_nodes", 2), ("max_modes", 1)])
