@@ -21,6 +21,7 @@
 #include "queries/boundary_text.h"
 #include "queries/cone_svg.h"
 #include "queries/html_report.h"
+#include "queries/insert_query.h"
 #include "queries/json_out.h"
 #include "queries/line_plot.h"
 #include "queries/stability_svg.h"

@@ -11,50 +11,17 @@
 #include "exact/json_input.h"
 #include "geometry/planar_scene.h"
 #include "queries/json_out.h"
-#include "queries/stability_certificate_file.h"  // design.cpp writes stability certificates
-#include "solvers/insertion/insertion.h"
-#include "solvers/stability/contact_modes.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stable_region.h"
 #include "solvers/stability/strong_stability.h"
 #include "solvers/ucp/problem.h"
 #include "solvers/ucp/solve.h"
-#include "solvers/wrench_cone/wrench_cone.h"
 
 namespace contactcert::cli {
 
 using namespace queries;  // the front end names the query layer's writers unqualified
 
-// modes.cpp: the feasible contact modes of a scene (arith, table2, unions and the budgets as `modes` reads
-// them: with --unions or a printed `s` a time limit of 0 means the default budget kModesDefaultSeconds) and
-// the JSON of `modes --json`.
-inline constexpr double kModesDefaultSeconds = 60;
-solvers::ContactModes modes_of(const geometry::PlanarScene& scene, const std::string& arith, const std::string& table2,
-                               bool unions, long max_nodes, double time_limit,
-                               long max_modes = solvers::ModeTreeOptions{}.max_modes);
-json modes_json(const solvers::ContactModes& m, bool kinematic, const std::string& certificate);
-
-// cone.cpp: the mode named by --mode (InputError naming `file` and --mode otherwise), the exact and the
-// float cone, and the --svg picture.
-solvers::ModeString cone_mode(const geometry::PlanarScene& scene, const std::string& file, const std::string& text,
-                              bool printed_separation = false);
-nlohmann::json cone_json(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
-                         const solvers::WrenchCone<exact::Q>& c, const std::string& route, const std::string& arith);
-nlohmann::json cone_json(const solvers::ModeString& mode, const solvers::WrenchCone<double>& c,
-                         const std::string& route);
-std::string cone_svg(const geometry::PlanarScene& scene, const solvers::ModeString& mode,
-                     const solvers::WrenchCone<exact::Q>& c);
-
-// insert.cpp: G_goal of the scene read from `file` (an InputError names the file), G_goal without --sweep-mu, the
-// values of --sweep-mu (InputError unless each is >= 0), the sweep's entry for one mu (every fixel's mu_s = mu_k =
-// mu), and the --svg picture.
-solvers::Insertion<exact::Q> insertion_of(const geometry::PlanarScene& scene, const std::string& file);
-json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion<exact::Q>& ins,
-                    const solvers::BoundaryPieces<exact::Q, bool>& pushes);
-std::vector<exact::Q> sweep_mus(const std::string& text);
-json sweep_entry_json(const geometry::PlanarScene& scene, const exact::Q& mu);
-std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<exact::Q, bool>& pushes);
 
 // ucp.cpp: `ucp --generate random|reduction` and the report (`certificate`: the file it was written to, or empty).
 solvers::ucp::UcpProblem generated_problem(const std::string& kind, std::uint64_t seed, int nc,

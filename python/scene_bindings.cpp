@@ -1,61 +1,71 @@
-// Scene.cone, Scene.modes and Scene.insertion (and their pictures).
+// Scene.cone, Scene.modes and Scene.insertion (and their pictures): the queries of `cone`, `modes` and `insert`
+// (queries/cone_query.h, modes_query.h, insert_query.h), their option texts parsed as the CLI parses them.
 #include <pybind11/stl.h>
 
 #include <optional>
 #include <string>
-#include <vector>
 
-#include "cli/option_checks.h"
-#include "cli/results.h"
-#include "exact/arith.h"
-#include "exact/input_error.h"
-#include "exact/json_input.h"
 #include "python/bindings.h"
-#include "queries/json_out.h"
-#include "queries/stability_svg.h"
+#include "queries/cone_query.h"
+#include "queries/insert_query.h"
+#include "queries/modes_query.h"
 
 namespace contactcert::python {
 namespace {
 
-using exact::Q;
-
-solvers::Route parse_route(const std::string& route) {
-  return route == "project" ? solvers::Route::kProject : solvers::Route::kPaper;
+queries::ConeOptions cone_options(const std::string& mode, const std::string& route, const std::string& table2) {
+  queries::ConeOptions o;
+  o.mode = mode;
+  o.route = queries::parse_route(route, "--route");
+  o.table2 = queries::parse_table2(table2, "--table2");
+  return o;
 }
 
-std::string cone(const Scene& s, const std::string& mode_text, const std::string& route, const std::string& arith) {
-  const solvers::ModeString mode = cli::cone_mode(s.scene, s.name, mode_text);
-  if (arith == "float")
-    return cli::cone_json(mode, solvers::wrench_cone<double>(s.scene, mode, parse_route(route)), route).dump();
-  return cli::cone_json(s.scene, mode, solvers::wrench_cone<Q>(s.scene, mode, parse_route(route)), route, arith).dump();
+/// `cone FILE --mode MODE --route R --arith A --table2 T [--certificate F] [--time-limit S]`.
+WithCertificate cone(const Scene& s, const std::string& mode, const std::string& route, const std::string& arith,
+                     const std::string& table2, const std::string& certificate, double time_limit) {
+  queries::ConeOptions o = cone_options(mode, route, table2);
+  o.common = {queries::parse_arith(arith, "--arith"), time_limit};
+  o.certificate = certificate;
+  const queries::ConeAnswer a = queries::run_cone(s, o);
+  return {queries::to_json(a).dump(), a.certificate_text};
 }
 
-std::string cone_svg(const Scene& s, const std::string& mode_text, const std::string& route) {
-  const solvers::ModeString mode = cli::cone_mode(s.scene, s.name, mode_text);
-  return cli::cone_svg(s.scene, mode, solvers::wrench_cone<Q>(s.scene, mode, parse_route(route)));
+std::string cone_svg(const Scene& s, const std::string& mode, const std::string& route, const std::string& table2) {
+  return queries::cone_svg(queries::run_cone(s, cone_options(mode, route, table2)));
 }
 
-std::string modes(const Scene& s, bool kinematic, const std::string& table2, bool unions, const std::string& arith,
-                  const std::string& certificate) {
-  const solvers::ContactModes m = cli::modes_of(s.scene, arith, table2, unions, 1L << 22, 0);
-  if (!certificate.empty()) cli::write_text_file(certificate, solvers::modes_certificate(s.text, m));
-  return cli::modes_json(m, kinematic, certificate).dump();
+/// `modes FILE` with its options (a budget not given: the CLI's default).
+WithCertificate modes(const Scene& s, bool kinematic, const std::string& table2, bool unions, const std::string& arith,
+                      const std::string& certificate, std::optional<long> max_nodes, std::optional<long> max_modes,
+                      double time_limit) {
+  queries::ModesOptions o;
+  o.common = {queries::parse_arith(arith, "--arith"), time_limit};
+  o.kinematic = kinematic;
+  o.unions = unions;
+  o.table2 = queries::parse_table2(table2, "--table2");
+  o.max_nodes = max_nodes.value_or(o.max_nodes);
+  o.max_modes = max_modes.value_or(o.max_modes);
+  o.certificate = certificate;
+  const queries::ModesAnswer a = queries::run_modes(s, o);
+  return {queries::to_json(a).dump(), a.certificate_text};
 }
 
-/// `insert FILE [--sweep-mu a,b,...]`.
-std::string insertion(const Scene& s, const std::string& sweep_mu) {
-  const std::vector<Q> mus = cli::sweep_mus(sweep_mu);
-  const auto ins = cli::insertion_of(s.scene, s.name);
-  cli::json j = cli::insertion_json(s.scene, ins, solvers::insertion_pushes<Q>(s.scene, ins));
-  if (!mus.empty()) {
-    cli::json sweep = cli::json::array();
-    for (const Q& mu : mus) sweep.push_back(cli::sweep_entry_json(s.scene, mu));
-    j["sweep"] = sweep;
-  }
-  return j.dump();
+queries::InsertOptions insert_options(const std::string& sweep_mu, const std::string& arith) {
+  queries::InsertOptions o;
+  o.common.arith = queries::parse_arith(arith, "--arith");
+  o.sweep_mu = queries::parse_sweep_mu(sweep_mu);
+  return o;
 }
+
+/// `insert FILE [--sweep-mu a,b,...] [--arith A]`.
+std::string insertion(const Scene& s, const std::string& sweep_mu, const std::string& arith) {
+  return queries::to_json(queries::run_insert(s, insert_options(sweep_mu, arith))).dump();
+}
+
 std::string insertion_svg(const Scene& s) {
-  return cli::insertion_svg(s.scene, solvers::insertion_pushes<Q>(s.scene, cli::insertion_of(s.scene, s.name)));
+  const queries::InsertAnswer a = queries::run_insert(s, insert_options("", "verified"));
+  return queries::insertion_svg(a.scene, a.pushes);
 }
 
 }  // namespace

@@ -23,9 +23,11 @@ Directions = tuple[tuple[int, ...], ...]
 class Result:
     """A result as the CLI's --json object."""
 
-    def __init__(self, data: dict[str, Any], svg: Callable[[], str] | None = None) -> None:
+    def __init__(self, data: dict[str, Any], svg: Callable[[], str] | None = None,
+                 certificate: Certificate | None = None) -> None:
         self._data = data
         self._svg = svg  # a function drawing the picture, or None
+        self.certificate = certificate  # a Certificate when the query wrote one
 
     def to_dict(self) -> dict[str, Any]:
         """The CLI's --json object for the same query."""

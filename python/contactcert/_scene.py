@@ -10,7 +10,7 @@ from typing import Any, Literal, Union, get_args
 
 from . import _core
 from ._numbers import Exact, ExactVector, vector_text
-from ._options import seconds
+from ._options import LONG_MAX, seconds, whole_number
 from ._results import Cone, Finger, Insertion, Modes, Region, Stability
 from ._source import FromSource, Path
 
@@ -121,13 +121,21 @@ class Scene(FromSource[_core.Scene]):
     def to_dict(self) -> dict[str, Any]:
         return json.loads(self._core.text)
 
-    def cone(self, mode: str, route: Literal["paper", "project"] = "paper", arith: Arith = "verified") -> Cone:
-        """`contactcert cone FILE --mode MODE`: the wrench cone of an augmented contact mode (Table 2 letters)."""
+    def cone(self, mode: str, route: Literal["paper", "project"] = "paper", arith: Arith = "verified",
+             table2: Literal["strict", "printed"] = "strict", certificate: Path | None = None,
+             time_limit: float = 0) -> Cone:
+        """`contactcert cone FILE --mode MODE [--route R] [--table2 T] [--certificate PATH] [--time-limit S]`: the
+        wrench cone of an augmented contact mode (Table 2 letters); `certificate` is the file its evidence is
+        written to (a Motzkin vector for an empty cone, a witness wrench otherwise)."""
         choice(route, ("paper", "project"), "--route")
         choice(arith, ARITHS, "--arith")
-        data = json.loads(self._core.cone(mode, route, arith))
-        svg = None if arith == "float" else (lambda: self._core.cone_svg(mode, route))
-        return Cone(data, svg)
+        choice(table2, ("strict", "printed"), "--table2")
+        path = "" if certificate is None else os.fspath(certificate)
+        from ._ucp import Certificate
+
+        data, text = self._core.cone(mode, route, arith, table2, path, seconds(time_limit))
+        svg = None if arith == "float" else (lambda: self._core.cone_svg(mode, route, table2))
+        return Cone(json.loads(data), svg, Certificate(text, path) if text else None)
 
     def stability(self, wrench: ExactVector, margin: bool = False, arith: Arith = "verified",
                   certificate: Path | None = None, time_limit: float = 0) -> Stability:
@@ -156,13 +164,22 @@ class Scene(FromSource[_core.Scene]):
         return [Stability(json.loads(d)) for d in oracle.verdicts(texts)]
 
     def modes(self, kinematic: bool = False, table2: Literal["strict", "printed"] = "strict", unions: bool = False,
-              arith: Arith = "verified", certificate: Path | None = None) -> Modes:
+              arith: Arith = "verified", certificate: Path | None = None, max_nodes: int | None = None,
+              max_modes: int | None = None, time_limit: float = 0) -> Modes:
         """`contactcert modes FILE`: every kinematically feasible contact mode from rest (the prefix tree over the
-        fixels, never the 4^k strings); `certificate` is the file its completeness proof is written to."""
+        fixels, never the 4^k strings); `certificate` is the file its completeness proof is written to. Budgets as
+        the CLI's: max_nodes prefixes, max_modes modes (None: the CLI's defaults), time_limit seconds (0: none, but
+        60 with unions or table2="printed"); beyond one, BudgetExceeded."""
         choice(table2, ("strict", "printed"), "--table2")
         choice(arith, ARITHS, "--arith")
-        return Modes(json.loads(self._core.modes(bool(kinematic), table2, bool(unions), arith,
-                                                 "" if certificate is None else os.fspath(certificate))))
+        nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
+        count = None if max_modes is None else whole_number(max_modes, 1, LONG_MAX, "--max-modes")
+        from ._ucp import Certificate
+
+        path = "" if certificate is None else os.fspath(certificate)
+        data, text = self._core.modes(bool(kinematic), table2, bool(unions), arith, path, nodes, count,
+                                      seconds(time_limit))
+        return Modes(json.loads(data), certificate=Certificate(text, path) if text else None)
 
     def region(self, wrench: ExactVector | None = None, time_limit: float = 0) -> Region:
         """`contactcert stability FILE --region [--wrench fx,fy,tz] [--time-limit S]`: the strongly stable set as
@@ -178,11 +195,12 @@ class Scene(FromSource[_core.Scene]):
         time_limit = seconds(time_limit)
         return Finger(json.loads(self._core.finger(time_limit)), lambda: self._core.finger_svg(time_limit))
 
-    def insertion(self, sweep_mu: str | Iterable[Exact] | None = None) -> Insertion:
+    def insertion(self, sweep_mu: str | Iterable[Exact] | None = None, arith: Arith = "verified") -> Insertion:
         """`contactcert insert FILE [--sweep-mu ...]`: G_goal and the pushes that seat the workpiece from any
         contact state; `sweep_mu` (exact numbers) repeats the pushes with every fixel's mu set to each value."""
+        choice(arith, ARITHS, "--arith")
         sweep = vector_text(sweep_mu, "--sweep-mu") if sweep_mu is not None else ""
-        return Insertion(json.loads(self._core.insertion(sweep)), self._core.insertion_svg)
+        return Insertion(json.loads(self._core.insertion(sweep, arith)), self._core.insertion_svg)
 
     def __repr__(self) -> str:
         return f"Scene({self.name!r}, {self._core.fixels} fixels)"
