@@ -34,5 +34,7 @@ void bind_stability(py::module_& m, py::class_<Scene>& scene);
 void bind_scene_queries(py::class_<Scene>& scene);
 /// The class Ucp, generate and check (ucp_bindings.cpp).
 void bind_ucp(py::module_& m);
+/// The classes Motion (a motion scene, with simulate) and Simulation (its answer) (simulate_bindings.cpp).
+void bind_simulate(py::module_& m);
 
 }  // namespace contactcert::python
