@@ -35,15 +35,16 @@ queries::SimulateAnswer simulate(const queries::MotionInput& input, std::optiona
 }  // namespace
 
 void bind_simulate(py::module_& m) {
+  // Simulation first: Motion.simulate's signature names it.
+  py::class_<queries::SimulateAnswer>(m, "Simulation")
+      .def("json", [](const queries::SimulateAnswer& a) { return exact::json_text(queries::to_json(a)); })
+      .def("svg", &queries::trajectory_svg, Release());
   py::class_<queries::MotionInput>(m, "Motion")
       .def_static("load", &queries::load_motion)
       .def_static("parse", &queries::parse_motion, py::arg("text"), py::arg("name"))
       .def_readonly("name", &queries::MotionInput::name)
       .def_readonly("text", &queries::MotionInput::text)
       .def("simulate", &simulate, Release());
-  py::class_<queries::SimulateAnswer>(m, "Simulation")
-      .def("json", [](const queries::SimulateAnswer& a) { return exact::json_text(queries::to_json(a)); })
-      .def("svg", &queries::trajectory_svg, Release());
 }
 
 }  // namespace contactcert::python

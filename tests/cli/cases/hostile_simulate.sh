@@ -20,7 +20,8 @@ check 2 'no_such_scene.json' simulate "$work/no_such_scene.json"
 printf '{"kind":"quasistatic_scene","workpiece":{"shape":{"type":"polygon","vertices":[[0,0],[2,0],[2,2],[0,2]]}},"obstacles":[{"vertices":[[-9,-1],[9,-1],[9,0],[-9,0]],"mu":1}],"fingers":[{"tip":[0,1],"mu":0}],"motion":{"dt":"1/10","steps":3}}\n' \
   > "$work/sim_no_schedule.json"
 check 2 'sim_no_schedule.json: $.fingers[0].schedule' simulate "$work/sim_no_schedule.json"
-sed 's/"dt":"1\/10"/"dt":0/' "$work/sim_no_schedule.json" > "$work/sim_zero_dt.json"
+sed 's/"mu":0}/"mu":0,"schedule":[{"velocity":[1,0]}]}/; s/"dt":"1\/10"/"dt":0/' "$work/sim_no_schedule.json" \
+  > "$work/sim_zero_dt.json"
 check 2 'sim_zero_dt.json: $.motion.dt' simulate "$work/sim_zero_dt.json"
 check 2 'bt2002_fig4a_lla.json: $.motion' simulate "$s/bt2002_fig4a_lla.json"
 # Budgets: the time limit passes before the first step (exit 3, the steps done); one node of search per step.
