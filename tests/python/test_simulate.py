@@ -76,3 +76,30 @@ def test_time_limit_raises_with_the_steps_done():
     with pytest.raises(cc.BudgetExceeded, match="covered: 0 steps") as e:
         cc.Motion.from_file(BOX).simulate(steps=1000, time_limit=1e-9)
     assert e.value.result.status == "unknown" and len(e.value.result) == 0
+
+
+def test_json_poses_are_exact_and_keep_the_pivot_fixed():
+    run = cc.Motion.from_file(BOX).simulate(steps=4, uniqueness=False)
+    for s in run:
+        pose = s["pose_after"]
+        (c, ms), (s_, c2) = (tuple(map(Fraction, row)) for row in pose["R"])
+        tx, ty = map(Fraction, pose["t"])
+        assert c == c2 and ms == -s_ and c * c + s_ * s_ == 1  # a rotation, exactly
+        assert (2 * c + tx, 2 * s_ + ty) == (2, 0)  # the front corner (2, 0) stays exactly where it is
+        assert abs(pose["angle_approx"]) > 0
+
+
+def test_push_at_height_one_reports_both_motions():
+    scene = cc.Motion.from_file(BOX).to_dict()
+    scene["fingers"][0]["tip"] = [0, 1]
+    step = next(iter(cc.Motion.from_dict(scene).simulate(steps=1)))
+    assert step.unique is False
+    motions = {tuple(map(Fraction, m)) for m in step["uniqueness"]["motions"]}
+    assert {(1, 0, 0), (0, 2, -1)} <= motions  # sliding, and tipping about the front corner
+
+
+def test_compare_reports_where_float_differs():
+    d = cc.Motion.from_file(BOX).simulate(compare=True, uniqueness=False).to_dict()
+    assert d["float"]["status"] == "completed"
+    for x in d["divergences"]:
+        assert x["kind"] == "penetration" and x["pose_distance"] < 1e-9  # rounding dips into the floor, no more
