@@ -92,6 +92,9 @@ class Motion(FromSource[_core.Motion]):
     def to_dict(self) -> dict[str, Any]:
         return json.loads(self._core.text)
 
+    def __repr__(self) -> str:
+        return f"Motion({self.name!r})"
+
     def simulate(self, steps: int | None = None, dt: Exact | None = None, arith: Arith = "verified",
                  compare: bool = False, uniqueness: bool = True, max_nodes: int | None = None,
                  max_modes: int | None = None, time_limit: float = 0, certificates: Path | None = None,
@@ -107,11 +110,8 @@ class Motion(FromSource[_core.Motion]):
                                    seconds(time_limit), "" if certificates is None else os.fspath(certificates),
                                    "" if svg is None else os.fspath(svg))
         run = Simulation(core)
-        if run.status == "unknown":
-            e = BudgetExceeded(f"budget exceeded: {run.reason} (covered: {run['steps_done']} steps)")
-            e.result = run  # type: ignore[attr-defined]  # set here, not by the extension
-            raise e
-        return run
-
-    def __repr__(self) -> str:
-        return f"Motion({self.name!r})"
+        if run.status != "unknown":
+            return run
+        stopped = BudgetExceeded(f"budget exceeded: {run.reason} (covered: {run['steps_done']} steps)")
+        stopped.result = run  # type: ignore[attr-defined]  # set here, not by the extension
+        raise stopped
