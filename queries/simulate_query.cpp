@@ -170,42 +170,66 @@ Q parse_dt(const std::string& text, const std::string& field) {
   return h;
 }
 
-SimulateAnswer run_simulate(const MotionInput& input, const SimulateOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
-  SimulateAnswer a;
-  a.file = input.name;
-  a.scene = input.scene;
-  a.arith = scene_arith(o.common.arith);
-  motion::SimulateOptions so = solver_options(o, a.arith);
-  a.dt = o.dt.value_or(input.scene.dt);
-  a.steps = o.steps.value_or(input.scene.steps);
+SimulateRun::SimulateRun(const MotionInput& input, const SimulateOptions& o)
+    : options_(o), start_(std::chrono::steady_clock::now()) {
+  answer_.file = input.name;
+  answer_.scene = input.scene;
+  answer_.arith = scene_arith(o.common.arith);
+  solver_ = solver_options(o, answer_.arith);
+  answer_.dt = o.dt.value_or(input.scene.dt);
+  answer_.steps = o.steps.value_or(input.scene.steps);
   if (!o.certificates.empty()) create_output_dir(o.certificates, "--certificates");
-  if (a.arith == exact::Arith::kFloat) {
-    a.float_run = motion::simulate<double>(input.scene, so);
+  if (answer_.arith == exact::Arith::kFloat)
+    float_.emplace(input.scene, solver_);
+  else
+    exact_.emplace(input.scene, solver_);
+}
+
+bool SimulateRun::advance() {
+  if (finished_) return false;
+  if (!exact_) return float_->step();
+  if (!exact_->step()) return false;
+  const motion::StepRecord<Q>& s = exact_->trajectory().steps.back();
+  if (options_.certificates.empty() || s.certificate.empty()) {
+    answer_.certificates.emplace_back();
   } else {
-    a.exact_run = motion::simulate<Q>(input.scene, so);
-    if (o.compare) {
-      // The float run gets what is left of the time limit (at least a moment: then it ends `unknown` at once).
-      if (so.time_limit > 0) so.time_limit = std::max(1e-9, so.time_limit - seconds_since(start));
-      a.float_run = motion::simulate<double>(input.scene, so);
-      a.divergences = motion::compare_runs(input.scene, *a.exact_run, *a.float_run);
-      a.compared = true;
-    }
-    for (const motion::StepRecord<Q>& s : a.exact_run->steps) {
-      if (o.certificates.empty() || s.certificate.empty()) {
-        a.certificates.emplace_back();
-        continue;
-      }
-      a.certificates.push_back(o.certificates + "/step-" + std::to_string(s.index) + ".json");
-      write_text_file(a.certificates.back(), s.certificate);
-    }
+    answer_.certificates.push_back(options_.certificates + "/step-" + std::to_string(s.index) + ".json");
+    write_text_file(answer_.certificates.back(), s.certificate);
   }
-  if (!o.svg.empty()) {
-    write_text_file(o.svg, trajectory_svg(a));
-    a.svg = o.svg;
+  return true;
+}
+
+std::optional<json> SimulateRun::next() {
+  if (!advance()) return std::nullopt;
+  if (exact_) return step_json(exact_->trajectory().steps.back(), answer_.certificates.back());
+  return step_json(float_->trajectory().steps.back(), "");
+}
+
+SimulateAnswer SimulateRun::finish() {
+  if (finished_) return answer_;
+  while (advance()) {
   }
-  a.seconds = seconds_since(start);
+  finished_ = true;
+  SimulateAnswer& a = answer_;
+  if (float_) a.float_run = float_->take();
+  if (exact_) a.exact_run = exact_->take();
+  if (exact_ && options_.compare) {
+    // The float run gets what is left of the time limit (at least a moment: then it ends `unknown` at once).
+    if (solver_.time_limit > 0) solver_.time_limit = std::max(1e-9, solver_.time_limit - seconds_since(start_));
+    a.float_run = motion::simulate<double>(a.scene, solver_);
+    a.divergences = motion::compare_runs(a.scene, *a.exact_run, *a.float_run);
+    a.compared = true;
+  }
+  if (!options_.svg.empty()) {
+    write_text_file(options_.svg, trajectory_svg(a));
+    a.svg = options_.svg;
+  }
+  a.seconds = seconds_since(start_);
   return a;
+}
+
+SimulateAnswer run_simulate(const MotionInput& input, const SimulateOptions& options) {
+  return SimulateRun(input, options).finish();
 }
 
 motion::RunStatus run_status(const SimulateAnswer& a) {

@@ -3,6 +3,7 @@
 // step's certificate written to a folder, the animated picture) and the JSON of the trajectory.
 #pragma once
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,8 +60,30 @@ struct SimulateAnswer {
   double seconds = 0;
 };
 
-/// Runs the scene (writing the certificates and the picture where asked); InputError naming the option for bad
-/// options. A budget or the time limit ends the run `unknown` with the steps done (see stopped_by_budget).
+/// A run in progress (the Python generator): next() makes one step of the run in the answer's arithmetic, writes
+/// its certificate and returns the step's JSON (as in to_json's "steps"); finish() makes the rest, the float run
+/// and the comparison (compare), the picture, and returns the answer. The time limit counts from construction.
+class SimulateRun {
+ public:
+  /// InputError naming the option for bad options (checked before any step).
+  SimulateRun(const MotionInput& input, const SimulateOptions& options);
+  /// The next step's JSON, or nullopt once the run has ended.
+  std::optional<json> next();
+  SimulateAnswer finish();
+
+ private:
+  bool advance();
+  SimulateOptions options_;
+  solvers::motion::SimulateOptions solver_;
+  std::chrono::steady_clock::time_point start_;
+  SimulateAnswer answer_;
+  std::optional<solvers::motion::Stepper<exact::Q>> exact_;
+  std::optional<solvers::motion::Stepper<double>> float_;
+  bool finished_ = false;
+};
+
+/// Runs the scene (writing the certificates and the picture where asked): SimulateRun(input, options).finish().
+/// A budget or the time limit ends the run `unknown` with the steps done (see stopped_by_budget).
 SimulateAnswer run_simulate(const MotionInput& input, const SimulateOptions& options);
 
 /// How the run of the answer's arithmetic ended, why, and how many steps it made.

@@ -95,23 +95,48 @@ class Motion(FromSource[_core.Motion]):
     def __repr__(self) -> str:
         return f"Motion({self.name!r})"
 
-    def simulate(self, steps: int | None = None, dt: Exact | None = None, arith: Arith = "verified",
-                 compare: bool = False, uniqueness: bool = True, max_nodes: int | None = None,
-                 max_modes: int | None = None, time_limit: float = 0, certificates: Path | None = None,
-                 svg: Path | None = None) -> Simulation:
-        """`contactcert simulate FILE [--steps N] [--dt H] ...`: the run, iterable step by step. A run stopped by a
-        budget or the time limit raises BudgetExceeded with the Simulation (the steps done) as its `result`."""
+    def _start(self, steps: int | None, dt: Exact | None, arith: Arith, compare: bool, uniqueness: bool,
+               max_nodes: int | None, max_modes: int | None, time_limit: float, certificates: Path | None,
+               svg: Path | None) -> _core.Run:
+        """The run started, its options checked as the CLI checks them (ValueError naming the option)."""
         choice(arith, ARITHS, "--arith")
         steps = None if steps is None else whole_number(steps, 1, 1000000, "--steps")
         dt_text = "" if dt is None else number_text(dt, "--dt")
         max_nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
         max_modes = None if max_modes is None else whole_number(max_modes, 1, LONG_MAX, "--max-modes")
-        core = self._core.simulate(steps, dt_text, arith, bool(compare), bool(uniqueness), max_nodes, max_modes,
-                                   seconds(time_limit), "" if certificates is None else os.fspath(certificates),
-                                   "" if svg is None else os.fspath(svg))
-        run = Simulation(core)
-        if run.status != "unknown":
-            return run
-        stopped = BudgetExceeded(f"budget exceeded: {run.reason} (covered: {run['steps_done']} steps)")
-        stopped.result = run  # type: ignore[attr-defined]  # set here, not by the extension
-        raise stopped
+        return self._core.start(steps, dt_text, arith, bool(compare), bool(uniqueness), max_nodes, max_modes,
+                                seconds(time_limit), "" if certificates is None else os.fspath(certificates),
+                                "" if svg is None else os.fspath(svg))
+
+    def simulate(self, steps: int | None = None, dt: Exact | None = None, arith: Arith = "verified",
+                 compare: bool = False, uniqueness: bool = True, max_nodes: int | None = None,
+                 max_modes: int | None = None, time_limit: float = 0, certificates: Path | None = None,
+                 svg: Path | None = None) -> Simulation:
+        """`contactcert simulate FILE [--steps N] [--dt H] ...`: the whole run, iterable step by step. A run stopped
+        by a budget or the time limit raises BudgetExceeded with the Simulation (the steps done) as its `result`."""
+        run = self._start(steps, dt, arith, compare, uniqueness, max_nodes, max_modes, time_limit, certificates, svg)
+        return _checked(Simulation(run.finish()))
+
+    def steps(self, steps: int | None = None, dt: Exact | None = None, arith: Arith = "verified",
+              uniqueness: bool = True, max_nodes: int | None = None, max_modes: int | None = None,
+              time_limit: float = 0, certificates: Path | None = None) -> Iterator[Step]:
+        """A generator of the run's Steps, each made when it is asked for (stop early by not asking; the time limit
+        counts from this call). Options as simulate's; a run stopped by a budget raises BudgetExceeded after its
+        last step."""
+        run = self._start(steps, dt, arith, False, uniqueness, max_nodes, max_modes, time_limit, certificates, None)
+
+        def generate() -> Iterator[Step]:
+            while (text := run.next()) is not None:
+                yield Step(json.loads(text))
+            _checked(Simulation(run.finish()))
+
+        return generate()
+
+
+def _checked(run: Simulation) -> Simulation:
+    """The run, unless a budget stopped it: then BudgetExceeded with the run as its `result`."""
+    if run.status != "unknown":
+        return run
+    stopped = BudgetExceeded(f"budget exceeded: {run.reason} (covered: {run['steps_done']} steps)")
+    stopped.result = run  # type: ignore[attr-defined]  # set here, not by the extension
+    raise stopped

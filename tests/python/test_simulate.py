@@ -103,3 +103,14 @@ def test_compare_reports_where_float_differs():
     assert d["float"]["status"] == "completed"
     for x in d["divergences"]:
         assert x["kind"] == "penetration" and x["pose_distance"] < 1e-9  # rounding dips into the floor, no more
+
+
+def test_generator_yields_the_cli_steps_one_at_a_time(tmp_path):
+    got = [s.to_dict() for s in cc.Motion.from_file(WALL).steps(certificates=tmp_path)]
+    want = without_seconds(cli_json("simulate", WALL, "--certificates", tmp_path))["steps"]
+    assert [{k: v for k, v in s.items() if k != "seconds"} for s in got] == want
+    # Lazy: the first step of a million-step run comes at once, and nothing more is made.
+    gen = cc.Motion.from_file(BOX).steps(steps=1000000, dt="1/1000000", uniqueness=False)
+    assert next(gen).index == 0 and next(gen).index == 1
+    with pytest.raises(ValueError, match="--steps"):
+        cc.Motion.from_file(BOX).steps(steps=0)  # checked at the call, not at the first step
