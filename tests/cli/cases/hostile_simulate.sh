@@ -34,3 +34,6 @@ check 0 '"kind":"ucp_jammed"' check "$work/sim_certs/step-3.json" --json
 check 0 '"valid":true' check "$work/sim_certs/step-0.json" --json
 check 0 'float run' simulate "$box" --steps 2 --compare
 check 0 '"divergences"' simulate "$box" --steps 2 --compare --json --uniqueness off
+# Outputs that cannot be written: named.
+check 2 'x.svg: cannot open the file for writing' simulate "$box" --steps 1 --svg "$work/no_such_dir/x.svg"
+check 2 '--certificates: a folder that can be created' simulate "$box" --steps 1 --certificates "$box"
