@@ -365,7 +365,8 @@ namespace contactcert::solvers::motion {
 namespace {
 
 TEST(BundledScene, PushedBoxTipsForFiveSteps) {
-  const MotionScene scene = read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_pushed_box.json"));
+  const MotionScene scene =
+      read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_pushed_box.json"));
   const Trajectory<Q> run = simulate<Q>(scene, exact_options());
   ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
   ASSERT_EQ(run.steps.size(), 5u);
