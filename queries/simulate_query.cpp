@@ -179,6 +179,7 @@ SimulateRun::SimulateRun(const MotionInput& input, const SimulateOptions& o)
   answer_.dt = o.dt.value_or(input.scene.dt);
   answer_.steps = o.steps.value_or(input.scene.steps);
   if (!o.certificates.empty()) create_output_dir(o.certificates, "--certificates");
+  if (!o.svg.empty()) write_text_file(o.svg, "");  // an unwritable path fails before the run, not after it
   if (answer_.arith == exact::Arith::kFloat)
     float_.emplace(input.scene, solver_);
   else
