@@ -174,9 +174,12 @@ std::string trajectory_svg(const SimulateAnswer& a) {
       << html_escape(o.name) << "</title></polygon>\n";
   }
   s << "</g>\n";
-  for (const Frame& f : frames)
-    s << "<polygon points=\"" << points(c, f.body)
-      << "\" fill=\"none\" stroke=\"steelblue\" stroke-opacity=\"0.25\"/>\n";
+  // The path: at most about 20 outlines, evenly spaced, and the last.
+  const std::size_t every = std::max<std::size_t>(1, frames.size() / 20);
+  for (std::size_t k = 0; k < frames.size(); ++k)
+    if (k % every == 0 || k + 1 == frames.size())
+      s << "<polygon points=\"" << points(c, frames[k].body)
+        << "\" fill=\"none\" stroke=\"steelblue\" stroke-opacity=\"0.3\"/>\n";
   for (std::size_t k = 0; k < frames.size(); ++k)
     draw_frame(s, c, frames[k], k, frames.size(), frame_seconds, force_scale, height);
   s << "<text x=\"" << kMargin << "\" y=\"" << height - 28 << "\" font-size=\"13\">"

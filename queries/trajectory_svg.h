@@ -1,6 +1,6 @@
 // The animated picture of `contactcert simulate --svg`: an SVG whose frames (SMIL, one per step and the final pose)
 // show the body at its pose, the finger tips, each contact (a dot coloured by its mode) and the world force on the
-// body there (an arrow), with a caption; the poses of all frames as faint outlines, so that a still picture shows
+// body there (an arrow), with a caption; about 20 poses along the run as faint outlines, so that a still picture shows
 // the path; with --compare, the float run's body as a dashed outline. Doubles: a picture, not a verdict.
 #pragma once
 
