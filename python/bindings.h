@@ -36,5 +36,7 @@ void bind_scene_queries(py::class_<Scene>& scene);
 void bind_ucp(py::module_& m);
 /// design and convert (design_bindings.cpp).
 void bind_design(py::module_& m);
+/// The classes Motion (a motion scene, with simulate) and Simulation (its answer) (simulate_bindings.cpp).
+void bind_simulate(py::module_& m);
 
 }  // namespace contactcert::python

@@ -53,6 +53,7 @@ PYBIND11_MODULE(_core, m) {
   python::bind_scene_queries(scene);
   python::bind_ucp(m);
   python::bind_design(m);
+  python::bind_simulate(m);
   // geometry::snap_planar_scene: the snapped text and the snaps as (field, original, snapped, distance^2) texts.
   m.def(
       "snap_scene",

@@ -110,11 +110,11 @@ void write_text_file(const std::string& path, const std::string& text) {
         path, "", std::string("cannot write the file (") + (errno ? std::strerror(errno) : "write error") + ")");
 }
 
-void create_output_dir(const std::string& dir) {
+void create_output_dir(const std::string& dir, const std::string& field) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
-    throw exact::InputError(dir, "--out", "a folder that can be created (" + ec.message() + ")");
+    throw exact::InputError(dir, field, "a folder that can be created (" + ec.message() + ")");
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {

@@ -34,8 +34,8 @@ exact::Vec<exact::Q> parse_number_list(const std::string& text, const std::strin
 /// Writes text to path ("-" = stdout), flushed and checked: InputError naming the file if it cannot be opened
 /// or written (a full disk). Every file a command writes goes through here.
 void write_text_file(const std::string& path, const std::string& text);
-/// Creates the folder `dir` of a command's files (and its parents); InputError naming --out otherwise.
-void create_output_dir(const std::string& dir);
+/// Creates the folder `dir` of a command's files (and its parents); InputError naming `field` otherwise.
+void create_output_dir(const std::string& dir, const std::string& field = "--out");
 /// Wall-clock seconds since t.
 double seconds_since(std::chrono::steady_clock::time_point t);
 

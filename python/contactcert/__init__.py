@@ -1,17 +1,19 @@
 """contactcert: exact answers for planar rigid bodies in frictional contact, in-process.
 
 Scene (wrench cones, strong stability, stable regions, finger pushes, insertion), design (fixture design),
-convert (a cone's other form) and Ucp (the quasistatic contact problem) run the same C++ code as the contactcert
-CLI; every result's to_dict() is the CLI's --json object for the same query. Exact numbers are fractions.Fraction (inputs: int, str or Fraction). See
+convert (a cone's other form), Ucp (the quasistatic contact problem) and Motion (quasistatic time-stepping) run the
+same C++ code as the contactcert CLI; every result's to_dict() is the CLI's --json object for the same query. Exact
+numbers are fractions.Fraction (inputs: int, str or Fraction). See
 docs/python.md. `python -m contactcert ARGS` runs the CLI itself.
 """
 
 from ._core import BudgetExceeded, __version__
 from ._design import Converted, Design, convert, design
+from ._motion import Motion, Simulation, Step
 from ._results import CheckResult, Cone, Finger, Insertion, Modes, Region, Stability, UcpResult
 from ._scene import Scene, Snap
 from ._ucp import Certificate, Ucp, check, generate_random, generate_reduction
 
 __all__ = ["BudgetExceeded", "Certificate", "CheckResult", "Cone", "Converted", "Design", "Finger", "Insertion", "Region",
            "Scene", "Snap", "Modes", "Stability", "Ucp", "UcpResult", "check", "convert", "design", "generate_random",
-           "generate_reduction"]
+           "generate_reduction", "Motion", "Simulation", "Step"]

@@ -285,113 +285,130 @@ const char* run_status_name(RunStatus s) {
 }
 
 template <class T>
-Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
+Stepper<T>::Stepper(MotionScene scene, const SimulateOptions& opts)
+    : scene_(std::move(scene)),
+      opts_(opts),
+      g_(scene_geometry<T>(scene_)),
+      H_(from_q<T>(opts.dt.value_or(scene_.dt))),
+      N_(opts.steps.value_or(scene_.steps)),
+      uopts_(opts.ucp),
+      start_(std::chrono::steady_clock::now()) {
   constexpr bool exact_path = std::is_same_v<T, Q>;
-  using clock = std::chrono::steady_clock;
-  const auto start = clock::now();
-  const SceneGeometry<T> g = scene_geometry<T>(scene);
-  const T H = from_q<T>(opts.dt.value_or(scene.dt));
-  const long N = opts.steps.value_or(scene.steps);
-  ucp::UcpOptions uopts = opts.ucp;
-  uopts.arith =
+  uopts_.arith =
       exact_path ? (opts.arith == exact::Arith::kFloat ? exact::Arith::kVerified : opts.arith) : exact::Arith::kFloat;
-
-  Trajectory<T> out;
-  Pose<T> pose;
-  T t(0);
-  std::vector<Vec2<T>> tips;
-  for (const Finger& f : scene.fingers) tips.push_back({from_q<T>(f.tip.x), from_q<T>(f.tip.y)});
-  std::vector<std::string> previous;
-  const auto finish = [&](RunStatus s, std::string why) {
-    out.status = s;
-    out.reason = std::move(why);
-  };
-  if (const std::string o = overlap(g, pose, tips); !o.empty()) finish(RunStatus::kOverlap, o + " at time 0");
-  for (long k = 0; k < N && out.status == RunStatus::kCompleted; ++k) {
-    const auto step_start = clock::now();
-    if (opts.time_limit > 0) {
-      uopts.time_limit = opts.time_limit - std::chrono::duration<double>(step_start - start).count();
-      if (uopts.time_limit <= 0) {
-        finish(RunStatus::kUnknown, "time limit after " + std::to_string(k) + " steps");
-        break;
-      }
-    }
-    StepRecord<T> r;
-    r.index = k;
-    r.time = t;
-    r.pose = r.pose_after = pose;
-    r.tips_after = tips;
-    const ContactSet<T> cs = find_contacts(g, pose, tips);
-    if (!cs.unsupported.empty() || cs.contacts.empty()) {
-      const bool none = cs.unsupported.empty();
-      finish(none ? RunStatus::kNoContact : RunStatus::kUnsupportedContact,
-             none ? "no contact holds the body (a quasistatic body needs one)" : cs.unsupported);
-      break;
-    }
-    std::vector<std::string> names;
-    for (const Contact<T>& c : cs.contacts) names.push_back(c.name);
-    r.made = minus(names, previous);
-    r.broken = minus(previous, names);
-    previous = names;
-    const StepSchedule<T> sched = step_schedule(scene, g, t, H);
-    r.cut_by = sched.cut_by;
-
-    ucp::UcpProblem problem;
-    try {
-      problem = step_problem(step_scene(g, pose, cs.contacts, sched.commands), exact_path, "step " + std::to_string(k));
-    } catch (const exact::InputError& e) {
-      finish(RunStatus::kUnsupportedContact, std::string("the step's problem was refused: ") + e.what());
-      break;
-    }
-    const ucp::UcpReport rep = ucp::solve_ucp(problem, uopts);
-    r.verdict = rep.status;
-    r.reason = rep.reason;
-    if (exact_path && opts.certificates) r.certificate = ucp::certificate_text(problem, rep);
-    if (rep.status != ucp::UcpStatus::kSolvable) {
-      for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal, {T(0), T(0)}});
-      r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
-      out.steps.push_back(r);
-      const bool jammed = rep.status == ucp::UcpStatus::kJammed;
-      finish(jammed ? RunStatus::kJammed : RunStatus::kUnknown,
-             (jammed ? "jammed at step " : "step ") + std::to_string(k) + ": " + rep.reason);
-      break;
-    }
-    const StepPhysics<T> ph = physics(problem, rep, static_cast<const T*>(nullptr));
-    r.v = ph.v;
-    r.omega = ph.omega;
-    if (exact_path && opts.uniqueness)
-      r.uniqueness = motion_uniqueness(problem, uopts.arith, opts.max_uniqueness_modes);
-    const FingerMotion<T> fm = record_contacts(cs, ph, sched, r);
-    apply_twist(cs, ph, pose, sched.H, r);
-    cut_step(g, pose, tips, cs, fm, sched.H, r);
-
-    const Pose<T> step = keep_contacts(geometry::twist_step(r.applied_v, r.applied_omega, r.h), cs, r);
-    pose = compose(step, pose);
-    for (std::size_t f = 0; f < tips.size(); ++f) {
-      if (fm.carried_slip[f])
-        tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);
-      else if (fm.free_velocity[f])
-        tips[f] = tips[f] + r.h * *fm.free_velocity[f];
-    }
-    t = t + r.h;
-    r.pose_after = pose;
-    r.tips_after = tips;
-    r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
-    out.steps.push_back(r);
-    if (const std::string o = overlap(g, pose, tips); !o.empty())
-      finish(RunStatus::kOverlap, o + " after step " + std::to_string(k));
-    else if (!r.cut_exact)
-      finish(RunStatus::kIrrationalContactTime,
-             r.cut_by + " closes at an irrational time: the run stops just before it, the gap > 0 (step " +
-                 std::to_string(k) + ")");
-  }
-  out.final_pose = pose;
-  out.final_time = t;
-  out.final_tips = tips;
-  out.seconds = std::chrono::duration<double>(clock::now() - start).count();
-  return out;
+  for (const Finger& f : scene_.fingers) out_.final_tips.push_back({from_q<T>(f.tip.x), from_q<T>(f.tip.y)});
+  if (const std::string o = overlap(g_, out_.final_pose, out_.final_tips); !o.empty())
+    finish(RunStatus::kOverlap, o + " at time 0");
 }
 
+template <class T>
+void Stepper<T>::finish(RunStatus s, std::string why) {
+  out_.status = s;
+  out_.reason = std::move(why);
+}
+
+template <class T>
+bool Stepper<T>::step() {
+  constexpr bool exact_path = std::is_same_v<T, Q>;
+  using clock = std::chrono::steady_clock;
+  const auto k = static_cast<long>(out_.steps.size());
+  if (out_.status != RunStatus::kCompleted || k >= N_) return false;
+  const auto step_start = clock::now();
+  const auto done = [&](bool made) {
+    out_.seconds = std::chrono::duration<double>(clock::now() - start_).count();
+    return made;
+  };
+  if (opts_.time_limit > 0) {
+    uopts_.time_limit = opts_.time_limit - std::chrono::duration<double>(step_start - start_).count();
+    if (uopts_.time_limit <= 0) {
+      finish(RunStatus::kUnknown, "time limit after " + std::to_string(k) + " steps");
+      return done(false);
+    }
+  }
+  Pose<T>& pose = out_.final_pose;
+  T& t = out_.final_time;
+  std::vector<Vec2<T>>& tips = out_.final_tips;
+  StepRecord<T> r;
+  r.index = k;
+  r.time = t;
+  r.pose = r.pose_after = pose;
+  r.tips_after = tips;
+  const ContactSet<T> cs = find_contacts(g_, pose, tips);
+  if (!cs.unsupported.empty() || cs.contacts.empty()) {
+    const bool none = cs.unsupported.empty();
+    finish(none ? RunStatus::kNoContact : RunStatus::kUnsupportedContact,
+           none ? "no contact holds the body (a quasistatic body needs one)" : cs.unsupported);
+    return done(false);
+  }
+  std::vector<std::string> names;
+  for (const Contact<T>& c : cs.contacts) names.push_back(c.name);
+  r.made = minus(names, previous_);
+  r.broken = minus(previous_, names);
+  previous_ = names;
+  const StepSchedule<T> sched = step_schedule(scene_, g_, t, H_);
+  r.cut_by = sched.cut_by;
+
+  ucp::UcpProblem problem;
+  try {
+    problem = step_problem(step_scene(g_, pose, cs.contacts, sched.commands), exact_path, "step " + std::to_string(k));
+  } catch (const exact::InputError& e) {
+    finish(RunStatus::kUnsupportedContact, std::string("the step's problem was refused: ") + e.what());
+    return done(false);
+  }
+  const ucp::UcpReport rep = ucp::solve_ucp(problem, uopts_);
+  r.verdict = rep.status;
+  r.reason = rep.reason;
+  if (exact_path && opts_.certificates) r.certificate = ucp::certificate_text(problem, rep);
+  if (rep.status != ucp::UcpStatus::kSolvable) {
+    for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal, {T(0), T(0)}});
+    r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
+    out_.steps.push_back(r);
+    const bool jammed = rep.status == ucp::UcpStatus::kJammed;
+    finish(jammed ? RunStatus::kJammed : RunStatus::kUnknown,
+           (jammed ? "jammed at step " : "step ") + std::to_string(k) + ": " + rep.reason);
+    return done(true);
+  }
+  const StepPhysics<T> ph = physics(problem, rep, static_cast<const T*>(nullptr));
+  r.v = ph.v;
+  r.omega = ph.omega;
+  if (exact_path && opts_.uniqueness)
+    r.uniqueness = motion_uniqueness(problem, uopts_.arith, opts_.max_uniqueness_modes);
+  const FingerMotion<T> fm = record_contacts(cs, ph, sched, r);
+  apply_twist(cs, ph, pose, sched.H, r);
+  cut_step(g_, pose, tips, cs, fm, sched.H, r);
+
+  const Pose<T> step = keep_contacts(geometry::twist_step(r.applied_v, r.applied_omega, r.h), cs, r);
+  pose = compose(step, pose);
+  for (std::size_t f = 0; f < tips.size(); ++f) {
+    if (fm.carried_slip[f])
+      tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);
+    else if (fm.free_velocity[f])
+      tips[f] = tips[f] + r.h * *fm.free_velocity[f];
+  }
+  t = t + r.h;
+  r.pose_after = pose;
+  r.tips_after = tips;
+  r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
+  out_.steps.push_back(r);
+  if (const std::string o = overlap(g_, pose, tips); !o.empty())
+    finish(RunStatus::kOverlap, o + " after step " + std::to_string(k));
+  else if (!r.cut_exact)
+    finish(RunStatus::kIrrationalContactTime,
+           r.cut_by + " closes at an irrational time: the run stops just before it, the gap > 0 (step " +
+               std::to_string(k) + ")");
+  return done(true);
+}
+
+template <class T>
+Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts) {
+  Stepper<T> s(scene, opts);
+  while (s.step()) {
+  }
+  return s.take();
+}
+
+template class Stepper<Q>;
+template class Stepper<double>;
 template Trajectory<Q> simulate<Q>(const MotionScene&, const SimulateOptions&);
 template Trajectory<double> simulate<double>(const MotionScene&, const SimulateOptions&);
 

@@ -4,6 +4,7 @@
 // contact that closes during the step. One algorithm over T: Q (exact and verified paths) or double (float path).
 #pragma once
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,7 +42,7 @@ struct SimulateOptions {
   /// Seconds of wall clock for the whole run (0 = none): then `unknown`, with the steps done so far. Each step's
   /// solve gets what is left (UcpOptions::time_limit).
   double time_limit = 0;
-  ucp::UcpOptions ucp;                   ///< method, seed, budgets (its arith is set from `arith`)
+  ucp::UcpOptions ucp;  ///< method, seed, budgets (its arith is set from `arith`)
 };
 
 /// A contact of a step: its name (contacts.h), mode (s separate, r roll, + / - slide along +t / -t, t = n turned
@@ -94,11 +95,38 @@ struct Trajectory {
   double seconds = 0;
 };
 
-/// Runs the scene for N steps (or until the run ends). T = Q: the exact or verified path (opts.arith kExact or
-/// kVerified; kFloat is taken as kVerified); T = double: the float path, whatever opts.arith says.
+/// A run in progress, one step at a time (a planner may stop early): trajectory() holds the steps made and the
+/// state after them. T = Q: the exact or verified path (opts.arith kExact or kVerified; kFloat is taken as
+/// kVerified); T = double: the float path, whatever opts.arith says. The time limit counts from construction.
+template <class T>
+class Stepper {
+ public:
+  Stepper(MotionScene scene, const SimulateOptions& opts);
+  /// Makes the next step (appended to trajectory().steps); false once the run has ended (its status says how).
+  bool step();
+  const Trajectory<T>& trajectory() const { return out_; }
+  Trajectory<T> take() { return std::move(out_); }
+
+ private:
+  void finish(RunStatus s, std::string why);
+  MotionScene scene_;
+  SimulateOptions opts_;
+  SceneGeometry<T> g_;
+  T H_;
+  long N_;
+  ucp::UcpOptions uopts_;
+  std::chrono::steady_clock::time_point start_;
+  std::vector<std::string> previous_;  ///< the contacts of the last step
+  bool ended_ = false;
+  Trajectory<T> out_;  ///< final_pose, final_time, final_tips: the state now
+};
+
+/// Runs the scene for N steps (or until the run ends): a Stepper stepped to its end.
 template <class T>
 Trajectory<T> simulate(const MotionScene& scene, const SimulateOptions& opts);
 
+extern template class Stepper<Q>;
+extern template class Stepper<double>;
 extern template Trajectory<Q> simulate<Q>(const MotionScene&, const SimulateOptions&);
 extern template Trajectory<double> simulate<double>(const MotionScene&, const SimulateOptions&);
 

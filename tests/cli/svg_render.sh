@@ -35,6 +35,8 @@ run insert "$s/bt2002_fig10_pentagon_insert.json" --svg "$work/insert.svg"
 add "$work/insert.svg"
 run design "$s/bt2002_fig10_pentagon_insert.json" --candidates 12 --stable-under 0,-1,0 --top 2 --out "$work/design"
 add "$work/design/design.svg"
+run simulate "$s/motion_pushed_box.json" --compare --svg "$work/simulate.svg"
+add "$work/simulate.svg"
 run demo --out "$work/demo"
 add "$work/demo/index.html"
 page=$work/pictures.xhtml

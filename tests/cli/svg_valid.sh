@@ -36,6 +36,8 @@ for spec in section4_disk:na fig4a_lla:lla fig4b_nnn:nnn fig4c_peg_lra:lra fig4d
   run cone "$s/bt2002_${spec%%:*}.json" --mode "${spec##*:}" --svg "$work/cone_${spec%%:*}.svg"
   lint "$work/cone_${spec%%:*}.svg"
 done
+run simulate "$s/motion_block_wall.json" --compare --svg "$work/simulate.svg"
+lint "$work/simulate.svg"
 # Labels of a cone picture: inside the canvas once the drawing's translate() is applied, no two at one spot.
 labels_ok() {
   awk -v file="$1" '

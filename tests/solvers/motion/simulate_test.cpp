@@ -280,39 +280,6 @@ TEST(FloatDrift, NearThresholdPush) {
   }
 }
 
-/// Steps per second on the pushed box (not a pass/fail test: run with --gtest_also_run_disabled_tests).
-TEST(PushedBox, DISABLED_StepsPerSecond) {
-  for (const char* h : {"1/2", "3/2"}) {
-    const MotionScene scene = pushed_box(h, "", "1/200", 100);
-    for (bool extras : {false, true}) {
-      SimulateOptions o;
-      o.uniqueness = o.certificates = extras;
-      o.arith = exact::Arith::kExact;
-      const Trajectory<Q> e = simulate<Q>(scene, o);
-      o.arith = exact::Arith::kVerified;
-      const Trajectory<Q> v = simulate<Q>(scene, o);
-      o.arith = exact::Arith::kFloat;
-      const Trajectory<double> f = simulate<double>(scene, o);
-      std::cout << "h = " << h << (extras ? " with uniqueness and certificates" : " bare") << ": exact "
-                << double(e.steps.size()) / e.seconds << " steps/s, verified " << double(v.steps.size()) / v.seconds
-                << ", float " << double(f.steps.size()) / f.seconds << " (" << e.steps.size() << ", " << v.steps.size()
-                << ", " << f.steps.size() << " steps; " << run_status_name(e.status) << ": " << e.reason
-                << "; float: " << run_status_name(f.status) << ")\n";
-      std::cout << "  last pose: cos theta has " << mpz_sizeinbase(e.final_pose.c.get_den_mpz_t(), 2)
-                << " bits of denominator\n";
-    }
-  }
-  // 1000 steps, verified, with every step's certificate, no uniqueness: the tipping box (H = 1/20000, until the
-  // finger nears the rear corner) and the sliding one.
-  for (const char* h : {"3/2", "1/2"}) {
-    SimulateOptions o;
-    o.uniqueness = false;
-    const Trajectory<Q> v = simulate<Q>(pushed_box(h, "", "1/20000", 1000), o);
-    std::cout << "h = " << h << ", 1000 steps verified with certificates: " << v.seconds << " s (" << v.steps.size()
-              << " steps, " << run_status_name(v.status) << ")\n";
-  }
-}
-
 TEST(MotionScene, BadInputNamesTheField) {
   const auto read = [](const std::string& obstacles, const std::string& schedule) {
     const std::string text = R"({"kind": "quasistatic_scene",
@@ -398,7 +365,8 @@ namespace contactcert::solvers::motion {
 namespace {
 
 TEST(BundledScene, PushedBoxTipsForFiveSteps) {
-  const MotionScene scene = read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_pushed_box.json"));
+  const MotionScene scene =
+      read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_pushed_box.json"));
   const Trajectory<Q> run = simulate<Q>(scene, exact_options());
   ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
   ASSERT_EQ(run.steps.size(), 5u);

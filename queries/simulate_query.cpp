@@ -1,0 +1,275 @@
+#include "queries/simulate_query.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "exact/input_error.h"
+#include "exact/json_input.h"
+#include "exact/rational_text.h"
+#include "queries/trajectory_svg.h"
+
+namespace contactcert::queries {
+namespace {
+
+namespace motion = solvers::motion;
+using exact::Q;
+using geometry::Pose;
+using geometry::Vec2;
+
+// Exact strings (ex) and float views (ap) of the trajectory's numbers.
+json ex(const Q& x) { return exact::to_string(x); }
+double ap(const Q& x) { return x.get_d(); }
+double ap(double x) { return x; }
+template <class T>
+json ex(const Vec2<T>& p) {
+  return json::array({ex(p.x), ex(p.y)});
+}
+template <class T>
+json ap(const Vec2<T>& p) {
+  return json::array({ap(p.x), ap(p.y)});
+}
+template <class V>
+json ex(const std::vector<V>& v) {
+  json out = json::array();
+  for (const V& x : v) out.push_back(ex(x));
+  return out;
+}
+template <class V>
+json ap(const std::vector<V>& v) {
+  json out = json::array();
+  for (const V& x : v) out.push_back(ap(x));
+  return out;
+}
+
+/// j[key]: the exact value (exact paths only), j[key_approx]: its float view.
+template <class T, class V>
+void put(json& j, const std::string& key, const V& value) {
+  if constexpr (std::is_same_v<T, Q>) j[key] = ex(value);
+  j[key + "_approx"] = ap(value);
+}
+
+/// world = R body + t, R = [[c, -s], [s, c]], and the angle it turns (a float view).
+template <class T>
+json pose_json(const Pose<T>& p) {
+  json j;
+  put<T>(j, "R", std::vector<Vec2<T>>{{p.c, T(-p.s)}, {p.s, p.c}});
+  put<T>(j, "t", p.t);
+  j["angle_approx"] = std::atan2(ap(p.s), ap(p.c));
+  return j;
+}
+
+json uniqueness_json(const motion::MotionUniqueness& u) {
+  json motions = json::array();
+  for (const exact::Vec<Q>& m : u.motions) motions.push_back(exact_json(m));
+  return {{"status", motion::uniqueness_name(u.status)}, {"motions", motions},       {"modes", u.modes},
+          {"solution_modes", u.solution_modes},          {"unbounded", u.unbounded}, {"lps", u.lps}};
+}
+
+template <class T>
+json step_json(const motion::StepRecord<T>& s, const std::string& certificate) {
+  json j;
+  j["index"] = s.index;
+  put<T>(j, "time", s.time);
+  put<T>(j, "h", s.h);
+  j["cut_by"] = s.cut_by.empty() ? json(nullptr) : json(s.cut_by);
+  j["cut_exact"] = s.cut_exact;
+  j["pose"] = pose_json(s.pose);
+  j["verdict"] = solvers::ucp::status_name(s.verdict);
+  j["reason"] = s.reason;
+  put<T>(j, "q_dot", std::vector<T>{s.v.x, s.v.y, s.omega});
+  put<T>(j, "applied_q_dot", std::vector<T>{s.applied_v.x, s.applied_v.y, s.applied_omega});
+  json contacts = json::array();
+  for (const motion::ContactRecord<T>& c : s.contacts) {
+    json cj{{"name", c.name}, {"mode", std::string(1, c.mode)}};
+    put<T>(cj, "point", c.point);
+    put<T>(cj, "normal", c.normal);
+    put<T>(cj, "force", c.force);
+    contacts.push_back(cj);
+  }
+  j["contacts"] = contacts;
+  j["events"] = {{"made", s.made}, {"broken", s.broken}};
+  if (s.uniqueness) j["uniqueness"] = uniqueness_json(*s.uniqueness);
+  j["pose_after"] = pose_json(s.pose_after);
+  put<T>(j, "fingers_after", s.tips_after);
+  if (!certificate.empty()) j["certificate"] = certificate;
+  j["seconds"] = s.seconds;
+  return j;
+}
+
+template <class T>
+json final_json(const motion::Trajectory<T>& r) {
+  json j;
+  put<T>(j, "time", r.final_time);
+  j["pose"] = pose_json(r.final_pose);
+  put<T>(j, "fingers", r.final_tips);
+  return j;
+}
+
+template <class T>
+void put_run(json& j, const motion::Trajectory<T>& r, const std::vector<std::string>& certificates) {
+  json steps = json::array();
+  for (std::size_t k = 0; k < r.steps.size(); ++k)
+    steps.push_back(step_json(r.steps[k], k < certificates.size() ? certificates[k] : ""));
+  j["steps"] = steps;
+  j["final"] = final_json(r);
+}
+
+json divergence_json(const motion::Divergence& d) {
+  return {{"kind", d.kind},
+          {"step", d.step},
+          {"what", d.what},
+          {"pose_distance", d.pose_distance},
+          {"time_exact", d.time_exact},
+          {"time_float", d.time_float}};
+}
+
+/// The solver's options from the query's (checked here: the front ends parse, the query refuses).
+motion::SimulateOptions solver_options(const SimulateOptions& o, exact::Arith arith) {
+  if (o.steps && (*o.steps < 1 || *o.steps > 1000000))
+    throw exact::InputError("command line", "--steps", "a step count from 1 to 1000000");
+  if (o.dt && sgn(*o.dt) <= 0) throw exact::InputError("command line", "--dt", "a step size > 0");
+  if (o.max_modes < 1) throw exact::InputError("command line", "--max-modes", "a budget >= 1");
+  if (o.max_nodes < 1) throw exact::InputError("command line", "--max-nodes", "a budget >= 1");
+  if (!(o.common.time_limit >= 0 && o.common.time_limit <= kMaxTimeLimit))
+    throw exact::InputError("command line", "--time-limit", "a number of seconds from 0 to 1e7");
+  if (arith == exact::Arith::kFloat && !o.certificates.empty())
+    throw exact::InputError("command line", "--certificates", "a certificate needs --arith exact or verified");
+  if (arith == exact::Arith::kFloat && o.compare)
+    throw exact::InputError("command line", "--compare",
+                            "the float run beside an exact one: --arith exact or verified");
+  motion::SimulateOptions so;
+  so.arith = arith;
+  so.steps = o.steps;
+  so.dt = o.dt;
+  so.uniqueness = o.uniqueness;
+  so.max_uniqueness_modes = o.max_modes;
+  so.certificates = !o.certificates.empty();
+  so.time_limit = o.common.time_limit;
+  so.ucp.max_nodes = o.max_nodes;
+  return so;
+}
+
+}  // namespace
+
+MotionInput parse_motion(const std::string& text, const std::string& name) {
+  const exact::JsonInput root = exact::JsonInput::parse(text, name);
+  if (!motion::is_motion_scene(root))
+    throw exact::InputError(name, "$.motion",
+                            "a motion scene (\"kind\": \"quasistatic_scene\" with \"motion\": {\"dt\", \"steps\"}, "
+                            "docs/formats.md section 2)");
+  return {name, text, motion::read_motion_scene(root)};
+}
+
+MotionInput load_motion(const std::string& path) { return parse_motion(exact::JsonInput::read_text(path), path); }
+
+Q parse_dt(const std::string& text, const std::string& field) {
+  Q h;
+  if (!exact::parse_rational_into(text, h) || sgn(h) <= 0)
+    throw exact::InputError("command line", field,
+                            "a step size > 0 written exactly (\"1/10\", \"0.1\"), got " + exact::quoted_excerpt(text));
+  return h;
+}
+
+SimulateRun::SimulateRun(const MotionInput& input, const SimulateOptions& o)
+    : options_(o), start_(std::chrono::steady_clock::now()) {
+  answer_.file = input.name;
+  answer_.scene = input.scene;
+  answer_.arith = scene_arith(o.common.arith);
+  solver_ = solver_options(o, answer_.arith);
+  answer_.dt = o.dt.value_or(input.scene.dt);
+  answer_.steps = o.steps.value_or(input.scene.steps);
+  if (!o.certificates.empty()) create_output_dir(o.certificates, "--certificates");
+  if (!o.svg.empty()) write_text_file(o.svg, "");  // an unwritable path fails before the run, not after it
+  if (answer_.arith == exact::Arith::kFloat)
+    float_.emplace(input.scene, solver_);
+  else
+    exact_.emplace(input.scene, solver_);
+}
+
+bool SimulateRun::advance() {
+  if (finished_) return false;
+  if (!exact_) return float_->step();
+  if (!exact_->step()) return false;
+  const motion::StepRecord<Q>& s = exact_->trajectory().steps.back();
+  if (options_.certificates.empty() || s.certificate.empty()) {
+    answer_.certificates.emplace_back();
+  } else {
+    answer_.certificates.push_back(options_.certificates + "/step-" + std::to_string(s.index) + ".json");
+    write_text_file(answer_.certificates.back(), s.certificate);
+  }
+  return true;
+}
+
+std::optional<json> SimulateRun::next() {
+  if (!advance()) return std::nullopt;
+  if (exact_) return step_json(exact_->trajectory().steps.back(), answer_.certificates.back());
+  return step_json(float_->trajectory().steps.back(), "");
+}
+
+SimulateAnswer SimulateRun::finish() {
+  if (finished_) return answer_;
+  while (advance()) {
+  }
+  finished_ = true;
+  SimulateAnswer& a = answer_;
+  if (float_) a.float_run = float_->take();
+  if (exact_) a.exact_run = exact_->take();
+  if (exact_ && options_.compare) {
+    // The float run gets what is left of the time limit (at least a moment: then it ends `unknown` at once).
+    if (solver_.time_limit > 0) solver_.time_limit = std::max(1e-9, solver_.time_limit - seconds_since(start_));
+    a.float_run = motion::simulate<double>(a.scene, solver_);
+    a.divergences = motion::compare_runs(a.scene, *a.exact_run, *a.float_run);
+    a.compared = true;
+  }
+  if (!options_.svg.empty()) {
+    write_text_file(options_.svg, trajectory_svg(a));
+    a.svg = options_.svg;
+  }
+  a.seconds = seconds_since(start_);
+  return a;
+}
+
+SimulateAnswer run_simulate(const MotionInput& input, const SimulateOptions& options) {
+  return SimulateRun(input, options).finish();
+}
+
+motion::RunStatus run_status(const SimulateAnswer& a) {
+  return a.exact_run ? a.exact_run->status : a.float_run->status;
+}
+const std::string& run_reason(const SimulateAnswer& a) {
+  return a.exact_run ? a.exact_run->reason : a.float_run->reason;
+}
+std::size_t steps_done(const SimulateAnswer& a) {
+  return a.exact_run ? a.exact_run->steps.size() : a.float_run->steps.size();
+}
+bool stopped_by_budget(const SimulateAnswer& a) { return run_status(a) == motion::RunStatus::kUnknown; }
+
+json to_json(const SimulateAnswer& a) {
+  json j;
+  j["file"] = a.file;
+  j["status"] = motion::run_status_name(run_status(a));
+  j["reason"] = run_reason(a);
+  j["arith"] = exact::arith_name(a.arith);
+  put<Q>(j, "dt", a.dt);
+  j["steps_asked"] = a.steps;
+  j["steps_done"] = steps_done(a);
+  if (a.exact_run)
+    put_run(j, *a.exact_run, a.certificates);
+  else
+    put_run(j, *a.float_run, {});
+  if (a.compared) {
+    const motion::Trajectory<double>& f = *a.float_run;
+    j["float"] = {{"status", motion::run_status_name(f.status)},
+                  {"reason", f.reason},
+                  {"steps_done", f.steps.size()},
+                  {"final", final_json(f)}};
+    json d = json::array();
+    for (const motion::Divergence& x : a.divergences) d.push_back(divergence_json(x));
+    j["divergences"] = d;
+  }
+  if (!a.svg.empty()) j["svg"] = a.svg;
+  j["seconds"] = a.seconds;
+  return j;
+}
+
+}  // namespace contactcert::queries
