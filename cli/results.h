@@ -2,7 +2,6 @@
 // (python/) returns the same objects from the same code.
 #pragma once
 
-#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -17,8 +16,6 @@
 #include "solvers/stability/margin.h"
 #include "solvers/stability/stable_region.h"
 #include "solvers/stability/strong_stability.h"
-#include "solvers/ucp/problem.h"
-#include "solvers/ucp/solve.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 
 namespace contactcert::cli {
@@ -71,17 +68,5 @@ json insertion_json(const geometry::PlanarScene& scene, const solvers::Insertion
 std::vector<exact::Q> sweep_mus(const std::string& text);
 json sweep_entry_json(const geometry::PlanarScene& scene, const exact::Q& mu);
 std::string insertion_svg(const geometry::PlanarScene& scene, const solvers::BoundaryPieces<exact::Q, bool>& pushes);
-
-// ucp.cpp: `ucp --generate random|reduction` and the report (`certificate`: the file it was written to, or empty).
-solvers::ucp::UcpProblem generated_problem(const std::string& kind, std::uint64_t seed, int nc,
-                                           const std::string& mu_max, int abar, int rows, int cols, bool planted);
-json ucp_json(const solvers::ucp::UcpReport& r, const std::string& certificate);
-/// Refuses (InputError) a budget that `method` would ignore: --max-nodes budgets only the complete search's tree,
-/// --max-bases only Step 3 (every method but enumerate).
-void refuse_ignored_budgets(const std::string& method, bool max_nodes_given, bool max_bases_given);
-
-// check.cpp: `check` of a parsed certificate; with `problem` (a problem or scene file), INVALID unless the
-// certificate is about that problem (`check --problem`).
-json check_json(const exact::JsonInput& certificate, const exact::JsonInput* problem = nullptr);
 
 }  // namespace contactcert::cli

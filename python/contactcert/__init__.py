@@ -8,8 +8,9 @@ docs/python.md. `python -m contactcert ARGS` runs the CLI itself.
 
 from ._core import BudgetExceeded, __version__
 from ._results import CheckResult, Cone, Finger, Insertion, Modes, Region, Stability, UcpResult
+from ._certificate import Certificate, check
 from ._scene import Scene, Snap
-from ._ucp import Certificate, Ucp, check, generate_random, generate_reduction
+from ._ucp import Ucp, generate_random, generate_reduction
 
 __all__ = ["BudgetExceeded", "Certificate", "CheckResult", "Cone", "Finger", "Insertion", "Region", "Scene", "Snap",
            "Modes", "Stability", "Ucp", "UcpResult", "check", "generate_random", "generate_reduction"]

@@ -6,22 +6,14 @@ import json
 import os
 from collections.abc import Iterable
 from fractions import Fraction
-from typing import Any, Literal, Union, get_args
+from typing import Any, Literal, Union
 
 from . import _core
+from ._certificate import Certificate
 from ._numbers import Exact, ExactVector, vector_text
+from ._options import ARITHS, Arith, choice
 from ._results import Cone, Finger, Insertion, Modes, Region, Stability
 from ._source import FromSource, Path
-
-Arith = Literal["exact", "float", "verified", "adaptive"]
-ARITHS: tuple[str, ...] = get_args(Arith)
-
-
-def choice(value: str, allowed: tuple[str, ...], option: str) -> str:
-    """`value` if it is one of `allowed`, else ValueError naming the CLI option."""
-    if value not in allowed:
-        raise ValueError(f"{option}: {value!r} not in {{{', '.join(allowed)}}}")
-    return value
 
 
 def _computed_float(value: Any, path: str) -> tuple[str, float] | None:
@@ -120,6 +112,10 @@ class Scene(FromSource[_core.Scene]):
     def to_dict(self) -> dict[str, Any]:
         return json.loads(self._core.text)
 
+    def _problem_source(self) -> tuple[str, str]:
+        """The text it was read from and its name (check's problem)."""
+        return self._core.text, self.name
+
     def cone(self, mode: str, route: Literal["paper", "project"] = "paper", arith: Arith = "verified") -> Cone:
         """`contactcert cone FILE --mode MODE`: the wrench cone of an augmented contact mode (Table 2 letters)."""
         choice(route, ("paper", "project"), "--route")
@@ -132,8 +128,6 @@ class Scene(FromSource[_core.Scene]):
                   certificate: Path | None = None) -> Stability:
         """`contactcert stability FILE --wrench fx,fy,tz [--margin] [--certificate PATH]`: strongly stable,
         weakly stable or unstable; `certificate` is the file the evidence is written to."""
-        from ._ucp import Certificate
-
         choice(arith, ARITHS, "--arith")
         path = os.fspath(certificate) if certificate is not None else ""
         data, text = self._core.stability(vector_text(wrench, "--wrench"), arith, bool(margin), path)
