@@ -12,7 +12,6 @@
 #include <sstream>
 
 #include "cli/command.h"
-#include "cli/results.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"

@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "queries/scene_input.h"
-#include "solvers/ucp/problem.h"
+#include "queries/ucp_query.h"
 
 namespace contactcert::python {
 
@@ -22,11 +22,8 @@ using WithCertificate = std::pair<std::string, std::string>;
 /// A planar scene with its text (a stability certificate embeds it) and the name its messages use.
 using Scene = queries::SceneInput;
 
-/// A quasistatic (or plain UCP) problem file, with the name its messages use.
-struct Ucp {
-  std::string name;
-  solvers::ucp::UcpProblem problem;
-};
+/// A quasistatic (or plain UCP) problem with its text and the name its messages use.
+using Ucp = queries::UcpInput;
 
 /// Scene.stability, .region, .region_svg, .finger, .finger_svg and the class Oracle (stability_bindings.cpp).
 void bind_stability(py::module_& m, py::class_<Scene>& scene);

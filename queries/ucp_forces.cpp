@@ -1,30 +1,11 @@
 #include "queries/ucp_forces.h"
 
-#include <optional>
-
 #include "queries/contact_forces.h"
-#include "solvers/ucp/scene_builder.h"
 
 namespace contactcert::queries {
 
 using exact::Q;
 using exact::Vec;
-
-UcpFile load_ucp_file(const std::string& path, solvers::ucp::UcpPhases* phases) {
-  double parse = 0;
-  std::optional<exact::JsonInput> in;
-  {
-    const solvers::ucp::PhaseTimer t(parse);
-    in = exact::JsonInput::load(path);
-  }
-  UcpFile out{solvers::ucp::read_ucp_problem(*in, phases), {}};
-  {
-    const solvers::ucp::PhaseTimer t(parse);
-    if (in->at("kind").string() == "quasistatic_scene") out.frames = solvers::ucp::quasistatic_scene_frames(*in);
-  }
-  if (phases) phases->parse += parse;
-  return out;
-}
 
 std::vector<solvers::WorldForce<Q>> scene_world_forces(const std::vector<geometry::ContactFrame>& frames,
                                                        const Vec<Q>& c_n, const Vec<Q>& c_t) {

@@ -11,19 +11,8 @@
 #include "geometry/contact_frame.h"
 #include "queries/json_out.h"
 #include "solvers/stability/world_forces.h"
-#include "solvers/ucp/problem.h"
 
 namespace contactcert::queries {
-
-/// A `ucp` problem file as read: the problem and, for a quasistatic_scene, its contact frames (else empty).
-struct UcpFile {
-  solvers::ucp::UcpProblem problem;
-  std::vector<geometry::ContactFrame> frames;
-};
-
-/// Reads a problem file (solvers::ucp::load_ucp_problem) and the frames of a quasistatic_scene; the file's JSON
-/// parse and the frames count as parse in `phases`. Throws exact::InputError naming the field.
-UcpFile load_ucp_file(const std::string& path, solvers::ucp::UcpPhases* phases);
 
 /// Per contact i (its index in `fixel`): r_i, n_i, t_i, c_n, c_t, f_i = c_n n_i + c_t t_i, torque r_i x f_i.
 std::vector<solvers::WorldForce<exact::Q>> scene_world_forces(const std::vector<geometry::ContactFrame>& frames,

@@ -11,14 +11,12 @@ from typing import TYPE_CHECKING, Any, Literal
 
 from . import _core
 from ._numbers import Exact, ExactVector, number_text, vector_text
-from ._options import LONG_MAX, seconds, whole_number
+from ._options import LONG_MAX, Arith, seconds, whole_number
 from ._results import Result
 from ._source import Path
 
 if TYPE_CHECKING:
     from ._scene import Scene
-
-Arith = Literal["exact", "float", "verified", "adaptive"]
 
 
 class Design(Result):

@@ -14,7 +14,7 @@ from ._numbers import exact, floats
 if TYPE_CHECKING:
     from numpy.typing import NDArray
 
-    from ._ucp import Certificate
+    from ._certificate import Certificate
 
 Vector = tuple[Fraction, ...]
 Directions = tuple[tuple[int, ...], ...]
@@ -247,14 +247,19 @@ class UcpResult(Result):
     def physical(self) -> dict[str, Vector] | None:
         """c_n, c_t, v_n, v_t, q_dot, theta_dot, tau as Fractions, or None."""
         p = self._data.get("physical")
-        return {k: exact(v) for k, v in p.items() if isinstance(v, list)} if p else None
+        return {k: exact(v) for k, v in p.items() if isinstance(v, list) and k != "contacts"} if p else None
 
     def __repr__(self) -> str:
         return f"UcpResult({self.status}, {self._data['reason']!r}, method {self._data['method']})"
 
 
 class CheckResult(Result):
-    """`contactcert check`'s answer: is the certificate valid, and why."""
+    """`contactcert check`'s answer: is the certificate valid, and why; `text` the readable lines of its evidence
+    (the world forces of a witness), as the CLI prints them under a VALID verdict."""
+
+    def __init__(self, data: dict[str, Any], text: str = "") -> None:
+        super().__init__(data)
+        self.text = text
 
     valid = _field("valid")
     kind = _field("kind")

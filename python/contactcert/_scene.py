@@ -6,23 +6,14 @@ import json
 import os
 from collections.abc import Iterable
 from fractions import Fraction
-from typing import Any, Literal, Union, get_args
+from typing import Any, Literal, Union
 
 from . import _core
+from ._certificate import Certificate
 from ._numbers import Exact, ExactVector, vector_text
-from ._options import LONG_MAX, seconds, whole_number
+from ._options import ARITHS, LONG_MAX, Arith, choice, seconds, whole_number
 from ._results import Cone, Finger, Insertion, Modes, Region, Stability
 from ._source import FromSource, Path
-
-Arith = Literal["exact", "float", "verified", "adaptive"]
-ARITHS: tuple[str, ...] = get_args(Arith)
-
-
-def choice(value: str, allowed: tuple[str, ...], option: str) -> str:
-    """`value` if it is one of `allowed`, else ValueError naming the CLI option."""
-    if value not in allowed:
-        raise ValueError(f"{option}: {value!r} not in {{{', '.join(allowed)}}}")
-    return value
 
 
 def _computed_float(value: Any, path: str) -> tuple[str, float] | None:
@@ -121,6 +112,10 @@ class Scene(FromSource[_core.Scene]):
     def to_dict(self) -> dict[str, Any]:
         return json.loads(self._core.text)
 
+    def _problem_source(self) -> tuple[str, str]:
+        """The text it was read from and its name (check's problem)."""
+        return self._core.text, self.name
+
     def cone(self, mode: str, route: Literal["paper", "project"] = "paper", arith: Arith = "verified",
              table2: Literal["strict", "printed"] = "strict", certificate: Path | None = None,
              time_limit: float = 0) -> Cone:
@@ -131,7 +126,7 @@ class Scene(FromSource[_core.Scene]):
         choice(arith, ARITHS, "--arith")
         choice(table2, ("strict", "printed"), "--table2")
         path = "" if certificate is None else os.fspath(certificate)
-        from ._ucp import Certificate
+        from ._certificate import Certificate
 
         data, text = self._core.cone(mode, route, arith, table2, path, seconds(time_limit))
         svg = None if arith == "float" else (lambda: self._core.cone_svg(mode, route, table2))
@@ -142,7 +137,7 @@ class Scene(FromSource[_core.Scene]):
         """`contactcert stability FILE --wrench fx,fy,tz [--margin] [--certificate PATH] [--time-limit S]`:
         strongly stable, weakly stable or unstable; `certificate` is the file the evidence is written to. Past
         `time_limit` seconds (0 = none; the verdict and the margin together) raises BudgetExceeded."""
-        from ._ucp import Certificate
+        from ._certificate import Certificate
 
         choice(arith, ARITHS, "--arith")
         time_limit = seconds(time_limit)
@@ -174,7 +169,7 @@ class Scene(FromSource[_core.Scene]):
         choice(arith, ARITHS, "--arith")
         nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
         count = None if max_modes is None else whole_number(max_modes, 1, LONG_MAX, "--max-modes")
-        from ._ucp import Certificate
+        from ._certificate import Certificate
 
         path = "" if certificate is None else os.fspath(certificate)
         data, text = self._core.modes(bool(kinematic), table2, bool(unions), arith, path, nodes, count,

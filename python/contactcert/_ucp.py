@@ -1,45 +1,20 @@
-"""The quasistatic contact problem (Pang-Trinkle-Lo 1994, SPEC section 2), its generators, certificates and
-their independent check."""
+"""The quasistatic contact problem (Pang-Trinkle-Lo 1994, SPEC section 2) and its generators (certificates and
+their check: _certificate.py)."""
 
 from __future__ import annotations
 
 import json
 import os
-from typing import Any, Literal, Union
+from typing import Any, Literal
 
 from . import _core
+from ._certificate import Certificate
 from ._numbers import Exact, number_text
-from ._options import LONG_MAX, UINT64_MAX, seconds, whole_number
-from ._results import CheckResult, UcpResult
-from ._scene import ARITHS, Arith, Scene, choice
+from ._options import ARITHS, LONG_MAX, UINT64_MAX, Arith, choice, seconds, whole_number
+from ._results import UcpResult
 from ._source import FromSource, Path
 
 BudgetExceeded = _core.BudgetExceeded
-
-
-class Certificate:
-    """A certificate file's text (`contactcert check` verifies it); `path` is where it was written, if anywhere."""
-
-    def __init__(self, text: str, path: str = "") -> None:
-        self.text = text
-        self.path = path
-
-    def to_dict(self) -> dict[str, Any]:
-        return json.loads(self.text)
-
-    @property
-    def kind(self) -> str:
-        return self.to_dict()["kind"]
-
-    def save(self, path: Path) -> None:
-        with open(path, "w") as f:
-            f.write(self.text)
-
-    def check(self, problem: Scene | Ucp | None = None) -> CheckResult:
-        return check(self, problem)
-
-    def __repr__(self) -> str:
-        return f"Certificate({self.kind}{', ' + self.path if self.path else ''})"
 
 
 class Ucp(FromSource[_core.Ucp]):
@@ -77,6 +52,10 @@ class Ucp(FromSource[_core.Ucp]):
             raise e
         return result
 
+    def _problem_source(self) -> tuple[str, str]:
+        """The text it was read from and its name (check's problem)."""
+        return self._core.file_text, self._core.name
+
     def __repr__(self) -> str:
         return f"Ucp({self._core.name!r})"
 
@@ -95,38 +74,3 @@ def generate_reduction(rows: int = 2, cols: int = 6, planted: bool = False, seed
     rows = whole_number(rows, 1, 1000, "--rows")
     cols = whole_number(cols, 1, 60, "--cols")
     return Ucp(_core.generate("reduction", seed, 3, "1", 0, rows, cols, bool(planted)))
-
-
-#: What check() takes: a Certificate, its dict, its JSON text or its file's path.
-CertificateSource = Union[Certificate, dict[str, Any], str, "os.PathLike[str]"]
-
-
-def _certificate_text(certificate: CertificateSource) -> tuple[str, str]:
-    """(text, name) of a Certificate, a dict, JSON text or a file path (read as the CLI reads it: at most 32 MiB,
-    never blocking on a pipe without a writer)."""
-    if isinstance(certificate, Certificate):
-        return certificate.text, certificate.path or "<certificate>"
-    if isinstance(certificate, dict):
-        return json.dumps(certificate), "<certificate>"
-    if isinstance(certificate, str) and certificate.lstrip().startswith("{"):
-        return certificate, "<certificate>"
-    path = os.fspath(certificate)
-    return _core.read_text(path), path
-
-
-def _problem_text(problem: Scene | Ucp) -> tuple[str, str]:
-    """(text, name) of the problem a certificate must be about: a Scene's file text or a Ucp's."""
-    if isinstance(problem, Scene):
-        return problem._core.text, problem.name
-    if isinstance(problem, Ucp):
-        return problem._core.text(), problem._core.name
-    raise TypeError(f"problem: expected a Scene or a Ucp, found {type(problem).__name__}")
-
-
-def check(certificate: CertificateSource, problem: Scene | Ucp | None = None) -> CheckResult:
-    """`contactcert check`: verifies the certificate from its embedded problem alone. With `problem` (a Scene
-    or a Ucp) the certificate must also be about that problem, compared as `check --problem` compares them (the
-    exact values, whatever their spelling)."""
-    text, name = _certificate_text(certificate)
-    problem_text, problem_name = ("", "") if problem is None else _problem_text(problem)
-    return CheckResult(json.loads(_core.check(text, name, problem_text, problem_name)))

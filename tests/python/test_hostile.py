@@ -2,7 +2,6 @@
 
 import json
 import os
-import pathlib
 import subprocess
 import threading
 
@@ -196,17 +195,6 @@ def test_insertion_error_names_the_file():
     with pytest.raises(ValueError) as e:
         cc.Scene.from_file(one).insertion()
     assert str(e.value) == cli_error("insert", one)
-
-
-FORGED_WORK = pathlib.Path(os.environ.get("CONTACTCERT_FORGED_WORK",
-                                          str(pathlib.Path(CLI).parents[1] / "tests" / "cli" / "forged-work")))
-
-
-@pytest.mark.skipif(not FORGED_WORK.is_dir(), reason="the CLI's forged_certificates suite has not run in this build")
-def test_python_and_cli_check_agree_on_the_forged_suite():
-    paths = [p for p in sorted(FORGED_WORK.glob("*.json")) if p.stat().st_size < (1 << 20)]
-    for path in paths:
-        assert python_check(path) == cli_check(path), path.name
 
 
 @pytest.mark.parametrize("method,kwargs,flag", [("paper", {"max_nodes": 5}, "--max-nodes"),

@@ -1,0 +1,139 @@
+#include "queries/check.h"
+
+#include <optional>
+
+#include "exact/sha256.h"
+#include "queries/check_views.h"
+#include "solvers/design/goal_certificate.h"
+#include "solvers/stability/contact_modes.h"
+#include "solvers/stability/frame_check.h"
+#include "solvers/stability/stability_certificate.h"
+#include "solvers/ucp/certificate.h"
+#include "solvers/ucp/problem.h"
+#include "solvers/wrench_cone/cone_certificate.h"
+
+namespace contactcert::queries {
+namespace {
+
+/// The problem a certificate embeds, parsed once, on first use: after its checker ran, so that the checker's
+/// message about a malformed certificate comes first. A UCP problem is JSON inside the certificate; a scene is a
+/// JSON text (its exact spelling is what the digest covers).
+class EmbeddedProblem {
+ public:
+  EmbeddedProblem(const exact::JsonInput& cert, bool scene) : cert_(cert), scene_(scene) {}
+  const exact::JsonInput& get() {
+    if (!parsed_)
+      parsed_ = scene_ ? exact::JsonInput::parse(cert_.at("scene").string(), cert_.file() + " (embedded scene)")
+                       : cert_.at("problem");
+    return *parsed_;
+  }
+
+ private:
+  const exact::JsonInput& cert_;
+  bool scene_;
+  std::optional<exact::JsonInput> parsed_;
+};
+
+void check_ucp(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
+  const solvers::ucp::CertificateCheck u = solvers::ucp::check_ucp_certificate(cert);
+  c.verdict = u.verdict == solvers::ucp::CertificateVerdict::kValid ? CheckVerdict::kValid : CheckVerdict::kInvalid;
+  c.reason = u.reason;
+  if (c.kind == "ucp_jammed") c.details = {{"nodes", u.nodes}, {"leaves", u.leaves}};
+}
+
+/// The verdict of a checker whose answer is {valid, reason}.
+template <class Answer>
+void take(const Answer& a, CheckResult& c) {
+  c.verdict = a.valid ? CheckVerdict::kValid : CheckVerdict::kInvalid;
+  c.reason = a.reason;
+}
+
+void check_stability(const exact::JsonInput& cert, EmbeddedProblem& scene, CheckResult& c) {
+  take(solvers::check_stability_certificate(cert), c);
+  if (c.valid()) stability_view(cert, scene.get(), c);
+}
+
+void check_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
+  const solvers::ModesCertificateCheck m = solvers::check_modes_certificate(cert);
+  take(m, c);
+  c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
+}
+
+void check_cone(const exact::JsonInput& cert, EmbeddedProblem& scene, CheckResult& c) {
+  const solvers::ConeCertificateCheck k = solvers::check_cone_certificate(cert);
+  take(k, c);
+  if (c.valid() && c.kind == "cone_nonempty") cone_view(cert, scene.get(), k.touching, k.forces, c);
+}
+
+void check_goal(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
+  take(solvers::check_goal_certificate(cert), c);
+}
+
+/// One certificate kind: whether it embeds a planar scene (else a UCP problem) and its checker, which sets the
+/// verdict, the reason and the details and, for a valid certificate, the view a person reads of its evidence (which
+/// makes it INVALID if the certificate's own readable numbers are not those of the checked evidence).
+struct CertificateKind {
+  const char* name;
+  bool embeds_scene;
+  void (*check)(const exact::JsonInput& cert, EmbeddedProblem& problem, CheckResult& c);
+};
+
+constexpr CertificateKind kKinds[] = {
+    {"ucp_jammed", false, check_ucp},    {"ucp_solvable", false, check_ucp}, {"stability", true, check_stability},
+    {"modes", true, check_modes},        {"cone_empty", true, check_cone},   {"cone_nonempty", true, check_cone},
+    {"goal_nonempty", true, check_goal},
+};
+
+const CertificateKind& certificate_kind(const exact::JsonInput& cert) {
+  const std::string kind = cert.at("kind").string();
+  std::string names;
+  for (const CertificateKind& k : kKinds) {
+    if (kind == k.name) return k;
+    names += std::string(names.empty() ? "" : &k == std::end(kKinds) - 1 ? " or " : ", ") + k.name;
+  }
+  cert.at("kind").fail("expected a certificate kind: " + names + ", found " + exact::quoted_excerpt(kind));
+}
+
+/// The canonical text of a problem file as the certificate kind reads it: a UCP problem through its reader (a
+/// quasistatic_scene with the checker's frames) and writer (so equal problems compare equal whatever their spelling),
+/// a scene as its canonical JSON.
+std::string problem_file_text(const exact::JsonInput& in, const CertificateKind& kind) {
+  if (kind.embeds_scene) return in.canonical_text();
+  const std::string text =
+      solvers::ucp::to_json_text(solvers::ucp::read_ucp_problem(in, nullptr, solvers::frame_check::checked_frame));
+  return exact::JsonInput::parse(text, in.file()).canonical_text();
+}
+
+}  // namespace
+
+CheckResult check(const exact::JsonInput& certificate, const exact::JsonInput* problem) {
+  const CertificateKind& kind = certificate_kind(certificate);
+  CheckResult c;
+  c.kind = kind.name;
+  EmbeddedProblem embedded(certificate, kind.embeds_scene);
+  kind.check(certificate, embedded, c);
+  c.digest = embedded.get().canonical_sha256();
+  if (problem != nullptr) {
+    c.problem = problem->file();
+    const std::string file_text = problem_file_text(*problem, kind);
+    if (c.valid() && file_text != embedded.get().canonical_text()) {
+      c.verdict = CheckVerdict::kInvalid;
+      c.reason = "the certificate is about another problem than " + problem->file() + " (its problem_sha256 is " +
+                 c.digest + ", the file's " + exact::sha256_hex(file_text) + ")";
+    }
+  }
+  return c;
+}
+
+json to_json(const CheckResult& c) {
+  json j;
+  j["valid"] = c.valid();
+  j["kind"] = c.kind;
+  j["reason"] = c.reason;
+  j["problem_sha256"] = c.digest;
+  if (!c.problem.empty()) j["problem"] = c.problem;
+  for (auto it = c.details.begin(); it != c.details.end(); ++it) j[it.key()] = it.value();
+  return j;
+}
+
+}  // namespace contactcert::queries
