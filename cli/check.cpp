@@ -12,6 +12,7 @@
 #include "cli/results.h"
 #include "exact/json_input.h"
 #include "exact/sha256.h"
+#include "queries/assembly_check_view.h"
 #include "queries/contact_forces.h"
 #include "solvers/design/goal_certificate.h"
 #include "solvers/stability/contact_modes.h"
@@ -40,7 +41,8 @@ struct CheckOutcome {
 
 /// Whether a certificate of this kind embeds a planar scene (else a UCP problem).
 bool embeds_scene(const std::string& kind) {
-  return kind == "stability" || kind == "modes" || kind == "goal_nonempty" || solvers::is_cone_certificate_kind(kind);
+  return kind == "stability" || kind == "modes" || kind == "goal_nonempty" || kind == "assembly_stability" ||
+         solvers::is_cone_certificate_kind(kind);
 }
 
 /// The problem a certificate embeds: a UCP problem as JSON, a scene as JSON text.
@@ -113,9 +115,16 @@ CheckOutcome check_any(const exact::JsonInput& cert) {
     out.details = {{"modes", c.modes}, {"dead_prefixes", c.dead}};
     return out;
   }
+  if (kind == "assembly_stability") {
+    const AssemblyCheckView c = assembly_check_view(cert);
+    out.valid = c.valid;
+    out.reason = c.reason;
+    out.details = c.details;
+    return out;
+  }
   cert.at("kind").fail(
-      "expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, cone_empty, cone_nonempty or "
-      "goal_nonempty, found " +
+      "expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, cone_empty, cone_nonempty, "
+      "goal_nonempty or assembly_stability, found " +
       exact::quoted_excerpt(kind));
 }
 

@@ -34,5 +34,7 @@ void bind_stability(py::module_& m, py::class_<Scene>& scene);
 void bind_scene_queries(py::class_<Scene>& scene);
 /// The class Ucp, generate and check (ucp_bindings.cpp).
 void bind_ucp(py::module_& m);
+/// The class Assembly: stability, ucp and svg (assembly_bindings.cpp).
+void bind_assembly(py::module_& m);
 
 }  // namespace contactcert::python
