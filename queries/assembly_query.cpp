@@ -93,8 +93,7 @@ std::string assembly_forces_text(const std::vector<AssemblyContactForce>& forces
 AssemblyStabilityAnswer run_assembly_stability(const AssemblyInput& in, const AssemblyStabilityOptions& options) {
   if (options.common.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith",
-                            "an assembly's stability is decided exactly (use exact or "
-                            "verified)");
+                            "an assembly's stability is decided exactly (use exact or verified)");
   const geometry::Assembly& a = in.assembly;
   AssemblyStabilityAnswer ans;
   ans.arith = scene_arith(options.common.arith);
@@ -108,15 +107,8 @@ AssemblyStabilityAnswer run_assembly_stability(const AssemblyInput& in, const As
   const sa::AssemblyStabilityResult& r = ans.result;
   if (r.has_resting) ans.resting = assembly_forces(a, r.resting_forces);
   if (r.has_moving) ans.moving = assembly_forces(a, r.moving.forces);
-  if (!options.certificate.empty() && ans.decided()) {
-    ans.certificate_text = sa::assembly_certificate(in.text, r);
-    write_text_file(options.certificate, ans.certificate_text);
-    ans.certificate = options.certificate;
-  }
-  if (!options.svg.empty()) {
-    write_text_file(options.svg, to_svg(in, ans));
-    ans.svg = options.svg;
-  }
+  if (!options.certificate.empty() && ans.decided()) ans.certificate_text = sa::assembly_certificate(in.text, r);
+  write_files(in, options, ans);
   return ans;
 }
 
@@ -161,7 +153,7 @@ std::string to_text(const AssemblyStabilityAnswer& ans, const std::string& name)
     s +=
         std::string("  at rest with contact forces (world coordinates; each acts on `to`, its opposite on `from`):\n") +
         assembly_forces_text(ans.resting, "    ");
-  else
+  else if (ans.decided())
     s += "  no contact forces in the friction cones hold every body at rest (Motzkin certificate found)\n";
   if (r.has_moving)
     s += std::string("  moves in mode '") + r.moving.mode +

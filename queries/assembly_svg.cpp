@@ -101,17 +101,17 @@ std::string assembly_svg(const geometry::Assembly& a, const std::vector<Assembly
                   "\" viewBox=\"0 0 " + fixed(width) + " " + fixed(height) +
                   "\" font-family=\"sans-serif\" font-size=\"12\">\n"
                   "<defs>\n";
-  for (const auto& [id, colour] : {std::pair{"normal", kNormal}, std::pair{"force", kForce}})
+  for (const auto& [id, colour] : {std::pair{"assembly-normal", kNormal}, std::pair{"assembly-force", kForce}})
     s += std::string("<marker id=\"") + id +
          "\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"6\" markerHeight=\"6\" orient=\"auto\">"
          "<path d=\"M0,0 L10,5 L0,10 z\" fill=\"" +
          colour + "\"/></marker>\n";
-  // The drawing is clipped to the window: an obstacle such as a long ground stays out of the title and legend.
-  s += "<clipPath id=\"window\"><rect x=\"0\" y=\"" + fixed(View::kTop) + "\" width=\"" + fixed(width) +
-       "\" height=\"" + fixed((y1 - y0) * scale) +
-       "\"/></clipPath>\n</defs>\n<rect width=\"100%\" height=\"100%\" "
-       "fill=\"white\"/>\n" +
-       text_at({8, 18}, title, "black") + "<g clip-path=\"url(#window)\">\n";
+  // The drawing is a nested svg over the window, which clips it (no id, so that pictures share a page): an
+  // obstacle such as a long ground stays out of the title and legend.
+  const std::string window_height = fixed((y1 - y0) * scale), top = fixed(View::kTop);
+  s += "</defs>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n" + text_at({8, 18}, title, "black") +
+       "<svg x=\"0\" y=\"" + top + "\" width=\"" + fixed(width) + "\" height=\"" + window_height + "\" viewBox=\"0 " +
+       top + " " + fixed(width) + " " + window_height + "\">\n";
   for (const geometry::Shape& o : a.obstacles) s += shape_svg(o, v, "fill=\"#d5d8dc\" stroke=\"#566573\"");
   for (std::size_t b = 0; b < a.bodies.size(); ++b) {
     const geometry::Body& body = a.bodies[b];
@@ -132,8 +132,8 @@ std::string assembly_svg(const geometry::Assembly& a, const std::vector<Assembly
   }
   for (std::size_t i = 0; i < a.contacts.size(); ++i) {
     const XY p = v.at(to_xy(a.contacts[i].point));
-    s += arrow(p, to_xy(a.contacts[i].normal), 24, kNormal, "normal") + "<circle cx=\"" + fixed(p.x) + "\" cy=\"" +
-         fixed(p.y) + "\" r=\"3\" fill=\"" + kNormal + "\"/>\n";
+    s += arrow(p, to_xy(a.contacts[i].normal), 24, kNormal, "assembly-normal") + "<circle cx=\"" + fixed(p.x) +
+         "\" cy=\"" + fixed(p.y) + "\" r=\"3\" fill=\"" + kNormal + "\"/>\n";
   }
   double largest = 0;
   for (const AssemblyContactForce& f : forces)
@@ -141,13 +141,13 @@ std::string assembly_svg(const geometry::Assembly& a, const std::vector<Assembly
   for (const AssemblyContactForce& f : forces) {
     const XY d = to_xy(f.force);
     const XY p = v.at(to_xy(f.point));
-    s += arrow(p, d, 70 * std::hypot(d.x, d.y) / largest, kForce, "force") +
+    s += arrow(p, d, 70 * std::hypot(d.x, d.y) / largest, kForce, "assembly-force") +
          text_at({p.x + 4, p.y + 14}, std::string("c") + std::to_string(f.contact), kForce);
   }
-  s += "</g>\n" + text_at({8, height - 8},
-                          "blue: contact normals (from `from` into `to`)" +
-                              std::string(forces.empty() ? "" : "; red: contact forces on `to` (to scale)"),
-                          "black");
+  s += "</svg>\n" + text_at({8, height - 8},
+                            "blue: contact normals (from `from` into `to`)" +
+                                std::string(forces.empty() ? "" : "; red: contact forces on `to` (to scale)"),
+                            "black");
   return s + "</svg>\n";
 }
 

@@ -20,4 +20,18 @@ std::string to_svg(const AssemblyInput& in, const AssemblyStabilityAnswer& answe
 /// The picture of a quasistatic answer: the solution's contact forces, titled with the status.
 std::string to_svg(const AssemblyInput& in, const AssemblyUcpAnswer& answer);
 
+/// Writes an answer's files where the options ask: its certificate text (when there is one) and its picture, and
+/// records their paths in the answer.
+template <class Answer, class Options>
+void write_files(const AssemblyInput& in, const Options& options, Answer& answer) {
+  if (!options.certificate.empty() && !answer.certificate_text.empty()) {
+    write_text_file(options.certificate, answer.certificate_text);
+    answer.certificate = options.certificate;
+  }
+  if (!options.svg.empty()) {
+    write_text_file(options.svg, to_svg(in, answer));
+    answer.svg = options.svg;
+  }
+}
+
 }  // namespace contactcert::queries

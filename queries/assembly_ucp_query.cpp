@@ -37,17 +37,8 @@ AssemblyUcpAnswer run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOpt
     c << c_n, c_t;
     ans.forces = assembly_forces(a, c);
   }
-  if (!options.certificate.empty()) {
-    ans.certificate_text = ucp::certificate_text(problem, ans.report);
-    if (!ans.certificate_text.empty()) {
-      write_text_file(options.certificate, ans.certificate_text);
-      ans.certificate = options.certificate;
-    }
-  }
-  if (!options.svg.empty()) {
-    write_text_file(options.svg, to_svg(in, ans));
-    ans.svg = options.svg;
-  }
+  if (!options.certificate.empty()) ans.certificate_text = ucp::certificate_text(problem, ans.report);
+  write_files(in, options, ans);
   return ans;
 }
 
