@@ -63,11 +63,15 @@ void register_assembly(CLI::App& app, Action& action) {
   sub->add_flag("--ucp", o->ucp,
                 "Solve the quasistatic problem (each body's velocity and every contact's world force) or prove it "
                 "jammed, instead of stability from rest");
-  sub->add_option(
-         "--max-nodes", o->max_nodes,
-         "Budget: prefixes of the stability walk (default 1048576), or nodes of --ucp's search (default 200000)")
+  sub->add_option("--max-nodes", o->max_nodes,
+                  std::string("Budget: prefixes of the stability walk (default ") +
+                      std::to_string(queries::AssemblyStabilityOptions{}.max_nodes) +
+                      "), or nodes of --ucp's search (default " +
+                      std::to_string(queries::AssemblyUcpOptions{}.max_nodes) + ")")
       ->check(whole_number<long>(1, std::numeric_limits<long>::max()));
-  sub->add_option("--max-bases", o->max_bases, "With --ucp: Step 3's bases per degenerate vertex (default 100000)")
+  sub->add_option("--max-bases", o->max_bases,
+                  std::string("With --ucp: Step 3's bases per degenerate vertex (default ") +
+                      std::to_string(queries::AssemblyUcpOptions{}.max_bases) + ")")
       ->check(whole_number<long>(1, std::numeric_limits<long>::max()));
   sub->add_option("--certificate", o->certificate,
                   "Write the evidence for `contactcert check` here (assembly_stability; with --ucp ucp_solvable or "

@@ -49,9 +49,9 @@ std::string assembly_forces_text(const std::vector<AssemblyContactForce>& forces
 /// `contactcert assembly FILE`: stability from rest under the bodies' loads.
 struct AssemblyStabilityOptions {
   CommonOptions common;
-  long max_nodes = 1L << 20;  ///< prefixes the walk visits at most (docs/formats.md section 3a)
-  std::string certificate;    ///< the "assembly_stability" certificate's file ("" = none)
-  std::string svg;            ///< the picture's file ("" = none)
+  long max_nodes = solvers::assembly::AssemblyStabilityOptions{}.max_nodes;  ///< prefixes the walk visits at most
+  std::string certificate;  ///< the "assembly_stability" certificate's file ("" = none)
+  std::string svg;          ///< the picture's file ("" = none)
 };
 
 struct AssemblyStabilityAnswer {
@@ -76,8 +76,8 @@ std::string to_text(const AssemblyStabilityAnswer& answer, const std::string& na
 /// `contactcert assembly FILE --ucp`: the quasistatic problem of a quasistatic_scene with bodies.
 struct AssemblyUcpOptions {
   CommonOptions common;
-  long max_nodes = 200000;  ///< the complete search's node budget (as `ucp`)
-  long max_bases = 100000;  ///< Step 3's bases per degenerate vertex (as `ucp`)
+  long max_nodes = solvers::ucp::UcpOptions{}.max_nodes;  ///< the complete search's node budget (as `ucp`)
+  long max_bases = solvers::ucp::UcpOptions{}.max_bases;  ///< Step 3's bases per degenerate vertex (as `ucp`)
   std::string certificate;  ///< the ucp_solvable / ucp_jammed certificate's file ("" = none)
   std::string svg;          ///< the picture's file, with the contact forces of a solution ("" = none)
 };
