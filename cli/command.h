@@ -45,5 +45,6 @@ void register_convert(CLI::App& app, Action& action);
 void register_bench(CLI::App& app, Action& action);
 void register_design(CLI::App& app, Action& action);
 void register_simulate(CLI::App& app, Action& action);
+void register_assembly(CLI::App& app, Action& action);
 
 }  // namespace contactcert::cli

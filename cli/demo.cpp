@@ -15,6 +15,8 @@
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "queries/assembly_query.h"
+#include "queries/assembly_svg.h"
 #include "queries/boundary_fraction.h"
 #include "queries/boundary_marks.h"
 #include "queries/boundary_text.h"
@@ -25,6 +27,7 @@
 #include "queries/line_plot.h"
 #include "queries/stability_svg.h"
 #include "runtime/scenes.h"
+#include "solvers/assembly/assembly_certificate.h"
 #include "solvers/insertion/insertion.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
@@ -239,9 +242,32 @@ void quasistatic(const DemoOptions& o, HtmlReport& rep) {
   std::cout << "  Table 1: " << t1.size() << " random problems\n";
 }
 
+/// An assembly of the scenes folder (docs/formats.md section 3a), its row and picture: a planar file's stability
+/// under the bodies' loads with a checked certificate, a quasistatic_scene's quasistatic problem.
+std::vector<std::string> assembly_row(const std::string& name, const std::string& kind, const std::string& text,
+                                      const std::string& path, HtmlReport& rep) {
+  const AssemblyInput in = parse_assembly(text, path);
+  if (kind == "quasistatic_scene") {
+    const AssemblyUcpAnswer a = run_assembly_ucp(in, {});
+    const char* status = solvers::ucp::status_name(a.report.status);
+    rep.figure(to_svg(in, a), name + (a.forces.empty() ? ": the assembly" : ": the contact forces of the solution"));
+    return {name, "assembly, quasistatic", status, a.report.reason};
+  }
+  const AssemblyStabilityAnswer a = run_assembly_stability(in, {});
+  if (!a.decided()) return {name, "assembly", "budget exhausted", a.result.covered};
+  const auto check = solvers::assembly::check_assembly_certificate(
+      exact::JsonInput::parse(solvers::assembly::assembly_certificate(text, a.result), "certificate"));
+  const char* verdict = solvers::assembly::verdict_name(a.result.verdict);
+  rep.figure(to_svg(in, a),
+             name + ": " + (a.result.has_moving ? "a moving witness's" : "the resting") + " contact forces");
+  return {name, "assembly", verdict,
+          std::string("certificate ") + (check.valid ? "valid" : "INVALID: " + check.reason)};
+}
+
 /// Every scene of the folder that is not one of the papers' examples: a planar scene gets its verdict under
 /// gravity g = (0, -1, 0) with a checked certificate, its region picture and its finger pushes; a quasistatic or
-/// UCP problem its status with the evidence. A file that cannot be read is listed with the reason.
+/// UCP problem its status with the evidence; an assembly as assembly_row says. A file that cannot be read is
+/// listed with the reason.
 void own_scenes(const DemoOptions& o, HtmlReport& rep) {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(o.scenes))
@@ -258,7 +284,9 @@ void own_scenes(const DemoOptions& o, HtmlReport& rep) {
     try {
       const std::string text = exact::JsonInput::read_text(path.string());
       const auto in = exact::JsonInput::parse(text, path.string());
-      if (in.at("kind").string() == "planar") {
+      if (geometry::is_assembly(in)) {
+        rows.push_back(assembly_row(name, in.at("kind").string(), text, path.string(), rep));
+      } else if (in.at("kind").string() == "planar") {
         const auto scene = geometry::read_planar_scene(in);
         exact::Vec<Q> g(3);
         g << 0, -1, 0;

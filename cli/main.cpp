@@ -77,6 +77,7 @@ int main(int argc, char** argv) {
   cli::register_bench(app, action);
   cli::register_design(app, action);
   cli::register_simulate(app, action);
+  cli::register_assembly(app, action);
   for (CLI::App* sub : app.get_subcommands({}))
     if (sub->get_option_no_throw("--time-limit") == nullptr)
       sub->add_option("--time-limit", cli::no_time_limit,

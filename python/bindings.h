@@ -35,5 +35,7 @@ void bind_ucp(py::module_& m);
 void bind_design(py::module_& m);
 /// The classes Motion (a motion scene, with simulate) and Simulation (its answer) (simulate_bindings.cpp).
 void bind_simulate(py::module_& m);
+/// The class Assembly: stability, ucp and svg (assembly_bindings.cpp).
+void bind_assembly(py::module_& m);
 
 }  // namespace contactcert::python

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "exact/sha256.h"
+#include "queries/assembly_check_view.h"
 #include "queries/check_views.h"
 #include "solvers/design/goal_certificate.h"
 #include "solvers/stability/contact_modes.h"
@@ -69,6 +70,12 @@ void check_goal(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) 
   take(solvers::check_goal_certificate(cert), c);
 }
 
+void check_assembly(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
+  const AssemblyCheckView a = assembly_check_view(cert);
+  take(a, c);
+  c.details = a.details;
+}
+
 /// One certificate kind: whether it embeds a planar scene (else a UCP problem) and its checker, which sets the
 /// verdict, the reason and the details and, for a valid certificate, the view a person reads of its evidence (which
 /// makes it INVALID if the certificate's own readable numbers are not those of the checked evidence).
@@ -79,9 +86,10 @@ struct CertificateKind {
 };
 
 constexpr CertificateKind kKinds[] = {
-    {"ucp_jammed", false, check_ucp},    {"ucp_solvable", false, check_ucp}, {"stability", true, check_stability},
-    {"modes", true, check_modes},        {"cone_empty", true, check_cone},   {"cone_nonempty", true, check_cone},
-    {"goal_nonempty", true, check_goal},
+    {"ucp_jammed", false, check_ucp},     {"ucp_solvable", false, check_ucp},
+    {"stability", true, check_stability}, {"modes", true, check_modes},
+    {"cone_empty", true, check_cone},     {"cone_nonempty", true, check_cone},
+    {"goal_nonempty", true, check_goal},  {"assembly_stability", true, check_assembly},
 };
 
 const CertificateKind& certificate_kind(const exact::JsonInput& cert) {

@@ -5,8 +5,10 @@ convert (a cone's other form), Ucp (the quasistatic contact problem) and Motion 
 same C++ code as the contactcert CLI; every result's to_dict() is the CLI's --json object for the same query. Exact
 numbers are fractions.Fraction (inputs: int, str or Fraction). See
 docs/python.md. `python -m contactcert ARGS` runs the CLI itself.
+Assembly (several bodies: stability from rest, the quasistatic problem) likewise runs `contactcert assembly`.
 """
 
+from ._assembly import Assembly, AssemblyStability, AssemblyUcp
 from ._core import BudgetExceeded, __version__
 from ._design import Converted, Design, convert, design
 from ._motion import Motion, Simulation, Step
@@ -18,3 +20,4 @@ from ._ucp import Ucp, generate_random, generate_reduction
 __all__ = ["BudgetExceeded", "Certificate", "CheckResult", "Cone", "Converted", "Design", "Finger", "Insertion", "Region",
            "Scene", "Snap", "Modes", "Stability", "Ucp", "UcpResult", "check", "convert", "design", "generate_random",
            "generate_reduction", "Motion", "Simulation", "Step"]
+__all__ += ["Assembly", "AssemblyStability", "AssemblyUcp"]

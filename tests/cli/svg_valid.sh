@@ -58,6 +58,10 @@ for spec in section4_disk fig4c_peg_lra fig4d_peg_nn; do
 done
 run insert "$s/bt2002_fig10_pentagon_insert.json" --svg "$work/insert.svg"
 lint "$work/insert.svg"
+run assembly "$s/assembly_pushed_box_weak.json" --svg "$work/assembly.svg"
+lint "$work/assembly.svg"
+run assembly --ucp "$s/assembly_pushed_boxes.json" --svg "$work/assembly_ucp.svg"
+lint "$work/assembly_ucp.svg"
 run demo --out "$work/demo"
 lint "$work/demo/index.html"
 grep -q 'Figure 11: pushes that seat the part' "$work/demo/index.html" || { echo "demo: no Figure 11 plot"; failures=$((failures + 1)); }

@@ -1,0 +1,86 @@
+// `contactcert assembly FILE`: the questions on an assembly of several bodies (docs/formats.md section 3a) through
+// the query layer (queries/assembly_query.h): stability from rest under the bodies' loads (strongly stable, weakly
+// stable or unstable, with a witness or a certificate), or with --ucp Pang, Trinkle and Lo's quasistatic problem for
+// N bodies. Exit 3 when a budget runs out before an answer.
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <limits>
+
+#include "cli/command.h"
+#include "cli/option_checks.h"
+#include "queries/assembly_query.h"
+
+namespace contactcert::cli {
+namespace {
+
+struct AssemblyCliOptions {
+  CommonOptions common;
+  std::string file;
+  bool ucp = false;
+  long max_nodes = 0;  ///< 0: the query's default (it differs between the questions)
+  long max_bases = 0;
+  std::string certificate, svg;
+};
+
+int run_assembly(const AssemblyCliOptions& o) {
+  const queries::AssemblyInput in = queries::load_assembly(o.file);
+  if (o.ucp) {
+    queries::AssemblyUcpOptions q;
+    q.common = o.common.query();
+    if (o.max_nodes > 0) q.max_nodes = o.max_nodes;
+    if (o.max_bases > 0) q.max_bases = o.max_bases;
+    q.certificate = o.certificate;
+    q.svg = o.svg;
+    const queries::AssemblyUcpAnswer a = queries::run_assembly_ucp(in, q);
+    std::cout << (o.common.json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, o.file));
+    return a.report.status == solvers::ucp::UcpStatus::kUnknown ? 3 : 0;
+  }
+  queries::AssemblyStabilityOptions q;
+  q.common = o.common.query();
+  if (o.max_nodes > 0) q.max_nodes = o.max_nodes;
+  q.certificate = o.certificate;
+  q.svg = o.svg;
+  const queries::AssemblyStabilityAnswer a = queries::run_assembly_stability(in, q);
+  std::cout << (o.common.json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, o.file));
+  if (a.decided()) return 0;
+  std::cerr << "contactcert: assembly: budget exceeded before a verdict (" << a.result.covered << ")"
+            << (o.certificate.empty() ? "" : "; no certificate written") << "\n";
+  return 3;
+}
+
+}  // namespace
+
+void register_assembly(CLI::App& app, Action& action) {
+  auto o = std::make_shared<AssemblyCliOptions>();
+  CLI::App* sub = app.add_subcommand("assembly",
+                                     "Several bodies: is the assembly strongly stable, weakly stable or unstable (or, "
+                                     "--ucp, its quasistatic problem)?");
+  add_common_options(*sub, o->common);
+  sub->add_option("file", o->file,
+                  "Assembly file: a planar or quasistatic_scene file with bodies (docs/formats.md, "
+                  "section 3a)")
+      ->required();
+  sub->add_flag("--ucp", o->ucp,
+                "Solve the quasistatic problem (each body's velocity and every contact's world force) or prove it "
+                "jammed, instead of stability from rest");
+  sub->add_option("--max-nodes", o->max_nodes,
+                  std::string("Budget: prefixes of the stability walk (default ") +
+                      std::to_string(queries::AssemblyStabilityOptions{}.max_nodes) +
+                      "), or nodes of --ucp's search (default " +
+                      std::to_string(queries::AssemblyUcpOptions{}.max_nodes) + ")")
+      ->check(whole_number<long>(1, std::numeric_limits<long>::max()));
+  sub->add_option("--max-bases", o->max_bases,
+                  std::string("With --ucp: Step 3's bases per degenerate vertex (default ") +
+                      std::to_string(queries::AssemblyUcpOptions{}.max_bases) + ")")
+      ->check(whole_number<long>(1, std::numeric_limits<long>::max()));
+  sub->add_option("--certificate", o->certificate,
+                  "Write the evidence for `contactcert check` here (assembly_stability; with --ucp ucp_solvable or "
+                  "ucp_jammed)");
+  sub->add_option("--svg", o->svg, "Draw the assembly with its contacts and the witness's contact forces here");
+  sub->callback([o, sub, &action] {
+    if (!o->ucp) refuse_given(*sub, {"--max-bases"}, "only --ucp has a Step 3");
+    action = [o] { return run_assembly(*o); };
+  });
+}
+
+}  // namespace contactcert::cli

@@ -1,0 +1,59 @@
+// The class Assembly (several bodies, docs/formats.md section 3a): stability from rest, the quasistatic problem and
+// the picture, through the query layer (queries/assembly_query.h) as `contactcert assembly` runs them.
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <tuple>
+
+#include "python/bindings.h"
+#include "queries/assembly_query.h"
+#include "queries/assembly_svg.h"
+
+namespace contactcert::python {
+namespace {
+
+using Assembly = queries::AssemblyInput;
+/// The --json object's text, the certificate's text ("" if none) and the picture's SVG text.
+using Answer = std::tuple<std::string, std::string, std::string>;
+
+/// `assembly FILE [--max-nodes N] [--certificate F]` (a budget not given: the query's default).
+Answer stability(const Assembly& a, const std::string& arith, double time_limit, std::optional<long> max_nodes,
+                 const std::string& certificate) {
+  queries::AssemblyStabilityOptions o;
+  o.common = {queries::parse_arith(arith, "--arith"), time_limit};
+  o.max_nodes = max_nodes.value_or(o.max_nodes);
+  o.certificate = certificate;
+  const queries::AssemblyStabilityAnswer ans = queries::run_assembly_stability(a, o);
+  return {queries::to_json(ans).dump(), ans.certificate_text, queries::to_svg(a, ans)};
+}
+
+/// `assembly FILE --ucp [--max-nodes N] [--max-bases N] [--certificate F]`.
+Answer ucp(const Assembly& a, const std::string& arith, double time_limit, std::optional<long> max_nodes,
+           std::optional<long> max_bases, const std::string& certificate) {
+  queries::AssemblyUcpOptions o;
+  o.common = {queries::parse_arith(arith, "--arith"), time_limit};
+  o.max_nodes = max_nodes.value_or(o.max_nodes);
+  o.max_bases = max_bases.value_or(o.max_bases);
+  o.certificate = certificate;
+  const queries::AssemblyUcpAnswer ans = queries::run_assembly_ucp(a, o);
+  return {queries::to_json(ans).dump(), ans.certificate_text, queries::to_svg(a, ans)};
+}
+
+}  // namespace
+
+void bind_assembly(py::module_& m) {
+  py::class_<Assembly>(m, "Assembly")
+      .def_static("load", [](const std::string& path) { return queries::load_assembly(path); })
+      .def_static("parse", &queries::parse_assembly, py::arg("text"), py::arg("name"))
+      .def_readonly("name", &Assembly::name)
+      .def_readonly("text", &Assembly::text)
+      .def_property_readonly("bodies", [](const Assembly& a) { return a.assembly.bodies.size(); })
+      .def_property_readonly("contacts", [](const Assembly& a) { return a.assembly.contacts.size(); })
+      .def("stability", &stability, Release())
+      .def("ucp", &ucp, Release())
+      .def(
+          "svg", [](const Assembly& a) { return queries::assembly_svg(a.assembly, {}, a.name); }, Release());
+}
+
+}  // namespace contactcert::python
