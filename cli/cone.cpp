@@ -10,6 +10,7 @@
 #include "exact/rational_text.h"
 #include "queries/cone_query.h"
 #include "queries/contact_forces.h"
+#include "solvers/stability/world_forces.h"
 
 namespace contactcert::cli {
 namespace {
@@ -68,7 +69,7 @@ void print_cone_exact(const std::string& file, const ConeAnswer& a) {
   for (std::size_t i = 0; i < scene.fixels.size(); ++i) {
     const auto& fx = scene.fixels[i];
     std::cout << "  fixel " << i << ": " << (fx.frame.touching() ? "touching at " : "gap, closest point ")
-              << point_text(fx.frame.point) << ", n = " << point_text(fx.frame.normal)
+              << point_text(fx.frame.point) << ", n = " << point_text(solvers::reported_normal(fx))
               << ", mu_s = " << to_string(fx.mu_s) << ", mu_k = " << to_string(fx.mu_k) << ": "
               << static_cast<char>(a.mode.letters[i]) << " (" << interaction_name(a.mode.letters[i]) << ")\n";
   }

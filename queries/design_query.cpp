@@ -11,7 +11,6 @@
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "exact/sha256.h"
-#include "geometry/scene_json.h"
 #include "queries/design_svg.h"
 #include "queries/stability_certificate_file.h"
 #include "solvers/design/checkpoint.h"
@@ -171,9 +170,7 @@ PlacementReport report_placement(const DesignProblem& problem, const solvers::Ca
   const solvers::PlacementEvidence& ev = rep.evidence;
   const std::string scene_text = solvers::placement_scene_text(
       problem, r.placement, "design placement " + std::to_string(position) + " of " + scene_name);
-  // The scene the certificates embed, as `check` reads it: their readable forces are stated against its frames.
-  const geometry::PlanarScene placement =
-      geometry::read_planar_scene(exact::JsonInput::parse(scene_text, rep.stem + ".json"));
+  const geometry::PlanarScene placement = solvers::placement_scene(problem, r.placement);
   write_text_file(rep.stem + ".json", scene_text);
   for (std::size_t w = 0; w < ev.stability.size(); ++w) {
     const exact::Vec<Q> g = problem.wrenches.rows.row(static_cast<Eigen::Index>(w)).transpose();

@@ -9,13 +9,12 @@ from typing import TYPE_CHECKING, Any
 
 from . import _core
 from ._numbers import exact
-from ._options import LONG_MAX, seconds, whole_number
+from ._options import ARITHS, LONG_MAX, Arith, choice, seconds, whole_number
 from ._results import Result, Vector
-from ._scene import ARITHS, Arith, choice
 from ._source import FromSource, Path
 
 if TYPE_CHECKING:
-    from ._ucp import Certificate
+    from ._certificate import Certificate
 
 BudgetExceeded = _core.BudgetExceeded
 
@@ -117,7 +116,7 @@ class Assembly(FromSource[_core.Assembly]):
         """`contactcert assembly FILE`: the verdict from rest with its witness; `certificate` is the file the
         evidence is written to. A budget that runs out first (max_nodes, default 2^20 prefixes, or time_limit)
         raises BudgetExceeded with the result as its `result`."""
-        from ._ucp import Certificate
+        from ._certificate import Certificate
 
         choice(arith, ARITHS, "--arith")
         time_limit = seconds(time_limit)
@@ -133,7 +132,7 @@ class Assembly(FromSource[_core.Assembly]):
             max_bases: int | None = None, certificate: Path | None = None) -> AssemblyUcp:
         """`contactcert assembly FILE --ucp`: solvable or jammed; an `unknown` status (a budget ran out) raises
         BudgetExceeded with the result as its `result`."""
-        from ._ucp import Certificate
+        from ._certificate import Certificate
 
         choice(arith, ARITHS, "--arith")
         time_limit = seconds(time_limit)

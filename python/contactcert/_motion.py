@@ -10,9 +10,8 @@ from typing import Any
 
 from . import _core
 from ._numbers import Exact, exact, number_text
-from ._options import LONG_MAX, seconds, whole_number
+from ._options import ARITHS, LONG_MAX, Arith, choice, seconds, whole_number
 from ._results import Result, Vector
-from ._scene import ARITHS, Arith, choice
 from ._source import FromSource, Path
 
 BudgetExceeded = _core.BudgetExceeded

@@ -13,7 +13,8 @@ geometry::PlanarScene placement_scene(const DesignProblem& problem, const Placem
   scene.workpiece = problem.workpiece;
   for (int i : placement) {
     const Candidate& c = problem.candidates[static_cast<std::size_t>(i)];
-    geometry::Fixel f{{c.point, c.normal, exact::Q(0)}, problem.mu_s, problem.mu_k, c.point};
+    // An explicit contact (point, normal), as placement_scene_text writes it.
+    geometry::Fixel f{{c.point, c.normal, exact::Q(0)}, problem.mu_s, problem.mu_k, std::nullopt};
     scene.fixels.push_back(f);
   }
   return scene;

@@ -3,8 +3,8 @@ the Python call and the CLI give the same object, write the same certificate byt
 same message. Planar scenes: stability under (0, -1, 0) in every arithmetic (with its margin, its certificate),
 the region, the finger pushes, modes (with its certificate), the cones of the first mode `modes` lists, insert;
 quasistatic problems and quasistatic scenes: ucp for every method and arithmetic (with its certificate); every
-certificate written: check, alone, against its own problem file and against the same problem spelled otherwise.
-Cases that differ today are marked xfail(strict=True) with the drift they show (DRIFTS)."""
+certificate written: check, alone, against its own problem file and against the same problem spelled otherwise;
+assemblies (files with `bodies`): `assembly` (stability, or `--ucp` for a quasistatic scene) against Assembly."""
 
 import json
 import subprocess
@@ -22,20 +22,14 @@ TIMINGS = ("seconds", "phases")  # a UCP report's CPU times: measured, never equ
 
 
 def kind(path):
-    return json.loads(path.read_text()).get("kind")
+    """The file's kind, "assembly" for one with several bodies."""
+    data = json.loads(path.read_text())
+    return "assembly" if "bodies" in data else data.get("kind")
 
 
 PLANAR = [p for p in FILES if kind(p) == "planar"]
 UCP = [p for p in FILES if kind(p) in ("quasistatic", "quasistatic_scene", "ucp")]
-SOLVABLE_SCENES = ("pang1994_dataset1_geometry.json", "pang1994_dataset2_geometry.json",
-                   "pang1994_dataset3_geometry.json")
-
-# (file, question) -> the drift between the Python path and the CLI that the case shows today.
-PHYSICAL_CONTACTS = ("ucp on a quasistatic_scene: the CLI adds physical.contacts (cli/ucp.cpp), Python's solve "
-                     "does not (float has no physics, so no drift)")
-DRIFTS = {(f, q): PHYSICAL_CONTACTS for f in SOLVABLE_SCENES
-          for q in ("complete-verified", "complete-exact", "complete-adaptive", "paper-verified", "modified-verified",
-                    "enumerate-exact", "certificate")}
+ASSEMBLY = [p for p in FILES if kind(p) == "assembly"]
 
 # Planar questions: name -> (the Python call on a Scene, the CLI's arguments after FILE).
 PLANAR_QUESTIONS = {
@@ -69,14 +63,8 @@ UCP_VARIANTS = ["complete-verified", "complete-exact", "complete-float", "comple
 
 
 def cases(paths, questions):
-    """pytest params (file, question), the drifting ones marked xfail(strict=True)."""
-    out = []
-    for p in paths:
-        for q in questions:
-            reason = DRIFTS.get((p.name, q))
-            marks = [pytest.mark.xfail(strict=True, reason=reason)] if reason else []
-            out.append(pytest.param(p, q, marks=marks, id=f"{p.name}-{q}"))
-    return out
+    """pytest params (file, question)."""
+    return [pytest.param(p, q, id=f"{p.name}-{q}") for p in paths for q in questions]
 
 
 def cli(*args):
@@ -240,7 +228,16 @@ def test_ucp_certificate(path, question, tmp_path):
     same_check(cert, path, cc.Ucp.from_file, tmp_path)
 
 
+@pytest.mark.parametrize("path", ASSEMBLY, ids=lambda p: p.name)
+def test_assembly(path):
+    assembly = cc.Assembly.from_file(path)
+    if json.loads(path.read_text()).get("kind") == "quasistatic_scene":
+        same_answer(assembly.ucp, ["assembly", path, "--ucp"], drop=TIMINGS)
+    else:
+        same_answer(assembly.stability, ["assembly", path])
+
+
 def test_every_bundled_file_is_covered():
     """A bundled file of a kind without questions here fails: add its questions."""
-    assert PLANAR and UCP and set(FILES) == set(PLANAR) | set(UCP), \
-        [p.name for p in set(FILES) - set(PLANAR) - set(UCP)]
+    assert PLANAR and UCP and ASSEMBLY and set(FILES) == set(PLANAR) | set(UCP) | set(ASSEMBLY), \
+        [p.name for p in set(FILES) - set(PLANAR) - set(UCP) - set(ASSEMBLY)]

@@ -20,7 +20,8 @@ def ucp_files():
     for folder in (ROOT / "scenes", ROOT / "examples"):
         for path in sorted(folder.glob("*.json")):
             data = json.loads(path.read_text())
-            if isinstance(data, dict) and data.get("kind") in ("quasistatic", "quasistatic_scene", "ucp"):
+            if isinstance(data, dict) and data.get("kind") in ("quasistatic", "quasistatic_scene", "ucp") \
+                    and "bodies" not in data:
                 found.append(path)
     return found
 

@@ -44,8 +44,9 @@ TEST(Check, UnknownKindNamesEveryKindOfTheTable) {
     check(cert);
     FAIL() << "no error";
   } catch (const exact::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, "
-                                         "cone_empty, cone_nonempty or goal_nonempty, found \"ucp_maybe\""),
+    EXPECT_NE(std::string(e.what()).find(
+                  "expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, "
+                  "cone_empty, cone_nonempty, goal_nonempty or assembly_stability, found \"ucp_maybe\""),
               std::string::npos)
         << e.what();
   }

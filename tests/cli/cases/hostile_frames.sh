@@ -34,10 +34,11 @@ L=$h/l_shape.json
 # the L: both fixels on the edge x = 0 (normal (1,0)), so g = (-2, 1, 0) slides them (ll)
 check 0 'verdict: unstable' stability "$L" --wrench=-2,1,0
 check 0 "moves in mode 'll'" stability "$L" --wrench=-2,1,0
-check 0 '"point":["0","1"],"normal":["4","0"]' stability "$L" --wrench=-2,1,0 --json
-check 0 'fixel 0: touching at (0, 1), n = (3, 0)' cone "$L" --mode ll
+# frames as written (docs/formats.md section 3): a position's frame is stated with its unit normal
+check 0 '"point":["0","1"],"normal":["1","0"]' stability "$L" --wrench=-2,1,0 --json
+check 0 'fixel 0: touching at (0, 1), n = (1, 0)' cone "$L" --mode ll
 check 0 '10 feasible modes of 2 fixels' modes "$L"
-lshape l_explicit '{"point":[0,1],"normal":[3,0]},{"point":[0,2],"normal":[3,0]}'
+lshape l_explicit '{"point":[0,1],"normal":[1,0]},{"point":[0,2],"normal":[1,0]}'
 same_json "$L" "$work/l_explicit.json" modes
 same_json "$L" "$work/l_explicit.json" stability --wrench=-2,1,0
 # the inner edge's frame at (0,1), as an explicit contact: refused, naming the edge that holds the point
@@ -79,7 +80,8 @@ check 0 '(0 touching, 2 with a gap)' modes "$work/l_corner.json"
 
 # the star: (-2/5, 4/5) lies on edge 2 and on the line of edge 0; (4/5, -2/5) on edge 7 and the line of edge 1
 star st_pos '{"position":["-2/5","4/5"]},{"position":["4/5","-2/5"]},{"position":["1/4","5/4"]}'
-star st_hand '{"point":["-2/5","4/5"],"normal":["3/2","-1/2"]},{"point":["4/5","-2/5"],"normal":["-1/2","3/2"]},{"point":["1/4","5/4"],"normal":["-3/2","-1/2"]}'
+# the same frames by hand, written as a position's frame is stated (irrational length: the primitive direction)
+star st_hand '{"point":["-2/5","4/5"],"normal":[3,-1]},{"point":["4/5","-2/5"],"normal":[-1,3]},{"point":["1/4","5/4"],"normal":[-3,-1]}'
 same_json "$work/st_pos.json" "$work/st_hand.json" modes
 same_json "$work/st_pos.json" "$work/st_hand.json" stability --wrench=0,-1,0
 star st_line_normal '{"point":["-2/5","4/5"],"normal":["-1/2","-3/2"]}'
