@@ -277,55 +277,6 @@ inline void from_rational(const Q& x, Z& num, Z& den) {
   den = x.get_den();
 }
 
-/// An integer matrix for exact work in either exact ring: held in std::int64_t when every entry fits,
-/// in Z otherwise (row-major). Reading a Z-held matrix in std::int64_t throws RingOverflow, so that
-/// with_exact_ring restarts in Z.
-class IntegerMatrix {
- public:
-  IntegerMatrix() = default;
-  IntegerMatrix(Index rows, Index cols, std::vector<std::int64_t> entries)
-      : rows_(rows), cols_(cols), fixed_(std::move(entries)) {}
-  IntegerMatrix(Index rows, Index cols, std::vector<Z> entries)
-      : rows_(rows), cols_(cols), wide_(std::move(entries)), is_wide_(true) {}
-  Index rows() const { return rows_; }
-  Index cols() const { return cols_; }
-  bool is_wide() const { return is_wide_; }
-  void get(Index i, Index j, std::int64_t& out) const {
-    if (is_wide_) throw RingOverflow{};
-    out = fixed_[at(i, j)];
-  }
-  void get(Index i, Index j, Z& out) const {
-    if (is_wide_)
-      out = wide_[at(i, j)];
-    else
-      out = static_cast<long>(fixed_[at(i, j)]);
-  }
-  /// The same matrix over Q.
-  Mat<Q> to_field() const {
-    Mat<Q> M(rows_, cols_);
-    Z x;
-    for (Index i = 0; i < rows_; ++i)
-      for (Index j = 0; j < cols_; ++j) {
-        get(i, j, x);
-        M(i, j) = Q(x);
-      }
-    return M;
-  }
-
- private:
-  std::size_t at(Index i, Index j) const { return static_cast<std::size_t>(i * cols_ + j); }
-  Index rows_ = 0, cols_ = 0;
-  std::vector<std::int64_t> fixed_;
-  std::vector<Z> wide_;
-  bool is_wide_ = false;
-};
-
-/// Entry (i, j) of a matrix over the ring: an IntegerMatrix (exact rings) or a float matrix.
-template <class R>
-void get(const IntegerMatrix& M, Index i, Index j, R& out) {
-  M.get(i, j, out);
-}
-
 /// A ring element as an element of the field T.
 template <class T>
 T to_field(std::int64_t x) {

@@ -262,6 +262,9 @@ SolutionKind solve_sparse_square(const std::vector<SparseEquation<R>>& eqs, Inde
 template class IntMatrix<std::int64_t>;
 template class IntMatrix<Int128>;
 template class IntMatrix<Z>;
+template class SparseIntMatrix<std::int64_t>;
+template class SparseIntMatrix<Int128>;
+template class SparseIntMatrix<Z>;
 #define CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(R) \
   template SolutionKind solve_sparse_square<R>(const std::vector<SparseEquation<R>>&, Index, std::vector<R>&, R&);
 CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(std::int64_t)

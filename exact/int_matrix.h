@@ -1,9 +1,11 @@
-// A dense matrix over a ring R of exact/fraction_free.h, eliminated without fractions (the model is Normaliz's
-// Matrix<Integer>): row echelon form with primitive rows, rank, kernel, make-primitive, and the unique solution of a
-// system by Bareiss's elimination (with a sparse front end for square systems). R = std::int64_t, Int128
-// (overflow-checked: throw RingOverflow so that with_exact_ring restarts in Z) or Z; the echelon form also runs in the
-// float rings (double, MPFR floats, intervals). Row-major, on the stack up to 64 entries (the UCP's systems are that
-// small and solved by the thousand). Instantiated in int_matrix.cpp.
+// The one integer matrix: a dense matrix over a ring R of exact/fraction_free.h, eliminated without fractions (the
+// model is Normaliz's Matrix<Integer>): row echelon form with primitive rows, rank, kernel, make-primitive, and the
+// unique solution of a system by Bareiss's elimination (with a sparse front end for square systems). R = std::int64_t,
+// Int128 (overflow-checked: throw RingOverflow so that with_exact_ring restarts in Z) or Z; the echelon form also runs
+// in the float rings (double, MPFR floats, intervals). Row-major, on the stack up to 64 entries (the UCP's systems are
+// that small and solved by the thousand). Its sparse form, SparseIntMatrix (compressed rows), holds the rows that are
+// mostly zero (the UCP's X and Y, the contact Jacobians). Rational rows are held as integer rows with one scale per row
+// (row i = integer row i / scale_i: IntegerSystem, the UCP's IntegerPolyhedron). Instantiated in int_matrix.cpp.
 #pragma once
 
 #include <boost/container/small_vector.hpp>
@@ -44,6 +46,7 @@ class IntMatrix {
   const R& operator()(Index i, Index j) const { return entries_[static_cast<std::size_t>(i * cols_ + j)]; }
   R* row(Index i) { return entries_.data() + i * cols_; }
   const R* row(Index i) const { return entries_.data() + i * cols_; }
+  bool operator==(const IntMatrix&) const = default;
   /// Keeps the first `rows` rows.
   void keep_rows(Index rows) {
     rows_ = rows;
@@ -78,6 +81,110 @@ class IntMatrix {
   boost::container::small_vector<R, 64> entries_;
 };
 
+/// A sparse matrix over an exact ring R in compressed rows: the non-zero entries of row i are value(t) in column
+/// col(t) for t in [begin(i), end(i)), columns ascending. Built row by row: add_row(), then push() its entries.
+template <class R>
+class SparseIntMatrix {
+ public:
+  using Index = Eigen::Index;
+
+  SparseIntMatrix() = default;
+  /// No rows, `cols` columns.
+  explicit SparseIntMatrix(Index cols) : cols_(cols) {}
+  /// The non-zero entries of a dense matrix, each mapped by to(entry) (e.g. Int128 -> Z).
+  template <class S, class To>
+  static SparseIntMatrix nonzeros(const IntMatrix<S>& M, To to) {
+    SparseIntMatrix out(M.cols());
+    for (Index i = 0; i < M.rows(); ++i) {
+      out.add_row();
+      for (Index j = 0; j < M.cols(); ++j)
+        if (ring::sign(M(i, j)) != 0) out.push(j, to(M(i, j)));
+    }
+    return out;
+  }
+
+  Index rows() const { return static_cast<Index>(start_.size()) - 1; }
+  Index cols() const { return cols_; }
+  Index begin(Index i) const { return start_[static_cast<std::size_t>(i)]; }
+  Index end(Index i) const { return start_[static_cast<std::size_t>(i + 1)]; }
+  Index col(Index t) const { return col_[static_cast<std::size_t>(t)]; }
+  const R& value(Index t) const { return value_[static_cast<std::size_t>(t)]; }
+  R& value(Index t) { return value_[static_cast<std::size_t>(t)]; }
+  /// The values of row i, contiguous.
+  R* values(Index i) { return value_.data() + begin(i); }
+
+  /// Appends an empty row.
+  void add_row() { start_.push_back(start_.back()); }
+  /// Appends the entry v in column c to the last row (c after its columns so far).
+  void push(Index c, R v) {
+    col_.push_back(c);
+    value_.push_back(std::move(v));
+    ++start_.back();
+  }
+  /// The same matrix, dense.
+  IntMatrix<R> dense() const {
+    IntMatrix<R> M(rows(), cols_);
+    for (Index i = 0; i < rows(); ++i)
+      for (Index t = begin(i); t < end(i); ++t) M(i, col(t)) = value(t);
+    return M;
+  }
+
+ private:
+  Index cols_ = 0;
+  boost::container::small_vector<Index, 64> start_{0}, col_;
+  boost::container::small_vector<R, 64> value_;
+};
+
+/// An integer matrix in the narrowest exact ring that holds it (the exact model matrices of the wrench cone paper):
+/// an IntMatrix<std::int64_t> when every entry fits, an IntMatrix<Z> otherwise, as with_exact_ring made it. Reading a
+/// Z-held matrix in std::int64_t throws RingOverflow, so that with_exact_ring restarts in Z.
+class FittedIntMatrix {
+ public:
+  using Index = Eigen::Index;
+
+  FittedIntMatrix() = default;
+  explicit FittedIntMatrix(IntMatrix<std::int64_t> M) : fixed_(std::move(M)) {}
+  explicit FittedIntMatrix(IntMatrix<Z> M) : wide_(std::move(M)), is_wide_(true) {}
+
+  Index rows() const { return is_wide_ ? wide_.rows() : fixed_.rows(); }
+  Index cols() const { return is_wide_ ? wide_.cols() : fixed_.cols(); }
+  bool is_wide() const { return is_wide_; }
+  void get(Index i, Index j, std::int64_t& out) const {
+    if (is_wide_) throw RingOverflow{};
+    out = fixed_(i, j);
+  }
+  void get(Index i, Index j, Z& out) const {
+    if (is_wide_)
+      out = wide_(i, j);
+    else
+      out = static_cast<long>(fixed_(i, j));
+  }
+  /// The same matrix over Q.
+  Mat<Q> to_field() const {
+    Mat<Q> M(rows(), cols());
+    Z x;
+    for (Index i = 0; i < rows(); ++i)
+      for (Index j = 0; j < cols(); ++j) {
+        get(i, j, x);
+        M(i, j) = Q(x);
+      }
+    return M;
+  }
+
+ private:
+  IntMatrix<std::int64_t> fixed_;
+  IntMatrix<Z> wide_;
+  bool is_wide_ = false;
+};
+
+namespace ring {
+/// Entry (i, j) of a matrix over the ring: a FittedIntMatrix (exact rings; a float matrix: float_ring.h).
+template <class R>
+void get(const FittedIntMatrix& M, Eigen::Index i, Eigen::Index j, R& out) {
+  M.get(i, j, out);
+}
+}  // namespace ring
+
 /// One equation of a sparse system: sum over terms (j, a) of a u_j = rhs.
 template <class R>
 struct SparseEquation {
@@ -96,6 +203,9 @@ SolutionKind solve_sparse_square(const std::vector<SparseEquation<R>>& eqs, Eige
 extern template class IntMatrix<std::int64_t>;
 extern template class IntMatrix<Int128>;
 extern template class IntMatrix<Z>;
+extern template class SparseIntMatrix<std::int64_t>;
+extern template class SparseIntMatrix<Int128>;
+extern template class SparseIntMatrix<Z>;
 extern template SolutionKind solve_sparse_square<std::int64_t>(const std::vector<SparseEquation<std::int64_t>>&,
                                                                Eigen::Index, std::vector<std::int64_t>&, std::int64_t&);
 extern template SolutionKind solve_sparse_square<Int128>(const std::vector<SparseEquation<Int128>>&, Eigen::Index,

@@ -4,8 +4,6 @@
 #include <numeric>
 #include <utility>
 
-#include "exact/int_matrix.h"
-
 namespace contactcert::exact {
 
 namespace {
@@ -16,16 +14,16 @@ using Index = Eigen::Index;
 /// of its denominators (throws RingOverflow if a number does not fit R).
 template <class R, class Column>
 void scale_rows(const Mat<Q>& A, const Vec<Q>& b, Index n, Column column, IntegerSystem<R>& s) {
-  s.m = A.rows(), s.n = n;
-  s.A.resize(static_cast<std::size_t>(s.m * s.n));
-  s.b.resize(static_cast<std::size_t>(s.m));
-  s.row_scale.resize(static_cast<std::size_t>(s.m));
-  std::vector<R> row(static_cast<std::size_t>(s.n + 1));
-  for (Index i = 0; i < s.m; ++i) {
+  const Index m = A.rows();
+  s.A = IntMatrix<R>(m, n);
+  s.b.resize(static_cast<std::size_t>(m));
+  s.row_scale.resize(static_cast<std::size_t>(m));
+  std::vector<R> row(static_cast<std::size_t>(n + 1));
+  for (Index i = 0; i < m; ++i) {
     s.row_scale[static_cast<std::size_t>(i)] = ring::to_common_denominator<R>(
-        s.n + 1, [&](Index j) -> const Q& { return j < s.n ? A(i, column(j)) : b(i); }, row.data());
-    std::move(row.begin(), row.begin() + s.n, s.A.begin() + i * s.n);
-    s.b[static_cast<std::size_t>(i)] = std::move(row[static_cast<std::size_t>(s.n)]);
+        n + 1, [&](Index j) -> const Q& { return j < n ? A(i, column(j)) : b(i); }, row.data());
+    std::move(row.begin(), row.begin() + n, s.A.row(i));
+    s.b[static_cast<std::size_t>(i)] = std::move(row[static_cast<std::size_t>(n)]);
   }
 }
 
@@ -71,9 +69,9 @@ IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b, const std::vec
 template <class R>
 std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vector<Index>& columns) {
   const auto k = static_cast<Index>(columns.size());
-  IntMatrix<R> M(s.m, k + 1);  // [A_S | b]
-  for (Index i = 0; i < s.m; ++i) {
-    for (Index c = 0; c < k; ++c) M(i, c) = s.a(i, columns[static_cast<std::size_t>(c)]);
+  IntMatrix<R> M(s.rows(), k + 1);  // [A_S | b]
+  for (Index i = 0; i < s.rows(); ++i) {
+    for (Index c = 0; c < k; ++c) M(i, c) = s.A(i, columns[static_cast<std::size_t>(c)]);
     M(i, k) = s.b[static_cast<std::size_t>(i)];
   }
   std::vector<R> N(static_cast<std::size_t>(k));
@@ -86,7 +84,7 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s, const std::vect
 
 template <class R>
 std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s) {
-  std::vector<Index> all(static_cast<std::size_t>(s.n));
+  std::vector<Index> all(static_cast<std::size_t>(s.cols()));
   std::iota(all.begin(), all.end(), Index(0));
   return unique_solution(s, all);
 }

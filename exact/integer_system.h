@@ -1,14 +1,14 @@
 // Rational data scaled to integers: each row of [A | b] times the lcm of its denominators (row_scale), the
-// same solutions in integer arithmetic. The one scaling is ring::to_common_denominator (exact/fraction_free.h);
-// this is the system it produces, for the verified LP (IntegerLp, 64 bits) and the exact integer checks
-// (IntegerSystem<R>, R = Int128 or Z as with_exact_ring<Q, Int128> chooses).
+// same solutions in integer arithmetic: the integer matrix exact::IntMatrix with one scale per row. The one scaling is
+// ring::to_common_denominator (exact/fraction_free.h); this is the system it produces, for the verified LP (IntegerLp,
+// 64 bits) and the exact integer checks (IntegerSystem<R>, R = Int128 or Z as with_exact_ring<Q, Int128> chooses).
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
-#include "exact/fraction_free.h"
+#include "exact/int_matrix.h"
 #include "exact/lp_problem.h"
 
 namespace contactcert::exact {
@@ -16,9 +16,10 @@ namespace contactcert::exact {
 /// The rows of A x = b, row i of [A | b] times row_scale[i] (the lcm of its denominators), as integers of R.
 template <class R>
 struct IntegerSystem {
-  Eigen::Index m = 0, n = 0;
-  std::vector<R> A, b, row_scale;  ///< A row-major, m x n
-  const R& a(Eigen::Index i, Eigen::Index j) const { return A[static_cast<std::size_t>(i * n + j)]; }
+  IntMatrix<R> A;
+  std::vector<R> b, row_scale;
+  Eigen::Index rows() const { return A.rows(); }
+  Eigen::Index cols() const { return A.cols(); }
 };
 
 /// An LP as an IntegerSystem<std::int64_t> of its rows, with c scaled to integers (times objective_scale):
@@ -31,12 +32,13 @@ struct IntegerLp : IntegerSystem<std::int64_t> {
   /// The scaled LP in T, each integer mapped by from_int : int64 -> T (the other rungs of the ladder).
   template <class T, class F>
   LpProblem<T> convert(const std::vector<bool>& is_free, F from_int) const {
+    const Eigen::Index m = rows(), n = cols();
     LpProblem<T> p;
     p.A = Mat<T>(m, n);
     p.b = Vec<T>(m);
     p.c = Vec<T>(n);
     for (Eigen::Index i = 0; i < m; ++i) {
-      for (Eigen::Index j = 0; j < n; ++j) p.A(i, j) = from_int(a(i, j));
+      for (Eigen::Index j = 0; j < n; ++j) p.A(i, j) = from_int(A(i, j));
       p.b(i) = from_int(b[static_cast<size_t>(i)]);
     }
     for (Eigen::Index j = 0; j < n; ++j) p.c(j) = from_int(c[static_cast<size_t>(j)]);

@@ -3,16 +3,13 @@
 namespace contactcert::exact {
 
 RationalVector::RationalVector(const Vec<Q>& v) {
-  const auto entry = [&v](Eigen::Index i) -> const Q& { return v(i); };
-  try {
-    num_.resize(static_cast<std::size_t>(v.size()));
-    den_ = ring::to_common_denominator<Int128>(v.size(), entry, num_.data());
-  } catch (const RingOverflow&) {
-    num_.clear();
-    wide_ = true;
-    wide_num_.resize(static_cast<std::size_t>(v.size()));
-    wide_den_ = ring::to_common_denominator<Z>(v.size(), entry, wide_num_.data());
-  }
+  // v over its least common denominator, in Int128 or, when a number does not fit, in Z.
+  *this = with_exact_ring<Q, Int128>([&v]<class R>() {
+    boost::container::small_vector<R, 8> num(static_cast<std::size_t>(v.size()));
+    const R den = ring::to_common_denominator<R>(
+        v.size(), [&v](Eigen::Index i) -> const Q& { return v(i); }, num.data());
+    return RationalVector(num.data(), v.size(), den);
+  });
 }
 
 RationalVector::RationalVector(const Int128* num, Eigen::Index k, Int128 den) : num_(num, num + k), den_(den) {

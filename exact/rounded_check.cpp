@@ -28,8 +28,8 @@ std::optional<RoundedVector<R>> rounded_solution(const IntegerSystem<S>& s, cons
   const std::size_t k = columns.size();
   const Index* col = columns.data();
   const R* X = r.X.data();
-  for (Index i = 0; i < s.m; ++i) {
-    const S* a = s.A.data() + i * s.n;
+  for (Index i = 0; i < s.rows(); ++i) {
+    const S* a = s.A.row(i);
     R acc(0);
     for (std::size_t t = 0; t < k; ++t)
       if (X[t] != 0) acc = ring::add(acc, ring::mul(widen<R>(a[col[t]]), X[t]));
@@ -40,14 +40,14 @@ std::optional<RoundedVector<R>> rounded_solution(const IntegerSystem<S>& s, cons
 
 template <class R, class S>
 std::vector<R> left_product(const IntegerSystem<S>& s, const std::vector<R>& Y) {
-  const Index m = s.m, n = s.n;
+  const Index m = s.rows(), n = s.cols();
   std::vector<R> t(static_cast<std::size_t>(n), R(0));
   R* out = t.data();
   for (Index i = 0; i < m; ++i) {
     // A copy of a fixed-width y_i (so that the writes to t cannot alias it), a reference to a GMP one.
     std::conditional_t<std::is_trivially_copyable_v<R>, const R, const R&> yi = Y[static_cast<std::size_t>(i)];
     if (yi == 0) continue;
-    const S* a = s.A.data() + i * n;
+    const S* a = s.A.row(i);
     for (Index j = 0; j < n; ++j) out[j] = ring::add(out[j], ring::mul(widen<R>(a[j]), yi));
   }
   return t;
@@ -105,7 +105,7 @@ std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& pr
                                                           const std::vector<Index>& basis, const Vec<double>& x_approx,
                                                           const Vec<double>& y_approx) {
   const Index m = problem.rows(), n = problem.cols();
-  if (x_approx.size() != n || y_approx.size() != m || ilp.m != m || ilp.n != n) return std::nullopt;
+  if (x_approx.size() != n || y_approx.size() != m || ilp.rows() != m || ilp.cols() != n) return std::nullopt;
   for (Index j : basis)
     if (j < 0 || j >= n) return std::nullopt;
   try {
@@ -120,13 +120,13 @@ std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>
                                     const std::vector<bool>& zero) {
   std::vector<Index> support;
   std::vector<double> xs;
-  for (Index j = 0; j < s.n; ++j)
+  for (Index j = 0; j < s.cols(); ++j)
     if (!zero[static_cast<std::size_t>(j)]) support.push_back(j), xs.push_back(x_approx(j));
   const std::optional<RoundedVector<R>> x = rounded_solution<R>(s, s.b, support, xs);
   if (!x) return std::nullopt;
   for (const R& v : x->X)
     if (ring::sign(v) < 0) return std::nullopt;
-  Vec<Q> out = Vec<Q>::Zero(s.n);
+  Vec<Q> out = Vec<Q>::Zero(s.cols());
   for (std::size_t t = 0; t < support.size(); ++t)
     if (ring::sign(x->X[t]) != 0) ring::to_rational(x->X[t], x->D, out(support[t]));
   return out;

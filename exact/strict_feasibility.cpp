@@ -101,7 +101,7 @@ std::optional<std::vector<i64>> integer_rhs(const IntegerLp& ilp, const Vec<Q>& 
 std::optional<StrictFeasibility<Q>> check_rounded(const IntegerLp& ilp, const StrictFeasibility<double>& f,
                                                   const std::vector<bool>& is_free, const std::vector<bool>& strict,
                                                   const std::vector<i64>& B, const Z& d) {
-  const Index m = ilp.m, n = ilp.n;
+  const Index m = ilp.rows(), n = ilp.cols();
   StrictFeasibility<Q> out;
   out.lps = 1;
   out.decided_by = DecidedBy::kFloatBasisCheckedExactly;
@@ -152,7 +152,7 @@ std::optional<StrictFeasibility<Q>> check_rounded(const IntegerLp& ilp, const St
 std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const LpProblem<double>& hint,
                                                   const std::vector<bool>& is_free, const std::vector<bool>& strict,
                                                   const std::vector<Index>& S, const Vec<Q>& b) {
-  const Index m = ilp.m, n = ilp.n;
+  const Index m = ilp.rows(), n = ilp.cols();
   Z d;
   const std::optional<std::vector<i64>> B = integer_rhs(ilp, b, d);
   if (!B) return std::nullopt;
@@ -174,9 +174,7 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
 template <class ForEachEntry>
 std::optional<IntegerLp> integer_rows(Index m, Index n, ForEachEntry&& for_each_entry) {
   IntegerLp out;
-  out.m = m;
-  out.n = n;
-  out.A.assign(static_cast<size_t>(m * n), 0);
+  out.A = IntMatrix<i64>(m, n);
   out.b.assign(static_cast<size_t>(m), 0);
   out.c.assign(static_cast<size_t>(n), 0);
   out.row_scale.assign(static_cast<size_t>(m), 1);
@@ -190,7 +188,7 @@ std::optional<IntegerLp> integer_rows(Index m, Index n, ForEachEntry&& for_each_
       out.row_scale[static_cast<size_t>(i)] = ring::to_common_denominator<i64>(
           static_cast<Index>(row.size()), [&](Index t) -> const Q& { return *row[static_cast<size_t>(t)].second; },
           scaled.data());
-      for (size_t t = 0; t < row.size(); ++t) out.A[static_cast<size_t>(i * n + row[t].first)] = scaled[t];
+      for (size_t t = 0; t < row.size(); ++t) out.A(i, row[t].first) = scaled[t];
     }
   } catch (const RingOverflow&) {
     return std::nullopt;

@@ -257,12 +257,12 @@ CertificateCheck check_solvable(const JsonInput& cert, const CheckData& c) {
 
 /// Z^T u for Z's sparse rows, X's rows (build_X: row r of X.A is row r of Z, n = 2nc entries, then its v_t block
 /// negated): the combination of P's left null vectors.
-Vec<Q> z_transpose_times(const std::vector<SparseRow>& Z, Index n, const Vec<Q>& u) {
+Vec<Q> z_transpose_times(const SparseRows& Z, Index n, const Vec<Q>& u) {
   Vec<Q> w = Vec<Q>::Zero(n);
-  for (std::size_t r = 0; r < Z.size(); ++r) {
-    const Q& ur = u(static_cast<Index>(r));
+  for (Index r = 0; r < Z.rows(); ++r) {
+    const Q& ur = u(r);
     if (sgn(ur) == 0) continue;
-    for (std::size_t k = 0; k < Z[r].col.size() && Z[r].col[k] < n; ++k) w(Z[r].col[k]) += ur * Q(Z[r].value[k]);
+    for (Index t = Z.begin(r); t < Z.end(r) && Z.col(t) < n; ++t) w(Z.col(t)) += ur * Q(Z.value(t));
   }
   return w;
 }
@@ -274,7 +274,7 @@ std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>&
   j["reason"] = result.reason;
   // build_Y scales row r of [C | -d] by y_factor[r] > 0; a Farkas vector u of the scaled rows is (y_factor[r] u_r)
   // for C.
-  const std::vector<SparseRow>& Z = problem.rows().X.A;
+  const SparseRows& Z = problem.rows().X.A;
   Vec<Q> y_scale;
   if (problem.quasistatic) y_scale = Eigen::Map<const Vec<Q>>(problem.rows().y_factor.data(), problem.rows().Y.rows());
   json nodes = json::array();

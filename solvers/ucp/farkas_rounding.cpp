@@ -29,17 +29,18 @@ template <class R>
 std::optional<FarkasVector> checked_farkas(const exact::IntegerSystem<R>& s, const std::vector<R>& Y,
                                            const std::vector<bool>& zero) {
   R acc(0);
-  for (Index i = 0; i < s.m; ++i) acc = add(acc, mul(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
+  for (Index i = 0; i < s.rows(); ++i)
+    acc = add(acc, mul(s.b[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
   if (sign(acc) >= 0) return std::nullopt;
   FarkasVector f;
   const std::vector<R> yA = exact::left_product(s, Y);
-  for (Index j = 0; j < s.n; ++j) {
+  for (Index j = 0; j < s.cols(); ++j) {
     if (sign(yA[static_cast<std::size_t>(j)]) >= 0) continue;
     if (!zero[static_cast<std::size_t>(j)]) return std::nullopt;
     f.negative.push_back(j);
   }
-  f.y = Vec<Q>(s.m);
-  for (Index i = 0; i < s.m; ++i)
+  f.y = Vec<Q>(s.rows());
+  for (Index i = 0; i < s.rows(); ++i)
     f.y(i) = exact::ring::to_field<Q>(mul(s.row_scale[static_cast<std::size_t>(i)], Y[static_cast<std::size_t>(i)]));
   return f;
 }
@@ -55,20 +56,20 @@ std::optional<FarkasVector> basis_farkas(const exact::IntegerSystem<R>& s, const
   // signed powers of two; in the rows of s (row i times L_i) they read L_i f'_i = f_i. The system is sparse (X's
   // columns come from the sparse rows of P's left null space, an artificial's equation has one unknown): the
   // sparse solve fixes most unknowns without elimination.
-  const Index m = s.m;
+  const Index m = s.rows(), n = s.cols();
   if (y_approx.size() != m) return std::nullopt;
   if (static_cast<Index>(basis.size()) != m) return std::nullopt;
   std::vector<exact::SparseEquation<R>> eqs(static_cast<std::size_t>(m));  // one per basis column, unknowns f'
   for (Index r = 0; r < m; ++r) {
     exact::SparseEquation<R>& eq = eqs[static_cast<std::size_t>(r)];
     const Index v = basis[static_cast<std::size_t>(r)];
-    if (v < 0 || v >= s.n + m) return std::nullopt;
-    if (v < s.n) {
+    if (v < 0 || v >= n + m) return std::nullopt;
+    if (v < n) {
       for (Index i = 0; i < m; ++i)
-        if (sign(s.a(i, v)) != 0) eq.terms.push_back({i, s.a(i, v)});
+        if (sign(s.A(i, v)) != 0) eq.terms.push_back({i, s.A(i, v)});
       eq.rhs = R(0);
     } else {
-      const Index i = v - s.n;
+      const Index i = v - n;
       const double f = y_approx(i);
       if (f == 0 || !std::isfinite(f)) return std::nullopt;
       const int e = static_cast<int>(std::lround(std::log2(std::abs(f))));  // |f_i| = 2^e
@@ -90,9 +91,9 @@ std::optional<FarkasVector> rounded_farkas(const exact::IntegerSystem<R>& s, con
                                            const std::vector<bool>& zero) {
   // A positive multiple of a Farkas vector is one: scaled to max-norm 1 before rounding, so that a float
   // vector of tiny entries (rows equilibrated by the float simplex) does not round to 0.
-  std::vector<double> ys(static_cast<std::size_t>(s.m));
+  std::vector<double> ys(static_cast<std::size_t>(s.rows()));
   double norm = 0;
-  for (Index i = 0; i < s.m; ++i) {
+  for (Index i = 0; i < s.rows(); ++i) {
     ys[static_cast<std::size_t>(i)] = y_approx(i) / to_double(s.row_scale[static_cast<std::size_t>(i)]);
     norm = std::max(norm, std::abs(ys[static_cast<std::size_t>(i)]));
   }

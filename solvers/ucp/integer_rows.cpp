@@ -21,17 +21,10 @@ const Z& to_z(const Z& x) { return x; }
 /// left_null_rows in the ring R (Int128: throws RingOverflow when a number does not fit): the kernel of P^T, whose
 /// rows (the columns of P) are scaled to primitive integers first (the same kernel), its non-zero entries.
 template <class R>
-std::vector<SparseRow> left_null_rows_in(const Mat<Q>& P) {
+SparseRows left_null_rows_in(const Mat<Q>& P) {
   const IntMatrix<R> N =
       IntMatrix<R>::primitive_rows(P.cols(), P.rows(), [&](Index i, Index j) -> const Q& { return P(j, i); }).kernel();
-  std::vector<SparseRow> rows(static_cast<std::size_t>(N.rows()));
-  for (Index r = 0; r < N.rows(); ++r)
-    for (Index j = 0; j < N.cols(); ++j)
-      if (ring::sign(N(r, j)) != 0) {
-        rows[static_cast<std::size_t>(r)].col.push_back(j);
-        rows[static_cast<std::size_t>(r)].value.push_back(to_z(N(r, j)));
-      }
-  return rows;
+  return SparseRows::nonzeros(N, [](const R& x) { return to_z(x); });
 }
 
 template <class R>
@@ -45,7 +38,7 @@ std::vector<Z> primitive_integers_in(const std::vector<const Q*>& v) {
 
 }  // namespace
 
-std::vector<SparseRow> left_null_rows(const Mat<Q>& P) {
+SparseRows left_null_rows(const Mat<Q>& P) {
   return exact::with_exact_ring<Q, Int128>([&]<class R>() { return left_null_rows_in<R>(P); });
 }
 
@@ -54,21 +47,14 @@ std::vector<Z> primitive_integers(const std::vector<const Q*>& v) {
 }
 
 IntegerPolyhedron integer_polyhedron(const Mat<Q>& A, const Vec<Q>& b) {
-  IntegerPolyhedron P;
-  P.n = A.cols();
-  P.A.resize(static_cast<std::size_t>(A.rows()));
-  P.den.resize(P.A.size());
-  P.b = b;
+  IntegerPolyhedron P{SparseRows(A.cols()), std::vector<Z>(static_cast<std::size_t>(A.rows())), b};
   std::vector<Z> row(static_cast<std::size_t>(A.cols()));
   for (Index i = 0; i < A.rows(); ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    P.den[k] = ring::to_common_denominator<Z>(
+    P.den[static_cast<std::size_t>(i)] = ring::to_common_denominator<Z>(
         A.cols(), [&](Index j) -> const Q& { return A(i, j); }, row.data());
+    P.A.add_row();
     for (Index j = 0; j < A.cols(); ++j)
-      if (sgn(row[static_cast<std::size_t>(j)]) != 0) {
-        P.A[k].col.push_back(j);
-        P.A[k].value.push_back(std::move(row[static_cast<std::size_t>(j)]));
-      }
+      if (sgn(row[static_cast<std::size_t>(j)]) != 0) P.A.push(j, std::move(row[static_cast<std::size_t>(j)]));
   }
   return P;
 }
@@ -78,22 +64,20 @@ exact::IntegerSystem<R> integer_system(const IntegerPolyhedron& P) {
   // Row i of [A | b] is [A[i] | L_b b_i] / den_i over den_i and L_b the denominator of b_i: over L = lcm(den_i, L_b),
   // A[i] (L / den_i) and num(b_i) (L / L_b), as ring::to_common_denominator makes the rational row.
   exact::IntegerSystem<R> s;
-  s.m = P.rows(), s.n = P.n;
-  s.A.assign(static_cast<std::size_t>(s.m * s.n), R(0));
-  s.b.resize(static_cast<std::size_t>(s.m));
-  s.row_scale.resize(static_cast<std::size_t>(s.m));
+  s.A = IntMatrix<R>(P.rows(), P.cols());
+  s.b.resize(static_cast<std::size_t>(P.rows()));
+  s.row_scale.resize(static_cast<std::size_t>(P.rows()));
   R den, den_b, f;
-  for (Index i = 0; i < s.m; ++i) {
+  for (Index i = 0; i < P.rows(); ++i) {
     const auto k = static_cast<std::size_t>(i);
     ring::from_integer(P.den[k], den);
     ring::from_integer(P.b(i).get_den(), den_b);
     R& L = s.row_scale[k];
     L = ring::lcm(den, den_b);
     f = ring::divexact(L, den);
-    const SparseRow& r = P.A[k];
-    for (std::size_t e = 0; e < r.col.size(); ++e) {
-      R& a = s.A[static_cast<std::size_t>(i * s.n + r.col[e])];
-      ring::from_integer(r.value[e], a);
+    for (Index t = P.A.begin(i); t < P.A.end(i); ++t) {
+      R& a = s.A(i, P.A.col(t));
+      ring::from_integer(P.A.value(t), a);
       if (f != 1) a = ring::mul(a, f);
     }
     ring::from_integer(P.b(i).get_num(), s.b[k]);

@@ -5,32 +5,30 @@
 
 #include <vector>
 
+#include "exact/int_matrix.h"
 #include "exact/integer_system.h"
 #include "exact/number.h"
 
 namespace contactcert::solvers::ucp {
 
-/// A sparse integer row: value[k] at column col[k], columns ascending.
-struct SparseRow {
-  std::vector<Eigen::Index> col;
-  std::vector<exact::Z> value;
-};
+/// Sparse integer rows (exact::SparseIntMatrix over GMP integers).
+using SparseRows = exact::SparseIntMatrix<exact::Z>;
 
-/// The rows of a polyhedron {x >= 0 : A x = b} in R^n in integers: row i of A is A[i] / den[i] (den[i] > 0 the
-/// least common denominator of that row; 1 for a quasistatic problem, whose rows are primitive integers), b as
+/// The rows of a polyhedron {x >= 0 : A x = b} in R^n (n = A.cols()) in integers: row i of A over den[i] (den[i] > 0
+/// the least common denominator of that row; 1 for a quasistatic problem, whose rows are primitive integers), b as
 /// rationals (one per row).
 struct IntegerPolyhedron {
-  Eigen::Index n = 0;
-  std::vector<SparseRow> A;
+  SparseRows A;
   std::vector<exact::Z> den;
   exact::Vec<exact::Q> b;
-  Eigen::Index rows() const { return static_cast<Eigen::Index>(A.size()); }
+  Eigen::Index rows() const { return A.rows(); }
+  Eigen::Index cols() const { return A.cols(); }
 };
 
 /// A basis of the left null space {z : z^T P = 0} of P: one row per row f of P outside the pivots of the
 /// reduced row echelon form of P^T, with z_f > 0, zero at the other non-pivot rows (the basis of
 /// exact::null_space(P^T)), each scaled to a primitive integer vector. Rows ascending in f.
-std::vector<SparseRow> left_null_rows(const exact::Mat<exact::Q>& P);
+SparseRows left_null_rows(const exact::Mat<exact::Q>& P);
 
 /// The positive multiple of the rationals *v[0], ..., *v[k-1] that is a primitive integer vector (all zero: zeros).
 std::vector<exact::Z> primitive_integers(const std::vector<const exact::Q*>& v);

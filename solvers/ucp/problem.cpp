@@ -168,31 +168,25 @@ IntegerPolyhedron build_X(const QuasistaticProblem& p) {
   // v_t^-): B only selects and negates columns, so row r of X.A is row r of Z with its v_t block repeated negated.
   // X.b = -Z h with h = J_alpha theta_alpha = hn / L (integers over one denominator): -(Z_r . hn) / L.
   const Index nc = p.nc;
-  IntegerPolyhedron X;
-  X.n = 3 * nc;
-  X.A = left_null_rows(p.P);
-  X.den.assign(X.A.size(), exact::Z(1));
-  X.b = Vec<Q>(X.rows());
+  const SparseRows Z = left_null_rows(p.P);
+  IntegerPolyhedron X{SparseRows(3 * nc), std::vector<exact::Z>(static_cast<std::size_t>(Z.rows()), exact::Z(1)),
+                      Vec<Q>(Z.rows())};
   const Vec<Q> h = p.J_alpha_theta_alpha();
   std::vector<exact::Z> hn(static_cast<std::size_t>(h.size()));
   const exact::Z L = exact::ring::to_common_denominator<exact::Z>(
       h.size(), [&](Index i) -> const Q& { return h(i); }, hn.data());
   exact::Z dot;
-  for (std::size_t k = 0; k < X.A.size(); ++k) {
-    SparseRow& row = X.A[k];
+  for (Index r = 0; r < Z.rows(); ++r) {
+    X.A.add_row();
     dot = 0;
-    const std::size_t z_entries = row.col.size();
-    for (std::size_t e = 0; e < z_entries; ++e) {
-      const Index c = row.col[e];
-      const exact::Z& hc = hn[static_cast<std::size_t>(c)];
-      if (sgn(hc) != 0) mpz_submul(dot.get_mpz_t(), row.value[e].get_mpz_t(), hc.get_mpz_t());
-      if (c >= nc) {
-        exact::Z minus = -row.value[e];
-        row.col.push_back(c + nc);
-        row.value.push_back(std::move(minus));
-      }
+    for (Index t = Z.begin(r); t < Z.end(r); ++t) {
+      const exact::Z& hc = hn[static_cast<std::size_t>(Z.col(t))];
+      if (sgn(hc) != 0) mpz_submul(dot.get_mpz_t(), Z.value(t).get_mpz_t(), hc.get_mpz_t());
+      X.A.push(Z.col(t), Z.value(t));
     }
-    exact::ring::to_rational(dot, L, X.b(static_cast<Index>(k)));
+    for (Index t = Z.begin(r); t < Z.end(r); ++t)
+      if (Z.col(t) >= nc) X.A.push(Z.col(t) + nc, -Z.value(t));
+    exact::ring::to_rational(dot, L, X.b(r));
   }
   return X;
 }
@@ -201,39 +195,35 @@ IntegerPolyhedron build_Y(const QuasistaticProblem& p, std::vector<Q>* factor) {
   // The rows of [C | -d], sparse: C's friction rows [2U | -I | -I] (row i: 2 mu_i, -1, -1) and the rows
   // [Wn - Wt U | Wt | 0] over the columns k of P = [W^T  J_abar] (Wn^T, Wt^T stacked), (J_abar)^T likewise: column i of
   // Wn - Wt U is Wn_i - mu_i Wt_i (U = diag(mu)), no product with U. Each row is scaled to primitive integers.
-  const Index nc = p.nc, nq = p.nq, na = static_cast<Index>(p.abar.size());
-  IntegerPolyhedron Y;
-  Y.n = 3 * nc;
-  Y.A.resize(static_cast<std::size_t>(nc + nq + na));
-  Y.den.assign(Y.A.size(), exact::Z(1));
-  Y.b = Vec<Q>(Y.rows());
-  if (factor) factor->resize(Y.A.size());
+  const Index nc = p.nc, nq = p.nq, na = static_cast<Index>(p.abar.size()), m = nc + nq + na;
+  IntegerPolyhedron Y{SparseRows(3 * nc), std::vector<exact::Z>(static_cast<std::size_t>(m), exact::Z(1)), Vec<Q>(m)};
+  if (factor) factor->resize(static_cast<std::size_t>(m));
   std::vector<Q> entries;
+  std::vector<Index> cols;
   std::vector<const Q*> row;
   const Q minus_one(-1);
-  for (Index r = 0; r < Y.rows(); ++r) {
-    SparseRow& out = Y.A[static_cast<std::size_t>(r)];
+  for (Index r = 0; r < m; ++r) {
     entries.clear();
     entries.reserve(static_cast<std::size_t>(2 * nc + 1));
     if (r < nc) {
-      out.col = {r, nc + r, 2 * nc + r};
+      cols = {r, nc + r, 2 * nc + r};
       entries = {2 * p.mu(r), minus_one, minus_one};
     } else {
+      cols.clear();
       const Index k = r - nc;
       for (Index i = 0; i < nc; ++i) {  // column i: n - mu_i t
         const Q& n = p.P(i, k);
         const Q& t = p.P(nc + i, k);
         if (sgn(t) == 0 && sgn(n) == 0) continue;
-        out.col.push_back(i);
+        cols.push_back(i);
         entries.push_back(sgn(t) == 0 ? n : Q(n - t * p.mu(i)));
       }
       for (Index i = 0; i < nc; ++i)  // column nc + i: t
         if (sgn(p.P(nc + i, k)) != 0) {
-          out.col.push_back(nc + i);
+          cols.push_back(nc + i);
           entries.push_back(p.P(nc + i, k));
         }
     }
-    // Zero entries of C (n = mu_i t) are dropped after the scaling.
     entries.push_back(-p.d(r));
     row.clear();
     for (const Q& e : entries) row.push_back(&e);
@@ -244,13 +234,10 @@ IntegerPolyhedron build_Y(const QuasistaticProblem& p, std::vector<Q>* factor) {
       (*factor)[static_cast<std::size_t>(r)] =
           first == entries.end() ? Q(1) : Q(z[static_cast<std::size_t>(first - entries.begin())]) / *first;
     }
-    z.pop_back();
-    std::size_t kept = 0;
-    for (std::size_t e = 0; e < z.size(); ++e)
-      if (sgn(z[e]) != 0) out.col[kept] = out.col[e], z[kept++] = std::move(z[e]);
-    out.col.resize(kept);
-    z.resize(kept);
-    out.value = std::move(z);
+    // Zero entries of C (n = mu_i t) are dropped after the scaling.
+    Y.A.add_row();
+    for (std::size_t e = 0; e < cols.size(); ++e)
+      if (sgn(z[e]) != 0) Y.A.push(cols[e], std::move(z[e]));
   }
   return Y;
 }

@@ -59,7 +59,7 @@ struct IntegerUcp {
   IntegerPolyhedron X, Y;
   /// A quasistatic problem: row r of Y is y_factor[r] > 0 times row r of [C | -d] (build_Y); empty otherwise.
   std::vector<Q> y_factor;
-  Eigen::Index n() const { return X.n; }
+  Eigen::Index n() const { return X.cols(); }
 };
 
 /// A UCP problem file: either a quasistatic problem (with its X and Y built as in section 2) or a
@@ -121,17 +121,16 @@ template <class T, class FromZ, class FromQ>
 UcpInstance<T> convert(const IntegerUcp& u, FromZ from_z, FromQ from_q) {
   const T zero = from_z(exact::Z(0));
   const auto conv = [&](const IntegerPolyhedron& P) {
-    StandardPolyhedron<T> R{Mat<T>::Constant(P.rows(), P.n, zero), Vec<T>(P.rows())};
+    StandardPolyhedron<T> R{Mat<T>::Constant(P.rows(), P.cols(), zero), Vec<T>(P.rows())};
     Q q;
     for (Eigen::Index i = 0; i < P.rows(); ++i) {
-      const SparseRow& r = P.A[static_cast<std::size_t>(i)];
       const exact::Z& den = P.den[static_cast<std::size_t>(i)];
-      for (std::size_t e = 0; e < r.col.size(); ++e) {
+      for (Eigen::Index t = P.A.begin(i); t < P.A.end(i); ++t) {
         if (den == 1) {
-          R.A(i, r.col[e]) = from_z(r.value[e]);
+          R.A(i, P.A.col(t)) = from_z(P.A.value(t));
         } else {
-          exact::ring::to_rational(r.value[e], den, q);
-          R.A(i, r.col[e]) = from_q(q);
+          exact::ring::to_rational(P.A.value(t), den, q);
+          R.A(i, P.A.col(t)) = from_q(q);
         }
       }
       R.b(i) = from_q(P.b(i));

@@ -8,10 +8,10 @@
 #include "exact/linalg.h"
 
 // Everything here runs in integers: the problem's data once per call (IntegerData: each row of P and of [Jn; Jt]
-// times the lcm of its denominators), every rational vector over one common denominator, so that each equality
-// of (2)-(5) is an integer dot product equal to 0 and each friction condition an integer comparison; the physics
-// stays in that form (exact::RationalVector). Int128 first and, when a number does not fit (RingOverflow), again in
-// Z (with_exact_ring): exact either way, 128 bits are only a speed-up.
+// times the lcm of its denominators, dense and sparse exact::IntMatrix rows with their scales), every rational vector
+// over one common denominator, so that each equality of (2)-(5) is an integer dot product equal to 0 and each friction
+// condition an integer comparison; the physics stays in that form (exact::RationalVector). Int128 first and, when a
+// number does not fit (RingOverflow), again in Z (with_exact_ring): exact either way, 128 bits are only a speed-up.
 
 namespace contactcert::solvers::ucp {
 
@@ -28,13 +28,13 @@ using Buffer = boost::container::small_vector<R, 64>;
 
 /// The data of the problem as integers, once per call: every row of P and of [Jn; Jt] over the lcm of its
 /// denominators, and mu, d' = d below its first nc entries (g_obj, (g_man - tau)_abar) and theta_dot each over a
-/// common denominator. P is row-major; [Jn; Jt] keeps only its non-zero entries (a point finger's row has one).
+/// common denominator. [Jn; Jt] keeps only its non-zero entries (a point finger's row has one).
 template <class R>
 struct IntegerData {
   Index nc, nq, nt, m;
-  Buffer<R> P, Lp;  ///< P_r = P[r] / Lp_r (2nc x m)
-  Buffer<R> J, Lj;  ///< [Jn; Jt]_r: entries J[t] / Lj_r in columns Jcol[t], t in [Jstart[r], Jstart[r + 1])
-  Buffer<Index> Jcol, Jstart;
+  exact::IntMatrix<R> P;        ///< P_r = P.row(r) / Lp_r (2nc x m)
+  exact::SparseIntMatrix<R> J;  ///< [Jn; Jt]_r = (row r of J) / Lj_r (2nc x nt)
+  Buffer<R> Lp, Lj;
   Buffer<R> mu, d, theta;
   R Dmu, Dd, Dt;  ///< mu = mu / Dmu, d' = d / Dd, theta_dot = theta / Dt
 
@@ -43,29 +43,26 @@ struct IntegerData {
         nq(p.nq),
         nt(p.ntheta),
         m(p.P.cols()),
-        P(static_cast<std::size_t>(2 * nc * m)),
+        P(2 * nc, m),
+        J(nt),
         Lp(static_cast<std::size_t>(2 * nc)),
         Lj(static_cast<std::size_t>(2 * nc)),
-        Jstart(static_cast<std::size_t>(2 * nc + 1)),
         mu(static_cast<std::size_t>(nc)),
         d(static_cast<std::size_t>(m)),
         theta(static_cast<std::size_t>(nt)) {
     for (Index r = 0; r < 2 * nc; ++r) {
       const auto k = static_cast<std::size_t>(r);
       Lp[k] = ring::to_common_denominator<R>(
-          m, [&](Index j) -> const Q& { return p.P(r, j); }, P.data() + r * m);
+          m, [&](Index j) -> const Q& { return p.P(r, j); }, P.row(r));
       const Mat<Q>& Jm = r < nc ? p.Jn : p.Jt;
       const Index i = r < nc ? r : r - nc;
-      const auto start = static_cast<Index>(Jcol.size());
-      Jstart[k] = start;
+      J.add_row();
       for (Index j = 0; j < nt; ++j)
-        if (sgn(Jm(i, j)) != 0) Jcol.push_back(j);
-      J.resize(Jcol.size());
+        if (sgn(Jm(i, j)) != 0) J.push(j, R(0));
+      const Index start = J.begin(r);
       Lj[k] = ring::to_common_denominator<R>(
-          static_cast<Index>(Jcol.size()) - start,
-          [&](Index t) -> const Q& { return Jm(i, Jcol[static_cast<std::size_t>(start + t)]); }, J.data() + start);
+          J.end(r) - start, [&](Index t) -> const Q& { return Jm(i, J.col(start + t)); }, J.values(r));
     }
-    Jstart.back() = static_cast<Index>(Jcol.size());
     Dmu = ring::to_common_denominator<R>(
         nc, [&](Index i) -> const Q& { return p.mu(i); }, mu.data());
     Dd = ring::to_common_denominator<R>(
@@ -73,19 +70,17 @@ struct IntegerData {
     Dt = ring::to_common_denominator<R>(
         nt, [&](Index j) -> const Q& { return p.theta_dot(j); }, theta.data());
   }
-  const R* P_row(Index r) const { return P.data() + r * m; }
   /// J[r] . x over the joints (times Lj_r: the row of [Jn; Jt] against x).
   R J_dot(Index r, const R* x) const {
     R sum(0);
-    for (Index t = Jstart[static_cast<std::size_t>(r)]; t < Jstart[static_cast<std::size_t>(r + 1)]; ++t)
-      sum = ring::add(sum, ring::mul(J[static_cast<std::size_t>(t)], x[Jcol[static_cast<std::size_t>(t)]]));
+    for (Index t = J.begin(r); t < J.end(r); ++t) sum = ring::add(sum, ring::mul(J.value(t), x[J.col(t)]));
     return sum;
   }
   /// out_j += J[r]_j c for every joint j (times Lj_r: c times the row of [Jn; Jt]).
   void J_scatter(Index r, const R& c, R* out) const {
-    for (Index t = Jstart[static_cast<std::size_t>(r)]; t < Jstart[static_cast<std::size_t>(r + 1)]; ++t) {
-      R& o = out[Jcol[static_cast<std::size_t>(t)]];
-      o = ring::add(o, ring::mul(J[static_cast<std::size_t>(t)], c));
+    for (Index t = J.begin(r); t < J.end(r); ++t) {
+      R& o = out[J.col(t)];
+      o = ring::add(o, ring::mul(J.value(t), c));
     }
   }
 };
@@ -109,7 +104,7 @@ void velocity_rows(const IntegerData<R>& g, const R* T, R* M, R* scale) {
   for (Index r = 0; r < 2 * g.nc; ++r) {
     const auto k = static_cast<std::size_t>(r);
     R* M_r = M + r * w;
-    const R* P_r = g.P_row(r);
+    const R* P_r = g.P.row(r);
     for (Index j = 0; j < g.m; ++j) M_r[j] = g.Lj[k] != 1 ? ring::mul(P_r[j], g.Lj[k]) : P_r[j];
     M_r[g.m] = ring::mul(g.Lp[k], g.J_dot(r, T));
     scale[r] = ring::mul(g.Lp[k], g.Lj[k]);
@@ -291,7 +286,7 @@ std::optional<exact::RationalVector> pattern_forces_in(const QuasistaticProblem&
   Index j = 0;
   for (Index i = 0; i < nc; ++i) {
     const ContactForce& f = contact[static_cast<std::size_t>(i)];
-    const R *Pn = g.P_row(i), *Pt = g.P_row(nc + i);
+    const R *Pn = g.P.row(i), *Pt = g.P.row(nc + i);
     if (f.kind == ContactForce::kEdge) {
       // P_n + sigma mu P_t = (Dmu Lp_t Pn + sigma Mu Lp_n Pt) / (Lp_n Lp_t Dmu)
       const R a = ring::mul(g.Dmu, Lp[nc + i]), b = ring::mul(ring::mul(R(f.sigma), Mu[i]), Lp[i]);
@@ -386,7 +381,7 @@ ConditionsCheck check_in(const QuasistaticProblem& p, const IntegerData<R>& g, c
   for (Index k = 0; k < nq; ++k) {
     R sum = ring::mul(ring::mul(LP, g.d[static_cast<std::size_t>(k)]), Df);
     for (Index r = 0; r < 2 * nc; ++r)
-      if (ring::sign(wF[r]) != 0) sum = ring::add(sum, ring::mul(g.P_row(r)[k], wF[r]));
+      if (ring::sign(wF[r]) != 0) sum = ring::add(sum, ring::mul(g.P.row(r)[k], wF[r]));
     if (ring::sign(sum) != 0) bad("(2) equilibrium row " + std::to_string(k) + " is not zero");
   }
   // (3) Jn^T c_n + Jt^T c_t = tau - g_man, over LJ Df: sum_r J[r]_j factor_r F_r = LJ tau_j.
@@ -410,7 +405,7 @@ ConditionsCheck check_in(const QuasistaticProblem& p, const IntegerData<R>& g, c
     // minus v_r, all over Du: times Lp_r Lj_r, Lj_r P[r] . Uq - Lp_r J[r] . Ut - Lp_r Lj_r v_r = 0.
     const auto residual = [&](Index r, const R& v) {
       const auto k = static_cast<std::size_t>(r);
-      const R a = ring::mul(g.Lj[k], dot(g.P_row(r), Uq, nq)), b = ring::mul(g.Lp[k], g.J_dot(r, Ut));
+      const R a = ring::mul(g.Lj[k], dot(g.P.row(r), Uq, nq)), b = ring::mul(g.Lp[k], g.J_dot(r, Ut));
       return ring::sub(ring::sub(a, b), ring::mul(ring::mul(g.Lp[k], g.Lj[k]), v));
     };
     const auto c = [i] { return " contact " + std::to_string(i); };

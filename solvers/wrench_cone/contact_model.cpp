@@ -3,8 +3,13 @@
 #include <cmath>
 #include <vector>
 
-#include "exact/fraction_free.h"
+#include "exact/int_matrix.h"
 #include "exact/ladder_numbers.h"
+
+// GCC 12 warns falsely that moving a boost::container::small_vector<std::int64_t, 64> (an IntMatrix's entries) out of
+// its inline storage reads past it (-Wstringop-overread, inlined from boost's memmove).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wstringop-overread"
 
 namespace contactcert::solvers {
 namespace {
@@ -16,13 +21,13 @@ namespace rg = exact::ring;
 // r = p - com; the torques D cross(r, n) = T_n and D cross(r, t) = T_t; the frame scale
 // lcm(den(T_n / D), den(T_t / D)) is D / g with g = gcd(T_n, T_t, D).
 template <class R>
-std::vector<R> jacobian_ring(const geometry::PlanarScene& scene) {
-  const std::size_t n = scene.fixels.size(), w = 2 * n;
-  std::vector<R> J(3 * w);
+exact::IntMatrix<R> jacobian_ring(const geometry::PlanarScene& scene) {
+  const auto n = static_cast<Eigen::Index>(scene.fixels.size());
+  exact::IntMatrix<R> J(3, 2 * n);
   auto lcm = [](const R& a, const R& b) { return rg::mul(rg::divexact(a, rg::gcd(a, b)), b); };
   R a, b, c, d, pn, pd, cn, cd, qn, qd, en, ed;
-  for (std::size_t i = 0; i < n; ++i) {
-    const geometry::ContactFrame& f = scene.fixels[i].frame;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const geometry::ContactFrame& f = scene.fixels[static_cast<std::size_t>(i)].frame;
     rg::from_rational(f.normal.x, a, b);
     rg::from_rational(f.normal.y, c, d);
     const R l = lcm(b, d);
@@ -39,43 +44,43 @@ std::vector<R> jacobian_ring(const geometry::PlanarScene& scene) {
     const R ry = rg::sub(rg::mul(qn, rg::divexact(D, qd)), rg::mul(en, rg::divexact(D, ed)));
     const R tn = rg::sub(rg::mul(rx, ny), rg::mul(ry, nx)), tt = rg::add(rg::mul(rx, nx), rg::mul(ry, ny));
     const R g = rg::gcd(rg::gcd(tn, tt), D), s = rg::divexact(D, g);
-    J[i] = rg::mul(nx, s);
-    J[w + i] = rg::mul(ny, s);
-    J[2 * w + i] = rg::divexact(tn, g);
-    J[n + i] = -rg::mul(ny, s);
-    J[w + n + i] = rg::mul(nx, s);
-    J[2 * w + n + i] = rg::divexact(tt, g);
+    J(0, i) = rg::mul(nx, s);
+    J(1, i) = rg::mul(ny, s);
+    J(2, i) = rg::divexact(tn, g);
+    J(0, n + i) = -rg::mul(ny, s);
+    J(1, n + i) = rg::mul(nx, s);
+    J(2, n + i) = rg::divexact(tt, g);
   }
   return J;
 }
 
-// B = J^T M^-1 and A = B J (eq. 6) with M^-1 = diag(lin, lin, rot), in the ring R; J is 3 x 2n
-// row-major, B and A come out row-major (A is symmetric).
+// B = J^T M^-1 (w x 3) and A = B J (w x w, symmetric; eq. 6) with M^-1 = diag(lin, lin, rot), in the ring R (an
+// exact ring, or a float type for the float model), for J 3 x w.
 template <class R>
-void products(const std::vector<R>& J, const R& lin, const R& rot, std::vector<R>& B, std::vector<R>& A) {
-  const std::size_t w = J.size() / 3;
+void products(const exact::IntMatrix<R>& J, const R& lin, const R& rot, exact::IntMatrix<R>& B,
+              exact::IntMatrix<R>& A) {
+  const Eigen::Index w = J.cols();
   const R m[3] = {lin, lin, rot};
-  std::vector<R> Jt(3 * w);  // rows of J^T
-  B.resize(3 * w);
-  for (std::size_t i = 0; i < w; ++i)
-    for (std::size_t k = 0; k < 3; ++k) {
-      Jt[3 * i + k] = J[k * w + i];
-      rg::mul(Jt[3 * i + k], m[k], B[3 * i + k]);
+  exact::IntMatrix<R> Jt(w, 3);
+  B = exact::IntMatrix<R>(w, 3);
+  for (Eigen::Index i = 0; i < w; ++i)
+    for (Eigen::Index k = 0; k < 3; ++k) {
+      Jt(i, k) = J(k, i);
+      rg::mul(Jt(i, k), m[k], B(i, k));
     }
-  A.resize(w * w);
-  for (std::size_t i = 0; i < w; ++i)
-    for (std::size_t j = i; j < w; ++j) {
-      rg::dot(&B[3 * i], &Jt[3 * j], 3, A[i * w + j]);
-      if (j != i) A[j * w + i] = A[i * w + j];
+  A = exact::IntMatrix<R>(w, w);
+  for (Eigen::Index i = 0; i < w; ++i)
+    for (Eigen::Index j = i; j < w; ++j) {
+      rg::dot(B.row(i), Jt.row(j), 3, A(i, j));
+      if (j != i) A(j, i) = A(i, j);
     }
 }
 
 }  // namespace
 
 Mat<Q> jacobian(const geometry::PlanarScene& scene) {
-  const auto w = static_cast<Eigen::Index>(2 * scene.fixels.size());
   return exact::with_exact_ring<Q>(
-      [&]<class R>() { return rg::IntegerMatrix(3, w, jacobian_ring<R>(scene)).to_field(); });
+      [&]<class R>() { return exact::FittedIntMatrix(jacobian_ring<R>(scene)).to_field(); });
 }
 
 template <class T>
@@ -90,12 +95,12 @@ ContactModel<T> contact_model(const geometry::PlanarScene& scene) {
       R lin, rot;
       rg::from_integer(inertia.get_num(), lin);
       rg::from_integer(inertia.get_den(), rot);
-      std::vector<R> J = jacobian_ring<R>(scene), B, A;
+      exact::IntMatrix<R> J = jacobian_ring<R>(scene), B, A;
       products<R>(J, lin, rot, B, A);
       ContactModel<T> out;
-      out.J = rg::IntegerMatrix(3, w, std::move(J));
-      out.B = rg::IntegerMatrix(w, 3, std::move(B));
-      out.A = rg::IntegerMatrix(w, w, std::move(A));
+      out.J = exact::FittedIntMatrix(std::move(J));
+      out.B = exact::FittedIntMatrix(std::move(B));
+      out.A = exact::FittedIntMatrix(std::move(A));
       return out;
     });
   } else {
@@ -110,14 +115,14 @@ ContactModel<T> contact_model(const geometry::PlanarScene& scene) {
       Jf.col(n + i) /= len;
     }
     const T rot = from_exact<T>(Q(inertia.get_den(), inertia.get_num()));
-    std::vector<T> J(static_cast<std::size_t>(3 * w)), B, A;
+    exact::IntMatrix<T> J(3, w), B, A;
     for (Eigen::Index k = 0; k < 3; ++k)
-      for (Eigen::Index i = 0; i < w; ++i) J[static_cast<std::size_t>(k * w + i)] = Jf(k, i);
+      for (Eigen::Index i = 0; i < w; ++i) J(k, i) = Jf(k, i);
     products<T>(J, T(1), rot, B, A);
     using RowMajor = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     m.J = std::move(Jf);
-    m.B = Eigen::Map<const RowMajor>(B.data(), w, 3);
-    m.A = Eigen::Map<const RowMajor>(A.data(), w, w);
+    m.B = Eigen::Map<const RowMajor>(B.row(0), w, 3);
+    m.A = Eigen::Map<const RowMajor>(A.row(0), w, w);
   }
   return m;
 }
@@ -128,3 +133,5 @@ template ContactModel<exact::Mpfr> contact_model<exact::Mpfr>(const geometry::Pl
 template ContactModel<exact::Interval> contact_model<exact::Interval>(const geometry::PlanarScene&);
 
 }  // namespace contactcert::solvers
+
+#pragma GCC diagnostic pop

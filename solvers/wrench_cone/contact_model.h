@@ -4,7 +4,7 @@
 
 #include <type_traits>
 
-#include "exact/fraction_free.h"
+#include "exact/int_matrix.h"
 #include "exact/number.h"
 #include "geometry/planar_scene.h"
 
@@ -15,9 +15,9 @@ using exact::Q;
 using exact::Vec;
 
 /// A matrix of the model over the ring of T: integers for the exact path (held in machine integers
-/// when they fit, exact/fraction_free.h), T itself for the float types (double, MPFR, intervals).
+/// when they fit, exact::FittedIntMatrix), T itself for the float types (double, MPFR, intervals).
 template <class T>
-using ModelMatrix = std::conditional_t<exact::NumberTraits<T>::is_exact, exact::ring::IntegerMatrix, Mat<T>>;
+using ModelMatrix = std::conditional_t<exact::NumberTraits<T>::is_exact, exact::FittedIntMatrix, Mat<T>>;
 
 /// A model matrix as a matrix over T.
 template <class T>

@@ -1,6 +1,6 @@
 // IntMatrix, the one fraction-free elimination: row echelon form with primitive rows, rank, kernel, make-primitive
 // and the unique solution (dense, and square with a sparse front end), in Int128 with the restart in GMP integers on
-// overflow.
+// overflow; its sparse form SparseIntMatrix.
 #include "exact/int_matrix.h"
 
 #include <gtest/gtest.h>
@@ -158,6 +158,29 @@ TEST(IntMatrix, Int128OverflowRestartsInGmpAndAgrees) {
   EXPECT_EQ(row_gcd(K, 0), 1);
   EXPECT_GT(sgn(K(0, 3)), 0);
   expect_kernel(A, K);
+}
+
+// The compressed rows of a dense matrix: its non-zero entries, row by row with columns ascending (an empty row
+// included), mapped from Int128 to GMP integers; dense() gives the matrix back.
+TEST(SparseIntMatrix, NonzerosInCompressedRowsAndBack) {
+  const IntMatrix<Int128> M = matrix<Int128>(3, 4, {0, -7, 0, 3, 0, 0, 0, 0, 5, 0, 0, -1});
+  const SparseIntMatrix<Z> S = SparseIntMatrix<Z>::nonzeros(M, [](Int128 x) { return ring::to_z(x); });
+  ASSERT_EQ(S.rows(), 3);
+  EXPECT_EQ(S.cols(), 4);
+  EXPECT_EQ(S.begin(0), 0);
+  EXPECT_EQ(S.end(0), 2);
+  EXPECT_EQ(S.begin(1), S.end(1));
+  EXPECT_EQ(S.end(2), 4);
+  const std::vector<std::pair<Index, long>> want = {{1, -7}, {3, 3}, {0, 5}, {3, -1}};
+  for (Index t = 0; t < 4; ++t) {
+    EXPECT_EQ(S.col(t), want[static_cast<std::size_t>(t)].first);
+    EXPECT_EQ(S.value(t), want[static_cast<std::size_t>(t)].second);
+  }
+  EXPECT_EQ(S.dense(), matrix<Z>(3, 4, {0, -7, 0, 3, 0, 0, 0, 0, 5, 0, 0, -1}));
+  SparseIntMatrix<Z> T(4);
+  T.add_row();
+  T.push(2, Z(9));
+  EXPECT_EQ(T.dense(), matrix<Z>(1, 4, {0, 0, 9, 0}));
 }
 
 }  // namespace
