@@ -23,7 +23,7 @@ set(CONTACTCERT_PUBLIC_HEADERS
     solvers/ucp/problem.h solvers/ucp/solve.h solvers/ucp/generate.h solvers/ucp/certificate.h)
 set(CONTACTCERT_DETAIL_HEADERS
     exact/lp_problem.h exact/double_description.h
-    exact/strict_feasibility.h exact/integer_system.h exact/fraction_free.h exact/float_ring.h
+    exact/strict_feasibility.h exact/integer_system.h exact/int_matrix.h exact/fraction_free.h exact/float_ring.h
     exact/rational_vector.h
     geometry/projection.h geometry/sphere_arrangement.h
     solvers/wrench_cone/cone_form.h solvers/wrench_cone/contact_model.h
