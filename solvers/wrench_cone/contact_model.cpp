@@ -7,9 +7,11 @@
 #include "exact/ladder_numbers.h"
 
 // GCC 12 warns falsely that moving a boost::container::small_vector<std::int64_t, 64> (an IntMatrix's entries) out of
-// its inline storage reads past it (-Wstringop-overread, inlined from boost's memmove).
+// its inline storage reads past it (-Wstringop-overread, inlined from boost's memmove). Clang has no such warning.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wstringop-overread"
+#endif
 
 namespace contactcert::solvers {
 namespace {
@@ -134,4 +136,6 @@ template ContactModel<exact::Interval> contact_model<exact::Interval>(const geom
 
 }  // namespace contactcert::solvers
 
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
