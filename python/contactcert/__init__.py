@@ -12,12 +12,12 @@ from ._assembly import Assembly, AssemblyStability, AssemblyUcp
 from ._core import BudgetExceeded, __version__
 from ._design import Converted, Design, convert, design
 from ._motion import Motion, Simulation, Step
-from ._results import CheckResult, Cone, Finger, Insertion, Modes, Region, Stability, UcpResult
+from ._results import CheckResult, Cone, Contact, Finger, Insertion, Modes, Region, Stability, UcpResult
 from ._certificate import Certificate, check
 from ._scene import Scene, Snap
 from ._ucp import Ucp, generate_random, generate_reduction
 
-__all__ = ["BudgetExceeded", "Certificate", "CheckResult", "Cone", "Converted", "Design", "Finger", "Insertion", "Region",
-           "Scene", "Snap", "Modes", "Stability", "Ucp", "UcpResult", "check", "convert", "design", "generate_random",
-           "generate_reduction", "Motion", "Simulation", "Step"]
+__all__ = ["BudgetExceeded", "Certificate", "CheckResult", "Cone", "Contact", "Converted", "Design", "Finger",
+           "Insertion", "Region", "Scene", "Snap", "Modes", "Stability", "Ucp", "UcpResult", "check", "convert",
+           "design", "generate_random", "generate_reduction", "Motion", "Simulation", "Step"]
 __all__ += ["Assembly", "AssemblyStability", "AssemblyUcp"]

@@ -7,7 +7,7 @@ import copy
 import json
 from collections.abc import Callable
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from ._numbers import exact, floats
 
@@ -106,6 +106,37 @@ class Cone(Result):
                 f"{len(self.lines)} lines, {len(self.open_faces)} open faces)")
 
 
+class Contact(NamedTuple):
+    """One touching fixel's contact force (frames as written, docs/formats.md section 3): its point, the frame it
+    is measured in (the normal as the scene writes it, t = (-n_y, n_x)), the components c_n, c_t, the world force
+    c_n n + c_t t and its torque about the centre of mass. Fractions (floats on the float path)."""
+
+    fixel: int
+    point: tuple[Any, ...]
+    normal: tuple[Any, ...]
+    tangent: tuple[Any, ...]
+    c_n: Any
+    c_t: Any
+    force: tuple[Any, ...]
+    torque: Any
+
+
+def _number(x: Any) -> Any:
+    return Fraction(x) if isinstance(x, str) else x
+
+
+def _contacts(items: list[dict[str, Any]] | None) -> tuple[Contact, ...] | None:
+    """The --json object's per-fixel contact forces as Contacts."""
+    if items is None:
+        return None
+
+    def vec(v: list[Any]) -> tuple[Any, ...]:
+        return tuple(_number(x) for x in v)
+
+    return tuple(Contact(c["fixel"], vec(c["point"]), vec(c["normal"]), vec(c["tangent"]), _number(c["c_n"]),
+                         _number(c["c_t"]), vec(c["force"]), _number(c["torque"])) for c in items)
+
+
 class Stability(Result):
     """Strong stability under one wrench (Balkcom-Trinkle 2002, section 7): the verdict with a resting and
     a moving solution where they exist."""
@@ -131,6 +162,17 @@ class Stability(Result):
         if f is None:
             return None
         return exact(f) if self._data["arith"] != "float" else tuple(f)
+
+    @property
+    def contacts(self) -> tuple[Contact, ...] | None:
+        """The resting solution's contact forces, one Contact per touching fixel, or None."""
+        return _contacts(self._data["witness"].get("resting_contacts"))
+
+    @property
+    def moving_contacts(self) -> tuple[Contact, ...] | None:
+        """The moving solution's contact forces, one Contact per touching fixel, or None."""
+        m = self._data["witness"].get("moving")
+        return _contacts(m["contacts"]) if m else None
 
     @property
     def moving_mode(self) -> str | None:

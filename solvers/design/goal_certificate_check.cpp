@@ -69,11 +69,8 @@ std::string push_mismatch(const geometry::Workpiece& w, const geometry::Point2& 
 
 GoalCertificateCheck check_goal_certificate(const exact::JsonInput& c) {
   c.expect_keys({"kind", "problem_sha256", "wrench", "push", "outside", "scene"});
-  const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
-  if (c.at("problem_sha256").string() != embedded.canonical_sha256())
-    return {false, "problem_sha256 is not the digest of the embedded scene"};
-  // The frames are the checker's own (frame_check.h), never the solvers'.
-  const frame_check::CheckedSceneRead read = frame_check::read_checked_scene(embedded);
+  // The frames are the checker's own (frame_check.h), never the solvers'; the digest is checked first.
+  const frame_check::CheckedSceneRead read = frame_check::read_embedded_scene(c);
   if (!read.violation.empty()) return {false, read.violation};
   const geometry::PlanarScene& scene = read.scene;
   const std::size_t k = scene.fixels.size();

@@ -97,11 +97,8 @@ std::string modes_certificate(const std::string& scene_text, const ContactModes&
 
 ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
   c.expect_keys({"kind", "scene", "problem_sha256", "table2", "unions", "modes", "dead"});
-  const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
-  if (c.at("problem_sha256").string() != embedded.canonical_sha256())
-    return {false, "problem_sha256 is not the digest of the embedded scene", 0, 0};
-  // The frames are the checker's own (frame_check.h), never the solvers'.
-  const frame_check::CheckedSceneRead read = frame_check::read_checked_scene(embedded);
+  // The frames are the checker's own (frame_check.h), never the solvers'; the digest is checked first.
+  const frame_check::CheckedSceneRead read = frame_check::read_embedded_scene(c);
   if (!read.violation.empty()) return {false, read.violation, 0, 0};
   const geometry::PlanarScene& scene = read.scene;
   const std::string table2 = c.at("table2").string();

@@ -213,4 +213,12 @@ CheckedSceneRead read_checked_scene(const exact::JsonInput& root) {
   return out;
 }
 
+CheckedSceneRead read_embedded_scene(const exact::JsonInput& certificate) {
+  const exact::JsonInput embedded =
+      exact::JsonInput::parse(certificate.at("scene").string(), certificate.file() + " (embedded scene)");
+  if (certificate.at("problem_sha256").string() != embedded.canonical_sha256())
+    return {{}, "problem_sha256 is not the digest of the embedded scene"};
+  return read_checked_scene(embedded);
+}
+
 }  // namespace contactcert::solvers::frame_check

@@ -41,4 +41,8 @@ struct CheckedSceneRead {
 /// Reads the embedded scene `root` with the checker's frames. Throws exact::InputError on a malformed scene.
 CheckedSceneRead read_checked_scene(const exact::JsonInput& root);
 
+/// The scene a certificate embeds as text under "scene", read as read_checked_scene reads it, once its
+/// "problem_sha256" is found to be the digest of that text (`violation` says so otherwise).
+CheckedSceneRead read_embedded_scene(const exact::JsonInput& certificate);
+
 }  // namespace contactcert::solvers::frame_check

@@ -58,11 +58,8 @@ std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g
 
 StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& c) {
   c.expect_keys({"kind", "verdict", "wrench", "scene", "problem_sha256", "resting", "moving", "proofs"});
-  const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
-  if (c.at("problem_sha256").string() != embedded.canonical_sha256())
-    return {false, "problem_sha256 is not the digest of the embedded scene"};
-  // The frames are the checker's own (frame_check.h), never the solvers'.
-  const frame_check::CheckedSceneRead read = frame_check::read_checked_scene(embedded);
+  // The frames are the checker's own (frame_check.h), never the solvers'; the digest is checked first.
+  const frame_check::CheckedSceneRead read = frame_check::read_embedded_scene(c);
   if (!read.violation.empty()) return {false, read.violation};
   const geometry::PlanarScene& scene = read.scene;
   const std::size_t k = touching_scene(scene).fixels.size();

@@ -71,11 +71,8 @@ ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
     c.expect_keys({"kind", "problem_sha256", "mode", "motzkin", "scene"});
   else
     c.expect_keys({"kind", "problem_sha256", "mode", "wrench", "z", "z_names", "contacts", "acceleration", "scene"});
-  const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
-  if (c.at("problem_sha256").string() != embedded.canonical_sha256())
-    return {false, "problem_sha256 is not the digest of the embedded scene"};
-  // The frames are the checker's own (frame_check.h), never the solvers'.
-  const frame_check::CheckedSceneRead read = frame_check::read_checked_scene(embedded);
+  // The frames are the checker's own (frame_check.h), never the solvers'; the digest is checked first.
+  const frame_check::CheckedSceneRead read = frame_check::read_embedded_scene(c);
   if (!read.violation.empty()) return {false, read.violation};
   const geometry::PlanarScene& scene = read.scene;
   std::vector<bool> touching;
