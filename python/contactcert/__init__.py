@@ -12,8 +12,8 @@ from ._assembly import Assembly, AssemblyStability, AssemblyUcp
 from ._core import BudgetExceeded, __version__
 from ._design import Converted, Design, convert, design
 from ._motion import Motion, Simulation, Step
-from ._results import CheckResult, Cone, Contact, Finger, Insertion, Modes, Region, Stability, UcpResult
-from ._certificate import Certificate, check
+from ._results import Certificate, CheckResult, Cone, Contact, Finger, Insertion, Modes, Region, Stability, UcpResult
+from ._certificate import check
 from ._scene import Scene, Snap
 from ._ucp import Ucp, generate_random, generate_reduction
 

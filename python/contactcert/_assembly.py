@@ -14,7 +14,7 @@ from ._results import Result, Vector
 from ._source import FromSource, Path
 
 if TYPE_CHECKING:
-    from ._certificate import Certificate
+    from ._results import Certificate
 
 BudgetExceeded = _core.BudgetExceeded
 
@@ -116,7 +116,7 @@ class Assembly(FromSource[_core.Assembly]):
         """`contactcert assembly FILE`: the verdict from rest with its witness; `certificate` is the file the
         evidence is written to. A budget that runs out first (max_nodes, default 2^20 prefixes, or time_limit)
         raises BudgetExceeded with the result as its `result`."""
-        from ._certificate import Certificate
+        from ._results import Certificate
 
         choice(arith, ARITHS, "--arith")
         time_limit = seconds(time_limit)
@@ -132,7 +132,7 @@ class Assembly(FromSource[_core.Assembly]):
             max_bases: int | None = None, certificate: Path | None = None) -> AssemblyUcp:
         """`contactcert assembly FILE --ucp`: solvable or jammed; an `unknown` status (a budget ran out) raises
         BudgetExceeded with the result as its `result`."""
-        from ._certificate import Certificate
+        from ._results import Certificate
 
         choice(arith, ARITHS, "--arith")
         time_limit = seconds(time_limit)

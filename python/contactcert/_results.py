@@ -7,14 +7,14 @@ import copy
 import json
 from collections.abc import Callable
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple, Protocol
 
+from . import _core
 from ._numbers import exact, floats
+from ._source import Path
 
 if TYPE_CHECKING:
     from numpy.typing import NDArray
-
-    from ._certificate import Certificate
 
 Vector = tuple[Fraction, ...]
 Directions = tuple[tuple[int, ...], ...]
@@ -312,3 +312,44 @@ class CheckResult(Result):
 
     def __repr__(self) -> str:
         return f"CheckResult({self.kind}, {'VALID' if self.valid else 'INVALID'}: {self.reason})"
+
+
+class Problem(Protocol):
+    """What a certificate can be checked against (`check --problem FILE`): a Scene, a Ucp or an Assembly, by the
+    text it was read from and its name."""
+
+    def _problem_source(self) -> tuple[str, str]: ...
+
+
+def check_text(text: str, name: str, problem: Problem | None = None) -> CheckResult:
+    """The checker module's verdict (queries/check.h, the one the CLI's `check` calls) on a certificate's text."""
+    if problem is not None and not hasattr(problem, "_problem_source"):
+        raise TypeError(f"problem: expected a Scene or a Ucp, found {type(problem).__name__}")
+    problem_text, problem_name = ("", "") if problem is None else problem._problem_source()
+    data, lines = _core.check(text, name, problem_text, problem_name)
+    return CheckResult(json.loads(data), lines)
+
+
+class Certificate:
+    """A certificate file's text (`contactcert check` verifies it); `path` is where it was written, if anywhere."""
+
+    def __init__(self, text: str, path: str = "") -> None:
+        self.text = text
+        self.path = path
+
+    def to_dict(self) -> dict[str, Any]:
+        return json.loads(self.text)
+
+    @property
+    def kind(self) -> str:
+        return self.to_dict()["kind"]
+
+    def save(self, path: Path) -> None:
+        with open(path, "w") as f:
+            f.write(self.text)
+
+    def check(self, problem: Problem | None = None) -> CheckResult:
+        return check_text(self.text, self.path or "<certificate>", problem)
+
+    def __repr__(self) -> str:
+        return f"Certificate({self.kind}{', ' + self.path if self.path else ''})"

@@ -9,7 +9,7 @@ from fractions import Fraction
 from typing import Any, Literal, Union
 
 from . import _core
-from ._certificate import Certificate
+from ._results import Certificate
 from ._numbers import Exact, ExactVector, vector_text
 from ._options import ARITHS, LONG_MAX, Arith, choice, seconds, whole_number
 from ._results import Cone, Finger, Insertion, Modes, Region, Stability
@@ -126,7 +126,7 @@ class Scene(FromSource[_core.Scene]):
         choice(arith, ARITHS, "--arith")
         choice(table2, ("strict", "printed"), "--table2")
         path = "" if certificate is None else os.fspath(certificate)
-        from ._certificate import Certificate
+        from ._results import Certificate
 
         data, text = self._core.cone(mode, route, arith, table2, path, seconds(time_limit))
         svg = None if arith == "float" else (lambda: self._core.cone_svg(mode, route, table2))
@@ -137,7 +137,7 @@ class Scene(FromSource[_core.Scene]):
         """`contactcert stability FILE --wrench fx,fy,tz [--margin] [--certificate PATH] [--time-limit S]`:
         strongly stable, weakly stable or unstable; `certificate` is the file the evidence is written to. Past
         `time_limit` seconds (0 = none; the verdict and the margin together) raises BudgetExceeded."""
-        from ._certificate import Certificate
+        from ._results import Certificate
 
         choice(arith, ARITHS, "--arith")
         time_limit = seconds(time_limit)
@@ -169,7 +169,7 @@ class Scene(FromSource[_core.Scene]):
         choice(arith, ARITHS, "--arith")
         nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
         count = None if max_modes is None else whole_number(max_modes, 1, LONG_MAX, "--max-modes")
-        from ._certificate import Certificate
+        from ._results import Certificate
 
         path = "" if certificate is None else os.fspath(certificate)
         data, text = self._core.modes(bool(kinematic), table2, bool(unions), arith, path, nodes, count,

@@ -8,7 +8,7 @@ import os
 from typing import Any, Literal
 
 from . import _core
-from ._certificate import Certificate
+from ._results import Certificate
 from ._numbers import Exact, number_text
 from ._options import ARITHS, LONG_MAX, UINT64_MAX, Arith, choice, seconds, whole_number
 from ._results import UcpResult
