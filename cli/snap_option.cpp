@@ -20,6 +20,4 @@ queries::SceneInput read_scene(const std::string& file, const std::string& snap)
   return in;
 }
 
-std::string read_scene_text(const std::string& file, const std::string& snap) { return read_scene(file, snap).text; }
-
 }  // namespace contactcert::cli

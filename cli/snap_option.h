@@ -18,7 +18,4 @@ void add_snap_option(CLI::App& sub, std::string& snap);
 /// ("snapped FIELD: ORIGINAL -> SNAPPED (moved ~D)").
 queries::SceneInput read_scene(const std::string& file, const std::string& snap);
 
-/// The text of that scene (read_scene's text).
-std::string read_scene_text(const std::string& file, const std::string& snap);
-
 }  // namespace contactcert::cli
