@@ -11,15 +11,16 @@
 #include <vector>
 
 #include "exact/input_error.h"
+#include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/snap.h"
 #include "python/bindings.h"
 #include "queries/options.h"
+#include "queries/scene_input.h"
 #include "runtime/memory.h"
 
 namespace py = pybind11;
 using namespace contactcert;
-using exact::Q;
 using python::Release;
 using python::Scene;
 
@@ -59,10 +60,8 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "snap_scene",
       [](const std::string& text, const std::string& name, const std::string& tol_text) {
-        Q tol;
-        if (!exact::parse_rational_into(tol_text, tol) || sgn(tol) <= 0)
-          throw exact::InputError(name, "snap", "a tolerance > 0 such as 1e-9, got " + exact::quoted_excerpt(tol_text));
-        const geometry::SnappedScene s = geometry::snap_planar_scene(text, name, tol);
+        const geometry::SnappedScene s =
+            geometry::snap_planar_scene(text, name, queries::parse_snap_tolerance(tol_text, name, "snap"));
         std::vector<std::tuple<std::string, std::string, std::string, std::string>> snaps;
         for (const geometry::Snap& x : s.snaps)
           snaps.emplace_back(x.field, x.original, x.snapped, exact::to_string(x.distance_squared));

@@ -7,14 +7,19 @@
 
 namespace contactcert::queries {
 
+exact::Q parse_snap_tolerance(const std::string& text, const std::string& file, const std::string& field) {
+  exact::Q tol;
+  if (!exact::parse_rational_into(text, tol) || sgn(tol) <= 0)
+    throw exact::InputError(file, field, "a tolerance > 0 such as 1e-9, got " + exact::quoted_excerpt(text));
+  return tol;
+}
+
 SceneInput parse_scene(const std::string& text, const std::string& name, const std::string& snap_tolerance,
                        const std::string& snap_field) {
   SceneInput in{name, text, {}, {}};
   if (!snap_tolerance.empty()) {
-    exact::Q tol;
-    if (!exact::parse_rational_into(snap_tolerance, tol) || sgn(tol) <= 0)
-      throw exact::InputError(snap_field == "--snap" ? "command line" : name, snap_field,
-                              "a tolerance > 0 such as 1e-9, got " + exact::quoted_excerpt(snap_tolerance));
+    const exact::Q tol =
+        parse_snap_tolerance(snap_tolerance, snap_field == "--snap" ? "command line" : name, snap_field);
     geometry::SnappedScene s = geometry::snap_planar_scene(text, name, tol);
     in.text = std::move(s.text);
     in.snaps = std::move(s.snaps);

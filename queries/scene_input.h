@@ -18,6 +18,9 @@ struct SceneInput {
   std::vector<geometry::Snap> snaps;  ///< what snapping moved (empty without a tolerance)
 };
 
+/// A snap tolerance: the exact number > 0 in `text` (e.g. "1e-9"); InputError naming `file` and `field` otherwise.
+exact::Q parse_snap_tolerance(const std::string& text, const std::string& file, const std::string& field);
+
 /// The scene in `text` named `name`; with `snap_tolerance` (a number > 0 as text, "" = none) snapped first.
 /// InputError naming the file and field for a bad scene, naming `snap_field` for a bad tolerance.
 SceneInput parse_scene(const std::string& text, const std::string& name, const std::string& snap_tolerance = "",
