@@ -6,18 +6,8 @@
 namespace contactcert::queries {
 namespace {
 
-using exact::Mat;
-using exact::Q;
-
-nlohmann::json float_rows(const Mat<double>& M) {
-  nlohmann::json a = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < M.rows(); ++i) {
-    nlohmann::json row = nlohmann::json::array();
-    for (Eigen::Index j = 0; j < M.cols(); ++j) row.push_back(M(i, j));
-    a.push_back(std::move(row));
-  }
-  return a;
-}
+/// A float matrix as rows of doubles (approx_json), in the sorted-key JSON of the cone formats.
+nlohmann::json float_rows(const exact::Mat<double>& M) { return nlohmann::json(approx_json(M)); }
 
 const char* form_name(geometry::ConeInput::Form f) { return f == geometry::ConeInput::Form::kSpan ? "span" : "face"; }
 
