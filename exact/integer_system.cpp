@@ -6,31 +6,50 @@
 
 namespace contactcert::exact {
 
-namespace {
-
 using Index = Eigen::Index;
-
-/// The rows of [A_S | b] for the columns S = column(0 .. n-1) of A in the ring R, each multiplied by the lcm
-/// of its denominators (throws RingOverflow if a number does not fit R).
-template <class R, class Column>
-void scale_rows(const Mat<Q>& A, const Vec<Q>& b, Index n, Column column, IntegerSystem<R>& s) {
-  const Index m = A.rows();
-  s.A = IntMatrix<R>(m, n);
-  s.b.resize(static_cast<std::size_t>(m));
-  s.row_scale.resize(static_cast<std::size_t>(m));
-  std::vector<R> row(static_cast<std::size_t>(n + 1));
-  for (Index i = 0; i < m; ++i) {
-    s.row_scale[static_cast<std::size_t>(i)] = ring::to_common_denominator<R>(
-        n + 1, [&](Index j) -> const Q& { return j < n ? A(i, column(j)) : b(i); }, row.data());
-    std::move(row.begin(), row.begin() + n, s.A.row(i));
-    s.b[static_cast<std::size_t>(i)] = std::move(row[static_cast<std::size_t>(n)]);
-  }
-}
-
-}  // namespace
 
 LpProblem<double> IntegerLp::to_double(const std::vector<bool>& is_free) const {
   return convert<double>(is_free, [](std::int64_t v) { return static_cast<double>(v); });
+}
+
+RationalRows rational_rows(const Mat<Q>& A, const Vec<Q>& b) {
+  RationalRows P{SparseIntMatrix<Z>(A.cols()), std::vector<Z>(static_cast<std::size_t>(A.rows())), b};
+  std::vector<Z> row(static_cast<std::size_t>(A.cols()));
+  for (Index i = 0; i < A.rows(); ++i) {
+    P.den[static_cast<std::size_t>(i)] = ring::to_common_denominator<Z>(
+        A.cols(), [&](Index j) -> const Q& { return A(i, j); }, row.data());
+    P.A.add_row();
+    for (Index j = 0; j < A.cols(); ++j)
+      if (sgn(row[static_cast<std::size_t>(j)]) != 0) P.A.push(j, std::move(row[static_cast<std::size_t>(j)]));
+  }
+  return P;
+}
+
+template <class R>
+IntegerSystem<R> integer_system(const RationalRows& P) {
+  // Row i of [A | b] is [A[i] | L_b b_i] / den_i over den_i and L_b the denominator of b_i: over L = lcm(den_i, L_b),
+  // A[i] (L / den_i) and num(b_i) (L / L_b), as ring::to_common_denominator makes the rational row.
+  IntegerSystem<R> s;
+  s.A = IntMatrix<R>(P.rows(), P.cols());
+  s.b.resize(static_cast<std::size_t>(P.rows()));
+  s.row_scale.resize(static_cast<std::size_t>(P.rows()));
+  R den, den_b, f;
+  for (Index i = 0; i < P.rows(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    ring::from_integer(P.den[k], den);
+    ring::from_integer(P.b(i).get_den(), den_b);
+    R& L = s.row_scale[k];
+    L = ring::lcm(den, den_b);
+    f = ring::divexact(L, den);
+    for (Index t = P.A.begin(i); t < P.A.end(i); ++t) {
+      R& a = s.A(i, P.A.col(t));
+      ring::from_integer(P.A.value(t), a);
+      if (f != 1) a = ring::mul(a, f);
+    }
+    ring::from_integer(P.b(i).get_num(), s.b[k]);
+    if (L != den_b) s.b[k] = ring::mul(s.b[k], ring::divexact(L, den_b));
+  }
+  return s;
 }
 
 std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem) {
@@ -38,8 +57,7 @@ std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem) {
   const Index n = problem.cols();
   out.c.assign(static_cast<size_t>(n), 0);
   try {
-    scale_rows(
-        problem.A, problem.b, n, [](Index j) { return j; }, out);
+    static_cast<IntegerSystem<std::int64_t>&>(out) = integer_system<std::int64_t>(rational_rows(problem.A, problem.b));
     if (problem.c.size() > 0)
       out.objective_scale = ring::to_common_denominator<std::int64_t>(
           n, [&](Index j) -> const Q& { return problem.c(j); }, out.c.data());
@@ -47,23 +65,6 @@ std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem) {
     return std::nullopt;
   }
   return out;
-}
-
-template <class R>
-IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b) {
-  IntegerSystem<R> s;
-  scale_rows(
-      A, b, A.cols(), [](Index j) { return j; }, s);
-  return s;
-}
-
-template <class R>
-IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b, const std::vector<Index>& columns) {
-  IntegerSystem<R> s;
-  scale_rows(
-      A, b, static_cast<Index>(columns.size()), [&columns](Index j) { return columns[static_cast<std::size_t>(j)]; },
-      s);
-  return s;
 }
 
 template <class R>
@@ -90,10 +91,10 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s) {
 }
 
 #define CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(R)                                                        \
-  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                             \
-  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Index>&);  \
+  template IntegerSystem<R> integer_system<R>(const RationalRows&);                                      \
   template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Index>&); \
   template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&);
+template IntegerSystem<std::int64_t> integer_system<std::int64_t>(const RationalRows&);
 CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(Int128)
 CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(Z)
 #undef CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE
