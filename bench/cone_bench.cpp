@@ -259,25 +259,10 @@ std::vector<long> exact_facets(const std::vector<SpanCone<Q>>& cones) {
   return f;
 }
 
-void BM_ours_float(benchmark::State& state) {
-  const auto cones = workload(state).spans;
-  if (cones.empty()) return state.SkipWithError("span families only");
-  const auto truth = exact_facets(cones);
-  std::vector<SpanCone<double>> dc;
-  for (const auto& c : cones)
-    dc.push_back(SpanCone<double>::from_rows(c.dim, contactcert::exact::to_double(c.rays), Mat<double>(0, c.dim)));
-  std::vector<bool> wrong(dc.size(), false);
-  size_t i = 0;
-  for (auto _ : state) {
-    const size_t k = i++ % dc.size();
-    auto F = contactcert::geometry::to_face(dc[k]);
-    if (F.inequalities.rows() != truth[k]) wrong[k] = true;
-    benchmark::DoNotOptimize(F);
-  }
-  state.counters["wrong_of_20"] = static_cast<double>(std::count(wrong.begin(), wrong.end(), true));
-}
-
-void BM_cdd_double(benchmark::State& state) {
+// A float conversion of the span families timed cone by cone: `wrong_of_20` counts the cones whose facet count
+// differs from the exact one, or whose conversion gave up (cddlib's numerical inconsistency).
+template <class ToFace>
+void run_float(benchmark::State& state, ToFace to_face) {
   const auto cones = workload(state).spans;
   if (cones.empty()) return state.SkipWithError("span families only");
   const auto truth = exact_facets(cones);
@@ -289,14 +274,22 @@ void BM_cdd_double(benchmark::State& state) {
   for (auto _ : state) {
     const size_t k = i++ % dc.size();
     try {
-      auto F = contactcert::reference::cddf_to_face(dc[k]);
+      auto F = to_face(dc[k]);
       if (F.inequalities.rows() != truth[k]) wrong[k] = true;
       benchmark::DoNotOptimize(F);
     } catch (const std::runtime_error&) {
-      wrong[k] = true;  // cddlib's float conversion gave up (numerical inconsistency)
+      wrong[k] = true;
     }
   }
   state.counters["wrong_of_20"] = static_cast<double>(std::count(wrong.begin(), wrong.end(), true));
+}
+
+void BM_ours_float(benchmark::State& state) {
+  run_float(state, [](const SpanCone<double>& c) { return contactcert::geometry::to_face(c); });
+}
+
+void BM_cdd_double(benchmark::State& state) {
+  run_float(state, [](const SpanCone<double>& c) { return contactcert::reference::cddf_to_face(c); });
 }
 
 void sizes(benchmark::internal::Benchmark* b) {

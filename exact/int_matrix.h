@@ -5,7 +5,7 @@
 // in the float rings (double, MPFR floats, intervals). Row-major, on the stack up to 64 entries (the UCP's systems are
 // that small and solved by the thousand). Its sparse form, SparseIntMatrix (compressed rows), holds the rows that are
 // mostly zero (the UCP's X and Y, the contact Jacobians). Rational rows are held as integer rows with one scale per row
-// (row i = integer row i / scale_i: IntegerSystem, the UCP's IntegerPolyhedron). Instantiated in int_matrix.cpp.
+// (row i = integer row i / scale_i: IntegerSystem, RationalRows). Instantiated in int_matrix.cpp.
 #pragma once
 
 #include <boost/container/small_vector.hpp>

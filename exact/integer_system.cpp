@@ -6,40 +6,81 @@
 
 namespace contactcert::exact {
 
-namespace {
-
 using Index = Eigen::Index;
-
-/// The rows of [A_S | b] for the columns S = column(0 .. n-1) of A in the ring R, each multiplied by the lcm
-/// of its denominators (throws RingOverflow if a number does not fit R).
-template <class R, class Column>
-void scale_rows(const Mat<Q>& A, const Vec<Q>& b, Index n, Column column, IntegerSystem<R>& s) {
-  const Index m = A.rows();
-  s.A = IntMatrix<R>(m, n);
-  s.b.resize(static_cast<std::size_t>(m));
-  s.row_scale.resize(static_cast<std::size_t>(m));
-  std::vector<R> row(static_cast<std::size_t>(n + 1));
-  for (Index i = 0; i < m; ++i) {
-    s.row_scale[static_cast<std::size_t>(i)] = ring::to_common_denominator<R>(
-        n + 1, [&](Index j) -> const Q& { return j < n ? A(i, column(j)) : b(i); }, row.data());
-    std::move(row.begin(), row.begin() + n, s.A.row(i));
-    s.b[static_cast<std::size_t>(i)] = std::move(row[static_cast<std::size_t>(n)]);
-  }
-}
-
-}  // namespace
 
 LpProblem<double> IntegerLp::to_double(const std::vector<bool>& is_free) const {
   return convert<double>(is_free, [](std::int64_t v) { return static_cast<double>(v); });
 }
 
+namespace {
+
+/// The rows of A in the ring S (std::int64_t: throws RingOverflow if a number does not fit; Z): row i over its least
+/// common denominator den[i], its non-zero entries.
+template <class S>
+void integer_rows(const Mat<Q>& A, SparseIntMatrix<S>& rows, std::vector<S>& den) {
+  rows = SparseIntMatrix<S>(A.cols());
+  den.resize(static_cast<std::size_t>(A.rows()));
+  std::vector<S> row(static_cast<std::size_t>(A.cols()));
+  for (Index i = 0; i < A.rows(); ++i) {
+    den[static_cast<std::size_t>(i)] = ring::to_common_denominator<S>(
+        A.cols(), [&](Index j) -> const Q& { return A(i, j); }, row.data());
+    rows.add_row();
+    for (Index j = 0; j < A.cols(); ++j)
+      if (ring::sign(row[static_cast<std::size_t>(j)]) != 0) rows.push(j, std::move(row[static_cast<std::size_t>(j)]));
+  }
+}
+
+/// The one scaling, from integer rows in S to R: row i of [A | b] is [A[i] | L_b b_i] / den_i over den_i and L_b the
+/// denominator of b_i: over L = lcm(den_i, L_b), A[i] (L / den_i) and num(b_i) (L / L_b), as
+/// ring::to_common_denominator makes the rational row.
+template <class R, class S>
+IntegerSystem<R> scaled(const SparseIntMatrix<S>& A, const std::vector<S>& den_of, const Vec<Q>& b) {
+  IntegerSystem<R> s;
+  s.A = IntMatrix<R>(A.rows(), A.cols());
+  s.b.resize(static_cast<std::size_t>(A.rows()));
+  s.row_scale.resize(static_cast<std::size_t>(A.rows()));
+  R den, den_b, f;
+  for (Index i = 0; i < A.rows(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    ring::from_integer(den_of[k], den);
+    ring::from_integer(b(i).get_den(), den_b);
+    R& L = s.row_scale[k];
+    L = ring::lcm(den, den_b);
+    f = ring::divexact(L, den);
+    for (Index t = A.begin(i); t < A.end(i); ++t) {
+      R& a = s.A(i, A.col(t));
+      ring::from_integer(A.value(t), a);
+      if (f != 1) a = ring::mul(a, f);
+    }
+    ring::from_integer(b(i).get_num(), s.b[k]);
+    if (L != den_b) s.b[k] = ring::mul(s.b[k], ring::divexact(L, den_b));
+  }
+  return s;
+}
+
+}  // namespace
+
+RationalRows rational_rows(const Mat<Q>& A, const Vec<Q>& b) {
+  RationalRows P{{}, {}, b};
+  integer_rows<Z>(A, P.A, P.den);
+  return P;
+}
+
+template <class R>
+IntegerSystem<R> integer_system(const RationalRows& P) {
+  return scaled<R>(P.A, P.den, P.b);
+}
+
+// The LP's rows in 64 bits from the start (no GMP integer on the way: the verified LP builds one per LP).
 std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem) {
   IntegerLp out;
   const Index n = problem.cols();
   out.c.assign(static_cast<size_t>(n), 0);
   try {
-    scale_rows(
-        problem.A, problem.b, n, [](Index j) { return j; }, out);
+    SparseIntMatrix<std::int64_t> rows;
+    std::vector<std::int64_t> den;
+    integer_rows(problem.A, rows, den);
+    static_cast<IntegerSystem<std::int64_t>&>(out) = scaled<std::int64_t>(rows, den, problem.b);
     if (problem.c.size() > 0)
       out.objective_scale = ring::to_common_denominator<std::int64_t>(
           n, [&](Index j) -> const Q& { return problem.c(j); }, out.c.data());
@@ -47,23 +88,6 @@ std::optional<IntegerLp> integer_lp(const LpProblem<Q>& problem) {
     return std::nullopt;
   }
   return out;
-}
-
-template <class R>
-IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b) {
-  IntegerSystem<R> s;
-  scale_rows(
-      A, b, A.cols(), [](Index j) { return j; }, s);
-  return s;
-}
-
-template <class R>
-IntegerSystem<R> integer_system(const Mat<Q>& A, const Vec<Q>& b, const std::vector<Index>& columns) {
-  IntegerSystem<R> s;
-  scale_rows(
-      A, b, static_cast<Index>(columns.size()), [&columns](Index j) { return columns[static_cast<std::size_t>(j)]; },
-      s);
-  return s;
 }
 
 template <class R>
@@ -90,10 +114,10 @@ std::optional<Vec<Q>> unique_solution(const IntegerSystem<R>& s) {
 }
 
 #define CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(R)                                                        \
-  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&);                             \
-  template IntegerSystem<R> integer_system<R>(const Mat<Q>&, const Vec<Q>&, const std::vector<Index>&);  \
+  template IntegerSystem<R> integer_system<R>(const RationalRows&);                                      \
   template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&, const std::vector<Index>&); \
   template std::optional<Vec<Q>> unique_solution<R>(const IntegerSystem<R>&);
+template IntegerSystem<std::int64_t> integer_system<std::int64_t>(const RationalRows&);
 CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(Int128)
 CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE(Z)
 #undef CONTACTCERT_INTEGER_SYSTEM_INSTANTIATE

@@ -12,39 +12,9 @@
 namespace contactcert::python {
 namespace {
 
-/// The options of `design` as Python passes them (texts parsed here by the query layer, as the CLI does).
-struct DesignArgs {
-  std::string candidates, lattice;
-  int fixels = 3;
-  std::optional<std::string> stable_under;
-  bool insertable = false, goal_push = false;
-  std::string goal_wrench, rank;
-  int top = 5;
-  std::string out, checkpoint;
-  long chunk_size = 16, push_points = 120, max_placements = 100000000;
-  std::string arith = "verified";
-  double time_limit = 0;
-};
-
 /// `design SCENE ... --json` on one process: the --json text; a budget raises BudgetExceeded with what was
 /// covered, a refused checkpoint ValueError naming the file and field.
-std::string design(const Scene& s, const DesignArgs& a) {
-  queries::DesignOptions o;
-  o.common = {queries::parse_arith(a.arith, "arith"), a.time_limit};
-  o.candidates = a.candidates;
-  o.lattice = a.lattice;
-  o.fixels = a.fixels;
-  o.stable_under = a.stable_under;
-  o.insertable = a.insertable;
-  o.goal_push = a.goal_push;
-  o.goal_wrench = a.goal_wrench;
-  if (!a.rank.empty()) o.rank = queries::parse_rank(a.rank, "rank");
-  o.top = a.top;
-  o.out = a.out;
-  o.checkpoint = a.checkpoint;
-  o.chunk_size = a.chunk_size;
-  o.push_points = a.push_points;
-  o.max_placements = a.max_placements;
+std::string design(const Scene& s, const queries::DesignOptions& o) {
   const queries::DesignRun run = queries::run_design(s, o, *solvers::serial_distributor());
   if (run.status == queries::DesignStatus::kLimit) throw exact::BudgetExceeded(run.limit->what, run.limit->covered);
   if (run.status == queries::DesignStatus::kRefused) throw py::value_error(run.refusal);
@@ -54,24 +24,37 @@ std::string design(const Scene& s, const DesignArgs& a) {
 }  // namespace
 
 void bind_design(py::module_& m) {
-  py::class_<DesignArgs>(m, "DesignArgs")
+  // queries::DesignOptions itself; the texts of rank and arith are parsed by the query layer as the CLI's are.
+  using Options = queries::DesignOptions;
+  py::class_<Options>(m, "DesignOptions")
       .def(py::init<>())
-      .def_readwrite("candidates", &DesignArgs::candidates)
-      .def_readwrite("lattice", &DesignArgs::lattice)
-      .def_readwrite("fixels", &DesignArgs::fixels)
-      .def_readwrite("stable_under", &DesignArgs::stable_under)
-      .def_readwrite("insertable", &DesignArgs::insertable)
-      .def_readwrite("goal_push", &DesignArgs::goal_push)
-      .def_readwrite("goal_wrench", &DesignArgs::goal_wrench)
-      .def_readwrite("rank", &DesignArgs::rank)
-      .def_readwrite("top", &DesignArgs::top)
-      .def_readwrite("out", &DesignArgs::out)
-      .def_readwrite("checkpoint", &DesignArgs::checkpoint)
-      .def_readwrite("chunk_size", &DesignArgs::chunk_size)
-      .def_readwrite("push_points", &DesignArgs::push_points)
-      .def_readwrite("max_placements", &DesignArgs::max_placements)
-      .def_readwrite("arith", &DesignArgs::arith)
-      .def_readwrite("time_limit", &DesignArgs::time_limit);
+      .def_readwrite("candidates", &Options::candidates)
+      .def_readwrite("lattice", &Options::lattice)
+      .def_readwrite("fixels", &Options::fixels)
+      .def_readwrite("stable_under", &Options::stable_under)
+      .def_readwrite("insertable", &Options::insertable)
+      .def_readwrite("goal_push", &Options::goal_push)
+      .def_readwrite("goal_wrench", &Options::goal_wrench)
+      .def_property(
+          "rank",
+          [](const Options& o) {
+            return o.rank ? std::optional<std::string>(solvers::rank_name(*o.rank)) : std::nullopt;
+          },
+          [](Options& o, const std::optional<std::string>& text) {
+            o.rank = text ? std::optional(queries::parse_rank(*text, "rank")) : std::nullopt;
+          })
+      .def_readwrite("top", &Options::top)
+      .def_readwrite("out", &Options::out)
+      .def_readwrite("checkpoint", &Options::checkpoint)
+      .def_readwrite("chunk_size", &Options::chunk_size)
+      .def_readwrite("push_points", &Options::push_points)
+      .def_readwrite("max_placements", &Options::max_placements)
+      .def_property(
+          "arith", [](const Options& o) { return std::string(exact::arith_name(o.common.arith)); },
+          [](Options& o, const std::string& text) { o.common.arith = queries::parse_arith(text, "arith"); })
+      .def_property(
+          "time_limit", [](const Options& o) { return o.common.time_limit; },
+          [](Options& o, double seconds) { o.common.time_limit = seconds; });
   m.def("design", &design, Release());
   m.def(
       "convert",

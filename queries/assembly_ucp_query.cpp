@@ -3,6 +3,7 @@
 #include "exact/rational_text.h"
 #include "queries/assembly_query.h"
 #include "queries/assembly_svg.h"
+#include "queries/ucp_query.h"
 #include "solvers/assembly/assembly_ucp.h"
 
 namespace contactcert::queries {
@@ -44,10 +45,7 @@ AssemblyUcpAnswer run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOpt
 
 json to_json(const AssemblyUcpAnswer& ans) {
   const ucp::UcpReport& r = ans.report;
-  json j;
-  j["status"] = ucp::status_name(r.status);
-  j["reason"] = r.reason;
-  j["arith"] = exact::arith_name(r.arith);
+  json j = report_head_json(r, false);
   if (r.physical) {
     json bodies = json::array();
     for (std::size_t b = 0; b < ans.bodies.size(); ++b)

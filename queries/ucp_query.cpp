@@ -99,13 +99,18 @@ UcpAnswer run_ucp(const UcpInput& in, const UcpQueryOptions& o) {
   return a;
 }
 
-json to_json(const UcpAnswer& a) {
-  const ucp::UcpReport& r = a.report;
+json report_head_json(const ucp::UcpReport& r, bool with_method) {
   json j;
   j["status"] = ucp::status_name(r.status);
   j["reason"] = r.reason;
-  j["method"] = ucp::method_name(r.method);
+  if (with_method) j["method"] = ucp::method_name(r.method);
   j["arith"] = exact::arith_name(r.arith);
+  return j;
+}
+
+json to_json(const UcpAnswer& a) {
+  const ucp::UcpReport& r = a.report;
+  json j = report_head_json(r, true);
   if (!r.decided_by.empty()) j["decided_by"] = r.decided_by;
   if (r.x) {
     const exact::Vec<Q> x = r.x->to_q(), y = r.y->to_q();

@@ -68,6 +68,10 @@ struct UcpAnswer {
 /// counts reading the input too.
 UcpAnswer run_ucp(const UcpInput& in, const UcpQueryOptions& o);
 
+/// The head of the JSON object of a UCP report, shared by `ucp` and `assembly --ucp`: status, reason, the method
+/// (with_method: `ucp`'s) and the arithmetic.
+json report_head_json(const solvers::ucp::UcpReport& r, bool with_method);
+
 /// The object `ucp --json` prints: status, reason, the pair, its physical reading (with the world forces of each
 /// contact of a quasistatic_scene under physical.contacts), counts, the certificate file and the timings.
 json to_json(const UcpAnswer& a);

@@ -93,7 +93,7 @@ def generate(kind: str, seed: int, nc: int, mu_max: str, abar: int, rows: int, c
 def check(text: str, name: str, problem_text: str, problem_name: str, /) -> tuple[str, str]: ...
 def read_text(path: str, /) -> str: ...
 
-class DesignArgs:
+class DesignOptions:
     def __init__(self) -> None: ...
     candidates: str
     lattice: str
@@ -102,7 +102,7 @@ class DesignArgs:
     insertable: bool
     goal_push: bool
     goal_wrench: str
-    rank: str
+    rank: str | None
     top: int
     out: str
     checkpoint: str
@@ -112,6 +112,6 @@ class DesignArgs:
     arith: str
     time_limit: float
 
-def design(scene: Scene, args: DesignArgs, /) -> str: ...
+def design(scene: Scene, args: DesignOptions, /) -> str: ...
 def convert(text: str, name: str, arith: str, time_limit: float, /) -> str: ...
 def snap_scene(text: str, name: str, tol_text: str, /) -> tuple[str, list[tuple[str, str, str, str]]]: ...

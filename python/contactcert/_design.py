@@ -55,7 +55,7 @@ def design(scene: Scene, candidates: int | Path | None = None, *, lattice: Exact
     candidate points (`candidates` N equally spaced, a candidates file, or `lattice` PITCH), strongly stable
     under `stable_under` (wrenches; `cone`: their cone) and/or insertable, their scenes and certificates written
     under `out`. A budget raises BudgetExceeded with what was covered (resume with the same `checkpoint`)."""
-    a = _core.DesignArgs()
+    a = _core.DesignOptions()
     if isinstance(candidates, (str, os.PathLike)):
         a.candidates = os.fspath(candidates)
     elif candidates is not None:
@@ -69,15 +69,15 @@ def design(scene: Scene, candidates: int | Path | None = None, *, lattice: Exact
     a.goal_push = bool(goal_push)
     if goal_wrench is not None:
         a.goal_wrench = vector_text(goal_wrench, "--goal-wrench")
-    a.rank = rank or ""
     a.top = whole_number(top, 1, 1000, "--top")
     a.out = os.fspath(out)
     a.checkpoint = "" if checkpoint is None else os.fspath(checkpoint)
     a.chunk_size = whole_number(chunk_size, 1, 1000000000, "--chunk-size")
     a.push_points = whole_number(push_points, 1, 100000, "--push-points")
     a.max_placements = whole_number(max_placements, 1, LONG_MAX, "--max-placements")
-    a.arith = arith
     a.time_limit = seconds(time_limit)
+    a.arith = arith
+    a.rank = rank or None
     data = json.loads(_core.design(scene._core, a))
     return Design(data, lambda: pathlib.Path(data["svg"]).read_text())
 

@@ -32,7 +32,7 @@ class IntegerRows {
     std::optional<exact::IntegerSystem<R>>& s = std::get<std::optional<exact::IntegerSystem<R>>>(systems_);
     if (!s) {
       try {
-        s = integer_system<R>(P_);
+        s = exact::integer_system<R>(P_);
       } catch (const exact::RingOverflow&) {
         too_wide_ = true;
         throw;

@@ -260,7 +260,7 @@ void UcpProblem::set(IntegerUcp rows) {
 }
 
 void UcpProblem::set(UcpInstance<Q> u) {
-  rows_ = {integer_polyhedron(u.X.A, u.X.b), integer_polyhedron(u.Y.A, u.Y.b), {}};
+  rows_ = {exact::rational_rows(u.X.A, u.X.b), exact::rational_rows(u.Y.A, u.Y.b), {}};
   dense_ = std::make_shared<Dense>();
   std::call_once(dense_->built, [&] { dense_->ucp = std::move(u); });
 }

@@ -66,13 +66,13 @@ TEST(Scaling, RowsOverTheLcmOfTheirDenominators) {
   A << q("1/2"), q("1/3"), 2, 4;
   Vec<Q> b(2);
   b << 1, q("6/7");
-  const IntegerSystem<Z> s = integer_system<Z>(A, b);
+  const IntegerSystem<Z> s = integer_system<Z>(rational_rows(A, b));
   EXPECT_EQ(s.row_scale, (std::vector<Z>{6, 7}));
   EXPECT_EQ(s.A.rows(), 2);
   EXPECT_EQ(s.A.cols(), 2);
   EXPECT_TRUE(s.A(0, 0) == 3 && s.A(0, 1) == 2 && s.A(1, 0) == 14 && s.A(1, 1) == 28);
   EXPECT_EQ(s.b, (std::vector<Z>{6, 6}));
-  const IntegerSystem<Int128> c = integer_system<Int128>(A, b, {1});
+  const IntegerSystem<Int128> c = integer_system<Int128>(rational_rows(Mat<Q>(A.col(1)), b));  // column 1 alone
   EXPECT_TRUE(c.row_scale[0] == 3 && c.A(0, 0) == 1 && c.b[0] == 3);
   LpProblem<Q> lp{A, b, Vec<Q>(2), {}};
   lp.c << q("1/4"), q("-1/6");
@@ -94,12 +94,12 @@ TEST(Bareiss, OverflowRestartsInGmp) {
   Vec<Q> x(3);
   x << 1, -2, q("3/5");
   const Vec<Q> b = A * x;
-  const IntegerSystem<Int128> narrow = integer_system<Int128>(A, b);
+  const IntegerSystem<Int128> narrow = integer_system<Int128>(rational_rows(A, b));
   EXPECT_THROW(unique_solution(narrow), RingOverflow);
   int rings = 0;
   const std::optional<Vec<Q>> y = with_exact_ring<Q, Int128>([&]<class R>() {
     ++rings;
-    return unique_solution(integer_system<R>(A, b));
+    return unique_solution(integer_system<R>(rational_rows(A, b)));
   });
   EXPECT_EQ(rings, 2);
   ASSERT_TRUE(y.has_value());
@@ -111,14 +111,14 @@ TEST(Bareiss, RankAndConsistency) {
   A << 1, 2, 2, 4, 1, 0;
   Vec<Q> b(3);
   b << 3, 6, 1;
-  const std::optional<Vec<Q>> x = unique_solution(integer_system<Int128>(A, b));
+  const std::optional<Vec<Q>> x = unique_solution(integer_system<Int128>(rational_rows(A, b)));
   ASSERT_TRUE(x.has_value());
   EXPECT_EQ((*x)(0), 1);
   EXPECT_EQ((*x)(1), 1);
   b(1) = 7;  // inconsistent
-  EXPECT_FALSE(unique_solution(integer_system<Z>(A, b)).has_value());
+  EXPECT_FALSE(unique_solution(integer_system<Z>(rational_rows(A, b))).has_value());
   A.col(1) = 2 * A.col(0);  // rank 1
-  EXPECT_FALSE(unique_solution(integer_system<Int128>(A, b)).has_value());
+  EXPECT_FALSE(unique_solution(integer_system<Int128>(rational_rows(A, b))).has_value());
 }
 
 }  // namespace

@@ -258,10 +258,11 @@ TEST(UcpAdaptive, VertexOfDataSet1IsSolvedIn128BitsWithoutOverflow) {
   // products; after dividing out column contents the fraction-free Gauss-Jordan stays within 66 bits.
   const UcpProblem p = load_ucp_problem(contactcert::runtime::bundled_scenes_dir() + "/pang1994_dataset1.json");
   const std::vector<Eigen::Index> support{2, 6, 8};
+  const exact::RationalRows rows = exact::rational_rows(p.ucp().X.A(Eigen::all, support), p.ucp().X.b);
   std::optional<Vec<Q>> x;
-  ASSERT_NO_THROW(x = exact::unique_solution(exact::integer_system<exact::Int128>(p.ucp().X.A, p.ucp().X.b, support)));
+  ASSERT_NO_THROW(x = exact::unique_solution(exact::integer_system<exact::Int128>(rows)));
   ASSERT_TRUE(x);
-  const auto z = exact::unique_solution(exact::integer_system<exact::Z>(p.ucp().X.A, p.ucp().X.b, support));
+  const auto z = exact::unique_solution(exact::integer_system<exact::Z>(rows));
   ASSERT_TRUE(z);
   EXPECT_EQ(*x, *z);
   Vec<Q> full = Vec<Q>::Zero(9);

@@ -108,8 +108,8 @@ UcpInstance<Q> rational_ucp(const QuasistaticProblem& p) {
 /// number (double, intervals, MPFR), and so do the rows scaled to integers for the exact checks.
 void expect_same_floats(const UcpProblem& u, const UcpInstance<Q>& r, const std::string& name) {
   for (const auto& [P, R] : {std::pair(&u.rows().X, &r.X), std::pair(&u.rows().Y, &r.Y)}) {
-    const exact::IntegerSystem<exact::Z> a = integer_system<exact::Z>(*P),
-                                         b = exact::integer_system<exact::Z>(R->A, R->b);
+    const exact::IntegerSystem<exact::Z> a = exact::integer_system<exact::Z>(*P),
+                                         b = exact::integer_system<exact::Z>(exact::rational_rows(R->A, R->b));
     EXPECT_EQ(a.A, b.A) << name;
     EXPECT_EQ(a.b, b.b) << name;
     EXPECT_EQ(a.row_scale, b.row_scale) << name;
