@@ -35,12 +35,4 @@ exact::StrictSystem<exact::Q> wrench_cone_membership(const geometry::PlanarScene
 std::string goal_certificate(const std::string& scene_text, const geometry::PlanarScene& scene,
                              const exact::Vec<exact::Q>& g, const std::optional<geometry::Point2>& push);
 
-struct GoalCertificateCheck {
-  bool valid = false;
-  std::string reason;
-};
-
-/// Verifies a "goal_nonempty" certificate exactly; a malformed one throws InputError.
-GoalCertificateCheck check_goal_certificate(const exact::JsonInput& certificate);
-
 }  // namespace contactcert::solvers

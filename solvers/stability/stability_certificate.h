@@ -20,12 +20,4 @@ namespace contactcert::solvers {
 /// The certificate as JSON text.
 std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g, const StabilityResult<Q>& result);
 
-struct StabilityCertificateCheck {
-  bool valid = false;
-  std::string reason;
-};
-
-/// Verifies a "stability" certificate; malformed certificates throw InputError naming the field.
-StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& certificate);
-
 }  // namespace contactcert::solvers

@@ -38,14 +38,4 @@ ConeCertificate cone_certificate(const std::string& scene_text, const geometry::
 /// True if `kind` names a wrench cone certificate.
 bool is_cone_certificate_kind(const std::string& kind);
 
-struct ConeCertificateCheck {
-  bool valid = false;
-  std::string reason;
-  std::vector<Eigen::Index> touching{};  ///< a valid "cone_nonempty": the touching fixels (scene indices, in order)
-  exact::Vec<exact::Q> forces{};         ///< and the contact forces (c_1n..c_kn, c_1t..c_kt) its z applies to them
-};
-
-/// Verifies a "cone_empty" or "cone_nonempty" certificate exactly; a malformed one throws InputError.
-ConeCertificateCheck check_cone_certificate(const exact::JsonInput& certificate);
-
 }  // namespace contactcert::solvers
