@@ -6,7 +6,7 @@
 //   "moving":  {"mode", "acceleration": [vdot_0..vdot_{N-1}], "forces"}                (a solution with vdot != 0)
 //   "dead":    [{"prefix", "motzkin"}, ...]      (strongly stable: prefixes over s l r n whose systems have none)
 // Motzkin vectors are sparse (solvers/stability/sparse_motzkin.h) over the rows of docs/formats.md section 3a's
-// systems; the checker (assembly_check.h) rebuilds every system with its own code and verifies each vector.
+// systems; the checker (checker/assembly_check.h) rebuilds every system with its own code and verifies each vector.
 #pragma once
 
 #include <string>

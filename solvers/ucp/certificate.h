@@ -1,4 +1,4 @@
-// Certificates of the UCP verdicts and their independent checker (`contactcert check`).
+// Certificates of the UCP verdicts (their independent checker, `contactcert check`: checker/ucp_check.h).
 //
 // A certificate is one JSON object with a top-level "kind" (other kinds, e.g. a stability certificate, can be
 // added beside these): "ucp_jammed" or "ucp_solvable". Both embed the problem (SPEC section 2 form, exact

@@ -1,4 +1,4 @@
-// The checkers' own Table 2 rows (table2_rows_check.h) against the solver's (motion_system.h, cone_form.h) on
+// The checkers' own Table 2 rows (checker/table2_rows.h) against the solver's (motion_system.h, cone_form.h) on
 // seeded random scenes: written independently, they must agree entry by entry. And forged evidence whose proofs
 // hold for wrong rows (a tangent turned the wrong way, a friction coefficient changed) must be refused: a checker
 // that shared the solver's model would accept such proofs together with the model's error (issue 17, item 5).
@@ -25,7 +25,7 @@ using exact::Mat;
 using exact::Q;
 using exact::StrictSystem;
 using exact::Vec;
-namespace t2 = table2_check;
+namespace t2 = checker::table2_check;
 
 geometry::PlanarScene parse(const std::string& text) {
   return geometry::read_planar_scene(exact::JsonInput::parse(text, "scene.json"));
