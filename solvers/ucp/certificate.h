@@ -32,4 +32,7 @@ std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>&
 std::string solvable_certificate(const UcpProblem& problem, const Vec<Q>& x, const Vec<Q>& y,
                                  const std::string& assembly_text = "");
 
+/// True if `kind` names a UCP certificate.
+bool is_ucp_certificate_kind(const std::string& kind);
+
 }  // namespace contactcert::solvers::ucp
