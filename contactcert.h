@@ -48,3 +48,9 @@
 #include "solvers/ucp/generate.h"
 #include "solvers/ucp/problem.h"
 #include "solvers/ucp/solve.h"
+
+// The independent checkers of those certificates (`contactcert check`): the checker's own frames and rows.
+#include "checker/cone_check.h"
+#include "checker/modes_check.h"
+#include "checker/stability_check.h"
+#include "checker/ucp_check.h"

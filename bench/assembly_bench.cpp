@@ -7,7 +7,7 @@
 //   build/bench/assembly_bench --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>
 
-#include "solvers/assembly/assembly_check.h"
+#include "checker/assembly_check.h"
 #include "tests/solvers/assembly/assembly_fixtures.h"
 
 namespace {
@@ -37,14 +37,14 @@ void run(benchmark::State& state, Family f, bool wind) {
   state.counters["dead"] = static_cast<double>(r.dead.size());
   state.counters["verdict"] = static_cast<double>(static_cast<int>(r.verdict));  // 0 strong, 1 weak, 2 unstable
   state.counters["decided"] = r.status == solvers::assembly::AssemblyStatus::kDecided;
-  state.counters["valid"] = solvers::assembly::check_assembly_stability(a, r).empty();
+  state.counters["valid"] = checker::check_assembly_stability(a, r).empty();
 }
 
 void check(benchmark::State& state, Family f, bool wind) {
   const geometry::Assembly a = family(f, static_cast<std::size_t>(state.range(0)), wind).read();
   const solvers::assembly::AssemblyStabilityResult r = solvers::assembly::assembly_stability(a);
   std::string why;
-  for (auto _ : state) why = solvers::assembly::check_assembly_stability(a, r);
+  for (auto _ : state) why = checker::check_assembly_stability(a, r);
   state.counters["valid"] = why.empty();
 }
 

@@ -11,6 +11,9 @@
 #include <random>
 #include <sstream>
 
+#include "checker/assembly_check.h"
+#include "checker/stability_check.h"
+#include "checker/ucp_check.h"
 #include "cli/command.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -104,7 +107,7 @@ void stability(const DemoOptions& o, HtmlReport& rep) {
     const exact::Vec<Q> g = parse_number_list(w, "wrench", 3);
     const auto r = solvers::strong_stability<Q>(scene, g);
     const std::string cert = solvers::stability_certificate(text, g, r);
-    const auto check = solvers::check_stability_certificate(exact::JsonInput::parse(cert, "certificate"));
+    const auto check = checker::check_stability_certificate(exact::JsonInput::parse(cert, "certificate"));
     rows.push_back({tuple_text(g), solvers::verdict_name(r.verdict),
                     r.has_moving
                         ? "moves in mode '" + r.moving.mode.text() + "', vdot = " + tuple_text(r.moving.acceleration)
@@ -199,9 +202,9 @@ void quasistatic(const DemoOptions& o, HtmlReport& rep) {
                       : "; (2)-(10) FAIL");
     } else if (r.status == solvers::ucp::UcpStatus::kJammed && r.proof) {
       const std::string cert = solvers::ucp::jammed_certificate(problem, *r.proof);
-      const auto check = solvers::ucp::check_ucp_certificate(exact::JsonInput::parse(cert, "certificate"));
+      const auto check = checker::check_ucp_certificate(exact::JsonInput::parse(cert, "certificate"));
       evidence = "certificate with " + std::to_string(r.proof->nodes) +
-                 " nodes: " + (check.verdict == solvers::ucp::CertificateVerdict::kValid ? "valid" : "INVALID");
+                 " nodes: " + (check.verdict == checker::CertificateVerdict::kValid ? "valid" : "INVALID");
     } else {
       evidence = r.reason;
     }
@@ -255,7 +258,7 @@ std::vector<std::string> assembly_row(const std::string& name, const std::string
   }
   const AssemblyStabilityAnswer a = run_assembly_stability(in, {});
   if (!a.decided()) return {name, "assembly", "budget exhausted", a.result.covered};
-  const auto check = solvers::assembly::check_assembly_certificate(
+  const auto check = checker::check_assembly_certificate(
       exact::JsonInput::parse(solvers::assembly::assembly_certificate(text, a.result), "certificate"));
   const char* verdict = solvers::assembly::verdict_name(a.result.verdict);
   rep.figure(to_svg(in, a),
@@ -291,7 +294,7 @@ void own_scenes(const DemoOptions& o, HtmlReport& rep) {
         exact::Vec<Q> g(3);
         g << 0, -1, 0;
         const auto r = solvers::strong_stability<Q>(scene, g);
-        const auto check = solvers::check_stability_certificate(
+        const auto check = checker::check_stability_certificate(
             exact::JsonInput::parse(solvers::stability_certificate(text, g, r), "certificate"));
         const auto region = solvers::stable_region<Q>(scene);
         rep.figure(stability_sphere_svg(region, g), name + ": wrench directions, g = (0, -1, 0) marked");

@@ -4,7 +4,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 set(CONTACTCERT_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/contactcert)
 
-install(TARGETS contactcert_lib contactcert_solvers contactcert_geometry contactcert_exact
+install(TARGETS contactcert_lib contactcert_checker contactcert_solvers contactcert_geometry contactcert_exact
         EXPORT contactcertTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 # The public headers as <contactcert/PATH>, what they need as <contactcert/detail/PATH>, nothing else
 # (cmake/public_headers.cmake); their includes rewritten to those names, so PREFIX/include is the one exported

@@ -20,7 +20,9 @@ set(CONTACTCERT_PUBLIC_HEADERS
     solvers/stability/margin.h solvers/stability/finger_push.h solvers/stability/contact_modes.h
     solvers/stability/world_forces.h solvers/stability/stability_certificate.h solvers/insertion/insertion.h
     # the quasistatic problem (Pang-Trinkle-Lo)
-    solvers/ucp/problem.h solvers/ucp/solve.h solvers/ucp/generate.h solvers/ucp/certificate.h)
+    solvers/ucp/problem.h solvers/ucp/solve.h solvers/ucp/generate.h solvers/ucp/certificate.h
+    # the independent checkers of the certificates
+    checker/stability_check.h checker/modes_check.h checker/cone_check.h checker/ucp_check.h)
 set(CONTACTCERT_DETAIL_HEADERS
     exact/lp_problem.h exact/double_description.h
     exact/strict_feasibility.h exact/integer_system.h exact/int_matrix.h exact/fraction_free.h exact/float_ring.h

@@ -35,7 +35,7 @@ int main(int argc, char** argv) try {
   const auto r = solvers::strong_stability<exact::Q>(disk7, g);
   std::cout << "stability g = (1, -2, 0): " << solvers::verdict_name(r.verdict) << " (" << r.lps << " LPs)\n";
   const std::string cert = solvers::stability_certificate(text, g, r);
-  const auto check = solvers::check_stability_certificate(exact::JsonInput::parse(cert, "certificate"));
+  const auto check = checker::check_stability_certificate(exact::JsonInput::parse(cert, "certificate"));
   std::cout << "certificate: " << (check.valid ? "VALID" : "INVALID") << " (" << check.reason << ")\n";
 
   // Pang, Trinkle and Lo's Data Set 4: the commanded motion jams; the search tree is the proof.
@@ -43,8 +43,8 @@ int main(int argc, char** argv) try {
   const solvers::ucp::UcpReport ucp = solvers::ucp::solve_ucp(problem, {});
   std::cout << "ucp dataset 4: " << solvers::ucp::status_name(ucp.status) << " (" << ucp.nodes << " nodes)\n";
   const std::string jam = solvers::ucp::certificate_text(problem, ucp);
-  const auto jam_check = solvers::ucp::check_ucp_certificate(exact::JsonInput::parse(jam, "certificate"));
-  const bool jam_valid = jam_check.verdict == solvers::ucp::CertificateVerdict::kValid;
+  const auto jam_check = checker::check_ucp_certificate(exact::JsonInput::parse(jam, "certificate"));
+  const bool jam_valid = jam_check.verdict == checker::CertificateVerdict::kValid;
   std::cout << "certificate: " << (jam_valid ? "VALID" : "INVALID") << " (" << jam_check.reason << ")\n";
 
   return check.valid && r.verdict == solvers::StabilityVerdict::kStronglyStable && jam_valid ? 0 : 1;

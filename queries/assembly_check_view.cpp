@@ -1,11 +1,11 @@
 #include "queries/assembly_check_view.h"
 
-#include "solvers/assembly/assembly_certificate.h"
+#include "checker/assembly_check.h"
 
 namespace contactcert::queries {
 
 AssemblyCheckView assembly_check_view(const exact::JsonInput& certificate) {
-  const auto c = solvers::assembly::check_assembly_certificate(certificate);
+  const auto c = checker::check_assembly_certificate(certificate);
   return {c.valid, c.reason, {{"bodies", c.bodies}, {"contacts", c.contacts}, {"dead_prefixes", c.dead}}};
 }
 

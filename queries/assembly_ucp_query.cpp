@@ -38,7 +38,8 @@ AssemblyUcpAnswer run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOpt
     c << c_n, c_t;
     ans.forces = assembly_forces(a, c);
   }
-  if (!options.certificate.empty()) ans.certificate_text = ucp::certificate_text(problem, ans.report);
+  // The certificate embeds the assembly too: its checker derives P, Jn and Jt from the geometry itself.
+  if (!options.certificate.empty()) ans.certificate_text = ucp::certificate_text(problem, ans.report, in.text);
   write_files(in, options, ans);
   return ans;
 }

@@ -2,16 +2,16 @@
 
 #include <optional>
 
+#include "checker/cone_check.h"
+#include "checker/frame_check.h"
+#include "checker/goal_check.h"
+#include "checker/modes_check.h"
+#include "checker/stability_check.h"
+#include "checker/ucp_check.h"
 #include "exact/sha256.h"
 #include "queries/assembly_check_view.h"
 #include "queries/check_views.h"
-#include "solvers/design/goal_certificate.h"
-#include "solvers/stability/contact_modes.h"
-#include "solvers/stability/frame_check.h"
-#include "solvers/stability/stability_certificate.h"
-#include "solvers/ucp/certificate.h"
 #include "solvers/ucp/problem.h"
-#include "solvers/wrench_cone/cone_certificate.h"
 
 namespace contactcert::queries {
 namespace {
@@ -36,8 +36,8 @@ class EmbeddedProblem {
 };
 
 void check_ucp(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
-  const solvers::ucp::CertificateCheck u = solvers::ucp::check_ucp_certificate(cert);
-  c.verdict = u.verdict == solvers::ucp::CertificateVerdict::kValid ? CheckVerdict::kValid : CheckVerdict::kInvalid;
+  const checker::CertificateCheck u = checker::check_ucp_certificate(cert);
+  c.verdict = u.verdict == checker::CertificateVerdict::kValid ? CheckVerdict::kValid : CheckVerdict::kInvalid;
   c.reason = u.reason;
   if (c.kind == "ucp_jammed") c.details = {{"nodes", u.nodes}, {"leaves", u.leaves}};
 }
@@ -50,24 +50,24 @@ void take(const Answer& a, CheckResult& c) {
 }
 
 void check_stability(const exact::JsonInput& cert, EmbeddedProblem& scene, CheckResult& c) {
-  take(solvers::check_stability_certificate(cert), c);
+  take(checker::check_stability_certificate(cert), c);
   if (c.valid()) stability_view(cert, scene.get(), c);
 }
 
 void check_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
-  const solvers::ModesCertificateCheck m = solvers::check_modes_certificate(cert);
+  const checker::ModesCertificateCheck m = checker::check_modes_certificate(cert);
   take(m, c);
   c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
 }
 
 void check_cone(const exact::JsonInput& cert, EmbeddedProblem& scene, CheckResult& c) {
-  const solvers::ConeCertificateCheck k = solvers::check_cone_certificate(cert);
+  const checker::ConeCertificateCheck k = checker::check_cone_certificate(cert);
   take(k, c);
   if (c.valid() && c.kind == "cone_nonempty") cone_view(cert, scene.get(), k.touching, k.forces, c);
 }
 
 void check_goal(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
-  take(solvers::check_goal_certificate(cert), c);
+  take(checker::check_goal_certificate(cert), c);
 }
 
 void check_assembly(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
@@ -108,7 +108,7 @@ const CertificateKind& certificate_kind(const exact::JsonInput& cert) {
 std::string problem_file_text(const exact::JsonInput& in, const CertificateKind& kind) {
   if (kind.embeds_scene) return in.canonical_text();
   const std::string text =
-      solvers::ucp::to_json_text(solvers::ucp::read_ucp_problem(in, nullptr, solvers::frame_check::checked_frame));
+      solvers::ucp::to_json_text(solvers::ucp::read_ucp_problem(in, nullptr, checker::frame_check::checked_frame));
   return exact::JsonInput::parse(text, in.file()).canonical_text();
 }
 

@@ -3,9 +3,9 @@
 #include <optional>
 #include <string>
 
+#include "checker/frame_check.h"
+#include "checker/world_forces.h"
 #include "queries/contact_forces.h"
-#include "solvers/stability/frame_check.h"
-#include "solvers/stability/strong_stability.h"
 
 namespace contactcert::queries {
 namespace {
@@ -20,12 +20,13 @@ void require_view(const std::optional<exact::JsonInput>& given, const json& view
 }
 
 /// The contact forces of a checked stability witness as a person reads them (queries/contact_forces.h), recomputed
-/// from the verified raw vector `forces` of `evidence` (the witness under `key`).
+/// from the verified raw vector `forces` of `evidence` (the witness under `key`) with the checker's own Jacobian.
 void add_contacts(const exact::JsonInput& evidence, const std::string& key, const geometry::PlanarScene& scene,
                   const std::vector<Eigen::Index>& touching, CheckResult& c, json& view, std::string& text) {
   const exact::Vec<exact::Q> forces = evidence.at("forces").rational_vector(2 * touching.size());
-  view = contacts_json(scene, touching, forces);
-  text = contacts_text(scene, touching, forces, "    ");
+  const auto world = checker::checked_world_forces(scene, touching, forces);
+  view = forces_json(world, "fixel");
+  text = forces_text(world, "fixel", "    ");
   require_view(evidence.find("contacts"), view, "contacts",
                key + ".contacts are not the world forces of the checked " + key + ".forces", c);
 }
@@ -33,9 +34,10 @@ void add_contacts(const exact::JsonInput& evidence, const std::string& key, cons
 }  // namespace
 
 void stability_view(const exact::JsonInput& cert, const exact::JsonInput& embedded, CheckResult& c) {
-  const geometry::PlanarScene scene = solvers::frame_check::read_checked_scene(embedded).scene;
-  std::vector<Eigen::Index> touching;
-  solvers::touching_scene(scene, &touching);
+  const geometry::PlanarScene scene = checker::frame_check::read_checked_scene(embedded).scene;
+  std::vector<Eigen::Index> touching;  // the fixels strong stability considers: those touching, in scene order
+  for (std::size_t i = 0; i < scene.fixels.size(); ++i)
+    if (scene.fixels[i].frame.touching()) touching.push_back(static_cast<Eigen::Index>(i));
   const exact::Vec<exact::Q> g = cert.at("wrench").rational_vector(3);
   c.details["wrench"] = exact_json(g);
   c.text = "  wrench g = " + tuple_text(g) + "\n";
@@ -61,11 +63,12 @@ void stability_view(const exact::JsonInput& cert, const exact::JsonInput& embedd
 
 void cone_view(const exact::JsonInput& cert, const exact::JsonInput& embedded,
                const std::vector<Eigen::Index>& touching, const exact::Vec<exact::Q>& forces, CheckResult& c) {
-  const geometry::PlanarScene scene = solvers::frame_check::read_checked_scene(embedded).scene;
+  const geometry::PlanarScene scene = checker::frame_check::read_checked_scene(embedded).scene;
   const exact::Vec<exact::Q> g = cert.at("wrench").rational_vector(3);
-  const json view = witness_json(scene, touching, forces, g);
+  const auto world = checker::checked_world_forces(scene, touching, forces);
+  const json view = witness_json(scene, world, g);
   c.details["witness"] = view;
-  c.text = witness_text(scene, touching, forces, g, "  ");
+  c.text = witness_text(scene, world, g, "  ");
   for (const char* key : {"contacts", "acceleration"})
     require_view(cert.find(key), view.at(key), key, std::string(key) + " is not the view of the checked witness", c);
 }

@@ -75,10 +75,10 @@ std::string contacts_text(const geometry::PlanarScene& scene, const std::vector<
 namespace {
 
 /// vdot = M^-1 (g + sum_i (f_i, torque_i)), M = diag(1, 1, I/m) (eq. 4 per unit mass).
-exact::Vec<Q> acceleration(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
-                           const exact::Vec<Q>& c, const exact::Vec<Q>& g) {
+exact::Vec<Q> acceleration(const geometry::PlanarScene& scene, const std::vector<solvers::WorldForce<Q>>& forces,
+                           const exact::Vec<Q>& g) {
   exact::Vec<Q> a = g;
-  for (const auto& w : solvers::world_forces<Q>(scene, touching, c)) {
+  for (const auto& w : forces) {
     a.head(2) += w.force;
     a(2) += w.torque;
   }
@@ -88,21 +88,31 @@ exact::Vec<Q> acceleration(const geometry::PlanarScene& scene, const std::vector
 
 }  // namespace
 
-json witness_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching, const exact::Vec<Q>& c,
+json witness_json(const geometry::PlanarScene& scene, const std::vector<solvers::WorldForce<Q>>& forces,
                   const exact::Vec<Q>& g) {
   return {{"wrench", exact_json(g)},
-          {"acceleration", exact_json(acceleration(scene, touching, c, g))},
+          {"acceleration", exact_json(acceleration(scene, forces, g))},
           {"inertia_per_mass", exact_json(scene.workpiece.inertia_per_mass)},
-          {"contacts", contacts_json(scene, touching, c)}};
+          {"contacts", forces_json(forces, "fixel")}};
+}
+
+std::string witness_text(const geometry::PlanarScene& scene, const std::vector<solvers::WorldForce<Q>>& forces,
+                         const exact::Vec<Q>& g, const std::string& indent) {
+  return indent + "witness: g = " + tuple_text(g) + " has the mode with acceleration " +
+         tuple_text(acceleration(scene, forces, g)) +
+         " (eq. 4: M vdot = g + the contact wrenches, M = diag(1, 1, I/m), I/m = " +
+         exact::to_string(scene.workpiece.inertia_per_mass) + "), contact forces (world coordinates):\n" +
+         forces_text(forces, "fixel", indent + "  ");
+}
+
+json witness_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching, const exact::Vec<Q>& c,
+                  const exact::Vec<Q>& g) {
+  return witness_json(scene, solvers::world_forces<Q>(scene, touching, c), g);
 }
 
 std::string witness_text(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
                          const exact::Vec<Q>& c, const exact::Vec<Q>& g, const std::string& indent) {
-  return indent + "witness: g = " + tuple_text(g) + " has the mode with acceleration " +
-         tuple_text(acceleration(scene, touching, c, g)) +
-         " (eq. 4: M vdot = g + the contact wrenches, M = diag(1, 1, I/m), I/m = " +
-         exact::to_string(scene.workpiece.inertia_per_mass) + "), contact forces (world coordinates):\n" +
-         contacts_text(scene, touching, c, indent + "  ");
+  return witness_text(scene, solvers::world_forces<Q>(scene, touching, c), g, indent);
 }
 
 template json vector_json(const exact::Vec<Q>&);

@@ -49,4 +49,11 @@ json witness_json(const geometry::PlanarScene& scene, const std::vector<Eigen::I
 std::string witness_text(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
                          const exact::Vec<exact::Q>& c, const exact::Vec<exact::Q>& g, const std::string& indent);
 
+/// The same two from the world forces `forces` of the witness (check's views: the checker's own,
+/// checker/world_forces.h).
+json witness_json(const geometry::PlanarScene& scene, const std::vector<solvers::WorldForce<exact::Q>>& forces,
+                  const exact::Vec<exact::Q>& g);
+std::string witness_text(const geometry::PlanarScene& scene, const std::vector<solvers::WorldForce<exact::Q>>& forces,
+                         const exact::Vec<exact::Q>& g, const std::string& indent);
+
 }  // namespace contactcert::queries

@@ -6,7 +6,7 @@
 //   "moving":  {"mode", "acceleration": [vdot_0..vdot_{N-1}], "forces"}                (a solution with vdot != 0)
 //   "dead":    [{"prefix", "motzkin"}, ...]      (strongly stable: prefixes over s l r n whose systems have none)
 // Motzkin vectors are sparse (solvers/stability/sparse_motzkin.h) over the rows of docs/formats.md section 3a's
-// systems; the checker (assembly_check.h) rebuilds every system with its own code and verifies each vector.
+// systems; the checker (checker/assembly_check.h) rebuilds every system with its own code and verifies each vector.
 #pragma once
 
 #include <string>
@@ -18,16 +18,5 @@ namespace contactcert::solvers::assembly {
 
 /// The certificate of a decided verdict `r` on the assembly of `scene_text`, as JSON text.
 std::string assembly_certificate(const std::string& scene_text, const AssemblyStabilityResult& r);
-
-struct AssemblyCertificateCheck {
-  bool valid = false;
-  std::string reason;
-  std::size_t bodies = 0, contacts = 0, dead = 0;  ///< of the embedded assembly and the evidence
-};
-
-/// Verifies an "assembly_stability" certificate: the digest, then the evidence by check_assembly_stability, each
-/// dead prefix listed once. A malformed certificate (an unknown key, a bad vector or prefix) throws InputError
-/// naming the field.
-AssemblyCertificateCheck check_assembly_certificate(const exact::JsonInput& certificate);
 
 }  // namespace contactcert::solvers::assembly

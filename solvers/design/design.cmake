@@ -2,7 +2,7 @@
 # -DCONTACTCERT_MPI=OFF, or no MPI installed, builds the serial distributor only).
 target_sources(contactcert_solvers PRIVATE design/candidates.cpp design/problem.cpp design/symmetry.cpp
   design/evaluate.cpp design/ranking.cpp design/checkpoint.cpp design/distribute_serial.cpp
-  design/goal_certificate.cpp design/goal_certificate_check.cpp)
+  design/goal_certificate.cpp)
 option(CONTACTCERT_MPI "Build the MPI distribution of contactcert design (if MPI is found)" ON)
 if(CONTACTCERT_MPI)
   find_package(MPI COMPONENTS CXX QUIET)

@@ -10,8 +10,8 @@
 //   optionally "push": a boundary point p whose frictionless push (n, (p - com) x n), n the inward normal,
 //   is a positive multiple of g, and "outside": for each set in the order of eq. (21) / Table 5, its
 //   {"state", "mode", "motzkin"}, the Motzkin vector sparse and primitive (solvers/stability/sparse_motzkin.h).
-// The checker (goal_certificate_check.cpp) states eq. (21) and Table 5 itself, rebuilds each set's scene from the
-// embedded goal scene and its K and P with the checkers' own Table 2 (table2_rows_check.h), recomputes the push
+// The checker (checker/goal_check.cpp) states eq. (21) and Table 5 itself, rebuilds each set's scene from the
+// embedded goal scene and its K and P with the checkers' own Table 2 (checker/table2_rows.h), recomputes the push
 // from the point, and checks every Motzkin vector.
 #pragma once
 
@@ -34,13 +34,5 @@ exact::StrictSystem<exact::Q> wrench_cone_membership(const geometry::PlanarScene
 /// point when g is that point's push. Throws std::logic_error if g lies in some set's cone (a wrong witness).
 std::string goal_certificate(const std::string& scene_text, const geometry::PlanarScene& scene,
                              const exact::Vec<exact::Q>& g, const std::optional<geometry::Point2>& push);
-
-struct GoalCertificateCheck {
-  bool valid = false;
-  std::string reason;
-};
-
-/// Verifies a "goal_nonempty" certificate exactly; a malformed one throws InputError.
-GoalCertificateCheck check_goal_certificate(const exact::JsonInput& certificate);
 
 }  // namespace contactcert::solvers

@@ -41,18 +41,4 @@ const char* mode_group(const ModeString& mode, const std::vector<bool>& touching
 /// with its Motzkin certificate (sparse, sparse_motzkin.h).
 std::string modes_certificate(const std::string& scene_text, const ContactModes& modes);
 
-struct ModesCertificateCheck {
-  bool valid = false;
-  std::string reason;
-  long modes = 0, dead = 0;
-};
-
-/// Verifies a "modes" certificate against its embedded scene: each listed acceleration realises its mode
-/// (Table 2, exact signs), each dead prefix's certificate proves its kinematic rows infeasible (both with the
-/// checker's own rows, table2_rows_check.h), and together they partition the mode strings (mode_coverage: no
-/// string listed twice or inside a dead prefix, none missing), so the list is exactly the feasible modes, each
-/// once, and its count is theirs. Malformed certificates (among them a Motzkin vector with a repeated or
-/// out-of-range row, sparse_motzkin.h) throw InputError naming the field.
-ModesCertificateCheck check_modes_certificate(const exact::JsonInput& certificate);
-
 }  // namespace contactcert::solvers

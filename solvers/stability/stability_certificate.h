@@ -1,4 +1,4 @@
-// The "stability" certificate of `contactcert stability --certificate FILE` and its independent checker.
+// The "stability" certificate of `contactcert stability --certificate FILE` (its checker: checker/stability_check.h).
 // One JSON object: "kind": "stability", "scene" (the scene file's text, embedded verbatim so the checker
 // re-reads the problem itself), "wrench" [fx, fy, tz], "verdict", and the evidence (exact strings):
 //   "resting": {"forces": [c_1n..c_kn, c_1t..c_kt]}  or  {"motzkin": [[row, w], ...]}  (J c + g = 0, or not)
@@ -6,7 +6,7 @@
 //   "proofs":  [{"mode", "kinematic", "motzkin": [...]}, ...]    (strongly stable: the mode tree's dead prefixes,
 //              "kinematic": true, "mode" a prefix; then each feasible moving mode's proof for g; mode_tree.h)
 // Motzkin vectors are sparse (sparse_motzkin.h). The checker rebuilds every system from the scene with its own
-// code (table2_rows_check.h, not the solver's motion_system.h), verifies each vector exactly, and accepts each
+// code (checker/table2_rows.h, not the solver's motion_system.h), verifies each vector exactly, and accepts each
 // proof once (mode_coverage: no repeated or extra entry).
 #pragma once
 
@@ -19,13 +19,5 @@ namespace contactcert::solvers {
 
 /// The certificate as JSON text.
 std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g, const StabilityResult<Q>& result);
-
-struct StabilityCertificateCheck {
-  bool valid = false;
-  std::string reason;
-};
-
-/// Verifies a "stability" certificate; malformed certificates throw InputError naming the field.
-StabilityCertificateCheck check_stability_certificate(const exact::JsonInput& certificate);
 
 }  // namespace contactcert::solvers

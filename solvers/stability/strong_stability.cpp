@@ -4,7 +4,6 @@
 
 #include "exact/input_error.h"
 #include "exact/ladder_numbers.h"
-#include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers {
 
@@ -53,15 +52,6 @@ ModeAlphabet moving_alphabet(std::size_t k) { return ModeAlphabet{{std::vector<b
 namespace {
 
 ModeString all_rolling(std::size_t k) { return ModeString{std::vector<Interaction>(k, Interaction::kRoll)}; }
-
-// Whether every letter is one of s l r n, the letters of motion from rest at a touching fixel (motion_system.h).
-bool motion_letters(const ModeString& m) {
-  for (Interaction L : m.letters)
-    if (L != Interaction::kSeparate && L != Interaction::kSlideLeft && L != Interaction::kSlideRight &&
-        L != Interaction::kRoll)
-      return false;
-  return true;
-}
 
 bool is_all_rolling(const ModeString& m) {
   for (Interaction L : m.letters)
@@ -229,70 +219,6 @@ StabilityResult<T> strong_stability(const geometry::PlanarScene& full, const Vec
   out.tree_nodes = tree.nodes;
   out.dead_prefixes = dead;
   return out;
-}
-
-std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, const StabilityResult<Q>& claim) {
-  // Every row is the checker's own (table2_rows_check.h), rebuilt from the scene's contact frames.
-  namespace t2 = table2_check;
-  const t2::CheckedScene scene = t2::checked_scene(full, /*touching_only=*/true);
-  const std::size_t k = scene.fixels.size();
-  if (g.size() != 3) return "the wrench must have 3 entries";
-  // Resting evidence: a point (J c + g = 0, c in the friction cones) or a Motzkin certificate.
-  bool resting = false;
-  if (claim.has_resting) {
-    if (std::string why = t2::resting_violation(scene, g, claim.resting_forces); !why.empty()) return why;
-    resting = true;
-  } else if (!t2::motzkin_holds(t2::resting_rows(scene, g), claim.resting_farkas)) {
-    return "the certificate that no resting solution exists does not verify";
-  }
-  // Moving evidence: a witness solution, or one proof per moving mode.
-  bool moving = false;
-  if (claim.has_moving) {
-    const MotionWitness<Q>& w = claim.moving;
-    if (w.mode.letters.size() != k) return "the witness mode has the wrong length";
-    if (!motion_letters(w.mode)) return "the witness mode: only the letters s l r n describe motion from rest";
-    if (w.acceleration.size() != 3 || w.forces.size() != static_cast<Index>(2 * k)) return "witness sizes";
-    if (!nonzero<Q>(w.acceleration)) return "the witness does not move";
-    if (std::string why = t2::motion_violation(scene, w.mode.text(), g, w.acceleration, w.forces); !why.empty())
-      return "the moving witness violates its mode: " + why;
-    moving = true;
-  } else if (resting) {
-    // Every moving mode is covered: it extends a dead prefix (kinematic proof, any g) or has its own proof for
-    // g; n..n needs none beside a resting solution.
-    std::vector<std::string> dead, leaves{all_rolling(k).text()};
-    t2::Rows rows;
-    for (const ModeProof<Q>& p : claim.proofs) {
-      const std::string text = p.mode.text();
-      if (!motion_letters(p.mode))
-        return "proof for '" + text + "': only the letters s l r n describe motion from rest";
-      if (p.kinematic) {
-        if (p.mode.letters.empty() || p.mode.letters.size() > k)
-          return "a dead prefix of the wrong length: '" + text + "'";
-        if (!t2::kinematic_rows(scene, text, false, rows) || !t2::motzkin_holds(rows, p.motzkin))
-          return "the kinematic proof for prefix " + text + " does not verify";
-        dead.push_back(text);
-      } else {
-        if (p.mode.letters.size() != k) return "proof for '" + text + "': a mode has one letter per touching fixel";
-        if (text == leaves.front())
-          return "a proof for n..n is not evidence (it moves only without a resting solution)";
-        if (!t2::motion_rows(scene, text, g, rows) || !t2::motzkin_holds(rows, p.motzkin))
-          return "the proof for mode " + text + " does not verify";
-        leaves.push_back(text);
-      }
-    }
-    if (auto gap = mode_coverage(k, moving_alphabet(k), dead, leaves))
-      return gap->kind == CoverageGap::Kind::kMissing
-                 ? "no proof covers the moving modes that start with '" + gap->prefix + "'"
-                 : coverage_gap_text(*gap);
-  }
-  if (claim.proofs.size() && (!resting || moving))
-    return "the proofs are extra entries: they are evidence only beside a resting solution and no moving witness "
-           "(strongly stable)";
-  const StabilityVerdict v = !resting ? StabilityVerdict::kUnstable
-                             : moving ? StabilityVerdict::kWeaklyStable
-                                      : StabilityVerdict::kStronglyStable;
-  if (v != claim.verdict) return std::string("the evidence supports ") + verdict_name(v);
-  return "";
 }
 
 template class StabilityOracle<double>;

@@ -177,11 +177,6 @@ template <class T>
 StabilityResult<T> strong_stability(const geometry::PlanarScene& scene, const Vec<T>& g,
                                     const StabilityOptions& options = {});
 
-/// Independent exact check of a verdict's evidence against the scene and g: every system is rebuilt by the
-/// checker's own code (table2_rows_check.h), not by motion_system.h.
-/// Returns an empty string if valid, else the reason.
-std::string check_stability(const geometry::PlanarScene& scene, const Vec<Q>& g, const StabilityResult<Q>& claim);
-
 extern template class StabilityOracle<double>;
 extern template class StabilityOracle<Q>;
 extern template StabilityResult<double> strong_stability<double>(const geometry::PlanarScene&, const Vec<double>&,

@@ -1,4 +1,4 @@
-// Certificates of the UCP verdicts and their independent checker (`contactcert check`).
+// Certificates of the UCP verdicts (their independent checker, `contactcert check`: checker/ucp_check.h).
 //
 // A certificate is one JSON object with a top-level "kind" (other kinds, e.g. a stability certificate, can be
 // added beside these): "ucp_jammed" or "ucp_solvable". Both embed the problem (SPEC section 2 form, exact
@@ -23,26 +23,16 @@
 
 namespace contactcert::solvers::ucp {
 
-/// The "ucp_jammed" certificate of a jammed search result (T = Q) as JSON text.
-std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>& result);
-/// The "ucp_solvable" certificate of a complementary pair as JSON text.
-std::string solvable_certificate(const UcpProblem& problem, const Vec<Q>& x, const Vec<Q>& y);
-
-enum class CertificateVerdict { kValid, kInvalid };
-
-/// The checker's answer, with why.
-struct CertificateCheck {
-  CertificateVerdict verdict = CertificateVerdict::kInvalid;
-  std::string kind;
-  std::string reason;
-  long nodes = 0, leaves = 0;
-};
+/// The "ucp_jammed" certificate of a jammed search result (T = Q) as JSON text; with `assembly_text`, the problem
+/// is that assembly's (`assembly --ucp`) and its text is embedded under "assembly" (the checker derives the
+/// problem from it).
+std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>& result,
+                               const std::string& assembly_text = "");
+/// The "ucp_solvable" certificate of a complementary pair as JSON text (`assembly_text` as above).
+std::string solvable_certificate(const UcpProblem& problem, const Vec<Q>& x, const Vec<Q>& y,
+                                 const std::string& assembly_text = "");
 
 /// True if `kind` names a UCP certificate.
 bool is_ucp_certificate_kind(const std::string& kind);
-
-/// Checks a UCP certificate without trusting the solver: re-derives X and Y from the embedded problem,
-/// recomputes every node's fixings from the tree, and checks every leaf's Farkas vector exactly.
-CertificateCheck check_ucp_certificate(const exact::JsonInput& certificate);
 
 }  // namespace contactcert::solvers::ucp

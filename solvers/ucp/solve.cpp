@@ -397,9 +397,10 @@ UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts) {
   return rep;
 }
 
-std::string certificate_text(const UcpProblem& problem, const UcpReport& r) {
-  if (r.status == UcpStatus::kJammed && r.proof) return jammed_certificate(problem, *r.proof);
-  if (r.status == UcpStatus::kSolvable && r.x) return solvable_certificate(problem, r.x->to_q(), r.y->to_q());
+std::string certificate_text(const UcpProblem& problem, const UcpReport& r, const std::string& assembly_text) {
+  if (r.status == UcpStatus::kJammed && r.proof) return jammed_certificate(problem, *r.proof, assembly_text);
+  if (r.status == UcpStatus::kSolvable && r.x)
+    return solvable_certificate(problem, r.x->to_q(), r.y->to_q(), assembly_text);
   return "";
 }
 

@@ -79,6 +79,6 @@ UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts);
 
 /// The certificate text of a verdict on an exact path (certificate.h): the proof tree of kJammed, the pair of
 /// kSolvable; empty if the report has neither.
-std::string certificate_text(const UcpProblem& problem, const UcpReport& r);
+std::string certificate_text(const UcpProblem& problem, const UcpReport& r, const std::string& assembly_text = "");
 
 }  // namespace contactcert::solvers::ucp

@@ -1,4 +1,4 @@
-// Certificates of a wrench cone's verdict (`cone --certificate F`) and their checker (`contactcert check`).
+// Certificates of a wrench cone's verdict (`cone --certificate F`; their checker: checker/cone_check.h).
 // The wrench cone of a mode is { g : K z = P g for some z >= 0 with z_j > 0 on the strict components }
 // (Balkcom-Trinkle eqs. 13-17). Both kinds embed the scene (its text under "scene", its digest under
 // "problem_sha256") and the "mode":
@@ -9,7 +9,7 @@
 //   K)_j > 0 on some strict component j
 //     (if some (z, g) solved the system, 0 = y^T P g = y^T K z > 0).
 // The checker rebuilds K, P and the strict components from the embedded scene and mode with its own code
-// (solvers/stability/table2_rows_check.h, not cone_form.h).
+// (checker/table2_rows.h, not cone_form.h).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -37,15 +37,5 @@ ConeCertificate cone_certificate(const std::string& scene_text, const geometry::
 
 /// True if `kind` names a wrench cone certificate.
 bool is_cone_certificate_kind(const std::string& kind);
-
-struct ConeCertificateCheck {
-  bool valid = false;
-  std::string reason;
-  std::vector<Eigen::Index> touching{};  ///< a valid "cone_nonempty": the touching fixels (scene indices, in order)
-  exact::Vec<exact::Q> forces{};         ///< and the contact forces (c_1n..c_kn, c_1t..c_kt) its z applies to them
-};
-
-/// Verifies a "cone_empty" or "cone_nonempty" certificate exactly; a malformed one throws InputError.
-ConeCertificateCheck check_cone_certificate(const exact::JsonInput& certificate);
 
 }  // namespace contactcert::solvers

@@ -10,6 +10,7 @@
 // (-3/10, -1/5) for x = -1/2, 0.
 #include <gtest/gtest.h>
 
+#include "checker/goal_check.h"
 #include "solvers/design/evaluate.h"
 #include "solvers/design/goal_certificate.h"
 #include "solvers/design/problem.h"
@@ -74,8 +75,8 @@ TEST(DesignGoalPush, APushWorksForOnePlacementAndNoneForTheOther) {
   EXPECT_EQ(evaluate_placement(any_wrench, none, {0, 2}).status, PlacementStatus::kAccepted);
 }
 
-GoalCertificateCheck check_text(const std::string& text) {
-  return check_goal_certificate(exact::JsonInput::parse(text, "goal.cert.json"));
+checker::GoalCertificateCheck check_text(const std::string& text) {
+  return checker::check_goal_certificate(exact::JsonInput::parse(text, "goal.cert.json"));
 }
 
 TEST(DesignGoalCertificate, AWitnessPushChecksAndForgeriesDoNot) {
@@ -85,7 +86,7 @@ TEST(DesignGoalCertificate, AWitnessPushChecksAndForgeriesDoNot) {
   Vec<Q> g(3);
   g << 0, -1, Q(-1, 10);
   const std::string cert = goal_certificate(scene_text, scene, g, Point2{Q(1, 10), 1});
-  const GoalCertificateCheck ok = check_text(cert);
+  const checker::GoalCertificateCheck ok = check_text(cert);
   EXPECT_TRUE(ok.valid) << ok.reason;
   // Without the push: only the wrench is claimed; a scaled wrench is the same push.
   EXPECT_TRUE(check_text(goal_certificate(scene_text, scene, Vec<Q>(Q(10) * g), {})).valid);
@@ -121,7 +122,7 @@ TEST(DesignGoalCertificate, VectorsForAnotherFrictionCoefficientAreRefused) {
   g << 0, -1, Q(-1, 4);
   const geometry::PlanarScene scene = placement_scene(p, {0, 1});
   EXPECT_TRUE(check_text(goal_certificate(placement_scene_text(p, {0, 1}, "square"), scene, g, {})).valid);
-  const GoalCertificateCheck wrong =
+  const checker::GoalCertificateCheck wrong =
       check_text(goal_certificate(placement_scene_text(rougher, {0, 1}, "square"), scene, g, {}));
   EXPECT_FALSE(wrong.valid);
   EXPECT_NE(wrong.reason.find("does not prove the wrench outside its cone"), std::string::npos) << wrong.reason;

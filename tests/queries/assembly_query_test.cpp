@@ -7,6 +7,7 @@
 
 #include <filesystem>
 
+#include "checker/assembly_check.h"
 #include "exact/input_error.h"
 #include "runtime/scenes.h"
 #include "solvers/assembly/assembly_certificate.h"
@@ -70,7 +71,7 @@ TEST(AssemblyQuery, WitnessForcesBalanceTheLoadsAndCertificatesCheck) {
         EXPECT_EQ(net[b][2], body.inertia * r.moving.acceleration(i + 2)) << name;
       }
     }
-    const auto check = solvers::assembly::check_assembly_certificate(
+    const auto check = checker::check_assembly_certificate(
         exact::JsonInput::parse(exact::JsonInput::read_text(certificate), certificate));
     EXPECT_TRUE(check.valid) << name << ": " << check.reason;
     EXPECT_EQ(ans.certificate_text, exact::JsonInput::read_text(certificate)) << name;

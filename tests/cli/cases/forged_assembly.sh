@@ -1,5 +1,5 @@
 # Forged assembly_stability certificates (issue 31), sourced by forged_certificates.sh: the checker
-# (solvers/assembly/assembly_check.h) rebuilds every system from the embedded assembly, so a dropped branch of the
+# (checker/assembly_check.h) rebuilds every system from the embedded assembly, so a dropped branch of the
 # walk, a wrong vector, a relabelled body, a changed verdict or scene are INVALID (exit 2) and the genuine ones VALID.
 
 fa=$work/forged_assembly

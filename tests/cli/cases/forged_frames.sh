@@ -1,5 +1,5 @@
 # Certificates that hold only for a wrong contact frame (issue 29), sourced by forged_certificates.sh: every checker
-# derives and verifies the frames of its embedded scene itself (solvers/stability/frame_check.h), so evidence
+# derives and verifies the frames of its embedded scene itself (checker/frame_check.h), so evidence
 # computed with the frame of an inner edge's line, or with a frame that is not the geometry's, is INVALID.
 
 fr=$work/frames

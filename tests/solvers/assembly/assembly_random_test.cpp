@@ -7,8 +7,8 @@
 
 #include <random>
 
+#include "checker/assembly_check.h"
 #include "exact/strict_feasibility.h"
-#include "solvers/assembly/assembly_check.h"
 #include "tests/solvers/assembly/assembly_fixtures.h"
 
 namespace contactcert::solvers::assembly {
@@ -241,7 +241,7 @@ TEST(AssemblyRandom, AgreesWithBruteForceOn4PowerKModes) {
     ASSERT_EQ(r.status, AssemblyStatus::kDecided);
     const AssemblyVerdict want = brute_force(*a);
     EXPECT_EQ(r.verdict, want) << "draw " << draw << ": " << verdict_name(r.verdict) << " vs " << verdict_name(want);
-    EXPECT_EQ(check_assembly_stability(*a, r), "") << "draw " << draw;
+    EXPECT_EQ(checker::check_assembly_stability(*a, r), "") << "draw " << draw;
     ++counts[static_cast<int>(want)];
   }
   EXPECT_EQ(cases, kCases);

@@ -10,7 +10,7 @@
 // vdot^T M vdot <= 0, so vdot = 0 in every solution: with a resting solution, strongly stable.
 #include <gtest/gtest.h>
 
-#include "solvers/assembly/assembly_check.h"
+#include "checker/assembly_check.h"
 #include "tests/solvers/assembly/assembly_fixtures.h"
 
 namespace contactcert::solvers::assembly {
@@ -28,7 +28,7 @@ using testing::stack_box;
 AssemblyStabilityResult decided(const geometry::Assembly& a) {
   const AssemblyStabilityResult r = assembly_stability(a);
   EXPECT_EQ(r.status, AssemblyStatus::kDecided);
-  EXPECT_EQ(check_assembly_stability(a, r), "");
+  EXPECT_EQ(checker::check_assembly_stability(a, r), "");
   return r;
 }
 
@@ -186,7 +186,7 @@ TEST(AssemblyStability, NodeBudgetIsAStatus) {
   EXPECT_EQ(r.status, AssemblyStatus::kNodeLimit);
   EXPECT_TRUE(r.has_resting);
   EXPECT_FALSE(r.covered.empty());
-  EXPECT_NE(check_assembly_stability(a, r), "");
+  EXPECT_NE(checker::check_assembly_stability(a, r), "");
   EXPECT_EQ(decided(a).verdict, AssemblyVerdict::kStronglyStable);
 }
 

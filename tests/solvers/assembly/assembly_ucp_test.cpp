@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "checker/ucp_check.h"
 #include "solvers/ucp/certificate.h"
 #include "solvers/ucp/scene_builder.h"
 #include "solvers/ucp/solve.h"
@@ -96,15 +97,15 @@ TEST(AssemblyUcp, TwoBoxesPushedByAFinger) {
   EXPECT_GE(q_dot(0), 1);  // A moves right at least at the finger's speed
   EXPECT_GE(q_dot(3), 1);  // and pushes B (rotation about the origin aside, B's frame moves right too)
   const std::string solvable = ucp::certificate_text(free, r);
-  EXPECT_EQ(ucp::check_ucp_certificate(exact::JsonInput::parse(solvable, "s.json")).verdict,
-            ucp::CertificateVerdict::kValid);
+  EXPECT_EQ(checker::check_ucp_certificate(exact::JsonInput::parse(solvable, "s.json")).verdict,
+            checker::CertificateVerdict::kValid);
 
   const ucp::UcpProblem blocked = pushed_boxes("1", true);
   const ucp::UcpReport j = ucp::solve_ucp(blocked, {});
   ASSERT_EQ(j.status, ucp::UcpStatus::kJammed);
   const std::string jammed = ucp::certificate_text(blocked, j);
-  const ucp::CertificateCheck c = ucp::check_ucp_certificate(exact::JsonInput::parse(jammed, "j.json"));
-  EXPECT_EQ(c.verdict, ucp::CertificateVerdict::kValid) << c.reason;
+  const checker::CertificateCheck c = checker::check_ucp_certificate(exact::JsonInput::parse(jammed, "j.json"));
+  EXPECT_EQ(c.verdict, checker::CertificateVerdict::kValid) << c.reason;
 
   // Withdrawn (-1), the finger leaves the boxes at rest even against the wall.
   const ucp::UcpReport away = ucp::solve_ucp(pushed_boxes("-1", true), {});

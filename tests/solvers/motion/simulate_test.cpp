@@ -9,6 +9,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "checker/ucp_check.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "runtime/scenes.h"
@@ -48,8 +49,8 @@ void expect_certified_and_apart(const MotionScene& scene, const Trajectory<Q>& r
   const SceneGeometry<Q> g = scene_geometry<Q>(scene);
   for (const StepRecord<Q>& s : run.steps) {
     ASSERT_FALSE(s.certificate.empty()) << "step " << s.index;
-    const ucp::CertificateCheck c = ucp::check_ucp_certificate(exact::JsonInput::parse(s.certificate, "step"));
-    EXPECT_EQ(c.verdict, ucp::CertificateVerdict::kValid) << "step " << s.index << ": " << c.reason;
+    const checker::CertificateCheck c = checker::check_ucp_certificate(exact::JsonInput::parse(s.certificate, "step"));
+    EXPECT_EQ(c.verdict, checker::CertificateVerdict::kValid) << "step " << s.index << ": " << c.reason;
     EXPECT_EQ(overlap(g, s.pose_after, s.tips_after), "") << "step " << s.index;
   }
 }
@@ -149,8 +150,9 @@ TEST(PushedBox, BlockIntoAWallStopsWithAJammingProof) {
   EXPECT_EQ(run.steps[3].time, Q(1));
   EXPECT_EQ(run.steps[3].made.size(), 2u);  // both front corners on the wall
   EXPECT_EQ(run.steps[3].verdict, ucp::UcpStatus::kJammed);
-  const ucp::CertificateCheck c = ucp::check_ucp_certificate(exact::JsonInput::parse(run.steps[3].certificate, "jam"));
-  EXPECT_EQ(c.verdict, ucp::CertificateVerdict::kValid) << c.reason;
+  const checker::CertificateCheck c =
+      checker::check_ucp_certificate(exact::JsonInput::parse(run.steps[3].certificate, "jam"));
+  EXPECT_EQ(c.verdict, checker::CertificateVerdict::kValid) << c.reason;
   EXPECT_EQ(c.kind, "ucp_jammed");
   expect_certified_and_apart(scene, run);
 }
@@ -315,8 +317,8 @@ TEST(PushedBox, ACorruptedStepCertificateIsRefused) {
   ASSERT_TRUE(farkas.is_array());
   farkas[0] = farkas[0].is_string() ? nlohmann::json(std::to_string(std::stol(farkas[0].get<std::string>()) + 1))
                                     : nlohmann::json(farkas[0].get<long>() + 1);
-  const ucp::CertificateCheck c = ucp::check_ucp_certificate(exact::JsonInput::parse(cert.dump(), "forged"));
-  EXPECT_EQ(c.verdict, ucp::CertificateVerdict::kInvalid);
+  const checker::CertificateCheck c = checker::check_ucp_certificate(exact::JsonInput::parse(cert.dump(), "forged"));
+  EXPECT_EQ(c.verdict, checker::CertificateVerdict::kInvalid);
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include "checker/modes_check.h"
+#include "checker/stability_check.h"
 #include "exact/json_input.h"
 #include "geometry/nnc_cone.h"
 #include "geometry/scene_json.h"
@@ -109,7 +111,8 @@ TEST(ModeTree, RandomScenesGiveTheModesOfThe4ToTheKRouteWithValidCertificates) {
       }
       EXPECT_EQ(tree.size(), m.tree.modes.size()) << "a mode listed twice";
       ASSERT_EQ(tree, feasible_by_brute_force(m.model, m.alphabet, k)) << text;
-      const auto check = check_modes_certificate(exact::JsonInput::parse(modes_certificate(text, m), "modes.json"));
+      const auto check =
+          checker::check_modes_certificate(exact::JsonInput::parse(modes_certificate(text, m), "modes.json"));
       EXPECT_TRUE(check.valid) << check.reason << "\n" << text;
       modes += static_cast<long>(tree.size());
     }
@@ -135,9 +138,9 @@ TEST(ModeTree, RandomStabilityVerdictsRegionsAndCertificatesEqualThe4ToTheKRoute
       const auto r = strong_stability<Q>(scene, g);
       ASSERT_EQ(r.verdict, verdict_by_brute_force(scene, g)) << text << "\ng = " << g.transpose();
       EXPECT_EQ(oracle.verdict(g).verdict, r.verdict);
-      EXPECT_EQ(check_stability(scene, g, r), "") << text;
-      const auto c =
-          check_stability_certificate(exact::JsonInput::parse(stability_certificate(text, g, r), "stability.json"));
+      EXPECT_EQ(checker::check_stability(scene, g, r), "") << text;
+      const auto c = checker::check_stability_certificate(
+          exact::JsonInput::parse(stability_certificate(text, g, r), "stability.json"));
       EXPECT_TRUE(c.valid) << c.reason;
       strong += r.verdict == StabilityVerdict::kStronglyStable;
       weak += r.verdict == StabilityVerdict::kWeaklyStable;
@@ -173,7 +176,7 @@ TEST(ModeTree, EveryBundledPlanarSceneGivesTheModesVerdictsAndRegionOfThe4ToTheK
     for (const Vec<Q>& g : {(Vec<Q>(3) << 0, -1, 0).finished(), (Vec<Q>(3) << 1, -2, 1).finished()}) {
       const auto r = strong_stability<Q>(scene, g);
       EXPECT_EQ(r.verdict, verdict_by_brute_force(scene, g)) << entry.path();
-      EXPECT_EQ(check_stability(scene, g, r), "") << entry.path();
+      EXPECT_EQ(checker::check_stability(scene, g, r), "") << entry.path();
     }
   }
   EXPECT_GE(planar, 7);
@@ -253,7 +256,7 @@ TEST(ModeTree, BlocksOnSixteenAndThirtyTwoFixelsAreStronglyStableWithCheckedCert
     // Lift (all s), pivot on either end (3 letters each), slide or rest (l..l, r..r; n..n is not moving).
     EXPECT_EQ(r.modes_kinematically_feasible, 9);
     const std::string cert = stability_certificate(text, g, r);
-    const auto c = check_stability_certificate(exact::JsonInput::parse(cert, "block.json"));
+    const auto c = checker::check_stability_certificate(exact::JsonInput::parse(cert, "block.json"));
     EXPECT_TRUE(c.valid) << c.reason;
   }
 }
@@ -264,7 +267,7 @@ TEST(ModeTree, ForgedCompletenessProofsAreRejected) {
   const Vec<Q> g = (Vec<Q>(3) << 0, -1, 0).finished();
   const auto r = strong_stability<Q>(scene, g);
   ASSERT_EQ(r.verdict, StabilityVerdict::kStronglyStable);
-  ASSERT_EQ(check_stability(scene, g, r), "");
+  ASSERT_EQ(checker::check_stability(scene, g, r), "");
   auto with_proofs = [&r](auto keep) {
     StabilityResult<Q> bad = r;
     bad.proofs = ModeProofs<Q>();
@@ -272,20 +275,20 @@ TEST(ModeTree, ForgedCompletenessProofsAreRejected) {
     return bad;
   };
   // An empty tree proves nothing.
-  EXPECT_NE(check_stability(scene, g, with_proofs([](auto, auto&, auto&) {})), "");
+  EXPECT_NE(checker::check_stability(scene, g, with_proofs([](auto, auto&, auto&) {})), "");
   for (std::size_t drop = 0; drop < r.proofs.size(); ++drop) {
     // A missing branch: one dead prefix or one mode's proof left out.
     const auto missing = with_proofs([&](std::size_t i, const ModeProof<Q>& p, ModeProofs<Q>& out) {
       if (i != drop) out.push_back(p);
     });
-    EXPECT_NE(check_stability(scene, g, missing), "") << "without " << r.proofs[drop].mode.text();
+    EXPECT_NE(checker::check_stability(scene, g, missing), "") << "without " << r.proofs[drop].mode.text();
     // A dead node with a wrong vector.
     const auto wrong = with_proofs([&](std::size_t i, const ModeProof<Q>& p, ModeProofs<Q>& out) {
       ModeProof<Q> c = p;
       if (i == drop) c.motzkin(0) += 1;
       out.push_back(c);
     });
-    EXPECT_NE(check_stability(scene, g, wrong), "") << "changed " << r.proofs[drop].mode.text();
+    EXPECT_NE(checker::check_stability(scene, g, wrong), "") << "changed " << r.proofs[drop].mode.text();
   }
   // A dead prefix claimed for a prefix it does not prove (its letters changed).
   const auto relabelled = with_proofs([&](std::size_t, const ModeProof<Q>& p, ModeProofs<Q>& out) {
@@ -293,7 +296,7 @@ TEST(ModeTree, ForgedCompletenessProofsAreRejected) {
     if (c.kinematic && c.mode.letters.back() == Interaction::kSeparate) c.mode.letters.back() = Interaction::kSlideLeft;
     out.push_back(c);
   });
-  EXPECT_NE(check_stability(scene, g, relabelled), "");
+  EXPECT_NE(checker::check_stability(scene, g, relabelled), "");
   // A moving witness in a letter that is no motion from rest (m) is refused, in the API and in a file.
   StabilityResult<Q> maintain = r;
   maintain.verdict = StabilityVerdict::kWeaklyStable;
@@ -301,12 +304,12 @@ TEST(ModeTree, ForgedCompletenessProofsAreRejected) {
   maintain.proofs = ModeProofs<Q>();
   maintain.moving = {ModeString{std::vector<Interaction>(6, Interaction::kMaintain)}, Vec<Q>::Zero(12),
                      (Vec<Q>(3) << 0, 1, 0).finished()};
-  EXPECT_NE(check_stability(scene, g, maintain), "");
+  EXPECT_NE(checker::check_stability(scene, g, maintain), "");
   std::string cert = stability_certificate(text, g, strong_stability<Q>(scene, (Vec<Q>(3) << 0, 1, 0).finished()));
   const std::size_t at = cert.find("\"mode\": \"");
   ASSERT_NE(at, std::string::npos);
   cert.replace(at + 9, 6, "mmmmmm");
-  EXPECT_THROW(check_stability_certificate(exact::JsonInput::parse(cert, "forged.json")), exact::InputError);
+  EXPECT_THROW(checker::check_stability_certificate(exact::JsonInput::parse(cert, "forged.json")), exact::InputError);
 }
 
 // The first prefix a coverage gap names, or "" when the lists partition the modes.

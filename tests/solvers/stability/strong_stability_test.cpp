@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "checker/stability_check.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -40,7 +41,7 @@ TEST(StrongStability, Section7DiskPushedStraightDownIsStronglyStable) {
     // 9 feasible moving modes, each with a proof for g; the 6 others end in a dead prefix (the 4^2 - 1 strings).
     EXPECT_EQ(r.modes_kinematically_feasible, 9);
     EXPECT_EQ(r.proofs.size(), 9u + static_cast<std::size_t>(r.dead_prefixes));
-    EXPECT_EQ(check_stability(scene, wrench(0, -1, 0), r), "");
+    EXPECT_EQ(checker::check_stability(scene, wrench(0, -1, 0), r), "");
   }
   EXPECT_EQ(strong_stability<double>(scene, exact::to_double(wrench(0, -1, 0))).verdict,
             StabilityVerdict::kStronglyStable);
@@ -51,7 +52,7 @@ TEST(StrongStability, PushIntoTheSideFixelIsStronglyStable) {
   const auto scene = section7("1.2");
   const auto r = strong_stability<Q>(scene, wrench(1, 0, 0));
   EXPECT_EQ(r.verdict, StabilityVerdict::kStronglyStable);
-  EXPECT_EQ(check_stability(scene, wrench(1, 0, 0), r), "");
+  EXPECT_EQ(checker::check_stability(scene, wrench(1, 0, 0), r), "");
 }
 
 TEST(StrongStability, DownLeftPushIsOnlyWeaklyStableAndUnstableWithLowFriction) {
@@ -61,13 +62,13 @@ TEST(StrongStability, DownLeftPushIsOnlyWeaklyStableAndUnstableWithLowFriction) 
   const auto r = strong_stability<Q>(scene, wrench(-1, -1, 0));
   EXPECT_EQ(r.verdict, StabilityVerdict::kWeaklyStable);
   ASSERT_TRUE(r.has_moving);
-  EXPECT_EQ(check_stability(scene, wrench(-1, -1, 0), r), "");
+  EXPECT_EQ(checker::check_stability(scene, wrench(-1, -1, 0), r), "");
   // With mu = 0.3 nothing holds it: the side fixel can only push left, the bottom one needs mu >= 1.
   const auto low = section7("0.3");
   const auto u = strong_stability<Q>(low, wrench(-1, -1, 0));
   EXPECT_EQ(u.verdict, StabilityVerdict::kUnstable);
   EXPECT_FALSE(u.has_resting);
-  EXPECT_EQ(check_stability(low, wrench(-1, -1, 0), u), "");
+  EXPECT_EQ(checker::check_stability(low, wrench(-1, -1, 0), u), "");
 }
 
 TEST(StrongStability, PullingAwayIsWeaklyStableOnlyUnderForceClosure) {
@@ -76,13 +77,13 @@ TEST(StrongStability, PullingAwayIsWeaklyStableOnlyUnderForceClosure) {
   const auto scene = section7("1.2");
   const auto r = strong_stability<Q>(scene, wrench(0, 1, 0));
   EXPECT_EQ(r.verdict, StabilityVerdict::kWeaklyStable);
-  EXPECT_EQ(check_stability(scene, wrench(0, 1, 0), r), "");
+  EXPECT_EQ(checker::check_stability(scene, wrench(0, 1, 0), r), "");
   // With mu = 0.3: x balance gives c_2n = -c_1t <= 0.3 c_1n, y balance c_2t = c_1n + 1 <= 0.3 c_2n
   // <= 0.09 c_1n: impossible, so nothing holds it.
   const auto low = section7("0.3");
   const auto u = strong_stability<Q>(low, wrench(0, 1, 0));
   EXPECT_EQ(u.verdict, StabilityVerdict::kUnstable);
-  EXPECT_EQ(check_stability(low, wrench(0, 1, 0), u), "");
+  EXPECT_EQ(checker::check_stability(low, wrench(0, 1, 0), u), "");
 }
 
 TEST(StrongStability, CorruptedEvidenceIsRejected) {
@@ -91,7 +92,7 @@ TEST(StrongStability, CorruptedEvidenceIsRejected) {
   ASSERT_EQ(r.verdict, StabilityVerdict::kStronglyStable);
   auto wrong_verdict = r;
   wrong_verdict.verdict = StabilityVerdict::kWeaklyStable;
-  EXPECT_NE(check_stability(scene, wrench(0, -1, 0), wrong_verdict), "");
+  EXPECT_NE(checker::check_stability(scene, wrench(0, -1, 0), wrong_verdict), "");
   // Change one number in a dynamic proof (one that is not all zeros).
   bool corrupted = false;
   ModeProofs<Q> bad;
@@ -106,10 +107,10 @@ TEST(StrongStability, CorruptedEvidenceIsRejected) {
   }
   ASSERT_TRUE(corrupted);
   r.proofs = bad;
-  EXPECT_NE(check_stability(scene, wrench(0, -1, 0), r), "");
+  EXPECT_NE(checker::check_stability(scene, wrench(0, -1, 0), r), "");
   // The same evidence does not prove stability under another wrench.
   auto w = strong_stability<Q>(scene, wrench(0, -1, 0));
-  EXPECT_NE(check_stability(scene, wrench(-1, -1, 0), w), "");
+  EXPECT_NE(checker::check_stability(scene, wrench(-1, -1, 0), w), "");
 }
 
 // A unit disk touching fixels at (0,-1), (1,0) and (-4/5,-3/5), mu = 1/2 (the benchmark's three-fixel scene).
@@ -140,7 +141,7 @@ TEST(StabilityOracle, FloatFirstVerdictEqualsTheExactVerdictIncludingConeFaces) 
       EXPECT_EQ(r.verdict, strong_stability<Q>(scene, g, {exact::Arith::kExact}).verdict)
           << "mu " << mu << " g = " << g.transpose();
       EXPECT_EQ(r.verdict, region.label(g));
-      EXPECT_EQ(check_stability(scene, g, r), "") << "mu " << mu << " g = " << g.transpose();
+      EXPECT_EQ(checker::check_stability(scene, g, r), "") << "mu " << mu << " g = " << g.transpose();
       lps += r.lps;
       from_float += r.lps_checked_from_float;
     }
@@ -159,10 +160,10 @@ TEST(StabilityOracle, ThreeFixelsAgreeWithTheCellLabelsAndTheColdVerdict) {
     const Vec<Q>& g = region.cells[c].point;
     const auto r = oracle.verdict(g);
     EXPECT_EQ(r.verdict, region.cells[c].label) << g.transpose();
-    EXPECT_EQ(check_stability(scene, g, r), "") << g.transpose();
+    EXPECT_EQ(checker::check_stability(scene, g, r), "") << g.transpose();
     const auto cold = strong_stability<Q>(scene, g);
     EXPECT_EQ(cold.verdict, r.verdict);
-    EXPECT_EQ(check_stability(scene, g, cold), "") << g.transpose();
+    EXPECT_EQ(checker::check_stability(scene, g, cold), "") << g.transpose();
     // Cold prepares only the modes the verdict reaches: all of them unless some mode moves.
     if (r.has_moving) {
       EXPECT_LE(cold.lps, r.lps + oracle.preparation_lps());
@@ -197,8 +198,8 @@ TEST(StabilityOracle, SharedKinematicProofsOutliveTheOracleAndEqualTheColdOnes) 
   EXPECT_GT(shared, 10);
   const StabilityResult<Q> copy = warm;
   warm = StabilityResult<Q>();  // the copy alone keeps the shared proofs now
-  EXPECT_EQ(check_stability(scene, g, copy), "");
-  const auto checked = check_stability_certificate(
+  EXPECT_EQ(checker::check_stability(scene, g, copy), "");
+  const auto checked = checker::check_stability_certificate(
       exact::JsonInput::parse(stability_certificate(kThreeFixelDisk, g, copy), "certificate.json"));
   EXPECT_TRUE(checked.valid) << checked.reason;
   const auto cold = strong_stability<Q>(scene, g);
@@ -216,7 +217,7 @@ TEST(StabilityOracle, CorruptedFloatFirstEvidenceIsRejected) {
   // A kinematic proof turned into nonsense, and one made non-zero off the kinematic rows.
   auto strong = oracle.verdict(wrench(0, -1, 0));
   ASSERT_EQ(strong.verdict, StabilityVerdict::kStronglyStable);
-  ASSERT_EQ(check_stability(scene, wrench(0, -1, 0), strong), "");
+  ASSERT_EQ(checker::check_stability(scene, wrench(0, -1, 0), strong), "");
   // The list with proof i replaced by `q` (the others still shared with the oracle).
   auto with = [&strong](std::size_t i, const ModeProof<Q>& q) {
     auto bad = strong;
@@ -229,22 +230,22 @@ TEST(StabilityOracle, CorruptedFloatFirstEvidenceIsRejected) {
     if (!p.kinematic) continue;
     ModeProof<Q> q = p;
     q.motzkin = -q.motzkin;
-    EXPECT_NE(check_stability(scene, wrench(0, -1, 0), with(i, q)), "") << p.mode.text();
+    EXPECT_NE(checker::check_stability(scene, wrench(0, -1, 0), with(i, q)), "") << p.mode.text();
     q.motzkin = p.motzkin;
     q.motzkin(q.motzkin.size() - 1) += 1;
-    EXPECT_NE(check_stability(scene, wrench(0, -1, 0), with(i, q)), "") << p.mode.text();
+    EXPECT_NE(checker::check_stability(scene, wrench(0, -1, 0), with(i, q)), "") << p.mode.text();
   }
-  EXPECT_EQ(check_stability(scene, wrench(0, -1, 0), strong), "");  // the shared set itself is unchanged
+  EXPECT_EQ(checker::check_stability(scene, wrench(0, -1, 0), strong), "");  // the shared set itself is unchanged
   // A moving witness with a changed acceleration, and resting forces that no longer balance g.
   auto weak = oracle.verdict(wrench(-1, -1, 0));
   ASSERT_EQ(weak.verdict, StabilityVerdict::kWeaklyStable);
-  ASSERT_EQ(check_stability(scene, wrench(-1, -1, 0), weak), "");
+  ASSERT_EQ(checker::check_stability(scene, wrench(-1, -1, 0), weak), "");
   auto moved = weak;
   moved.moving.acceleration(0) += Q(1, 7);
-  EXPECT_NE(check_stability(scene, wrench(-1, -1, 0), moved), "");
+  EXPECT_NE(checker::check_stability(scene, wrench(-1, -1, 0), moved), "");
   auto resting = weak;
   resting.resting_forces(0) += 1;
-  EXPECT_NE(check_stability(scene, wrench(-1, -1, 0), resting), "");
+  EXPECT_NE(checker::check_stability(scene, wrench(-1, -1, 0), resting), "");
 }
 
 TEST(StrictSolver, FallsBackToTheExactLpWhenTheRoundedAnswerDoesNotCheck) {

@@ -5,6 +5,7 @@
 #include <map>
 #include <random>
 
+#include "checker/ucp_check.h"
 #include "exact/integer_system.h"
 #include "exact/json_input.h"
 #include "exact/rounded_check.h"
@@ -41,8 +42,8 @@ void expect_certified_like_exact(const UcpProblem& p, const std::string& what) {
     ASSERT_TRUE(a.proof) << what;
     text = jammed_certificate(p, *a.proof);
   }
-  const CertificateCheck c = check_ucp_certificate(exact::JsonInput::parse(text, "certificate"));
-  EXPECT_EQ(c.verdict, CertificateVerdict::kValid) << what << ": " << c.reason;
+  const checker::CertificateCheck c = checker::check_ucp_certificate(exact::JsonInput::parse(text, "certificate"));
+  EXPECT_EQ(c.verdict, checker::CertificateVerdict::kValid) << what << ": " << c.reason;
 }
 
 TEST(UcpAdaptive, RandomProblemsGetTheExactVerdictWithACertificate) {
@@ -132,9 +133,9 @@ FloatTree tiny_gap_tree(double fx, double fy) {
 void expect_valid_jammed_certificate(const UcpProblem& p, SearchResult<Q> proof) {
   proof.status = UcpStatus::kJammed;
   proof.reason = "search tree";
-  const CertificateCheck c =
-      check_ucp_certificate(exact::JsonInput::parse(jammed_certificate(p, proof), "certificate"));
-  EXPECT_EQ(c.verdict, CertificateVerdict::kValid) << c.reason;
+  const checker::CertificateCheck c =
+      checker::check_ucp_certificate(exact::JsonInput::parse(jammed_certificate(p, proof), "certificate"));
+  EXPECT_EQ(c.verdict, checker::CertificateVerdict::kValid) << c.reason;
 }
 
 TEST(UcpAdaptive, LeavesAreProvenByTheirRoundedFarkasVectorsElseByAnExactLp) {

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "checker/ucp_check.h"
 #include "exact/json_input.h"
 #include "runtime/scenes.h"
 #include "solvers/ucp/certificate.h"
@@ -16,8 +17,8 @@ std::string scene(int k) {
   return contactcert::runtime::bundled_scenes_dir() + "/pang1994_dataset" + std::to_string(k) + ".json";
 }
 
-CertificateCheck check_text(const std::string& text) {
-  return check_ucp_certificate(exact::JsonInput::parse(text, "certificate"));
+checker::CertificateCheck check_text(const std::string& text) {
+  return checker::check_ucp_certificate(exact::JsonInput::parse(text, "certificate"));
 }
 
 std::string jammed_text(const UcpProblem& p) {
@@ -32,8 +33,8 @@ void bump(nlohmann::json& v) { v = exact::Z(exact::Z(v.get<std::string>(), 10) +
 
 TEST(UcpCertificate, DataSet4JammedCertificateIsAcceptedAndEveryFarkasEntryMatters) {
   const std::string text = jammed_text(load_ucp_problem(scene(4)));
-  const CertificateCheck ok = check_text(text);
-  ASSERT_EQ(ok.verdict, CertificateVerdict::kValid) << ok.reason;
+  const checker::CertificateCheck ok = check_text(text);
+  ASSERT_EQ(ok.verdict, checker::CertificateVerdict::kValid) << ok.reason;
   EXPECT_GT(ok.leaves, 1);
   const nlohmann::json j = nlohmann::json::parse(text);
   int changed_x = 0, rejected_x = 0, changed_y = 0, rejected_y = 0;
@@ -43,7 +44,7 @@ TEST(UcpCertificate, DataSet4JammedCertificateIsAcceptedAndEveryFarkasEntryMatte
     for (std::size_t e = 0; e < j["nodes"][k]["farkas"].size(); ++e) {
       nlohmann::json t = j;
       bump(t["nodes"][k]["farkas"][e]);
-      const bool rejected = check_text(t.dump()).verdict == CertificateVerdict::kInvalid;
+      const bool rejected = check_text(t.dump()).verdict == checker::CertificateVerdict::kInvalid;
       (x_side ? changed_x : changed_y)++;
       (x_side ? rejected_x : rejected_y) += rejected;
     }
@@ -63,27 +64,27 @@ TEST(UcpCertificate, ChangingTheProblemOrTheTreeIsRejected) {
   {  // a wrench entry: the X-side vectors w satisfy w^T P = 0 only for the original P
     nlohmann::json t = j;
     t["problem"]["P"][0][0] = "0.805";
-    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+    EXPECT_EQ(check_text(t.dump()).verdict, checker::CertificateVerdict::kInvalid);
   }
   {  // no gravity: y = 0 is in Y and the problem becomes solvable, so no proof of jamming can pass
     nlohmann::json t = j;
     t["problem"]["d"][4] = "0";
-    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+    EXPECT_EQ(check_text(t.dump()).verdict, checker::CertificateVerdict::kInvalid);
   }
   {  // a branch index
     nlohmann::json t = j;
     t["nodes"][0]["branch"] = (t["nodes"][0]["branch"].get<int>() + 1) % 9;
-    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+    EXPECT_EQ(check_text(t.dump()).verdict, checker::CertificateVerdict::kInvalid);
   }
   {  // a child reference that makes a node unreachable / reached twice
     nlohmann::json t = j;
     t["nodes"][0]["y_zero"] = t["nodes"][0]["x_zero"];
-    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+    EXPECT_EQ(check_text(t.dump()).verdict, checker::CertificateVerdict::kInvalid);
   }
   {  // the root alone is not a proof
     nlohmann::json t = j;
     t["nodes"] = nlohmann::json::array({j["nodes"][1]});
-    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+    EXPECT_EQ(check_text(t.dump()).verdict, checker::CertificateVerdict::kInvalid);
   }
 }
 
@@ -94,14 +95,14 @@ TEST(UcpCertificate, SolvableCertificatesOfDataSets1To3AreAcceptedAndTamperingIs
     const SearchResult<Q> s = complete_search(p.ucp(), SearchOptions{}, rng);
     ASSERT_EQ(s.status, UcpStatus::kSolvable);
     const std::string text = solvable_certificate(p, s.x, s.y);
-    EXPECT_EQ(check_text(text).verdict, CertificateVerdict::kValid);
+    EXPECT_EQ(check_text(text).verdict, checker::CertificateVerdict::kValid);
     nlohmann::json t = nlohmann::json::parse(text);
     for (std::size_t e = 0; e < t["y"].size(); ++e)
       if (t["y"][e] != "0") {
         t["y"][e] = "1";
         break;
       }
-    EXPECT_EQ(check_text(t.dump()).verdict, CertificateVerdict::kInvalid);
+    EXPECT_EQ(check_text(t.dump()).verdict, checker::CertificateVerdict::kInvalid);
   }
 }
 
@@ -123,8 +124,8 @@ TEST(UcpCertificate, RandomAndReductionJammedCertificatesVerify) {
     const SearchResult<Q> s = complete_search(p.ucp(), SearchOptions{}, rng);
     if (s.status != UcpStatus::kJammed) continue;
     ++checked;
-    const CertificateCheck c = check_text(jammed_certificate(p, s));
-    EXPECT_EQ(c.verdict, CertificateVerdict::kValid) << "seed " << seed << ": " << c.reason;
+    const checker::CertificateCheck c = check_text(jammed_certificate(p, s));
+    EXPECT_EQ(c.verdict, checker::CertificateVerdict::kValid) << "seed " << seed << ": " << c.reason;
   }
   EXPECT_GE(checked, 4);
 }

@@ -2,7 +2,7 @@
 // forged on a collinear inner edge, a closest point that is not unique, a fixel inside, a wrong gap; and on seeded
 // random star-shaped polygons the solvers' frames, the checker's frames and the modes of `modes` agree with a
 // brute-force closest-point oracle written here.
-#include "solvers/stability/frame_check.h"
+#include "checker/frame_check.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "checker/modes_check.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
 #include "solvers/stability/contact_modes.h"
@@ -32,7 +33,7 @@ Point2 P(const char* x, const char* y) { return {Q(x), Q(y)}; }
 FrameInput at(const Point2& f) { return {f, {}, {}, {}}; }
 FrameInput contact(const Point2& p, const Point2& n, const Q& gap = 0) { return {std::nullopt, p, n, gap}; }
 FrameStatus verdict(const Shape& s, const FrameInput& in, const ContactFrame& f) {
-  return frame_check::frame_violation(s, in, f).status;
+  return checker::frame_check::frame_violation(s, in, f).status;
 }
 
 // The L-shape of issue 29 (counter-clockwise) and a four-pointed star (tests/geometry/contact_frame_test.cpp).
@@ -93,15 +94,15 @@ TEST(FrameCheck, RefusesForgedFrames) {
 }
 
 TEST(FrameCheck, DerivesItsOwnFrames) {
-  geometry::FrameResult r = frame_check::checked_frame(kL, at(P(0, 1)));
+  geometry::FrameResult r = checker::frame_check::checked_frame(kL, at(P(0, 1)));
   ASSERT_EQ(r.status, FrameStatus::kOk);
   EXPECT_TRUE(r.frame.normal == P(3, 0));
-  EXPECT_EQ(frame_check::checked_frame(kL, at(P(2, 1))).status, FrameStatus::kNormalNotUnique);
-  EXPECT_EQ(frame_check::checked_frame(kL, at(P(1, 1))).status, FrameStatus::kInsideWorkpiece);
-  EXPECT_EQ(frame_check::checked_frame(kStar, at(P(1, 1))).status, FrameStatus::kClosestNotUnique);
-  EXPECT_EQ(frame_check::checked_frame(kL, contact(P(0, 1), P(0, -1))).status, FrameStatus::kNormalNotUnique);
-  EXPECT_EQ(frame_check::checked_frame(kDisk, at(P(6, 1))).status, FrameStatus::kIrrationalDirection);
-  r = frame_check::checked_frame(kDisk, at(P(6, 8)));
+  EXPECT_EQ(checker::frame_check::checked_frame(kL, at(P(2, 1))).status, FrameStatus::kNormalNotUnique);
+  EXPECT_EQ(checker::frame_check::checked_frame(kL, at(P(1, 1))).status, FrameStatus::kInsideWorkpiece);
+  EXPECT_EQ(checker::frame_check::checked_frame(kStar, at(P(1, 1))).status, FrameStatus::kClosestNotUnique);
+  EXPECT_EQ(checker::frame_check::checked_frame(kL, contact(P(0, 1), P(0, -1))).status, FrameStatus::kNormalNotUnique);
+  EXPECT_EQ(checker::frame_check::checked_frame(kDisk, at(P(6, 1))).status, FrameStatus::kIrrationalDirection);
+  r = checker::frame_check::checked_frame(kDisk, at(P(6, 8)));
   ASSERT_EQ(r.status, FrameStatus::kOk);
   EXPECT_TRUE(r.frame.point == P(3, 4) && r.frame.normal == P(-6, -8) && r.frame.gap_squared == 25);
 }
@@ -109,15 +110,15 @@ TEST(FrameCheck, DerivesItsOwnFrames) {
 TEST(FrameCheck, ReadsTheScenesFramesItself) {
   const std::string L = R"({"kind":"planar","workpiece":{"shape":{"type":"polygon",
     "vertices":[[0,0],[4,0],[4,1],[2,1],[2,3],[0,3]]}},"mu_s":"1/3","fixels":[)";
-  frame_check::CheckedSceneRead read =
-      frame_check::read_checked_scene(exact::JsonInput::parse(L + R"({"position":[0,1]},{"position":[0,2]}]})", "L"));
+  checker::frame_check::CheckedSceneRead read = checker::frame_check::read_checked_scene(
+      exact::JsonInput::parse(L + R"({"position":[0,1]},{"position":[0,2]}]})", "L"));
   ASSERT_EQ(read.violation, "");
   ASSERT_EQ(read.scene.fixels.size(), 2u);
   EXPECT_TRUE(read.scene.fixels[0].frame.normal == P(3, 0));
-  read = frame_check::read_checked_scene(
+  read = checker::frame_check::read_checked_scene(
       exact::JsonInput::parse(L + R"({"position":[0,2]},{"point":[0,1],"normal":[0,-1]}]})", "L"));
   EXPECT_NE(read.violation.find("fixel 1"), std::string::npos) << read.violation;
-  read = frame_check::read_checked_scene(exact::JsonInput::parse(L + R"({"position":[1,1]}]})", "L"));
+  read = checker::frame_check::read_checked_scene(exact::JsonInput::parse(L + R"({"position":[1,1]}]})", "L"));
   EXPECT_NE(read.violation.find("fixel 0"), std::string::npos) << read.violation;
   EXPECT_NE(read.violation.find("inside"), std::string::npos) << read.violation;
 }
@@ -128,14 +129,14 @@ TEST(FrameCheck, BuildsQuasistaticScenesWithItsOwnFrames) {
   const exact::JsonInput right = exact::JsonInput::parse(qs + R"({"position":[0,1],"mu":"1/3"},
     {"point":[0,2],"normal":[1,0],"mu":"1/3"}]})",
                                                          "qs");
-  const ucp::UcpProblem checked = ucp::read_ucp_problem(right, nullptr, frame_check::checked_frame);
+  const ucp::UcpProblem checked = ucp::read_ucp_problem(right, nullptr, checker::frame_check::checked_frame);
   EXPECT_EQ(ucp::to_json_text(checked), ucp::to_json_text(ucp::read_ucp_problem(right)));
   // W^T's first row is contact 0's (n, r x n) = (3, 0, (0,1) x (3,0)) = (3, 0, -3).
   EXPECT_EQ(checked.quasistatic->P(0, 0), Q(3));
   EXPECT_EQ(checked.quasistatic->P(0, 2), Q(-3));
   const exact::JsonInput inner =
       exact::JsonInput::parse(qs + R"({"point":[0,1],"normal":[0,-2],"mu":"1/3"}]})", "qs_inner");
-  EXPECT_THROW(ucp::read_ucp_problem(inner, nullptr, frame_check::checked_frame), exact::InputError);
+  EXPECT_THROW(ucp::read_ucp_problem(inner, nullptr, checker::frame_check::checked_frame), exact::InputError);
 }
 
 // ---- seeded random star-shaped polygons against a brute-force oracle ----
@@ -277,7 +278,7 @@ TEST(FrameCheck, RandomStarsAgainstTheOracle) {
       const Oracle o = oracle(V, f);
       ++fixels;
       solver_wrong += !agrees(geometry::frame_from_position(shape, f), o);
-      checker_wrong += !agrees(frame_check::checked_frame(shape, at(f)), o);
+      checker_wrong += !agrees(checker::frame_check::checked_frame(shape, at(f)), o);
       if (o.status == Oracle::kOk && sgn(o.gap2) == 0) touching.push_back(f);
     }
     // `modes` on three touching fixels, the last ones found (the traps come after the edge points), against the
@@ -302,7 +303,8 @@ TEST(FrameCheck, RandomStarsAgainstTheOracle) {
     mode_lists_wrong += mode_set(solved) != mode_set(truth);
     // The checker accepts the modes certificate of the solved scene.
     const ContactModes m = contact_modes(solved);
-    EXPECT_TRUE(check_modes_certificate(exact::JsonInput::parse(modes_certificate(scene_text, m), "cert")).valid);
+    EXPECT_TRUE(
+        checker::check_modes_certificate(exact::JsonInput::parse(modes_certificate(scene_text, m), "cert")).valid);
   }
   EXPECT_GE(scenes, 39);
   EXPECT_GE(traps, 100);

@@ -1,4 +1,4 @@
-#include "solvers/stability/frame_check.h"
+#include "checker/frame_check.h"
 
 #include <optional>
 
@@ -6,7 +6,7 @@
 #include "geometry/point_text.h"
 #include "geometry/scene_json.h"
 
-namespace contactcert::solvers::frame_check {
+namespace contactcert::checker::frame_check {
 namespace {
 
 using exact::Q;
@@ -221,4 +221,4 @@ CheckedSceneRead read_embedded_scene(const exact::JsonInput& certificate) {
   return read_checked_scene(embedded);
 }
 
-}  // namespace contactcert::solvers::frame_check
+}  // namespace contactcert::checker::frame_check

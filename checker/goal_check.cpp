@@ -1,20 +1,22 @@
-// The checker of "goal_nonempty" certificates (goal_certificate.h). It trusts nothing from the solver: the sets
-// of eq. (21) and Table 5 are stated here as the paper prints them, each set's scene is rebuilt from the embedded
-// goal scene and its K and P by the checkers' own Table 2 (table2_rows_check.h, not cone_form.h), and the push
+// The checker of "goal_nonempty" certificates (solvers/design/goal_certificate.h). It trusts nothing from the solver:
+// the sets of eq. (21) and Table 5 are stated here as the paper prints them, each set's scene is rebuilt from the
+// embedded goal scene and its K and P by the checkers' own Table 2 (table2_rows.h, not cone_form.h), and the push
 // wrench from the push point.
+#include "checker/goal_check.h"
+
 #include <sstream>
 
-#include "solvers/design/goal_certificate.h"
-#include "solvers/stability/frame_check.h"
+#include "checker/frame_check.h"
+#include "checker/table2_rows.h"
 #include "solvers/stability/sparse_motzkin.h"
-#include "solvers/stability/table2_rows_check.h"
 
-namespace contactcert::solvers {
+namespace contactcert::checker {
 namespace {
 
 using exact::Q;
 using exact::Vec;
 namespace t2 = table2_check;
+using solvers::read_sparse_motzkin;
 
 /// The sets (contact state, mode) whose wrench cones G_goal avoids, row by row as printed: eq. (21) for two
 /// fixels; Table 5 for three, whose state-111 row prints "mss" twice, the second being "ssm" (the row lists
@@ -115,4 +117,4 @@ GoalCertificateCheck check_goal_certificate(const exact::JsonInput& c) {
                     (c.find("push") ? " and holds the frictionless push at the push point" : "")};
 }
 
-}  // namespace contactcert::solvers
+}  // namespace contactcert::checker

@@ -1,10 +1,10 @@
-#include "solvers/stability/table2_rows_check.h"
+#include "checker/table2_rows.h"
 
 #include <algorithm>
 #include <optional>
 #include <sstream>
 
-namespace contactcert::solvers::table2_check {
+namespace contactcert::checker::table2_check {
 namespace {
 
 using W = std::array<Q, 3>;
@@ -465,4 +465,4 @@ std::string cone_witness_violation(const CheckedScene& scene, const ConeColumns&
   return "";
 }
 
-}  // namespace contactcert::solvers::table2_check
+}  // namespace contactcert::checker::table2_check

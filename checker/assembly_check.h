@@ -8,19 +8,36 @@
 
 #include <string>
 
+#include "exact/json_input.h"
 #include "geometry/assembly.h"
 #include "solvers/assembly/assembly_stability.h"
 
-namespace contactcert::solvers::assembly {
+namespace contactcert::checker {
+
+/// "" if every contact's frame is right (its point on both parties' boundaries, or a point party's position; its
+/// normal a common normal from `from` into `to`), else which contact's is not.
+std::string assembly_frames_violation(const geometry::Assembly& a);
 
 /// "" if `claim` is a valid decided verdict for assembly `a` with valid evidence, else why not:
 ///   strongly_stable: a resting solution, no moving one, and dead prefixes that cover every mode over s l r n, each
 ///     with a Motzkin certificate of its system (the energy row included: assembly_system.h says why it is valid);
 ///   weakly_stable: a resting solution and a moving solution (some body's acceleration non-zero);
 ///   unstable: a Motzkin certificate of the resting system (and a moving solution, if one is given, valid).
-std::string check_assembly_stability(const geometry::Assembly& a, const AssemblyStabilityResult& claim);
+std::string check_assembly_stability(const geometry::Assembly& a,
+                                     const solvers::assembly::AssemblyStabilityResult& claim);
 
 /// Why (vdot, c) is not a moving solution of `mode` (s l r n per contact) for assembly a, or "".
-std::string assembly_motion_violation(const geometry::Assembly& a, const AssemblyMotion& m);
+std::string assembly_motion_violation(const geometry::Assembly& a, const solvers::assembly::AssemblyMotion& m);
 
-}  // namespace contactcert::solvers::assembly
+struct AssemblyCertificateCheck {
+  bool valid = false;
+  std::string reason;
+  std::size_t bodies = 0, contacts = 0, dead = 0;  ///< of the embedded assembly and the evidence
+};
+
+/// Verifies an "assembly_stability" certificate (its format: solvers/assembly/assembly_certificate.h): the digest,
+/// then the evidence by check_assembly_stability, each dead prefix listed once. A malformed certificate (an unknown
+/// key, a bad vector or prefix) throws InputError naming the field.
+AssemblyCertificateCheck check_assembly_certificate(const exact::JsonInput& certificate);
+
+}  // namespace contactcert::checker

@@ -22,7 +22,7 @@
 #include "exact/number.h"
 #include "geometry/planar_scene.h"
 
-namespace contactcert::solvers::table2_check {
+namespace contactcert::checker::table2_check {
 
 using exact::Q;
 using exact::Vec;
@@ -135,4 +135,4 @@ Vec<Q> cone_contact_forces(const ConeColumns& cols, const std::vector<std::size_
 std::string cone_witness_violation(const CheckedScene& scene, const ConeColumns& cols, const Vec<Q>& z,
                                    const Vec<Q>& g);
 
-}  // namespace contactcert::solvers::table2_check
+}  // namespace contactcert::checker::table2_check

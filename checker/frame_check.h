@@ -18,7 +18,7 @@
 #include "exact/json_input.h"
 #include "geometry/planar_scene.h"
 
-namespace contactcert::solvers::frame_check {
+namespace contactcert::checker::frame_check {
 
 /// Why `frame` is not the contact frame that `shape` defines for what the file gives (see above): status kOk and
 /// an empty message if it is; else kInsideWorkpiece (a fixel strictly inside), kClosestNotUnique (p not on the
@@ -45,4 +45,4 @@ CheckedSceneRead read_checked_scene(const exact::JsonInput& root);
 /// "problem_sha256" is found to be the digest of that text (`violation` says so otherwise).
 CheckedSceneRead read_embedded_scene(const exact::JsonInput& certificate);
 
-}  // namespace contactcert::solvers::frame_check
+}  // namespace contactcert::checker::frame_check

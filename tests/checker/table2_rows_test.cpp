@@ -1,13 +1,15 @@
-// The checkers' own Table 2 rows (table2_rows_check.h) against the solver's (motion_system.h, cone_form.h) on
+// The checkers' own Table 2 rows (checker/table2_rows.h) against the solver's (motion_system.h, cone_form.h) on
 // seeded random scenes: written independently, they must agree entry by entry. And forged evidence whose proofs
 // hold for wrong rows (a tangent turned the wrong way, a friction coefficient changed) must be refused: a checker
 // that shared the solver's model would accept such proofs together with the model's error (issue 17, item 5).
-#include "solvers/stability/table2_rows_check.h"
+#include "checker/table2_rows.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "checker/modes_check.h"
+#include "checker/stability_check.h"
 #include "exact/json_input.h"
 #include "exact/strict_feasibility.h"
 #include "geometry/scene_json.h"
@@ -23,7 +25,7 @@ using exact::Mat;
 using exact::Q;
 using exact::StrictSystem;
 using exact::Vec;
-namespace t2 = table2_check;
+namespace t2 = checker::table2_check;
 
 geometry::PlanarScene parse(const std::string& text) {
   return geometry::read_planar_scene(exact::JsonInput::parse(text, "scene.json"));
@@ -237,7 +239,7 @@ TEST(Table2RowsCheck, RefusesProofsOfWrongRows) {
     for (const MotionModel<Q>* wrong : {&flipped, &friction}) {
       const auto claim = claim_from_model(*wrong, g);
       if (!claim) continue;
-      const std::string why = check_stability(full, g, *claim);
+      const std::string why = checker::check_stability(full, g, *claim);
       if (!strongly) {
         EXPECT_NE(why, "") << "a false strongly stable claim was accepted";
         ++false_verdicts;
@@ -265,7 +267,8 @@ TEST(Table2RowsCheck, RefusesModeListsOfWrongRows) {
     const auto k = static_cast<Eigen::Index>(scene.fixels.size());
     forged.model.J.col(k) *= Q(-1);  // fixel 1's tangent turned the wrong way: its l and r swap
     forged.tree = walk_modes(forged.model, forged.alphabet, {});
-    const auto check = check_modes_certificate(exact::JsonInput::parse(modes_certificate(text, forged), "m.json"));
+    const auto check =
+        checker::check_modes_certificate(exact::JsonInput::parse(modes_certificate(text, forged), "m.json"));
     std::vector<std::string> listed, actual;
     for (const auto& m : forged.tree.modes) listed.push_back(m.text());
     for (const auto& m : truth.tree.modes) actual.push_back(m.text());

@@ -1,7 +1,7 @@
 // The assembly checker: N = 1 against the one-body stability solver (solvers/stability) on the bundled scenes, and
 // forged evidence refused (a dropped branch, a wrong vector, a relabelled body, a claimed verdict without its
 // evidence).
-#include "solvers/assembly/assembly_check.h"
+#include "checker/assembly_check.h"
 
 #include <gtest/gtest.h>
 
@@ -70,7 +70,7 @@ TEST(AssemblyCheck, OneBodyAgreesWithTheSingleBodySolverOnTheBundledScenes) {
       const AssemblyStabilityResult many = assembly_stability(a);
       ASSERT_EQ(many.status, AssemblyStatus::kDecided);
       EXPECT_EQ(many.verdict, from_single(one.verdict)) << name << " g = " << g.transpose();
-      EXPECT_EQ(check_assembly_stability(a, many), "") << name;
+      EXPECT_EQ(checker::check_assembly_stability(a, many), "") << name;
       ++compared;
       ++counts[static_cast<int>(many.verdict)];
     }
@@ -104,12 +104,12 @@ TEST(AssemblyCheck, ForgedStronglyStableCertificatesAreRefused) {
   const geometry::Assembly a = two_boxes(false, "\"1/4\"").read();
   const AssemblyStabilityResult r = assembly_stability(a);
   ASSERT_EQ(r.verdict, AssemblyVerdict::kStronglyStable);
-  ASSERT_EQ(check_assembly_stability(a, r), "");
+  ASSERT_EQ(checker::check_assembly_stability(a, r), "");
   ASSERT_GE(r.dead.size(), 3u);
   for (std::size_t j = 0; j < r.dead.size(); j += 3) {  // a dropped branch
     AssemblyStabilityResult f = r;
     f.dead.erase(f.dead.begin() + static_cast<std::ptrdiff_t>(j));
-    EXPECT_NE(check_assembly_stability(a, f), "") << "dropped " << r.dead[j].prefix;
+    EXPECT_NE(checker::check_assembly_stability(a, f), "") << "dropped " << r.dead[j].prefix;
   }
   {  // a wrong vector: one certificate's entries shifted by one place
     AssemblyStabilityResult f = r;
@@ -117,30 +117,30 @@ TEST(AssemblyCheck, ForgedStronglyStableCertificatesAreRefused) {
     const Q first = y(0);
     for (Eigen::Index i = 0; i + 1 < y.size(); ++i) y(i) = y(i + 1);
     y(y.size() - 1) = first;
-    EXPECT_NE(check_assembly_stability(a, f), "");
+    EXPECT_NE(checker::check_assembly_stability(a, f), "");
   }
   {  // a wrong vector: a dead prefix relabelled to another letter
     AssemblyStabilityResult f = r;
     std::string& p = f.dead.back().prefix;
     p.back() = p.back() == 's' ? 'l' : 's';
-    EXPECT_NE(check_assembly_stability(a, f), "");
+    EXPECT_NE(checker::check_assembly_stability(a, f), "");
   }
   {  // the resting forces of another load
     AssemblyStabilityResult f = r;
     f.resting_forces(0) += 1;
-    EXPECT_NE(check_assembly_stability(a, f), "");
+    EXPECT_NE(checker::check_assembly_stability(a, f), "");
   }
   // A relabelled body: the same certificate against the scene with its bodies listed the other way round.
   const geometry::Assembly swapped = two_boxes(true, "\"1/4\"").read();
   EXPECT_EQ(assembly_stability(swapped).verdict, AssemblyVerdict::kStronglyStable);
-  EXPECT_NE(check_assembly_stability(swapped, r), "");
+  EXPECT_NE(checker::check_assembly_stability(swapped, r), "");
   {  // a claimed weak verdict without a moving solution, an undecided one
     AssemblyStabilityResult f = r;
     f.verdict = AssemblyVerdict::kWeaklyStable;
-    EXPECT_NE(check_assembly_stability(a, f), "");
+    EXPECT_NE(checker::check_assembly_stability(a, f), "");
     f = r;
     f.status = AssemblyStatus::kTimeLimit;
-    EXPECT_NE(check_assembly_stability(a, f), "");
+    EXPECT_NE(checker::check_assembly_stability(a, f), "");
   }
 }
 
@@ -156,34 +156,34 @@ TEST(AssemblyCheck, ForgedWitnessesAreRefused) {
   const geometry::Assembly a = s.read();
   const AssemblyStabilityResult r = assembly_stability(a);
   ASSERT_EQ(r.verdict, AssemblyVerdict::kWeaklyStable);
-  ASSERT_EQ(check_assembly_stability(a, r), "");
+  ASSERT_EQ(checker::check_assembly_stability(a, r), "");
   {  // the bodies' accelerations relabelled
     AssemblyStabilityResult f = r;
     for (Eigen::Index d = 0; d < 3; ++d) std::swap(f.moving.acceleration(d), f.moving.acceleration(3 + d));
     if (f.moving.acceleration != r.moving.acceleration) {
-      EXPECT_NE(check_assembly_stability(a, f), "");
+      EXPECT_NE(checker::check_assembly_stability(a, f), "");
     }
   }
   {  // a force scaled
     AssemblyStabilityResult f = r;
     f.moving.forces *= 2;
-    EXPECT_NE(check_assembly_stability(a, f), "");
+    EXPECT_NE(checker::check_assembly_stability(a, f), "");
   }
   {  // another mode's letter
     AssemblyStabilityResult f = r;
     f.moving.mode[0] = f.moving.mode[0] == 'n' ? 'r' : 'n';
-    EXPECT_NE(check_assembly_stability(a, f), "");
+    EXPECT_NE(checker::check_assembly_stability(a, f), "");
   }
   {  // at rest, passed off as moving
     AssemblyStabilityResult f = r;
     f.moving.acceleration.setZero();
-    EXPECT_NE(check_assembly_stability(a, f), "");
+    EXPECT_NE(checker::check_assembly_stability(a, f), "");
   }
   {  // strongly stable claimed, the moving witness removed and no dead prefixes
     AssemblyStabilityResult f = r;
     f.verdict = AssemblyVerdict::kStronglyStable;
     f.has_moving = false;
-    EXPECT_NE(check_assembly_stability(a, f), "");
+    EXPECT_NE(checker::check_assembly_stability(a, f), "");
   }
 }
 
@@ -195,16 +195,16 @@ TEST(AssemblyCheck, ForgedUnstableCertificatesAreRefused) {
   const geometry::Assembly a = s.read();
   const AssemblyStabilityResult r = assembly_stability(a);
   ASSERT_EQ(r.verdict, AssemblyVerdict::kUnstable);
-  ASSERT_EQ(check_assembly_stability(a, r), "");
+  ASSERT_EQ(checker::check_assembly_stability(a, r), "");
   AssemblyStabilityResult f = r;
   f.resting_farkas = -f.resting_farkas;
-  EXPECT_NE(check_assembly_stability(a, f), "");
+  EXPECT_NE(checker::check_assembly_stability(a, f), "");
   f = r;
   f.resting_farkas.setZero();
-  EXPECT_NE(check_assembly_stability(a, f), "");
+  EXPECT_NE(checker::check_assembly_stability(a, f), "");
   // The same certificate for the stable stack (the top box back over the lower one) does not prove it unstable.
   const geometry::Assembly stable = testing::box_stack(2).read();
-  EXPECT_NE(check_assembly_stability(stable, r), "");
+  EXPECT_NE(checker::check_assembly_stability(stable, r), "");
 }
 
 }  // namespace
