@@ -45,8 +45,7 @@ std::string design(const Scene& s, const DesignArgs& a) {
   o.chunk_size = a.chunk_size;
   o.push_points = a.push_points;
   o.max_placements = a.max_placements;
-  const queries::DesignRun run = queries::run_design(s, o, *solvers::serial_distributor());
-  if (run.status == queries::DesignStatus::kLimit) throw exact::BudgetExceeded(run.limit->what, run.limit->covered);
+  const queries::DesignRun run = answer(queries::run_design(s, o, *solvers::serial_distributor()));
   if (run.status == queries::DesignStatus::kRefused) throw py::value_error(run.refusal);
   return queries::to_json(*run.report).dump();
 }
@@ -76,8 +75,8 @@ void bind_design(py::module_& m) {
   m.def(
       "convert",
       [](const std::string& text, const std::string& name, const std::string& arith, double time_limit) {
-        return queries::to_json(queries::run_convert(exact::JsonInput::parse(text, name),
-                                                     {{queries::parse_arith(arith, "arith"), time_limit}}))
+        return queries::to_json(answer(queries::run_convert(exact::JsonInput::parse(text, name),
+                                                            {{queries::parse_arith(arith, "arith"), time_limit}})))
             .dump();
       },
       Release());

@@ -10,7 +10,9 @@ namespace contactcert::queries {
 namespace ucp = solvers::ucp;
 using exact::Q;
 
-AssemblyUcpAnswer run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOptions& options) {
+namespace {
+
+AssemblyUcpAnswer assembly_ucp_answer(const AssemblyInput& in, const AssemblyUcpOptions& options) {
   if (options.common.arith == exact::Arith::kFloat)
     throw exact::InputError(
         "command line", "--arith",
@@ -40,6 +42,12 @@ AssemblyUcpAnswer run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOpt
   if (!options.certificate.empty()) ans.certificate_text = ucp::certificate_text(problem, ans.report);
   write_files(in, options, ans);
   return ans;
+}
+
+}  // namespace
+
+Limited<AssemblyUcpAnswer> run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOptions& options) {
+  return with_limits(options.common.arith, [&] { return assembly_ucp_answer(in, options); });
 }
 
 json to_json(const AssemblyUcpAnswer& ans) {
