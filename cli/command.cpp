@@ -1,5 +1,5 @@
-// The options every subcommand takes (cli/command.h), in the library so that every command's object links
-// without main.cpp.
+// The options every subcommand takes and the report of a query's limit (cli/command.h), in the library so that
+// every command's object links without main.cpp.
 #include "cli/command.h"
 
 #include <CLI/CLI.hpp>

@@ -1,4 +1,5 @@
-// Shared pieces of the contactcert subcommands: options every command takes, and registration.
+// Shared pieces of the contactcert subcommands: options every command takes, the report of a limit, and
+// registration.
 #pragma once
 
 #include <functional>
