@@ -31,7 +31,9 @@ int run_assembly(const AssemblyCliOptions& o) {
     if (o.max_bases > 0) q.max_bases = o.max_bases;
     q.certificate = o.certificate;
     q.svg = o.svg;
-    const queries::AssemblyUcpAnswer a = queries::run_assembly_ucp(in, q);
+    const queries::Limited<queries::AssemblyUcpAnswer> r = queries::run_assembly_ucp(in, q);
+    if (!r) return report_limit("assembly", r.limit(), o.common.json);
+    const queries::AssemblyUcpAnswer& a = *r;
     std::cout << (o.common.json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, o.file));
     return a.report.status == solvers::ucp::UcpStatus::kUnknown ? 3 : 0;
   }
@@ -40,7 +42,9 @@ int run_assembly(const AssemblyCliOptions& o) {
   if (o.max_nodes > 0) q.max_nodes = o.max_nodes;
   q.certificate = o.certificate;
   q.svg = o.svg;
-  const queries::AssemblyStabilityAnswer a = queries::run_assembly_stability(in, q);
+  const queries::Limited<queries::AssemblyStabilityAnswer> r = queries::run_assembly_stability(in, q);
+  if (!r) return report_limit("assembly", r.limit(), o.common.json);
+  const queries::AssemblyStabilityAnswer& a = *r;
   std::cout << (o.common.json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, o.file));
   if (a.decided()) return 0;
   std::cerr << "contactcert: assembly: budget exceeded before a verdict (" << a.result.covered << ")"

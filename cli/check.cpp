@@ -23,7 +23,11 @@ int run_check(const CheckOptions& o) {
   const exact::JsonInput cert = exact::JsonInput::load(o.file);
   std::optional<exact::JsonInput> problem;
   if (!o.problem.empty()) problem = exact::JsonInput::load(o.problem);
-  const queries::CheckResult c = queries::check(cert, problem ? &*problem : nullptr);
+  // A checker re-derives cones and LPs under the solvers' budgets: one that runs out is the command's limit.
+  const Limited<queries::CheckResult> r =
+      with_limits(o.common.query().arith, [&] { return queries::check(cert, problem ? &*problem : nullptr); });
+  if (!r) return report_limit("check", r.limit(), o.common.json);
+  const queries::CheckResult& c = *r;
   if (o.common.json) {
     std::cout << queries::to_json(c).dump() << "\n";
   } else {

@@ -1,5 +1,5 @@
-// The options every subcommand takes (cli/command.h), in the library so that every command's object links
-// without main.cpp.
+// The options every subcommand takes and the report of a query's limit (cli/command.h), in the library so that
+// every command's object links without main.cpp.
 #include "cli/command.h"
 
 #include <CLI/CLI.hpp>
@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <iostream>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "cli/option_checks.h"
@@ -24,6 +26,24 @@ void add_common_options(CLI::App& sub, CommonOptions& opts) {
   sub.add_option("--time-limit", opts.time_limit, "Seconds of wall clock before the run stops with exit 3 (0 = none)")
       ->check(seconds_in_range())
       ->default_str("0");
+}
+
+int report_limit(const std::string& command, const queries::Limit& limit, bool json) {
+  switch (limit.kind) {
+    case queries::Limit::Kind::kBudget:
+      std::cerr << "contactcert: budget exceeded: " << limit.text() << "\n";
+      break;
+    case queries::Limit::Kind::kStopped:
+      std::cerr << "contactcert: " << limit.text() << "\n";
+      break;
+    case queries::Limit::Kind::kUndecided:
+      if (json)
+        std::cout << nlohmann::json{{"status", "undecided"}, {"arith", "float"}, {"reason", limit.what}}.dump() << "\n";
+      std::cerr << "contactcert: " << command << ": undecided in floating point: " << limit.what
+                << "; rerun with --arith verified for an exact answer\n";
+      break;
+  }
+  return 3;
 }
 
 void start_watchdog(const std::string& command, double limit) {

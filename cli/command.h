@@ -1,9 +1,11 @@
-// Shared pieces of the contactcert subcommands: options every command takes, and registration.
+// Shared pieces of the contactcert subcommands: options every command takes, the report of a limit, and
+// registration.
 #pragma once
 
 #include <functional>
 #include <string>
 
+#include "queries/limit.h"
 #include "queries/options.h"
 
 namespace CLI {
@@ -28,6 +30,12 @@ using Action = std::function<int()>;
 
 /// Adds --json, --arith and --time-limit to a subcommand.
 void add_common_options(CLI::App& sub, CommonOptions& opts);
+
+/// Reports the limit that stopped `command` (SPEC section 6) and returns its exit code, 3. On stderr: "budget
+/// exceeded: WHAT (covered: ...)" (a budget inside the computation), "WHAT (covered: ...)" (the command's own
+/// stop), or for a float run that cannot decide "COMMAND: undecided in floating point: WHY; rerun with --arith
+/// verified ...", with `json` also {"status": "undecided", "arith": "float", "reason"} on stdout.
+int report_limit(const std::string& command, const queries::Limit& limit, bool json);
 
 /// Ends the process with exit code 3 if the command is still running `limit` seconds (+ grace) from now: the
 /// backstop of --time-limit (main.cpp), and of a command's own default time budget.

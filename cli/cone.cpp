@@ -142,7 +142,9 @@ int run_cone_command(const ConeCliOptions& o) {
   options.table2 = parse_table2(o.table2, "--table2");
   options.certificate = o.certificate;
   options.svg = o.svg;
-  const ConeAnswer a = run_cone(input, options);
+  const Limited<ConeAnswer> r = run_cone(input, options);
+  if (!r) return report_limit("cone", r.limit(), o.common.json);
+  const ConeAnswer& a = *r;
   if (o.common.json)
     std::cout << to_json(a).dump() << "\n";
   else if (a.cone)

@@ -27,7 +27,10 @@ void print_rows(std::ostream& os, const char* title, const exact::Mat<exact::Q>&
 }
 
 int run_convert(const ConvertOptions& opts) {
-  const queries::ConvertAnswer a = queries::run_convert(exact::JsonInput::load(opts.file), {opts.common.query()});
+  const queries::Limited<queries::ConvertAnswer> r =
+      queries::run_convert(exact::JsonInput::load(opts.file), {opts.common.query()});
+  if (!r) return report_limit("convert", r.limit(), opts.common.json);
+  const queries::ConvertAnswer& a = *r;
   if (opts.common.json || !a.exact) {  // the float answer is printed as its JSON, indented without --json
     std::cout << (opts.common.json ? queries::to_json(a).dump() : queries::to_json(a).dump(2)) << "\n";
     return 0;

@@ -251,12 +251,16 @@ std::vector<std::string> assembly_row(const std::string& name, const std::string
                                       const std::string& path, HtmlReport& rep) {
   const AssemblyInput in = parse_assembly(text, path);
   if (kind == "quasistatic_scene") {
-    const AssemblyUcpAnswer a = run_assembly_ucp(in, {});
+    const Limited<AssemblyUcpAnswer> r = run_assembly_ucp(in, {});
+    if (!r) return {name, "-", "budget exhausted", r.limit().what};
+    const AssemblyUcpAnswer& a = *r;
     const char* status = solvers::ucp::status_name(a.report.status);
     rep.figure(to_svg(in, a), name + (a.forces.empty() ? ": the assembly" : ": the contact forces of the solution"));
     return {name, "assembly, quasistatic", status, a.report.reason};
   }
-  const AssemblyStabilityAnswer a = run_assembly_stability(in, {});
+  const Limited<AssemblyStabilityAnswer> r = run_assembly_stability(in, {});
+  if (!r) return {name, "-", "budget exhausted", r.limit().what};
+  const AssemblyStabilityAnswer& a = *r;
   if (!a.decided()) return {name, "assembly", "budget exhausted", a.result.covered};
   const auto check = checker::check_assembly_certificate(
       exact::JsonInput::parse(solvers::assembly::assembly_certificate(text, a.result), "certificate"));

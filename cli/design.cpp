@@ -83,13 +83,14 @@ int run_design(DesignOptions& o) {
   ProgressLine progress("design " + o.file);
   queries::DesignProgress show;
   if (progress.enabled()) show = [&progress](const std::string& text) { progress.update(text); };
-  const queries::DesignRun run = queries::run_design(in, o.query, *dist, show);
+  const queries::Limited<queries::DesignRun> limited = queries::run_design(in, o.query, *dist, show);
   progress.finish();
+  if (!limited) return report_limit("design", limited.limit(), o.common.json);
+  const queries::DesignRun& run = *limited;
   switch (run.status) {
     case queries::DesignStatus::kWorkerFinished:
       return 0;
-    case queries::DesignStatus::kLimit:
-      if (run.limit) std::cerr << "contactcert: " << run.limit->text() << "\n";
+    case queries::DesignStatus::kLimit:  // another rank: the root reports the limit
       return 3;
     case queries::DesignStatus::kRefused:
       if (!run.refusal.empty())  // one write: under mpirun, lines of other ranks cannot split it

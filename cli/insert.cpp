@@ -54,11 +54,14 @@ int run_insert_command(const InsertCliOptions& o) {
   options.sweep_mu = parse_sweep_mu(o.sweep_mu);
   options.svg = o.svg;
   ProgressLine progress("insert " + o.file + " --sweep-mu");
-  const InsertAnswer a = run_insert(input, options, [&progress](std::size_t index, std::size_t total, const Q& mu) {
-    progress.update("mu = " + exact::to_string(mu) + " (" + std::to_string(index + 1) + " of " + std::to_string(total) +
-                    ")");
-  });
+  const Limited<InsertAnswer> r =
+      run_insert(input, options, [&progress](std::size_t index, std::size_t total, const Q& mu) {
+        progress.update("mu = " + exact::to_string(mu) + " (" + std::to_string(index + 1) + " of " +
+                        std::to_string(total) + ")");
+      });
   progress.finish();
+  if (!r) return report_limit("insert", r.limit(), o.common.json);
+  const InsertAnswer& a = *r;
   if (o.common.json)
     std::cout << to_json(a).dump() << "\n";
   else

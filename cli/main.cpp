@@ -2,6 +2,9 @@
 // Exit codes (SPEC section 6): 0 success, 1 internal error, 2 bad input or usage (also: an output that cannot be
 // written, an INVALID certificate), 3 budget exceeded (also: out of memory, a float run that cannot decide).
 //
+// A query's limit (a budget, the time limit, a float run that cannot decide) is its answer's status, which each
+// command reports through report_limit (cli/command.h); what reaches the handlers below is input, memory or a bug.
+//
 // Out of memory, in GMP as elsewhere, is exit 3 "out of memory": GMP allocates through functions that throw
 // std::bad_alloc (its default ones abort; runtime/memory.h).
 //
@@ -10,10 +13,10 @@
 // process with exit 3 shortly after the limit (a 5% grace, at least one second, lets the loops report first).
 // Every subcommand takes the option: those that do not register it themselves get it here.
 #include <CLI/CLI.hpp>
+#include <exception>
 #include <iostream>
 #include <new>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <string>
 
 #include "cli/command.h"
@@ -27,27 +30,6 @@
 
 namespace contactcert::cli {
 namespace {
-
-/// The subcommand ran with --arith float.
-bool float_arith(const CLI::App& app) {
-  for (const CLI::App* sub : app.get_subcommands()) {
-    const CLI::Option* arith = sub->get_option_no_throw("--arith");
-    if (arith != nullptr && arith->count() > 0 && arith->as<std::string>() == "float") return true;
-  }
-  return false;
-}
-
-/// A float run whose rounded numbers contradict themselves (e.g. the double description finds the rank it was
-/// promised lacking): the float path cannot decide, which is an answer ("undecided", exit 3), not a bug.
-void report_float_undecided(const CLI::App& app, const std::string& what) {
-  const std::string reason = "the float computation is inconsistent after rounding (" + what + ")";
-  const CLI::App* sub = app.get_subcommands().front();
-  const CLI::Option* json = sub->get_option_no_throw("--json");
-  if (json != nullptr && json->count() > 0)
-    std::cout << nlohmann::json{{"status", "undecided"}, {"arith", "float"}, {"reason", reason}}.dump() << "\n";
-  std::cerr << "contactcert: " << sub->get_name() << ": undecided in floating point: " << reason
-            << "; rerun with --arith verified for an exact answer\n";
-}
 
 double no_time_limit = 0;  // --time-limit of the subcommands that do not register it themselves
 
@@ -110,9 +92,6 @@ int main(int argc, char** argv) {
   } catch (const exact::InputError& e) {
     std::cerr << "contactcert: " << e.what() << "\n";
     return 2;
-  } catch (const exact::BudgetExceeded& e) {
-    std::cerr << "contactcert: budget exceeded: " << e.what() << " (covered: " << e.covered << ")\n";
-    return 3;
   } catch (const std::bad_alloc&) {
     std::cerr << "contactcert: out of memory\n";
     return 3;
@@ -126,13 +105,6 @@ int main(int argc, char** argv) {
     std::cerr << "contactcert: command line: a text given on it (a file name?) is not UTF-8, which the JSON output "
                  "cannot hold\n";
     return 2;
-  } catch (const std::logic_error& e) {
-    if (!cli::float_arith(app)) {
-      std::cerr << "contactcert: internal error: " << e.what() << "\n";
-      return 1;
-    }
-    cli::report_float_undecided(app, e.what());
-    return 3;
   } catch (const std::exception& e) {
     std::cerr << "contactcert: internal error: " << e.what() << "\n";
     return 1;

@@ -68,7 +68,9 @@ int run_modes_command(const ModesCliOptions& o) {
   if (options.default_time_budget())
     start_watchdog("modes (the default budget of --unions and --table2 printed; --time-limit sets another)",
                    kModesDefaultSeconds);
-  const ModesAnswer a = run_modes(read_scene(o.file, o.snap), options);
+  const Limited<ModesAnswer> r = run_modes(read_scene(o.file, o.snap), options);
+  if (!r) return report_limit("modes", r.limit(), o.common.json);
+  const ModesAnswer& a = *r;
   if (o.common.json)
     std::cout << to_json(a).dump() << "\n";
   else

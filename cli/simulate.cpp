@@ -93,7 +93,9 @@ void print_simulate_text(const json& j) {
 
 int run_simulate_command(const SimulateCliOptions& o) {
   const queries::SimulateOptions q = simulate_query_options(o);
-  const queries::SimulateAnswer a = queries::run_simulate(queries::load_motion(o.file), q);
+  const queries::Limited<queries::SimulateAnswer> r = queries::run_simulate(queries::load_motion(o.file), q);
+  if (!r) return report_limit("simulate", r.limit(), o.common.json);
+  const queries::SimulateAnswer& a = *r;
   const json j = queries::to_json(a);
   if (o.common.json)
     std::cout << exact::json_text(j) << "\n";

@@ -140,11 +140,12 @@ void print_wrenches(const StabilityOptions& o, const WrenchesAnswer& a) {
             << exact::arith_name(a.arith) << " arithmetic)\n";
 }
 
-/// Prints an answer: its --json object, or its text report by `text`.
+/// Prints an answer: its --json object, or its text report by `text`; or the limit that stopped it.
 template <class Answer, class Text>
-int print(const StabilityOptions& o, const Answer& answer, Text text) {
+int print(const StabilityOptions& o, const Limited<Answer>& answer, Text text) {
+  if (!answer) return report_limit("stability", answer.limit(), o.common.json);
   if (o.common.json)
-    std::cout << to_json(answer).dump() << "\n";
+    std::cout << to_json(*answer).dump() << "\n";
   else
     text();
   return 0;
@@ -159,20 +160,20 @@ int run_stability_command(const StabilityOptions& o) {
   const geometry::PlanarScene& scene = input.scene;
   if (!o.wrenches.empty()) {
     const auto a = run_wrenches(input, {common, o.wrenches});
-    return print(o, a, [&] { print_wrenches(o, a); });
+    return print(o, a, [&] { print_wrenches(o, *a); });
   }
   if (o.region) {
     RegionOptions q{common, std::nullopt, o.svg};
     if (!o.wrench.empty()) q.wrench = parse_number_list(o.wrench, "--wrench", 3);
     const auto a = run_region(input, q);
-    return print(o, a, [&] { print_region(o, scene, a); });
+    return print(o, a, [&] { print_region(o, scene, *a); });
   }
   if (o.finger) {
     const auto a = run_finger(input, {common, o.svg});
-    return print(o, a, [&] { print_finger(o, scene, a); });
+    return print(o, a, [&] { print_finger(o, scene, *a); });
   }
   const auto a = run_stability(input, {common, parse_number_list(o.wrench, "--wrench", 3), o.margin, o.certificate});
-  return print(o, a, [&] { std::visit([&](const auto& r) { print_stability(o, scene, a, r); }, a.outcome); });
+  return print(o, a, [&] { std::visit([&](const auto& r) { print_stability(o, scene, *a, r); }, a->outcome); });
 }
 
 }  // namespace

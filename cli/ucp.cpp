@@ -106,8 +106,10 @@ int run_ucp(const UcpCliOptions& o) {
                           ? std::to_string(units) + " modes tested"
                           : std::to_string(units) + " nodes, " + std::to_string(lps) + " LPs");
     };
-  const queries::UcpAnswer a = queries::run_ucp(in, q);
+  const queries::Limited<queries::UcpAnswer> r = queries::run_ucp(in, q);
   progress.finish();
+  if (!r) return report_limit("ucp", r.limit(), o.common.json);
+  const queries::UcpAnswer& a = *r;
   if (o.common.json)
     std::cout << exact::json_text(queries::to_json(a)) << "\n";
   else

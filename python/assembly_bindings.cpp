@@ -24,7 +24,7 @@ Answer stability(const Assembly& a, const std::string& arith, double time_limit,
   o.common = {queries::parse_arith(arith, "--arith"), time_limit};
   o.max_nodes = max_nodes.value_or(o.max_nodes);
   o.certificate = certificate;
-  const queries::AssemblyStabilityAnswer ans = queries::run_assembly_stability(a, o);
+  const queries::AssemblyStabilityAnswer ans = answer(queries::run_assembly_stability(a, o));
   return {queries::to_json(ans).dump(), ans.certificate_text, queries::to_svg(a, ans)};
 }
 
@@ -36,7 +36,7 @@ Answer ucp(const Assembly& a, const std::string& arith, double time_limit, std::
   o.max_nodes = max_nodes.value_or(o.max_nodes);
   o.max_bases = max_bases.value_or(o.max_bases);
   o.certificate = certificate;
-  const queries::AssemblyUcpAnswer ans = queries::run_assembly_ucp(a, o);
+  const queries::AssemblyUcpAnswer ans = answer(queries::run_assembly_ucp(a, o));
   return {queries::to_json(ans).dump(), ans.certificate_text, queries::to_svg(a, ans)};
 }
 

@@ -4,9 +4,11 @@
 
 #include <pybind11/pybind11.h>
 
+#include <exception>
 #include <string>
 #include <utility>
 
+#include "queries/limit.h"
 #include "queries/scene_input.h"
 #include "queries/ucp_query.h"
 
@@ -18,6 +20,20 @@ namespace py = pybind11;
 using Release = py::call_guard<py::gil_scoped_release>;
 /// A result's JSON text and, where the CLI writes one, the certificate text (empty if none).
 using WithCertificate = std::pair<std::string, std::string>;
+
+/// A query's limit on its way out of a call: core.cpp's translator raises it as contactcert.BudgetExceeded.
+struct LimitReached : std::exception {
+  explicit LimitReached(queries::Limit l) : limit(std::move(l)) {}
+  const char* what() const noexcept override { return "a query's limit"; }
+  queries::Limit limit;
+};
+
+/// The answer of a query, or (for its limit) LimitReached.
+template <class A>
+A answer(queries::Limited<A> limited) {
+  if (!limited) throw LimitReached(limited.limit());
+  return *std::move(limited);
+}
 
 /// A planar scene with its text (a stability certificate embeds it) and the name its messages use.
 using Scene = queries::SceneInput;

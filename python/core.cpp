@@ -1,7 +1,8 @@
 // contactcert._core: the extension under the Python package python/contactcert. Each call runs the query the
 // matching subcommand runs (queries/) and returns the JSON text that `--json` prints; the package wraps it in
 // small result classes (the bindings of each family of queries: python/bindings.h). The work runs with the GIL
-// released; InputError becomes ValueError with the CLI's message, BudgetExceeded becomes contactcert.BudgetExceeded.
+// released; InputError becomes ValueError with the CLI's message, a query's limit (python::answer) becomes
+// contactcert.BudgetExceeded with the CLI's message: "budget exceeded: WHAT (covered: ...)".
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -31,14 +32,18 @@ PYBIND11_MODULE(_core, m) {
   // on 32 fixels in 0.69x the time. Not the CLI's heap policy: it would keep the interpreter's heap until exit, and
   // gains nothing measurable on these queries.
   m.attr("pooled_gmp_memory") = runtime::use_pooled_gmp_memory_if_default();
-  static py::exception<exact::BudgetExceeded> budget(m, "BudgetExceeded", PyExc_RuntimeError);
+  static py::exception<python::LimitReached> budget(m, "BudgetExceeded", PyExc_RuntimeError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const exact::InputError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
-    } catch (const exact::BudgetExceeded& e) {
-      budget(("budget exceeded: " + std::string(e.what()) + " (covered: " + e.covered + ")").c_str());
+    } catch (const python::LimitReached& e) {
+      const queries::Limit& l = e.limit;
+      budget((l.kind == queries::Limit::Kind::kUndecided
+                  ? "undecided in floating point: " + l.what + "; rerun with arith=\"verified\" for an exact answer"
+                  : "budget exceeded: " + l.text())
+                 .c_str());
     }
   });
 

@@ -15,8 +15,7 @@ namespace {
 /// `design SCENE ... --json` on one process: the --json text; a budget raises BudgetExceeded with what was
 /// covered, a refused checkpoint ValueError naming the file and field.
 std::string design(const Scene& s, const queries::DesignOptions& o) {
-  const queries::DesignRun run = queries::run_design(s, o, *solvers::serial_distributor());
-  if (run.status == queries::DesignStatus::kLimit) throw exact::BudgetExceeded(run.limit->what, run.limit->covered);
+  const queries::DesignRun run = answer(queries::run_design(s, o, *solvers::serial_distributor()));
   if (run.status == queries::DesignStatus::kRefused) throw py::value_error(run.refusal);
   return queries::to_json(*run.report).dump();
 }
@@ -59,8 +58,8 @@ void bind_design(py::module_& m) {
   m.def(
       "convert",
       [](const std::string& text, const std::string& name, const std::string& arith, double time_limit) {
-        return queries::to_json(queries::run_convert(exact::JsonInput::parse(text, name),
-                                                     {{queries::parse_arith(arith, "arith"), time_limit}}))
+        return queries::to_json(answer(queries::run_convert(exact::JsonInput::parse(text, name),
+                                                            {{queries::parse_arith(arith, "arith"), time_limit}})))
             .dump();
       },
       Release());

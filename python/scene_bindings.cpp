@@ -27,12 +27,12 @@ WithCertificate cone(const Scene& s, const std::string& mode, const std::string&
   queries::ConeOptions o = cone_options(mode, route, table2);
   o.common = {queries::parse_arith(arith, "--arith"), time_limit};
   o.certificate = certificate;
-  const queries::ConeAnswer a = queries::run_cone(s, o);
+  const queries::ConeAnswer a = answer(queries::run_cone(s, o));
   return {queries::to_json(a).dump(), a.certificate_text};
 }
 
 std::string cone_svg(const Scene& s, const std::string& mode, const std::string& route, const std::string& table2) {
-  return queries::cone_svg(queries::run_cone(s, cone_options(mode, route, table2)));
+  return queries::cone_svg(answer(queries::run_cone(s, cone_options(mode, route, table2))));
 }
 
 /// `modes FILE` with its options (a budget not given: the CLI's default).
@@ -47,7 +47,7 @@ WithCertificate modes(const Scene& s, bool kinematic, const std::string& table2,
   o.max_nodes = max_nodes.value_or(o.max_nodes);
   o.max_modes = max_modes.value_or(o.max_modes);
   o.certificate = certificate;
-  const queries::ModesAnswer a = queries::run_modes(s, o);
+  const queries::ModesAnswer a = answer(queries::run_modes(s, o));
   return {queries::to_json(a).dump(), a.certificate_text};
 }
 
@@ -60,11 +60,11 @@ queries::InsertOptions insert_options(const std::string& sweep_mu, const std::st
 
 /// `insert FILE [--sweep-mu a,b,...] [--arith A]`.
 std::string insertion(const Scene& s, const std::string& sweep_mu, const std::string& arith) {
-  return queries::to_json(queries::run_insert(s, insert_options(sweep_mu, arith))).dump();
+  return queries::to_json(answer(queries::run_insert(s, insert_options(sweep_mu, arith)))).dump();
 }
 
 std::string insertion_svg(const Scene& s) {
-  const queries::InsertAnswer a = queries::run_insert(s, insert_options("", "verified"));
+  const queries::InsertAnswer a = answer(queries::run_insert(s, insert_options("", "verified")));
   return queries::insertion_svg(a.scene, a.pushes);
 }
 

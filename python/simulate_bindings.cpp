@@ -32,7 +32,7 @@ std::unique_ptr<queries::SimulateRun> start(const queries::MotionInput& input, s
   o.max_modes = max_modes.value_or(o.max_modes);
   o.certificates = certificates;
   o.svg = svg;
-  return std::make_unique<queries::SimulateRun>(input, o);
+  return answer(queries::with_limits(o.common.arith, [&] { return std::make_unique<queries::SimulateRun>(input, o); }));
 }
 
 }  // namespace
@@ -48,12 +48,17 @@ void bind_simulate(py::module_& m) {
              std::optional<queries::json> step;
              {
                const py::gil_scoped_release release;
-               step = r.next();
+               step = answer(queries::with_limits(r.options().common.arith, [&] { return r.next(); }));
              }
              if (!step) return std::nullopt;
              return exact::json_text(*step);
            })
-      .def("finish", &queries::SimulateRun::finish, Release());
+      .def(
+          "finish",
+          [](queries::SimulateRun& r) {
+            return answer(queries::with_limits(r.options().common.arith, [&] { return r.finish(); }));
+          },
+          Release());
   py::class_<queries::MotionInput>(m, "Motion")
       .def_static("load", &queries::load_motion)
       .def_static("parse", &queries::parse_motion, py::arg("text"), py::arg("name"))

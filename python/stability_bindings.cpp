@@ -26,26 +26,33 @@ queries::CommonOptions common(const std::string& arith, double time_limit) {
 /// `stability --wrench`: its JSON and the certificate's text ("" if none); `certificate`: the file to write, or "".
 WithCertificate stability(const Scene& s, const std::string& wrench, const std::string& arith, bool margin,
                           const std::string& certificate, double time_limit) {
-  const auto a = queries::run_stability(
-      s, {common(arith, time_limit), queries::parse_number_list(wrench, "--wrench", 3), margin, certificate});
+  const auto a = answer(queries::run_stability(
+      s, {common(arith, time_limit), queries::parse_number_list(wrench, "--wrench", 3), margin, certificate}));
   return {queries::to_json(a).dump(), a.certificate_text};
 }
 
 /// Many verdicts on one scene from one prepared oracle (`stability --wrenches`), each as `stability --wrench`'s JSON.
 class Oracle {
  public:
-  Oracle(const Scene& s, const std::string& arith, double time_limit) : verdicts_(s.scene, common(arith, time_limit)) {}
+  Oracle(const Scene& s, const std::string& arith, double time_limit)
+      : common_(common(arith, time_limit)),
+        verdicts_(
+            answer(queries::with_limits(common_.arith, [&] { return queries::StabilityVerdicts(s.scene, common_); }))) {
+  }
   std::vector<std::string> verdicts(const std::vector<std::string>& wrenches) const {
-    std::vector<std::string> out;
-    out.reserve(wrenches.size());
-    for (std::size_t i = 0; i < wrenches.size(); ++i)
-      out.push_back(queries::to_json(verdicts_.answer(queries::parse_number_list(
-                                         wrenches[i], "wrenches[" + std::to_string(i) + "]", 3)))
-                        .dump());
-    return out;
+    return answer(queries::with_limits(common_.arith, [&] {
+      std::vector<std::string> out;
+      out.reserve(wrenches.size());
+      for (std::size_t i = 0; i < wrenches.size(); ++i)
+        out.push_back(queries::to_json(verdicts_.answer(queries::parse_number_list(
+                                           wrenches[i], "wrenches[" + std::to_string(i) + "]", 3)))
+                          .dump());
+      return out;
+    }));
   }
 
  private:
+  queries::CommonOptions common_;
   queries::StabilityVerdicts verdicts_;
 };
 
@@ -53,7 +60,7 @@ class Oracle {
 queries::RegionAnswer region_answer(const Scene& s, const std::string& wrench, double time_limit) {
   queries::RegionOptions o{{.time_limit = time_limit}, std::nullopt, ""};
   if (!wrench.empty()) o.wrench = queries::parse_number_list(wrench, "--wrench", 3);
-  return queries::run_region(s, o);
+  return answer(queries::run_region(s, o));
 }
 std::string region(const Scene& s, const std::string& wrench, double time_limit) {
   return queries::to_json(region_answer(s, wrench, time_limit)).dump();
@@ -64,7 +71,7 @@ std::string region_svg(const Scene& s, const std::string& wrench, double time_li
 
 /// `stability --finger`, always exact.
 queries::FingerAnswer finger_answer(const Scene& s, double time_limit) {
-  return queries::run_finger(s, {{.time_limit = time_limit}, ""});
+  return answer(queries::run_finger(s, {{.time_limit = time_limit}, ""}));
 }
 std::string finger(const Scene& s, double time_limit) { return queries::to_json(finger_answer(s, time_limit)).dump(); }
 std::string finger_svg(const Scene& s, double time_limit) { return queries::finger_svg(finger_answer(s, time_limit)); }

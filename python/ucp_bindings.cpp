@@ -25,7 +25,7 @@ WithCertificate solve(const Ucp& u, const std::string& method, const std::string
   o.max_nodes = max_nodes;
   o.max_bases = max_bases;
   o.certificate = certificate;
-  const queries::UcpAnswer a = queries::run_ucp(u, o);
+  const queries::UcpAnswer a = answer(queries::run_ucp(u, o));
   return {exact::json_text(queries::to_json(a)), a.certificate_text};
 }
 
@@ -51,7 +51,8 @@ std::pair<std::string, std::string> check(const std::string& text, const std::st
   const exact::JsonInput cert = exact::JsonInput::parse(text, name);
   std::optional<exact::JsonInput> problem;
   if (!problem_text.empty()) problem = exact::JsonInput::parse(problem_text, problem_name);
-  const queries::CheckResult c = queries::check(cert, problem ? &*problem : nullptr);
+  const queries::CheckResult c = answer(
+      queries::with_limits(exact::Arith::kExact, [&] { return queries::check(cert, problem ? &*problem : nullptr); }));
   return {queries::to_json(c).dump(), c.text};
 }
 

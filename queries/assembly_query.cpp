@@ -90,7 +90,9 @@ std::string assembly_forces_text(const std::vector<AssemblyContactForce>& forces
   return out;
 }
 
-AssemblyStabilityAnswer run_assembly_stability(const AssemblyInput& in, const AssemblyStabilityOptions& options) {
+namespace {
+
+AssemblyStabilityAnswer assembly_stability_answer(const AssemblyInput& in, const AssemblyStabilityOptions& options) {
   if (options.common.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith",
                             "an assembly's stability is decided exactly (use exact or verified)");
@@ -110,6 +112,13 @@ AssemblyStabilityAnswer run_assembly_stability(const AssemblyInput& in, const As
   if (!options.certificate.empty() && ans.decided()) ans.certificate_text = sa::assembly_certificate(in.text, r);
   write_files(in, options, ans);
   return ans;
+}
+
+}  // namespace
+
+Limited<AssemblyStabilityAnswer> run_assembly_stability(const AssemblyInput& in,
+                                                        const AssemblyStabilityOptions& options) {
+  return with_limits(options.common.arith, [&] { return assembly_stability_answer(in, options); });
 }
 
 json to_json(const AssemblyStabilityAnswer& ans) {

@@ -10,6 +10,7 @@
 
 #include "geometry/assembly.h"
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 #include "solvers/assembly/assembly_stability.h"
 #include "solvers/ucp/solve.h"
@@ -65,8 +66,10 @@ struct AssemblyStabilityAnswer {
   bool decided() const { return result.status == solvers::assembly::AssemblyStatus::kDecided; }
 };
 
-/// Runs the walk under the options' budgets, writes the certificate (decided verdicts only) and the picture.
-AssemblyStabilityAnswer run_assembly_stability(const AssemblyInput& in, const AssemblyStabilityOptions& options);
+/// Runs the walk under the options' budgets (ending it `unknown` with what it covered), writes the certificate
+/// (decided verdicts only) and the picture.
+Limited<AssemblyStabilityAnswer> run_assembly_stability(const AssemblyInput& in,
+                                                        const AssemblyStabilityOptions& options);
 /// {"verdict" (or "unknown"), "status", "arith", "bodies", "contacts", "witness": {"resting", "moving"},
 /// "search": {"nodes", "lps", "dead_prefixes"}, "covered", "certificate", "svg"}.
 json to_json(const AssemblyStabilityAnswer& answer);
@@ -99,7 +102,7 @@ struct AssemblyUcpAnswer {
 };
 
 /// Builds P, Jn, Jt, d for the N bodies, solves (complete search), recovers the physics and writes the files.
-AssemblyUcpAnswer run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOptions& options);
+Limited<AssemblyUcpAnswer> run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOptions& options);
 /// {"status", "reason", "arith", "bodies": [{"body", "q_dot", "com_velocity"}], "contacts": [...], "theta_dot",
 /// "tau", "conditions_2_to_10", "pairs", "lps", "nodes", "certificate", "svg"}.
 json to_json(const AssemblyUcpAnswer& answer);

@@ -11,7 +11,9 @@ namespace contactcert::queries {
 namespace ucp = solvers::ucp;
 using exact::Q;
 
-AssemblyUcpAnswer run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOptions& options) {
+namespace {
+
+AssemblyUcpAnswer assembly_ucp_answer(const AssemblyInput& in, const AssemblyUcpOptions& options) {
   if (options.common.arith == exact::Arith::kFloat)
     throw exact::InputError(
         "command line", "--arith",
@@ -42,6 +44,12 @@ AssemblyUcpAnswer run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOpt
   if (!options.certificate.empty()) ans.certificate_text = ucp::certificate_text(problem, ans.report, in.text);
   write_files(in, options, ans);
   return ans;
+}
+
+}  // namespace
+
+Limited<AssemblyUcpAnswer> run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOptions& options) {
+  return with_limits(options.common.arith, [&] { return assembly_ucp_answer(in, options); });
 }
 
 json to_json(const AssemblyUcpAnswer& ans) {

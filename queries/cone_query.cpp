@@ -149,7 +149,9 @@ solvers::ModeString cone_mode(const geometry::PlanarScene& scene, const std::str
   return mode.mode;
 }
 
-ConeAnswer run_cone(const SceneInput& input, const ConeOptions& options) {
+namespace {
+
+ConeAnswer cone_answer(const SceneInput& input, const ConeOptions& options) {
   ConeAnswer a{input.scene, options, {}, {}, {}, {}, {}};
   a.mode = cone_mode(input.scene, input.name, options.mode, options.table2 == Table2::kPrinted);
   const bool float_path = options.common.arith == exact::Arith::kFloat;
@@ -170,6 +172,12 @@ ConeAnswer run_cone(const SceneInput& input, const ConeOptions& options) {
     write_text_file(options.certificate, a.certificate_text);
   }
   return a;
+}
+
+}  // namespace
+
+Limited<ConeAnswer> run_cone(const SceneInput& input, const ConeOptions& options) {
+  return with_limits(options.common.arith, [&] { return cone_answer(input, options); });
 }
 
 json to_json(const ConeAnswer& answer) {

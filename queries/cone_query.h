@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 #include "queries/scene_input.h"
 #include "solvers/wrench_cone/wrench_cone.h"
@@ -48,8 +49,8 @@ solvers::ModeString cone_mode(const geometry::PlanarScene& scene, const std::str
                               bool printed_separation = false);
 
 /// The wrench cone of options.mode, its certificate and picture written where asked (InputError for a
-/// certificate or picture of the float path; BudgetExceeded past the time limit).
-ConeAnswer run_cone(const SceneInput& input, const ConeOptions& options);
+/// certificate or picture of the float path; a Limit past the time limit).
+Limited<ConeAnswer> run_cone(const SceneInput& input, const ConeOptions& options);
 
 /// The object `cone --json` prints: the cone's keys sorted, then "certificate" and "witness" where written.
 json to_json(const ConeAnswer& answer);

@@ -11,9 +11,7 @@ nlohmann::json float_rows(const exact::Mat<double>& M) { return nlohmann::json(a
 
 const char* form_name(geometry::ConeInput::Form f) { return f == geometry::ConeInput::Form::kSpan ? "span" : "face"; }
 
-}  // namespace
-
-ConvertAnswer run_convert(const exact::JsonInput& file, const ConvertOptions& o) {
+ConvertAnswer convert_answer(const exact::JsonInput& file, const ConvertOptions& o) {
   const geometry::ConeInput in = geometry::read_cone(file);
   geometry::DdBudget budget;
   budget.deadline = o.common.deadline();  // checked inside the conversion
@@ -33,6 +31,12 @@ ConvertAnswer run_convert(const exact::JsonInput& file, const ConvertOptions& o)
     a.float_closure = geometry::nnc_form(c, budget);
   }
   return a;
+}
+
+}  // namespace
+
+Limited<ConvertAnswer> run_convert(const exact::JsonInput& file, const ConvertOptions& o) {
+  return with_limits(o.common.arith, [&] { return convert_answer(file, o); });
 }
 
 nlohmann::json to_json(const ConvertAnswer& a) {

@@ -10,6 +10,7 @@
 #include "geometry/cone_json.h"
 #include "geometry/nnc_cone.h"
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 
 namespace contactcert::queries {
@@ -26,8 +27,8 @@ struct ConvertAnswer {
 };
 
 /// The conversion of the cone file `file` (docs/formats.md section 4); the time limit stops the double
-/// description (BudgetExceeded).
-ConvertAnswer run_convert(const exact::JsonInput& file, const ConvertOptions& o);
+/// description (a Limit).
+Limited<ConvertAnswer> run_convert(const exact::JsonInput& file, const ConvertOptions& o);
 
 /// `convert --json` (its keys in sorted order, as the cone formats of geometry/cone_json.h).
 nlohmann::json to_json(const ConvertAnswer& a);

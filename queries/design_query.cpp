@@ -217,7 +217,7 @@ struct DesignPlan {
 std::optional<DesignRun> resume(const DesignOptions& o, const DesignPlan& plan, solvers::Distributor& dist,
                                 std::optional<solvers::DesignCheckpoint>* resumed) {
   std::exception_ptr failure;
-  DesignRun refused{DesignStatus::kRefused, std::nullopt, "", std::nullopt};
+  DesignRun refused{DesignStatus::kRefused, "", std::nullopt};
   int code = 0;
   if (dist.is_root() && !o.checkpoint.empty()) {
     try {
@@ -238,8 +238,9 @@ std::optional<DesignRun> resume(const DesignOptions& o, const DesignPlan& plan, 
 }
 
 /// The distributed search and, on the root, the report.
-DesignRun search(const SceneInput& in, const DesignOptions& o, const DesignPlan& plan, solvers::Distributor& dist,
-                 std::optional<solvers::DesignCheckpoint> resumed, const DesignProgress& progress) {
+Limited<DesignRun> search(const SceneInput& in, const DesignOptions& o, const DesignPlan& plan,
+                          solvers::Distributor& dist, std::optional<solvers::DesignCheckpoint> resumed,
+                          const DesignProgress& progress) {
   const std::size_t K = static_cast<std::size_t>(o.top);
   const long total = plan.total;
   const long chunks = solvers::chunk_count(total, o.chunk_size);
@@ -288,20 +289,19 @@ DesignRun search(const SceneInput& in, const DesignOptions& o, const DesignPlan&
     return solvers::chunk_result_text(r);
   };
   const bool ran_out = dist.run(next, work, record, keep_going);
-  if (!dist.is_root()) return {ran_out ? DesignStatus::kWorkerFinished : DesignStatus::kLimit, std::nullopt, "", std::nullopt};
+  if (!dist.is_root())
+    return DesignRun{ran_out ? DesignStatus::kWorkerFinished : DesignStatus::kLimit, "", std::nullopt};
   const bool finished = ran_out || st.checkpoint.done.next_missing(0) >= chunks;  // a budget met by the last chunk
   save();
   const solvers::ChunkResult& result = st.checkpoint.result;
   if (!finished)
-    return {DesignStatus::kLimit,
-            Limit{"design " + in.name + ": " +
-                      (st.deadline.expired() ? st.deadline.reached_text() : "placement budget --max-placements reached"),
-                  std::to_string(st.placements_done()) + " of " + std::to_string(total) + " placements in " +
-                      std::to_string(st.chunks_before + st.chunks_now) + " of " + std::to_string(chunks) +
-                      " chunks; " + statistics_text(result.statistics) +
-                      (o.checkpoint.empty() ? "" : "; resume with --checkpoint " + o.checkpoint)},
-            "",
-            std::nullopt};
+    return Limit{"design " + in.name + ": " +
+                     (st.deadline.expired() ? st.deadline.reached_text() : "placement budget --max-placements reached"),
+                 std::to_string(st.placements_done()) + " of " + std::to_string(total) + " placements in " +
+                     std::to_string(st.chunks_before + st.chunks_now) + " of " + std::to_string(chunks) + " chunks; " +
+                     statistics_text(result.statistics) +
+                     (o.checkpoint.empty() ? "" : "; resume with --checkpoint " + o.checkpoint),
+                 Limit::Kind::kStopped};
   DesignReport rep{in.name,
                    o.stable_under,
                    plan.problem,
@@ -320,7 +320,7 @@ DesignRun search(const SceneInput& in, const DesignOptions& o, const DesignPlan&
                   design_svg(plan.problem, result.top.items(), captions,
                              "contactcert design " + in.name + ": best " + std::to_string(result.top.items().size()) +
                                  " placements by " + solvers::rank_name(plan.problem.rank)));
-  return {DesignStatus::kFinished, std::nullopt, "", std::move(rep)};
+  return DesignRun{DesignStatus::kFinished, "", std::move(rep)};
 }
 
 json placement_json(const DesignReport& report, const PlacementReport& p) {
@@ -385,8 +385,11 @@ exact::Q goal_fraction(const solvers::DesignProblem& problem, const solvers::Pla
   return frac;
 }
 
-DesignRun run_design(const SceneInput& in, const DesignOptions& o, solvers::Distributor& dist,
-                     const DesignProgress& progress) {
+namespace {
+
+/// run_design's work: a budget thrown inside ends every rank (abort_all) before with_limits reports it.
+Limited<DesignRun> design_run(const SceneInput& in, const DesignOptions& o, solvers::Distributor& dist,
+                              const DesignProgress& progress) {
   DesignPlan plan;
   plan.problem = build_problem(o, in.scene, &plan.how);
   plan.total = solvers::placement_count(static_cast<long>(plan.problem.candidates.size()), plan.problem.fixels);
@@ -410,6 +413,13 @@ DesignRun run_design(const SceneInput& in, const DesignOptions& o, solvers::Dist
     dist.abort_all(std::string("internal error: ") + e.what(), 1);
     throw;
   }
+}
+
+}  // namespace
+
+Limited<DesignRun> run_design(const SceneInput& in, const DesignOptions& o, solvers::Distributor& dist,
+                              const DesignProgress& progress) {
+  return with_limits(o.common.arith, [&] { return design_run(in, o, dist, progress); });
 }
 
 json to_json(const DesignReport& r) {

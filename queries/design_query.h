@@ -73,13 +73,12 @@ struct DesignReport {
 };
 
 /// How a run ended on this rank: kFinished (the root, with the report), kWorkerFinished (another rank, all chunks
-/// done), kLimit (a budget; on the root with the limit), kRefused (a checkpoint that does not fit; on the root
-/// with the message naming the file and field).
+/// done), kLimit (another rank, stopped by the root's budget; the root returns the Limit), kRefused (a checkpoint
+/// that does not fit; on the root with the message naming the file and field).
 enum class DesignStatus { kFinished, kWorkerFinished, kLimit, kRefused };
 
 struct DesignRun {
   DesignStatus status = DesignStatus::kFinished;
-  std::optional<Limit> limit;          ///< kLimit, on the root
   std::string refusal;                 ///< kRefused, on the root
   std::optional<DesignReport> report;  ///< kFinished
 };
@@ -89,8 +88,9 @@ using DesignProgress = std::function<void(const std::string&)>;
 
 /// The whole search on this rank of `dist` (every rank calls it). `progress`, if set, is called on the root.
 /// Bad input: InputError naming the option or field; an error on one rank ends every rank (Distributor::abort_all).
-DesignRun run_design(const SceneInput& in, const DesignOptions& o, solvers::Distributor& dist,
-                     const DesignProgress& progress = {});
+/// A budget (time, --max-placements) stops the search with a Limit on the root: what was covered.
+Limited<DesignRun> run_design(const SceneInput& in, const DesignOptions& o, solvers::Distributor& dist,
+                              const DesignProgress& progress = {});
 
 /// `design --json`.
 json to_json(const DesignReport& r);

@@ -13,9 +13,7 @@ using exact::Q;
 
 double signed_degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
 
-}  // namespace
-
-FingerAnswer run_finger(const SceneInput& input, const FingerOptions& options) {
+FingerAnswer finger_answer(const SceneInput& input, const FingerOptions& options) {
   if (options.common.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "--finger is computed exactly (use exact or verified)");
   solvers::ModeTreeOptions tree;  // the mode tree's default arithmetic and budget, the run's deadline
@@ -24,6 +22,12 @@ FingerAnswer run_finger(const SceneInput& input, const FingerOptions& options) {
   FingerAnswer a{input.scene, solvers::finger_pushes<Q>(input.scene, region, tree.deadline), options.svg};
   if (!a.svg.empty()) write_text_file(a.svg, finger_svg(a));
   return a;
+}
+
+}  // namespace
+
+Limited<FingerAnswer> run_finger(const SceneInput& input, const FingerOptions& options) {
+  return with_limits(options.common.arith, [&] { return finger_answer(input, options); });
 }
 
 json to_json(const FingerAnswer& answer) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 #include "queries/scene_input.h"
 #include "solvers/stability/finger_push.h"
@@ -23,9 +24,9 @@ struct FingerAnswer {
   std::string svg;  ///< the picture's file ("" = none)
 };
 
-/// The labelled boundary pieces under the time limit (BudgetExceeded past it), the picture written where asked.
+/// The labelled boundary pieces under the time limit (a Limit past it), the picture written where asked.
 /// InputError naming --arith on the float path.
-FingerAnswer run_finger(const SceneInput& input, const FingerOptions& options);
+Limited<FingerAnswer> run_finger(const SceneInput& input, const FingerOptions& options);
 
 /// The object `stability --finger --json` prints: edge pieces and arcs with their labels.
 json to_json(const FingerAnswer& answer);

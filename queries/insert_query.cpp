@@ -61,7 +61,9 @@ solvers::Insertion<Q> insertion_of(const geometry::PlanarScene& scene, const std
   }
 }
 
-InsertAnswer run_insert(const SceneInput& input, const InsertOptions& options, const SweepProgress& progress) {
+namespace {
+
+InsertAnswer insert_answer(const SceneInput& input, const InsertOptions& options, const SweepProgress& progress) {
   if (options.common.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "insert is computed exactly (use exact or verified)");
   InsertAnswer a{input.scene, insertion_of(input.scene, input.name), {}, 0, {}};
@@ -73,6 +75,12 @@ InsertAnswer run_insert(const SceneInput& input, const InsertOptions& options, c
     a.sweep.push_back(sweep_entry(a.scene, mu));
   }
   return a;
+}
+
+}  // namespace
+
+Limited<InsertAnswer> run_insert(const SceneInput& input, const InsertOptions& options, const SweepProgress& progress) {
+  return with_limits(options.common.arith, [&] { return insert_answer(input, options, progress); });
 }
 
 json to_json(const InsertAnswer& a) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 #include "queries/scene_input.h"
 #include "solvers/insertion/insertion.h"
@@ -47,7 +48,8 @@ solvers::Insertion<exact::Q> insertion_of(const geometry::PlanarScene& scene, co
 
 /// G_goal, its pushes and the sweep (InputError for --arith float or a scene unfit for insertion), the picture
 /// written where asked.
-InsertAnswer run_insert(const SceneInput& input, const InsertOptions& options, const SweepProgress& progress = {});
+Limited<InsertAnswer> run_insert(const SceneInput& input, const InsertOptions& options,
+                                 const SweepProgress& progress = {});
 
 /// The object `insert --json` prints.
 json to_json(const InsertAnswer& answer);

@@ -15,7 +15,9 @@ bool ModesOptions::default_time_budget() const {
 
 double ModesOptions::time_budget() const { return default_time_budget() ? kModesDefaultSeconds : common.time_limit; }
 
-ModesAnswer run_modes(const SceneInput& input, const ModesOptions& options) {
+namespace {
+
+Limited<ModesAnswer> modes_answer(const SceneInput& input, const ModesOptions& options) {
   if (options.common.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "modes are enumerated exactly (use exact or verified)");
   solvers::ContactModeOptions tree;
@@ -28,15 +30,20 @@ ModesAnswer run_modes(const SceneInput& input, const ModesOptions& options) {
     // A certificate that `check` could not read is not written: check reads at most kMaxInputBytes.
     std::string certificate = solvers::modes_certificate(input.text, a.modes);
     if (certificate.size() > exact::kMaxInputBytes)
-      throw exact::BudgetExceeded(
-          "modes --certificate: the certificate would take " + std::to_string(certificate.size()) +
-              " bytes, more than the " + std::to_string(exact::kMaxInputBytes >> 20) + " MiB that check reads",
-          std::to_string(a.modes.tree.modes.size()) + " feasible modes found, " +
-              std::to_string(a.modes.tree.dead.size()) + " dead prefixes; no certificate written");
+      return Limit{"modes --certificate: the certificate would take " + std::to_string(certificate.size()) +
+                       " bytes, more than the " + std::to_string(exact::kMaxInputBytes >> 20) + " MiB that check reads",
+                   std::to_string(a.modes.tree.modes.size()) + " feasible modes found, " +
+                       std::to_string(a.modes.tree.dead.size()) + " dead prefixes; no certificate written"};
     write_text_file(options.certificate, certificate);
     a.certificate_text = std::move(certificate);
   }
   return a;
+}
+
+}  // namespace
+
+Limited<ModesAnswer> run_modes(const SceneInput& input, const ModesOptions& options) {
+  return with_limits(options.common.arith, [&] { return modes_answer(input, options); });
 }
 
 std::map<std::string, long> mode_counts(const solvers::ContactModes& modes) {

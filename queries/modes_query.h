@@ -7,6 +7,7 @@
 #include <string>
 
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 #include "queries/scene_input.h"
 #include "solvers/stability/contact_modes.h"
@@ -37,9 +38,9 @@ struct ModesAnswer {
   std::string certificate_text;  ///< the certificate written ("" = none)
 };
 
-/// The feasible modes (InputError for --arith float; BudgetExceeded past a budget, or for a certificate larger than
+/// The feasible modes (InputError for --arith float; a Limit past a budget, or for a certificate larger than
 /// `check` reads), the certificate written where asked.
-ModesAnswer run_modes(const SceneInput& input, const ModesOptions& options);
+Limited<ModesAnswer> run_modes(const SceneInput& input, const ModesOptions& options);
 
 /// The number of modes of each group (solvers::mode_group), by group name.
 std::map<std::string, long> mode_counts(const solvers::ContactModes& modes);

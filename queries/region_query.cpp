@@ -8,7 +8,9 @@ namespace contactcert::queries {
 
 using exact::Q;
 
-RegionAnswer run_region(const SceneInput& input, const RegionOptions& options) {
+namespace {
+
+RegionAnswer region_answer(const SceneInput& input, const RegionOptions& options) {
   if (options.common.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "--region is computed exactly (use exact or verified)");
   solvers::ModeTreeOptions tree;  // the mode tree's default arithmetic and budget, the run's deadline
@@ -18,6 +20,12 @@ RegionAnswer run_region(const SceneInput& input, const RegionOptions& options) {
   if (a.wrench) a.wrench_label = a.region.label(*a.wrench);
   if (!a.svg.empty()) write_text_file(a.svg, region_svg(a));
   return a;
+}
+
+}  // namespace
+
+Limited<RegionAnswer> run_region(const SceneInput& input, const RegionOptions& options) {
+  return with_limits(options.common.arith, [&] { return region_answer(input, options); });
 }
 
 json to_json(const RegionAnswer& answer) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 #include "queries/scene_input.h"
 #include "solvers/stability/stable_region.h"
@@ -27,9 +28,9 @@ struct RegionAnswer {
   std::string svg;                                        ///< the picture's file ("" = none)
 };
 
-/// The labelled cells of the scene's wrench space under the time limit (BudgetExceeded past it), the picture written
+/// The labelled cells of the scene's wrench space under the time limit (a Limit past it), the picture written
 /// where asked. InputError naming --arith on the float path.
-RegionAnswer run_region(const SceneInput& input, const RegionOptions& options);
+Limited<RegionAnswer> run_region(const SceneInput& input, const RegionOptions& options);
 
 /// The object `stability --region --json` prints: the region's data, its moving modes with non-empty wrench cones,
 /// and g with its label.

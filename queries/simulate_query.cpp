@@ -229,8 +229,8 @@ SimulateAnswer SimulateRun::finish() {
   return a;
 }
 
-SimulateAnswer run_simulate(const MotionInput& input, const SimulateOptions& options) {
-  return SimulateRun(input, options).finish();
+Limited<SimulateAnswer> run_simulate(const MotionInput& input, const SimulateOptions& options) {
+  return with_limits(options.common.arith, [&] { return SimulateRun(input, options).finish(); });
 }
 
 motion::RunStatus run_status(const SimulateAnswer& a) {

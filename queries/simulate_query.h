@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 #include "solvers/motion/compare.h"
 #include "solvers/motion/simulate.h"
@@ -70,6 +71,7 @@ class SimulateRun {
   /// The next step's JSON, or nullopt once the run has ended.
   std::optional<json> next();
   SimulateAnswer finish();
+  const SimulateOptions& options() const { return options_; }
 
  private:
   bool advance();
@@ -83,8 +85,9 @@ class SimulateRun {
 };
 
 /// Runs the scene (writing the certificates and the picture where asked): SimulateRun(input, options).finish().
-/// A budget or the time limit ends the run `unknown` with the steps done (see stopped_by_budget).
-SimulateAnswer run_simulate(const MotionInput& input, const SimulateOptions& options);
+/// A budget or the time limit ends the run `unknown` with the steps done (see stopped_by_budget); a budget deeper
+/// down (an LP's pivots) is the Limit.
+Limited<SimulateAnswer> run_simulate(const MotionInput& input, const SimulateOptions& options);
 
 /// How the run of the answer's arithmetic ended, why, and how many steps it made.
 solvers::motion::RunStatus run_status(const SimulateAnswer& a);

@@ -69,7 +69,9 @@ solvers::StabilityOptions stability_options(exact::Arith arith, const exact::Dea
   return s;
 }
 
-StabilityAnswer run_stability(const SceneInput& input, const StabilityQueryOptions& options) {
+namespace {
+
+StabilityAnswer stability_answer(const SceneInput& input, const StabilityQueryOptions& options) {
   const exact::Arith arith = scene_arith(options.common.arith);
   const exact::Vec<Q>& g = options.wrench;
   const exact::Deadline deadline = options.common.deadline();
@@ -95,6 +97,12 @@ StabilityAnswer run_stability(const SceneInput& input, const StabilityQueryOptio
     a.margin = solvers::stability_margin<Q>(solvers::stable_region<Q>(input.scene, solvers::Route::kPaper, tree), g);
   }
   return a;
+}
+
+}  // namespace
+
+Limited<StabilityAnswer> run_stability(const SceneInput& input, const StabilityQueryOptions& options) {
+  return with_limits(options.common.arith, [&] { return stability_answer(input, options); });
 }
 
 json to_json(const StabilityAnswer& answer) {

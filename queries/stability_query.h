@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 #include "queries/scene_input.h"
 #include "solvers/stability/margin.h"
@@ -40,8 +41,8 @@ struct StabilityAnswer {
 solvers::StabilityOptions stability_options(exact::Arith arith, const exact::Deadline& deadline);
 
 /// The verdict for options.wrench, its certificate written where asked, then its margin where asked.
-/// InputError naming --certificate or --margin for either on the float path; BudgetExceeded past the time limit.
-StabilityAnswer run_stability(const SceneInput& input, const StabilityQueryOptions& options);
+/// InputError naming --certificate or --margin for either on the float path; a Limit past the time limit.
+Limited<StabilityAnswer> run_stability(const SceneInput& input, const StabilityQueryOptions& options);
 
 /// The object `stability --wrench --json` prints.
 json to_json(const StabilityAnswer& answer);

@@ -72,7 +72,9 @@ void check_ucp_options(const UcpQueryOptions& o) {
                             "--method complete");
 }
 
-UcpAnswer run_ucp(const UcpInput& in, const UcpQueryOptions& o) {
+namespace {
+
+UcpAnswer ucp_answer(const UcpInput& in, const UcpQueryOptions& o) {
   check_ucp_options(o);
   const auto start = std::chrono::steady_clock::now();
   ucp::UcpOptions opts;
@@ -97,6 +99,12 @@ UcpAnswer run_ucp(const UcpInput& in, const UcpQueryOptions& o) {
   }
   r.seconds = in.seconds + seconds_since(start);
   return a;
+}
+
+}  // namespace
+
+Limited<UcpAnswer> run_ucp(const UcpInput& in, const UcpQueryOptions& o) {
+  return with_limits(o.common.arith, [&] { return ucp_answer(in, o); });
 }
 
 json report_head_json(const ucp::UcpReport& r, bool with_method) {

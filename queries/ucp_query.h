@@ -12,6 +12,7 @@
 
 #include "geometry/contact_frame.h"
 #include "queries/json_out.h"
+#include "queries/limit.h"
 #include "queries/options.h"
 #include "solvers/ucp/problem.h"
 #include "solvers/ucp/solve.h"
@@ -65,8 +66,9 @@ struct UcpAnswer {
 };
 
 /// Solves `in` (check_ucp_options first), writes the certificate file if asked and one exists; `report.seconds`
-/// counts reading the input too.
-UcpAnswer run_ucp(const UcpInput& in, const UcpQueryOptions& o);
+/// counts reading the input too. The search's own budgets end it `unknown` with what it covered; a budget deeper
+/// down (an LP's pivots) is the Limit.
+Limited<UcpAnswer> run_ucp(const UcpInput& in, const UcpQueryOptions& o);
 
 /// The head of the JSON object of a UCP report, shared by `ucp` and `assembly --ucp`: status, reason, the method
 /// (with_method: `ucp`'s) and the arithmetic.

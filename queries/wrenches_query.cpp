@@ -66,7 +66,9 @@ std::vector<Vec<Q>> read_wrenches(const std::string& path) {
   return out;
 }
 
-WrenchesAnswer run_wrenches(const SceneInput& input, const WrenchesOptions& options) {
+namespace {
+
+WrenchesAnswer wrenches_answer(const SceneInput& input, const WrenchesOptions& options) {
   WrenchesAnswer a;
   a.arith = scene_arith(options.common.arith);
   a.wrenches = read_wrenches(options.wrenches);
@@ -80,6 +82,12 @@ WrenchesAnswer run_wrenches(const SceneInput& input, const WrenchesOptions& opti
     a.lps += std::visit([](const auto& x) { return x.lps; }, r);
   }
   return a;
+}
+
+}  // namespace
+
+Limited<WrenchesAnswer> run_wrenches(const SceneInput& input, const WrenchesOptions& options) {
+  return with_limits(options.common.arith, [&] { return wrenches_answer(input, options); });
 }
 
 json to_json(const WrenchesAnswer& answer) {

@@ -8,12 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "queries/limit.h"
 #include "queries/stability_query.h"
 
 namespace contactcert::queries {
 
 /// The oracle of one scene in the run's number type (Q on the exact and verified paths, double with float), prepared
-/// under the time limit of `common` (BudgetExceeded past it; a verdict itself has no budget to exceed).
+/// under the time limit of `common` (exact::BudgetExceeded past it, for with_limits to turn into a Limit; a
+/// verdict itself has no budget to exceed).
 class StabilityVerdicts {
  public:
   StabilityVerdicts(const geometry::PlanarScene& scene, const CommonOptions& common);
@@ -50,7 +52,7 @@ struct WrenchesAnswer {
 std::vector<exact::Vec<exact::Q>> read_wrenches(const std::string& path);
 
 /// One verdict per wrench of options.wrenches, from one StabilityVerdicts.
-WrenchesAnswer run_wrenches(const SceneInput& input, const WrenchesOptions& options);
+Limited<WrenchesAnswer> run_wrenches(const SceneInput& input, const WrenchesOptions& options);
 
 /// The object `stability --wrenches --json` prints: each wrench with its verdict, the counts, arith and lps.
 json to_json(const WrenchesAnswer& answer);

@@ -52,7 +52,7 @@ TEST(AssemblyQuery, WitnessForcesBalanceTheLoadsAndCertificatesCheck) {
     const AssemblyInput in = bundled(name);
     AssemblyStabilityOptions o;
     o.certificate = certificate;
-    const AssemblyStabilityAnswer ans = run_assembly_stability(in, o);
+    const AssemblyStabilityAnswer ans = *run_assembly_stability(in, o);
     ASSERT_TRUE(ans.decided()) << name;
     EXPECT_EQ(to_json(ans)["verdict"], verdict) << name;
     const auto& r = ans.result;
@@ -82,7 +82,7 @@ TEST(AssemblyQuery, WitnessForcesBalanceTheLoadsAndCertificatesCheck) {
 // The solution's contact forces hold each body in quasistatic equilibrium (eq. (1), torques about the origin).
 TEST(AssemblyQuery, QuasistaticForcesBalanceEveryBody) {
   const AssemblyInput in = bundled("assembly_pushed_boxes");
-  const AssemblyUcpAnswer ans = run_assembly_ucp(in, {});
+  const AssemblyUcpAnswer ans = *run_assembly_ucp(in, {});
   ASSERT_EQ(ans.report.status, solvers::ucp::UcpStatus::kSolvable);
   ASSERT_EQ(ans.forces.size(), in.assembly.contacts.size());
   for (const auto& w : net_wrenches(in.assembly, ans.forces, true)) {
@@ -91,7 +91,7 @@ TEST(AssemblyQuery, QuasistaticForcesBalanceEveryBody) {
   for (const BodyVelocity& v : ans.bodies) {
     EXPECT_EQ(v.com_velocity.x, Q(1));  // both pushed at the finger's speed
   }
-  EXPECT_EQ(run_assembly_ucp(bundled("assembly_pushed_boxes_wall"), {}).report.status,
+  EXPECT_EQ(run_assembly_ucp(bundled("assembly_pushed_boxes_wall"), {})->report.status,
             solvers::ucp::UcpStatus::kJammed);
 }
 

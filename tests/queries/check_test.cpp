@@ -13,7 +13,7 @@ std::string scene(const std::string& name) { return runtime::bundled_scenes_dir(
 
 /// The certificate `ucp FILE --certificate` writes for a bundled problem.
 std::string ucp_certificate(const std::string& name) {
-  return solvers::ucp::certificate_text(load_ucp(scene(name)).problem, run_ucp(load_ucp(scene(name)), {}).report);
+  return solvers::ucp::certificate_text(load_ucp(scene(name)).problem, run_ucp(load_ucp(scene(name)), {})->report);
 }
 
 TEST(Check, UcpCertificateAgainstItsProblemAndAnother) {

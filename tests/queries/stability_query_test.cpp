@@ -45,9 +45,9 @@ TEST(StabilityQuery, FloatPathRefusesWhatOnlyExactnessGives) {
 TEST(StabilityQuery, AdaptiveRunsAndIsReportedAsVerified) {
   const SceneInput disk = scene("bt2002_section7_disk.json");
   const CommonOptions adaptive{exact::Arith::kAdaptive, 0}, verified{exact::Arith::kVerified, 0};
-  const auto a = run_stability(disk, {adaptive, wrench("1,-2,0"), true, ""});
+  const StabilityAnswer a = *run_stability(disk, {adaptive, wrench("1,-2,0"), true, ""});
   EXPECT_EQ(a.arith, exact::Arith::kVerified);
-  EXPECT_EQ(to_json(a), to_json(run_stability(disk, {verified, wrench("1,-2,0"), true, ""})));
+  EXPECT_EQ(to_json(a), to_json(*run_stability(disk, {verified, wrench("1,-2,0"), true, ""})));
   EXPECT_EQ(to_json(a)["arith"], "verified");
   ASSERT_TRUE(a.margin.has_value());
   EXPECT_GT(a.margin->squared_radius, 0);
@@ -61,7 +61,7 @@ TEST(StabilityQuery, OracleAnswersEqualSingleRuns) {
       const StabilityVerdicts oracle(in.scene, {arith, 0});
       for (const char* w : kWrenches) {
         json batch = to_json(oracle.answer(wrench(w)));
-        json single = to_json(run_stability(in, {{arith, 0}, wrench(w), false, ""}));
+        json single = to_json(*run_stability(in, {{arith, 0}, wrench(w), false, ""}));
         for (const char* key : {"lps", "mode_tree", "modes_kinematically_feasible"}) {
           batch.erase(key);
           single.erase(key);
@@ -78,8 +78,8 @@ TEST(StabilityQuery, RegionLabelsAgreeWithVerdictsAndBatchCounts) {
     const SceneInput in = scene(name);
     std::array<long, 3> counts{};
     for (const char* w : kWrenches) {
-      const auto region = run_region(in, {{}, wrench(w), ""});
-      const auto single = run_stability(in, {{}, wrench(w), false, ""});
+      const RegionAnswer region = *run_region(in, {{}, wrench(w), ""});
+      const StabilityAnswer single = *run_stability(in, {{}, wrench(w), false, ""});
       const auto verdict = std::get<solvers::StabilityResult<Q>>(single.outcome).verdict;
       EXPECT_EQ(region.wrench_label, verdict) << name << " " << w;
       ++counts[static_cast<int>(verdict)];
@@ -87,20 +87,31 @@ TEST(StabilityQuery, RegionLabelsAgreeWithVerdictsAndBatchCounts) {
     std::string file = testing::TempDir() + "/wrenches.txt", text;
     for (const char* w : kWrenches) text += std::string(w) + "\n";
     write_text_file(file, text);
-    const auto batch = run_wrenches(in, {{}, file});
+    const WrenchesAnswer batch = *run_wrenches(in, {{}, file});
     EXPECT_EQ(batch.counts, counts) << name;
     EXPECT_EQ(to_json(batch)["wrenches"].size(), std::size(kWrenches));
   }
 }
 
-// One deadline for the whole run: far too short a limit stops each query with what was covered.
+/// The text of the limit that stopped `run` (a query's Limited answer) at a budget, else "".
+template <class A>
+std::string budget_text(const Limited<A>& run) {
+  return !run && run.limit().kind == Limit::Kind::kBudget ? run.limit().text() : "";
+}
+
+// One deadline for the whole run: far too short a limit stops each query with a status saying what was covered.
 TEST(StabilityQuery, TimeLimitStopsEveryQuery) {
   const SceneInput disk48 = load_scene(DISK48_SCENE);  // 48 touching fixels
   const CommonOptions short_limit{exact::Arith::kVerified, 1e-6};
-  EXPECT_THROW(run_stability(disk48, {short_limit, wrench("0,-1,0"), true, ""}), exact::BudgetExceeded);
-  EXPECT_THROW(run_region(disk48, {short_limit, std::nullopt, ""}), exact::BudgetExceeded);
-  EXPECT_THROW(run_finger(disk48, {short_limit, ""}), exact::BudgetExceeded);
-  EXPECT_THROW(StabilityVerdicts(disk48.scene, short_limit), exact::BudgetExceeded);
+  const std::string file = testing::TempDir() + "/one_wrench.txt";
+  write_text_file(file, "0,-1,0\n");
+  const std::string texts[] = {budget_text(run_stability(disk48, {short_limit, wrench("0,-1,0"), true, ""})),
+                               budget_text(run_region(disk48, {short_limit, std::nullopt, ""})),
+                               budget_text(run_finger(disk48, {short_limit, ""})),
+                               budget_text(run_wrenches(disk48, {short_limit, file}))};
+  for (const std::string& text : texts)
+    EXPECT_NE(text.find("time limit of 1e-06 s reached (covered: "), std::string::npos) << text;
+  EXPECT_THROW(StabilityVerdicts(disk48.scene, short_limit), exact::BudgetExceeded);  // for with_limits to catch
 }
 
 }  // namespace

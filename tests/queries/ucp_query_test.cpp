@@ -48,19 +48,19 @@ TEST(UcpQuery, RefusesWhatTheRunWouldIgnore) {
 TEST(UcpQuery, UnsetBudgetsAreTheSolversDefaults) {
   const UcpInput in = load_ucp(scene("pang1994_dataset4.json"));
   UcpQueryOptions o;
-  const UcpAnswer unset = run_ucp(in, o);
+  const UcpAnswer unset = *run_ucp(in, o);
   o.max_nodes = ucp::UcpOptions{}.max_nodes;
   o.max_bases = ucp::UcpOptions{}.max_bases;
-  const UcpAnswer given = run_ucp(in, o);
+  const UcpAnswer given = *run_ucp(in, o);
   EXPECT_EQ(unset.report.status, ucp::UcpStatus::kJammed);
   EXPECT_EQ(unset.report.nodes, given.report.nodes);
   o.max_nodes = 1;
-  EXPECT_EQ(run_ucp(in, o).report.status, ucp::UcpStatus::kUnknown);
+  EXPECT_EQ(run_ucp(in, o)->report.status, ucp::UcpStatus::kUnknown);
 }
 
 TEST(UcpQuery, SceneContactsInTheJson) {
-  const UcpAnswer scene_answer = run_ucp(load_ucp(scene("pang1994_dataset1_geometry.json")), {});
-  const UcpAnswer matrices = run_ucp(load_ucp(scene("pang1994_dataset1.json")), {});
+  const UcpAnswer scene_answer = *run_ucp(load_ucp(scene("pang1994_dataset1_geometry.json")), {});
+  const UcpAnswer matrices = *run_ucp(load_ucp(scene("pang1994_dataset1.json")), {});
   ASSERT_EQ(scene_answer.report.status, ucp::UcpStatus::kSolvable);
   const json j = to_json(scene_answer);
   EXPECT_EQ(j["physical"]["contacts"].size(), j["physical"]["c_n"].size());
