@@ -28,6 +28,8 @@ using Action = std::function<int()>;
 
 /// Adds --json, --arith and --time-limit to a subcommand.
 void add_common_options(CLI::App& sub, CommonOptions& opts);
+/// Adds --time-limit alone (a command whose query takes no arithmetic).
+void add_time_limit(CLI::App& sub, double& seconds);
 
 /// Ends the process with exit code 3 if the command is still running `limit` seconds (+ grace) from now: the
 /// backstop of --time-limit (main.cpp), and of a command's own default time budget.
