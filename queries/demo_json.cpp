@@ -12,8 +12,61 @@ std::string generators_text(const exact::Mat<exact::Q>& M) {
 
 namespace {
 
-json run_json(const DemoRandomProblem::Run& r) {
-  return {{"status", solvers::ucp::status_name(r.status)}, {"pairs", r.pairs}, {"lps", r.lps}, {"seconds", r.seconds}};
+json row_json(const DemoCone& c) {
+  json x = {{"scene", c.scene}, {"mode", c.mode}, {"status", c.empty ? "empty" : "non_empty"}};
+  if (!c.empty) {
+    x["dimension"] = c.dimension;
+    x["generators"] = exact_json(c.generators);
+    x["open_faces"] = c.open_faces;
+  }
+  return x;
+}
+
+json row_json(const DemoStability& s) {
+  json x = {{"wrench", exact_json(s.wrench)},
+            {"verdict", solvers::verdict_name(s.verdict)},
+            {"evidence", s.evidence},
+            {"certificate_valid", s.certificate_valid},
+            {"lps", s.lps}};
+  if (!s.certificate_valid) x["certificate_reason"] = s.certificate_reason;
+  return x;
+}
+
+json row_json(const DemoInsertion& i) {
+  return {{"scene", i.scene},   {"mu", exact_json(exact::parse_rational(i.mu))},
+          {"cones", i.cones},   {"non_redundant", i.non_redundant},
+          {"pushes", i.pushes}, {"boundary_fraction", i.boundary_fraction}};
+}
+
+json row_json(const DemoDataSet& d) {
+  json x = {{"data_set", d.data_set}, {"status", solvers::ucp::status_name(d.status)}};
+  if (d.xTy) x["xTy"] = exact_json(*d.xTy);
+  x["pairs"] = d.pairs;
+  x["lps"] = d.lps;
+  x["evidence"] = d.evidence;
+  x["seconds"] = d.seconds;
+  return x;
+}
+
+json row_json(const DemoRandomProblem& p) {
+  json x = {{"nc", p.nc}, {"mu_max", exact_json(p.mu_max)}, {"abar", p.abar}};
+  for (const DemoRandomProblem::Run& r : p.runs)
+    x[solvers::ucp::method_name(r.method)] = {
+        {"status", solvers::ucp::status_name(r.status)}, {"pairs", r.pairs}, {"lps", r.lps}, {"seconds", r.seconds}};
+  return x;
+}
+
+json row_json(const DemoScene& s) {
+  return {{"file", s.file}, {"kind", s.kind}, {"verdict", s.verdict}, {"evidence", s.evidence}};
+}
+
+/// j[key]: a row_json per row, if the section ran (has rows).
+template <class Row>
+void add_rows(json& j, const char* key, const std::vector<Row>& rows) {
+  if (rows.empty()) return;
+  json out = json::array();
+  for (const Row& r : rows) out.push_back(row_json(r));
+  j[key] = out;
 }
 
 }  // namespace
@@ -70,32 +123,8 @@ json to_json(const DemoAnswer& a) {
   json j;
   j["command"] = "demo";
   j["scenes"] = a.scenes;
-  if (!a.cones.empty()) {
-    json cones = json::array();
-    for (const DemoCone& c : a.cones) {
-      json x = {{"scene", c.scene}, {"mode", c.mode}, {"status", c.empty ? "empty" : "non_empty"}};
-      if (!c.empty) {
-        x["dimension"] = c.dimension;
-        x["generators"] = exact_json(c.generators);
-        x["open_faces"] = c.open_faces;
-      }
-      cones.push_back(x);
-    }
-    j["wrench_cones"] = cones;
-  }
-  if (!a.stability.empty()) {
-    json rows = json::array();
-    for (const DemoStability& s : a.stability) {
-      json x = {{"wrench", exact_json(s.wrench)},
-                {"verdict", solvers::verdict_name(s.verdict)},
-                {"evidence", s.evidence},
-                {"certificate_valid", s.certificate_valid},
-                {"lps", s.lps}};
-      if (!s.certificate_valid) x["certificate_reason"] = s.certificate_reason;
-      rows.push_back(x);
-    }
-    j["stability"] = rows;
-  }
+  add_rows(j, "wrench_cones", a.cones);
+  add_rows(j, "stability", a.stability);
   if (a.region) {
     json pushes = json::array();
     for (const DemoRegion::Push& p : a.region->pushes)
@@ -104,45 +133,10 @@ json to_json(const DemoAnswer& a) {
                    {"strongly_stable_regions", a.region->strongly_stable_regions},
                    {"finger_pushes", pushes}};
   }
-  if (!a.insertion.empty()) {
-    json rows = json::array();
-    for (const DemoInsertion& i : a.insertion)
-      rows.push_back({{"scene", i.scene},
-                      {"mu", exact_json(exact::parse_rational(i.mu))},
-                      {"cones", i.cones},
-                      {"non_redundant", i.non_redundant},
-                      {"pushes", i.pushes},
-                      {"boundary_fraction", i.boundary_fraction}});
-    j["insertion"] = rows;
-  }
-  if (!a.data_sets.empty()) {
-    json rows = json::array();
-    for (const DemoDataSet& d : a.data_sets) {
-      json x = {{"data_set", d.data_set}, {"status", solvers::ucp::status_name(d.status)}};
-      if (d.xTy) x["xTy"] = exact_json(*d.xTy);
-      x["pairs"] = d.pairs;
-      x["lps"] = d.lps;
-      x["evidence"] = d.evidence;
-      x["seconds"] = d.seconds;
-      rows.push_back(x);
-    }
-    j["data_sets"] = rows;
-  }
-  if (!a.table1.empty()) {
-    json rows = json::array();
-    for (const DemoRandomProblem& p : a.table1) {
-      json x = {{"nc", p.nc}, {"mu_max", exact_json(p.mu_max)}, {"abar", p.abar}};
-      for (const DemoRandomProblem::Run& r : p.runs) x[solvers::ucp::method_name(r.method)] = run_json(r);
-      rows.push_back(x);
-    }
-    j["table1"] = rows;
-  }
-  if (!a.scenes_of_folder.empty()) {
-    json rows = json::array();
-    for (const DemoScene& s : a.scenes_of_folder)
-      rows.push_back({{"file", s.file}, {"kind", s.kind}, {"verdict", s.verdict}, {"evidence", s.evidence}});
-    j["scenes_of_folder"] = rows;
-  }
+  add_rows(j, "insertion", a.insertion);
+  add_rows(j, "data_sets", a.data_sets);
+  add_rows(j, "table1", a.table1);
+  add_rows(j, "scenes_of_folder", a.scenes_of_folder);
   j["report"] = a.report;
   j["seconds"] = a.seconds;
   return j;
