@@ -23,7 +23,11 @@ void add_common_options(CLI::App& sub, CommonOptions& opts) {
                  "needed (ucp; the other commands treat it as verified)")
       ->check(CLI::IsMember({"exact", "float", "verified", "adaptive"}))
       ->default_str("verified");
-  sub.add_option("--time-limit", opts.time_limit, "Seconds of wall clock before the run stops with exit 3 (0 = none)")
+  add_time_limit(sub, opts.time_limit);
+}
+
+void add_time_limit(CLI::App& sub, double& seconds) {
+  sub.add_option("--time-limit", seconds, "Seconds of wall clock before the run stops with exit 3 (0 = none)")
       ->check(seconds_in_range())
       ->default_str("0");
 }

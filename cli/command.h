@@ -30,6 +30,8 @@ using Action = std::function<int()>;
 
 /// Adds --json, --arith and --time-limit to a subcommand.
 void add_common_options(CLI::App& sub, CommonOptions& opts);
+/// Adds --time-limit alone (a command whose query takes no arithmetic).
+void add_time_limit(CLI::App& sub, double& seconds);
 
 /// Reports the limit that stopped `command` (SPEC section 6) and returns its exit code, 3. On stderr: "budget
 /// exceeded: WHAT (covered: ...)" (a budget inside the computation), "WHAT (covered: ...)" (the command's own

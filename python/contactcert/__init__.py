@@ -5,11 +5,13 @@ convert (a cone's other form), Ucp (the quasistatic contact problem) and Motion 
 same C++ code as the contactcert CLI; every result's to_dict() is the CLI's --json object for the same query. Exact
 numbers are fractions.Fraction (inputs: int, str or Fraction). See
 docs/python.md. `python -m contactcert ARGS` runs the CLI itself.
-Assembly (several bodies: stability from rest, the quasistatic problem) likewise runs `contactcert assembly`.
+Assembly (several bodies: stability from rest, the quasistatic problem) likewise runs `contactcert assembly`;
+demo and bench run `contactcert demo` and `contactcert bench`.
 """
 
 from ._assembly import Assembly, AssemblyStability, AssemblyUcp
 from ._core import BudgetExceeded, __version__
+from ._demo_bench import Bench, Demo, bench, demo
 from ._design import Converted, Design, convert, design
 from ._motion import Motion, Simulation, Step
 from ._results import Certificate, CheckResult, Cone, Contact, Finger, Insertion, Modes, Region, Stability, UcpResult
@@ -21,3 +23,4 @@ __all__ = ["BudgetExceeded", "Certificate", "CheckResult", "Cone", "Contact", "C
            "Insertion", "Region", "Scene", "Snap", "Modes", "Stability", "Ucp", "UcpResult", "check", "convert",
            "design", "generate_random", "generate_reduction", "Motion", "Simulation", "Step"]
 __all__ += ["Assembly", "AssemblyStability", "AssemblyUcp"]
+__all__ += ["Bench", "Demo", "bench", "demo"]

@@ -1,15 +1,15 @@
 // The hard-case families of `contactcert bench`: deterministic per seed, valid instances, the verified rung
 // never disagreeing with the exact one, and error measures that are zero exactly when they should be.
-#include "cli/bench/families.h"
+#include "queries/bench/families.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
 
-#include "cli/bench/rungs.h"
 #include "exact/rational_text.h"
 #include "geometry/contact_frame.h"
+#include "queries/bench/rungs.h"
 
 namespace contactcert::bench {
 namespace {

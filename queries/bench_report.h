@@ -5,12 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/bench/rungs.h"
+#include "queries/bench/rungs.h"
 #include "queries/json_out.h"
 
-namespace contactcert::cli {
-
-using namespace queries;  // the front end names the query layer's writers unqualified
+namespace contactcert::queries {
 
 /// One rung's result on one instance.
 struct RungRecord {
@@ -60,4 +58,4 @@ std::string ladder_text(const BenchRun& run);
 /// the paths.
 std::vector<std::string> write_bench_report(const BenchRun& run, const std::string& dir);
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

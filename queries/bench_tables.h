@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/bench_aggregate.h"
+#include "queries/bench_aggregate.h"
 
-namespace contactcert::cli::bench_report {
+namespace contactcert::queries::bench_report {
 
 struct Table {
   std::vector<std::string> header;
@@ -36,4 +36,4 @@ std::string ladder_summary(const BenchRun& run, bench::Family f);
 extern const char* const kLegend;
 extern const char* const kLadderLegend;
 
-}  // namespace contactcert::cli::bench_report
+}  // namespace contactcert::queries::bench_report

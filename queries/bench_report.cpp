@@ -1,13 +1,13 @@
 // `contactcert bench --out DIR`: the text, markdown, SVG and JSON reports and the HTML page that gathers them.
-#include "cli/bench_report.h"
+#include "queries/bench_report.h"
 
 #include <filesystem>
 
-#include "cli/bench_tables.h"
 #include "exact/input_error.h"
+#include "queries/bench_tables.h"
 #include "queries/html_report.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 using namespace bench_report;
 
@@ -54,4 +54,4 @@ std::vector<std::string> write_bench_report(const BenchRun& run, const std::stri
   return written;
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -1,4 +1,4 @@
-#include "cli/bench/families.h"
+#include "queries/bench/families.h"
 
 #include <algorithm>
 #include <cmath>

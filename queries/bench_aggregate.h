@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/bench_report.h"
+#include "queries/bench_report.h"
 
-namespace contactcert::cli::bench_report {
+namespace contactcert::queries::bench_report {
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -49,4 +49,4 @@ struct LadderCell {
 };
 LadderCell ladder_cell(const BenchRun& run, bench::Family f, std::size_t k);
 
-}  // namespace contactcert::cli::bench_report
+}  // namespace contactcert::queries::bench_report

@@ -1,4 +1,4 @@
-#include "cli/bench/rungs.h"
+#include "queries/bench/rungs.h"
 
 #include <algorithm>
 #include <cmath>

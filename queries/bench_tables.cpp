@@ -1,11 +1,11 @@
-#include "cli/bench_tables.h"
+#include "queries/bench_tables.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 namespace bench_report {
 
 std::string fmt(const char* f, double x) {
@@ -197,4 +197,4 @@ std::string ladder_text(const BenchRun& run) {
   return s + "\n" + kLadderLegend + "\n";
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -1,9 +1,9 @@
 // The JSON of `contactcert bench`: the rungs, totals, a summary per family and rung, the precision ladder and
 // every instance.
-#include "cli/bench_aggregate.h"
 #include "exact/arith.h"
+#include "queries/bench_aggregate.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 namespace {
 
@@ -91,4 +91,4 @@ json bench_json(const BenchRun& run) {
   return j;
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

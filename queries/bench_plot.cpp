@@ -5,10 +5,10 @@
 #include <limits>
 #include <sstream>
 
-#include "cli/bench_aggregate.h"
+#include "queries/bench_aggregate.h"
 #include "queries/html_report.h"
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 namespace {
 
@@ -222,4 +222,4 @@ std::string ladder_svg(const BenchRun& run) {
   return svg_plot(series, rungs, "median time per instance of the family (s)");
 }
 
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -1,6 +1,6 @@
 // Hard-case generators for `contactcert bench`: seeded families of instances with one difficulty
 // knob each, chosen where a tolerance-based float path is expected to break. Every instance is exact
-// (rational data) and can be run on any rung of the arithmetic ladder (cli/bench/rungs.h).
+// (rational data) and can be run on any rung of the arithmetic ladder (queries/bench/rungs.h).
 #pragma once
 
 #include <cstdint>

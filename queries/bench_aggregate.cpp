@@ -1,9 +1,9 @@
-#include "cli/bench_aggregate.h"
+#include "queries/bench_aggregate.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace contactcert::cli {
+namespace contactcert::queries {
 
 double median(std::vector<double> v) {
   if (v.empty()) return bench_report::kNaN;
@@ -85,4 +85,4 @@ LadderCell ladder_cell(const BenchRun& run, bench::Family f, std::size_t k) {
 }
 
 }  // namespace bench_report
-}  // namespace contactcert::cli
+}  // namespace contactcert::queries

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/bench/families.h"
 #include "exact/arith.h"
+#include "queries/bench/families.h"
 
 namespace contactcert::bench {
 
