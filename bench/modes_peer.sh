@@ -1,0 +1,59 @@
+#!/bin/bash
+# Contact modes from rest against the float MATLAB peer contact_mode_enumeration_2d (XianyiCheng, tol 1e-6) run in
+# Octave, on the same contacts: a convex polygon with k = 4 ... 64 fixels in convex position on its lower chain
+# (bench/modes_polygons.py), touching; and the same fixels at a gap, which only contactcert enumerates (the peer
+# takes touching contacts). Side by side in one run; per k the best of R runs of each, CPU seconds: the peer timed
+# inside Octave around contact_mode_enumeration (start-up excluded), contactcert as the whole `modes` process
+# (user + sys, start-up included), and their ratio. The peer's code is not part of this repository: fetch it into a
+# folder and pass that folder.
+#   bench/modes_peer.sh PEER_DIR [BUILD_DIR (build)] [R (3)]
+# Needs octave-cli (Debian: apt-get install --no-install-recommends octave; installed here if missing and root).
+set -euo pipefail
+peer=$(cd "${1:?usage: bench/modes_peer.sh PEER_DIR [BUILD_DIR] [R]}" && pwd)
+repo=$(cd "$(dirname "$0")/.." && pwd)
+cc="$repo/${2:-build}/cli/contactcert"
+runs=${3:-3}
+[ -f "$peer/contact_mode_enumeration.m" ] || { echo "no contact_mode_enumeration.m in $peer" >&2; exit 2; }
+[ -x "$cc" ] || { echo "no $cc (build first)" >&2; exit 2; }
+if ! command -v octave-cli > /dev/null; then
+  [ "$(id -u)" = 0 ] || { echo "octave-cli is missing" >&2; exit 2; }
+  apt-get install -y --no-install-recommends octave > /dev/null
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# The best user + sys CPU seconds of `runs` runs of the command.
+best_cpu() {
+  local best=""
+  for _ in $(seq "$runs"); do
+    /usr/bin/time -f "%U %S" -o "$work/t" "$@" > /dev/null
+    local t
+    t=$(awk '{print $1 + $2}' "$work/t")
+    best=$(awk -v a="$t" -v b="$best" 'BEGIN { print (b == "" || a < b) ? a : b }')
+  done
+  echo "$best"
+}
+
+printf "%-10s %4s %8s %12s %12s %8s\n" scene k modes peer_s contactcert_s ratio
+for k in 4 8 16 32 64; do
+  python3 "$repo/bench/modes_polygons.py" "$k" touching "$work/poly$k.json" "$work/poly$k.m"
+  python3 "$repo/bench/modes_polygons.py" "$k" gap "$work/gap$k.json"
+  cat > "$work/run$k.m" << OCTAVE
+addpath('$peer'); source('$work/poly$k.m');
+best = inf;
+for r = 1:$runs
+  t0 = cputime; M = contact_mode_enumeration(P, N, false); best = min(best, cputime - t0);
+end
+printf('%d %.4f\n', size(M, 2), best);
+OCTAVE
+  read -r peer_modes peer_s < <(octave-cli --no-gui -q "$work/run$k.m" 2> /dev/null | tail -1)
+  cc_s=$(best_cpu "$cc" modes "$work/poly$k.json")
+  cc_modes=$("$cc" modes "$work/poly$k.json" --json | python3 -c 'import json,sys; print(len(json.load(sys.stdin)["modes"]))')
+  printf "%-10s %4d %8s %12s %12s %8s\n" touching "$k" "$cc_modes/$peer_modes" "$peer_s" "$cc_s" \
+    "$(awk -v a="$cc_s" -v b="$peer_s" 'BEGIN { printf "%.2f", a / b }')"
+done
+for k in 4 8 16 32 64; do
+  cc_s=$(best_cpu "$cc" modes "$work/gap$k.json")
+  cc_modes=$("$cc" modes "$work/gap$k.json" --json | python3 -c 'import json,sys; print(len(json.load(sys.stdin)["modes"]))')
+  printf "%-10s %4d %8s %12s %12s %8s\n" gap "$k" "$cc_modes" "-" "$cc_s" "-"
+done
