@@ -4,14 +4,14 @@
 # (bench/modes_polygons.py), touching; and the same fixels at a gap, which only contactcert enumerates (the peer
 # takes touching contacts). Side by side in one run; per k the best of R runs of each, CPU seconds: the peer timed
 # inside Octave around contact_mode_enumeration (start-up excluded), contactcert as the whole `modes` process
-# (user + sys, start-up included), and their ratio. The peer's code is not part of this repository: fetch it into a
-# folder and pass that folder.
-#   bench/modes_peer.sh PEER_DIR [BUILD_DIR (build)] [R (3)]
+# (user + sys, start-up included), and their ratio (contactcert / peer: below 1, contactcert is faster). The
+# peer's code is not part of this repository: fetch it into a folder and pass that folder.
+#   bench/modes_peer.sh PEER_DIR [CONTACTCERT (build/cli/contactcert)] [R (3)]
 # Needs octave-cli (Debian: apt-get install --no-install-recommends octave; installed here if missing and root).
 set -euo pipefail
-peer=$(cd "${1:?usage: bench/modes_peer.sh PEER_DIR [BUILD_DIR] [R]}" && pwd)
+peer=$(cd "${1:?usage: bench/modes_peer.sh PEER_DIR [CONTACTCERT] [R]}" && pwd)
 repo=$(cd "$(dirname "$0")/.." && pwd)
-cc="$repo/${2:-build}/cli/contactcert"
+cc=${2:-$repo/build/cli/contactcert}
 runs=${3:-3}
 [ -f "$peer/contact_mode_enumeration.m" ] || { echo "no contact_mode_enumeration.m in $peer" >&2; exit 2; }
 [ -x "$cc" ] || { echo "no $cc (build first)" >&2; exit 2; }
@@ -22,16 +22,19 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# The best user + sys CPU seconds of `runs` runs of the command.
+# The best user + sys CPU seconds of `runs` runs of the command (microseconds, from getrusage).
 best_cpu() {
-  local best=""
-  for _ in $(seq "$runs"); do
-    /usr/bin/time -f "%U %S" -o "$work/t" "$@" > /dev/null
-    local t
-    t=$(awk '{print $1 + $2}' "$work/t")
-    best=$(awk -v a="$t" -v b="$best" 'BEGIN { print (b == "" || a < b) ? a : b }')
-  done
-  echo "$best"
+  python3 - "$runs" "$@" << 'PY'
+import resource, subprocess, sys
+best = None
+for _ in range(int(sys.argv[1])):
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    subprocess.run(sys.argv[2:], stdout=subprocess.DEVNULL, check=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+    best = t if best is None else min(best, t)
+print("%.4f" % best)
+PY
 }
 
 printf "%-10s %4s %8s %12s %12s %8s\n" scene k modes peer_s contactcert_s ratio
