@@ -1,5 +1,6 @@
 #include "solvers/stability/mode_tree.h"
 
+#include <deque>
 #include <string_view>
 
 #include "exact/input_error.h"
@@ -148,7 +149,7 @@ class Walker {
         continue;
       }
       if (Vec<T> y = reuse(prefix); y.size()) {
-        out_.dead.push_back({prefix, std::move(y)});
+        dead_.push_back({prefix, std::move(y)});
         prefix.letters.pop_back();
         continue;
       }
@@ -165,7 +166,7 @@ class Walker {
           }
           if (Vec<Q> y = cone_certificate(prefix, *path.back().cone, *cone); y.size()) {
             remember(prefix, y);
-            out_.dead.push_back({prefix, std::move(y)});
+            dead_.push_back({prefix, std::move(y)});
             prefix.letters.pop_back();
             continue;
           }
@@ -181,10 +182,17 @@ class Walker {
         continue;
       }
       remember(prefix, kin.motzkin);
-      out_.dead.push_back({prefix, std::move(kin.motzkin)});
+      dead_.push_back({prefix, std::move(kin.motzkin)});
       prefix.letters.pop_back();
     }
     return true;
+  }
+
+  // Moves the dead prefixes into the result, each once.
+  void finish() {
+    out_.dead.reserve(dead_.size());
+    for (DeadPrefix<T>& d : dead_) out_.dead.push_back(std::move(d));
+    dead_.clear();
   }
 
   void count_node() {
@@ -391,6 +399,8 @@ class Walker {
   std::vector<std::vector<KnownProof<T>>> known_;  ///< by the last fixel of their support
   std::vector<Interaction> touching_letters_, gap_letters_;
   std::vector<IntColumn> columns_;  ///< walk_modes_by_cones: J's columns in integers (empty: by LPs)
+  /// The dead prefixes as found: a deque, which never moves them (a vector of them grows by copying every Q).
+  std::deque<DeadPrefix<T>> dead_;
 };
 
 }  // namespace
@@ -410,6 +420,7 @@ ModeTree<T> walk_modes(const MotionModel<T>& model, const ModeAlphabet& alphabet
   Walker<T> walker(model, alphabet, options, on_mode, out);
   walker.count_node();  // the empty prefix
   out.complete = walker.walk();
+  walker.finish();
   return out;
 }
 
@@ -419,6 +430,7 @@ ModeTree<Q> walk_modes_by_cones(const MotionModel<Q>& model, const ModeAlphabet&
   Walker<Q> walker(model, alphabet, options, on_mode, out, /*by_cones=*/true);
   walker.count_node();  // the empty prefix
   out.complete = walker.walk();
+  walker.finish();
   return out;
 }
 
