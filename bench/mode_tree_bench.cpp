@@ -84,6 +84,30 @@ void BM_TreeVerdict(benchmark::State& state) {
 }
 BENCHMARK(BM_TreeVerdict)->ArgsProduct({{0, 1}, {2, 4, 6, 8, 12, 16, 24, 32}})->Unit(benchmark::kMillisecond);
 
+// The disk's verdict in Q with its certificate text (range(1) = 0: the tree by cones) against the float path
+// (range(1) = 1: strong_stability<double>, no certificate), k = range(0) fixels.
+void BM_DiskVerdictExactAgainstFloat(benchmark::State& state) {
+  const int k = static_cast<int>(state.range(0));
+  const std::string text = disk_text(k);
+  const auto scene = parse(text);
+  exact::Vec<double> g_float(3);
+  g_float << 0, -1, 0;
+  bool strong = false;
+  for (auto _ : state) {
+    if (state.range(1) == 0) {
+      const auto r = solvers::strong_stability<Q>(scene, gravity());
+      benchmark::DoNotOptimize(solvers::stability_certificate(text, gravity(), r).size());
+      strong = r.verdict == solvers::StabilityVerdict::kStronglyStable;
+    } else {
+      const auto r = solvers::strong_stability<double>(scene, g_float);
+      strong = r.verdict == solvers::StabilityVerdict::kStronglyStable;
+    }
+  }
+  state.counters["strong"] = strong;
+  state.SetLabel("disk k=" + std::to_string(k) + (state.range(1) == 0 ? " verified + certificate" : " float"));
+}
+BENCHMARK(BM_DiskVerdictExactAgainstFloat)->ArgsProduct({{16, 32, 64, 128}, {0, 1}})->Unit(benchmark::kMillisecond);
+
 // The 4^k route: the resting LP, then every moving mode string in turn - its kinematic LP and, when feasible,
 // its LP in g - as the engine did before the tree (without its certificate).
 void BM_AllModeStrings(benchmark::State& state) {
