@@ -56,7 +56,9 @@ struct ModeTree {
   std::vector<Vec<T>> accelerations;  ///< per mode: a vdot that realises it
   std::vector<DeadPrefix<T>> dead;    ///< depth first
   long nodes = 0;                     ///< prefixes visited, the empty one included
-  long lps = 0;                     ///< kinematic LPs (a child whose letter the parent's vdot already meets needs none)
+  /// Prefixes decided by a kinematic LP or by their cone (a child whose letter the parent's vdot already meets needs
+  /// neither)
+  long lps = 0;
   long lps_checked_from_float = 0;  ///< of these, decided by a float LP's answer checked exactly
   long lps_by_cones = 0;            ///< of these, decided by the prefix's cone (walk_modes_by_cones)
   bool complete = true;             ///< false if on_mode stopped the walk
