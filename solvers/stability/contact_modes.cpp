@@ -38,7 +38,7 @@ Vec<Q> ContactModes::wrench(std::size_t i) const {
 
 ContactModes contact_modes(const geometry::PlanarScene& scene, const ContactModeOptions& options) {
   ContactModes out{alphabet_of(scene, options.printed_separation, options.unions), motion_model<Q>(scene), {}};
-  out.tree = walk_modes(out.model, out.alphabet, options.tree);
+  out.tree = walk_modes_by_cones(out.model, out.alphabet, options.tree);
   return out;
 }
 

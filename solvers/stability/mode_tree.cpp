@@ -1,13 +1,16 @@
 #include "solvers/stability/mode_tree.h"
 
+#include <deque>
 #include <string_view>
 
 #include "exact/input_error.h"
 #include "exact/ladder_numbers.h"
+#include "solvers/stability/mode_tree_cone.h"
 
 namespace contactcert::solvers {
 
 using Index = Eigen::Index;
+namespace ring = exact::ring;
 
 std::vector<Interaction> ModeAlphabet::letters(std::size_t fixel) const {
   using I = Interaction;
@@ -96,7 +99,7 @@ template <class T>
 class Walker {
  public:
   Walker(const MotionModel<T>& model, const ModeAlphabet& alphabet, const ModeTreeOptions& options,
-         const OnMode<T>& on_mode, ModeTree<T>& out)
+         const OnMode<T>& on_mode, ModeTree<T>& out, bool by_cones = false)
       : model_(model),
         alphabet_(alphabet),
         options_(options),
@@ -106,6 +109,8 @@ class Walker {
         known_(k_) {
     for (std::size_t i = 0; i < k_; ++i)
       (alphabet.rules.touches(i) ? touching_letters_ : gap_letters_) = alphabet.letters(i);
+    if constexpr (std::is_same_v<T, Q>)
+      if (by_cones) integer_columns();
   }
 
   // Walks the subtree of the empty prefix depth first, letters in alphabet order, with an explicit stack (one
@@ -113,12 +118,14 @@ class Walker {
   // walk - up to the number of fixels - never becomes call depth. False once on_mode stopped the walk.
   bool walk() {
     struct Frame {
-      Vec<T> vdot;           // realises the live prefix of this depth
-      std::size_t next = 0;  // the index of the next letter to try at the following fixel
+      Vec<T> vdot;                     // realises the live prefix of this depth
+      std::size_t next = 0;            // the index of the next letter to try at the following fixel
+      std::optional<PrefixCone> cone;  // walk_modes_by_cones: the closure cone of the prefix's rows, if it fits
     };
     ModeString prefix;
     std::vector<Frame> path;
-    path.push_back({Vec<T>::Zero(3), 0});  // the empty prefix: no rows, realised by vdot = 0
+    path.push_back({Vec<T>::Zero(3), 0, std::nullopt});  // the empty prefix: no rows, realised by vdot = 0
+    if (!columns_.empty()) path.back().cone.emplace();
     while (!path.empty()) {
       const std::size_t i = path.size() - 1;  // == prefix.letters.size()
       if (i == k_) {
@@ -137,26 +144,55 @@ class Walker {
       prefix.letters.push_back(L);
       if (meets(model_, alphabet_.rules, path.back().vdot, i, L)) {
         Vec<T> vdot = path.back().vdot;  // copied before push_back can move the frames
-        path.push_back({std::move(vdot), 0});
+        std::optional<PrefixCone> cone = child_cone(path.back().cone, prefix);
+        path.push_back({std::move(vdot), 0, std::move(cone)});
         continue;
       }
       if (Vec<T> y = reuse(prefix); y.size()) {
-        out_.dead.push_back({prefix, std::move(y)});
+        dead_.push_back({prefix, std::move(y)});
         prefix.letters.pop_back();
         continue;
+      }
+      if constexpr (std::is_same_v<T, Q>) {
+        if (std::optional<PrefixCone> cone = child_cone(path.back().cone, prefix)) {
+          ++out_.lps;
+          ++out_.lps_by_cones;
+          if (const std::optional<Int3> v = cone->point_meeting(rows_of(prefix))) {
+            Vec<Q> vdot(3);
+            for (Index d = 0; d < 3; ++d)
+              ring::to_rational((*v)[static_cast<std::size_t>(d)], exact::Int128(1), vdot(d));
+            path.push_back({std::move(vdot), 0, std::move(cone)});
+            continue;
+          }
+          if (Vec<Q> y = cone_certificate(prefix, *path.back().cone, *cone); y.size()) {
+            remember(prefix, y);
+            dead_.push_back({prefix, std::move(y)});
+            prefix.letters.pop_back();
+            continue;
+          }
+          --out_.lps;
+          --out_.lps_by_cones;
+        }
       }
       auto kin = exact::strict_feasibility(kinematic_system(model_, prefix, alphabet_.rules), options_.arith);
       out_.lps += kin.lps;
       if (kin.rounded_float_checked) out_.lps_checked_from_float += kin.lps;
       if (kin.status == exact::StrictStatus::kFeasible) {
-        path.push_back({Vec<T>(kin.x.head(3)), 0});
+        path.push_back({Vec<T>(kin.x.head(3)), 0, std::nullopt});
         continue;
       }
       remember(prefix, kin.motzkin);
-      out_.dead.push_back({prefix, std::move(kin.motzkin)});
+      dead_.push_back({prefix, std::move(kin.motzkin)});
       prefix.letters.pop_back();
     }
     return true;
+  }
+
+  // Moves the dead prefixes into the result, each once.
+  void finish() {
+    out_.dead.reserve(dead_.size());
+    for (DeadPrefix<T>& d : dead_) out_.dead.push_back(std::move(d));
+    dead_.clear();
   }
 
   void count_node() {
@@ -247,6 +283,113 @@ class Walker {
     return Vec<T>();
   }
 
+  // walk_modes_by_cones: J's columns a_n and a_t of each fixel as integer rows (times a positive scale each);
+  // none if a scale or an entry outgrows 64 bits (every prefix then goes to its LP).
+  void integer_columns() {
+    const Index k = static_cast<Index>(k_);
+    std::vector<IntColumn> columns(2 * k_);
+    try {
+      for (Index c = 0; c < 2 * k; ++c) {
+        std::int64_t entries[3];
+        const std::int64_t scale = ring::to_common_denominator<std::int64_t>(
+            3, [&](Index d) -> const Q& { return model_.J(d, c); }, entries);
+        columns[static_cast<std::size_t>(c)] = {{entries[0], entries[1], entries[2]}, scale};
+      }
+    } catch (const exact::RingOverflow&) {
+      return;
+    }
+    columns_ = std::move(columns);
+  }
+
+  // The prefix's rows in kinematic_system's order as sign conditions f . vdot (f = the row's a_n or a_t part
+  // times -c, c the coefficient of its slack, so that f . vdot is the slack; f = the row itself where there is no
+  // slack), with the factor y_i = factor_i w_i that turns a weight w_i on f into the row's Motzkin entry
+  // (mode_tree_cone.h).
+  std::vector<ConeRow> rows_of(const ModeString& prefix, std::vector<std::int64_t>* factors = nullptr) const {
+    std::vector<ConeRow> rows;
+    for (std::size_t u = 0; u < prefix.letters.size(); ++u) letter_rows(u, prefix.letters[u], rows, factors);
+    return rows;
+  }
+
+  // The rows of letter L at fixel u, appended (rows_of).
+  void letter_rows(std::size_t u, Interaction L, std::vector<ConeRow>& rows, std::vector<std::int64_t>* factors) const {
+    auto add = [&](std::size_t column, int c, RowSign sign) {  // c = the slack's coefficient, 0 if none
+      const IntColumn& col = columns_[column];
+      const int orient = c == 0 ? 1 : -c;
+      rows.push_back({{orient * col.f[0], orient * col.f[1], orient * col.f[2]}, sign});
+      if (factors) factors->push_back(c == 0 ? -col.scale : c * col.scale);
+    };
+    const std::size_t n = u, t = k_ + u;
+    switch (L) {
+      case Interaction::kSeparate:  // a_n - sigma = 0
+        add(n, -1, strict_s(u) ? RowSign::kPositive : RowSign::kNonNegative);
+        break;
+      case Interaction::kSeparatePrinted:
+        add(n, -1, RowSign::kNonNegative);
+        break;
+      case Interaction::kApproach:  // a_n + sigma = 0, sigma > 0
+        add(n, 1, RowSign::kPositive);
+        break;
+      case Interaction::kUnconstrained:
+        break;
+      case Interaction::kSlideLeft:  // a_n = 0, a_t - sigma = 0, sigma > 0
+        add(n, 0, RowSign::kZero);
+        add(t, -1, RowSign::kPositive);
+        break;
+      case Interaction::kSlideRight:  // a_n = 0, a_t + sigma = 0, sigma > 0
+        add(n, 0, RowSign::kZero);
+        add(t, 1, RowSign::kPositive);
+        break;
+      case Interaction::kRoll:  // a_n = 0, a_t = 0
+        add(n, 0, RowSign::kZero);
+        add(t, 0, RowSign::kZero);
+        break;
+      case Interaction::kMaintain:  // a_n = 0
+        add(n, 0, RowSign::kZero);
+        break;
+    }
+  }
+
+  // The parent's cone cut by the rows of the prefix's last letter; none without the parent's or on RingOverflow.
+  std::optional<PrefixCone> child_cone(const std::optional<PrefixCone>& parent, const ModeString& prefix) const {
+    if (!parent) return std::nullopt;
+    std::optional<PrefixCone> cone = parent;
+    try {
+      std::vector<ConeRow> rows;
+      letter_rows(prefix.letters.size() - 1, prefix.letters.back(), rows, nullptr);
+      for (const ConeRow& row : rows) cone->cut(row);
+    } catch (const exact::RingOverflow&) {
+      return std::nullopt;
+    }
+    return cone;
+  }
+
+  // A Motzkin certificate of the prefix's kinematic system from its cone (cone_motzkin), or empty.
+  Vec<Q> cone_certificate(const ModeString& prefix, const PrefixCone& parent, const PrefixCone& cone) const {
+    std::vector<std::int64_t> factors;
+    const std::vector<ConeRow> rows = rows_of(prefix, &factors);
+    ModeString head = prefix;
+    head.letters.pop_back();
+    try {
+      const std::size_t first_new = rows_of(head).size();
+      const auto w = cone_motzkin(rows, cone, certificate_candidates(rows, first_new, parent), kCertificateBudget);
+      if (!w) return Vec<Q>();
+      Vec<Q> y = Vec<Q>::Zero(static_cast<Index>(rows.size()));
+      for (std::size_t i = 0; i < rows.size(); ++i)
+        if ((*w)[i] != 0)
+          ring::to_rational(ring::mul((*w)[i], exact::Int128(factors[i])), exact::Int128(1), y(static_cast<Index>(i)));
+      return y;
+    } catch (const exact::RingOverflow&) {
+      return Vec<Q>();
+    }
+  }
+
+  struct IntColumn {
+    std::array<std::int64_t, 3> f;
+    std::int64_t scale = 1;  // f = scale * (the column of J)
+  };
+  static constexpr long kCertificateBudget = 20000;  // subsets of candidate rows tried per dead prefix
+
   const MotionModel<T>& model_;
   const ModeAlphabet& alphabet_;
   const ModeTreeOptions& options_;
@@ -255,6 +398,9 @@ class Walker {
   std::size_t k_;
   std::vector<std::vector<KnownProof<T>>> known_;  ///< by the last fixel of their support
   std::vector<Interaction> touching_letters_, gap_letters_;
+  std::vector<IntColumn> columns_;  ///< walk_modes_by_cones: J's columns in integers (empty: by LPs)
+  /// The dead prefixes as found: a deque, which never moves them (a vector of them grows by copying every Q).
+  std::deque<DeadPrefix<T>> dead_;
 };
 
 }  // namespace
@@ -274,6 +420,17 @@ ModeTree<T> walk_modes(const MotionModel<T>& model, const ModeAlphabet& alphabet
   Walker<T> walker(model, alphabet, options, on_mode, out);
   walker.count_node();  // the empty prefix
   out.complete = walker.walk();
+  walker.finish();
+  return out;
+}
+
+ModeTree<Q> walk_modes_by_cones(const MotionModel<Q>& model, const ModeAlphabet& alphabet,
+                                const ModeTreeOptions& options, const OnMode<Q>& on_mode) {
+  ModeTree<Q> out;
+  Walker<Q> walker(model, alphabet, options, on_mode, out, /*by_cones=*/true);
+  walker.count_node();  // the empty prefix
+  out.complete = walker.walk();
+  walker.finish();
   return out;
 }
 

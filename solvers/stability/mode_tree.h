@@ -56,8 +56,11 @@ struct ModeTree {
   std::vector<Vec<T>> accelerations;  ///< per mode: a vdot that realises it
   std::vector<DeadPrefix<T>> dead;    ///< depth first
   long nodes = 0;                     ///< prefixes visited, the empty one included
-  long lps = 0;                     ///< kinematic LPs (a child whose letter the parent's vdot already meets needs none)
+  /// Prefixes decided by a kinematic LP or by their cone (a child whose letter the parent's vdot already meets needs
+  /// neither)
+  long lps = 0;
   long lps_checked_from_float = 0;  ///< of these, decided by a float LP's answer checked exactly
+  long lps_by_cones = 0;            ///< of these, decided by the prefix's cone (walk_modes_by_cones)
   bool complete = true;             ///< false if on_mode stopped the walk
 };
 
@@ -71,6 +74,13 @@ using OnMode = std::function<bool(const ModeString&, const Vec<T>&)>;
 template <class T>
 ModeTree<T> walk_modes(const MotionModel<T>& model, const ModeAlphabet& alphabet, const ModeTreeOptions& options,
                        const OnMode<T>& on_mode = {});
+
+/// The same walk with the prefixes that the parent's acceleration does not realise decided by the cone of their rows
+/// in integers (mode_tree_cone.h) instead of an LP each: the same modes and dead prefixes; the accelerations are sums
+/// of the cones' rays and the Motzkin certificates combine at most four rows. A prefix goes to its LP (the verified
+/// arithmetic of options.arith) only where a number outgrows 128 bits or no such certificate is found.
+ModeTree<Q> walk_modes_by_cones(const MotionModel<Q>& model, const ModeAlphabet& alphabet,
+                                const ModeTreeOptions& options, const OnMode<Q>& on_mode = {});
 
 /// Whether acceleration vdot realises `mode` (or a prefix of one) by Table 2's sign conditions on a_n = J_n^T vdot
 /// and a_t = J_t^T vdot, with the sign test of T (exact for Q): a direct reading of the table, not its LP rows.

@@ -71,6 +71,17 @@ ModeTreeOptions tree_options(const StabilityOptions& o) {
   return {o.arith, o.max_nodes, std::numeric_limits<long>::max(), o.deadline};
 }
 
+// The mode tree of the moving modes: in Q its prefixes decided by their cones in integers (walk_modes_by_cones), in
+// a float type by its LPs.
+template <class T>
+ModeTree<T> walk_tree(const MotionModel<T>& model, const ModeAlphabet& alphabet, const ModeTreeOptions& options,
+                      const OnMode<T>& on_mode = {}) {
+  if constexpr (std::is_same_v<T, Q>)
+    return walk_modes_by_cones(model, alphabet, options, on_mode);
+  else
+    return walk_modes(model, alphabet, options, on_mode);
+}
+
 // One feasible mode as the verdict sees it: its name, system and LP.
 template <class T>
 struct ModeLp {
@@ -144,7 +155,7 @@ StabilityOracle<T>::StabilityOracle(const geometry::PlanarScene& full, const Sta
     : model_(motion_model<T>(touching_scene(full, &touching_))),
       rest_(motion_system(model_, all_rolling(model_.mu_s.size()), /*zero_acceleration=*/true)),
       rest_solver_(rest_.system, options.arith),
-      tree_(walk_modes(model_, moving_alphabet(model_.mu_s.size()), tree_options(options))) {
+      tree_(walk_tree(model_, moving_alphabet(model_.mu_s.size()), tree_options(options))) {
   // The systems of the feasible moving modes (n..n last), and the dead prefixes as shared proofs.
   for (const ModeString& m : tree_.modes) {
     if (is_all_rolling(m)) continue;
@@ -197,7 +208,7 @@ StabilityResult<T> strong_stability(const geometry::PlanarScene& full, const Vec
   StabilityResult<T> out = decide(
       touching, rest, rest_solver, g,
       [&](auto&& visit) {
-        tree = walk_modes<T>(model, moving_alphabet(k), tree_options(options), [&](const ModeString& m, const Vec<T>&) {
+        tree = walk_tree<T>(model, moving_alphabet(k), tree_options(options), [&](const ModeString& m, const Vec<T>&) {
           if (is_all_rolling(m)) return true;
           const MotionSystem<T> ms = motion_system(model, m);
           return visit(ModeLp<T>{m, ms, exact::StrictSolver<T>(ms.system, options.arith)});
