@@ -1,5 +1,7 @@
 #include "solvers/assembly/assembly_stability.h"
 
+#include "solvers/assembly/assembly_certificate_memory.h"
+
 namespace contactcert::solvers::assembly {
 namespace {
 
@@ -46,6 +48,7 @@ bool meets(const AssemblyModel& model, std::size_t i, char L, const Vec<Q>& vdot
 void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, AssemblyStabilityResult& r) {
   const std::size_t k = model.contacts.size();
   std::vector<Node> stack;
+  CertificateMemory memory;
   {
     const AssemblySystem root = assembly_system(model, std::string(k, '*'));
     const auto f = solve(root, options.arith);
@@ -74,9 +77,15 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
       Node child{prefix, node.vdot, node.c};
       if (!meets(model, i, L, node.vdot, node.c)) {
         const AssemblySystem s = assembly_system(model, prefix + std::string(k - prefix.size(), '*'));
+        if (options.reuse_certificates)
+          if (std::optional<Vec<Q>> y = memory.recall(s, prefix.size())) {
+            r.dead.push_back({std::move(prefix), std::move(*y)});
+            continue;
+          }
         const auto f = solve(s, options.arith);
         ++r.lps;
         if (f.status == exact::StrictStatus::kInfeasible) {
+          memory.remember(s, prefix.size(), f.motzkin);
           r.dead.push_back({std::move(prefix), f.motzkin});
           continue;
         }

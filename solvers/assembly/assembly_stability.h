@@ -8,7 +8,9 @@
 // over the contacts keeps the loads' Newton-Euler rows and the energy row in every partial system (the later
 // contacts relaxed) and stops at a prefix whose system is infeasible, with its Motzkin certificate. Under gravity
 // alone a structure whose every allowed acceleration lowers no com has an infeasible root: one LP after the resting
-// one.
+// one. Before its LP, a prefix tries the certificates of the latest dead prefixes of its length, carried onto its
+// system by row labels and checked exactly (assembly_certificate_memory.h): a local contradiction (a body pushed
+// against its friction) recurs under every choice of the earlier letters, and its certificate with it.
 #pragma once
 
 #include <string>
@@ -52,7 +54,7 @@ struct AssemblyStabilityResult {
   AssemblyMotion moving;                 ///< weakly stable (and unstable when found): a moving solution
   std::vector<AssemblyDeadPrefix> dead;  ///< strongly stable: they cover every mode
   long nodes = 0;                        ///< prefixes visited, the empty one included
-  long lps = 0;                          ///< LPs solved (a prefix its parent's point already meets needs none)
+  long lps = 0;                          ///< LPs solved (not where the parent's point or a kept certificate decides)
   std::string covered;                   ///< on a limit: how far the walk got
 };
 
@@ -60,6 +62,9 @@ struct AssemblyStabilityOptions {
   exact::Arith arith = exact::Arith::kVerified;
   long max_nodes = 1L << 20;   ///< prefixes visited at most; beyond: status kNodeLimit
   exact::Deadline deadline{};  ///< tested at every prefix; expired: status kTimeLimit
+  /// Try the latest dead prefixes' certificates on a prefix before its LP (assembly_certificate_memory.h); false
+  /// solves one LP per prefix its parent's point does not meet (bench/assembly_bench.cpp compares the two).
+  bool reuse_certificates = true;
 };
 
 /// The verdict of assembly `a` under its loads, with its evidence.

@@ -76,6 +76,7 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
         add(0, 3 * b + d, model.g[static_cast<std::size_t>(b)][static_cast<std::size_t>(d)]);
     add(0, e, Q(-1));
     ++S.rows;
+    out.row_label.push_back(0);
   }
   // a row sum_b w^b . vdot_b (+ slack sign * sigma)
   const auto kinematic = [&](std::size_t i, bool normal, Index sigma, int slack_sign) {
@@ -85,14 +86,16 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
     }
     if (sigma >= 0) add(S.rows, sigma, Q(slack_sign));
     ++S.rows;
+    out.row_label.push_back(1 + 4 * static_cast<Index>(i) + (normal ? 0 : 1));
   };
-  const auto friction = [&](const Q& mu, Index c_n, Index c_t) {
+  const auto friction = [&](std::size_t i, const Q& mu, Index c_n, Index c_t) {
     for (int sign : {-1, 1}) {
       const Index rho = column(false, false);
       add(S.rows, c_n, mu);
       add(S.rows, c_t, Q(sign));
       add(S.rows, rho, Q(-1));
       ++S.rows;
+      out.row_label.push_back(1 + 4 * static_cast<Index>(i) + (sign < 0 ? 2 : 3));
     }
   };
   out.c_n_column.assign(k, -1);
@@ -123,7 +126,7 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
       throw std::invalid_argument("assembly_system: letters are s l r n *");
     }
     out.c_t_column[i] = column(true, false);
-    friction(L == '*' ? std::max(c.mu_s, c.mu_k) : c.mu_s, out.c_n_column[i], out.c_t_column[i]);
+    friction(i, L == '*' ? std::max(c.mu_s, c.mu_k) : c.mu_s, out.c_n_column[i], out.c_t_column[i]);
   }
   // Newton-Euler rows: M_b vdot_b - sum_i (c_in w^b_in + c_it w^b_it) = g_b.
   const Index first = S.rows;
@@ -152,6 +155,7 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
     }
   }
   S.rows += 3 * N;
+  for (Index r = 0; r < 3 * N; ++r) out.row_label.push_back(1 + 4 * static_cast<Index>(k) + r);
   return out;
 }
 

@@ -61,6 +61,9 @@ struct AssemblySystem {
   Eigen::Index vdot_size = 0;                        ///< 3N, or 0 when resting
   std::vector<Eigen::Index> c_n_column, c_t_column;  ///< per contact, -1 if none
   std::vector<Q> c_t_per_c_n;                        ///< l: -mu_k, r: mu_k, else 0
+  /// What each row says, the same in every prefix's system: 0 the energy row; 1 + 4i + 0, 1, 2, 3 contact i's rows
+  /// a_n, a_t, friction with -c_t, with +c_t; 1 + 4k + 3b + d body b's Newton-Euler row d.
+  std::vector<Eigen::Index> row_label;
   /// vdot (3N) and the forces (c_1n..c_kn, c_1t..c_kt) of a point x of the system.
   Vec<Q> acceleration(const Vec<Q>& x) const;
   Vec<Q> forces(const Vec<Q>& x) const;

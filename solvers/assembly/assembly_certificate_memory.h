@@ -1,0 +1,41 @@
+// Reuse of a dead prefix's certificate on later prefixes of the stability walk (assembly_stability.h). A Motzkin
+// vector y of one prefix's system weighs its rows, and every row has a label that means the same in every prefix's
+// system (AssemblySystem::row_label: the energy row, a contact's kinematic and friction rows, a body's Newton-Euler
+// rows). Carried by those labels onto the system of another prefix (zero on the rows the first one lacks), y is
+// checked there exactly against Motzkin's conditions (strict_feasibility.h); where they hold, that prefix is dead
+// without an LP. They often do: the certificate of a local contradiction (one body pushed against its friction,
+// say) weighs the rows of a few contacts and bodies only, and the contradiction recurs under every choice of the
+// letters of the contacts before them.
+#pragma once
+
+#include <deque>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "solvers/assembly/assembly_system.h"
+
+namespace contactcert::solvers::assembly {
+
+/// Whether y is a Motzkin certificate of s (A x = b with its signs): (y^T A)_j = 0 on free columns, >= 0 on the
+/// others, y^T b <= 0, and y^T b < 0 or (y^T A)_j > 0 on a strict column. Linear in the entries.
+bool motzkin_holds(const AssemblySystem& s, const Vec<Q>& y);
+
+/// The certificates of the latest dead prefixes, a few per prefix length, by row label.
+class CertificateMemory {
+ public:
+  explicit CertificateMemory(std::size_t per_length = 8) : per_length_(per_length) {}
+  /// A certificate of s (the system of a prefix of `length` letters) carried from a remembered one, or nullopt.
+  /// One that holds moves to the front of its length's list.
+  std::optional<Vec<Q>> recall(const AssemblySystem& s, std::size_t length);
+  /// Keeps y, a certificate of s, at the front of its length's list (the oldest beyond per_length is dropped).
+  void remember(const AssemblySystem& s, std::size_t length, const Vec<Q>& y);
+
+ private:
+  using Labelled = std::vector<std::pair<Eigen::Index, Q>>;  ///< (row label, multiplier), non-zero ones
+  std::size_t per_length_;
+  std::vector<std::deque<Labelled>> by_length_;
+  std::vector<const Q*> by_label_;  ///< scratch: a remembered certificate's multiplier per label
+};
+
+}  // namespace contactcert::solvers::assembly

@@ -1,0 +1,81 @@
+// The stability walk's reuse of dead prefixes' certificates (assembly_certificate_memory.h): a remembered Motzkin
+// vector, carried by row labels onto another prefix's system, is given back only where it proves that system
+// infeasible; and the walk that uses it keeps its verdicts and valid evidence while solving fewer LPs.
+#include "solvers/assembly/assembly_certificate_memory.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "solvers/assembly/assembly_check.h"
+#include "tests/solvers/assembly/assembly_fixtures.h"
+
+namespace contactcert::solvers::assembly {
+namespace {
+
+/// A row of n boxes on the ground, each pushed along +x by a quarter of its weight (strongly stable for n = 2, 4: the
+/// root's system, every contact relaxed, is feasible and the walk proves many prefixes dead).
+geometry::Assembly windy_row(std::size_t n) {
+  testing::SceneText s = testing::box_row(n);
+  for (std::string& b : s.bodies) b.insert(b.size() - 1, R"(, "load": ["1/2", -2, 0])");
+  return s.read();
+}
+
+AssemblySystem prefix_system(const AssemblyModel& m, const std::string& prefix) {
+  return assembly_system(m, prefix + std::string(m.contacts.size() - prefix.size(), '*'));
+}
+
+TEST(AssemblyCertificateMemory, RowLabelsNameEveryRowOnce) {
+  const AssemblyModel m = assembly_model(windy_row(2));
+  for (const std::string& letters : {std::string("******"), std::string("slrn*s"), std::string("nnnnnn")}) {
+    const AssemblySystem s = assembly_system(m, letters);
+    ASSERT_EQ(static_cast<Eigen::Index>(s.row_label.size()), s.system.rows);
+    EXPECT_EQ(std::set<Eigen::Index>(s.row_label.begin(), s.row_label.end()).size(), s.row_label.size()) << letters;
+  }
+}
+
+TEST(AssemblyCertificateMemory, RecallsOnlyCertificatesThatHold) {
+  const geometry::Assembly a = windy_row(2);
+  const AssemblyModel m = assembly_model(a);
+  const AssemblyStabilityResult r = assembly_stability(a);
+  ASSERT_EQ(r.verdict, AssemblyVerdict::kStronglyStable);
+  ASSERT_GE(r.dead.size(), 2u);
+  const AssemblyDeadPrefix& d = r.dead.front();
+  const AssemblySystem dead = prefix_system(m, d.prefix);
+  ASSERT_TRUE(motzkin_holds(dead, d.motzkin));
+  // A wrong vector fails: its negation, and (the system being infeasible only through it) zero.
+  EXPECT_FALSE(motzkin_holds(dead, Vec<Q>(-d.motzkin)));
+  EXPECT_FALSE(motzkin_holds(dead, Vec<Q>(Vec<Q>::Zero(d.motzkin.size()))));
+  EXPECT_FALSE(motzkin_holds(dead, Vec<Q>(d.motzkin.head(d.motzkin.size() - 1))));
+
+  CertificateMemory memory;
+  EXPECT_FALSE(memory.recall(dead, d.prefix.size()));  // nothing remembered yet
+  memory.remember(dead, d.prefix.size(), d.motzkin);
+  const std::optional<Vec<Q>> again = memory.recall(dead, d.prefix.size());
+  ASSERT_TRUE(again);
+  EXPECT_TRUE(motzkin_holds(dead, *again));
+  // The root's system (every contact relaxed) is feasible: no certificate can hold there, whatever is remembered.
+  for (const AssemblyDeadPrefix& e : r.dead) memory.remember(prefix_system(m, e.prefix), 0, e.motzkin);
+  EXPECT_FALSE(memory.recall(prefix_system(m, ""), 0));
+  // Every recall on a dead prefix's system gives a certificate of that system.
+  for (const AssemblyDeadPrefix& e : r.dead) {
+    const AssemblySystem s = prefix_system(m, e.prefix);
+    if (const std::optional<Vec<Q>> y = memory.recall(s, 0)) {
+      EXPECT_TRUE(motzkin_holds(s, *y)) << e.prefix;
+    }
+  }
+}
+
+// The walk with the memory: the row of four boxes under wind is strongly stable, its certificate checks, and more
+// prefixes are proved dead than LPs are solved for them (the rest recalled).
+TEST(AssemblyCertificateMemory, WalkReusesCertificates) {
+  const geometry::Assembly a = windy_row(4);
+  const AssemblyStabilityResult r = assembly_stability(a);
+  ASSERT_EQ(r.status, AssemblyStatus::kDecided);
+  EXPECT_EQ(r.verdict, AssemblyVerdict::kStronglyStable);
+  EXPECT_EQ(check_assembly_stability(a, r), "");
+  EXPECT_LT(r.lps, r.nodes - static_cast<long>(r.dead.size()) + static_cast<long>(r.dead.size()) / 2);
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::assembly
