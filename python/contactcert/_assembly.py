@@ -111,6 +111,10 @@ class Assembly(FromSource[_core.Assembly]):
     def to_dict(self) -> dict[str, Any]:
         return json.loads(self._core.text)
 
+    def _problem_source(self) -> tuple[str, str]:
+        """What `check(certificate, problem=assembly)` compares an assembly_stability certificate with."""
+        return self._core.text, self.name
+
     def stability(self, arith: Arith = "verified", time_limit: float = 0, max_nodes: int | None = None,
                   certificate: Path | None = None) -> AssemblyStability:
         """`contactcert assembly FILE`: the verdict from rest with its witness; `certificate` is the file the

@@ -2,4 +2,5 @@
 # Pang-Trinkle-Lo's quasistatic problem for N bodies.
 target_sources(contactcert_solvers PRIVATE assembly/assembly_system.cpp assembly/assembly_stability.cpp
                                            assembly/assembly_check.cpp assembly/assembly_ucp.cpp
-                                           assembly/assembly_certificate.cpp)
+                                           assembly/assembly_certificate.cpp assembly/assembly_modes.cpp
+                                           assembly/assembly_modes_check.cpp)

@@ -6,10 +6,13 @@
 // assembly_system.h (docs/formats.md, section 5a) with its own code (not assembly_system.h's).
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "geometry/assembly.h"
 #include "solvers/assembly/assembly_stability.h"
+#include "solvers/stability/table2_rows_check.h"
 
 namespace contactcert::solvers::assembly {
 
@@ -22,5 +25,14 @@ std::string check_assembly_stability(const geometry::Assembly& a, const Assembly
 
 /// Why (vdot, c) is not a moving solution of `mode` (s l r n per contact) for assembly a, or "".
 std::string assembly_motion_violation(const geometry::Assembly& a, const AssemblyMotion& m);
+
+/// The checker's relative accelerations, for the assembly's other checkers (assembly_modes.h): per contact the
+/// coefficients of a_n and of a_t on vdot (3N columns, body by body), from frames re-verified against the shapes;
+/// `violation` names the first wrong frame ("" if none, and then `rows` is filled).
+struct CheckedAccelerations {
+  std::string violation;
+  std::vector<std::array<std::vector<table2_check::Rows::Entry>, 2>> rows;
+};
+CheckedAccelerations checked_accelerations(const geometry::Assembly& a);
 
 }  // namespace contactcert::solvers::assembly

@@ -118,7 +118,7 @@ class Walker {
     };
     ModeString prefix;
     std::vector<Frame> path;
-    path.push_back({Vec<T>::Zero(3), 0});  // the empty prefix: no rows, realised by vdot = 0
+    path.push_back({Vec<T>::Zero(model_.J.rows()), 0});  // the empty prefix: no rows, realised by vdot = 0
     while (!path.empty()) {
       const std::size_t i = path.size() - 1;  // == prefix.letters.size()
       if (i == k_) {
@@ -149,7 +149,7 @@ class Walker {
       out_.lps += kin.lps;
       if (kin.rounded_float_checked) out_.lps_checked_from_float += kin.lps;
       if (kin.status == exact::StrictStatus::kFeasible) {
-        path.push_back({Vec<T>(kin.x.head(3)), 0});
+        path.push_back({Vec<T>(kin.x.head(model_.J.rows())), 0});
         continue;
       }
       remember(prefix, kin.motzkin);
@@ -261,7 +261,7 @@ class Walker {
 
 template <class T>
 bool realises(const MotionModel<T>& model, const KinematicRules& rules, const Vec<T>& vdot, const ModeString& mode) {
-  if (vdot.size() != 3 || static_cast<Eigen::Index>(mode.letters.size()) > model.J.cols() / 2) return false;
+  if (vdot.size() != model.J.rows() || static_cast<Eigen::Index>(mode.letters.size()) > model.J.cols() / 2) return false;
   for (std::size_t i = 0; i < mode.letters.size(); ++i)
     if (!meets(model, rules, vdot, i, mode.letters[i])) return false;
   return true;
