@@ -204,7 +204,8 @@ void register_stability(CLI::App& app, Action& action) {
       "stability", "Is the workpiece strongly stable, only weakly stable, or unstable under a wrench?");
   add_snap_option(*sub, o->snap);
   add_common_options(*sub, o->common);
-  sub->add_option("file", o->file, "Planar scene file (format: docs/formats.md, section 3), or an assembly (section 3a)")
+  sub->add_option("file", o->file,
+                  "Planar scene file (format: docs/formats.md, section 3), or an assembly (section 3a)")
       ->required();
   CLI::Option* wrench = sub->add_option("--wrench", o->wrench,
                                         "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");

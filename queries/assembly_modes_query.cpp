@@ -4,6 +4,7 @@
 
 #include "exact/input_error.h"
 #include "exact/json_input.h"
+#include "queries/modes_query.h"
 #include "solvers/stability/contact_modes.h"
 
 namespace contactcert::queries {
@@ -26,20 +27,14 @@ AssemblyModesAnswer run_assembly_modes(const AssemblyInput& in, const AssemblyMo
     throw exact::InputError("command line", "--arith", "modes are enumerated exactly (use exact or verified)");
   solvers::ModeTreeOptions tree{scene_arith(options.common.arith), options.max_nodes, options.max_modes,
                                 options.common.deadline()};
-  AssemblyModesAnswer a{sa::assembly_modes(in.assembly, tree), in.assembly.bodies.size(), in.assembly.contacts.size(),
-                        options.certificate, {}};
-  if (!options.certificate.empty()) {
-    std::string certificate = sa::assembly_modes_certificate(in.text, a.modes);
-    if (certificate.size() > exact::kMaxInputBytes)
-      throw exact::BudgetExceeded("modes --certificate: the certificate would take " +
-                                      std::to_string(certificate.size()) + " bytes, more than the " +
-                                      std::to_string(exact::kMaxInputBytes >> 20) + " MiB that check reads",
-                                  std::to_string(a.modes.tree.modes.size()) + " feasible modes found, " +
-                                      std::to_string(a.modes.tree.dead.size()) +
-                                      " dead prefixes; no certificate written");
-    write_text_file(options.certificate, certificate);
-    a.certificate_text = std::move(certificate);
-  }
+  AssemblyModesAnswer a{sa::assembly_modes(in.assembly, tree),
+                        in.assembly.bodies.size(),
+                        in.assembly.contacts.size(),
+                        options.certificate,
+                        {}};
+  if (!options.certificate.empty())
+    a.certificate_text = write_modes_certificate(options.certificate, sa::assembly_modes_certificate(in.text, a.modes),
+                                                 a.modes.tree.modes.size(), a.modes.tree.dead.size());
   return a;
 }
 
@@ -70,18 +65,19 @@ std::string to_text(const AssemblyModesAnswer& a, const std::string& name) {
   const std::vector<std::string> group = groups(a);
   std::map<std::string, long> counts;
   for (const std::string& g : group) ++counts[g];
-  std::string s = "contact modes of " + name + ": " + std::to_string(tree.modes.size()) + " feasible modes of " +
-                  std::to_string(a.contacts) + " contacts between " + std::to_string(a.bodies) +
-                  (a.bodies == 1 ? " body" : " bodies") +
-                  " and what they touch, from rest, s strictly separating (a_n > 0)\n  prefix tree: " +
-                  std::to_string(tree.nodes) + " prefixes visited, " + std::to_string(tree.dead.size()) +
-                  " proven infeasible, " + std::to_string(tree.lps) + " LPs (of 4^" + std::to_string(a.contacts) +
-                  " mode strings)\n";
+  std::string s =
+      "contact modes of " + name + ": " + std::to_string(tree.modes.size()) + " feasible modes of " +
+      std::to_string(a.contacts) + " contacts between " + std::to_string(a.bodies) +
+      (a.bodies == 1 ? " body" : " bodies") +
+      " and what they touch, from rest, s strictly separating (a_n > 0)\n  prefix tree: " + std::to_string(tree.nodes) +
+      " prefixes visited, " + std::to_string(tree.dead.size()) + " proven infeasible, " + std::to_string(tree.lps) +
+      " LPs (of 4^" + std::to_string(a.contacts) + " mode strings)\n";
   for (const auto& [g, count] : counts) {
     s += "  " + g + " (" + std::to_string(count) + "):\n";
     for (std::size_t i = 0; i < tree.modes.size(); ++i)
       if (group[i] == g)
-        s += "    " + tree.modes[i].text() + "  vdot = " + tuple_text(tree.accelerations[i]) + " (a_x, a_y, alpha of each com)\n";
+        s += "    " + tree.modes[i].text() + "  vdot = " + tuple_text(tree.accelerations[i]) +
+             " (a_x, a_y, alpha of each com)\n";
   }
   if (tree.modes.empty()) s += "  none\n";
   if (!a.certificate.empty()) s += "  certificate written to " + a.certificate + "\n";

@@ -78,7 +78,7 @@ void check_assembly(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult&
 }
 
 void check_assembly_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
-  const solvers::assembly::AssemblyModesCheck m = solvers::assembly::check_assembly_modes_certificate(cert);
+  const solvers::ModesCertificateCheck m = solvers::assembly::check_assembly_modes_certificate(cert);
   take(m, c);
   c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
 }

@@ -2,9 +2,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "exact/rational_text.h"
-#include "solvers/stability/sparse_motzkin.h"
-
 namespace contactcert::solvers::assembly {
 
 using Index = Eigen::Index;
@@ -36,24 +33,11 @@ AssemblyModes assembly_modes(const geometry::Assembly& a, const ModeTreeOptions&
 }
 
 std::string assembly_modes_certificate(const std::string& scene_text, const AssemblyModes& m) {
-  using json = nlohmann::ordered_json;
-  const auto strings = [](const Vec<Q>& v) {
-    json s = json::array();
-    for (const Q& x : v) s.push_back(exact::to_string(x));
-    return s;
-  };
-  json j;
+  nlohmann::ordered_json j;
   j["kind"] = "assembly_modes";
   j["scene"] = scene_text;
   j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
-  json modes = json::array();
-  for (std::size_t i = 0; i < m.tree.modes.size(); ++i)
-    modes.push_back({{"mode", m.tree.modes[i].text()}, {"acceleration", strings(m.tree.accelerations[i])}});
-  j["modes"] = modes;
-  json dead = json::array();
-  for (const DeadPrefix<Q>& d : m.tree.dead)
-    dead.push_back({{"prefix", d.prefix.text()}, {"motzkin", sparse_motzkin_json(d.motzkin)}});
-  j["dead"] = dead;
+  add_mode_tree(j, m.tree);
   return j.dump(1) + "\n";
 }
 

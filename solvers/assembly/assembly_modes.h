@@ -13,7 +13,7 @@
 #include "exact/json_input.h"
 #include "geometry/assembly.h"
 #include "solvers/assembly/assembly_system.h"
-#include "solvers/stability/mode_tree.h"
+#include "solvers/stability/contact_modes.h"
 
 namespace contactcert::solvers::assembly {
 
@@ -33,18 +33,12 @@ AssemblyModes assembly_modes(const geometry::Assembly& a, const ModeTreeOptions&
 /// acceleration, every dead prefix with its Motzkin certificate (sparse, sparse_motzkin.h).
 std::string assembly_modes_certificate(const std::string& scene_text, const AssemblyModes& modes);
 
-struct AssemblyModesCheck {
-  bool valid = false;
-  std::string reason;
-  long modes = 0, dead = 0;
-};
-
 /// Verifies an "assembly_modes" certificate against its embedded assembly with the checker's own relative
 /// accelerations (assembly_check.h, from frames it re-verifies): each acceleration realises its mode by Table 2's
 /// signs, each dead prefix's vector is a Motzkin certificate of the prefix's kinematic rows (layout: vdot's 3N
 /// columns, then one slack per signed row, > 0, in contact order; per contact s: a_n - sigma = 0, l: a_n = 0 and
 /// a_t - sigma = 0, r: a_n = 0 and a_t + sigma = 0, n: a_n = 0 and a_t = 0), and together they partition the mode
 /// strings (mode_coverage). A malformed certificate throws InputError naming the field.
-AssemblyModesCheck check_assembly_modes_certificate(const exact::JsonInput& certificate);
+ModesCertificateCheck check_assembly_modes_certificate(const exact::JsonInput& certificate);
 
 }  // namespace contactcert::solvers::assembly

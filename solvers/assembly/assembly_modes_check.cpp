@@ -15,7 +15,8 @@ using Accelerations = std::vector<std::array<std::vector<Rows::Entry>, 2>>;
 /// The letters of a mode (`whole`) or of a prefix: s l r n, one per contact; InputError naming the field otherwise.
 std::string read_letters(const exact::JsonInput& j, std::size_t k, bool whole) {
   const std::string text = j.string();
-  if (text.find_first_not_of("slrn") != std::string::npos || text.size() > k || (whole ? text.size() != k : text.empty()))
+  if (text.find_first_not_of("slrn") != std::string::npos || text.size() > k ||
+      (whole ? text.size() != k : text.empty()))
     j.fail(whole ? "a mode: one letter s l r n per contact (" + std::to_string(k) + ")"
                  : "a prefix: 1 to " + std::to_string(k) + " letters s l r n");
   return text;
@@ -61,7 +62,7 @@ bool realises(const Accelerations& acc, const std::string& mode, const Vec<Q>& v
 
 }  // namespace
 
-AssemblyModesCheck check_assembly_modes_certificate(const exact::JsonInput& c) {
+ModesCertificateCheck check_assembly_modes_certificate(const exact::JsonInput& c) {
   c.expect_keys({"kind", "scene", "problem_sha256", "modes", "dead"});
   const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
   const geometry::Assembly a = geometry::read_assembly(embedded);
@@ -86,17 +87,7 @@ AssemblyModesCheck check_assembly_modes_certificate(const exact::JsonInput& c) {
       return {false, "the certificate of dead prefix " + p + " does not verify", 0, 0};
     dead.push_back(std::move(p));
   }
-  AssemblyModesCheck out{false, "", static_cast<long>(leaves.size()), static_cast<long>(dead.size())};
-  if (const auto gap = mode_coverage(k, ModeAlphabet{}, dead, leaves)) {
-    out.reason = coverage_gap_text(*gap);
-    return out;
-  }
-  out.valid = true;
-  out.reason =
-      "every feasible mode is listed once, realised by its acceleration, and every other mode extends exactly one "
-      "proven dead prefix: " +
-      std::to_string(out.modes) + " feasible modes, " + std::to_string(out.dead) + " dead prefixes";
-  return out;
+  return modes_coverage_check(k, ModeAlphabet{}, dead, leaves);
 }
 
 }  // namespace contactcert::solvers::assembly

@@ -84,15 +84,19 @@ std::string modes_certificate(const std::string& scene_text, const ContactModes&
   j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
   j["table2"] = m.alphabet.rules.printed_separation ? "printed" : "strict";
   j["unions"] = m.alphabet.unions;
+  add_mode_tree(j, m.tree);
+  return j.dump(1) + "\n";
+}
+
+void add_mode_tree(json& j, const ModeTree<Q>& tree) {
   json modes = json::array();
-  for (std::size_t i = 0; i < m.tree.modes.size(); ++i)
-    modes.push_back({{"mode", m.tree.modes[i].text()}, {"acceleration", strings(m.tree.accelerations[i])}});
+  for (std::size_t i = 0; i < tree.modes.size(); ++i)
+    modes.push_back({{"mode", tree.modes[i].text()}, {"acceleration", strings(tree.accelerations[i])}});
   j["modes"] = modes;
   json dead = json::array();
-  for (const DeadPrefix<Q>& d : m.tree.dead)
+  for (const DeadPrefix<Q>& d : tree.dead)
     dead.push_back({{"prefix", d.prefix.text()}, {"motzkin", sparse_motzkin_json(d.motzkin)}});
   j["dead"] = dead;
-  return j.dump(1) + "\n";
 }
 
 ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
@@ -108,7 +112,6 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
   const bool printed = alphabet.rules.printed_separation;
   // The rows and signs are the checker's own (table2_rows_check.h), rebuilt from the scene's contact frames.
   const table2_check::CheckedScene checked = table2_check::checked_scene(scene, /*touching_only=*/false);
-  ModesCertificateCheck out;
   std::vector<std::string> leaves, dead;
   for (const auto& e : c.at("modes").elements()) {
     e.expect_keys({"mode", "acceleration"});
@@ -126,8 +129,13 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
       return {false, "the certificate of dead prefix " + p.text() + " does not verify", 0, 0};
     dead.push_back(p.text());
   }
-  out.modes = static_cast<long>(leaves.size());
-  out.dead = static_cast<long>(dead.size());
+  return modes_coverage_check(k, alphabet, dead, leaves);
+}
+
+ModesCertificateCheck modes_coverage_check(std::size_t k, const ModeAlphabet& alphabet,
+                                           const std::vector<std::string>& dead,
+                                           const std::vector<std::string>& leaves) {
+  ModesCertificateCheck out{false, "", static_cast<long>(leaves.size()), static_cast<long>(dead.size())};
   if (auto gap = mode_coverage(k, alphabet, dead, leaves)) {
     out.reason = coverage_gap_text(*gap);
     return out;

@@ -6,6 +6,7 @@
 // witness wrench M vdot.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -41,11 +42,21 @@ const char* mode_group(const ModeString& mode, const std::vector<bool>& touching
 /// with its Motzkin certificate (sparse, sparse_motzkin.h).
 std::string modes_certificate(const std::string& scene_text, const ContactModes& modes);
 
+/// The tree's part of a modes certificate, as `modes` and `dead` members of `certificate` (a JSON object): every
+/// mode with its acceleration, every dead prefix with its Motzkin certificate (sparse, sparse_motzkin.h).
+void add_mode_tree(nlohmann::ordered_json& certificate, const ModeTree<Q>& tree);
+
 struct ModesCertificateCheck {
   bool valid = false;
   std::string reason;
   long modes = 0, dead = 0;
 };
+
+/// The verdict on the listed modes (`leaves`, each verified) and dead prefixes (each verified) of k contacts: valid
+/// if they partition the mode strings over the alphabet (mode_coverage), else the gap.
+ModesCertificateCheck modes_coverage_check(std::size_t k, const ModeAlphabet& alphabet,
+                                           const std::vector<std::string>& dead,
+                                           const std::vector<std::string>& leaves);
 
 /// Verifies a "modes" certificate against its embedded scene: each listed acceleration realises its mode
 /// (Table 2, exact signs), each dead prefix's certificate proves its kinematic rows infeasible (both with the

@@ -261,7 +261,8 @@ class Walker {
 
 template <class T>
 bool realises(const MotionModel<T>& model, const KinematicRules& rules, const Vec<T>& vdot, const ModeString& mode) {
-  if (vdot.size() != model.J.rows() || static_cast<Eigen::Index>(mode.letters.size()) > model.J.cols() / 2) return false;
+  if (vdot.size() != model.J.rows() || static_cast<Eigen::Index>(mode.letters.size()) > model.J.cols() / 2)
+    return false;
   for (std::size_t i = 0; i < mode.letters.size(); ++i)
     if (!meets(model, rules, vdot, i, mode.letters[i])) return false;
   return true;

@@ -92,8 +92,8 @@ exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const
   const Index k = model.J.cols() / 2;
   if (static_cast<Index>(mode.letters.size()) > k) throw std::invalid_argument("kinematic_system: mode length");
   const Index D = model.J.rows();  // 3, or 3N for an assembly's bodies (solvers/assembly/assembly_modes.h)
-  exact::SparseStrictSystem<T> s{0, D, {}, std::vector<bool>(static_cast<std::size_t>(D), true),
-                                 std::vector<bool>(static_cast<std::size_t>(D), false)};
+  const auto dims = static_cast<std::size_t>(D);
+  exact::SparseStrictSystem<T> s{0, D, {}, std::vector<bool>(dims, true), std::vector<bool>(dims, false)};
   s.entries.reserve(8 * mode.letters.size());
   const T zero(0);
   auto add = [&s, &zero](Index col, const T& value) {

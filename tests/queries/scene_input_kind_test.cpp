@@ -1,11 +1,12 @@
 // The query layer's reading of a file's kind (queries/scene_input_kind.h): an assembly is read as one whatever the
 // command, a one-workpiece scene or a UCP problem as before, and an assembly refuses a snap tolerance; the modes
 // query of N bodies counts as its tree does.
+#include "queries/scene_input_kind.h"
+
 #include <gtest/gtest.h>
 
 #include "exact/input_error.h"
 #include "queries/assembly_modes_query.h"
-#include "queries/scene_input_kind.h"
 #include "runtime/scenes.h"
 
 namespace contactcert::queries {

@@ -1,6 +1,8 @@
 // The contact modes of N bodies (solvers/assembly/assembly_modes.h): a hand-derived two-box count, N = 1 against
 // the single-body `modes` on the bundled scenes, and seeded random small assemblies against a brute force over all
 // 4^k mode strings; every list's certificate is verified by the independent checker.
+#include "solvers/assembly/assembly_modes.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +13,6 @@
 #include "exact/strict_feasibility.h"
 #include "geometry/scene_json.h"
 #include "runtime/scenes.h"
-#include "solvers/assembly/assembly_modes.h"
 #include "solvers/stability/contact_modes.h"
 #include "tests/solvers/assembly/assembly_fixtures.h"
 
@@ -19,12 +20,7 @@ namespace contactcert::solvers::assembly {
 namespace {
 
 using geometry::Point2;
-using testing::body;
-using testing::box;
-using testing::mu;
-using testing::obstacle;
-using testing::point;
-using testing::SceneText;
+using namespace testing;  // the fixtures' scene builders
 
 std::set<std::string> mode_set(const AssemblyModes& m) {
   std::set<std::string> out;
@@ -36,7 +32,7 @@ std::set<std::string> mode_set(const AssemblyModes& m) {
 AssemblyModes checked_modes(const std::string& text) {
   const geometry::Assembly a = geometry::read_assembly(exact::JsonInput::parse(text, "test.json"));
   AssemblyModes m = assembly_modes(a);
-  const AssemblyModesCheck c = check_assembly_modes_certificate(
+  const ModesCertificateCheck c = check_assembly_modes_certificate(
       exact::JsonInput::parse(assembly_modes_certificate(text, m), "certificate.json"));
   EXPECT_TRUE(c.valid) << c.reason;
   EXPECT_EQ(c.modes, static_cast<long>(m.tree.modes.size()));
@@ -80,8 +76,12 @@ TEST(AssemblyModes, OneBodyAgreesWithTheSingleBodyModes) {
     for (std::size_t i = 0; i < scene.fixels.size(); ++i) {
       const geometry::Fixel& f = scene.fixels[i];
       a.fixels.push_back(f.frame.point);
-      a.contacts.push_back({{geometry::Party::Kind::kFixel, i}, {geometry::Party::Kind::kBody, 0}, f.frame.point,
-                            f.frame.normal, f.mu_s, f.mu_k});
+      a.contacts.push_back({{geometry::Party::Kind::kFixel, i},
+                            {geometry::Party::Kind::kBody, 0},
+                            f.frame.point,
+                            f.frame.normal,
+                            f.mu_s,
+                            f.mu_k});
     }
     std::vector<std::string> one, many;
     for (const ModeString& m : contact_modes(scene).tree.modes) one.push_back(m.text());
