@@ -1,5 +1,5 @@
-// The class Assembly (several bodies, docs/formats.md section 3a): stability from rest, the quasistatic problem and
-// the picture, through the query layer (queries/assembly_query.h) as `contactcert assembly` runs them.
+// The class Assembly (several bodies, docs/formats.md section 3a): stability from rest, the quasistatic problem, the
+// contact modes and the picture, through the query layer (queries/assembly_query.h) as `contactcert assembly` runs them.
 #include <pybind11/stl.h>
 
 #include <optional>
@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "python/bindings.h"
+#include "queries/assembly_modes_query.h"
 #include "queries/assembly_query.h"
 #include "queries/assembly_svg.h"
 
@@ -40,6 +41,18 @@ Answer ucp(const Assembly& a, const std::string& arith, double time_limit, std::
   return {queries::to_json(ans).dump(), ans.certificate_text, queries::to_svg(a, ans)};
 }
 
+/// `modes ASSEMBLY [--max-nodes N] [--max-modes N] [--certificate F]`: the --json text and the certificate's.
+WithCertificate modes(const Assembly& a, const std::string& arith, double time_limit, std::optional<long> max_nodes,
+                      std::optional<long> max_modes, const std::string& certificate) {
+  queries::AssemblyModesOptions o;
+  o.common = {queries::parse_arith(arith, "--arith"), time_limit};
+  o.max_nodes = max_nodes.value_or(o.max_nodes);
+  o.max_modes = max_modes.value_or(o.max_modes);
+  o.certificate = certificate;
+  const queries::AssemblyModesAnswer ans = queries::run_assembly_modes(a, o);
+  return {queries::to_json(ans).dump(), ans.certificate_text};
+}
+
 }  // namespace
 
 void bind_assembly(py::module_& m) {
@@ -52,6 +65,7 @@ void bind_assembly(py::module_& m) {
       .def_property_readonly("contacts", [](const Assembly& a) { return a.assembly.contacts.size(); })
       .def("stability", &stability, Release())
       .def("ucp", &ucp, Release())
+      .def("modes", &modes, Release())
       .def(
           "svg", [](const Assembly& a) { return queries::assembly_svg(a.assembly, {}, a.name); }, Release());
 }

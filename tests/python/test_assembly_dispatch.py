@@ -37,3 +37,16 @@ def test_check_against_an_assembly(tmp_path):
 def test_check_refuses_a_non_problem():
     with pytest.raises(TypeError, match="a Scene, a Ucp or an Assembly"):
         cc.check({"kind": "modes"}, problem=42)  # type: ignore[arg-type]
+
+
+def test_modes_of_an_assembly_equal_cli(tmp_path):
+    f = SCENES / "assembly_two_boxes.json"
+    a = cc.Assembly.from_file(f)
+    got = a.modes(certificate=tmp_path / "m.json")
+    assert got.to_dict() == cli_json("modes", f, "--certificate", tmp_path / "m.json")
+    assert len(got.modes) == 100 and got.counts["mixed"] == 94
+    assert len(got.acceleration("ssnn")) == 6  # vdot of both bodies
+    assert got.certificate is not None and got.certificate.kind == "assembly_modes"
+    assert cc.check(got.certificate, problem=a)
+    with pytest.raises(cc.BudgetExceeded):
+        a.modes(max_nodes=5)
