@@ -1,5 +1,6 @@
 // The class Assembly (several bodies, docs/formats.md section 3a): stability from rest, the quasistatic problem, the
-// contact modes and the picture, through the query layer (queries/assembly_query.h) as `contactcert assembly` runs them.
+// contact modes and the picture, through the query layer (queries/assembly_query.h) as `contactcert assembly` runs
+// them.
 #include <pybind11/stl.h>
 
 #include <optional>
