@@ -19,13 +19,22 @@ using Assembly = queries::AssemblyInput;
 /// The --json object's text, the certificate's text ("" if none) and the picture's SVG text.
 using Answer = std::tuple<std::string, std::string, std::string>;
 
-/// `assembly FILE [--max-nodes N] [--certificate F]` (a budget not given: the query's default).
-Answer stability(const Assembly& a, const std::string& arith, double time_limit, std::optional<long> max_nodes,
-                 const std::string& certificate) {
-  queries::AssemblyStabilityOptions o;
+/// The options every question on an assembly takes: --arith, --time-limit, --max-nodes (not given: the query's
+/// default) and --certificate.
+template <class Options>
+Options options(const std::string& arith, double time_limit, std::optional<long> max_nodes,
+                const std::string& certificate) {
+  Options o;
   o.common = {queries::parse_arith(arith, "--arith"), time_limit};
   o.max_nodes = max_nodes.value_or(o.max_nodes);
   o.certificate = certificate;
+  return o;
+}
+
+/// `assembly FILE [--max-nodes N] [--certificate F]` (a budget not given: the query's default).
+Answer stability(const Assembly& a, const std::string& arith, double time_limit, std::optional<long> max_nodes,
+                 const std::string& certificate) {
+  const auto o = options<queries::AssemblyStabilityOptions>(arith, time_limit, max_nodes, certificate);
   const queries::AssemblyStabilityAnswer ans = queries::run_assembly_stability(a, o);
   return {queries::to_json(ans).dump(), ans.certificate_text, queries::to_svg(a, ans)};
 }
@@ -33,11 +42,8 @@ Answer stability(const Assembly& a, const std::string& arith, double time_limit,
 /// `assembly FILE --ucp [--max-nodes N] [--max-bases N] [--certificate F]`.
 Answer ucp(const Assembly& a, const std::string& arith, double time_limit, std::optional<long> max_nodes,
            std::optional<long> max_bases, const std::string& certificate) {
-  queries::AssemblyUcpOptions o;
-  o.common = {queries::parse_arith(arith, "--arith"), time_limit};
-  o.max_nodes = max_nodes.value_or(o.max_nodes);
+  auto o = options<queries::AssemblyUcpOptions>(arith, time_limit, max_nodes, certificate);
   o.max_bases = max_bases.value_or(o.max_bases);
-  o.certificate = certificate;
   const queries::AssemblyUcpAnswer ans = queries::run_assembly_ucp(a, o);
   return {queries::to_json(ans).dump(), ans.certificate_text, queries::to_svg(a, ans)};
 }
@@ -45,11 +51,8 @@ Answer ucp(const Assembly& a, const std::string& arith, double time_limit, std::
 /// `modes ASSEMBLY [--max-nodes N] [--max-modes N] [--certificate F]`: the --json text and the certificate's.
 WithCertificate modes(const Assembly& a, const std::string& arith, double time_limit, std::optional<long> max_nodes,
                       std::optional<long> max_modes, const std::string& certificate) {
-  queries::AssemblyModesOptions o;
-  o.common = {queries::parse_arith(arith, "--arith"), time_limit};
-  o.max_nodes = max_nodes.value_or(o.max_nodes);
+  auto o = options<queries::AssemblyModesOptions>(arith, time_limit, max_nodes, certificate);
   o.max_modes = max_modes.value_or(o.max_modes);
-  o.certificate = certificate;
   const queries::AssemblyModesAnswer ans = queries::run_assembly_modes(a, o);
   return {queries::to_json(ans).dump(), ans.certificate_text};
 }
