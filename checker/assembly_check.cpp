@@ -277,6 +277,17 @@ std::string assembly_motion_violation(const geometry::Assembly& a, const Assembl
   return newton_euler_violation(a, cs, m.acceleration, m.forces);
 }
 
+CheckedAccelerations checked_accelerations(const geometry::Assembly& a) {
+  CheckedAccelerations out;
+  if (out.violation = assembly_frames_violation(a); !out.violation.empty()) return out;
+  for (const CheckedContact& c : checked_contacts(a)) {
+    out.rows.emplace_back();
+    relative_row(c, c.n, out.rows.back()[0]);
+    relative_row(c, c.t, out.rows.back()[1]);
+  }
+  return out;
+}
+
 std::string assembly_frames_violation(const geometry::Assembly& a) {
   for (std::size_t i = 0; i < a.contacts.size(); ++i)
     if (const std::string why = frame_violation(a, a.contacts[i]); !why.empty())

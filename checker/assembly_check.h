@@ -6,8 +6,11 @@
 // assembly_system.h (docs/formats.md, section 5a) with its own code (not assembly_system.h's).
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
+#include "checker/table2_rows.h"
 #include "exact/json_input.h"
 #include "geometry/assembly.h"
 #include "solvers/assembly/assembly_stability.h"
@@ -39,5 +42,14 @@ struct AssemblyCertificateCheck {
 /// then the evidence by check_assembly_stability, each dead prefix listed once. A malformed certificate (an unknown
 /// key, a bad vector or prefix) throws InputError naming the field.
 AssemblyCertificateCheck check_assembly_certificate(const exact::JsonInput& certificate);
+
+/// The checker's relative accelerations, for the assembly's other checkers (assembly_modes_check.h): per contact the
+/// coefficients of a_n and of a_t on vdot (3N columns, body by body), from frames re-verified against the shapes;
+/// `violation` names the first wrong frame ("" if none, and then `rows` is filled).
+struct CheckedAccelerations {
+  std::string violation;
+  std::vector<std::array<std::vector<table2_check::Rows::Entry>, 2>> rows;
+};
+CheckedAccelerations checked_accelerations(const geometry::Assembly& a);
 
 }  // namespace contactcert::checker

@@ -45,7 +45,6 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
   const bool printed = alphabet.rules.printed_separation;
   // The rows and signs are the checker's own (table2_rows.h), rebuilt from the scene's contact frames.
   const table2_check::CheckedScene checked = table2_check::checked_scene(scene, /*touching_only=*/false);
-  ModesCertificateCheck out;
   std::vector<std::string> leaves, dead;
   for (const auto& e : c.at("modes").elements()) {
     e.expect_keys({"mode", "acceleration"});
@@ -63,8 +62,13 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
       return {false, "the certificate of dead prefix " + p.text() + " does not verify", 0, 0};
     dead.push_back(p.text());
   }
-  out.modes = static_cast<long>(leaves.size());
-  out.dead = static_cast<long>(dead.size());
+  return modes_coverage_check(k, alphabet, dead, leaves);
+}
+
+ModesCertificateCheck modes_coverage_check(std::size_t k, const ModeAlphabet& alphabet,
+                                           const std::vector<std::string>& dead,
+                                           const std::vector<std::string>& leaves) {
+  ModesCertificateCheck out{false, "", static_cast<long>(leaves.size()), static_cast<long>(dead.size())};
   if (auto gap = mode_coverage(k, alphabet, dead, leaves)) {
     out.reason = coverage_gap_text(*gap);
     return out;

@@ -2,8 +2,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "exact/json_input.h"
+#include "solvers/stability/mode_tree.h"
 
 namespace contactcert::checker {
 
@@ -20,5 +22,11 @@ struct ModesCertificateCheck {
 /// once, and its count is theirs. Malformed certificates (among them a Motzkin vector with a repeated or
 /// out-of-range row, sparse_motzkin.h) throw InputError naming the field.
 ModesCertificateCheck check_modes_certificate(const exact::JsonInput& certificate);
+
+/// The verdict on the listed modes (`leaves`, each verified) and dead prefixes (each verified) of k contacts: valid
+/// if they partition the mode strings over the alphabet (mode_coverage), else the gap.
+ModesCertificateCheck modes_coverage_check(std::size_t k, const solvers::ModeAlphabet& alphabet,
+                                           const std::vector<std::string>& dead,
+                                           const std::vector<std::string>& leaves);
 
 }  // namespace contactcert::checker

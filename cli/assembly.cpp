@@ -6,11 +6,40 @@
 #include <iostream>
 #include <limits>
 
+#include "cli/assembly_answers.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "queries/assembly_query.h"
 
 namespace contactcert::cli {
+
+int print_assembly_answer(const queries::Limited<queries::AssemblyStabilityAnswer>& r, const std::string& file,
+                          bool json, bool certificate_asked, const std::string& command) {
+  if (!r) return report_limit(command, r.limit(), json);
+  const queries::AssemblyStabilityAnswer& a = *r;
+  std::cout << (json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, file));
+  if (a.decided()) return 0;
+  std::cerr << "contactcert: " << command << ": budget exceeded before a verdict (" << a.result.covered << ")"
+            << (certificate_asked ? "; no certificate written" : "") << "\n";
+  return 3;
+}
+
+int print_assembly_answer(const queries::Limited<queries::AssemblyUcpAnswer>& r, const std::string& file, bool json,
+                          const std::string& command) {
+  if (!r) return report_limit(command, r.limit(), json);
+  const queries::AssemblyUcpAnswer& a = *r;
+  std::cout << (json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, file));
+  return a.report.status == solvers::ucp::UcpStatus::kUnknown ? 3 : 0;
+}
+
+int print_assembly_answer(const queries::Limited<queries::AssemblyModesAnswer>& r, const std::string& file,
+                          bool json, const std::string& command) {
+  if (!r) return report_limit(command, r.limit(), json);
+  const queries::AssemblyModesAnswer& a = *r;
+  std::cout << (json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, file));
+  return 0;
+}
+
 namespace {
 
 struct AssemblyCliOptions {
@@ -31,25 +60,15 @@ int run_assembly(const AssemblyCliOptions& o) {
     if (o.max_bases > 0) q.max_bases = o.max_bases;
     q.certificate = o.certificate;
     q.svg = o.svg;
-    const queries::Limited<queries::AssemblyUcpAnswer> r = queries::run_assembly_ucp(in, q);
-    if (!r) return report_limit("assembly", r.limit(), o.common.json);
-    const queries::AssemblyUcpAnswer& a = *r;
-    std::cout << (o.common.json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, o.file));
-    return a.report.status == solvers::ucp::UcpStatus::kUnknown ? 3 : 0;
+    return print_assembly_answer(queries::run_assembly_ucp(in, q), o.file, o.common.json, "assembly");
   }
   queries::AssemblyStabilityOptions q;
   q.common = o.common.query();
   if (o.max_nodes > 0) q.max_nodes = o.max_nodes;
   q.certificate = o.certificate;
   q.svg = o.svg;
-  const queries::Limited<queries::AssemblyStabilityAnswer> r = queries::run_assembly_stability(in, q);
-  if (!r) return report_limit("assembly", r.limit(), o.common.json);
-  const queries::AssemblyStabilityAnswer& a = *r;
-  std::cout << (o.common.json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, o.file));
-  if (a.decided()) return 0;
-  std::cerr << "contactcert: assembly: budget exceeded before a verdict (" << a.result.covered << ")"
-            << (o.certificate.empty() ? "" : "; no certificate written") << "\n";
-  return 3;
+  return print_assembly_answer(queries::run_assembly_stability(in, q), o.file, o.common.json, !o.certificate.empty(),
+                               "assembly");
 }
 
 }  // namespace

@@ -6,9 +6,11 @@
 #include <iostream>
 #include <limits>
 
+#include "cli/assembly_answers.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "cli/snap_option.h"
+#include "exact/input_error.h"
 #include "queries/modes_query.h"
 
 namespace contactcert::cli {
@@ -54,6 +56,15 @@ void print_modes(const std::string& file, const ModesAnswer& a) {
   if (!a.options.certificate.empty()) std::cout << "  certificate written to " << a.options.certificate << "\n";
 }
 
+/// `modes ASSEMBLY`: the modes of N bodies (queries/assembly_modes_query.h); its letters are s l r n with s strict.
+int run_assembly_modes_command(const ModesCliOptions& o, const AssemblyInput& in) {
+  if (o.unions) throw exact::InputError("command line", "--unions", "an assembly's modes are over s l r n only");
+  if (o.table2 != "strict")
+    throw exact::InputError("command line", "--table2", "an assembly's modes read s strictly (a_n > 0)");
+  AssemblyModesOptions q{o.common.query(), o.max_nodes, o.max_modes, o.certificate};
+  return print_assembly_answer(run_assembly_modes(in, q), o.file, o.common.json, "modes");
+}
+
 int run_modes_command(const ModesCliOptions& o) {
   ModesOptions options;
   options.common = o.common.query();
@@ -68,7 +79,9 @@ int run_modes_command(const ModesCliOptions& o) {
   if (options.default_time_budget())
     start_watchdog("modes (the default budget of --unions and --table2 printed; --time-limit sets another)",
                    kModesDefaultSeconds);
-  const Limited<ModesAnswer> r = run_modes(read_scene(o.file, o.snap), options);
+  SceneOrAssembly input = read_scene_or_assembly(o.file, o.snap);
+  if (const auto* assembly = std::get_if<AssemblyInput>(&input)) return run_assembly_modes_command(o, *assembly);
+  const Limited<ModesAnswer> r = run_modes(std::get<SceneInput>(input), options);
   if (!r) return report_limit("modes", r.limit(), o.common.json);
   const ModesAnswer& a = *r;
   if (o.common.json)
@@ -85,7 +98,7 @@ void register_modes(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("modes", "Every kinematically feasible contact mode of a scene, with a proof");
   add_snap_option(*sub, o->snap);
   add_common_options(*sub, o->common);
-  sub->add_option("file", o->file, "Planar scene file (docs/formats.md)")->required();
+  sub->add_option("file", o->file, "Planar scene file (docs/formats.md), or an assembly (section 3a)")->required();
   sub->add_flag("--kinematic", o->kinematic, "List the modes with their accelerations only (no witness wrench)");
   sub->add_flag("--unions", o->unions, "Also the letters m (l, r or n) and u (s or a), whose modes overlap");
   sub->add_option(

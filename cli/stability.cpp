@@ -7,6 +7,7 @@
 #include <iostream>
 #include <optional>
 
+#include "cli/assembly_answers.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "cli/snap_option.h"
@@ -151,8 +152,28 @@ int print(const StabilityOptions& o, const Limited<Answer>& answer, Text text) {
   return 0;
 }
 
+/// `stability ASSEMBLY`: the query of `contactcert assembly` (each body's load is in the file: no wrench).
+int run_assembly_stability_command(const StabilityOptions& o, const AssemblyInput& in) {
+  const std::pair<bool, const char*> wrench_options[] = {{!o.wrench.empty(), "--wrench"},
+                                                         {!o.wrenches.empty(), "--wrenches"},
+                                                         {o.region, "--region"},
+                                                         {o.finger, "--finger"},
+                                                         {o.margin, "--margin"}};
+  for (const auto& [given, name] : wrench_options)
+    if (given)
+      throw exact::InputError("command line", name,
+                              "an assembly's loads are in its file (each body's load); it takes no wrench");
+  queries::AssemblyStabilityOptions q;
+  q.common = o.common.query();
+  q.certificate = o.certificate;
+  return print_assembly_answer(run_assembly_stability(in, q), o.file, o.common.json, !o.certificate.empty(),
+                               "stability");
+}
+
 int run_stability_command(const StabilityOptions& o) {
-  const SceneInput input = read_scene(o.file, o.snap);
+  SceneOrAssembly read = read_scene_or_assembly(o.file, o.snap);
+  if (const auto* assembly = std::get_if<AssemblyInput>(&read)) return run_assembly_stability_command(o, *assembly);
+  const SceneInput& input = std::get<SceneInput>(read);
   if (int(o.region) + int(o.finger) + int(!o.wrench.empty() && !o.region) + int(!o.wrenches.empty()) != 1)
     throw exact::InputError("command line", "--wrench",
                             "give exactly one of --wrench fx,fy,tz, --wrenches FILE, --region or --finger");
@@ -184,7 +205,9 @@ void register_stability(CLI::App& app, Action& action) {
       "stability", "Is the workpiece strongly stable, only weakly stable, or unstable under a wrench?");
   add_snap_option(*sub, o->snap);
   add_common_options(*sub, o->common);
-  sub->add_option("file", o->file, "Planar scene file (format: docs/formats.md, section 3)")->required();
+  sub->add_option("file", o->file,
+                  "Planar scene file (format: docs/formats.md, section 3), or an assembly (section 3a)")
+      ->required();
   CLI::Option* wrench = sub->add_option("--wrench", o->wrench,
                                         "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");
   sub->add_option("--wrenches", o->wrenches,

@@ -6,6 +6,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "cli/assembly_answers.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "cli/progress_line.h"
@@ -14,6 +15,7 @@
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "queries/json_out.h"
+#include "queries/scene_input_kind.h"
 #include "queries/ucp_forces.h"
 #include "queries/ucp_query.h"
 
@@ -36,6 +38,7 @@ struct UcpCliOptions {
   std::string out = "-";
   std::string mu_max = exact::to_string(queries::UcpGenerateOptions{}.mu_max);
   queries::UcpGenerateOptions generator;
+  bool seed_given = false;  ///< --seed on the command line (an assembly refuses it)
 };
 
 int run_generate(const UcpCliOptions& o) {
@@ -93,12 +96,28 @@ void print_ucp_text(const UcpCliOptions& o, const queries::UcpAnswer& a) {
     std::cout << "  no certificate written: the verdict is unknown\n";
 }
 
+/// `ucp ASSEMBLY` (a quasistatic_scene with bodies): the query of `contactcert assembly --ucp`, the complete search.
+int run_assembly_ucp_command(const UcpCliOptions& o, const queries::AssemblyInput& in) {
+  if (o.query.method != ucp::Method::kComplete)
+    throw exact::InputError("command line", "--method", "an assembly's problem is solved by the complete search only");
+  if (o.seed_given)
+    throw exact::InputError("command line", "--seed", "the complete search on an assembly makes no random choice");
+  queries::AssemblyUcpOptions q;
+  q.common = o.query.common;
+  q.max_nodes = o.query.max_nodes.value_or(q.max_nodes);
+  q.max_bases = o.query.max_bases.value_or(q.max_bases);
+  q.certificate = o.query.certificate;
+  return print_assembly_answer(queries::run_assembly_ucp(in, q), o.file, o.common.json, "ucp");
+}
+
 int run_ucp(const UcpCliOptions& o) {
   if (!o.generate.empty()) return run_generate(o);
   if (o.file.empty()) throw exact::InputError("command line", "FILE", "expected a problem file (or --generate)");
   queries::UcpQueryOptions q = o.query;
   queries::check_ucp_options(q);  // an option's error before the file's
-  const queries::UcpInput in = queries::load_ucp(o.file);
+  queries::UcpOrAssembly read = queries::load_ucp_or_assembly(o.file);
+  if (const auto* assembly = std::get_if<queries::AssemblyInput>(&read)) return run_assembly_ucp_command(o, *assembly);
+  const queries::UcpInput& in = std::get<queries::UcpInput>(read);
   ProgressLine progress("ucp " + o.file);
   if (progress.enabled())
     q.progress = [&progress, &q](long units, long lps) {
@@ -124,7 +143,7 @@ void register_ucp(CLI::App& app, Action& action) {
   CLI::App* sub =
       app.add_subcommand("ucp", "Solve the quasistatic contact problem (Pang, Trinkle, Lo) or prove it jammed");
   add_common_options(*sub, o->common);
-  sub->add_option("file", o->file, "Problem file (format: docs/formats.md, section 2)");
+  sub->add_option("file", o->file, "Problem file (format: docs/formats.md, section 2), or an assembly (section 3a)");
   sub->add_option("--method", o->method, "paper | modified | complete | enumerate")
       ->check(CLI::IsMember({"paper", "modified", "complete", "enumerate"}))
       ->capture_default_str();
@@ -165,6 +184,7 @@ void register_ucp(CLI::App& app, Action& action) {
       q.method = queries::parse_method(o->method, "--method");
       if (sub->count("--max-nodes") > 0) q.max_nodes = o->max_nodes;
       if (sub->count("--max-bases") > 0) q.max_bases = o->max_bases;
+      o->seed_given = sub->count("--seed") > 0;
       // The budgets are refused here, what a certificate needs once FILE is known to be given (run_ucp): the
       // messages keep their order.
       queries::UcpQueryOptions budgets = q;

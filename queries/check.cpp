@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "checker/assembly_modes_check.h"
 #include "checker/cone_check.h"
 #include "checker/frame_check.h"
 #include "checker/goal_check.h"
@@ -76,6 +77,12 @@ void check_assembly(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult&
   c.details = a.details;
 }
 
+void check_assembly_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
+  const checker::ModesCertificateCheck m = checker::check_assembly_modes_certificate(cert);
+  take(m, c);
+  c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
+}
+
 /// One certificate kind: whether it embeds a planar scene (else a UCP problem) and its checker, which sets the
 /// verdict, the reason and the details and, for a valid certificate, the view a person reads of its evidence (which
 /// makes it INVALID if the certificate's own readable numbers are not those of the checked evidence).
@@ -90,6 +97,7 @@ constexpr CertificateKind kKinds[] = {
     {"stability", true, check_stability}, {"modes", true, check_modes},
     {"cone_empty", true, check_cone},     {"cone_nonempty", true, check_cone},
     {"goal_nonempty", true, check_goal},  {"assembly_stability", true, check_assembly},
+    {"assembly_modes", true, check_assembly_modes},
 };
 
 const CertificateKind& certificate_kind(const exact::JsonInput& cert) {

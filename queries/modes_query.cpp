@@ -17,7 +17,7 @@ double ModesOptions::time_budget() const { return default_time_budget() ? kModes
 
 namespace {
 
-Limited<ModesAnswer> modes_answer(const SceneInput& input, const ModesOptions& options) {
+ModesAnswer modes_answer(const SceneInput& input, const ModesOptions& options) {
   if (options.common.arith == exact::Arith::kFloat)
     throw exact::InputError("command line", "--arith", "modes are enumerated exactly (use exact or verified)");
   solvers::ContactModeOptions tree;
@@ -26,17 +26,9 @@ Limited<ModesAnswer> modes_answer(const SceneInput& input, const ModesOptions& o
   tree.tree = {options.common.arith, options.max_nodes, options.max_modes,
                exact::Deadline::after(options.time_budget())};
   ModesAnswer a{options, solvers::contact_modes(input.scene, tree), {}};
-  if (!options.certificate.empty()) {
-    // A certificate that `check` could not read is not written: check reads at most kMaxInputBytes.
-    std::string certificate = solvers::modes_certificate(input.text, a.modes);
-    if (certificate.size() > exact::kMaxInputBytes)
-      return Limit{"modes --certificate: the certificate would take " + std::to_string(certificate.size()) +
-                       " bytes, more than the " + std::to_string(exact::kMaxInputBytes >> 20) + " MiB that check reads",
-                   std::to_string(a.modes.tree.modes.size()) + " feasible modes found, " +
-                       std::to_string(a.modes.tree.dead.size()) + " dead prefixes; no certificate written"};
-    write_text_file(options.certificate, certificate);
-    a.certificate_text = std::move(certificate);
-  }
+  if (!options.certificate.empty())
+    a.certificate_text = write_modes_certificate(options.certificate, solvers::modes_certificate(input.text, a.modes),
+                                                 a.modes.tree.modes.size(), a.modes.tree.dead.size());
   return a;
 }
 
@@ -44,6 +36,18 @@ Limited<ModesAnswer> modes_answer(const SceneInput& input, const ModesOptions& o
 
 Limited<ModesAnswer> run_modes(const SceneInput& input, const ModesOptions& options) {
   return with_limits(options.common.arith, [&] { return modes_answer(input, options); });
+}
+
+std::string write_modes_certificate(const std::string& file, std::string text, std::size_t modes, std::size_t dead) {
+  // A certificate that `check` could not read is not written: check reads at most kMaxInputBytes.
+  if (text.size() > exact::kMaxInputBytes)
+    throw exact::BudgetExceeded("modes --certificate: the certificate would take " + std::to_string(text.size()) +
+                                    " bytes, more than the " + std::to_string(exact::kMaxInputBytes >> 20) +
+                                    " MiB that check reads",
+                                std::to_string(modes) + " feasible modes found, " + std::to_string(dead) +
+                                    " dead prefixes; no certificate written");
+  write_text_file(file, text);
+  return text;
 }
 
 std::map<std::string, long> mode_counts(const solvers::ContactModes& modes) {

@@ -38,6 +38,10 @@ struct ModesAnswer {
   std::string certificate_text;  ///< the certificate written ("" = none)
 };
 
+/// Writes a modes certificate's `text` to `file` and returns it, unless it is larger than the kMaxInputBytes that
+/// `check` reads: then BudgetExceeded (a Limit of the query) with the counts of the list (no certificate written).
+std::string write_modes_certificate(const std::string& file, std::string text, std::size_t modes, std::size_t dead);
+
 /// The feasible modes (InputError for --arith float; a Limit past a budget, or for a certificate larger than
 /// `check` reads), the certificate written where asked.
 Limited<ModesAnswer> run_modes(const SceneInput& input, const ModesOptions& options);

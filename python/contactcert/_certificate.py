@@ -28,7 +28,7 @@ def _certificate_text(certificate: CertificateSource) -> tuple[str, str]:
 
 
 def check(certificate: CertificateSource, problem: Problem | None = None) -> CheckResult:
-    """`contactcert check`: verifies the certificate from its embedded problem alone. With `problem` (a Scene
-    or a Ucp) the certificate must also be about that problem, compared as `check --problem` compares them (the
+    """`contactcert check`: verifies the certificate from its embedded problem alone. With `problem` (a Scene,
+    a Ucp or an Assembly) the certificate must also be about that problem, compared as `check --problem` compares them (the
     exact values, whatever their spelling). The result's `text` holds the readable lines of the evidence."""
     return check_text(*_certificate_text(certificate), problem)

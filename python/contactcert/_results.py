@@ -324,7 +324,7 @@ class Problem(Protocol):
 def check_text(text: str, name: str, problem: Problem | None = None) -> CheckResult:
     """The checker module's verdict (queries/check.h, the one the CLI's `check` calls) on a certificate's text."""
     if problem is not None and not hasattr(problem, "_problem_source"):
-        raise TypeError(f"problem: expected a Scene or a Ucp, found {type(problem).__name__}")
+        raise TypeError(f"problem: expected a Scene, a Ucp or an Assembly, found {type(problem).__name__}")
     problem_text, problem_name = ("", "") if problem is None else problem._problem_source()
     data, lines = _core.check(text, name, problem_text, problem_name)
     return CheckResult(json.loads(data), lines)

@@ -64,15 +64,19 @@ std::string modes_certificate(const std::string& scene_text, const ContactModes&
   j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
   j["table2"] = m.alphabet.rules.printed_separation ? "printed" : "strict";
   j["unions"] = m.alphabet.unions;
+  add_mode_tree(j, m.tree);
+  return j.dump(1) + "\n";
+}
+
+void add_mode_tree(json& j, const ModeTree<Q>& tree) {
   json modes = json::array();
-  for (std::size_t i = 0; i < m.tree.modes.size(); ++i)
-    modes.push_back({{"mode", m.tree.modes[i].text()}, {"acceleration", strings(m.tree.accelerations[i])}});
+  for (std::size_t i = 0; i < tree.modes.size(); ++i)
+    modes.push_back({{"mode", tree.modes[i].text()}, {"acceleration", strings(tree.accelerations[i])}});
   j["modes"] = modes;
   json dead = json::array();
-  for (const DeadPrefix<Q>& d : m.tree.dead)
+  for (const DeadPrefix<Q>& d : tree.dead)
     dead.push_back({{"prefix", d.prefix.text()}, {"motzkin", sparse_motzkin_json(d.motzkin)}});
   j["dead"] = dead;
-  return j.dump(1) + "\n";
 }
 
 }  // namespace contactcert::solvers

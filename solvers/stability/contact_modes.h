@@ -6,6 +6,7 @@
 // witness wrench M vdot.
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -40,5 +41,9 @@ const char* mode_group(const ModeString& mode, const std::vector<bool>& touching
 /// The "modes" certificate: the scene text, the alphabet, every mode with its acceleration, every dead prefix
 /// with its Motzkin certificate (sparse, sparse_motzkin.h).
 std::string modes_certificate(const std::string& scene_text, const ContactModes& modes);
+
+/// The tree's part of a modes certificate, as `modes` and `dead` members of `certificate` (a JSON object): every
+/// mode with its acceleration, every dead prefix with its Motzkin certificate (sparse, sparse_motzkin.h).
+void add_mode_tree(nlohmann::ordered_json& certificate, const ModeTree<Q>& tree);
 
 }  // namespace contactcert::solvers

@@ -124,7 +124,7 @@ class Walker {
     };
     ModeString prefix;
     std::vector<Frame> path;
-    path.push_back({Vec<T>::Zero(3), 0, std::nullopt});  // the empty prefix: no rows, realised by vdot = 0
+    path.push_back({Vec<T>::Zero(model_.J.rows()), 0, std::nullopt});  // the empty prefix: no rows, vdot = 0
     if (!columns_.empty()) path.back().cone.emplace();
     while (!path.empty()) {
       const std::size_t i = path.size() - 1;  // == prefix.letters.size()
@@ -178,7 +178,7 @@ class Walker {
       out_.lps += kin.lps;
       if (kin.rounded_float_checked) out_.lps_checked_from_float += kin.lps;
       if (kin.status == exact::StrictStatus::kFeasible) {
-        path.push_back({Vec<T>(kin.x.head(3)), 0, std::nullopt});
+        path.push_back({Vec<T>(kin.x.head(model_.J.rows())), 0, std::nullopt});
         continue;
       }
       remember(prefix, kin.motzkin);
@@ -284,8 +284,10 @@ class Walker {
   }
 
   // walk_modes_by_cones: J's columns a_n and a_t of each fixel as integer rows (times a positive scale each);
-  // none if a scale or an entry outgrows 64 bits (every prefix then goes to its LP).
+  // none if a scale or an entry outgrows 64 bits, or if vdot is not in R^3 (several bodies): every prefix then
+  // goes to its LP.
   void integer_columns() {
+    if (model_.J.rows() != 3) return;
     const Index k = static_cast<Index>(k_);
     std::vector<IntColumn> columns(2 * k_);
     try {
@@ -407,7 +409,8 @@ class Walker {
 
 template <class T>
 bool realises(const MotionModel<T>& model, const KinematicRules& rules, const Vec<T>& vdot, const ModeString& mode) {
-  if (vdot.size() != 3 || static_cast<Eigen::Index>(mode.letters.size()) > model.J.cols() / 2) return false;
+  if (vdot.size() != model.J.rows() || static_cast<Eigen::Index>(mode.letters.size()) > model.J.cols() / 2)
+    return false;
   for (std::size_t i = 0; i < mode.letters.size(); ++i)
     if (!meets(model, rules, vdot, i, mode.letters[i])) return false;
   return true;

@@ -68,7 +68,8 @@ struct ModeTree {
 template <class T>
 using OnMode = std::function<bool(const ModeString&, const Vec<T>&)>;
 
-/// Walks the prefix tree of the model's fixels depth first, iteratively (memory O(fixels) for the path, whatever
+/// Walks the prefix tree of the model's fixels depth first, iteratively (vdot has J's rows as its dimension: 3, or 3N
+/// for the bodies of an assembly, solvers/assembly/assembly_modes.h; memory O(fixels) for the path, whatever
 /// the depth). Throws exact::BudgetExceeded (with the nodes covered) past options.max_nodes, options.max_modes or
 /// the deadline.
 template <class T>

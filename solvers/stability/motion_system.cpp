@@ -91,7 +91,9 @@ exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const
                                               const KinematicRules& rules) {
   const Index k = model.J.cols() / 2;
   if (static_cast<Index>(mode.letters.size()) > k) throw std::invalid_argument("kinematic_system: mode length");
-  exact::SparseStrictSystem<T> s{0, 3, {}, {true, true, true}, {false, false, false}};
+  const Index D = model.J.rows();  // 3, or 3N for an assembly's bodies (solvers/assembly/assembly_modes.h)
+  const auto dims = static_cast<std::size_t>(D);
+  exact::SparseStrictSystem<T> s{0, D, {}, std::vector<bool>(dims, true), std::vector<bool>(dims, false)};
   s.entries.reserve(8 * mode.letters.size());
   const T zero(0);
   auto add = [&s, &zero](Index col, const T& value) {
@@ -99,10 +101,10 @@ exact::SparseStrictSystem<T> kinematic_system(const MotionModel<T>& model, const
   };
   // a_n = J_n^T vdot and a_t = J_t^T vdot (eq. 6 from rest, velocity products neglected).
   auto a_n = [&](Index i) {
-    for (Index d = 0; d < 3; ++d) add(d, model.J(d, i));
+    for (Index d = 0; d < D; ++d) add(d, model.J(d, i));
   };
   auto a_t = [&](Index i) {
-    for (Index d = 0; d < 3; ++d) add(d, model.J(d, k + i));
+    for (Index d = 0; d < D; ++d) add(d, model.J(d, k + i));
   };
   for (std::size_t u = 0; u < mode.letters.size(); ++u) {
     const auto i = static_cast<Index>(u);

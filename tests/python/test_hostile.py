@@ -133,7 +133,7 @@ def test_check_problem_ucp_respelt(tmp_path):
     data["source"] = "respelt"
     respelt = cc.Ucp.from_dict({k: data[k] for k in reversed(list(data))})
     assert cc.check(cert, problem=respelt).valid
-    with pytest.raises(TypeError, match="expected a Scene or a Ucp"):
+    with pytest.raises(TypeError, match="expected a Scene, a Ucp or an Assembly"):
         cc.check(cert, problem=str(DS1))
 
 

@@ -7,7 +7,7 @@
 
 #include <set>
 
-#include "solvers/assembly/assembly_check.h"
+#include "checker/assembly_check.h"
 #include "tests/solvers/assembly/assembly_fixtures.h"
 
 namespace contactcert::solvers::assembly {
@@ -73,7 +73,7 @@ TEST(AssemblyCertificateMemory, WalkReusesCertificates) {
   const AssemblyStabilityResult r = assembly_stability(a);
   ASSERT_EQ(r.status, AssemblyStatus::kDecided);
   EXPECT_EQ(r.verdict, AssemblyVerdict::kStronglyStable);
-  EXPECT_EQ(check_assembly_stability(a, r), "");
+  EXPECT_EQ(checker::check_assembly_stability(a, r), "");
   EXPECT_LT(r.lps, r.nodes - static_cast<long>(r.dead.size()) + static_cast<long>(r.dead.size()) / 2);
 }
 
