@@ -180,6 +180,17 @@ TEST(FloatDrift, SlidingBoxDriftsOnlyByRounding) {
   EXPECT_NEAR(fl.final_pose.t.x, 0.5, 1e-12);
 }
 
+TEST(FloatDrift, TheFloatRunUsesTheNearestDoubles) {
+  // The scene's rationals rounded to nearest (GMP's get_d truncates 1/10 to 0.09999999999999999, a float step
+  // that no float simulator given "0.1" would take).
+  const Trajectory<double> fl = simulate<double>(pushed_box("1/2", "", "1/10", 2), exact_options(exact::Arith::kFloat));
+  ASSERT_EQ(fl.steps.size(), 2u);
+  EXPECT_EQ(fl.steps[0].h, 0.1);
+  EXPECT_EQ(fl.steps[1].time, 0.1);
+  EXPECT_EQ(nearest_double(Q(2, 3)), 2.0 / 3.0);
+  EXPECT_EQ(nearest_double(Q(-1, 10)), -0.1);
+}
+
 TEST(FloatDrift, GrazingCeilingIsAPhantomContactInFloat) {
   // A ceiling 10^-12 above the box's top: exactly, the box slides under it untouched; the float path's sign
   // tolerance (1e-9) takes the gap for a contact.
