@@ -151,17 +151,32 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
   const Vec2<T> c = turning ? Vec2<T>{-v.y / omega, v.x / omega} : Vec2<T>{T(0), T(0)};
   std::optional<ClosingContact<T>> best;
   T limit = H;
-  // g: the gap (times 1 + u^2) of point p, moving with velocity pv in the world (unless it is the body's own
-  // vertex, body_point), against the segment a -> a + e (a body edge when !body_point), in powers of tau.
-  const auto consider = [&](const Vec2<T>& p, const Vec2<T>& pv, bool body_point, const Vec2<T>& a, const Vec2<T>& e,
+  // Each point p with w = p - c, each segment a -> a + e with K = (c - a) x e: computed once per step, shared by
+  // every pair that uses them.
+  struct Point {
+    Vec2<T> p, w;
+  };
+  struct Segment {
+    Vec2<T> a, e;
+    T K;
+  };
+  const auto point = [&](const Vec2<T>& p) { return Point{p, turning ? Vec2<T>(p - c) : p}; };
+  const auto segment = [&](const std::vector<Vec2<T>>& x, std::size_t j) {
+    const Vec2<T>& a = x[j];
+    const Vec2<T> e = x[(j + 1) % x.size()] - a;
+    return Segment{a, e, turning ? T(cross2(c - a, e)) : T(0)};
+  };
+  // g: the gap (times 1 + u^2) of point P.p, moving with velocity pv in the world (unless it is the body's own
+  // vertex, body_point), against the segment S (a body edge when !body_point), in powers of tau.
+  const auto consider = [&](const Point& P, const Vec2<T>& pv, bool body_point, const Segment& S,
                             const std::string& name) {
+    const Vec2<T>&p = P.p, &a = S.a, &e = S.e;
     std::vector<T> poly;
     if (!turning) {
       const Vec2<T> rel = body_point ? v : pv - v;
       poly = {cross2(p - a, e), cross2(rel, e)};
     } else {
-      const Vec2<T> w = p - c;
-      const T K = cross2(c - a, e), C = cross2(w, e), D = dot2(w, e);
+      const T &K = S.K, C = cross2(P.w, e), D = dot2(P.w, e);
       if (body_point) {
         poly = {K + C, T(-2) * D * k, (K - C) * k * k};
       } else {
@@ -188,22 +203,34 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
     limit = root->tau;
   };
   const Vec2<T> zero{T(0), T(0)};
+  std::vector<Point> body_points;
+  std::vector<Segment> body_edges;
+  for (std::size_t i = 0; i < nb; ++i) {
+    body_points.push_back(point(body[i]));
+    body_edges.push_back(segment(body, i));
+  }
   for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
     const std::vector<Vec2<T>>& ob = g.obstacles[o];
+    std::vector<Point> ob_points;
+    std::vector<Segment> ob_edges;
+    for (std::size_t j = 0; j < ob.size(); ++j) {
+      ob_points.push_back(point(ob[j]));
+      ob_edges.push_back(segment(ob, j));
+    }
     for (std::size_t i = 0; i < nb; ++i)
       for (std::size_t j = 0; j < ob.size(); ++j)
-        consider(body[i], zero, true, ob[j], ob[(j + 1) % ob.size()] - ob[j],
+        consider(body_points[i], zero, true, ob_edges[j],
                  vertex_name("body", i) + " on " + edge_name(g.obstacle_names[o], j));
     for (std::size_t j = 0; j < ob.size(); ++j)
       for (std::size_t i = 0; i < nb; ++i)
-        consider(ob[j], zero, false, body[i], body[(i + 1) % nb] - body[i],
+        consider(ob_points[j], zero, false, body_edges[i],
                  vertex_name(g.obstacle_names[o], j) + " on " + edge_name("body", i));
   }
   for (std::size_t f = 0; f < tips.size(); ++f) {
     if (!free_velocity[f]) continue;
+    const Point tip = point(tips[f]);
     for (std::size_t i = 0; i < nb; ++i)
-      consider(tips[f], *free_velocity[f], false, body[i], body[(i + 1) % nb] - body[i],
-               g.finger_names[f] + " on " + edge_name("body", i));
+      consider(tip, *free_velocity[f], false, body_edges[i], g.finger_names[f] + " on " + edge_name("body", i));
   }
   return best;
 }
