@@ -2,6 +2,8 @@
 
 #include <mpfr.h>
 
+#include <algorithm>
+
 #include "solvers/motion/first_root.h"
 
 namespace contactcert::solvers::motion {
@@ -21,9 +23,17 @@ std::vector<Vec2<T>> world_body(const SceneGeometry<T>& g, const Pose<T>& pose) 
   return out;
 }
 
-/// Where p lies against the segment a -> a + e: 1 strictly inside it, 0 at an end, -1 off it (or off its line).
+/// Whether x lies outside the closed interval between u and v (comparisons only).
+bool outside(const Q& x, const Q& u, const Q& v) { return (x < u && x < v) || (x > u && x > v); }
+
+/// Where p lies against the segment a -> b: 1 strictly inside it, 0 at an end, -1 off it (or off its line). The
+/// exact paths first reject a point outside the segment's bounding box by comparisons, which take no gcd (most pairs
+/// of a pose are far apart); the float path keeps its sign tolerance on the line test alone.
 template <class T>
-int on_segment(const Vec2<T>& p, const Vec2<T>& a, const Vec2<T>& e) {
+int on_segment(const Vec2<T>& p, const Vec2<T>& a, const Vec2<T>& b) {
+  if constexpr (std::is_same_v<T, Q>)
+    if (outside(p.x, a.x, b.x) || outside(p.y, a.y, b.y)) return -1;
+  const Vec2<T> e = b - a;
   if (sign(cross2(e, p - a)) != 0) return -1;
   const T s = dot2(p - a, e);
   const int lo = sign(s), hi = sign(T(dot2(e, e) - s));
@@ -41,8 +51,25 @@ bool separates(const std::vector<Vec2<T>>& x, std::size_t i, const std::vector<V
   return true;
 }
 
+/// True if the interiors of the bounding boxes of x and y are disjoint (comparisons only): then so are the shapes'.
+bool boxes_apart(const std::vector<Vec2<Q>>& x, const std::vector<Vec2<Q>>& y) {
+  const auto range = [](const std::vector<Vec2<Q>>& v, Q Vec2<Q>::*c) {
+    const auto [lo, hi] =
+        std::minmax_element(v.begin(), v.end(), [c](const auto& a, const auto& b) { return a.*c < b.*c; });
+    return std::pair<const Q&, const Q&>{(*lo).*c, (*hi).*c};
+  };
+  for (Q Vec2<Q>::*c : {&Vec2<Q>::x, &Vec2<Q>::y}) {
+    const auto [xlo, xhi] = range(x, c);
+    const auto [ylo, yhi] = range(y, c);
+    if (xhi <= ylo || yhi <= xlo) return true;
+  }
+  return false;
+}
+
 template <class T>
 bool convex_overlap(const std::vector<Vec2<T>>& x, const std::vector<Vec2<T>>& y) {
+  if constexpr (std::is_same_v<T, Q>)
+    if (boxes_apart(x, y)) return false;  // the exact paths' quick test; the float path keeps its tolerance
   for (std::size_t i = 0; i < x.size(); ++i)
     if (separates(x, i, y)) return false;
   for (std::size_t i = 0; i < y.size(); ++i)
@@ -95,31 +122,31 @@ ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Pose<T>& pose, cons
     const std::vector<Vec2<T>>& ob = g.obstacles[o];
     for (std::size_t i = 0; i < nb; ++i)
       for (std::size_t k = 0; k < ob.size(); ++k) {
-        const Vec2<T> e = ob[(k + 1) % ob.size()] - ob[k];
-        const int where = on_segment(body[i], ob[k], e);
+        const int where = on_segment(body[i], ob[k], ob[(k + 1) % ob.size()]);
         if (where == 0 && out.unsupported.empty())
           out.unsupported =
               "body vertex " + std::to_string(i) + " on " + g.obstacle_names[o] + " vertex (normal not determined)";
         if (where != 1) continue;
+        const Vec2<T> e = ob[(k + 1) % ob.size()] - ob[k];
         // The obstacle edge's outward normal (e turned by -90 degrees) points into the body.
         out.contacts.push_back({ContactKind::kBodyVertex, int(i), int(o), int(k), body[i], Vec2<T>{e.y, -e.x},
                                 g.obstacle_mu[o], vertex_name("body", i) + " on " + edge_name(g.obstacle_names[o], k)});
       }
     for (std::size_t k = 0; k < ob.size(); ++k)
       for (std::size_t i = 0; i < nb; ++i) {
+        if (on_segment(ob[k], body[i], body[(i + 1) % nb]) != 1) continue;
         const Vec2<T> e = body[(i + 1) % nb] - body[i];
-        if (on_segment(ob[k], body[i], e) != 1) continue;
         out.contacts.push_back({ContactKind::kObstacleVertex, int(i), int(o), int(k), ob[k], perp2(e), g.obstacle_mu[o],
                                 vertex_name(g.obstacle_names[o], k) + " on " + edge_name("body", i)});
       }
   }
   for (std::size_t f = 0; f < tips.size(); ++f)
     for (std::size_t i = 0; i < nb; ++i) {
-      const Vec2<T> e = body[(i + 1) % nb] - body[i];
-      const int where = on_segment(tips[f], body[i], e);
+      const int where = on_segment(tips[f], body[i], body[(i + 1) % nb]);
       if (where == 0 && out.unsupported.empty())
         out.unsupported = g.finger_names[f] + " on a body vertex (normal not determined)";
       if (where != 1) continue;
+      const Vec2<T> e = body[(i + 1) % nb] - body[i];
       out.contacts.push_back({ContactKind::kFinger, int(i), int(f), -1, tips[f], perp2(e), g.finger_mu[f],
                               g.finger_names[f] + " on " + edge_name("body", i)});
     }
