@@ -179,24 +179,45 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
   std::optional<ClosingContact<T>> best;
   T limit = H;
   // Each point p with w = p - c, each segment a -> a + e with K = (c - a) x e: computed once per step, shared by
-  // every pair that uses them.
+  // every pair that uses them. On the exact paths also boxes, [lo, hi]: the segment's bounding box, and the box
+  // that a point not moving on its own stays in relative to the body (a body vertex in the world, an obstacle
+  // vertex in the body's frame) over the step: each coordinate moves by at most |v|_inf H (a translation) or
+  // |p - c|_2 |theta| <= 2 |p - c|_inf |omega| H (turning: the Cayley angle |theta| = 2 |atan(omega tau / 2)| <=
+  // |omega| tau). A pair whose boxes are apart cannot meet in the step: it is skipped by comparisons alone.
+  const auto magnitude = [](const T& x) { return sign(x) < 0 ? T(-x) : x; };
+  const auto larger = [](const T& x, const T& y) { return x < y ? y : x; };
+  const T reach = turning ? T(2 * magnitude(omega) * H) : T(larger(magnitude(v.x), magnitude(v.y)) * H);
   struct Point {
-    Vec2<T> p, w;
+    Vec2<T> p, w, lo, hi;
+    bool boxed = false;
   };
   struct Segment {
-    Vec2<T> a, e;
+    Vec2<T> a, e, lo, hi;
     T K;
   };
-  const auto point = [&](const Vec2<T>& p) { return Point{p, turning ? Vec2<T>(p - c) : p}; };
+  const auto point = [&](const Vec2<T>& p, bool moves_on_its_own) {
+    Point P{p, turning ? Vec2<T>(p - c) : p, p, p};
+    if constexpr (std::is_same_v<T, Q>) {
+      if (moves_on_its_own) return P;
+      const T r = turning ? T(reach * larger(magnitude(P.w.x), magnitude(P.w.y))) : reach;
+      P = {p, P.w, {p.x - r, p.y - r}, {p.x + r, p.y + r}, true};
+    }
+    return P;
+  };
   const auto segment = [&](const std::vector<Vec2<T>>& x, std::size_t j) {
-    const Vec2<T>& a = x[j];
-    const Vec2<T> e = x[(j + 1) % x.size()] - a;
-    return Segment{a, e, turning ? T(cross2(c - a, e)) : T(0)};
+    const Vec2<T>&a = x[j], &b = x[(j + 1) % x.size()];
+    const Vec2<T> e = b - a;
+    return Segment{a,
+                   e,
+                   {std::min(a.x, b.x), std::min(a.y, b.y)},
+                   {std::max(a.x, b.x), std::max(a.y, b.y)},
+                   turning ? T(cross2(c - a, e)) : T(0)};
   };
   // g: the gap (times 1 + u^2) of point P.p, moving with velocity pv in the world (unless it is the body's own
   // vertex, body_point), against the segment S (a body edge when !body_point), in powers of tau.
   const auto consider = [&](const Point& P, const Vec2<T>& pv, bool body_point, const Segment& S,
                             const std::string& name) {
+    if (P.boxed && (P.hi.x < S.lo.x || S.hi.x < P.lo.x || P.hi.y < S.lo.y || S.hi.y < P.lo.y)) return;
     const Vec2<T>&p = P.p, &a = S.a, &e = S.e;
     std::vector<T> poly;
     if (!turning) {
@@ -233,7 +254,7 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
   std::vector<Point> body_points;
   std::vector<Segment> body_edges;
   for (std::size_t i = 0; i < nb; ++i) {
-    body_points.push_back(point(body[i]));
+    body_points.push_back(point(body[i], false));
     body_edges.push_back(segment(body, i));
   }
   for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
@@ -241,7 +262,7 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
     std::vector<Point> ob_points;
     std::vector<Segment> ob_edges;
     for (std::size_t j = 0; j < ob.size(); ++j) {
-      ob_points.push_back(point(ob[j]));
+      ob_points.push_back(point(ob[j], false));
       ob_edges.push_back(segment(ob, j));
     }
     for (std::size_t i = 0; i < nb; ++i)
@@ -255,7 +276,7 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
   }
   for (std::size_t f = 0; f < tips.size(); ++f) {
     if (!free_velocity[f]) continue;
-    const Point tip = point(tips[f]);
+    const Point tip = point(tips[f], true);
     for (std::size_t i = 0; i < nb; ++i)
       consider(tip, *free_velocity[f], false, body_edges[i], g.finger_names[f] + " on " + edge_name("body", i));
   }
