@@ -43,6 +43,11 @@ SimulateOptions exact_options(exact::Arith arith = exact::Arith::kVerified) {
   return o;
 }
 
+/// A bundled motion scene (scenes/NAME).
+MotionScene bundled(const std::string& name) {
+  return read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/" + name));
+}
+
 /// Every step's certificate is accepted by the existing checker, and no recorded pose overlaps a shape.
 void expect_certified_and_apart(const MotionScene& scene, const Trajectory<Q>& run) {
   const SceneGeometry<Q> g = scene_geometry<Q>(scene);
@@ -376,8 +381,7 @@ namespace contactcert::solvers::motion {
 namespace {
 
 TEST(BundledScene, PushedBoxTipsForFiveSteps) {
-  const MotionScene scene =
-      read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_pushed_box.json"));
+  const MotionScene scene = bundled("motion_pushed_box.json");
   const Trajectory<Q> run = simulate<Q>(scene, exact_options());
   ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
   ASSERT_EQ(run.steps.size(), 5u);
@@ -478,8 +482,7 @@ TEST(PegInChamferedHole, MakesAndBreaksContactsAtTheDerivedSteps) {
   // down its faces, 1/2 below their start by t = 9, far from its corners). The gripper opens at t = 9: step 12
   // (t = 35/4) is cut at 9 (h = 1/4) by the schedule; in step 13 both fingers move away (v_n > 0, mode s); from
   // step 14 (t = 39/4) their contacts are gone. The final pose is the translation (0, -8), exactly.
-  const MotionScene scene =
-      read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_peg_chamfer.json"));
+  const MotionScene scene = bundled("motion_peg_chamfer.json");
   const Trajectory<Q> run = simulate<Q>(scene, exact_options());
   ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
   ASSERT_EQ(run.steps.size(), 16u);
