@@ -45,6 +45,8 @@ check 0 '"valid":true' check "$work/sim_certs/step-3.json" --json
 check 0 '"kind":"ucp_jammed"' check "$work/sim_certs/step-3.json" --json
 check 0 '"valid":true' check "$work/sim_certs/step-0.json" --json
 check 0 'float run' simulate "$box" --steps 2 --compare
+# The float run steps by the double nearest to the scene's 1/10 (GMP's get_d would give 0.09999999999999999).
+check 0 'step 0 t = ~0.0 h = ~0.1: solvable' simulate "$box" --steps 1 --arith float
 check 0 '"divergences"' simulate "$box" --steps 2 --compare --json --uniqueness off
 # Outputs that cannot be written: named.
 check 2 'x.svg: cannot open the file for writing' simulate "$box" --steps 1 --svg "$work/no_such_dir/x.svg"
