@@ -1,5 +1,9 @@
 #include "solvers/motion/contacts.h"
 
+#include <mpfr.h>
+
+#include <algorithm>
+
 #include "solvers/motion/first_root.h"
 
 namespace contactcert::solvers::motion {
@@ -19,9 +23,17 @@ std::vector<Vec2<T>> world_body(const SceneGeometry<T>& g, const Pose<T>& pose) 
   return out;
 }
 
-/// Where p lies against the segment a -> a + e: 1 strictly inside it, 0 at an end, -1 off it (or off its line).
+/// Whether x lies outside the closed interval between u and v (comparisons only).
+bool outside(const Q& x, const Q& u, const Q& v) { return (x < u && x < v) || (x > u && x > v); }
+
+/// Where p lies against the segment a -> b: 1 strictly inside it, 0 at an end, -1 off it (or off its line). The
+/// exact paths first reject a point outside the segment's bounding box by comparisons, which take no gcd (most pairs
+/// of a pose are far apart); the float path keeps its sign tolerance on the line test alone.
 template <class T>
-int on_segment(const Vec2<T>& p, const Vec2<T>& a, const Vec2<T>& e) {
+int on_segment(const Vec2<T>& p, const Vec2<T>& a, const Vec2<T>& b) {
+  if constexpr (std::is_same_v<T, Q>)
+    if (outside(p.x, a.x, b.x) || outside(p.y, a.y, b.y)) return -1;
+  const Vec2<T> e = b - a;
   if (sign(cross2(e, p - a)) != 0) return -1;
   const T s = dot2(p - a, e);
   const int lo = sign(s), hi = sign(T(dot2(e, e) - s));
@@ -39,8 +51,25 @@ bool separates(const std::vector<Vec2<T>>& x, std::size_t i, const std::vector<V
   return true;
 }
 
+/// True if the interiors of the bounding boxes of x and y are disjoint (comparisons only): then so are the shapes'.
+bool boxes_apart(const std::vector<Vec2<Q>>& x, const std::vector<Vec2<Q>>& y) {
+  const auto range = [](const std::vector<Vec2<Q>>& v, Q Vec2<Q>::*c) {
+    const auto [lo, hi] =
+        std::minmax_element(v.begin(), v.end(), [c](const auto& a, const auto& b) { return a.*c < b.*c; });
+    return std::pair<const Q&, const Q&>{(*lo).*c, (*hi).*c};
+  };
+  for (Q Vec2<Q>::*c : {&Vec2<Q>::x, &Vec2<Q>::y}) {
+    const auto [xlo, xhi] = range(x, c);
+    const auto [ylo, yhi] = range(y, c);
+    if (xhi <= ylo || yhi <= xlo) return true;
+  }
+  return false;
+}
+
 template <class T>
 bool convex_overlap(const std::vector<Vec2<T>>& x, const std::vector<Vec2<T>>& y) {
+  if constexpr (std::is_same_v<T, Q>)
+    if (boxes_apart(x, y)) return false;  // the exact paths' quick test; the float path keeps its tolerance
   for (std::size_t i = 0; i < x.size(); ++i)
     if (separates(x, i, y)) return false;
   for (std::size_t i = 0; i < y.size(); ++i)
@@ -52,6 +81,15 @@ std::string edge_name(const std::string& shape, std::size_t i) { return shape + 
 std::string vertex_name(const std::string& shape, std::size_t i) { return shape + " vertex " + std::to_string(i); }
 
 }  // namespace
+
+double nearest_double(const Q& q) {
+  mpfr_t x;
+  mpfr_init2(x, 53);
+  mpfr_set_q(x, q.get_mpq_t(), MPFR_RNDN);
+  const double d = mpfr_get_d(x, MPFR_RNDN);
+  mpfr_clear(x);
+  return d;
+}
 
 template <class T>
 SceneGeometry<T> scene_geometry(const MotionScene& scene) {
@@ -84,31 +122,31 @@ ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Pose<T>& pose, cons
     const std::vector<Vec2<T>>& ob = g.obstacles[o];
     for (std::size_t i = 0; i < nb; ++i)
       for (std::size_t k = 0; k < ob.size(); ++k) {
-        const Vec2<T> e = ob[(k + 1) % ob.size()] - ob[k];
-        const int where = on_segment(body[i], ob[k], e);
+        const int where = on_segment(body[i], ob[k], ob[(k + 1) % ob.size()]);
         if (where == 0 && out.unsupported.empty())
           out.unsupported =
               "body vertex " + std::to_string(i) + " on " + g.obstacle_names[o] + " vertex (normal not determined)";
         if (where != 1) continue;
+        const Vec2<T> e = ob[(k + 1) % ob.size()] - ob[k];
         // The obstacle edge's outward normal (e turned by -90 degrees) points into the body.
         out.contacts.push_back({ContactKind::kBodyVertex, int(i), int(o), int(k), body[i], Vec2<T>{e.y, -e.x},
                                 g.obstacle_mu[o], vertex_name("body", i) + " on " + edge_name(g.obstacle_names[o], k)});
       }
     for (std::size_t k = 0; k < ob.size(); ++k)
       for (std::size_t i = 0; i < nb; ++i) {
+        if (on_segment(ob[k], body[i], body[(i + 1) % nb]) != 1) continue;
         const Vec2<T> e = body[(i + 1) % nb] - body[i];
-        if (on_segment(ob[k], body[i], e) != 1) continue;
         out.contacts.push_back({ContactKind::kObstacleVertex, int(i), int(o), int(k), ob[k], perp2(e), g.obstacle_mu[o],
                                 vertex_name(g.obstacle_names[o], k) + " on " + edge_name("body", i)});
       }
   }
   for (std::size_t f = 0; f < tips.size(); ++f)
     for (std::size_t i = 0; i < nb; ++i) {
-      const Vec2<T> e = body[(i + 1) % nb] - body[i];
-      const int where = on_segment(tips[f], body[i], e);
+      const int where = on_segment(tips[f], body[i], body[(i + 1) % nb]);
       if (where == 0 && out.unsupported.empty())
         out.unsupported = g.finger_names[f] + " on a body vertex (normal not determined)";
       if (where != 1) continue;
+      const Vec2<T> e = body[(i + 1) % nb] - body[i];
       out.contacts.push_back({ContactKind::kFinger, int(i), int(f), -1, tips[f], perp2(e), g.finger_mu[f],
                               g.finger_names[f] + " on " + edge_name("body", i)});
     }
@@ -140,17 +178,53 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
   const Vec2<T> c = turning ? Vec2<T>{-v.y / omega, v.x / omega} : Vec2<T>{T(0), T(0)};
   std::optional<ClosingContact<T>> best;
   T limit = H;
-  // g: the gap (times 1 + u^2) of point p, moving with velocity pv in the world (unless it is the body's own
-  // vertex, body_point), against the segment a -> a + e (a body edge when !body_point), in powers of tau.
-  const auto consider = [&](const Vec2<T>& p, const Vec2<T>& pv, bool body_point, const Vec2<T>& a, const Vec2<T>& e,
+  // Each point p with w = p - c, each segment a -> a + e with K = (c - a) x e: computed once per step, shared by
+  // every pair that uses them. On the exact paths also boxes, [lo, hi]: the segment's bounding box, and the box
+  // that a point not moving on its own stays in relative to the body (a body vertex in the world, an obstacle
+  // vertex in the body's frame) over the step: each coordinate moves by at most |v|_inf H (a translation) or
+  // |p - c|_2 |theta| <= 2 |p - c|_inf |omega| H (turning: the Cayley angle |theta| = 2 |atan(omega tau / 2)| <=
+  // |omega| tau). A pair whose boxes are apart cannot meet in the step: it is skipped by comparisons alone.
+  const auto magnitude = [](const T& x) { return sign(x) < 0 ? T(-x) : x; };
+  const auto larger = [](const T& x, const T& y) { return x < y ? y : x; };
+  const T reach = turning ? T(2 * magnitude(omega) * H) : T(larger(magnitude(v.x), magnitude(v.y)) * H);
+  struct Point {
+    Vec2<T> p, w, lo, hi;
+    bool boxed = false;
+  };
+  struct Segment {
+    Vec2<T> a, e, lo, hi;
+    T K;
+  };
+  const auto point = [&](const Vec2<T>& p, bool moves_on_its_own) {
+    Point P{p, turning ? Vec2<T>(p - c) : p, p, p};
+    if constexpr (std::is_same_v<T, Q>) {
+      if (moves_on_its_own) return P;
+      const T r = turning ? T(reach * larger(magnitude(P.w.x), magnitude(P.w.y))) : reach;
+      P = {p, P.w, {p.x - r, p.y - r}, {p.x + r, p.y + r}, true};
+    }
+    return P;
+  };
+  const auto segment = [&](const std::vector<Vec2<T>>& x, std::size_t j) {
+    const Vec2<T>&a = x[j], &b = x[(j + 1) % x.size()];
+    const Vec2<T> e = b - a;
+    return Segment{a,
+                   e,
+                   {std::min(a.x, b.x), std::min(a.y, b.y)},
+                   {std::max(a.x, b.x), std::max(a.y, b.y)},
+                   turning ? T(cross2(c - a, e)) : T(0)};
+  };
+  // g: the gap (times 1 + u^2) of point P.p, moving with velocity pv in the world (unless it is the body's own
+  // vertex, body_point), against the segment S (a body edge when !body_point), in powers of tau.
+  const auto consider = [&](const Point& P, const Vec2<T>& pv, bool body_point, const Segment& S,
                             const std::string& name) {
+    if (P.boxed && (P.hi.x < S.lo.x || S.hi.x < P.lo.x || P.hi.y < S.lo.y || S.hi.y < P.lo.y)) return;
+    const Vec2<T>&p = P.p, &a = S.a, &e = S.e;
     std::vector<T> poly;
     if (!turning) {
       const Vec2<T> rel = body_point ? v : pv - v;
       poly = {cross2(p - a, e), cross2(rel, e)};
     } else {
-      const Vec2<T> w = p - c;
-      const T K = cross2(c - a, e), C = cross2(w, e), D = dot2(w, e);
+      const T &K = S.K, C = cross2(P.w, e), D = dot2(P.w, e);
       if (body_point) {
         poly = {K + C, T(-2) * D * k, (K - C) * k * k};
       } else {
@@ -177,22 +251,34 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
     limit = root->tau;
   };
   const Vec2<T> zero{T(0), T(0)};
+  std::vector<Point> body_points;
+  std::vector<Segment> body_edges;
+  for (std::size_t i = 0; i < nb; ++i) {
+    body_points.push_back(point(body[i], false));
+    body_edges.push_back(segment(body, i));
+  }
   for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
     const std::vector<Vec2<T>>& ob = g.obstacles[o];
+    std::vector<Point> ob_points;
+    std::vector<Segment> ob_edges;
+    for (std::size_t j = 0; j < ob.size(); ++j) {
+      ob_points.push_back(point(ob[j], false));
+      ob_edges.push_back(segment(ob, j));
+    }
     for (std::size_t i = 0; i < nb; ++i)
       for (std::size_t j = 0; j < ob.size(); ++j)
-        consider(body[i], zero, true, ob[j], ob[(j + 1) % ob.size()] - ob[j],
+        consider(body_points[i], zero, true, ob_edges[j],
                  vertex_name("body", i) + " on " + edge_name(g.obstacle_names[o], j));
     for (std::size_t j = 0; j < ob.size(); ++j)
       for (std::size_t i = 0; i < nb; ++i)
-        consider(ob[j], zero, false, body[i], body[(i + 1) % nb] - body[i],
+        consider(ob_points[j], zero, false, body_edges[i],
                  vertex_name(g.obstacle_names[o], j) + " on " + edge_name("body", i));
   }
   for (std::size_t f = 0; f < tips.size(); ++f) {
     if (!free_velocity[f]) continue;
+    const Point tip = point(tips[f], true);
     for (std::size_t i = 0; i < nb; ++i)
-      consider(tips[f], *free_velocity[f], false, body[i], body[(i + 1) % nb] - body[i],
-               g.finger_names[f] + " on " + edge_name("body", i));
+      consider(tip, *free_velocity[f], false, body_edges[i], g.finger_names[f] + " on " + edge_name("body", i));
   }
   return best;
 }

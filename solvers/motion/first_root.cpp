@@ -20,6 +20,18 @@ T eval(const Poly<T>& p, const T& x) {
   return r;
 }
 
+/// True if g > 0 on [0, H] by the cheap bound g(tau) >= g_0 + sum_{i >= 1} min(0, g_i) H^i (0 <= tau <= H): most
+/// candidate gaps of a step never come near closing, and this spares them the Sturm sequence.
+template <class T>
+bool positive_on(const Poly<T>& g, const T& H) {
+  T bound = g[0], power(1);
+  for (std::size_t i = 1; i < g.size(); ++i) {
+    power *= H;
+    if (exact::sign(g[i]) < 0) bound += g[i] * power;
+  }
+  return exact::sign(bound) > 0;
+}
+
 /// The remainder of a divided by b (deg b >= 0).
 template <class T>
 Poly<T> remainder(Poly<T> a, const Poly<T>& b) {
@@ -102,6 +114,7 @@ std::optional<GapRoot<T>> first_gap_root(const std::vector<T>& g0, const T& H,
   Poly<T> g = g0;
   trim(g);
   if (g.size() < 2) return std::nullopt;  // a constant gap never closes
+  if (positive_on(g, H)) return std::nullopt;
   const std::vector<Poly<T>> s = sturm(g);
   T lo(0);
   // Distinct roots in (a, b] = V(a) - V(b); take them in order.

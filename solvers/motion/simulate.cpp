@@ -350,7 +350,7 @@ bool Stepper<T>::step() {
 
   ucp::UcpProblem problem;
   try {
-    problem = step_problem(step_scene(g_, pose, cs.contacts, sched.commands), exact_path, "step " + std::to_string(k));
+    problem = step_problem(step_scene(g_, pose, cs.contacts, sched.commands), "step " + std::to_string(k));
   } catch (const exact::InputError& e) {
     finish(RunStatus::kUnsupportedContact, std::string("the step's problem was refused: ") + e.what());
     return done(false);

@@ -15,7 +15,7 @@ nlohmann::ordered_json pair(const Vec2<T>& p) {
   return nlohmann::ordered_json::array({text(p.x), text(p.y)});
 }
 
-/// The frame as the step scene writes it (the float path's rounded contacts).
+/// The frame as the step scene writes it.
 geometry::FrameResult frame_as_written(const geometry::Shape&, const geometry::FrameInput& given) {
   return {geometry::FrameStatus::kOk, {given.point, given.normal, Q(0)}, ""};
 }
@@ -44,9 +44,9 @@ nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose
           {"contacts", list}};
 }
 
-ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, bool exact_frames, const std::string& name) {
+ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, const std::string& name) {
   const exact::JsonInput in = exact::JsonInput::parse(exact::json_text(scene), name);
-  return ucp::read_ucp_problem(in, nullptr, exact_frames ? geometry::frame_of : frame_as_written);
+  return ucp::read_ucp_problem(in, nullptr, frame_as_written);
 }
 
 template nlohmann::ordered_json step_scene<Q>(const SceneGeometry<Q>&, const Pose<Q>&, const std::vector<Contact<Q>>&,

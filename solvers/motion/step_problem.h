@@ -26,10 +26,11 @@ nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose
                                   const std::vector<Contact<T>>& contacts,
                                   const std::vector<FingerCommand<T>>& commands);
 
-/// The problem of a step scene. exact_frames: each contact's frame is checked by geometry::frame_of (the point on
-/// the boundary, the normal inward); otherwise (the float path, whose rounded points lie near but not on the
-/// boundary) the frames are taken as written. Throws exact::InputError if a frame is refused.
-ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, bool exact_frames, const std::string& name);
+/// The problem of a step scene, each contact's frame taken as written: the contacts are found exactly on the exact
+/// paths (a point strictly inside an edge, the normal the edge's perpendicular, the shapes apart at every recorded
+/// pose), so geometry::frame_of would only confirm them (about a tenth of a turning step); the float path's
+/// rounded points lie near, not on, the boundary. Throws exact::InputError if the scene is refused.
+ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, const std::string& name);
 
 extern template nlohmann::ordered_json step_scene<Q>(const SceneGeometry<Q>&, const Pose<Q>&,
                                                      const std::vector<Contact<Q>>&,

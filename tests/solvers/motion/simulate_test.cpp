@@ -44,6 +44,11 @@ SimulateOptions exact_options(exact::Arith arith = exact::Arith::kVerified) {
   return o;
 }
 
+/// A bundled motion scene (scenes/NAME).
+MotionScene bundled(const std::string& name) {
+  return read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/" + name));
+}
+
 /// Every step's certificate is accepted by the existing checker, and no recorded pose overlaps a shape.
 void expect_certified_and_apart(const MotionScene& scene, const Trajectory<Q>& run) {
   const SceneGeometry<Q> g = scene_geometry<Q>(scene);
@@ -180,6 +185,17 @@ TEST(FloatDrift, SlidingBoxDriftsOnlyByRounding) {
   }
   ASSERT_EQ(fl.status, RunStatus::kCompleted);
   EXPECT_NEAR(fl.final_pose.t.x, 0.5, 1e-12);
+}
+
+TEST(FloatDrift, TheFloatRunUsesTheNearestDoubles) {
+  // The scene's rationals rounded to nearest (GMP's get_d truncates 1/10 to 0.09999999999999999, a float step
+  // that no float simulator given "0.1" would take).
+  const Trajectory<double> fl = simulate<double>(pushed_box("1/2", "", "1/10", 2), exact_options(exact::Arith::kFloat));
+  ASSERT_EQ(fl.steps.size(), 2u);
+  EXPECT_EQ(fl.steps[0].h, 0.1);
+  EXPECT_EQ(fl.steps[1].time, 0.1);
+  EXPECT_EQ(nearest_double(Q(2, 3)), 2.0 / 3.0);
+  EXPECT_EQ(nearest_double(Q(-1, 10)), -0.1);
 }
 
 TEST(FloatDrift, GrazingCeilingIsAPhantomContactInFloat) {
@@ -367,8 +383,7 @@ namespace contactcert::solvers::motion {
 namespace {
 
 TEST(BundledScene, PushedBoxTipsForFiveSteps) {
-  const MotionScene scene =
-      read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_pushed_box.json"));
+  const MotionScene scene = bundled("motion_pushed_box.json");
   const Trajectory<Q> run = simulate<Q>(scene, exact_options());
   ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
   ASSERT_EQ(run.steps.size(), 5u);
@@ -443,6 +458,63 @@ TEST(FirstContact, AFreeFingerMeetsTheBody) {
   EXPECT_EQ(run.steps[3].cut_by, "finger stopper reaches body vertex 1");
   EXPECT_EQ(run.steps[3].tips_after[1], run.steps[3].pose_after.apply(Vec2<Q>{Q(2), Q(0)}));
   EXPECT_EQ(run.status, RunStatus::kUnsupportedContact);
+  expect_certified_and_apart(scene, run);
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::motion
+
+namespace contactcert::solvers::motion {
+namespace {
+
+/// The names of the contacts of a step whose name contains `part`.
+std::vector<std::string> contacts_with(const StepRecord<Q>& s, const std::string& part) {
+  std::vector<std::string> out;
+  for (const ContactRecord<Q>& c : s.contacts)
+    if (c.name.find(part) != std::string::npos) out.push_back(c.name);
+  return out;
+}
+
+TEST(PegInChamferedHole, MakesAndBreaksContactsAtTheDerivedSteps) {
+  // scenes/motion_peg_chamfer.json: the peg [0, 2] x [2, 6] is lowered by the gripper's fingers at speed 1, so its
+  // bottom is at y = 2 - t and its sides stay at x = 0 and 2, 1/4 inside the hole's walls (x = -1/4, 9/4) and
+  // clear of the chamfers (which lie outside the walls' lines). The bottom y = -6 is reached at t = 8. Steps of
+  // H = 3/4 start at 3k/4: k = 10 starts at 15/2 and is cut at 8 (h = 1/2) by the first corner found, vertex 0;
+  // from step 11 (t = 8) both bottom corners rest on the bottom edge and the peg stays still (the fingers slide
+  // down its faces, 1/2 below their start by t = 9, far from its corners). The gripper opens at t = 9: step 12
+  // (t = 35/4) is cut at 9 (h = 1/4) by the schedule; in step 13 both fingers move away (v_n > 0, mode s); from
+  // step 14 (t = 39/4) their contacts are gone. The final pose is the translation (0, -8), exactly.
+  const MotionScene scene = bundled("motion_peg_chamfer.json");
+  const Trajectory<Q> run = simulate<Q>(scene, exact_options());
+  ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
+  ASSERT_EQ(run.steps.size(), 16u);
+  const std::vector<std::string> bottom{"body vertex 0 on bottom edge 2", "body vertex 1 on bottom edge 2"},
+      fingers{"finger left on body edge 3", "finger right on body edge 1"}, none;
+  for (const StepRecord<Q>& s : run.steps) {
+    const long k = s.index;
+    // t = 3k/4 up to the cut at 8, then 8 + 3(k - 11)/4 up to the cut at 9, then 9 + 3(k - 13)/4.
+    const Q start = k <= 10 ? Q(0) : (k <= 12 ? Q(8) : Q(9)), first = k <= 10 ? 0 : (k <= 12 ? 11 : 13);
+    EXPECT_EQ(s.time, Q(start + Q(3 * (k - first)) / 4)) << "step " << k;
+    EXPECT_EQ(contacts_with(s, "bottom"), k >= 11 ? bottom : none) << "step " << k;
+    EXPECT_EQ(contacts_with(s, "finger"), k <= 13 ? fingers : none) << "step " << k;
+    EXPECT_EQ(contacts_with(s, "left edge"), none) << "step " << k;  // the chamfers and walls: never touched
+    EXPECT_EQ(contacts_with(s, "right edge"), none) << "step " << k;
+    EXPECT_EQ(s.made, k == 0 ? fingers : (k == 11 ? bottom : none)) << "step " << k;
+    EXPECT_EQ(s.broken, k == 14 ? fingers : none) << "step " << k;
+    EXPECT_EQ(s.omega, Q(0)) << "step " << k;
+    EXPECT_EQ(s.v, (Vec2<Q>{Q(0), Q(k <= 10 ? -1 : 0)})) << "step " << k;
+  }
+  EXPECT_EQ(run.steps[10].h, Q(1, 2));
+  EXPECT_EQ(run.steps[10].cut_by, "body vertex 0 on bottom edge 2");
+  EXPECT_EQ(run.steps[12].h, Q(1, 4));
+  EXPECT_EQ(run.steps[12].cut_by, "schedule change of finger left");
+  for (const ContactRecord<Q>& c : run.steps[13].contacts) {
+    if (c.name.rfind("finger", 0) == 0) {
+      EXPECT_EQ(c.mode, 's') << c.name;
+    }
+  }
+  EXPECT_EQ(run.final_pose.t, (Vec2<Q>{Q(0), Q(-8)}));
+  EXPECT_EQ(run.final_pose.c, Q(1));
   expect_certified_and_apart(scene, run);
 }
 
