@@ -41,12 +41,13 @@ class Oracle {
   }
   std::vector<std::string> verdicts(const std::vector<std::string>& wrenches) const {
     return answer(queries::with_limits(common_.arith, [&] {
-      std::vector<std::string> out;
-      out.reserve(wrenches.size());
+      std::vector<exact::Vec<Q>> gs;
+      gs.reserve(wrenches.size());
       for (std::size_t i = 0; i < wrenches.size(); ++i)
-        out.push_back(queries::to_json(verdicts_.answer(queries::parse_number_list(
-                                           wrenches[i], "wrenches[" + std::to_string(i) + "]", 3)))
-                          .dump());
+        gs.push_back(queries::parse_number_list(wrenches[i], "wrenches[" + std::to_string(i) + "]", 3));
+      std::vector<std::string> out;
+      out.reserve(gs.size());
+      for (const queries::StabilityAnswer& a : verdicts_.answers(gs)) out.push_back(queries::to_json(a).dump());
       return out;
     }));
   }

@@ -28,6 +28,30 @@ StabilityAnswer StabilityVerdicts::answer(const Vec<Q>& g) const {
   return {scene_, g, arith_, verdict(g), std::nullopt, "", ""};
 }
 
+std::vector<StabilityOutcome> StabilityVerdicts::verdicts(const std::vector<Vec<Q>>& wrenches) const {
+  std::vector<StabilityOutcome> out;
+  out.reserve(wrenches.size());
+  auto each = [&](const auto& oracle, auto convert) {
+    using T = typename std::decay_t<decltype(convert(wrenches.front()))>::Scalar;
+    solvers::ReusedCertificates<T> reuse;
+    for (const Vec<Q>& g : wrenches) out.emplace_back(oracle.verdict(convert(g), reuse));
+  };
+  if (float_)
+    each(*float_, [](const Vec<Q>& g) { return exact::to_double(g); });
+  else
+    each(*exact_, [](const Vec<Q>& g) -> const Vec<Q>& { return g; });
+  return out;
+}
+
+std::vector<StabilityAnswer> StabilityVerdicts::answers(const std::vector<Vec<Q>>& wrenches) const {
+  std::vector<StabilityOutcome> v = verdicts(wrenches);
+  std::vector<StabilityAnswer> out;
+  out.reserve(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out.push_back({scene_, wrenches[i], arith_, std::move(v[i]), std::nullopt, "", ""});
+  return out;
+}
+
 long StabilityVerdicts::preparation_lps() const {
   return float_ ? float_->preparation_lps() : exact_->preparation_lps();
 }
@@ -74,8 +98,7 @@ WrenchesAnswer wrenches_answer(const SceneInput& input, const WrenchesOptions& o
   a.wrenches = read_wrenches(options.wrenches);
   const StabilityVerdicts oracle(input.scene, options.common);
   a.lps = oracle.preparation_lps();
-  for (const auto& g : a.wrenches) {
-    const StabilityOutcome r = oracle.verdict(g);
+  for (const StabilityOutcome& r : oracle.verdicts(a.wrenches)) {
     const solvers::StabilityVerdict v = std::visit([](const auto& x) { return x.verdict; }, r);
     a.verdicts.push_back(v);
     ++a.counts[static_cast<int>(v)];
