@@ -3,11 +3,14 @@
 // options parsed from Python's strings by the same functions as the CLI's.
 #include <pybind11/stl.h>
 
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "python/bindings.h"
+#include "python/json_objects.h"
 #include "queries/finger_query.h"
 #include "queries/json_out.h"
 #include "queries/region_query.h"
@@ -31,7 +34,21 @@ WithCertificate stability(const Scene& s, const std::string& wrench, const std::
   return {queries::to_json(a).dump(), a.certificate_text};
 }
 
-/// Many verdicts on one scene from one prepared oracle (`stability --wrenches`), each as `stability --wrench`'s JSON.
+/// One verdict of a batch: its `stability --wrench` JSON object, built (as json.loads would build it from the text,
+/// json_objects) only when Python first reads more than the verdict. The batch's answers are shared by its verdicts.
+class Verdict {
+ public:
+  using Answers = std::shared_ptr<const std::vector<queries::StabilityAnswer>>;
+  Verdict(Answers all, std::size_t i) : all_(std::move(all)), i_(i) {}
+  py::object object() const { return json_objects(queries::to_json((*all_)[i_])); }
+
+ private:
+  Answers all_;
+  std::size_t i_;
+};
+
+/// Many verdicts on one scene from one prepared oracle (`stability --wrenches`): per wrench its verdict's name and
+/// its Verdict.
 class Oracle {
  public:
   Oracle(const Scene& s, const std::string& arith, double time_limit)
@@ -39,17 +56,27 @@ class Oracle {
         verdicts_(
             answer(queries::with_limits(common_.arith, [&] { return queries::StabilityVerdicts(s.scene, common_); }))) {
   }
-  std::vector<std::string> verdicts(const std::vector<std::string>& wrenches) const {
-    return answer(queries::with_limits(common_.arith, [&] {
-      std::vector<exact::Vec<Q>> gs;
-      gs.reserve(wrenches.size());
-      for (std::size_t i = 0; i < wrenches.size(); ++i)
-        gs.push_back(queries::parse_number_list(wrenches[i], "wrenches[" + std::to_string(i) + "]", 3));
-      std::vector<std::string> out;
-      out.reserve(gs.size());
-      for (const queries::StabilityAnswer& a : verdicts_.answers(gs)) out.push_back(queries::to_json(a).dump());
-      return out;
-    }));
+  std::vector<std::pair<std::string, Verdict>> verdicts(const std::vector<std::string>& wrenches) const {
+    Verdict::Answers all;
+    {
+      const py::gil_scoped_release release;
+      all = answer(queries::with_limits(common_.arith, [&] {
+        std::vector<exact::Vec<Q>> gs;
+        gs.reserve(wrenches.size());
+        for (std::size_t i = 0; i < wrenches.size(); ++i)
+          gs.push_back(queries::parse_number_list(wrenches[i], "wrenches[" + std::to_string(i) + "]", 3));
+        std::vector<queries::StabilityAnswer> answers = verdicts_.answers(gs);
+        for (auto& a : answers)  // the JSON object shows no proof: only the verdicts' memory would hold them
+          std::visit([](auto& r) { r.proofs.clear(); }, a.outcome);
+        return std::make_shared<const std::vector<queries::StabilityAnswer>>(std::move(answers));
+      }));
+    }
+    std::vector<std::pair<std::string, Verdict>> out;
+    out.reserve(all->size());
+    for (std::size_t i = 0; i < all->size(); ++i)
+      out.emplace_back(std::visit([](const auto& r) { return solvers::verdict_name(r.verdict); }, (*all)[i].outcome),
+                       Verdict(all, i));
+    return out;
   }
 
  private:
@@ -85,9 +112,10 @@ void bind_stability(py::module_& m, py::class_<Scene>& scene) {
       .def("region_svg", &region_svg, Release())
       .def("finger", &finger, Release())
       .def("finger_svg", &finger_svg, Release());
+  py::class_<Verdict>(m, "Verdict").def("object", &Verdict::object);
   py::class_<Oracle>(m, "Oracle")
       .def(py::init<const Scene&, const std::string&, double>(), Release())
-      .def("verdicts", &Oracle::verdicts, Release());
+      .def("verdicts", &Oracle::verdicts);  // the verdicts without the GIL, their objects with it
 }
 
 }  // namespace contactcert::python
