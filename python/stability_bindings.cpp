@@ -34,16 +34,24 @@ WithCertificate stability(const Scene& s, const std::string& wrench, const std::
   return {queries::to_json(a).dump(), a.certificate_text};
 }
 
+/// The verdicts of one batch, with the oracle that answers for them (the scene and arithmetic of their objects).
+struct Batch {
+  std::shared_ptr<const queries::StabilityVerdicts> oracle;
+  std::vector<exact::Vec<Q>> wrenches;
+  std::vector<queries::StabilityOutcome> verdicts;
+};
+
 /// One verdict of a batch: its `stability --wrench` JSON object, built (as json.loads would build it from the text,
-/// json_objects) only when Python first reads more than the verdict. The batch's answers are shared by its verdicts.
+/// json_objects) only when Python first reads more than the verdict.
 class Verdict {
  public:
-  using Answers = std::shared_ptr<const std::vector<queries::StabilityAnswer>>;
-  Verdict(Answers all, std::size_t i) : all_(std::move(all)), i_(i) {}
-  py::object object() const { return json_objects(queries::to_json((*all_)[i_])); }
+  Verdict(std::shared_ptr<const Batch> batch, std::size_t i) : batch_(std::move(batch)), i_(i) {}
+  py::object object() const {
+    return json_objects(queries::to_json(batch_->oracle->answer(batch_->wrenches[i_], batch_->verdicts[i_])));
+  }
 
  private:
-  Answers all_;
+  std::shared_ptr<const Batch> batch_;
   std::size_t i_;
 };
 
@@ -53,35 +61,34 @@ class Oracle {
  public:
   Oracle(const Scene& s, const std::string& arith, double time_limit)
       : common_(common(arith, time_limit)),
-        verdicts_(
-            answer(queries::with_limits(common_.arith, [&] { return queries::StabilityVerdicts(s.scene, common_); }))) {
-  }
+        verdicts_(std::make_shared<const queries::StabilityVerdicts>(answer(
+            queries::with_limits(common_.arith, [&] { return queries::StabilityVerdicts(s.scene, common_); })))) {}
   std::vector<std::pair<std::string, Verdict>> verdicts(const std::vector<std::string>& wrenches) const {
-    Verdict::Answers all;
+    auto batch = std::make_shared<Batch>();
+    batch->oracle = verdicts_;
     {
       const py::gil_scoped_release release;
-      all = answer(queries::with_limits(common_.arith, [&] {
-        std::vector<exact::Vec<Q>> gs;
-        gs.reserve(wrenches.size());
+      answer(queries::with_limits(common_.arith, [&] {
+        batch->wrenches.reserve(wrenches.size());
         for (std::size_t i = 0; i < wrenches.size(); ++i)
-          gs.push_back(queries::parse_number_list(wrenches[i], "wrenches[" + std::to_string(i) + "]", 3));
-        std::vector<queries::StabilityAnswer> answers = verdicts_.answers(gs);
-        for (auto& a : answers)  // the JSON object shows no proof: only the verdicts' memory would hold them
-          std::visit([](auto& r) { r.proofs.clear(); }, a.outcome);
-        return std::make_shared<const std::vector<queries::StabilityAnswer>>(std::move(answers));
+          batch->wrenches.push_back(queries::parse_number_list(wrenches[i], "wrenches[" + std::to_string(i) + "]", 3));
+        batch->verdicts = verdicts_->verdicts(batch->wrenches);
+        for (auto& v : batch->verdicts)  // the JSON object shows no proof: only the batch's memory would hold them
+          std::visit([](auto& r) { r.proofs.clear(); }, v);
+        return true;
       }));
     }
     std::vector<std::pair<std::string, Verdict>> out;
-    out.reserve(all->size());
-    for (std::size_t i = 0; i < all->size(); ++i)
-      out.emplace_back(std::visit([](const auto& r) { return solvers::verdict_name(r.verdict); }, (*all)[i].outcome),
-                       Verdict(all, i));
+    out.reserve(batch->verdicts.size());
+    for (std::size_t i = 0; i < batch->verdicts.size(); ++i)
+      out.emplace_back(std::visit([](const auto& r) { return solvers::verdict_name(r.verdict); }, batch->verdicts[i]),
+                       Verdict(batch, i));
     return out;
   }
 
  private:
   queries::CommonOptions common_;
-  queries::StabilityVerdicts verdicts_;
+  std::shared_ptr<const queries::StabilityVerdicts> verdicts_;
 };
 
 /// `stability --region [--wrench g]` ("" = no g), always exact.

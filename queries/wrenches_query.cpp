@@ -24,8 +24,10 @@ StabilityOutcome StabilityVerdicts::verdict(const Vec<Q>& g) const {
   return exact_->verdict(g);
 }
 
-StabilityAnswer StabilityVerdicts::answer(const Vec<Q>& g) const {
-  return {scene_, g, arith_, verdict(g), std::nullopt, "", ""};
+StabilityAnswer StabilityVerdicts::answer(const Vec<Q>& g) const { return answer(g, verdict(g)); }
+
+StabilityAnswer StabilityVerdicts::answer(const Vec<Q>& g, StabilityOutcome verdict) const {
+  return {scene_, g, arith_, std::move(verdict), std::nullopt, "", ""};
 }
 
 std::vector<StabilityOutcome> StabilityVerdicts::verdicts(const std::vector<Vec<Q>>& wrenches) const {
@@ -40,15 +42,6 @@ std::vector<StabilityOutcome> StabilityVerdicts::verdicts(const std::vector<Vec<
     each(*float_, [](const Vec<Q>& g) { return exact::to_double(g); });
   else
     each(*exact_, [](const Vec<Q>& g) -> const Vec<Q>& { return g; });
-  return out;
-}
-
-std::vector<StabilityAnswer> StabilityVerdicts::answers(const std::vector<Vec<Q>>& wrenches) const {
-  std::vector<StabilityOutcome> v = verdicts(wrenches);
-  std::vector<StabilityAnswer> out;
-  out.reserve(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i)
-    out.push_back({scene_, wrenches[i], arith_, std::move(v[i]), std::nullopt, "", ""});
   return out;
 }
 

@@ -24,11 +24,11 @@ class StabilityVerdicts {
   /// The answer for g: run_stability's without margin or certificate, except for lps (g's only) and the mode tree
   /// (walked whole by the preparation, where a single verdict stops at the first mode that moves).
   StabilityAnswer answer(const exact::Vec<exact::Q>& g) const;
+  /// The same from g's verdict (one of verdicts(...)).
+  StabilityAnswer answer(const exact::Vec<exact::Q>& g, StabilityOutcome verdict) const;
   /// The verdicts for many wrenches in a row, each verdict(g)'s (the same verdict, witnesses and counts; a system
   /// proved infeasible for an earlier wrench may be decided by that certificate instead of its LP).
   std::vector<StabilityOutcome> verdicts(const std::vector<exact::Vec<exact::Q>>& wrenches) const;
-  /// The same as answers (as answer(g) gives one).
-  std::vector<StabilityAnswer> answers(const std::vector<exact::Vec<exact::Q>>& wrenches) const;
   /// LPs solved while preparing.
   long preparation_lps() const;
 

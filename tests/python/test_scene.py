@@ -79,6 +79,16 @@ def test_stability_many_equals_single_verdicts():
     assert [s.verdict for s in scene.stability_many(WRENCHES, arith="float")] == verdicts[:len(WRENCHES)]
 
 
+def test_stability_many_results_outlive_their_scene():
+    # A batch's results build their objects from the batch's oracle, which they keep alive.
+    import gc
+
+    f = SCENES / "bt2002_fig10_pentagon_insert.json"
+    many = cc.Scene.from_file(f).stability_many(WRENCHES)
+    gc.collect()
+    assert [s.to_dict() for s in many] == [s.to_dict() for s in cc.Scene.from_file(f).stability_many(WRENCHES)]
+
+
 @pytest.mark.parametrize("name", ["bt2002_section7_disk.json", "bt2002_fig10_pentagon_insert.json"])
 def test_region_and_finger_equal_cli(name):
     scene = cc.Scene.from_file(SCENES / name)
