@@ -1,6 +1,8 @@
 // Many stability verdicts on one scene (a planner's question): `contactcert stability FILE --wrenches FILE` and
 // Python's Oracle. One solvers::StabilityOracle is prepared for the scene (the touching fixels, the mode tree with its
-// g-independent proofs, one LP per feasible moving mode); each verdict then solves 1 + (modes visited) LPs.
+// g-independent proofs, one LP per feasible moving mode); each verdict then decides 1 + (modes visited) LPs, in a
+// batch each infeasible one by a certificate of an earlier wrench where one applies (solvers/stability/
+// reused_certificates.h), else by its LP.
 #pragma once
 
 #include <array>
