@@ -3,11 +3,14 @@
 // options parsed from Python's strings by the same functions as the CLI's.
 #include <pybind11/stl.h>
 
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "python/bindings.h"
+#include "python/json_objects.h"
 #include "queries/finger_query.h"
 #include "queries/json_out.h"
 #include "queries/region_query.h"
@@ -31,29 +34,61 @@ WithCertificate stability(const Scene& s, const std::string& wrench, const std::
   return {queries::to_json(a).dump(), a.certificate_text};
 }
 
-/// Many verdicts on one scene from one prepared oracle (`stability --wrenches`), each as `stability --wrench`'s JSON.
+/// The verdicts of one batch, with the oracle that answers for them (the scene and arithmetic of their objects).
+struct Batch {
+  std::shared_ptr<const queries::StabilityVerdicts> oracle;
+  std::vector<exact::Vec<Q>> wrenches;
+  std::vector<queries::StabilityOutcome> verdicts;
+};
+
+/// One verdict of a batch: its `stability --wrench` JSON object, built (as json.loads would build it from the text,
+/// json_objects) only when Python first reads more than the verdict.
+class Verdict {
+ public:
+  Verdict(std::shared_ptr<const Batch> batch, std::size_t i) : batch_(std::move(batch)), i_(i) {}
+  py::object object() const {
+    return json_objects(queries::to_json(batch_->oracle->answer(batch_->wrenches[i_], batch_->verdicts[i_])));
+  }
+
+ private:
+  std::shared_ptr<const Batch> batch_;
+  std::size_t i_;
+};
+
+/// Many verdicts on one scene from one prepared oracle (`stability --wrenches`): per wrench its verdict's name and
+/// its Verdict.
 class Oracle {
  public:
   Oracle(const Scene& s, const std::string& arith, double time_limit)
       : common_(common(arith, time_limit)),
-        verdicts_(
-            answer(queries::with_limits(common_.arith, [&] { return queries::StabilityVerdicts(s.scene, common_); }))) {
-  }
-  std::vector<std::string> verdicts(const std::vector<std::string>& wrenches) const {
-    return answer(queries::with_limits(common_.arith, [&] {
-      std::vector<std::string> out;
-      out.reserve(wrenches.size());
-      for (std::size_t i = 0; i < wrenches.size(); ++i)
-        out.push_back(queries::to_json(verdicts_.answer(queries::parse_number_list(
-                                           wrenches[i], "wrenches[" + std::to_string(i) + "]", 3)))
-                          .dump());
-      return out;
-    }));
+        verdicts_(std::make_shared<const queries::StabilityVerdicts>(answer(
+            queries::with_limits(common_.arith, [&] { return queries::StabilityVerdicts(s.scene, common_); })))) {}
+  std::vector<std::pair<std::string, Verdict>> verdicts(const std::vector<std::string>& wrenches) const {
+    auto batch = std::make_shared<Batch>();
+    batch->oracle = verdicts_;
+    {
+      const py::gil_scoped_release release;
+      answer(queries::with_limits(common_.arith, [&] {
+        batch->wrenches.reserve(wrenches.size());
+        for (std::size_t i = 0; i < wrenches.size(); ++i)
+          batch->wrenches.push_back(queries::parse_number_list(wrenches[i], "wrenches[" + std::to_string(i) + "]", 3));
+        batch->verdicts = verdicts_->verdicts(batch->wrenches);
+        for (auto& v : batch->verdicts)  // the JSON object shows no proof: only the batch's memory would hold them
+          std::visit([](auto& r) { r.proofs.clear(); }, v);
+        return true;
+      }));
+    }
+    std::vector<std::pair<std::string, Verdict>> out;
+    out.reserve(batch->verdicts.size());
+    for (std::size_t i = 0; i < batch->verdicts.size(); ++i)
+      out.emplace_back(std::visit([](const auto& r) { return solvers::verdict_name(r.verdict); }, batch->verdicts[i]),
+                       Verdict(batch, i));
+    return out;
   }
 
  private:
   queries::CommonOptions common_;
-  queries::StabilityVerdicts verdicts_;
+  std::shared_ptr<const queries::StabilityVerdicts> verdicts_;
 };
 
 /// `stability --region [--wrench g]` ("" = no g), always exact.
@@ -84,9 +119,10 @@ void bind_stability(py::module_& m, py::class_<Scene>& scene) {
       .def("region_svg", &region_svg, Release())
       .def("finger", &finger, Release())
       .def("finger_svg", &finger_svg, Release());
+  py::class_<Verdict>(m, "Verdict").def("object", &Verdict::object);
   py::class_<Oracle>(m, "Oracle")
       .def(py::init<const Scene&, const std::string&, double>(), Release())
-      .def("verdicts", &Oracle::verdicts, Release());
+      .def("verdicts", &Oracle::verdicts);  // the verdicts without the GIL, their objects with it
 }
 
 }  // namespace contactcert::python

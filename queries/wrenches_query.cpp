@@ -24,8 +24,25 @@ StabilityOutcome StabilityVerdicts::verdict(const Vec<Q>& g) const {
   return exact_->verdict(g);
 }
 
-StabilityAnswer StabilityVerdicts::answer(const Vec<Q>& g) const {
-  return {scene_, g, arith_, verdict(g), std::nullopt, "", ""};
+StabilityAnswer StabilityVerdicts::answer(const Vec<Q>& g) const { return answer(g, verdict(g)); }
+
+StabilityAnswer StabilityVerdicts::answer(const Vec<Q>& g, StabilityOutcome verdict) const {
+  return {scene_, g, arith_, std::move(verdict), std::nullopt, "", ""};
+}
+
+std::vector<StabilityOutcome> StabilityVerdicts::verdicts(const std::vector<Vec<Q>>& wrenches) const {
+  std::vector<StabilityOutcome> out;
+  out.reserve(wrenches.size());
+  auto each = [&](const auto& oracle, auto convert) {
+    using T = typename std::decay_t<decltype(convert(wrenches.front()))>::Scalar;
+    solvers::ReusedCertificates<T> reuse;
+    for (const Vec<Q>& g : wrenches) out.emplace_back(oracle.verdict(convert(g), reuse));
+  };
+  if (float_)
+    each(*float_, [](const Vec<Q>& g) { return exact::to_double(g); });
+  else
+    each(*exact_, [](const Vec<Q>& g) -> const Vec<Q>& { return g; });
+  return out;
 }
 
 long StabilityVerdicts::preparation_lps() const {
@@ -74,8 +91,7 @@ WrenchesAnswer wrenches_answer(const SceneInput& input, const WrenchesOptions& o
   a.wrenches = read_wrenches(options.wrenches);
   const StabilityVerdicts oracle(input.scene, options.common);
   a.lps = oracle.preparation_lps();
-  for (const auto& g : a.wrenches) {
-    const StabilityOutcome r = oracle.verdict(g);
+  for (const StabilityOutcome& r : oracle.verdicts(a.wrenches)) {
     const solvers::StabilityVerdict v = std::visit([](const auto& x) { return x.verdict; }, r);
     a.verdicts.push_back(v);
     ++a.counts[static_cast<int>(v)];

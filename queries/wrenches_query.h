@@ -1,6 +1,8 @@
 // Many stability verdicts on one scene (a planner's question): `contactcert stability FILE --wrenches FILE` and
 // Python's Oracle. One solvers::StabilityOracle is prepared for the scene (the touching fixels, the mode tree with its
-// g-independent proofs, one LP per feasible moving mode); each verdict then solves 1 + (modes visited) LPs.
+// g-independent proofs, one LP per feasible moving mode); each verdict then decides 1 + (modes visited) LPs, in a
+// batch each infeasible one by a certificate of an earlier wrench where one applies (solvers/stability/
+// reused_certificates.h), else by its LP.
 #pragma once
 
 #include <array>
@@ -24,6 +26,11 @@ class StabilityVerdicts {
   /// The answer for g: run_stability's without margin or certificate, except for lps (g's only) and the mode tree
   /// (walked whole by the preparation, where a single verdict stops at the first mode that moves).
   StabilityAnswer answer(const exact::Vec<exact::Q>& g) const;
+  /// The same from g's verdict (one of verdicts(...)).
+  StabilityAnswer answer(const exact::Vec<exact::Q>& g, StabilityOutcome verdict) const;
+  /// The verdicts for many wrenches in a row, each verdict(g)'s (the same verdict, witnesses and counts; a system
+  /// proved infeasible for an earlier wrench may be decided by that certificate instead of its LP).
+  std::vector<StabilityOutcome> verdicts(const std::vector<exact::Vec<exact::Q>>& wrenches) const;
   /// LPs solved while preparing.
   long preparation_lps() const;
 

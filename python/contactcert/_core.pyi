@@ -35,7 +35,10 @@ class Scene:
 
 class Oracle:
     def __init__(self, scene: Scene, arith: str, time_limit: float, /) -> None: ...
-    def verdicts(self, wrenches: list[str], /) -> list[str]: ...
+    def verdicts(self, wrenches: list[str], /) -> list[tuple[str, Verdict]]: ...
+
+class Verdict:
+    def object(self) -> object: ...  # its JSON object, a dict[str, Any]
 
 class Ucp:
     @staticmethod

@@ -23,11 +23,18 @@ Directions = tuple[tuple[int, ...], ...]
 class Result:
     """A result as the CLI's --json object."""
 
-    def __init__(self, data: dict[str, Any], svg: Callable[[], str] | None = None,
+    def __init__(self, data: dict[str, Any] | Callable[[], dict[str, Any]], svg: Callable[[], str] | None = None,
                  certificate: Certificate | None = None) -> None:
-        self._data = data
+        self._made = data  # the object, or the function that builds it when first read (a batch's results)
         self._svg = svg  # a function drawing the picture, or None
         self.certificate = certificate  # a Certificate when the query wrote one
+
+    @property
+    def _data(self) -> dict[str, Any]:
+        made = self._made
+        if not isinstance(made, dict):
+            made = self._made = made()
+        return made
 
     def to_dict(self) -> dict[str, Any]:
         """The CLI's --json object for the same query."""
@@ -141,11 +148,16 @@ class Stability(Result):
     """Strong stability under one wrench (Balkcom-Trinkle 2002, section 7): the verdict with a resting and
     a moving solution where they exist."""
 
-    def __init__(self, data: dict[str, Any], certificate: Certificate | None = None) -> None:
+    def __init__(self, data: dict[str, Any] | Callable[[], dict[str, Any]], certificate: Certificate | None = None,
+                 verdict: str | None = None) -> None:
         super().__init__(data)
         self.certificate = certificate  # a Certificate when one was written
+        self._verdict = verdict  # known before the object is built (stability_many), else None
 
-    verdict = _field("verdict")
+    @property
+    def verdict(self) -> str:
+        """strongly_stable, weakly_stable or unstable."""
+        return self._verdict if self._verdict is not None else str(self._data["verdict"])
 
     @property
     def wrench(self) -> Vector:

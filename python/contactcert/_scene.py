@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from fractions import Fraction
-from typing import Any, Literal, Union
+from typing import Any, Literal, Union, cast
 
 from . import _core
 from ._results import Certificate
@@ -149,14 +149,16 @@ class Scene(FromSource[_core.Scene]):
                        time_limit: float = 0) -> list[Stability]:
         """`contactcert stability FILE --wrenches FILE`: the verdicts for many wrenches, from a StabilityOracle
         prepared once per scene and arithmetic (within `time_limit` seconds, 0 = none, else BudgetExceeded). Each
-        equals stability(g)'s except `lps`, which counts only the LPs solved for g."""
+        equals stability(g)'s except `lps`, which counts only the LPs solved for g. A result's object (to_dict()
+        and every property but `verdict`) is built when first read."""
         choice(arith, ARITHS, "--arith")
         time_limit = seconds(time_limit)
         oracle = self._oracles.get(arith)
         if oracle is None:
             oracle = self._oracles[arith] = _core.Oracle(self._core, arith, time_limit)
         texts = [vector_text(w, f"wrenches[{i}]") for i, w in enumerate(wrenches)]
-        return [Stability(json.loads(d)) for d in oracle.verdicts(texts)]
+        return [Stability(cast("Callable[[], dict[str, Any]]", v.object), verdict=name)
+                for name, v in oracle.verdicts(texts)]
 
     def modes(self, kinematic: bool = False, table2: Literal["strict", "printed"] = "strict", unions: bool = False,
               arith: Arith = "verified", certificate: Path | None = None, max_nodes: int | None = None,

@@ -82,32 +82,44 @@ ModeTree<T> walk_tree(const MotionModel<T>& model, const ModeAlphabet& alphabet,
     return walk_modes(model, alphabet, options, on_mode);
 }
 
-// One feasible mode as the verdict sees it: its name, system and LP.
+// One feasible mode as the verdict sees it: its name, system, LP and slot in ReusedCertificates (1 + its index).
 template <class T>
 struct ModeLp {
   const ModeString& name;
   const MotionSystem<T>& ms;
   const exact::StrictSolver<T>& solver;
+  std::size_t slot = 0;
 };
 
 // The verdict for g (SPEC section 7), in three steps: the resting LP; each kinematically feasible moving mode
 // but n..n in tree order until one moves (for_each_mode(visit) calls visit(ModeLp) per mode, stopping when it
 // returns false); and if no resting solution exists, n..n, which moves only if vdot != 0 (rolling() gives it).
 // kinematic_proofs(out) adds the dead prefixes to out.proofs once a resting solution makes them evidence.
+// With `reuse`, a system that one of its certificates proves infeasible for g is decided without its LP, and the
+// certificates of the LPs solved are kept there.
 template <class T, class ForEachMode, class Rolling, class KinematicProofs>
 StabilityResult<T> decide(const std::vector<Index>& touching, const MotionSystem<T>& rest,
                           const exact::StrictSolver<T>& rest_solver, const Vec<T>& g, ForEachMode&& for_each_mode,
-                          Rolling&& rolling, KinematicProofs&& kinematic_proofs) {
+                          Rolling&& rolling, KinematicProofs&& kinematic_proofs, ReusedCertificates<T>* reuse) {
   StabilityResult<T> out;
   out.touching = touching;
-  auto count = [&out](const exact::StrictFeasibility<T>& f) {
-    out.lps += f.lps;
-    if (f.rounded_float_checked) out.lps_checked_from_float += f.lps;
+  auto solve = [&](std::size_t slot, const MotionSystem<T>& ms, const exact::StrictSolver<T>& solver) {
+    exact::StrictFeasibility<T> f;
+    if (const Vec<T>* y = reuse ? reuse->find(slot, g) : nullptr) {
+      f.motzkin = *y;  // status kInfeasible
+      ++out.lps;
+      ++out.lps_reused;
+    } else {
+      f = solver.solve(ms.rhs(g));
+      out.lps += f.lps;
+      if (f.rounded_float_checked) out.lps_checked_from_float += f.lps;
+      if (reuse && f.status == StrictStatus::kInfeasible) reuse->keep(slot, ms.system, f.motzkin);
+    }
+    return f;
   };
 
   // Resting solutions: J c + g = 0 with every c in its static friction cone.
-  auto r = rest_solver.solve(rest.rhs(g));
-  count(r);
+  auto r = solve(0, rest, rest_solver);
   out.has_resting = r.status == StrictStatus::kFeasible;
   if (out.has_resting)
     out.resting_forces = rest.forces(r.x);
@@ -117,8 +129,7 @@ StabilityResult<T> decide(const std::vector<Index>& touching, const MotionSystem
   // A moving solution in mode m, or its proof that there is none (evidence only beside a resting solution).
   auto try_mode = [&](const ModeLp<T>& m, bool rolling_mode) {
     ++out.modes_checked;
-    auto f = m.solver.solve(m.ms.rhs(g));
-    count(f);
+    auto f = solve(m.slot, m.ms, m.solver);
     if (f.status == StrictStatus::kFeasible && (!rolling_mode || nonzero<T>(m.ms.acceleration(f.x)))) {
       out.has_moving = true;
       out.moving = {m.name, m.ms.forces(f.x), m.ms.acceleration(f.x)};
@@ -173,18 +184,29 @@ StabilityOracle<T>::StabilityOracle(const geometry::PlanarScene& full, const Sta
 
 template <class T>
 StabilityResult<T> StabilityOracle<T>::verdict(const Vec<T>& g) const {
-  StabilityResult<T> out = decide(
+  return decide_for(g, nullptr);
+}
+
+template <class T>
+StabilityResult<T> StabilityOracle<T>::verdict(const Vec<T>& g, ReusedCertificates<T>& reuse) const {
+  return decide_for(g, &reuse);
+}
+
+template <class T>
+StabilityResult<T> StabilityOracle<T>::decide_for(const Vec<T>& g, ReusedCertificates<T>* reuse) const {
+  StabilityResult<T> out = solvers::decide(
       touching_, rest_, rest_solver_, g,
       [this](auto&& visit) {
         for (std::size_t i = 0; i + 1 < modes_.size(); ++i)
-          if (!visit(ModeLp<T>{modes_[i].name, modes_[i].ms, modes_[i].solver})) return;
+          if (!visit(ModeLp<T>{modes_[i].name, modes_[i].ms, modes_[i].solver, 1 + i})) return;
       },
       [this] {
-        return ModeLp<T>{modes_.back().name, modes_.back().ms, modes_.back().solver};
+        return ModeLp<T>{modes_.back().name, modes_.back().ms, modes_.back().solver, modes_.size()};
       },
       [this](StabilityResult<T>& r) {
         for (std::size_t j = 0; j < kinematic_proofs_->size(); ++j) r.proofs.push_shared(kinematic_proofs_, j);
-      });
+      },
+      reuse);
   out.modes_kinematically_feasible = static_cast<long>(modes_.size()) - 1;
   out.tree_nodes = tree_.nodes;
   out.dead_prefixes = static_cast<long>(kinematic_proofs_->size());
@@ -222,7 +244,8 @@ StabilityResult<T> strong_stability(const geometry::PlanarScene& full, const Vec
       },
       [&](StabilityResult<T>& r) {
         for (ModeProof<T>& p : dead_prefix_proofs(std::move(tree.dead))) r.proofs.push_back(std::move(p));
-      });
+      },
+      static_cast<ReusedCertificates<T>*>(nullptr));
   out.lps += tree.lps;
   out.lps_checked_from_float += tree.lps_checked_from_float;
   out.modes_kinematically_feasible = 0;

@@ -22,6 +22,7 @@
 #include "geometry/planar_scene.h"
 #include "solvers/stability/mode_tree.h"
 #include "solvers/stability/motion_system.h"
+#include "solvers/stability/reused_certificates.h"
 
 namespace contactcert::solvers {
 
@@ -112,9 +113,13 @@ struct StabilityResult {
   bool has_moving = false;
   MotionWitness<T> moving;  ///< a moving solution, if has_moving
   ModeProofs<T> proofs;     ///< strongly stable: the dead prefixes, then one proof per feasible moving mode
-  long lps = 0;             ///< LPs solved (for strong_stability: including the kinematic ones)
+  /// LPs solved (for strong_stability: including the kinematic ones), and systems decided by a reused certificate
+  /// instead (each in place of its LP).
+  long lps = 0;
   /// Of these, decided by a float LP's rounded answer checked exactly (no rational LP).
   long lps_checked_from_float = 0;
+  /// Of these, decided by a certificate of an earlier verdict (StabilityOracle::verdict with ReusedCertificates).
+  long lps_reused = 0;
   long modes_checked = 0;                 ///< moving modes whose system in g was solved (n..n included)
   long modes_kinematically_feasible = 0;  ///< feasible moving modes the mode tree found (all, if it finished)
   long tree_nodes = 0;                    ///< prefixes the mode tree visited
@@ -147,6 +152,11 @@ class StabilityOracle {
   explicit StabilityOracle(const geometry::PlanarScene& scene, const StabilityOptions& options = {});
   /// The verdict for wrench g, as strong_stability; its lps count only the LPs solved for g.
   StabilityResult<T> verdict(const Vec<T>& g) const;
+  /// The same verdict, witnesses and counts for g as verdict(g), for one of many wrenches in a row: a system that a
+  /// certificate kept in `reuse` by an earlier verdict proves infeasible for g is decided by that certificate (an
+  /// exact dot product, counted in lps and lps_reused) instead of its LP, and the certificates of the LPs solved
+  /// are kept there. Exact T only (reuse is a no-op otherwise); a proof may differ from verdict(g)'s, valid alike.
+  StabilityResult<T> verdict(const Vec<T>& g, ReusedCertificates<T>& reuse) const;
   /// LPs solved while preparing (the mode tree's), and how many of them were decided by a float LP's rounded
   /// answer checked exactly.
   long preparation_lps() const { return tree_.lps; }
@@ -160,6 +170,8 @@ class StabilityOracle {
     MotionSystem<T> ms;
     exact::StrictSolver<T> solver;
   };
+  StabilityResult<T> decide_for(const Vec<T>& g, ReusedCertificates<T>* reuse) const;
+
   std::vector<Eigen::Index> touching_;
   MotionModel<T> model_;  ///< of the touching fixels only
   MotionSystem<T> rest_;

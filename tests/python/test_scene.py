@@ -61,17 +61,32 @@ def test_stability_margin_equals_cli():
 
 
 def test_stability_many_equals_single_verdicts():
+    # A batch reuses a system's certificate from an earlier wrench in place of its LP (mixed wrenches, each twice)
+    # and builds a result's object when first read: the verdicts, witnesses and counts are the single calls'.
     scene = cc.Scene.from_file(SCENES / "bt2002_section7_disk.json")
-    many = scene.stability_many(WRENCHES)
-    for w, batch in zip(WRENCHES, many):
+    wrenches = WRENCHES + [[i % 7 - 3, -5 + i % 3, i % 5 - 2] for i in range(60)] * 2
+    many = scene.stability_many(wrenches)
+    verdicts = [s.verdict for s in many]  # read before any object is built
+    for w, batch, verdict in zip(wrenches, many, verdicts):
         single = scene.stability(w).to_dict()
         b = batch.to_dict()
+        assert verdict == b["verdict"] and batch == scene.stability_many([w])[0]
         # The oracle's LP count leaves out its preparation, and a single verdict walks the mode tree only until
         # a mode moves: the counts differ, the answers do not.
         for key in ("lps", "mode_tree", "modes_kinematically_feasible"):
             del single[key], b[key]
         assert b == single
-    assert [s.verdict for s in scene.stability_many(WRENCHES, arith="float")] == [s.verdict for s in many]
+    assert [s.verdict for s in scene.stability_many(WRENCHES, arith="float")] == verdicts[:len(WRENCHES)]
+
+
+def test_stability_many_results_outlive_their_scene():
+    # A batch's results build their objects from the batch's oracle, which they keep alive.
+    import gc
+
+    f = SCENES / "bt2002_fig10_pentagon_insert.json"
+    many = cc.Scene.from_file(f).stability_many(WRENCHES)
+    gc.collect()
+    assert [s.to_dict() for s in many] == [s.to_dict() for s in cc.Scene.from_file(f).stability_many(WRENCHES)]
 
 
 @pytest.mark.parametrize("name", ["bt2002_section7_disk.json", "bt2002_fig10_pentagon_insert.json"])

@@ -211,6 +211,47 @@ TEST(StabilityOracle, SharedKinematicProofsOutliveTheOracleAndEqualTheColdOnes) 
   }
 }
 
+TEST(StabilityOracle, ReusedCertificatesGiveTheSameVerdictsWitnessesAndCounts) {
+  // A batch decides a system by a certificate kept from an earlier wrench where it proves infeasibility for g:
+  // every verdict, witness and count must be verdict(g)'s, the proofs (some now reused) must verify, and some
+  // systems must indeed be decided without their LP. The wrenches: the cells' representatives (on the faces, where
+  // y_dyn . g = 0), random ones, and all of them again.
+  for (const geometry::PlanarScene& scene : {section7("1.2"), section7("0.3"), three_fixel_disk()}) {
+    const StabilityOracle<Q> oracle(scene);
+    std::vector<Vec<Q>> wrenches;
+    for (const auto& cell : stable_region<Q>(scene).cells) wrenches.push_back(cell.point);
+    std::mt19937_64 rng(31);
+    std::uniform_int_distribution<int> d(-4, 4);
+    for (int t = 0; t < 60; ++t) wrenches.push_back(random_wrench(d, rng));
+    const std::size_t n = wrenches.size();
+    for (std::size_t i = 0; i < n; ++i) wrenches.push_back(wrenches[i]);
+    ReusedCertificates<Q> reuse;
+    long reused = 0;
+    for (const Vec<Q>& g : wrenches) {
+      const auto r = oracle.verdict(g, reuse);
+      const auto alone = oracle.verdict(g);
+      EXPECT_EQ(r.verdict, alone.verdict) << g.transpose();
+      EXPECT_EQ(r.has_resting, alone.has_resting);
+      EXPECT_EQ(r.resting_forces, alone.resting_forces) << g.transpose();
+      EXPECT_EQ(r.has_moving, alone.has_moving);
+      EXPECT_EQ(r.moving.mode.text(), alone.moving.mode.text());
+      EXPECT_EQ(r.moving.forces, alone.moving.forces);
+      EXPECT_EQ(r.moving.acceleration, alone.moving.acceleration);
+      EXPECT_EQ(r.lps, alone.lps);
+      EXPECT_EQ(r.modes_checked, alone.modes_checked);
+      EXPECT_EQ(r.proofs.size(), alone.proofs.size());
+      EXPECT_EQ(alone.lps_reused, 0);
+      EXPECT_EQ(checker::check_stability(scene, g, r), "") << g.transpose();
+      reused += r.lps_reused;
+    }
+    EXPECT_GT(reused, static_cast<long>(n));  // the second pass at least reuses
+  }
+  // Float certificates are never reused (a float dot product proves nothing).
+  const StabilityOracle<double> floats(section7("1.2"));
+  ReusedCertificates<double> none;
+  for (int t = 0; t < 3; ++t) EXPECT_EQ(floats.verdict(exact::to_double(wrench(0, -1, 0)), none).lps_reused, 0);
+}
+
 TEST(StabilityOracle, CorruptedFloatFirstEvidenceIsRejected) {
   const auto scene = section7("1.2");
   const StabilityOracle<Q> oracle(scene);
