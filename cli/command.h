@@ -43,18 +43,10 @@ int report_limit(const std::string& command, const queries::Limit& limit, bool j
 /// backstop of --time-limit (main.cpp), and of a command's own default time budget.
 void start_watchdog(const std::string& command, double limit);
 
-// One registration function per subcommand; each stores its work in `action` when selected.
-void register_demo(CLI::App& app, Action& action);
-void register_ucp(CLI::App& app, Action& action);
-void register_check(CLI::App& app, Action& action);
-void register_stability(CLI::App& app, Action& action);
-void register_insert(CLI::App& app, Action& action);
-void register_cone(CLI::App& app, Action& action);
-void register_modes(CLI::App& app, Action& action);
-void register_convert(CLI::App& app, Action& action);
-void register_bench(CLI::App& app, Action& action);
-void register_design(CLI::App& app, Action& action);
-void register_simulate(CLI::App& app, Action& action);
-void register_assembly(CLI::App& app, Action& action);
+/// A subcommand's registration: adds it to `app` and, when it is selected, stores its work in `action`.
+using Register = void(CLI::App& app, Action& action);
+/// One per subcommand (cli/<command>.cpp), in the order of `contactcert --help`.
+Register register_demo, register_ucp, register_check, register_stability, register_insert, register_modes,
+    register_cone, register_convert, register_bench, register_design, register_simulate, register_assembly;
 
 }  // namespace contactcert::cli

@@ -48,18 +48,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "contactcert " CONTACTCERT_VERSION);
   app.require_subcommand(1);
   cli::Action action;
-  cli::register_demo(app, action);
-  cli::register_ucp(app, action);
-  cli::register_check(app, action);
-  cli::register_stability(app, action);
-  cli::register_insert(app, action);
-  cli::register_modes(app, action);
-  cli::register_cone(app, action);
-  cli::register_convert(app, action);
-  cli::register_bench(app, action);
-  cli::register_design(app, action);
-  cli::register_simulate(app, action);
-  cli::register_assembly(app, action);
+  for (cli::Register* add : {cli::register_demo, cli::register_ucp, cli::register_check, cli::register_stability,
+                             cli::register_insert, cli::register_modes, cli::register_cone, cli::register_convert,
+                             cli::register_bench, cli::register_design, cli::register_simulate, cli::register_assembly})
+    add(app, action);
   for (CLI::App* sub : app.get_subcommands({}))
     if (sub->get_option_no_throw("--time-limit") == nullptr)
       sub->add_option("--time-limit", cli::no_time_limit,
