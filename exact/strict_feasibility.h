@@ -74,6 +74,11 @@ class StrictSolver {
   explicit StrictSolver(const SparseStrictSystem<T>& system, Arith arith = Arith::kVerified);
   /// Strict feasibility of the system with right-hand side b.
   StrictFeasibility<T> solve(const Vec<T>& b) const;
+  /// The first step of solve(b) alone, for T = Q: the float LP's point or certificate, rounded and checked exactly;
+  /// nullopt where solve(b) would go on to the verified or exact LP, and then *float_feasible tells whether the
+  /// float LP found the system feasible (false if it ran out of pivots, or with no float step: kExact, or rows not
+  /// in 64 bits). For a caller that needs an exact answer only when it is "infeasible". Other T: solve(b).
+  std::optional<StrictFeasibility<T>> solve_rounded(const Vec<T>& b, bool* float_feasible) const;
 
  private:
   template <class ForEachEntry>
