@@ -18,8 +18,23 @@
 namespace contactcert::solvers::assembly {
 
 /// Whether y is a Motzkin certificate of s (A x = b with its signs): (y^T A)_j = 0 on free columns, >= 0 on the
-/// others, y^T b <= 0, and y^T b < 0 or (y^T A)_j > 0 on a strict column. Linear in the entries.
+/// others, y^T b <= 0, and y^T b < 0 or (y^T A)_j > 0 on a strict column.
 bool motzkin_holds(const AssemblySystem& s, const Vec<Q>& y);
+
+/// motzkin_holds for many y on one system, each given by its non-zero entries (row, value): the entries of A are
+/// sorted by row once, and a test reads only the rows of y's support (a certificate of a local contradiction weighs
+/// few), in time linear in their entries.
+class MotzkinTest {
+ public:
+  explicit MotzkinTest(const AssemblySystem& s);  ///< s must outlive the test
+  bool holds(const std::vector<std::pair<Eigen::Index, const Q*>>& y);
+
+ private:
+  const AssemblySystem& s_;
+  std::vector<std::size_t> start_, order_;  ///< row r's entries: entries[order_[start_[r] .. start_[r + 1])]
+  std::vector<Q> yA_;                       ///< scratch, zero between tests
+  std::vector<Eigen::Index> touched_;       ///< the columns of yA_ a test wrote
+};
 
 /// The certificates of the latest dead prefixes, a few per prefix length, by row label.
 class CertificateMemory {
@@ -35,7 +50,7 @@ class CertificateMemory {
   using Labelled = std::vector<std::pair<Eigen::Index, Q>>;  ///< (row label, multiplier), non-zero ones
   std::size_t per_length_;
   std::vector<std::deque<Labelled>> by_length_;
-  std::vector<const Q*> by_label_;  ///< scratch: a remembered certificate's multiplier per label
+  std::vector<Eigen::Index> row_of_label_;  ///< scratch: the row of each label in the system at hand, or -1
 };
 
 }  // namespace contactcert::solvers::assembly
