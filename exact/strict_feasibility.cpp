@@ -249,14 +249,21 @@ StrictSolver<T>::StrictSolver(const SparseStrictSystem<T>& s, Arith arith)
 template <class T>
 StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
   if constexpr (std::is_same_v<T, Q>) {
+    bool float_feasible = false;
+    if (std::optional<StrictFeasibility<Q>> r = solve_rounded(b, &float_feasible)) return std::move(*r);
+  }
+  return solve_unrounded(b);
+}
+
+template <class T>
+StrictFeasibility<T> StrictSolver<T>::solve_unrounded(const Vec<T>& b) const {
+  if constexpr (std::is_same_v<T, Q>) {
     if (!integer_) {
       LpProblem<Q> lp = strict_lp<Q>(A_, is_free_, strict_columns_);
       lp.b.head(m_) = b;
       return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp, with_duals()) : solve_lp_verified(lp, with_duals()),
                          m_, n_, strict_columns_);
     }
-    bool float_feasible = false;
-    if (std::optional<StrictFeasibility<Q>> r = solve_rounded(b, &float_feasible)) return std::move(*r);
     // The verified LP on the integer rows, right-hand side L o b: the same points; a certificate y' of these
     // rows is y = L o y' for A (y^T A = y'^T (L o A), y^T b = y'^T (L o b)).
     const std::vector<i64>& L = integer_->row_scale;

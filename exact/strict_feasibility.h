@@ -79,6 +79,9 @@ class StrictSolver {
   /// float LP found the system feasible (false if it ran out of pivots, or with no float step: kExact, or rows not
   /// in 64 bits). For a caller that needs an exact answer only when it is "infeasible". Other T: solve(b).
   std::optional<StrictFeasibility<T>> solve_rounded(const Vec<T>& b, bool* float_feasible) const;
+  /// The rest of solve(b), for a caller whose solve_rounded(b) gave nullopt: the verified LP (for kExact or rows
+  /// not in 64 bits, the exact or verified LP on the rows as given). Other T: solve(b).
+  StrictFeasibility<T> solve_unrounded(const Vec<T>& b) const;
 
  private:
   template <class ForEachEntry>

@@ -13,17 +13,14 @@ namespace {
 exact::StrictFeasibility<Q> solve(const AssemblySystem& s, exact::Arith arith, bool need_point = true) {
   try {
     const exact::StrictSolver<Q> solver(s.system, arith);
-    if (!need_point) {
-      bool float_feasible = false;
-      if (std::optional<exact::StrictFeasibility<Q>> f = solver.solve_rounded(s.b, &float_feasible))
-        return std::move(*f);
-      if (float_feasible) {
-        exact::StrictFeasibility<Q> f;
-        f.status = exact::StrictStatus::kFeasible;
-        return f;
-      }
+    bool float_feasible = false;
+    if (std::optional<exact::StrictFeasibility<Q>> f = solver.solve_rounded(s.b, &float_feasible)) return std::move(*f);
+    if (float_feasible && !need_point) {
+      exact::StrictFeasibility<Q> f;
+      f.status = exact::StrictStatus::kFeasible;
+      return f;
     }
-    return solver.solve(s.b);
+    return solver.solve_unrounded(s.b);
   } catch (const exact::BudgetExceeded&) {
     if (arith == exact::Arith::kExact) throw;
     return exact::StrictSolver<Q>(s.system, exact::Arith::kExact).solve(s.b);
