@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "exact/arith.h"
+#include "exact/integer_system.h"
 #include "exact/lp_problem.h"
 #include "exact/number.h"
-#include "exact/integer_system.h"
 
 namespace contactcert::exact {
 

@@ -1,6 +1,8 @@
 #include "solvers/assembly/assembly_certificate_memory.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace contactcert::solvers::assembly {
 
@@ -16,16 +18,53 @@ MotzkinTest::MotzkinTest(const AssemblySystem& s) : s_(s), start_(static_cast<st
   for (std::size_t t = 0; t < E.size(); ++t) order_[next[static_cast<std::size_t>(E[t].row)]++] = t;
 }
 
-bool MotzkinTest::holds(const std::vector<std::pair<Index, const Q*>>& y) {
+bool MotzkinTest::plausible(const std::vector<Multiplier>& y) {
+  const exact::SparseStrictSystem<Q>& S = s_.system;
+  constexpr double kSlack = 1e-9;
+  approx_.resize(S.entries.size(), std::numeric_limits<double>::quiet_NaN());
+  yA_approx_.resize(static_cast<std::size_t>(S.cols), 0.0);
+  magnitude_.resize(static_cast<std::size_t>(S.cols), 0.0);
+  for (const Multiplier& m : y)
+    for (std::size_t t = start_[static_cast<std::size_t>(m.row)]; t < start_[static_cast<std::size_t>(m.row) + 1];
+         ++t) {
+      const exact::Entry<Q>& e = S.entries[order_[t]];
+      double& a = approx_[order_[t]];
+      if (std::isnan(a)) a = e.value.get_d();
+      const auto j = static_cast<std::size_t>(e.col);
+      if (magnitude_[j] == 0) touched_.push_back(e.col);
+      yA_approx_[j] += m.approx * a;
+      magnitude_[j] += std::abs(m.approx * a);
+    }
+  bool ok = true;
+  for (const Index j : touched_) {
+    const auto u = static_cast<std::size_t>(j);
+    const double v = yA_approx_[u], slack = kSlack * magnitude_[u];
+    ok = ok && (!std::isfinite(slack) || (S.is_free[u] ? std::abs(v) <= slack : v >= -slack));
+    yA_approx_[u] = magnitude_[u] = 0;
+  }
+  touched_.clear();
+  double yb = 0, yb_magnitude = 0;
+  for (const Multiplier& m : y)
+    if (sgn(s_.b(m.row)) != 0) {
+      const double t = m.approx * s_.b(m.row).get_d();
+      yb += t;
+      yb_magnitude += std::abs(t);
+    }
+  return ok && (!std::isfinite(yb_magnitude) || yb <= kSlack * yb_magnitude);
+}
+
+bool MotzkinTest::holds(const std::vector<Multiplier>& y) {
+  if (!plausible(y)) return false;
   const exact::SparseStrictSystem<Q>& S = s_.system;
   yA_.resize(static_cast<std::size_t>(S.cols));
   // y^T A over the entries of y's rows; the columns they miss have (y^T A)_j = 0, which every sign allows.
-  for (const auto& [row, value] : y)
-    for (std::size_t t = start_[static_cast<std::size_t>(row)]; t < start_[static_cast<std::size_t>(row) + 1]; ++t) {
+  for (const Multiplier& m : y)
+    for (std::size_t t = start_[static_cast<std::size_t>(m.row)]; t < start_[static_cast<std::size_t>(m.row) + 1];
+         ++t) {
       const exact::Entry<Q>& e = S.entries[order_[t]];
       Q& acc = yA_[static_cast<std::size_t>(e.col)];
       if (sgn(acc) == 0) touched_.push_back(e.col);
-      acc += *value * e.value;
+      acc += *m.value * e.value;
     }
   bool sign_ok = true, strict_positive = false;
   for (const Index j : touched_) {
@@ -38,16 +77,16 @@ bool MotzkinTest::holds(const std::vector<std::pair<Index, const Q*>>& y) {
   touched_.clear();
   if (!sign_ok) return false;
   Q yb = 0;
-  for (const auto& [row, value] : y)
-    if (sgn(s_.b(row)) != 0) yb += *value * s_.b(row);
+  for (const Multiplier& m : y)
+    if (sgn(s_.b(m.row)) != 0) yb += *m.value * s_.b(m.row);
   return sgn(yb) < 0 || (sgn(yb) == 0 && strict_positive);
 }
 
 bool motzkin_holds(const AssemblySystem& s, const Vec<Q>& y) {
   if (y.size() != s.system.rows) return false;
-  std::vector<std::pair<Index, const Q*>> support;
+  std::vector<Multiplier> support;
   for (Index i = 0; i < y.size(); ++i)
-    if (sgn(y(i)) != 0) support.emplace_back(i, &y(i));
+    if (sgn(y(i)) != 0) support.push_back({i, &y(i), y(i).get_d()});
   return MotzkinTest(s).holds(support);
 }
 
@@ -60,15 +99,15 @@ std::optional<Vec<Q>> CertificateMemory::recall(const AssemblySystem& s, std::si
   for (std::size_t r = 0; r < s.row_label.size(); ++r)
     row_of_label_[static_cast<std::size_t>(s.row_label[r])] = static_cast<Index>(r);
   MotzkinTest test(s);
-  std::vector<std::pair<Index, const Q*>> y;  // a remembered certificate on the rows of s (zero on the others)
+  std::vector<Multiplier> y;  // a remembered certificate on the rows of s (zero on the others)
   for (auto it = list.begin(); it != list.end(); ++it) {
     y.clear();
-    for (const auto& [label, value] : *it)
-      if (label < labels && row_of_label_[static_cast<std::size_t>(label)] >= 0)
-        y.emplace_back(row_of_label_[static_cast<std::size_t>(label)], &value);
+    for (const Weight& w : *it)
+      if (w.label < labels && row_of_label_[static_cast<std::size_t>(w.label)] >= 0)
+        y.push_back({row_of_label_[static_cast<std::size_t>(w.label)], &w.value, w.approx});
     if (!test.holds(y)) continue;
     Vec<Q> out = Vec<Q>::Zero(s.system.rows);
-    for (const auto& [row, value] : y) out(row) = *value;
+    for (const Multiplier& m : y) out(m.row) = *m.value;
     std::rotate(list.begin(), it, it + 1);
     return out;
   }
@@ -79,7 +118,7 @@ void CertificateMemory::remember(const AssemblySystem& s, std::size_t length, co
   if (length >= by_length_.size()) by_length_.resize(length + 1);
   Labelled l;
   for (Index r = 0; r < y.size(); ++r)
-    if (sgn(y(r)) != 0) l.emplace_back(s.row_label[static_cast<std::size_t>(r)], y(r));
+    if (sgn(y(r)) != 0) l.push_back({s.row_label[static_cast<std::size_t>(r)], y(r), y(r).get_d()});
   std::deque<Labelled>& list = by_length_[length];
   list.push_front(std::move(l));
   if (list.size() > per_length_) list.pop_back();
