@@ -149,9 +149,10 @@ std::optional<StrictFeasibility<Q>> check_rounded(const IntegerLp& ilp, const St
 
 // The float LP on the integer rows, its point or certificate rounded to fractions and checked exactly;
 // nullopt if the check fails, a number outgrows 128 bits or the float LP runs out of pivots.
+// *float_feasible: whether the float LP found the system feasible.
 std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const LpProblem<double>& hint,
                                                   const std::vector<bool>& is_free, const std::vector<bool>& strict,
-                                                  const std::vector<Index>& S, const Vec<Q>& b) {
+                                                  const std::vector<Index>& S, const Vec<Q>& b, bool* float_feasible) {
   const Index m = ilp.rows(), n = ilp.cols();
   Z d;
   const std::optional<std::vector<i64>> B = integer_rhs(ilp, b, d);
@@ -160,6 +161,7 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
   try {
     const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp, with_duals()), m, n, S);
+    *float_feasible = f.status == StrictStatus::kFeasible;
     return check_rounded(ilp, f, is_free, strict, *B, d);
   } catch (const RingOverflow&) {
     return std::nullopt;
@@ -247,14 +249,21 @@ StrictSolver<T>::StrictSolver(const SparseStrictSystem<T>& s, Arith arith)
 template <class T>
 StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
   if constexpr (std::is_same_v<T, Q>) {
+    bool float_feasible = false;
+    if (std::optional<StrictFeasibility<Q>> r = solve_rounded(b, &float_feasible)) return std::move(*r);
+  }
+  return solve_unrounded(b);
+}
+
+template <class T>
+StrictFeasibility<T> StrictSolver<T>::solve_unrounded(const Vec<T>& b) const {
+  if constexpr (std::is_same_v<T, Q>) {
     if (!integer_) {
       LpProblem<Q> lp = strict_lp<Q>(A_, is_free_, strict_columns_);
       lp.b.head(m_) = b;
       return read_strict(arith_ == Arith::kExact ? solve_lp<Q>(lp, with_duals()) : solve_lp_verified(lp, with_duals()),
                          m_, n_, strict_columns_);
     }
-    if (std::optional<StrictFeasibility<Q>> r = rounded_solve(*integer_, hint_, is_free_, strict_, strict_columns_, b))
-      return std::move(*r);
     // The verified LP on the integer rows, right-hand side L o b: the same points; a certificate y' of these
     // rows is y = L o y' for A (y^T A = y'^T (L o A), y^T b = y'^T (L o b)).
     const std::vector<i64>& L = integer_->row_scale;
@@ -268,6 +277,17 @@ StrictFeasibility<T> StrictSolver<T>::solve(const Vec<T>& b) const {
     LpProblem<T> lp = hint_;
     lp.b.head(m_) = b;
     return read_strict(solve_lp<T>(lp, with_duals()), m_, n_, strict_columns_);
+  }
+}
+
+template <class T>
+std::optional<StrictFeasibility<T>> StrictSolver<T>::solve_rounded(const Vec<T>& b, bool* float_feasible) const {
+  *float_feasible = false;
+  if constexpr (std::is_same_v<T, Q>) {
+    if (!integer_) return std::nullopt;
+    return rounded_solve(*integer_, hint_, is_free_, strict_, strict_columns_, b, float_feasible);
+  } else {
+    return solve(b);
   }
 }
 

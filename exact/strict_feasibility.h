@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "exact/arith.h"
+#include "exact/integer_system.h"
 #include "exact/lp_problem.h"
 #include "exact/number.h"
-#include "exact/integer_system.h"
 
 namespace contactcert::exact {
 
@@ -74,6 +74,14 @@ class StrictSolver {
   explicit StrictSolver(const SparseStrictSystem<T>& system, Arith arith = Arith::kVerified);
   /// Strict feasibility of the system with right-hand side b.
   StrictFeasibility<T> solve(const Vec<T>& b) const;
+  /// The first step of solve(b) alone, for T = Q: the float LP's point or certificate, rounded and checked exactly;
+  /// nullopt where solve(b) would go on to the verified or exact LP, and then *float_feasible tells whether the
+  /// float LP found the system feasible (false if it ran out of pivots, or with no float step: kExact, or rows not
+  /// in 64 bits). For a caller that needs an exact answer only when it is "infeasible". Other T: solve(b).
+  std::optional<StrictFeasibility<T>> solve_rounded(const Vec<T>& b, bool* float_feasible) const;
+  /// The rest of solve(b), for a caller whose solve_rounded(b) gave nullopt: the verified LP (for kExact or rows
+  /// not in 64 bits, the exact or verified LP on the rows as given). Other T: solve(b).
+  StrictFeasibility<T> solve_unrounded(const Vec<T>& b) const;
 
  private:
   template <class ForEachEntry>

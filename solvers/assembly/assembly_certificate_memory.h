@@ -18,8 +18,34 @@
 namespace contactcert::solvers::assembly {
 
 /// Whether y is a Motzkin certificate of s (A x = b with its signs): (y^T A)_j = 0 on free columns, >= 0 on the
-/// others, y^T b <= 0, and y^T b < 0 or (y^T A)_j > 0 on a strict column. Linear in the entries.
+/// others, y^T b <= 0, and y^T b < 0 or (y^T A)_j > 0 on a strict column.
 bool motzkin_holds(const AssemblySystem& s, const Vec<Q>& y);
+
+/// A non-zero entry of a vector y over a system's rows, with its value in doubles.
+struct Multiplier {
+  Eigen::Index row;
+  const Q* value;
+  double approx;
+};
+
+/// motzkin_holds for many y on one system, each given by its non-zero entries: the entries of A are sorted by row
+/// once, and a test reads only the rows of y's support (a certificate of a local contradiction weighs few). It first
+/// computes y^T A and y^T b in doubles and rejects y where a sign condition fails by far more than their rounding
+/// error (1e-9 of the sum of the terms' magnitudes); only a y that passes is checked exactly, which decides.
+class MotzkinTest {
+ public:
+  explicit MotzkinTest(const AssemblySystem& s);  ///< s must outlive the test
+  bool holds(const std::vector<Multiplier>& y);
+
+ private:
+  bool plausible(const std::vector<Multiplier>& y);
+  const AssemblySystem& s_;
+  std::vector<std::size_t> start_, order_;  ///< row r's entries: entries[order_[start_[r] .. start_[r + 1])]
+  std::vector<double> approx_;              ///< the entries in doubles, NaN until first read
+  std::vector<Q> yA_;                       ///< scratch, zero between tests
+  std::vector<double> yA_approx_, magnitude_;
+  std::vector<Eigen::Index> touched_;  ///< the columns of yA_ a test wrote
+};
 
 /// The certificates of the latest dead prefixes, a few per prefix length, by row label.
 class CertificateMemory {
@@ -32,10 +58,15 @@ class CertificateMemory {
   void remember(const AssemblySystem& s, std::size_t length, const Vec<Q>& y);
 
  private:
-  using Labelled = std::vector<std::pair<Eigen::Index, Q>>;  ///< (row label, multiplier), non-zero ones
+  struct Weight {
+    Eigen::Index label;
+    Q value;
+    double approx;
+  };
+  using Labelled = std::vector<Weight>;  ///< the non-zero multipliers by row label
   std::size_t per_length_;
   std::vector<std::deque<Labelled>> by_length_;
-  std::vector<const Q*> by_label_;  ///< scratch: a remembered certificate's multiplier per label
+  std::vector<Eigen::Index> row_of_label_;  ///< scratch: the row of each label in the system at hand, or -1
 };
 
 }  // namespace contactcert::solvers::assembly

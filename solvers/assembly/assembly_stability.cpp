@@ -6,25 +6,44 @@ namespace contactcert::solvers::assembly {
 namespace {
 
 /// Strict feasibility of A x = b: the verified route, and if its float simplex runs out of pivots (it can cycle on
-/// these degenerate systems) the exact simplex alone.
-exact::StrictFeasibility<Q> solve(const AssemblySystem& s, exact::Arith arith) {
+/// these degenerate systems) the exact simplex alone. Unless `need_point`, a system the float LP finds feasible but
+/// whose point does not round to an exact one is taken as feasible without a point (kFeasible, x empty) instead of
+/// solving it again exactly: the walk only extends such a prefix, and were it infeasible after all, its extensions
+/// would be proved dead in turn (the certificate still covers every mode), so no verdict rests on the float LP.
+exact::StrictFeasibility<Q> solve(const AssemblySystem& s, exact::Arith arith, bool need_point = true) {
   try {
-    return exact::StrictSolver<Q>(s.system, arith).solve(s.b);
+    const exact::StrictSolver<Q> solver(s.system, arith);
+    bool float_feasible = false;
+    if (std::optional<exact::StrictFeasibility<Q>> f = solver.solve_rounded(s.b, &float_feasible)) return std::move(*f);
+    if (float_feasible && !need_point) {
+      exact::StrictFeasibility<Q> f;
+      f.status = exact::StrictStatus::kFeasible;
+      return f;
+    }
+    return solver.solve_unrounded(s.b);
   } catch (const exact::BudgetExceeded&) {
     if (arith == exact::Arith::kExact) throw;
     return exact::StrictSolver<Q>(s.system, exact::Arith::kExact).solve(s.b);
   }
 }
 
-/// A prefix the walk will extend, with a point of its system: accelerations and forces.
+/// A prefix the walk will extend, with a point of its system: accelerations and forces (empty if only the float LP
+/// found one).
 struct Node {
   std::string prefix;
   Vec<Q> vdot, c;
 };
 
+/// The node of a prefix whose system `s` the LP `f` found feasible.
+Node feasible_node(std::string prefix, const AssemblySystem& s, const exact::StrictFeasibility<Q>& f) {
+  if (f.x.size() == 0) return {std::move(prefix), {}, {}};
+  return {std::move(prefix), s.acceleration(f.x), s.forces(f.x)};
+}
+
 /// Whether (vdot, c), a point of the parent's system (contact i relaxed), already satisfies letter L at contact i:
-/// then it is a point of the child's system and no LP is needed.
+/// then it is a point of the child's system and no LP is needed. No point (empty) meets nothing.
 bool meets(const AssemblyModel& model, std::size_t i, char L, const Vec<Q>& vdot, const Vec<Q>& c) {
+  if (vdot.size() == 0) return false;
   // The energy row g^T vdot > 0 holds already: the parent's point satisfies it.
   const auto k = static_cast<Eigen::Index>(model.contacts.size());
   const auto [a_n, a_t] = contact_acceleration(model, i, vdot);
@@ -51,14 +70,14 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
   CertificateMemory memory;
   {
     const AssemblySystem root = assembly_system(model, std::string(k, '*'));
-    const auto f = solve(root, options.arith);
+    const auto f = solve(root, options.arith, k == 0);
     ++r.lps;
     ++r.nodes;
     if (f.status == exact::StrictStatus::kInfeasible) {  // no solution at all: every mode is dead
       r.dead.push_back({"", f.motzkin});
       return;
     }
-    stack.push_back({"", root.acceleration(f.x), root.forces(f.x)});
+    stack.push_back(feasible_node("", root, f));
   }
   while (!stack.empty()) {
     Node node = std::move(stack.back());
@@ -82,15 +101,14 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
             r.dead.push_back({std::move(prefix), std::move(*y)});
             continue;
           }
-        const auto f = solve(s, options.arith);
+        const auto f = solve(s, options.arith, prefix.size() == k);
         ++r.lps;
         if (f.status == exact::StrictStatus::kInfeasible) {
           memory.remember(s, prefix.size(), f.motzkin);
           r.dead.push_back({std::move(prefix), f.motzkin});
           continue;
         }
-        child.vdot = s.acceleration(f.x);
-        child.c = s.forces(f.x);
+        child = feasible_node(std::move(child.prefix), s, f);
       }
       if (child.prefix.size() == k) {
         r.has_moving = true;

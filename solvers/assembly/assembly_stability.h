@@ -10,7 +10,9 @@
 // alone a structure whose every allowed acceleration lowers no com has an infeasible root: one LP after the resting
 // one. Before its LP, a prefix tries the certificates of the latest dead prefixes of its length, carried onto its
 // system by row labels and checked exactly (assembly_certificate_memory.h): a local contradiction (a body pushed
-// against its friction) recurs under every choice of the earlier letters, and its certificate with it.
+// against its friction) recurs under every choice of the earlier letters, and its certificate with it. Exact answers
+// are needed only for a dead prefix (its certificate) and a whole mode (the moving witness): an interior prefix the
+// float LP finds feasible is extended even if its point does not round to an exact one (docs/bench.md section 8).
 #pragma once
 
 #include <string>

@@ -59,6 +59,9 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
   out.resting = resting;
   out.vdot_size = resting ? 0 : 3 * N;
   auto& S = out.system;
+  // At most 3N + 1 entries in the energy row and 3N on the diagonal of M; per contact 2 x 7 kinematic, 2 x 3
+  // friction and 2 x 6 Newton-Euler entries (no reallocation: it would copy every fraction).
+  S.entries.reserve(static_cast<std::size_t>(6 * N + 1) + 32 * k);
   const auto column = [&S](bool free, bool strict) {
     S.is_free.push_back(free);
     S.strict.push_back(strict);

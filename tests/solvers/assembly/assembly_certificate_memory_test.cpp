@@ -47,6 +47,14 @@ TEST(AssemblyCertificateMemory, RecallsOnlyCertificatesThatHold) {
   EXPECT_FALSE(motzkin_holds(dead, Vec<Q>(-d.motzkin)));
   EXPECT_FALSE(motzkin_holds(dead, Vec<Q>(Vec<Q>::Zero(d.motzkin.size()))));
   EXPECT_FALSE(motzkin_holds(dead, Vec<Q>(d.motzkin.head(d.motzkin.size() - 1))));
+  // Any positive multiple holds, also where its doubles overflow or underflow (the float pre-test only rejects a
+  // vector far from the conditions; the exact test decides).
+  Q huge(1), tiny(1);
+  mpz_ui_pow_ui(huge.get_num_mpz_t(), 10, 400);
+  mpz_ui_pow_ui(tiny.get_den_mpz_t(), 10, 400);
+  EXPECT_TRUE(motzkin_holds(dead, Vec<Q>(d.motzkin * huge)));
+  EXPECT_TRUE(motzkin_holds(dead, Vec<Q>(d.motzkin * tiny)));
+  EXPECT_FALSE(motzkin_holds(dead, Vec<Q>(-d.motzkin * huge)));
 
   CertificateMemory memory;
   EXPECT_FALSE(memory.recall(dead, d.prefix.size()));  // nothing remembered yet
