@@ -12,13 +12,13 @@ py::object json_objects(const queries::json& j) {
     case V::object: {
       py::dict d;
       for (const auto& [key, value] : j.items()) d[py::str(key)] = json_objects(value);
-      return std::move(d);
+      return d;
     }
     case V::array: {
       py::list l(j.size());
       std::size_t i = 0;
       for (const auto& value : j) l[i++] = json_objects(value);
-      return std::move(l);
+      return l;
     }
     case V::string:
       return py::str(j.get_ref<const std::string&>());
