@@ -63,8 +63,12 @@ FaceCone<T> intersection(const FaceCone<T>& a, const FaceCone<T>& b) {
 
 template <class T>
 Containment<T> contains(const FaceCone<T>& outer, const FaceCone<T>& inner, const DdBudget& budget) {
+  return contains(outer, inner, nnc_form(inner, budget));
+}
+
+template <class T>
+Containment<T> contains(const FaceCone<T>& outer, const FaceCone<T>& inner, const NncForm<T>& in) {
   Containment<T> out;
-  const NncForm<T> in = nnc_form(inner, budget);
   if (in.status == NncStatus::kEmpty) return out;
   const Index d = inner.dim;
   const Mat<T>& R = in.closure.rays;
@@ -130,6 +134,7 @@ bool equal(const FaceCone<T>& a, const FaceCone<T>& b, const DdBudget& budget) {
 #define CONTACTCERT_SETOPS_INSTANTIATE(T)                                                       \
   template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);                 \
   template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&); \
+  template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const NncForm<T>&); \
   template bool equal<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&);
 CONTACTCERT_SETOPS_INSTANTIATE(double)
 CONTACTCERT_SETOPS_INSTANTIATE(Q)

@@ -66,13 +66,15 @@ Insertion<T> insertion(const geometry::PlanarScene& goal, Route route) {
     out.cones.push_back(wrench_cone_face<T>(s, contact_model<T>(s), set.mode, route));
   }
   out.redundant.assign(out.cones.size(), false);
-  for (std::size_t i = 0; i < out.cones.size(); ++i)
+  for (std::size_t i = 0; i < out.cones.size(); ++i) {
+    const bool empty = is_empty_cone<T>(out.cones[i]);
+    const geometry::NncForm<T> form = empty ? geometry::NncForm<T>{} : geometry::nnc_form<T>(out.cones[i]);
     for (std::size_t j = 0; j < out.cones.size() && !out.redundant[i]; ++j) {
       if (i == j || out.redundant[j]) continue;
-      if (is_empty_cone<T>(out.cones[i]) ||
-          geometry::contains<T>(out.cones[j], out.cones[i]).status == geometry::ContainmentStatus::kContained)
+      if (empty || geometry::contains<T>(out.cones[j], out.cones[i], form).status == geometry::ContainmentStatus::kContained)
         out.redundant[i] = true;
     }
+  }
   return out;
 }
 
