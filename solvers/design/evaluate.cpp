@@ -105,10 +105,6 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
   }
   if (problem.insertable) {
     const Insertion<Q> ins = insertion<Q>(scene);
-    const Vec<Q> witness = goal_witness(ins);
-    if (witness.size() == 0) return reject(PlacementStatus::kNotInsertable);
-    if (problem.goal_wrench.size() > 0 && !ins.in_goal(problem.goal_wrench))
-      return reject(PlacementStatus::kGoalMissesWrench);
     long in_goal = 0, first = -1;
     Vec<Q> push_witness;
     for (std::size_t i = 0; i < problem.pushes.size(); ++i) {
@@ -123,6 +119,15 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
         first = static_cast<long>(i);
       }
     }
+    const bool wrench_in_goal = problem.goal_wrench.size() > 0 && ins.in_goal(problem.goal_wrench);
+    // G_goal != {}: a push or the required wrench in it shows it; otherwise a cell of the arrangement decides
+    // (and gives the witness the evidence shows when no push is in G_goal).
+    Vec<Q> witness;
+    if (in_goal == 0 && (evidence || !wrench_in_goal)) {
+      witness = goal_witness(ins);
+      if (witness.size() == 0) return reject(PlacementStatus::kNotInsertable);
+    }
+    if (problem.goal_wrench.size() > 0 && !wrench_in_goal) return reject(PlacementStatus::kGoalMissesWrench);
     if (problem.goal_push && in_goal == 0) return reject(PlacementStatus::kNoPushInGoal);
     if (problem.rank == Rank::kGoalFraction) {
       out.figure = Q(in_goal, static_cast<long>(problem.pushes.size()));
