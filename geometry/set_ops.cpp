@@ -131,9 +131,9 @@ bool equal(const FaceCone<T>& a, const FaceCone<T>& b, const DdBudget& budget) {
   }
 }
 
-#define CONTACTCERT_SETOPS_INSTANTIATE(T)                                                       \
-  template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);                 \
-  template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&); \
+#define CONTACTCERT_SETOPS_INSTANTIATE(T)                                                         \
+  template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);                   \
+  template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&);   \
   template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const NncForm<T>&); \
   template bool equal<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&);
 CONTACTCERT_SETOPS_INSTANTIATE(double)

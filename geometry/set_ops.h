@@ -30,9 +30,9 @@ Containment<T> contains(const FaceCone<T>& outer, const FaceCone<T>& inner, cons
 template <class T>
 bool equal(const FaceCone<T>& a, const FaceCone<T>& b, const DdBudget& budget = {});
 
-#define CONTACTCERT_SETOPS_EXTERN(T)                                                                   \
-  extern template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);                 \
-  extern template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&); \
+#define CONTACTCERT_SETOPS_EXTERN(T)                                                                     \
+  extern template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);                   \
+  extern template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&);   \
   extern template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const NncForm<T>&); \
   extern template bool equal<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&);
 CONTACTCERT_SETOPS_EXTERN(double)

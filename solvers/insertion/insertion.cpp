@@ -54,7 +54,8 @@ bool Insertion<T>::in_goal(const Vec<T>& g) const {
 template <class T>
 Insertion<T> insertion(const geometry::PlanarScene& goal, Route route) {
   const std::size_t k = goal.fixels.size();
-  if (k != 2 && k != 3) throw exact::InputError("", "$.fixels", "insertion needs 2 or 3 fixels, found " + std::to_string(k));
+  if (k != 2 && k != 3)
+    throw exact::InputError("", "$.fixels", "insertion needs 2 or 3 fixels, found " + std::to_string(k));
   for (std::size_t i = 0; i < k; ++i)
     if (!goal.fixels[i].frame.touching())
       throw exact::InputError("", "$.fixels[" + std::to_string(i) + "]",
@@ -71,7 +72,8 @@ Insertion<T> insertion(const geometry::PlanarScene& goal, Route route) {
     const geometry::NncForm<T> form = empty ? geometry::NncForm<T>{} : geometry::nnc_form<T>(out.cones[i]);
     for (std::size_t j = 0; j < out.cones.size() && !out.redundant[i]; ++j) {
       if (i == j || out.redundant[j]) continue;
-      if (empty || geometry::contains<T>(out.cones[j], out.cones[i], form).status == geometry::ContainmentStatus::kContained)
+      if (empty ||
+          geometry::contains<T>(out.cones[j], out.cones[i], form).status == geometry::ContainmentStatus::kContained)
         out.redundant[i] = true;
     }
   }
@@ -86,9 +88,9 @@ BoundaryPieces<T, bool> insertion_pushes(const geometry::PlanarScene& goal, cons
   return boundary_pieces<T, bool>(goal, cone_rows<T>(cones), [&](const Vec<T>& g) { return ins.in_goal(g); });
 }
 
-#define CONTACTCERT_INSERTION_INSTANTIATE(T)                                                        \
-  template struct Insertion<T>;                                                                     \
-  template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route);                           \
+#define CONTACTCERT_INSERTION_INSTANTIATE(T)                               \
+  template struct Insertion<T>;                                            \
+  template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route); \
   template BoundaryPieces<T, bool> insertion_pushes<T>(const geometry::PlanarScene&, const Insertion<T>&);
 CONTACTCERT_INSERTION_INSTANTIATE(double)
 CONTACTCERT_INSERTION_INSTANTIATE(Q)
