@@ -54,8 +54,7 @@ bool Insertion<T>::in_goal(const Vec<T>& g) const {
 template <class T>
 Insertion<T> insertion(const geometry::PlanarScene& goal, Route route) {
   const std::size_t k = goal.fixels.size();
-  if (k != 2 && k != 3)
-    throw exact::InputError("", "$.fixels", "insertion needs 2 or 3 fixels, found " + std::to_string(k));
+  if (k != 2 && k != 3) throw exact::InputError("", "$.fixels", "insertion needs 2 or 3 fixels, found " + std::to_string(k));
   for (std::size_t i = 0; i < k; ++i)
     if (!goal.fixels[i].frame.touching())
       throw exact::InputError("", "$.fixels[" + std::to_string(i) + "]",
