@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <set>
 #include <string>
 #include <type_traits>
+#include <unordered_map>
 
 #include "exact/input_error.h"
 
@@ -131,6 +131,15 @@ struct Angular {
   }
 };
 
+// A hash of a sign vector (cells are found by their signs; their order is that of discovery).
+struct SignsHash {
+  std::size_t operator()(const std::vector<int>& s) const {
+    std::size_t h = s.size();
+    for (int x : s) h = h * 3 + static_cast<std::size_t>(x + 1);
+    return h;
+  }
+};
+
 template <class T>
 class Builder {
   using R = Ring<T>;
@@ -166,17 +175,20 @@ class Builder {
   // eps = a / b = half the least |n.v| / |n.u| over the planes whose sign would flip (eps = 1 if none), and
   // the point is b v + a u, a positive multiple. `sv` holds the signs at v.
   void add_near(int dimension, const V3<R>& v, const std::vector<int>& sv, const V3<R>& u) {
-    const std::vector<int> su = signs_at(u);
-    std::vector<int> s(n_.size());
-    for (std::size_t j = 0; j < n_.size(); ++j) s[j] = sv[j] == 0 ? su[j] : sv[j];
+    const auto ud = to_double(u);
+    std::vector<int> s(sv);  // only the planes through v take the sign at u
+    for (std::size_t j = 0; j < n_.size(); ++j)
+      if (sv[j] == 0) s[j] = dot_sign(n_[j], nd_[j], u, ud);
     if (seen_.count(s)) return;
     if (!points_) return record(dimension, v, std::move(s));
     R a = 1, b = 1;
     for (std::size_t j = 0; j < n_.size(); ++j) {
-      if (sv[j] == 0 || su[j] == 0 || sv[j] == su[j]) continue;
+      if (sv[j] == 0) continue;
+      const R nu = dot(n_[j], u);
+      if (is_zero(nu) || sv[j] == sign_of(nu)) continue;
       // |nv| / (2 |nu|) < a / b  <=>  |nv| b < 2 |nu| a
-      const R nv = dot(n_[j], v), nu = dot(n_[j], u);
-      const R num = sv[j] > 0 ? nv : R(-nv), den = R(2 * (su[j] > 0 ? nu : R(-nu)));
+      const R nv = dot(n_[j], v);
+      const R num = sv[j] > 0 ? nv : R(-nv), den = R(2 * (sign_of(nu) > 0 ? nu : R(-nu)));
       if (sign_of(R(num * b - den * a)) < 0) a = num, b = den;
     }
     record(dimension, combine(b, v, a, u), std::move(s));
@@ -195,7 +207,7 @@ class Builder {
   std::vector<V3<double>> nd_;  // n_ in doubles (the sign filter)
   const ArrangementBudget& budget_;
   bool points_;
-  std::map<std::vector<int>, std::size_t> seen_;
+  std::unordered_map<std::vector<int>, std::size_t, SignsHash> seen_;
   std::vector<ArrangementCell<T>> cells_;
 };
 
