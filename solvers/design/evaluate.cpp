@@ -91,7 +91,7 @@ const char* placement_status_name(PlacementStatus s) {
 }
 
 Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymmetry& symmetry,
-                              const Placement& placement, PlacementEvidence* evidence) {
+                              const Placement& placement, PlacementEvidence* evidence, InsertionCones<Q>* cones) {
   Evaluation out;
   auto reject = [&](PlacementStatus s) {
     out.status = s;
@@ -131,7 +131,7 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
     }
   }
   if (problem.insertable) {
-    const Insertion<Q> ins = insertion<Q>(scene);
+    const Insertion<Q> ins = insertion<Q>(scene, Route::kPaper, cones);
     long in_goal = 0, first = -1;
     Vec<Q> push_witness;
     for (std::size_t i = 0; i < problem.pushes.size(); ++i) {

@@ -15,6 +15,7 @@
 
 #include "solvers/design/problem.h"
 #include "solvers/design/symmetry.h"
+#include "solvers/insertion/insertion.h"
 #include "solvers/stability/margin.h"
 #include "solvers/stability/strong_stability.h"
 
@@ -49,8 +50,10 @@ struct Evaluation {
 };
 
 /// Decides one placement (increasing candidate indices). With `evidence`, an accepted placement's verdicts
-/// keep their proofs and witnesses there.
+/// keep their proofs and witnesses there; with `cones` (one per problem), insertion cones are shared across
+/// placements.
 Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymmetry& symmetry,
-                              const Placement& placement, PlacementEvidence* evidence = nullptr);
+                              const Placement& placement, PlacementEvidence* evidence = nullptr,
+                              InsertionCones<exact::Q>* cones = nullptr);
 
 }  // namespace contactcert::solvers

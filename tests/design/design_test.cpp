@@ -240,4 +240,20 @@ TEST(DesignEvaluate, ArrangementSignsAloneGiveTheSameCells) {
   }
 }
 
+TEST(DesignEvaluate, SharedInsertionConesAreTheConesOfEachPlacement) {
+  const DesignProblem p = pentagon_problem();
+  InsertionCones<geometry::Q> shared(40);  // small: the cache is also emptied on the way
+  for (long i = 0; i < placement_count(8, 3); ++i) {
+    const geometry::PlanarScene scene = placement_scene(p, placement_at(i, 8, 3));
+    const auto fresh = insertion<geometry::Q>(scene), kept = insertion<geometry::Q>(scene, Route::kPaper, &shared);
+    ASSERT_EQ(fresh.cones.size(), kept.cones.size());
+    EXPECT_EQ(fresh.redundant, kept.redundant) << i;
+    for (std::size_t c = 0; c < fresh.cones.size(); ++c) {
+      EXPECT_EQ(fresh.cones[c].inequalities, kept.cones[c].inequalities) << i << " " << c;
+      EXPECT_EQ(fresh.cones[c].equalities, kept.cones[c].equalities) << i << " " << c;
+      EXPECT_EQ(fresh.cones[c].strict, kept.cones[c].strict) << i << " " << c;
+    }
+  }
+}
+
 }  // namespace contactcert::solvers
