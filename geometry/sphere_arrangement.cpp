@@ -6,7 +6,7 @@
 #include <set>
 #include <string>
 #include <type_traits>
-#include <unordered_map>
+#include <unordered_set>
 
 #include "exact/input_error.h"
 
@@ -179,8 +179,8 @@ class Builder {
     std::vector<int> s(sv);  // only the planes through v take the sign at u
     for (std::size_t j = 0; j < n_.size(); ++j)
       if (sv[j] == 0) s[j] = dot_sign(n_[j], nd_[j], u, ud);
-    if (seen_.count(s)) return;
-    if (!points_) return record(dimension, v, std::move(s));
+    if (!seen_.insert(s).second) return;
+    if (!points_) return keep(dimension, v, std::move(s));
     R a = 1, b = 1;
     for (std::size_t j = 0; j < n_.size(); ++j) {
       if (sv[j] == 0) continue;
@@ -191,13 +191,12 @@ class Builder {
       const R num = sv[j] > 0 ? nv : R(-nv), den = R(2 * (sign_of(nu) > 0 ? nu : R(-nu)));
       if (sign_of(R(num * b - den * a)) < 0) a = num, b = den;
     }
-    record(dimension, combine(b, v, a, u), std::move(s));
+    keep(dimension, combine(b, v, a, u), std::move(s));
   }
 
   // Keeps the cell of sign vector s (with the point p if points are kept) unless it is known.
   void record(int dimension, const V3<R>& p, std::vector<int> s) {
-    if (seen_.emplace(s, cells_.size()).second)
-      cells_.push_back({dimension, points_ ? from_ring<T>(p) : Vec<T>(), std::move(s)});
+    if (seen_.insert(s).second) keep(dimension, p, std::move(s));
   }
 
   std::vector<ArrangementCell<T>> cells() && { return std::move(cells_); }
@@ -207,8 +206,12 @@ class Builder {
   std::vector<V3<double>> nd_;  // n_ in doubles (the sign filter)
   const ArrangementBudget& budget_;
   bool points_;
-  std::unordered_map<std::vector<int>, std::size_t, SignsHash> seen_;
+  std::unordered_set<std::vector<int>, SignsHash> seen_;
   std::vector<ArrangementCell<T>> cells_;
+
+  void keep(int dimension, const V3<R>& p, std::vector<int> s) {
+    cells_.push_back({dimension, points_ ? from_ring<T>(p) : Vec<T>(), std::move(s)});
+  }
 };
 
 }  // namespace
