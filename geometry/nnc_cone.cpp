@@ -32,10 +32,12 @@ std::vector<std::vector<bool>> ring_zero_sets(const std::vector<std::vector<Rg>>
   return z;
 }
 
-// sign(M.row(r) . g). Rationals: the numerator of the sum over the positive denominator prod den(M_ri) den(g_i),
+}  // namespace
+
+// Rationals: the numerator of the sum over the positive denominator prod den(M_ri) den(g_i),
 // accumulated as n / d + p / q = (n q + p d) / (d q) in integers (no gcd); other types: the dot's sign.
 template <class T>
-int dot_sign(const Mat<T>& M, Index r, const Vec<T>& g) {
+int dot_sign(const Mat<T>& M, Eigen::Index r, const Vec<T>& g) {
   if constexpr (std::is_same_v<T, Q>) {
     exact::Z n = 0, d = 1, p, q;
     for (Index i = 0; i < g.size(); ++i) {
@@ -52,8 +54,6 @@ int dot_sign(const Mat<T>& M, Index r, const Vec<T>& g) {
     return sign(T(M.row(r).dot(g)));
   }
 }
-
-}  // namespace
 
 bool is_subset(const std::vector<bool>& a, const std::vector<bool>& b) {
   for (size_t i = 0; i < a.size(); ++i)
@@ -280,6 +280,7 @@ template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const std::vector<std
   template NncForm<T> nnc_form<T>(const FaceCone<T>&, const DdBudget&); \
   template NncForm<T> nnc_form<T>(const SpanCone<T>&, const DdBudget&); \
   template bool contains_point<T>(const FaceCone<T>&, const Vec<T>&);   \
+  template int dot_sign<T>(const Mat<T>&, Eigen::Index, const Vec<T>&); \
   template PointPosition<T> locate<T>(const FaceCone<T>&, const Vec<T>&);
 CONTACTCERT_NNC_INSTANTIATE(double)
 CONTACTCERT_NNC_INSTANTIATE(Q)

@@ -35,7 +35,7 @@ Vec<T> push_inside(const Vec<T>& v, const Vec<T>& c, const Vec<T>& f) {
 template <class T>
 bool violated_row(const FaceCone<T>& outer, const Vec<T>& v, bool is_line, Vec<T>& f) {
   for (Index i = 0; i < outer.equalities.rows(); ++i) {
-    const int s = sign(T(outer.equalities.row(i).dot(v)));
+    const int s = dot_sign(outer.equalities, i, v);
     if (s != 0) {
       f = s > 0 ? Vec<T>(outer.equalities.row(i).transpose()) : Vec<T>(-outer.equalities.row(i).transpose());
       return true;
@@ -43,7 +43,7 @@ bool violated_row(const FaceCone<T>& outer, const Vec<T>& v, bool is_line, Vec<T
   }
   for (const Mat<T>* M : {&outer.inequalities, &outer.strict})
     for (Index i = 0; i < M->rows(); ++i) {
-      const int s = sign(T(M->row(i).dot(v)));
+      const int s = dot_sign(*M, i, v);
       if (s > 0 || (is_line && s < 0)) {  // a line violates the row on one side (-v when s < 0)
         f = M->row(i).transpose();
         return true;
