@@ -55,11 +55,13 @@ bool Insertion<T>::in_goal(const Vec<T>& g) const {
 
 namespace {
 
-/// G of one set in the goal scene: the wrench cone of the set's mode in the set's contact state.
+/// G of one set in the goal scene: the wrench cone of the set's mode in the set's contact state, with its form.
 template <class T>
-geometry::FaceCone<T> set_cone(const geometry::PlanarScene& goal, const InsertionSet& set, Route route) {
+SetCone<T> set_cone(const geometry::PlanarScene& goal, const InsertionSet& set, Route route) {
   const geometry::PlanarScene s = scene_in_state(goal, set.state);
-  return wrench_cone_face<T>(s, contact_model<T>(s), set.mode, route);
+  SetCone<T> out{wrench_cone_face<T>(s, contact_model<T>(s), set.mode, route), {}};
+  if (!is_empty_cone<T>(out.cone)) out.form = geometry::nnc_form<T>(out.cone);
+  return out;
 }
 
 bool unconstrained(Interaction letter) { return letter == Interaction::kUnconstrained; }
@@ -67,8 +69,8 @@ bool unconstrained(Interaction letter) { return letter == Interaction::kUnconstr
 }  // namespace
 
 template <class T>
-const geometry::FaceCone<T>& InsertionCones<T>::cone(const geometry::PlanarScene& goal, std::size_t index,
-                                                     const InsertionSet& set, Route route) {
+const SetCone<T>& InsertionCones<T>::cone(const geometry::PlanarScene& goal, std::size_t index, const InsertionSet& set,
+                                          Route route) {
   std::vector<Q> key{Q(static_cast<long>(index)), Q(static_cast<int>(route))};
   for (std::size_t i = 0; i < goal.fixels.size(); ++i) {
     if (unconstrained(set.mode.letters[i])) continue;
@@ -91,19 +93,21 @@ Insertion<T> insertion(const geometry::PlanarScene& goal, Route route, Insertion
                               "insertion takes the goal configuration: every fixel must touch the workpiece");
   Insertion<T> out;
   out.sets = insertion_sets(k);
+  std::vector<geometry::NncForm<T>> forms;  // of each cone, for the containment tests
   for (std::size_t i = 0; i < out.sets.size(); ++i) {
     const auto& letters = out.sets[i].mode.letters;
     const bool shared = cones && std::any_of(letters.begin(), letters.end(), unconstrained);
-    out.cones.push_back(shared ? cones->cone(goal, i, out.sets[i], route) : set_cone<T>(goal, out.sets[i], route));
+    SetCone<T> c = shared ? cones->cone(goal, i, out.sets[i], route) : set_cone<T>(goal, out.sets[i], route);
+    out.cones.push_back(std::move(c.cone));
+    forms.push_back(std::move(c.form));
   }
   out.redundant.assign(out.cones.size(), false);
   for (std::size_t i = 0; i < out.cones.size(); ++i) {
     const bool empty = is_empty_cone<T>(out.cones[i]);
-    const geometry::NncForm<T> form = empty ? geometry::NncForm<T>{} : geometry::nnc_form<T>(out.cones[i]);
     for (std::size_t j = 0; j < out.cones.size() && !out.redundant[i]; ++j) {
       if (i == j || out.redundant[j]) continue;
       if (empty ||
-          geometry::contains<T>(out.cones[j], out.cones[i], form).status == geometry::ContainmentStatus::kContained)
+          geometry::contains<T>(out.cones[j], out.cones[i], forms[i]).status == geometry::ContainmentStatus::kContained)
         out.redundant[i] = true;
     }
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/face_cone.h"
+#include "geometry/nnc_cone.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 
@@ -39,17 +40,23 @@ geometry::PlanarScene scene_in_state(const geometry::PlanarScene& goal, const st
 /// The cones of sets whose mode leaves a fixel unconstrained ('u': it takes no part in the cone), kept across
 /// goal scenes of one workpiece, so that placements sharing the other fixels share them: keyed by the set, the
 /// route and the frames and friction of the fixels that take part; at most `capacity` kept, all dropped when full.
+/// A set's cone G and, when G is not the empty-cone encoding, its nnc_form (for the containment tests).
+template <class T>
+struct SetCone {
+  geometry::FaceCone<T> cone;
+  geometry::NncForm<T> form;
+};
+
 template <class T>
 class InsertionCones {
  public:
   explicit InsertionCones(std::size_t capacity = 4096) : capacity_(capacity) {}
   /// G of `set`, number `index` of insertion_sets(goal.fixels.size()), in the goal scene `goal`.
-  const geometry::FaceCone<T>& cone(const geometry::PlanarScene& goal, std::size_t index, const InsertionSet& set,
-                                    Route route);
+  const SetCone<T>& cone(const geometry::PlanarScene& goal, std::size_t index, const InsertionSet& set, Route route);
 
  private:
   std::size_t capacity_;
-  std::map<std::vector<Q>, geometry::FaceCone<T>> cones_;
+  std::map<std::vector<Q>, SetCone<T>> cones_;
 };
 
 /// G_goal for a goal scene in which every fixel touches (2 or 3 fixels). Throws InputError otherwise. With
