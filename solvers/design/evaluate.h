@@ -5,9 +5,10 @@
 //   3. every wrench (generator) is strongly stable (StabilityOracle: one LP per kinematically feasible mode);
 //   4. a cone of wrenches meets no moving mode's wrench cone except at 0 (eq. 19: then the whole cone is in
 //      G_strong, given 2-3);
-//   5. G_goal != {} (eq. 21 / Table 5): some cell of the arrangement of the insertion cones' planes lies in
-//      no cone; G_goal holds the required wrench if one is given, and the frictionless push at some push
-//      point if that is required.
+//   5. G_goal != {} (eq. 21 / Table 5): a push point's push or the required wrench lies in it, or else some
+//      cell of the arrangement of the insertion cones' planes lies in no cone (read off the cell's signs);
+//      G_goal holds the required wrench if one is given, and the frictionless push at some push point if that
+//      is required.
 // Fixels all touch by construction, so stability considers every fixel of the placement.
 #pragma once
 
