@@ -4,6 +4,8 @@
 // measured per-placement cost distribution, and from it a model of the parallel efficiency at P ranks:
 // static (C(N, 3) / P consecutive placements per rank) against dynamic (chunks of 16 to the first idle rank,
 // 50 us per request round trip). The model draws the C(N, 3) costs independently from the measured sample.
+// A whole run at N = 20 (1140 placements in lexicographic order, as `contactcert design` evaluates them) gives
+// the throughput of a design run.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -61,6 +63,27 @@ void BM_DesignPlacementsPerSecond(benchmark::State& state) {
       static_cast<double>(accepted) / static_cast<double>(placements.size() * state.iterations());
 }
 BENCHMARK(BM_DesignPlacementsPerSecond)->Arg(60)->Arg(120)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+/// Every placement at N candidates in lexicographic order, as one `contactcert design` run evaluates them (chunks
+/// of 16, insertion cones shared across the run): placements decided per CPU second.
+void BM_DesignRunPlacementsPerSecond(benchmark::State& state) {
+  const DesignProblem p = pawl(state.range(0));
+  const solvers::CandidateSymmetry sym = solvers::candidate_symmetry(p);
+  const long total = solvers::placement_count(static_cast<long>(p.candidates.size()), p.fixels), size = 16;
+  long accepted = 0;
+  for (auto _ : state) {
+    solvers::InsertionCones<exact::Q> cones;
+    for (long chunk = 0; chunk * size < total; ++chunk) {
+      bool complete = false;
+      accepted += solvers::run_chunk(p, sym, chunk, size, total, 5, {}, &complete, &cones).statistics.by_status[0];
+    }
+  }
+  state.counters["placements"] = static_cast<double>(total);
+  state.counters["placements_per_s"] =
+      benchmark::Counter(static_cast<double>(total), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["accepted"] = static_cast<double>(accepted) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_DesignRunPlacementsPerSecond)->Arg(20)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 /// Makespan of a static split into P consecutive blocks.
 double static_makespan(const std::vector<double>& cost, int P) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "exact/fraction_free.h"
@@ -32,6 +33,27 @@ std::vector<std::vector<bool>> ring_zero_sets(const std::vector<std::vector<Rg>>
 }
 
 }  // namespace
+
+// Rationals: the numerator of the sum over the positive denominator prod den(M_ri) den(g_i),
+// accumulated as n / d + p / q = (n q + p d) / (d q) in integers (no gcd); other types: the dot's sign.
+template <class T>
+int dot_sign(const Mat<T>& M, Eigen::Index r, const Vec<T>& g) {
+  if constexpr (std::is_same_v<T, Q>) {
+    exact::Z n = 0, d = 1, p, q;
+    for (Index i = 0; i < g.size(); ++i) {
+      const Q &a = M(r, i), &b = g(i);
+      if (sgn(a) == 0 || sgn(b) == 0) continue;
+      mpz_mul(p.get_mpz_t(), a.get_num_mpz_t(), b.get_num_mpz_t());
+      mpz_mul(q.get_mpz_t(), a.get_den_mpz_t(), b.get_den_mpz_t());
+      if (mpz_cmp_ui(q.get_mpz_t(), 1) != 0) mpz_mul(n.get_mpz_t(), n.get_mpz_t(), q.get_mpz_t());
+      mpz_addmul(n.get_mpz_t(), p.get_mpz_t(), d.get_mpz_t());
+      if (mpz_cmp_ui(q.get_mpz_t(), 1) != 0) mpz_mul(d.get_mpz_t(), d.get_mpz_t(), q.get_mpz_t());
+    }
+    return sgn(n);
+  } else {
+    return sign(T(M.row(r).dot(g)));
+  }
+}
 
 bool is_subset(const std::vector<bool>& a, const std::vector<bool>& b) {
   for (size_t i = 0; i < a.size(); ++i)
@@ -215,11 +237,11 @@ std::optional<FaceCone<T>> pointed_nnc_face(const std::vector<std::vector<R>>& F
 template <class T>
 bool contains_point(const FaceCone<T>& cone, const Vec<T>& g) {
   for (Index i = 0; i < cone.equalities.rows(); ++i)
-    if (!is_zero(T(cone.equalities.row(i).dot(g)))) return false;
+    if (dot_sign(cone.equalities, i, g) != 0) return false;
   for (Index i = 0; i < cone.inequalities.rows(); ++i)
-    if (sign(T(cone.inequalities.row(i).dot(g))) > 0) return false;
+    if (dot_sign(cone.inequalities, i, g) > 0) return false;
   for (Index i = 0; i < cone.strict.rows(); ++i)
-    if (sign(T(cone.strict.row(i).dot(g))) >= 0) return false;
+    if (dot_sign(cone.strict, i, g) >= 0) return false;
   return true;
 }
 
@@ -258,6 +280,7 @@ template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const std::vector<std
   template NncForm<T> nnc_form<T>(const FaceCone<T>&, const DdBudget&); \
   template NncForm<T> nnc_form<T>(const SpanCone<T>&, const DdBudget&); \
   template bool contains_point<T>(const FaceCone<T>&, const Vec<T>&);   \
+  template int dot_sign<T>(const Mat<T>&, Eigen::Index, const Vec<T>&); \
   template PointPosition<T> locate<T>(const FaceCone<T>&, const Vec<T>&);
 CONTACTCERT_NNC_INSTANTIATE(double)
 CONTACTCERT_NNC_INSTANTIATE(Q)

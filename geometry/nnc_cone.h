@@ -70,6 +70,10 @@ struct MissingFaces {
 };
 MissingFaces missing_faces(std::vector<std::vector<bool>> faces, const std::vector<std::vector<bool>>& facet_rays);
 
+/// sign(M.row(r) . g), exactly for T = Q.
+template <class T>
+int dot_sign(const Mat<T>& M, Eigen::Index r, const Vec<T>& g);
+
 /// Is g in the cone? (F g <= 0, E g = 0, S g < 0, checked row by row.)
 template <class T>
 bool contains_point(const FaceCone<T>& cone, const Vec<T>& g);
@@ -98,6 +102,7 @@ PointPosition<T> locate(const FaceCone<T>& cone, const Vec<T>& g);
   extern template NncForm<T> nnc_form<T>(const FaceCone<T>&, const DdBudget&); \
   extern template NncForm<T> nnc_form<T>(const SpanCone<T>&, const DdBudget&); \
   extern template bool contains_point<T>(const FaceCone<T>&, const Vec<T>&);   \
+  extern template int dot_sign<T>(const Mat<T>&, Eigen::Index, const Vec<T>&); \
   extern template PointPosition<T> locate<T>(const FaceCone<T>&, const Vec<T>&);
 CONTACTCERT_NNC_EXTERN(double)
 CONTACTCERT_NNC_EXTERN(Q)

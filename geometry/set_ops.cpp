@@ -35,7 +35,7 @@ Vec<T> push_inside(const Vec<T>& v, const Vec<T>& c, const Vec<T>& f) {
 template <class T>
 bool violated_row(const FaceCone<T>& outer, const Vec<T>& v, bool is_line, Vec<T>& f) {
   for (Index i = 0; i < outer.equalities.rows(); ++i) {
-    const int s = sign(T(outer.equalities.row(i).dot(v)));
+    const int s = dot_sign(outer.equalities, i, v);
     if (s != 0) {
       f = s > 0 ? Vec<T>(outer.equalities.row(i).transpose()) : Vec<T>(-outer.equalities.row(i).transpose());
       return true;
@@ -43,7 +43,7 @@ bool violated_row(const FaceCone<T>& outer, const Vec<T>& v, bool is_line, Vec<T
   }
   for (const Mat<T>* M : {&outer.inequalities, &outer.strict})
     for (Index i = 0; i < M->rows(); ++i) {
-      const int s = sign(T(M->row(i).dot(v)));
+      const int s = dot_sign(*M, i, v);
       if (s > 0 || (is_line && s < 0)) {  // a line violates the row on one side (-v when s < 0)
         f = M->row(i).transpose();
         return true;
@@ -63,8 +63,12 @@ FaceCone<T> intersection(const FaceCone<T>& a, const FaceCone<T>& b) {
 
 template <class T>
 Containment<T> contains(const FaceCone<T>& outer, const FaceCone<T>& inner, const DdBudget& budget) {
+  return contains(outer, inner, nnc_form(inner, budget));
+}
+
+template <class T>
+Containment<T> contains(const FaceCone<T>& outer, const FaceCone<T>& inner, const NncForm<T>& in) {
   Containment<T> out;
-  const NncForm<T> in = nnc_form(inner, budget);
   if (in.status == NncStatus::kEmpty) return out;
   const Index d = inner.dim;
   const Mat<T>& R = in.closure.rays;
@@ -127,9 +131,10 @@ bool equal(const FaceCone<T>& a, const FaceCone<T>& b, const DdBudget& budget) {
   }
 }
 
-#define CONTACTCERT_SETOPS_INSTANTIATE(T)                                                       \
-  template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);                 \
-  template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&); \
+#define CONTACTCERT_SETOPS_INSTANTIATE(T)                                                         \
+  template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);                   \
+  template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&);   \
+  template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const NncForm<T>&); \
   template bool equal<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&);
 CONTACTCERT_SETOPS_INSTANTIATE(double)
 CONTACTCERT_SETOPS_INSTANTIATE(Q)

@@ -22,13 +22,18 @@ struct Containment {
 template <class T>
 Containment<T> contains(const FaceCone<T>& outer, const FaceCone<T>& inner, const DdBudget& budget = {});
 
+/// The same with inner's form given (inner_form = nnc_form(inner)): one conversion for many outer cones.
+template <class T>
+Containment<T> contains(const FaceCone<T>& outer, const FaceCone<T>& inner, const NncForm<T>& inner_form);
+
 /// a == b as sets (canonical forms compared).
 template <class T>
 bool equal(const FaceCone<T>& a, const FaceCone<T>& b, const DdBudget& budget = {});
 
-#define CONTACTCERT_SETOPS_EXTERN(T)                                                                   \
-  extern template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);                 \
-  extern template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&); \
+#define CONTACTCERT_SETOPS_EXTERN(T)                                                                     \
+  extern template FaceCone<T> intersection<T>(const FaceCone<T>&, const FaceCone<T>&);                   \
+  extern template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&);   \
+  extern template Containment<T> contains<T>(const FaceCone<T>&, const FaceCone<T>&, const NncForm<T>&); \
   extern template bool equal<T>(const FaceCone<T>&, const FaceCone<T>&, const DdBudget&);
 CONTACTCERT_SETOPS_EXTERN(double)
 CONTACTCERT_SETOPS_EXTERN(Q)

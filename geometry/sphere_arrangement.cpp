@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
+#include <cmath>
 #include <set>
 #include <string>
 #include <type_traits>
+#include <unordered_set>
 
 #include "exact/input_error.h"
 
@@ -96,6 +97,22 @@ V3<Z> to_ring(const Vec<Q>& row) {
 }
 V3<double> to_ring(const Vec<double>& row) { return {row(0), row(1), row(2)}; }
 
+V3<double> to_double(const V3<Z>& a) { return {a[0].get_d(), a[1].get_d(), a[2].get_d()}; }
+const V3<double>& to_double(const V3<double>& a) { return a; }
+
+// sign(n . u), with nd and ud the same vectors in doubles. Integers: decided in doubles when the float dot clears
+// its error bound (operands rounded once, three products, two sums: under 6 u sum |n_i u_i|, u = 2^-53; taken as
+// 2e-15 sum, which an overflow to infinity never clears), else exactly; doubles: the float dot.
+int dot_sign(const V3<Z>& n, const V3<double>& nd, const V3<Z>& u, const V3<double>& ud) {
+  const double s = nd[0] * ud[0] + nd[1] * ud[1] + nd[2] * ud[2];
+  const double a = std::abs(nd[0] * ud[0]) + std::abs(nd[1] * ud[1]) + std::abs(nd[2] * ud[2]);
+  if (std::abs(s) > 2e-15 * a) return s > 0 ? 1 : -1;
+  return sign_of(dot(n, u));
+}
+int dot_sign(const V3<double>& n, const V3<double>&, const V3<double>& u, const V3<double>&) {
+  return sign_of(dot(n, u));
+}
+
 template <class T>
 Vec<T> from_ring(const V3<Ring<T>>& p) {
   Vec<T> v(3);
@@ -114,12 +131,24 @@ struct Angular {
   }
 };
 
+// A hash of a sign vector (cells are found by their signs; their order is that of discovery).
+struct SignsHash {
+  std::size_t operator()(const std::vector<int>& s) const {
+    std::size_t h = s.size();
+    for (int x : s) h = h * 3 + static_cast<std::size_t>(x + 1);
+    return h;
+  }
+};
+
 template <class T>
 class Builder {
   using R = Ring<T>;
 
  public:
-  Builder(const std::vector<V3<R>>& n, const ArrangementBudget& budget) : n_(n), budget_(budget) {}
+  Builder(const std::vector<V3<R>>& n, const ArrangementBudget& budget, CellPoints points)
+      : n_(n), budget_(budget), points_(points == CellPoints::kPoints) {
+    for (const V3<R>& v : n_) nd_.push_back(to_double(v));
+  }
 
   // Stops with BudgetExceeded past the deadline or once the cells' signs outgrow the budget; `where` says how far
   // the vertices went.
@@ -132,50 +161,63 @@ class Builder {
                                 where + ", " + std::to_string(cells_.size()) + " cells found");
   }
 
-  void add(int dimension, const V3<R>& p) {
+  // sign(n_j . p) for every plane j.
+  std::vector<int> signs_at(const V3<R>& p) const {
+    const auto pd = to_double(p);
     std::vector<int> s(n_.size());
-    for (std::size_t j = 0; j < n_.size(); ++j) s[j] = sign_of(dot(n_[j], p));
-    record(dimension, p, std::move(s));
+    for (std::size_t j = 0; j < n_.size(); ++j) s[j] = dot_sign(n_[j], nd_[j], p, pd);
+    return s;
   }
+
+  void add(int dimension, const V3<R>& p) { record(dimension, p, signs_at(p)); }
 
   // Adds the cell of v + eps u, eps > 0 small enough that every plane not through v keeps its sign at v:
   // eps = a / b = half the least |n.v| / |n.u| over the planes whose sign would flip (eps = 1 if none), and
-  // the point is b v + a u, a positive multiple. `nv` caches n_j . v.
-  void add_near(int dimension, const V3<R>& v, const std::vector<R>& nv, const V3<R>& u) {
-    std::vector<R> nu(n_.size());
-    std::vector<int> s(n_.size());
-    for (std::size_t j = 0; j < n_.size(); ++j) {
-      nu[j] = dot(n_[j], u);
-      s[j] = is_zero(nv[j]) ? sign_of(nu[j]) : sign_of(nv[j]);
-    }
-    if (seen_.count(s)) return;
+  // the point is b v + a u, a positive multiple. `sv` holds the signs at v.
+  void add_near(int dimension, const V3<R>& v, const std::vector<int>& sv, const V3<R>& u) {
+    const auto ud = to_double(u);
+    std::vector<int> s(sv);  // only the planes through v take the sign at u
+    for (std::size_t j = 0; j < n_.size(); ++j)
+      if (sv[j] == 0) s[j] = dot_sign(n_[j], nd_[j], u, ud);
+    if (!seen_.insert(s).second) return;
+    if (!points_) return keep(dimension, v, std::move(s));
     R a = 1, b = 1;
     for (std::size_t j = 0; j < n_.size(); ++j) {
-      if (is_zero(nv[j]) || is_zero(nu[j]) || sign_of(nv[j]) == sign_of(nu[j])) continue;
+      if (sv[j] == 0) continue;
+      const R nu = dot(n_[j], u);
+      if (is_zero(nu) || sv[j] == sign_of(nu)) continue;
       // |nv| / (2 |nu|) < a / b  <=>  |nv| b < 2 |nu| a
-      const R num = sign_of(nv[j]) > 0 ? nv[j] : R(-nv[j]), den = R(2 * (sign_of(nu[j]) > 0 ? nu[j] : R(-nu[j])));
+      const R nv = dot(n_[j], v);
+      const R num = sv[j] > 0 ? nv : R(-nv), den = R(2 * (sign_of(nu) > 0 ? nu : R(-nu)));
       if (sign_of(R(num * b - den * a)) < 0) a = num, b = den;
     }
-    record(dimension, combine(b, v, a, u), std::move(s));
+    keep(dimension, combine(b, v, a, u), std::move(s));
+  }
+
+  // Keeps the cell of sign vector s (with the point p if points are kept) unless it is known.
+  void record(int dimension, const V3<R>& p, std::vector<int> s) {
+    if (seen_.insert(s).second) keep(dimension, p, std::move(s));
   }
 
   std::vector<ArrangementCell<T>> cells() && { return std::move(cells_); }
 
  private:
-  void record(int dimension, const V3<R>& p, std::vector<int> s) {
-    if (seen_.emplace(s, cells_.size()).second) cells_.push_back({dimension, from_ring<T>(p), std::move(s)});
-  }
-
   std::vector<V3<R>> n_;
+  std::vector<V3<double>> nd_;  // n_ in doubles (the sign filter)
   const ArrangementBudget& budget_;
-  std::map<std::vector<int>, std::size_t> seen_;
+  bool points_;
+  std::unordered_set<std::vector<int>, SignsHash> seen_;
   std::vector<ArrangementCell<T>> cells_;
+
+  void keep(int dimension, const V3<R>& p, std::vector<int> s) {
+    cells_.push_back({dimension, points_ ? from_ring<T>(p) : Vec<T>(), std::move(s)});
+  }
 };
 
 }  // namespace
 
 template <class T>
-SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const ArrangementBudget& budget) {
+SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const ArrangementBudget& budget, CellPoints points) {
   using R = Ring<T>;
   SphereArrangement<T> out;
   std::vector<V3<R>> n;
@@ -200,7 +242,7 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const Arrangement
   out.planes = Mat<T>(static_cast<Index>(n.size()), 3);
   for (std::size_t j = 0; j < n.size(); ++j) out.planes.row(static_cast<Index>(j)) = normals.row(kept[j]);
 
-  Builder<T> b(n, budget);
+  Builder<T> b(n, budget, points);
   b.add(0, V3<R>{R(0), R(0), R(0)});
   if (n.empty()) {
     b.add(3, V3<R>{R(1), R(0), R(0)});
@@ -226,13 +268,12 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const Arrangement
     std::size_t visited = 0;
     for (const V3<R>& v : vertices) {
       b.check_budget(std::to_string(visited++) + " of " + std::to_string(vertices.size()) + " vertices visited");
-      b.add(1, v);
-      std::vector<R> nv(n.size());
-      for (std::size_t j = 0; j < n.size(); ++j) nv[j] = dot(n[j], v);
+      const std::vector<int> sv = b.signs_at(v);
+      b.record(1, v, sv);
       // Tangent directions at v of the circles through v, sorted around v.
       std::vector<V3<R>> dirs;
       for (std::size_t j = 0; j < n.size(); ++j)
-        if (is_zero(nv[j])) {
+        if (sv[j] == 0) {
           const V3<R> d = cross(n[j], v);
           dirs.push_back(d);
           dirs.push_back(negated(d));
@@ -244,9 +285,9 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const Arrangement
       for (std::size_t k = 0; k < order.size(); ++k) {
         const V3<R>& d = order[k].second;
         const V3<R>& next = order[(k + 1) % order.size()].second;
-        b.add_near(2, v, nv, d);  // along an arc leaving v
+        b.add_near(2, v, sv, d);  // along an arc leaving v
         // Between two consecutive tangent directions (less than pi apart): a region at v.
-        b.add_near(3, v, nv, combine(R(1), d, R(1), next));
+        b.add_near(3, v, sv, combine(R(1), d, R(1), next));
       }
     }
   }
@@ -254,7 +295,7 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const Arrangement
   return out;
 }
 
-template SphereArrangement<double> sphere_arrangement<double>(const Mat<double>&, const ArrangementBudget&);
-template SphereArrangement<Q> sphere_arrangement<Q>(const Mat<Q>&, const ArrangementBudget&);
+template SphereArrangement<double> sphere_arrangement<double>(const Mat<double>&, const ArrangementBudget&, CellPoints);
+template SphereArrangement<Q> sphere_arrangement<Q>(const Mat<Q>&, const ArrangementBudget&, CellPoints);
 
 }  // namespace contactcert::geometry

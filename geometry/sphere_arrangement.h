@@ -40,14 +40,20 @@ struct ArrangementBudget {
   std::size_t max_signs = std::size_t{1} << 26;  ///< cells x planes kept at most (the sign vectors' size)
 };
 
+/// Whether the cells carry their representative points (kSigns: sign vectors only, point left empty).
+enum class CellPoints { kPoints, kSigns };
+
 /// All cells of the arrangement of the planes {g : n . g = 0} for the rows n of `normals` (zero rows are
 /// ignored, parallel rows merged). Representatives are exact for T = Q (computed in integer arithmetic:
 /// normals scaled to primitive integer vectors, representatives integer vectors). Throws exact::BudgetExceeded
-/// (with the vertices and cells covered) past the budget's deadline or sign count.
+/// (with the vertices and cells covered) past the budget's deadline or sign count. The cells and their order do
+/// not depend on `points`.
 template <class T>
-SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const ArrangementBudget& budget = {});
+SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const ArrangementBudget& budget = {},
+                                        CellPoints points = CellPoints::kPoints);
 
-extern template SphereArrangement<double> sphere_arrangement<double>(const Mat<double>&, const ArrangementBudget&);
-extern template SphereArrangement<Q> sphere_arrangement<Q>(const Mat<Q>&, const ArrangementBudget&);
+extern template SphereArrangement<double> sphere_arrangement<double>(const Mat<double>&, const ArrangementBudget&,
+                                                                     CellPoints);
+extern template SphereArrangement<Q> sphere_arrangement<Q>(const Mat<Q>&, const ArrangementBudget&, CellPoints);
 
 }  // namespace contactcert::geometry

@@ -281,10 +281,11 @@ Limited<DesignRun> search(const SceneInput& in, const DesignOptions& o, const De
     if (st.deadline.expired() || st.placements_now >= st.max_placements) st.budget_hit = true;
     return !st.budget_hit;
   };
+  solvers::InsertionCones<exact::Q> cones;  // insertion cones shared across this run's placements
   auto work = [&](long chunk, const std::function<bool()>& between) -> std::optional<std::string> {
     bool complete = false;
     const solvers::ChunkResult r =
-        solvers::run_chunk(plan.problem, plan.symmetry, chunk, o.chunk_size, total, K, between, &complete);
+        solvers::run_chunk(plan.problem, plan.symmetry, chunk, o.chunk_size, total, K, between, &complete, &cones);
     if (!complete) return std::nullopt;
     return solvers::chunk_result_text(r);
   };

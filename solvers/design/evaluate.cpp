@@ -21,20 +21,47 @@ bool meets_beyond_origin(const geometry::FaceCone<Q>& generated, const geometry:
   return both.status == geometry::NncStatus::kNonEmpty && both.dimension() > 0;
 }
 
-/// A wrench of G_goal (the complement of the union of the insertion cones), or an empty vector: G_goal is a
-/// union of cells of the arrangement of the cones' planes, so testing one point per cell decides it.
-Vec<Q> goal_witness(const Insertion<Q>& ins) {
+/// Is g in cone? Read off the signs of g at the arrangement's planes: rows [r, ...) of the arrangement's input
+/// are the cone's inequalities, equalities and strict rows (cone_rows' order); r moves past them.
+bool in_cone(const geometry::FaceCone<Q>& cone, const geometry::SphereArrangement<Q>& arrangement,
+             const std::vector<int>& signs, std::size_t& r) {
+  bool inside = true;
+  auto row_sign = [&]() {
+    const Eigen::Index j = arrangement.row_plane[r];
+    const int s = j < 0 ? 0 : arrangement.row_orientation[r] * signs[static_cast<std::size_t>(j)];
+    ++r;
+    return s;
+  };
+  for (Eigen::Index i = 0; i < cone.inequalities.rows(); ++i) inside = row_sign() <= 0 && inside;
+  for (Eigen::Index i = 0; i < cone.equalities.rows(); ++i) inside = row_sign() == 0 && inside;
+  for (Eigen::Index i = 0; i < cone.strict.rows(); ++i) inside = row_sign() < 0 && inside;
+  return inside;
+}
+
+/// Is G_goal (the complement of the union of the insertion cones) non-empty? G_goal is a union of cells of the
+/// arrangement of the cones' planes, so one point per cell decides it, by the cell's signs (the cones contained in
+/// another, left out of the arrangement, add no point to the union). With `witness`, the point of the first such
+/// cell, highest dimension first.
+bool goal_nonempty(const Insertion<Q>& ins, Vec<Q>* witness) {
   std::vector<const geometry::FaceCone<Q>*> cones;
   for (std::size_t i = 0; i < ins.cones.size(); ++i)
     if (!ins.redundant[i] && !is_empty_cone<Q>(ins.cones[i])) cones.push_back(&ins.cones[i]);
   const std::vector<Vec<Q>> rows = cone_rows<Q>(cones);
   Mat<Q> normals(static_cast<Eigen::Index>(rows.size()), 3);
   for (std::size_t r = 0; r < rows.size(); ++r) normals.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
-  const auto arrangement = geometry::sphere_arrangement<Q>(normals);
+  const auto arrangement = geometry::sphere_arrangement<Q>(
+      normals, {}, witness ? geometry::CellPoints::kPoints : geometry::CellPoints::kSigns);
   for (int dimension = 3; dimension >= 1; --dimension)
-    for (const auto& cell : arrangement.cells)
-      if (cell.dimension == dimension && ins.in_goal(cell.point)) return cell.point;
-  return {};
+    for (const auto& cell : arrangement.cells) {
+      if (cell.dimension != dimension) continue;
+      std::size_t r = 0;
+      bool in_goal = true;
+      for (const auto* c : cones) in_goal = !in_cone(*c, arrangement, cell.signs, r) && in_goal;
+      if (!in_goal) continue;
+      if (witness) *witness = cell.point;
+      return true;
+    }
+  return false;
 }
 
 Vec<Q> row_vector(const Mat<Q>& M, Eigen::Index r) { return M.row(r).transpose(); }
@@ -64,7 +91,7 @@ const char* placement_status_name(PlacementStatus s) {
 }
 
 Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymmetry& symmetry,
-                              const Placement& placement, PlacementEvidence* evidence) {
+                              const Placement& placement, PlacementEvidence* evidence, InsertionCones<Q>* cones) {
   Evaluation out;
   auto reject = [&](PlacementStatus s) {
     out.status = s;
@@ -104,11 +131,7 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
     }
   }
   if (problem.insertable) {
-    const Insertion<Q> ins = insertion<Q>(scene);
-    const Vec<Q> witness = goal_witness(ins);
-    if (witness.size() == 0) return reject(PlacementStatus::kNotInsertable);
-    if (problem.goal_wrench.size() > 0 && !ins.in_goal(problem.goal_wrench))
-      return reject(PlacementStatus::kGoalMissesWrench);
+    const Insertion<Q> ins = insertion<Q>(scene, Route::kPaper, cones);
     long in_goal = 0, first = -1;
     Vec<Q> push_witness;
     for (std::size_t i = 0; i < problem.pushes.size(); ++i) {
@@ -123,6 +146,13 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
         first = static_cast<long>(i);
       }
     }
+    const bool wrench_in_goal = problem.goal_wrench.size() > 0 && ins.in_goal(problem.goal_wrench);
+    // G_goal != {}: a push or the required wrench in it shows it; otherwise a cell of the arrangement decides
+    // (and gives the witness the evidence shows when no push is in G_goal).
+    Vec<Q> witness;
+    if (in_goal == 0 && (evidence || !wrench_in_goal) && !goal_nonempty(ins, evidence ? &witness : nullptr))
+      return reject(PlacementStatus::kNotInsertable);
+    if (problem.goal_wrench.size() > 0 && !wrench_in_goal) return reject(PlacementStatus::kGoalMissesWrench);
     if (problem.goal_push && in_goal == 0) return reject(PlacementStatus::kNoPushInGoal);
     if (problem.rank == Rank::kGoalFraction) {
       out.figure = Q(in_goal, static_cast<long>(problem.pushes.size()));

@@ -5,9 +5,10 @@
 //   3. every wrench (generator) is strongly stable (StabilityOracle: one LP per kinematically feasible mode);
 //   4. a cone of wrenches meets no moving mode's wrench cone except at 0 (eq. 19: then the whole cone is in
 //      G_strong, given 2-3);
-//   5. G_goal != {} (eq. 21 / Table 5): some cell of the arrangement of the insertion cones' planes lies in
-//      no cone; G_goal holds the required wrench if one is given, and the frictionless push at some push
-//      point if that is required.
+//   5. G_goal != {} (eq. 21 / Table 5): a push point's push or the required wrench lies in it, or else some
+//      cell of the arrangement of the insertion cones' planes lies in no cone (read off the cell's signs);
+//      G_goal holds the required wrench if one is given, and the frictionless push at some push point if that
+//      is required.
 // Fixels all touch by construction, so stability considers every fixel of the placement.
 #pragma once
 
@@ -15,6 +16,7 @@
 
 #include "solvers/design/problem.h"
 #include "solvers/design/symmetry.h"
+#include "solvers/insertion/insertion.h"
 #include "solvers/stability/margin.h"
 #include "solvers/stability/strong_stability.h"
 
@@ -49,8 +51,10 @@ struct Evaluation {
 };
 
 /// Decides one placement (increasing candidate indices). With `evidence`, an accepted placement's verdicts
-/// keep their proofs and witnesses there.
+/// keep their proofs and witnesses there; with `cones` (one per problem), insertion cones are shared across
+/// placements.
 Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymmetry& symmetry,
-                              const Placement& placement, PlacementEvidence* evidence = nullptr);
+                              const Placement& placement, PlacementEvidence* evidence = nullptr,
+                              InsertionCones<exact::Q>* cones = nullptr);
 
 }  // namespace contactcert::solvers

@@ -77,14 +77,15 @@ void DesignStatistics::add(const DesignStatistics& o) {
 }
 
 ChunkResult run_chunk(const DesignProblem& problem, const CandidateSymmetry& symmetry, long chunk, long size,
-                      long total, std::size_t k, const std::function<bool()>& between, bool* complete) {
+                      long total, std::size_t k, const std::function<bool()>& between, bool* complete,
+                      InsertionCones<exact::Q>* cones) {
   ChunkResult out{TopK(k), {}};
   const long first = chunk * size, last = first + chunk_length(chunk, size, total);
   const long n = static_cast<long>(problem.candidates.size());
   Placement p = placement_at(first, n, problem.fixels);
   *complete = true;
   for (long i = first; i < last; ++i) {
-    const Evaluation e = evaluate_placement(problem, symmetry, p);
+    const Evaluation e = evaluate_placement(problem, symmetry, p, nullptr, cones);
     ++out.statistics.by_status[static_cast<int>(e.status)];
     out.statistics.lps += e.lps;
     if (e.status == PlacementStatus::kAccepted) out.top.offer({p, e.figure});

@@ -71,9 +71,11 @@ struct ChunkResult {
 
 /// Placements [chunk * size, (chunk + 1) * size) of `total`, evaluated in order; `between` runs after each
 /// placement (a distributed root serves requests there) and stops the chunk early by returning false (then
-/// the result is incomplete and must not be recorded).
+/// the result is incomplete and must not be recorded). `cones` (one per problem) shares insertion cones across
+/// placements and chunks.
 ChunkResult run_chunk(const DesignProblem& problem, const CandidateSymmetry& symmetry, long chunk, long size,
-                      long total, std::size_t k, const std::function<bool()>& between, bool* complete);
+                      long total, std::size_t k, const std::function<bool()>& between, bool* complete,
+                      InsertionCones<exact::Q>* cones = nullptr);
 
 /// Text form of a chunk result (exact figures as strings), for the messages between ranks.
 std::string chunk_result_text(const ChunkResult& r);

@@ -1,5 +1,7 @@
 #include "solvers/insertion/insertion.h"
 
+#include <algorithm>
+
 #include "exact/input_error.h"
 #include "geometry/nnc_cone.h"
 #include "geometry/set_ops.h"
@@ -51,8 +53,38 @@ bool Insertion<T>::in_goal(const Vec<T>& g) const {
   return true;
 }
 
+namespace {
+
+/// G of one set in the goal scene: the wrench cone of the set's mode in the set's contact state, with its form.
 template <class T>
-Insertion<T> insertion(const geometry::PlanarScene& goal, Route route) {
+SetCone<T> set_cone(const geometry::PlanarScene& goal, const InsertionSet& set, Route route) {
+  const geometry::PlanarScene s = scene_in_state(goal, set.state);
+  SetCone<T> out{wrench_cone_face<T>(s, contact_model<T>(s), set.mode, route), {}};
+  if (!is_empty_cone<T>(out.cone)) out.form = geometry::nnc_form<T>(out.cone);
+  return out;
+}
+
+bool unconstrained(Interaction letter) { return letter == Interaction::kUnconstrained; }
+
+}  // namespace
+
+template <class T>
+const SetCone<T>& InsertionCones<T>::cone(const geometry::PlanarScene& goal, std::size_t index, const InsertionSet& set,
+                                          Route route) {
+  std::vector<Q> key{Q(static_cast<long>(index)), Q(static_cast<int>(route))};
+  for (std::size_t i = 0; i < goal.fixels.size(); ++i) {
+    if (unconstrained(set.mode.letters[i])) continue;
+    const geometry::Fixel& f = goal.fixels[i];
+    key.insert(key.end(), {f.frame.point.x, f.frame.point.y, f.frame.normal.x, f.frame.normal.y, f.mu_s, f.mu_k});
+  }
+  const auto known = cones_.find(key);
+  if (known != cones_.end()) return known->second;
+  if (cones_.size() >= capacity_) cones_.clear();
+  return cones_.emplace(std::move(key), set_cone<T>(goal, set, route)).first->second;
+}
+
+template <class T>
+Insertion<T> insertion(const geometry::PlanarScene& goal, Route route, InsertionCones<T>* cones) {
   const std::size_t k = goal.fixels.size();
   if (k != 2 && k != 3) throw exact::InputError("", "$.fixels", "insertion needs 2 or 3 fixels, found " + std::to_string(k));
   for (std::size_t i = 0; i < k; ++i)
@@ -61,18 +93,24 @@ Insertion<T> insertion(const geometry::PlanarScene& goal, Route route) {
                               "insertion takes the goal configuration: every fixel must touch the workpiece");
   Insertion<T> out;
   out.sets = insertion_sets(k);
-  for (const auto& set : out.sets) {
-    const geometry::PlanarScene s = scene_in_state(goal, set.state);
-    out.cones.push_back(wrench_cone_face<T>(s, contact_model<T>(s), set.mode, route));
+  std::vector<geometry::NncForm<T>> forms;  // of each cone, for the containment tests
+  for (std::size_t i = 0; i < out.sets.size(); ++i) {
+    const auto& letters = out.sets[i].mode.letters;
+    const bool shared = cones && std::any_of(letters.begin(), letters.end(), unconstrained);
+    SetCone<T> c = shared ? cones->cone(goal, i, out.sets[i], route) : set_cone<T>(goal, out.sets[i], route);
+    out.cones.push_back(std::move(c.cone));
+    forms.push_back(std::move(c.form));
   }
   out.redundant.assign(out.cones.size(), false);
-  for (std::size_t i = 0; i < out.cones.size(); ++i)
+  for (std::size_t i = 0; i < out.cones.size(); ++i) {
+    const bool empty = is_empty_cone<T>(out.cones[i]);
     for (std::size_t j = 0; j < out.cones.size() && !out.redundant[i]; ++j) {
       if (i == j || out.redundant[j]) continue;
-      if (is_empty_cone<T>(out.cones[i]) ||
-          geometry::contains<T>(out.cones[j], out.cones[i]).status == geometry::ContainmentStatus::kContained)
+      if (empty ||
+          geometry::contains<T>(out.cones[j], out.cones[i], forms[i]).status == geometry::ContainmentStatus::kContained)
         out.redundant[i] = true;
     }
+  }
   return out;
 }
 
@@ -84,9 +122,10 @@ BoundaryPieces<T, bool> insertion_pushes(const geometry::PlanarScene& goal, cons
   return boundary_pieces<T, bool>(goal, cone_rows<T>(cones), [&](const Vec<T>& g) { return ins.in_goal(g); });
 }
 
-#define CONTACTCERT_INSERTION_INSTANTIATE(T)                                                        \
-  template struct Insertion<T>;                                                                     \
-  template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route);                           \
+#define CONTACTCERT_INSERTION_INSTANTIATE(T)                                                   \
+  template struct Insertion<T>;                                                                \
+  template class InsertionCones<T>;                                                            \
+  template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route, InsertionCones<T>*); \
   template BoundaryPieces<T, bool> insertion_pushes<T>(const geometry::PlanarScene&, const Insertion<T>&);
 CONTACTCERT_INSERTION_INSTANTIATE(double)
 CONTACTCERT_INSERTION_INSTANTIATE(Q)

@@ -3,10 +3,12 @@
 // backward and self transitions: eq. (21) for two fixels, Table 5 for three.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
 #include "geometry/face_cone.h"
+#include "geometry/nnc_cone.h"
 #include "solvers/stability/finger_push.h"
 #include "solvers/wrench_cone/wrench_cone.h"
 
@@ -35,17 +37,42 @@ struct Insertion {
 /// a positive gap).
 geometry::PlanarScene scene_in_state(const geometry::PlanarScene& goal, const std::vector<bool>& touching);
 
-/// G_goal for a goal scene in which every fixel touches (2 or 3 fixels). Throws InputError otherwise.
+/// The cones of sets whose mode leaves a fixel unconstrained ('u': it takes no part in the cone), kept across
+/// goal scenes of one workpiece, so that placements sharing the other fixels share them: keyed by the set, the
+/// route and the frames and friction of the fixels that take part; at most `capacity` kept, all dropped when full.
+/// A set's cone G and, when G is not the empty-cone encoding, its nnc_form (for the containment tests).
 template <class T>
-Insertion<T> insertion(const geometry::PlanarScene& goal, Route route = Route::kPaper);
+struct SetCone {
+  geometry::FaceCone<T> cone;
+  geometry::NncForm<T> form;
+};
+
+template <class T>
+class InsertionCones {
+ public:
+  explicit InsertionCones(std::size_t capacity = 4096) : capacity_(capacity) {}
+  /// G of `set`, number `index` of insertion_sets(goal.fixels.size()), in the goal scene `goal`.
+  const SetCone<T>& cone(const geometry::PlanarScene& goal, std::size_t index, const InsertionSet& set, Route route);
+
+ private:
+  std::size_t capacity_;
+  std::map<std::vector<Q>, SetCone<T>> cones_;
+};
+
+/// G_goal for a goal scene in which every fixel touches (2 or 3 fixels). Throws InputError otherwise. With
+/// `cones`, the cones of sets that leave a fixel unconstrained come from there.
+template <class T>
+Insertion<T> insertion(const geometry::PlanarScene& goal, Route route = Route::kPaper,
+                       InsertionCones<T>* cones = nullptr);
 
 /// Frictionless finger pushes along the boundary that lie in G_goal (Figure 10).
 template <class T>
 BoundaryPieces<T, bool> insertion_pushes(const geometry::PlanarScene& goal, const Insertion<T>& ins);
 
-#define CONTACTCERT_INSERTION_EXTERN(T)                                                                   \
-  extern template struct Insertion<T>;                                                                    \
-  extern template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route);                          \
+#define CONTACTCERT_INSERTION_EXTERN(T)                                                               \
+  extern template struct Insertion<T>;                                                                \
+  extern template class InsertionCones<T>;                                                            \
+  extern template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route, InsertionCones<T>*); \
   extern template BoundaryPieces<T, bool> insertion_pushes<T>(const geometry::PlanarScene&, const Insertion<T>&);
 CONTACTCERT_INSERTION_EXTERN(double)
 CONTACTCERT_INSERTION_EXTERN(Q)

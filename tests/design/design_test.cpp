@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include "exact/input_error.h"
+#include "geometry/sphere_arrangement.h"
 #include "solvers/design/candidates.h"
 #include "solvers/design/ranking.h"
 #include "solvers/design/symmetry.h"
+#include "solvers/insertion/insertion.h"
 #include "solvers/stability/strong_stability.h"
 
 namespace contactcert::solvers {
@@ -198,4 +200,60 @@ TEST(DesignEvaluate, AcceptedConesAreStronglyStableInside) {
 }
 
 }  // namespace
+TEST(DesignEvaluate, InsertableVerdictsAreTheSameWithAndWithoutEvidence) {
+  DesignProblem p = pentagon_problem();
+  p.insertable = true;
+  for (const long pushes : {0L, 20L}) {  // without pushes every verdict comes from the arrangement
+    p.pushes = pushes > 0 ? arc_length_candidates(p.workpiece.shape, pushes) : std::vector<Candidate>{};
+    const CandidateSymmetry none;
+    int accepted = 0, not_insertable = 0;
+    for (long i = 0; i < placement_count(8, 3); ++i) {
+      const Placement pl = placement_at(i, 8, 3);
+      PlacementEvidence ev;
+      const Evaluation fast = evaluate_placement(p, none, pl), full = evaluate_placement(p, none, pl, &ev);
+      EXPECT_EQ(fast.status, full.status) << i;
+      EXPECT_EQ(fast.figure, full.figure) << i;
+      not_insertable += fast.status == PlacementStatus::kNotInsertable;
+      if (full.status != PlacementStatus::kAccepted) continue;
+      ++accepted;
+      EXPECT_TRUE(insertion<geometry::Q>(placement_scene(p, pl)).in_goal(ev.goal_witness)) << i;
+    }
+    EXPECT_GT(accepted, 0);
+    EXPECT_GT(not_insertable, 0);
+  }
+}
+
+TEST(DesignEvaluate, ArrangementSignsAloneGiveTheSameCells) {
+  exact::Mat<geometry::Q> normals(7, 3);  // parallel rows, three planes through one line, a zero row, fractions
+  normals << 1, 0, 0, -2, 0, 0, 0, 1, 0, 1, 1, 0, geometry::Q(1, 3), -1, geometry::Q(7, 5), 0, 0, 0, 3, -5, 1;
+  const auto full = geometry::sphere_arrangement<geometry::Q>(normals);
+  const auto signs = geometry::sphere_arrangement<geometry::Q>(normals, {}, geometry::CellPoints::kSigns);
+  ASSERT_EQ(full.cells.size(), signs.cells.size());
+  for (std::size_t c = 0; c < full.cells.size(); ++c) {
+    EXPECT_EQ(full.cells[c].dimension, signs.cells[c].dimension) << c;
+    EXPECT_EQ(full.cells[c].signs, signs.cells[c].signs) << c;
+    EXPECT_EQ(signs.cells[c].point.size(), 0) << c;
+    for (Eigen::Index j = 0; j < full.planes.rows(); ++j) {  // the point's signs are the cell's
+      EXPECT_EQ(exact::sign(geometry::Q(full.planes.row(j).dot(full.cells[c].point))),
+                full.cells[c].signs[static_cast<std::size_t>(j)]);
+    }
+  }
+}
+
+TEST(DesignEvaluate, SharedInsertionConesAreTheConesOfEachPlacement) {
+  const DesignProblem p = pentagon_problem();
+  InsertionCones<geometry::Q> shared(40);  // small: the cache is also emptied on the way
+  for (long i = 0; i < placement_count(8, 3); ++i) {
+    const geometry::PlanarScene scene = placement_scene(p, placement_at(i, 8, 3));
+    const auto fresh = insertion<geometry::Q>(scene), kept = insertion<geometry::Q>(scene, Route::kPaper, &shared);
+    ASSERT_EQ(fresh.cones.size(), kept.cones.size());
+    EXPECT_EQ(fresh.redundant, kept.redundant) << i;
+    for (std::size_t c = 0; c < fresh.cones.size(); ++c) {
+      EXPECT_EQ(fresh.cones[c].inequalities, kept.cones[c].inequalities) << i << " " << c;
+      EXPECT_EQ(fresh.cones[c].equalities, kept.cones[c].equalities) << i << " " << c;
+      EXPECT_EQ(fresh.cones[c].strict, kept.cones[c].strict) << i << " " << c;
+    }
+  }
+}
+
 }  // namespace contactcert::solvers
