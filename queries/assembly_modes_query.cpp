@@ -2,7 +2,6 @@
 
 #include <map>
 
-#include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "queries/modes_query.h"
 #include "solvers/stability/contact_modes.h"
@@ -21,8 +20,7 @@ std::vector<std::string> groups(const AssemblyModesAnswer& a) {
 }
 
 AssemblyModesAnswer assembly_modes_answer(const AssemblyInput& in, const AssemblyModesOptions& options) {
-  if (options.common.arith == exact::Arith::kFloat)
-    throw exact::InputError("command line", "--arith", "modes are enumerated exactly (use exact or verified)");
+  refuse_float(options.common.arith, "modes are enumerated exactly (use exact or verified)");
   solvers::ModeTreeOptions tree{scene_arith(options.common.arith), options.max_nodes, options.max_modes,
                                 options.common.deadline()};
   AssemblyModesAnswer a{sa::assembly_modes(in.assembly, tree),

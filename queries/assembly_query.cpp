@@ -93,9 +93,7 @@ std::string assembly_forces_text(const std::vector<AssemblyContactForce>& forces
 namespace {
 
 AssemblyStabilityAnswer assembly_stability_answer(const AssemblyInput& in, const AssemblyStabilityOptions& options) {
-  if (options.common.arith == exact::Arith::kFloat)
-    throw exact::InputError("command line", "--arith",
-                            "an assembly's stability is decided exactly (use exact or verified)");
+  refuse_float(options.common.arith, "an assembly's stability is decided exactly (use exact or verified)");
   const geometry::Assembly& a = in.assembly;
   AssemblyStabilityAnswer ans;
   ans.arith = scene_arith(options.common.arith);

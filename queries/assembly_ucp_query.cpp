@@ -1,5 +1,4 @@
 // run_assembly_ucp and its writers (queries/assembly_query.h): Pang, Trinkle and Lo's problem for N bodies.
-#include "exact/input_error.h"
 #include "exact/rational_text.h"
 #include "queries/assembly_query.h"
 #include "queries/assembly_svg.h"
@@ -14,10 +13,8 @@ using exact::Q;
 namespace {
 
 AssemblyUcpAnswer assembly_ucp_answer(const AssemblyInput& in, const AssemblyUcpOptions& options) {
-  if (options.common.arith == exact::Arith::kFloat)
-    throw exact::InputError(
-        "command line", "--arith",
-        "an assembly's quasistatic problem is solved exactly here (use exact, verified or adaptive)");
+  refuse_float(options.common.arith,
+               "an assembly's quasistatic problem is solved exactly here (use exact, verified or adaptive)");
   const geometry::Assembly& a = in.assembly;
   ucp::UcpProblem problem;
   problem.quasistatic = solvers::assembly::assembly_quasistatic(a, in.name);

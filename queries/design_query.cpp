@@ -96,8 +96,7 @@ std::vector<solvers::Candidate> read_candidates(const DesignOptions& o, const ge
 }
 
 DesignProblem build_problem(const DesignOptions& o, const geometry::PlanarScene& scene, std::string* how) {
-  if (o.common.arith == exact::Arith::kFloat)
-    throw InputError("command line", "--arith", "design is decided exactly (use exact or verified)");
+  refuse_float(o.common.arith, "design is decided exactly (use exact or verified)");
   DesignProblem p;
   p.workpiece = scene.workpiece;
   p.mu_s = scene.fixels.front().mu_s;

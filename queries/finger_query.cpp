@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "exact/input_error.h"
 #include "queries/boundary_marks.h"
 #include "solvers/stability/stable_region.h"
 
@@ -14,8 +13,7 @@ using exact::Q;
 double signed_degrees(const exact::Vec<Q>& u) { return std::atan2(u(1).get_d(), u(0).get_d()) * 180.0 / M_PI; }
 
 FingerAnswer finger_answer(const SceneInput& input, const FingerOptions& options) {
-  if (options.common.arith == exact::Arith::kFloat)
-    throw exact::InputError("command line", "--arith", "--finger is computed exactly (use exact or verified)");
+  refuse_float(options.common.arith, "--finger is computed exactly (use exact or verified)");
   solvers::ModeTreeOptions tree;  // the mode tree's default arithmetic and budget, the run's deadline
   tree.deadline = options.common.deadline();
   const auto region = solvers::stable_region<Q>(input.scene, solvers::Route::kPaper, tree);

@@ -64,8 +64,7 @@ solvers::Insertion<Q> insertion_of(const geometry::PlanarScene& scene, const std
 namespace {
 
 InsertAnswer insert_answer(const SceneInput& input, const InsertOptions& options, const SweepProgress& progress) {
-  if (options.common.arith == exact::Arith::kFloat)
-    throw exact::InputError("command line", "--arith", "insert is computed exactly (use exact or verified)");
+  refuse_float(options.common.arith, "insert is computed exactly (use exact or verified)");
   InsertAnswer a{input.scene, insertion_of(input.scene, input.name), {}, 0, {}};
   a.pushes = solvers::insertion_pushes<Q>(a.scene, a.insertion);
   a.boundary_fraction = boundary_fraction(a.scene, a.pushes);

@@ -18,8 +18,7 @@ double ModesOptions::time_budget() const { return default_time_budget() ? kModes
 namespace {
 
 ModesAnswer modes_answer(const SceneInput& input, const ModesOptions& options) {
-  if (options.common.arith == exact::Arith::kFloat)
-    throw exact::InputError("command line", "--arith", "modes are enumerated exactly (use exact or verified)");
+  refuse_float(options.common.arith, "modes are enumerated exactly (use exact or verified)");
   solvers::ContactModeOptions tree;
   tree.printed_separation = options.table2 == Table2::kPrinted;
   tree.unions = options.unions;

@@ -29,6 +29,10 @@ Table2 parse_table2(const std::string& text, const std::string& field) {
 
 const char* table2_name(Table2 table2) { return table2 == Table2::kStrict ? "strict" : "printed"; }
 
+void refuse_float(exact::Arith arith, const std::string& why) {
+  if (arith == exact::Arith::kFloat) throw exact::InputError("command line", "--arith", why);
+}
+
 exact::Arith scene_arith(exact::Arith arith) {
   return arith == exact::Arith::kAdaptive ? exact::Arith::kVerified : arith;
 }

@@ -34,6 +34,10 @@ const char* route_name(solvers::Route route);
 Table2 parse_table2(const std::string& text, const std::string& field);
 const char* table2_name(Table2 table2);
 
+/// For a question answered only exactly: InputError naming --arith if `arith` is float, with `why` as its message
+/// (e.g. "modes are enumerated exactly (use exact or verified)").
+void refuse_float(exact::Arith arith, const std::string& why);
+
 /// The arithmetic a planar-scene query runs: its verified path already settles each LP from a float answer checked
 /// exactly, so the UCP's precision ladder (adaptive) runs, and is reported, as verified.
 exact::Arith scene_arith(exact::Arith arith);

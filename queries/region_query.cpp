@@ -1,6 +1,5 @@
 #include "queries/region_query.h"
 
-#include "exact/input_error.h"
 #include "queries/region_data.h"
 #include "queries/stability_svg.h"
 
@@ -11,8 +10,7 @@ using exact::Q;
 namespace {
 
 RegionAnswer region_answer(const SceneInput& input, const RegionOptions& options) {
-  if (options.common.arith == exact::Arith::kFloat)
-    throw exact::InputError("command line", "--arith", "--region is computed exactly (use exact or verified)");
+  refuse_float(options.common.arith, "--region is computed exactly (use exact or verified)");
   solvers::ModeTreeOptions tree;  // the mode tree's default arithmetic and budget, the run's deadline
   tree.deadline = options.common.deadline();
   RegionAnswer a{solvers::stable_region<Q>(input.scene, solvers::Route::kPaper, tree), options.wrench, std::nullopt,
