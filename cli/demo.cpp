@@ -17,14 +17,12 @@ struct DemoArgs {
 };
 
 int demo_command(const DemoArgs& a) {
-  if (a.json) {
-    const Limited<DemoAnswer> r = run_demo(a.query);
-    if (!r) return report_limit("demo", r.limit(), true);
-    std::cout << to_json(*r).dump() << "\n";
-    return 0;
-  }
-  const Limited<DemoAnswer> r = run_demo(a.query, [](const std::string& line) { std::cout << line; });
-  return r ? 0 : report_limit("demo", r.limit(), false);
+  // The readable report is printed line by line as it is computed; --json prints the answer once at the end.
+  const Limited<DemoAnswer> r =
+      a.json ? run_demo(a.query) : run_demo(a.query, [](const std::string& line) { std::cout << line; });
+  if (!r) return report_limit("demo", r.limit(), a.json);
+  if (a.json) std::cout << to_json(*r).dump() << "\n";
+  return 0;
 }
 
 }  // namespace
