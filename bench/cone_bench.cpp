@@ -18,6 +18,7 @@
 
 #include "bench/cone_peers.h"
 #include "exact/fraction_free.h"
+#include "exact/int_matrix.h"
 #include "exact/json_input.h"
 #include "geometry/canonical.h"
 #include "geometry/double_description.h"
@@ -136,9 +137,15 @@ Workload workload(const benchmark::State& state) {
   if (code == -4) w.faces = {testing::cube_face(10)};
   if (code == -5) w.spans = {testing::cube_span(10)};
   if (code == -6) w.faces = {hard_dim8_facets()};
-  namespace rg = contactcert::exact::ring;
-  for (const auto& c : w.spans) w.rows.push_back(rg::to_ring_rows<Z>(c.rays)), w.dims.push_back(c.dim);
-  for (const auto& c : w.faces) w.rows.push_back(rg::to_ring_rows<Z>(c.inequalities)), w.dims.push_back(c.dim);
+  // The peers' input: the rows of to_ring_rows, as nested vectors (Normaliz's own input type).
+  auto peer_rows = [](const Mat<Q>& M) {
+    const auto rows = contactcert::exact::ring::to_ring_rows<Z>(M);
+    std::vector<std::vector<Z>> out;
+    for (long i = 0; i < rows.rows(); ++i) out.emplace_back(rows.row(i), rows.row(i) + rows.cols());
+    return out;
+  };
+  for (const auto& c : w.spans) w.rows.push_back(peer_rows(c.rays)), w.dims.push_back(c.dim);
+  for (const auto& c : w.faces) w.rows.push_back(peer_rows(c.inequalities)), w.dims.push_back(c.dim);
   return w;
 }
 

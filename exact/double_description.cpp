@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -30,17 +31,23 @@ R negated(const R& x) {
 // along l onto the row's hyperplane (their values on earlier rows stay: l is orthogonal to those rows),
 // and for an inequality -sign(a . l) l becomes a ray, tight on every earlier row. A row orthogonal to
 // every line is a step of Motzkin's iteration on the rays (add_row), new rays from adjacent (plus, minus)
-// pairs by the combinatorial test (Fukuda-Prodon). Rays and their zero sets (bitsets over processed rows)
-// are kept in flat arrays; the scratch lists are reused from row to row.
+// pairs by the combinatorial test (Fukuda-Prodon). Rays and lines are the rows of integer matrices
+// (int_matrix.h: contiguous, the rays' matrix with spare rows for new rays), the rays' zero sets bitsets
+// over processed rows in a flat array; the scratch lists are reused from row to row.
 template <class R>
 class DoubleDescription {
  public:
   DoubleDescription(Index k, std::size_t rows, const DdBudget& budget)
-      : k_(k), rows_(rows), words_((rows + 63) / 64), budget_(budget), common_(words_), tmp_(static_cast<size_t>(k)) {
-    for (Index i = 0; i < k; ++i) {
-      lines_.emplace_back(static_cast<size_t>(k), R(0));
-      lines_.back()[static_cast<size_t>(i)] = R(1);
-    }
+      : k_(k),
+        rows_(rows),
+        words_((rows + 63) / 64),
+        budget_(budget),
+        coord_(0, k),
+        lines_(k, k),
+        common_(words_),
+        tmp_(static_cast<size_t>(k)),
+        line_(static_cast<size_t>(k)) {
+    for (Index i = 0; i < k; ++i) lines_(i, i) = R(1);
   }
 
   // The orthant { y >= 0 } of R^k as the state after its k rows -e_1, ..., -e_k (and before `rows` more):
@@ -51,12 +58,16 @@ class DoubleDescription {
         rows_(static_cast<std::size_t>(k) + rows),
         words_((rows_ + 63) / 64),
         budget_(budget),
+        coord_(0, k),
+        lines_(0, k),
         common_(words_),
-        tmp_(static_cast<size_t>(k)) {
+        tmp_(static_cast<size_t>(k)),
+        line_(static_cast<size_t>(k)) {
     for (std::size_t j = 0; j < static_cast<std::size_t>(k); ++j) {
       const std::size_t id = push_ray(j);
-      std::fill_n(&coord_[id * static_cast<size_t>(k_)], k_, R(0));
-      coord_[id * static_cast<size_t>(k_) + j] = R(1);
+      R* y = ray(id);
+      std::fill_n(y, k_, R(0));
+      y[j] = R(1);
       for (std::size_t u = 0; u < static_cast<std::size_t>(k); ++u)
         if (u != j) set_bit(id, u);
     }
@@ -66,30 +77,33 @@ class DoubleDescription {
   // If some line l has a . l != 0: intersects the cone with { a . y <= 0 } (or = 0) by removing l, and
   // returns true; false (nothing done) if a is orthogonal to every line.
   bool reduce_lineality(const R* a, bool equality) {
-    line_values_.resize(lines_.size());
-    std::size_t piv = lines_.size();
-    for (std::size_t i = 0; i < lines_.size(); ++i) {
-      rg::dot(a, lines_[i].data(), k_, line_values_[i]);
-      if (rg::sign(line_values_[i]) != 0 &&
-          (piv == lines_.size() || rg::better_pivot(line_values_[i], line_values_[piv])))
+    const Index nl = lines_.rows();
+    line_values_.resize(static_cast<std::size_t>(nl));
+    Index piv = nl;
+    for (Index i = 0; i < nl; ++i) {
+      R& value = line_values_[static_cast<std::size_t>(i)];
+      rg::dot(a, lines_.row(i), k_, value);
+      if (rg::sign(value) != 0 && (piv == nl || rg::better_pivot(value, line_values_[static_cast<std::size_t>(piv)])))
         piv = i;
     }
-    if (piv == lines_.size()) return false;
+    if (piv == nl) return false;
     const std::size_t t = processed_++;
-    std::vector<R> l = std::move(lines_[piv]);
-    const R al = line_values_[piv];
-    lines_.erase(lines_.begin() + static_cast<std::ptrdiff_t>(piv));
+    std::vector<R>& l = line_;
+    std::swap_ranges(lines_.row(piv), lines_.row(piv) + k_, l.begin());
+    const R al = line_values_[static_cast<std::size_t>(piv)];
+    lines_.erase_row(piv);
     line_values_.erase(line_values_.begin() + static_cast<std::ptrdiff_t>(piv));
     // y <- (a . l) y - (a . y) l: a . y = 0 afterwards (times -1 for a ray when a . l < 0).
-    for (std::size_t i = 0; i < lines_.size(); ++i) {
-      if (rg::sign(line_values_[i]) == 0) continue;
-      rg::combine(l.data(), al, lines_[i].data(), line_values_[i], tmp_.data(), k_);
-      lines_[i].swap(tmp_);
-      rg::normalize(lines_[i].data(), k_);
+    for (Index i = 0; i < lines_.rows(); ++i) {
+      const R& value = line_values_[static_cast<std::size_t>(i)];
+      if (rg::sign(value) == 0) continue;
+      rg::combine(l.data(), al, lines_.row(i), value, tmp_.data(), k_);
+      std::swap_ranges(tmp_.begin(), tmp_.end(), lines_.row(i));
+      rg::normalize(lines_.row(i), k_);
     }
     R v;
     for (std::size_t r = 0; r < count_; ++r) {
-      R* y = &coord_[r * static_cast<size_t>(k_)];
+      R* y = ray(r);
       rg::dot(a, y, k_, v);
       set_bit(r, t);
       if (rg::sign(v) == 0) continue;
@@ -101,7 +115,7 @@ class DoubleDescription {
     }
     if (!equality) {
       const std::size_t id = push_ray(t);
-      R* y = &coord_[id * static_cast<size_t>(k_)];
+      R* y = ray(id);
       for (Index j = 0; j < k_; ++j)
         y[j] = rg::sign(al) > 0 ? negated(l[static_cast<size_t>(j)]) : l[static_cast<size_t>(j)];
       for (std::size_t u = 0; u < t; ++u) set_bit(id, u);  // l is orthogonal to every earlier row
@@ -120,15 +134,16 @@ class DoubleDescription {
         meter_(o.meter_),
         processed_(o.processed_),
         count_(o.count_),
-        coord_(o.count_ * static_cast<size_t>(o.k_)),
+        coord_(static_cast<Index>(o.count_), o.k_),
         bits_(o.bits_),
+        lines_(o.lines_.rows(), o.k_),
         common_(words_),
-        tmp_(static_cast<size_t>(k_)) {
-    for (std::size_t i = 0; i < coord_.size(); ++i) rg::from_integer(static_cast<long>(o.coord_[i]), coord_[i]);
-    for (const auto& l : o.lines_) {
-      lines_.emplace_back(l.size());
-      for (std::size_t j = 0; j < l.size(); ++j) rg::from_integer(static_cast<long>(l[j]), lines_.back()[j]);
-    }
+        tmp_(static_cast<size_t>(k_)),
+        line_(static_cast<size_t>(k_)) {
+    for (Index i = 0; i < coord_.rows(); ++i)
+      for (Index j = 0; j < k_; ++j) rg::from_integer(static_cast<long>(o.coord_(i, j)), coord_(i, j));
+    for (Index i = 0; i < lines_.rows(); ++i)
+      for (Index j = 0; j < k_; ++j) rg::from_integer(static_cast<long>(o.lines_(i, j)), lines_(i, j));
   }
 
   // Intersects the current cone with { a . y <= 0 } (or = 0) for a row orthogonal to every line. On
@@ -152,15 +167,19 @@ class DoubleDescription {
     std::size_t cut = 0;
     R v;
     for (std::size_t r = 0; r < count_; ++r) {
-      rg::dot(a, &coord_[r * static_cast<size_t>(k_)], k_, v);
+      rg::dot(a, ray(r), k_, v);
       if (rg::sign(v) > 0) ++cut;
     }
     return cut;
   }
 
   std::size_t count() const { return count_; }
-  const R* ray(std::size_t r) const { return &coord_[r * static_cast<size_t>(k_)]; }
-  const std::vector<std::vector<R>>& lines() const { return lines_; }
+  /// The rays (count() rows) and lines of the cone, taken out of the iteration (which is left without them).
+  RingGenerators<R> take_generators() {
+    coord_.resize_rows(static_cast<Index>(count_));
+    count_ = 0;
+    return {std::move(coord_), std::move(lines_)};
+  }
 
  private:
   template <class>
@@ -172,7 +191,7 @@ class DoubleDescription {
     minus_.clear();
     keep_.clear();
     for (std::size_t r = 0; r < n; ++r) {
-      rg::dot(a, &coord_[r * static_cast<size_t>(k_)], k_, values_[r]);
+      rg::dot(a, ray(r), k_, values_[r]);
       const int s = rg::sign(values_[r]);
       if (s > 0) {
         plus_.push_back(r);
@@ -213,7 +232,7 @@ class DoubleDescription {
   // (Fukuda-Prodon). The 2-face of an adjacent pair has dimension 2 + #lines, so its rows have rank
   // k - 2 - #lines at least. (Inlined into both CPU variants.)
   [[gnu::always_inline]] inline void new_rays(std::size_t t, std::size_t n) {
-    const std::size_t free_dim = static_cast<std::size_t>(k_) - lines_.size();
+    const std::size_t free_dim = static_cast<std::size_t>(k_ - lines_.rows());
     const std::size_t need = free_dim >= 2 ? free_dim - 2 : 0;
     // Zero sets hold rows before t only: the words from `used` on are 0 in every ray and in common_
     // (used grows with t).
@@ -231,9 +250,8 @@ class DoubleDescription {
         for (std::size_t w = 0; w < used; ++w) common_[w] = bp[w] & bm[w];
         if (!adjacent(p, m, pop, n, t)) continue;
         const std::size_t id = push_ray(t);
-        rg::combine(&coord_[p * static_cast<size_t>(k_)], values_[p], &coord_[m * static_cast<size_t>(k_)], values_[m],
-                    &coord_[id * static_cast<size_t>(k_)], k_);
-        rg::normalize(&coord_[id * static_cast<size_t>(k_)], k_);
+        rg::combine(ray(p), values_[p], ray(m), values_[m], ray(id), k_);
+        rg::normalize(ray(id), k_);
         for (std::size_t w = 0; w < words_; ++w) bits_[id * words_ + w] = common_[w];
         set_bit(id, t);
       }
@@ -320,14 +338,13 @@ class DoubleDescription {
     for (std::size_t i = 0; i < keep_.size(); ++i) {
       const std::size_t from = keep_[i];
       if (from == i) continue;
-      for (Index j = 0; j < k_; ++j)
-        std::swap(coord_[i * static_cast<size_t>(k_) + static_cast<size_t>(j)],
-                  coord_[from * static_cast<size_t>(k_) + static_cast<size_t>(j)]);
+      coord_.swap_rows(static_cast<Index>(i), static_cast<Index>(from));
       for (std::size_t w = 0; w < words_; ++w) bits_[i * words_ + w] = bits_[from * words_ + w];
     }
     count_ = keep_.size();
   }
 
+  R* ray(std::size_t r) { return coord_.row(static_cast<Index>(r)); }
   void set_bit(std::size_t r, std::size_t t) { bits_[r * words_ + t / 64] |= std::uint64_t{1} << (t % 64); }
   void charge(std::size_t units, std::size_t t) {
     meter_.charge(units, [&] { return covered(t); });
@@ -340,7 +357,7 @@ class DoubleDescription {
     if (count_ >= budget_.max_rays || count_ >= UINT32_MAX)  // (tight_ holds 32-bit ray indices)
       throw BudgetExceeded("double description: more than " + std::to_string(budget_.max_rays) + " rays", covered(t));
     const std::size_t id = count_++;
-    if (coord_.size() < count_ * static_cast<size_t>(k_)) coord_.resize(count_ * static_cast<size_t>(k_) * 2);
+    if (static_cast<std::size_t>(coord_.rows()) < count_) coord_.resize_rows(static_cast<Index>(count_ * 2));
     if (bits_.size() < count_ * words_) bits_.resize(count_ * words_ * 2);
     for (std::size_t w = 0; w < words_; ++w) bits_[id * words_ + w] = 0;
     return id;
@@ -353,9 +370,9 @@ class DoubleDescription {
   WorkMeter meter_{budget_};
   std::size_t processed_ = 0;
   std::size_t count_ = 0;
-  std::vector<R> coord_;
+  IntMatrix<R> coord_;  // the rays in rows [0, count_); the rows below are storage for new rays
   std::vector<std::uint64_t> bits_;
-  std::vector<std::vector<R>> lines_;
+  IntMatrix<R> lines_;
   std::vector<R> line_values_;
   std::vector<R> values_;
   std::vector<std::size_t> plus_, minus_, keep_;
@@ -365,26 +382,35 @@ class DoubleDescription {
   std::vector<bool> has_tight_bits_;
   std::size_t ray_words_ = 0;
   std::vector<const std::uint64_t*> common_rows_;
-  std::vector<R> tmp_;
+  std::vector<R> tmp_, line_;
 };
+
+// Sorts the row numbers `which` of M by M's rows, lexicographically (the order of std::vector<R>'s <).
+template <class R>
+void lex_sort(const IntMatrix<R>& M, std::vector<Index>& which) {
+  const Index k = M.cols();
+  std::sort(which.begin(), which.end(), [&](Index a, Index b) {
+    return std::lexicographical_compare(M.row(a), M.row(a) + k, M.row(b), M.row(b) + k);
+  });
+}
 
 // R^3: an extreme ray of the pointed cone { y : a . y <= 0 } is tight on two independent rows, so it is
 // +-(a_i x a_j) for a pair that keeps every row <= 0; no simplicial start, no DD. Normalized rays in
 // lexicographic order, one per ray (rays equal by R's sign test: an exact ring's equality, a float
 // ring's tolerance); nullopt if the rows have rank < 3.
 template <class R>
-std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::vector<std::vector<R>>& rows,
-                                                                   const DdBudget& budget) {
-  std::vector<std::vector<R>> out;
-  std::vector<R> c(3);
+std::optional<IntMatrix<R>> pointed_extreme_rays_3d(const IntMatrix<R>& rows, const DdBudget& budget) {
+  const Index n = rows.rows();
+  IntMatrix<R> out(0, 3);
+  R c[3];
   R x;
   bool full_rank = false;
   WorkMeter meter(budget);
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    for (std::size_t j = i + 1; j < rows.size(); ++j) {
-      meter.charge(rows.size(),
-                   [&] { return std::to_string(i) + " of " + std::to_string(rows.size()) + " rows paired"; });
-      const std::vector<R>&a = rows[i], &b = rows[j];
+  for (Index i = 0; i < n; ++i)
+    for (Index j = i + 1; j < n; ++j) {
+      meter.charge(static_cast<std::uint64_t>(n),
+                   [&] { return std::to_string(i) + " of " + std::to_string(n) + " rows paired"; });
+      const R *a = rows.row(i), *b = rows.row(j);
       for (std::size_t t = 0; t < 3; ++t) {  // c_t = a_{t+1} b_{t+2} - a_{t+2} b_{t+1}
         const std::size_t u = (t + 1) % 3, v = (t + 2) % 3;
         rg::combine(&b[u], a[u], &b[v], a[v], &c[t], 1);
@@ -392,8 +418,8 @@ std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::ve
       if (rg::sign(c[0]) == 0 && rg::sign(c[1]) == 0 && rg::sign(c[2]) == 0) continue;
       int side = 0;
       bool ray = true;
-      for (std::size_t l = 0; l < rows.size() && ray; ++l) {
-        rg::dot(rows[l].data(), c.data(), 3, x);
+      for (Index l = 0; l < n && ray; ++l) {
+        rg::dot(rows.row(l), c, 3, x);
         const int s = rg::sign(x);
         if (s == 0) continue;
         full_rank = true;
@@ -403,27 +429,24 @@ std::optional<std::vector<std::vector<R>>> pointed_extreme_rays_3d(const std::ve
       if (!ray || side == 0) continue;
       if (side > 0)
         for (R& e : c) e = negated(e);
-      rg::normalize(c.data(), 3);
-      const auto same = [&](const std::vector<R>& o) {
-        for (std::size_t t = 0; t < 3; ++t)
-          if (rg::sign(rg::sub(o[t], c[t])) != 0) return false;
+      rg::normalize(c, 3);
+      const auto same = [&](Index o) {
+        for (Index t = 0; t < 3; ++t)
+          if (rg::sign(rg::sub(out(o, t), c[t])) != 0) return false;
         return true;
       };
-      if (std::none_of(out.begin(), out.end(), same)) out.push_back(c);
+      bool is_new = true;
+      for (Index o = 0; o < out.rows() && is_new; ++o) is_new = !same(o);
+      if (is_new) out.append_row(c);
     }
   if (!full_rank) return std::nullopt;
-  std::sort(out.begin(), out.end());
-  if (out.size() > budget.max_rays)
+  std::vector<Index> order(static_cast<std::size_t>(out.rows()));
+  std::iota(order.begin(), order.end(), Index{0});
+  lex_sort(out, order);
+  out = out.select_rows(order);
+  if (static_cast<std::size_t>(out.rows()) > budget.max_rays)
     throw BudgetExceeded("double description: more than " + std::to_string(budget.max_rays) + " rays",
-                         std::to_string(out.size()) + " rays");
-  return out;
-}
-
-template <class R>
-RingGenerators<R> generators(const DoubleDescription<R>& dd, Index k) {
-  RingGenerators<R> out;
-  out.lines = dd.lines();
-  for (std::size_t r = 0; r < dd.count(); ++r) out.rays.emplace_back(dd.ray(r), dd.ray(r) + k);
+                         std::to_string(out.rows()) + " rays");
   return out;
 }
 
@@ -431,49 +454,42 @@ RingGenerators<R> generators(const DoubleDescription<R>& dd, Index k) {
 // out of `rest` once it is in. The cutoff orders look at every row left before each step (cddlib's
 // MinCutoff / MaxCutoff). On RingOverflow, dd and `rest` are as they were before the row that overflowed.
 template <class R>
-void add_in_order(DoubleDescription<R>& dd, const std::vector<std::vector<R>>& A, std::vector<std::size_t>& rest,
-                  RowOrder order) {
+void add_in_order(DoubleDescription<R>& dd, const IntMatrix<R>& A, std::vector<Index>& rest, RowOrder order) {
   const bool fewest = order == RowOrder::kMinCutoff;
   while (!rest.empty()) {
     std::size_t next = order == RowOrder::kLexMax ? rest.size() - 1 : 0;  // a position in rest
     if (fewest || order == RowOrder::kMaxCutoff) {
       std::size_t best = 0;
       for (std::size_t p = 0; p < rest.size(); ++p) {
-        const std::size_t cut = dd.cutoff(A[rest[p]].data());
+        const std::size_t cut = dd.cutoff(A.row(rest[p]));
         if (p == 0 || (fewest ? cut < best : cut > best)) next = p, best = cut;
         if (fewest ? best == 0 : best == dd.count()) break;  // nothing better is left
       }
     }
-    dd.add_row(A[rest[next]].data(), false);
+    dd.add_row(A.row(rest[next]), false);
     rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(next));
   }
 }
 
 // A run in std::int64_t that overflowed with the rows A[i], i in `rest`, still to add (and was left as
 // before the row that overflowed) goes on in Z from there: the rows before are not processed again.
-RingGenerators<Z> finish_in_z(const DoubleDescription<std::int64_t>& fixed,
-                              const std::vector<std::vector<std::int64_t>>& A, std::vector<std::size_t> rest, Index k,
-                              RowOrder order) {
+RingGenerators<Z> finish_in_z(const DoubleDescription<std::int64_t>& fixed, const IntMatrix<std::int64_t>& A,
+                              std::vector<Index> rest, RowOrder order) {
   DoubleDescription<Z> dd(fixed);
-  std::vector<std::vector<Z>> wide(A.size());
-  for (std::size_t i : rest) {
-    wide[i].resize(static_cast<size_t>(k));
-    for (Index j = 0; j < k; ++j)
-      rg::from_integer(static_cast<long>(A[i][static_cast<size_t>(j)]), wide[i][static_cast<size_t>(j)]);
-  }
+  IntMatrix<Z> wide(A.rows(), A.cols());
+  for (Index i : rest)
+    for (Index j = 0; j < A.cols(); ++j) rg::from_integer(static_cast<long>(A(i, j)), wide(i, j));
   add_in_order(dd, wide, rest, order);
-  return generators(dd, k);
+  return dd.take_generators();
 }
 
 // Generators in Z as std::int64_t rows; RingOverflow if an entry does not fit (the caller then
 // restarts in Z).
 RingGenerators<std::int64_t> narrowed(const RingGenerators<Z>& g) {
-  auto narrow = [](const std::vector<std::vector<Z>>& rows) {
-    std::vector<std::vector<std::int64_t>> out(rows.size());
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      out[i].resize(rows[i].size());
-      for (std::size_t j = 0; j < rows[i].size(); ++j) rg::from_integer(rows[i][j], out[i][j]);
-    }
+  auto narrow = [](const IntMatrix<Z>& rows) {
+    IntMatrix<std::int64_t> out(rows.rows(), rows.cols());
+    for (Index i = 0; i < rows.rows(); ++i)
+      for (Index j = 0; j < rows.cols(); ++j) rg::from_integer(rows(i, j), out(i, j));
     return out;
   };
   return {narrow(g.rays), narrow(g.lines)};
@@ -482,79 +498,79 @@ RingGenerators<std::int64_t> narrowed(const RingGenerators<Z>& g) {
 // Adds the rows A[i], i in `later`, to dd in the given order and returns its generators; a run in
 // std::int64_t that overflows goes on in Z.
 template <class R>
-RingGenerators<R> finish(DoubleDescription<R>& dd, const std::vector<std::vector<R>>& A, std::vector<std::size_t> later,
-                         Index k, RowOrder order) {
+RingGenerators<R> finish(DoubleDescription<R>& dd, const IntMatrix<R>& A, std::vector<Index> later, RowOrder order) {
   if constexpr (std::is_same_v<R, std::int64_t>) {
     try {
       add_in_order(dd, A, later, order);
     } catch (const RingOverflow&) {
-      return narrowed(finish_in_z(dd, A, std::move(later), k, order));
+      return narrowed(finish_in_z(dd, A, std::move(later), order));
     }
   } else {
     add_in_order(dd, A, later, order);
   }
-  return generators(dd, k);
+  return dd.take_generators();
 }
 
 // The double description of { y : A y <= 0, E y = 0 } for sorted rows: the equalities first, then the
 // inequalities that lower the lineality (a basis of what is left, the greedy choice in order), then the
 // others in budget.order.
 template <class R>
-RingGenerators<R> generators_of_sorted(const std::vector<std::vector<R>>& A, const std::vector<std::vector<R>>& E,
-                                       Index k, const DdBudget& budget) {
-  DoubleDescription<R> dd(k, A.size() + E.size(), budget);
-  for (const auto& e : E)
-    if (!dd.reduce_lineality(e.data(), true)) dd.add_row(e.data(), true);
-  std::vector<std::size_t> later;
-  for (std::size_t i = 0; i < A.size(); ++i)
-    if (!dd.reduce_lineality(A[i].data(), false)) later.push_back(i);
-  return finish(dd, A, std::move(later), k, budget.order);
+RingGenerators<R> generators_of_sorted(const IntMatrix<R>& A, const IntMatrix<R>& E, const DdBudget& budget) {
+  DoubleDescription<R> dd(A.cols(), static_cast<std::size_t>(A.rows() + E.rows()), budget);
+  for (Index i = 0; i < E.rows(); ++i)
+    if (!dd.reduce_lineality(E.row(i), true)) dd.add_row(E.row(i), true);
+  std::vector<Index> later;
+  for (Index i = 0; i < A.rows(); ++i)
+    if (!dd.reduce_lineality(A.row(i), false)) later.push_back(i);
+  return finish(dd, A, std::move(later), budget.order);
 }
 
 }  // namespace
 
 template <class R>
-void sort_rows(std::vector<std::vector<R>>& rows) {
-  std::erase_if(rows, [](const std::vector<R>& r) {
-    return std::all_of(r.begin(), r.end(), [](const R& x) { return rg::sign(x) == 0; });
-  });
-  std::sort(rows.begin(), rows.end());
-  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+void sort_rows(IntMatrix<R>& rows) {
+  const Index k = rows.cols();
+  std::vector<Index> order;
+  for (Index i = 0; i < rows.rows(); ++i)
+    if (std::any_of(rows.row(i), rows.row(i) + k, [](const R& x) { return rg::sign(x) != 0; })) order.push_back(i);
+  lex_sort(rows, order);
+  order.erase(std::unique(order.begin(), order.end(),
+                          [&](Index a, Index b) { return std::equal(rows.row(a), rows.row(a) + k, rows.row(b)); }),
+              order.end());
+  rows = rows.select_rows(order);
 }
 
 template <class R>
-RingGenerators<R> cone_generators(std::vector<std::vector<R>> A, std::vector<std::vector<R>> E, Index k,
-                                  const DdBudget& budget) {
+RingGenerators<R> cone_generators(IntMatrix<R> A, IntMatrix<R> E, const DdBudget& budget) {
   sort_rows(A);
   sort_rows(E);
-  if (k == 3 && E.empty())
-    if (auto rays = pointed_extreme_rays_3d<R>(A, budget)) return {std::move(*rays), {}};
-  return generators_of_sorted<R>(A, E, k, budget);
+  if (A.cols() == 3 && E.rows() == 0)
+    if (auto rays = pointed_extreme_rays_3d<R>(A, budget)) return {std::move(*rays), IntMatrix<R>(0, 3)};
+  return generators_of_sorted<R>(A, E, budget);
 }
 
 template <class R>
-std::vector<std::vector<R>> orthant_rays(const std::vector<std::vector<R>>& A, Index k, const DdBudget& budget) {
-  DoubleDescription<R> dd(k, A.size(), budget, typename DoubleDescription<R>::Orthant{});
-  std::vector<std::size_t> rows(A.size());
-  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = i;
-  return finish(dd, A, std::move(rows), k, RowOrder::kLexMin).rays;  // rows[0] first: as given
+IntMatrix<R> orthant_rays(const IntMatrix<R>& A, const DdBudget& budget) {
+  DoubleDescription<R> dd(A.cols(), static_cast<std::size_t>(A.rows()), budget,
+                          typename DoubleDescription<R>::Orthant{});
+  std::vector<Index> rows(static_cast<std::size_t>(A.rows()));
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = static_cast<Index>(i);
+  return finish(dd, A, std::move(rows), RowOrder::kLexMin).rays;  // rows[0] first: as given
 }
 
 template <class R>
-std::optional<std::vector<std::vector<R>>> pointed_cone_rays(std::vector<std::vector<R>> rows, Index k,
-                                                             const DdBudget& budget) {
-  RingGenerators<R> g = cone_generators<R>(std::move(rows), {}, k, budget);
-  if (!g.lines.empty()) return std::nullopt;
+std::optional<IntMatrix<R>> pointed_cone_rays(IntMatrix<R> rows, const DdBudget& budget) {
+  const Index k = rows.cols();
+  RingGenerators<R> g = cone_generators<R>(std::move(rows), IntMatrix<R>(0, k), budget);
+  if (g.lines.rows() != 0) return std::nullopt;
   return std::move(g.rays);
 }
 
-#define CONTACTCERT_DD_RING_INSTANTIATE(R)                                                                       \
-  template RingGenerators<R> cone_generators<R>(std::vector<std::vector<R>>, std::vector<std::vector<R>>, Index, \
-                                                const DdBudget&);                                                \
-  template std::optional<std::vector<std::vector<R>>> pointed_cone_rays<R>(std::vector<std::vector<R>>, Index,   \
-                                                                           const DdBudget&);                     \
-  template void sort_rows<R>(std::vector<std::vector<R>>&);                                                      \
-  template std::vector<std::vector<R>> orthant_rays<R>(const std::vector<std::vector<R>>&, Index, const DdBudget&);
+#define CONTACTCERT_DD_RING_INSTANTIATE(R)                                                    \
+  template RingGenerators<R> cone_generators<R>(IntMatrix<R>, IntMatrix<R>, const DdBudget&); \
+  template std::optional<IntMatrix<R>> pointed_cone_rays<R>(IntMatrix<R>, const DdBudget&);   \
+  template void sort_rows<R>(IntMatrix<R>&);                                                  \
+  template IntMatrix<R> orthant_rays<R>(const IntMatrix<R>&, const DdBudget&);
 CONTACTCERT_DD_RING_INSTANTIATE(double)
 CONTACTCERT_DD_RING_INSTANTIATE(std::int64_t)
 CONTACTCERT_DD_RING_INSTANTIATE(Z)

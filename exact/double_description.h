@@ -14,6 +14,7 @@
 
 #include "exact/deadline.h"
 #include "exact/input_error.h"
+#include "exact/int_matrix.h"
 #include "exact/number.h"
 
 namespace contactcert::exact {
@@ -65,48 +66,43 @@ class WorkMeter {
 };
 
 /// Extreme rays (one per ray modulo the lineality space) and a basis of the lineality space of a cone,
-/// as rows in a ring R of exact/fraction_free.h (std::int64_t, Z or a float type): primitive integers
-/// (unit max-norm in double).
+/// as the rows of integer matrices (int_matrix.h) in a ring R of exact/fraction_free.h (std::int64_t, Z or
+/// a float type): primitive integers (unit max-norm in double).
 template <class R>
 struct RingGenerators {
-  std::vector<std::vector<R>> rays;
-  std::vector<std::vector<R>> lines;
+  IntMatrix<R> rays;
+  IntMatrix<R> lines;
 };
 
 /// The generators of { y in R^k : a . y <= 0 for every row a of A, e . y = 0 for every row e of E } for
-/// rows in R, by one double description run in R (no change of coordinates, no rationals). The rows are
-/// sorted and deduplicated first; in R^3 without equalities the rays come from pairs of rows instead.
-/// std::int64_t throws RingOverflow.
+/// rows in R (k = A's columns; E has k columns or no rows), by one double description run in R (no change
+/// of coordinates, no rationals). The rows are sorted and deduplicated first; in R^3 without equalities the
+/// rays come from pairs of rows instead. std::int64_t throws RingOverflow.
 template <class R>
-RingGenerators<R> cone_generators(std::vector<std::vector<R>> A, std::vector<std::vector<R>> E, Eigen::Index k,
-                                  const DdBudget& budget = {});
+RingGenerators<R> cone_generators(IntMatrix<R> A, IntMatrix<R> E, const DdBudget& budget = {});
 
-/// The extreme rays of { y in R^k : a . y <= 0 for every row a } (cone_generators without equalities);
-/// nullopt when the rows have rank < k (the cone is not pointed).
+/// The extreme rays of { y in R^k : a . y <= 0 for every row a } (k = the rows' columns; cone_generators
+/// without equalities); nullopt when the rows have rank < k (the cone is not pointed).
 template <class R>
-std::optional<std::vector<std::vector<R>>> pointed_cone_rays(std::vector<std::vector<R>> rows, Eigen::Index k,
-                                                             const DdBudget& budget = {});
+std::optional<IntMatrix<R>> pointed_cone_rays(IntMatrix<R> rows, const DdBudget& budget = {});
 
-/// The extreme rays of { y in R^k : y >= 0, a . y <= 0 for every row a of A }: the double description
-/// started from the orthant's rays e_1, ..., e_k, the rows added in the order given (not sorted; budget.order
-/// is not used), so that the rays come in the order of that iteration. std::int64_t throws RingOverflow.
+/// The extreme rays of { y in R^k : y >= 0, a . y <= 0 for every row a of A } (k = A's columns): the double
+/// description started from the orthant's rays e_1, ..., e_k, the rows added in the order given (not sorted;
+/// budget.order is not used), so that the rays come in the order of that iteration. std::int64_t throws
+/// RingOverflow.
 template <class R>
-std::vector<std::vector<R>> orthant_rays(const std::vector<std::vector<R>>& A, Eigen::Index k,
-                                         const DdBudget& budget = {});
+IntMatrix<R> orthant_rays(const IntMatrix<R>& A, const DdBudget& budget = {});
 
 /// The rows without zero rows and duplicates, in lexicographic order (the fixed processing order of
 /// cone_generators).
 template <class R>
-void sort_rows(std::vector<std::vector<R>>& rows);
+void sort_rows(IntMatrix<R>& rows);
 
-#define CONTACTCERT_DD_RING_EXTERN(R)                                                                             \
-  extern template RingGenerators<R> cone_generators<R>(std::vector<std::vector<R>>, std::vector<std::vector<R>>,  \
-                                                       Eigen::Index, const DdBudget&);                            \
-  extern template std::optional<std::vector<std::vector<R>>> pointed_cone_rays<R>(std::vector<std::vector<R>>,    \
-                                                                                  Eigen::Index, const DdBudget&); \
-  extern template void sort_rows<R>(std::vector<std::vector<R>>&);                                                \
-  extern template std::vector<std::vector<R>> orthant_rays<R>(const std::vector<std::vector<R>>&, Eigen::Index,   \
-                                                              const DdBudget&);
+#define CONTACTCERT_DD_RING_EXTERN(R)                                                                \
+  extern template RingGenerators<R> cone_generators<R>(IntMatrix<R>, IntMatrix<R>, const DdBudget&); \
+  extern template std::optional<IntMatrix<R>> pointed_cone_rays<R>(IntMatrix<R>, const DdBudget&);   \
+  extern template void sort_rows<R>(IntMatrix<R>&);                                                  \
+  extern template IntMatrix<R> orthant_rays<R>(const IntMatrix<R>&, const DdBudget&);
 CONTACTCERT_DD_RING_EXTERN(double)
 CONTACTCERT_DD_RING_EXTERN(std::int64_t)
 CONTACTCERT_DD_RING_EXTERN(Z)

@@ -8,7 +8,6 @@
 #pragma once
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -369,47 +368,12 @@ inline void to_ring(const Q* row, Index k, Z* out) {
   normalize(out, k);
 }
 
-/// The rows [A_1 | A_2 | ...] of field matrices with equal row counts (Eigen expressions over the same
-/// field T, e.g. [P | K]) as ring rows: row i is the positive multiple of the field row that to_ring gives
-/// (primitive integers for Q, unit max-norm rows for a float T; a zero row stays zero).
-template <class R, class D0, class... Ds>
-std::vector<std::vector<R>> to_ring_rows(const Eigen::MatrixBase<D0>& A0, const Eigen::MatrixBase<Ds>&... more) {
-  using T = typename D0::Scalar;
-  static_assert((std::is_same_v<T, typename Ds::Scalar> && ...), "to_ring_rows: blocks over different fields");
-  const Index m = A0.rows(), w = (A0.cols() + ... + more.cols());
-  assert(((more.rows() == m) && ...));
-  std::vector<std::vector<R>> rows(static_cast<std::size_t>(m), std::vector<R>(static_cast<std::size_t>(w)));
-  std::vector<T> buf(static_cast<std::size_t>(w));
-  for (Index i = 0; i < m; ++i) {
-    std::size_t at = 0;
-    auto append = [&](const auto& B) {
-      for (Index j = 0; j < B.cols(); ++j) buf[at++] = B(i, j);
-    };
-    append(A0);
-    (append(more), ...);
-    to_ring(buf.data(), w, rows[static_cast<std::size_t>(i)].data());
-  }
-  return rows;
-}
-
 /// out = x in the field T, in place (a rational's limbs are reused: no temporary is made).
 inline void to_field(std::int64_t x, Q& out) { mpq_set_si(out.get_mpq_t(), static_cast<long>(x), 1); }
 inline void to_field(const Z& x, Q& out) { mpq_set_z(out.get_mpq_t(), x.get_mpz_t()); }
 template <class T, class R>
 void to_field(const R& x, T& out) {
   out = to_field<T>(x);
-}
-
-/// Columns [first, first + cols) of ring rows as a matrix over the field T, entry by entry (to_field): the
-/// inverse of to_ring_rows up to the positive factor of each row. No rows give a 0 x cols matrix.
-template <class T, class R>
-Mat<T> to_field_rows(const std::vector<std::vector<R>>& rows, Index cols, Index first = 0) {
-  Mat<T> M(static_cast<Index>(rows.size()), cols);
-  for (Index i = 0; i < M.rows(); ++i) {
-    const std::vector<R>& row = rows[static_cast<std::size_t>(i)];
-    for (Index j = 0; j < cols; ++j) to_field(row[static_cast<std::size_t>(first + j)], M(i, j));
-  }
-  return M;
 }
 
 }  // namespace ring

@@ -78,7 +78,7 @@ std::vector<Index> IntMatrix<R>::echelon(Index top, Index first, Index last) {
     for (Index i = r; i < rows_; ++i)
       if (ring::sign((*this)(i, c)) != 0 && (p < 0 || better_pivot((*this)(i, c), (*this)(p, c)))) p = i;
     if (p < 0) continue;
-    if (p != r) std::swap_ranges(row(p), row(p) + cols_, row(r));
+    if (p != r) swap_rows(p, r);
     for (Index i = top; i < rows_; ++i)
       if (i != r && ring::sign((*this)(i, c)) != 0) eliminate(row(r), row(i), c, cols_, tmp);
     pivots.push_back(c);

@@ -5,10 +5,14 @@
 // in the float rings (double, MPFR floats, intervals). Row-major, on the stack up to 64 entries (the UCP's systems are
 // that small and solved by the thousand). Its sparse form, SparseIntMatrix (compressed rows), holds the rows that are
 // mostly zero (the UCP's X and Y, the contact Jacobians). Rational rows are held as integer rows with one scale per row
-// (row i = integer row i / scale_i: IntegerSystem, RationalRows). Instantiated in int_matrix.cpp.
+// (row i = integer row i / scale_i: IntegerSystem, RationalRows). The rows of field matrices become ring rows by
+// to_ring_rows and field rows again by to_field_rows: the rows and rays of the double description are IntMatrix
+// rows (double_description.h). Instantiated in int_matrix.cpp.
 #pragma once
 
+#include <algorithm>
 #include <boost/container/small_vector.hpp>
+#include <cassert>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -47,10 +51,29 @@ class IntMatrix {
   R* row(Index i) { return entries_.data() + i * cols_; }
   const R* row(Index i) const { return entries_.data() + i * cols_; }
   bool operator==(const IntMatrix&) const = default;
-  /// Keeps the first `rows` rows.
-  void keep_rows(Index rows) {
+  /// Keeps the first `rows` rows if there are more, appends zero rows if there are fewer.
+  void resize_rows(Index rows) {
     rows_ = rows;
-    entries_.resize(static_cast<std::size_t>(rows * cols_));
+    entries_.resize(static_cast<std::size_t>(rows * cols_), R(0));
+  }
+  /// Appends the row v[0..cols).
+  void append_row(const R* v) {
+    entries_.insert(entries_.end(), v, v + cols_);
+    ++rows_;
+  }
+  /// Removes row i; the rows below it move up by one.
+  void erase_row(Index i) {
+    std::move(row(i + 1), row(rows_), row(i));
+    resize_rows(rows_ - 1);
+  }
+  /// Exchanges rows i and j.
+  void swap_rows(Index i, Index j) { std::swap_ranges(row(i), row(i) + cols_, row(j)); }
+  /// The rows which[0], which[1], ... in that order.
+  IntMatrix select_rows(const std::vector<Index>& which) const {
+    IntMatrix out(0, cols_);
+    out.entries_.reserve(which.size() * static_cast<std::size_t>(cols_));
+    for (Index i : which) out.append_row(row(i));
+    return out;
   }
 
   /// Divides every row by the gcd of its entries (a float ring: ring::normalize), so that it is primitive; zero rows
@@ -183,6 +206,42 @@ template <class R>
 void get(const FittedIntMatrix& M, Eigen::Index i, Eigen::Index j, R& out) {
   M.get(i, j, out);
 }
+
+/// The rows [A_1 | A_2 | ...] of field matrices with equal row counts (Eigen expressions over the same
+/// field T, e.g. [P | K]) as ring rows: row i is the positive multiple of the field row that to_ring gives
+/// (primitive integers for Q, unit max-norm rows for a float T; a zero row stays zero).
+template <class R, class D0, class... Ds>
+IntMatrix<R> to_ring_rows(const Eigen::MatrixBase<D0>& A0, const Eigen::MatrixBase<Ds>&... more) {
+  using T = typename D0::Scalar;
+  static_assert((std::is_same_v<T, typename Ds::Scalar> && ...), "to_ring_rows: blocks over different fields");
+  const Eigen::Index m = A0.rows(), w = (A0.cols() + ... + more.cols());
+  assert(((more.rows() == m) && ...));
+  IntMatrix<R> rows(m, w);
+  std::vector<T> buf(static_cast<std::size_t>(w));
+  for (Eigen::Index i = 0; i < m; ++i) {
+    std::size_t at = 0;
+    auto append = [&](const auto& B) {
+      for (Eigen::Index j = 0; j < B.cols(); ++j) buf[at++] = B(i, j);
+    };
+    append(A0);
+    (append(more), ...);
+    to_ring(buf.data(), w, rows.row(i));
+  }
+  return rows;
+}
+
+/// Columns [first, first + cols) of ring rows as a matrix over the field T, entry by entry (to_field): the
+/// inverse of to_ring_rows up to the positive factor of each row. No rows give a 0 x cols matrix.
+template <class T, class R>
+Mat<T> to_field_rows(const IntMatrix<R>& rows, Eigen::Index cols, Eigen::Index first = 0) {
+  Mat<T> M(rows.rows(), cols);
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    const R* row = rows.row(i);
+    for (Eigen::Index j = 0; j < cols; ++j) to_field(row[first + j], M(i, j));
+  }
+  return M;
+}
+
 }  // namespace ring
 
 /// One equation of a sparse system: sum over terms (j, a) of a u_j = rhs.

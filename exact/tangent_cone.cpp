@@ -21,7 +21,7 @@ OrthantConeRays<T> orthant_cone_rays(const Mat<T>& G, long max_rays) {
   Mat<T> W;
   try {
     W = with_exact_ring<T>(
-        [&]<class R>() { return ring::to_field_rows<T>(orthant_rays<R>(ring::to_ring_rows<R>(G), p, budget), p); });
+        [&]<class R>() { return ring::to_field_rows<T>(orthant_rays<R>(ring::to_ring_rows<R>(G), budget), p); });
   } catch (const BudgetExceeded&) {
     out.status = ConeStatus::kBudgetExceeded;
     return out;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/int_matrix.h"
 #include "exact/ladder_numbers.h"
 
 namespace contactcert::geometry {
@@ -19,19 +20,19 @@ namespace rg = exact::ring;
 // row's zero set strictly contains its own (a face is determined by its zero set), and of rows with
 // equal zero sets one is kept.
 struct Incidence {
-  std::vector<std::size_t> lineal, extreme;
+  std::vector<Index> lineal, extreme;
 };
 
 template <class R>
-Incidence sort_by_incidence(const std::vector<std::vector<R>>& G, const std::vector<std::vector<R>>& D, Index k,
-                            const DdBudget& budget) {
-  const std::size_t words = (D.size() + 63) / 64;
-  std::vector<std::uint64_t> z(G.size() * words, 0);
-  std::vector<std::size_t> pop(G.size(), 0);
+Incidence sort_by_incidence(const exact::IntMatrix<R>& G, const exact::IntMatrix<R>& D, const DdBudget& budget) {
+  const auto g_rows = static_cast<std::size_t>(G.rows()), d_rows = static_cast<std::size_t>(D.rows());
+  const std::size_t words = (d_rows + 63) / 64;
+  std::vector<std::uint64_t> z(g_rows * words, 0);
+  std::vector<std::size_t> pop(g_rows, 0);
   R x;
-  for (std::size_t i = 0; i < G.size(); ++i)
-    for (std::size_t j = 0; j < D.size(); ++j) {
-      rg::dot(G[i].data(), D[j].data(), k, x);
+  for (std::size_t i = 0; i < g_rows; ++i)
+    for (std::size_t j = 0; j < d_rows; ++j) {
+      rg::dot(G.row(static_cast<Index>(i)), D.row(static_cast<Index>(j)), G.cols(), x);
       if (rg::sign(x) != 0) continue;
       z[i * words + j / 64] |= std::uint64_t{1} << (j % 64);
       ++pop[i];
@@ -39,7 +40,11 @@ Incidence sort_by_incidence(const std::vector<std::vector<R>>& G, const std::vec
   Incidence out;
   exact::WorkMeter meter(budget);
   std::vector<std::size_t> candidates;
-  for (std::size_t i = 0; i < G.size(); ++i) (pop[i] == D.size() ? out.lineal : candidates).push_back(i);
+  for (std::size_t i = 0; i < g_rows; ++i)
+    if (pop[i] == d_rows)
+      out.lineal.push_back(static_cast<Index>(i));
+    else
+      candidates.push_back(i);
   for (std::size_t i : candidates) {
     meter.charge(candidates.size(), [&] { return std::to_string(out.extreme.size()) + " extreme rows found"; });
     bool keep = true;
@@ -49,15 +54,8 @@ Incidence sort_by_incidence(const std::vector<std::vector<R>>& G, const std::vec
       for (std::size_t w = 0; w < words && contains; ++w) contains = (z[i * words + w] & ~z[j * words + w]) == 0;
       if ((keep = !contains) == false) break;
     }
-    if (keep) out.extreme.push_back(i);
+    if (keep) out.extreme.push_back(static_cast<Index>(i));
   }
-  return out;
-}
-
-template <class R>
-std::vector<std::vector<R>> pick(const std::vector<std::vector<R>>& rows, const std::vector<std::size_t>& which) {
-  std::vector<std::vector<R>> out;
-  for (auto i : which) out.push_back(rows[i]);
   return out;
 }
 
@@ -71,20 +69,29 @@ namespace {
 template <class R>
 struct RingPair {
   RingGenerators<R> dual;
-  std::vector<std::vector<R>> extreme, lineal;
+  exact::IntMatrix<R> extreme, lineal;
 };
 
 template <class R>
-RingPair<R> ring_pair(std::vector<std::vector<R>> G, std::vector<std::vector<R>> L, Index n, const DdBudget& budget) {
+RingPair<R> ring_pair(exact::IntMatrix<R> G, exact::IntMatrix<R> L, const DdBudget& budget) {
   exact::sort_rows(G);
   exact::sort_rows(L);
   RingPair<R> out;
-  out.dual = cone_generators<R>(G, L, n, budget);
-  const Incidence inc = sort_by_incidence<R>(G, out.dual.rays, n, budget);
-  out.extreme = pick(G, inc.extreme);
+  out.dual = cone_generators<R>(G, L, budget);
+  const Incidence inc = sort_by_incidence<R>(G, out.dual.rays, budget);
+  out.extreme = G.select_rows(inc.extreme);
   out.lineal = std::move(L);
-  for (auto i : inc.lineal) out.lineal.push_back(G[i]);
+  for (Index i : inc.lineal) out.lineal.append_row(G.row(i));
   return out;
+}
+
+// The inequality rows of the closure of a face cone (strict rows read as non-strict) as ring rows.
+template <class R, class T>
+exact::IntMatrix<R> closure_rows(const FaceCone<T>& cone) {
+  exact::IntMatrix<R> A = rg::to_ring_rows<R>(cone.inequalities);
+  const exact::IntMatrix<R> S = rg::to_ring_rows<R>(cone.strict);
+  for (Index i = 0; i < S.rows(); ++i) A.append_row(S.row(i));
+  return A;
 }
 
 }  // namespace
@@ -97,7 +104,7 @@ FaceCone<T> to_face(const SpanCone<T>& cone, const DdBudget& budget) {
   const Index n = cone.dim;
   return exact::with_exact_ring<T>([&]<class R>() {
     const RingGenerators<R> polar =
-        cone_generators<R>(rg::to_ring_rows<R>(cone.rays), rg::to_ring_rows<R>(cone.lines), n, budget);
+        cone_generators<R>(rg::to_ring_rows<R>(cone.rays), rg::to_ring_rows<R>(cone.lines), budget);
     return FaceCone<T>::from_rows(n, rg::to_field_rows<T>(polar.rays, n), rg::to_field_rows<T>(polar.lines, n),
                                   Mat<T>(0, n));
   });
@@ -107,9 +114,7 @@ template <class T>
 SpanCone<T> to_span(const FaceCone<T>& cone, const DdBudget& budget) {
   const Index n = cone.dim;
   return exact::with_exact_ring<T>([&]<class R>() {
-    std::vector<std::vector<R>> A = rg::to_ring_rows<R>(cone.inequalities), S = rg::to_ring_rows<R>(cone.strict);
-    A.insert(A.end(), S.begin(), S.end());
-    const RingGenerators<R> g = cone_generators<R>(std::move(A), rg::to_ring_rows<R>(cone.equalities), n, budget);
+    const RingGenerators<R> g = cone_generators<R>(closure_rows<R>(cone), rg::to_ring_rows<R>(cone.equalities), budget);
     return SpanCone<T>::from_rows(n, rg::to_field_rows<T>(g.rays, n), rg::to_field_rows<T>(g.lines, n));
   });
 }
@@ -118,7 +123,7 @@ template <class T>
 ConePair<T> both_forms(const SpanCone<T>& cone, const DdBudget& budget) {
   const Index n = cone.dim;
   return exact::with_exact_ring<T>([&]<class R>() {
-    const RingPair<R> p = ring_pair<R>(rg::to_ring_rows<R>(cone.rays), rg::to_ring_rows<R>(cone.lines), n, budget);
+    const RingPair<R> p = ring_pair<R>(rg::to_ring_rows<R>(cone.rays), rg::to_ring_rows<R>(cone.lines), budget);
     ConePair<T> out;
     out.face = FaceCone<T>::from_rows(n, rg::to_field_rows<T>(p.dual.rays, n), rg::to_field_rows<T>(p.dual.lines, n),
                                       Mat<T>(0, n));
@@ -131,9 +136,7 @@ template <class T>
 ConePair<T> both_forms(const FaceCone<T>& cone, const DdBudget& budget) {
   const Index n = cone.dim;
   return exact::with_exact_ring<T>([&]<class R>() {
-    std::vector<std::vector<R>> A = rg::to_ring_rows<R>(cone.inequalities), S = rg::to_ring_rows<R>(cone.strict);
-    A.insert(A.end(), S.begin(), S.end());
-    const RingPair<R> p = ring_pair<R>(std::move(A), rg::to_ring_rows<R>(cone.equalities), n, budget);
+    const RingPair<R> p = ring_pair<R>(closure_rows<R>(cone), rg::to_ring_rows<R>(cone.equalities), budget);
     ConePair<T> out;
     out.span = SpanCone<T>::from_rows(n, rg::to_field_rows<T>(p.dual.rays, n), rg::to_field_rows<T>(p.dual.lines, n));
     out.face =

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/int_matrix.h"
 #include "exact/ladder_numbers.h"
 #include "geometry/canonical.h"
 
@@ -20,14 +21,14 @@ using exact::sign;
 
 // For every ring row s of S, the ring rays r with s . r == 0, as a bit per ray.
 template <class Rg>
-std::vector<std::vector<bool>> ring_zero_sets(const std::vector<std::vector<Rg>>& rays,
-                                              const std::vector<std::vector<Rg>>& S) {
-  std::vector<std::vector<bool>> z(S.size(), std::vector<bool>(rays.size()));
+std::vector<std::vector<bool>> ring_zero_sets(const exact::IntMatrix<Rg>& rays, const exact::IntMatrix<Rg>& S) {
+  std::vector<std::vector<bool>> z(static_cast<std::size_t>(S.rows()),
+                                   std::vector<bool>(static_cast<std::size_t>(rays.rows())));
   Rg x;
-  for (std::size_t s = 0; s < S.size(); ++s)
-    for (std::size_t r = 0; r < rays.size(); ++r) {
-      exact::ring::dot(S[s].data(), rays[r].data(), static_cast<Index>(rays[r].size()), x);
-      z[s][r] = exact::ring::sign(x) == 0;
+  for (Index s = 0; s < S.rows(); ++s)
+    for (Index r = 0; r < rays.rows(); ++r) {
+      exact::ring::dot(S.row(s), rays.row(r), rays.cols(), x);
+      z[static_cast<std::size_t>(s)][static_cast<std::size_t>(r)] = exact::ring::sign(x) == 0;
     }
   return z;
 }
@@ -102,29 +103,27 @@ bool empty(const std::vector<std::vector<bool>>& zs) {
 template <class R>
 struct RingNnc {
   MissingFaces missing;
-  std::vector<std::vector<R>> closed, strict;
+  exact::IntMatrix<R> closed, strict;
 };
 
 template <class R>
-RingNnc<R> resolve_in_ring(const std::vector<std::vector<bool>>& zs, const std::vector<std::vector<R>>& rays,
-                           const std::vector<std::vector<R>>& facets, Index d) {
+RingNnc<R> resolve_in_ring(const std::vector<std::vector<bool>>& zs, const exact::IntMatrix<R>& rays,
+                           const exact::IntMatrix<R>& facets) {
   namespace rg = exact::ring;
-  RingNnc<R> out;
-  out.missing = missing_faces(zs, ring_zero_sets<R>(rays, facets));
-  for (size_t f = 0; f < facets.size(); ++f)
-    if (!out.missing.open_facets[f]) out.closed.push_back(facets[f]);
+  const Index d = facets.cols();
+  RingNnc<R> out{missing_faces(zs, ring_zero_sets<R>(rays, facets)), exact::IntMatrix<R>(0, d),
+                 exact::IntMatrix<R>(0, d)};
+  for (Index f = 0; f < facets.rows(); ++f)
+    if (!out.missing.open_facets[static_cast<size_t>(f)]) out.closed.append_row(facets.row(f));
+  std::vector<R> s(static_cast<size_t>(d));
   for (const std::vector<Index>& through : out.missing.facets) {
-    std::vector<R> s(static_cast<size_t>(d), R(0));
+    std::fill(s.begin(), s.end(), R(0));
     for (Index f : through)
-      for (Index j = 0; j < d; ++j)
-        s[static_cast<size_t>(j)] =
-            rg::add(s[static_cast<size_t>(j)], facets[static_cast<size_t>(f)][static_cast<size_t>(j)]);
+      for (Index j = 0; j < d; ++j) s[static_cast<size_t>(j)] = rg::add(s[static_cast<size_t>(j)], facets(f, j));
     rg::normalize(s.data(), d);
-    if (std::any_of(s.begin(), s.end(), [](const R& x) { return rg::sign(x) != 0; }))
-      out.strict.push_back(std::move(s));
+    out.strict.append_row(s.data());
   }
-  std::sort(out.strict.begin(), out.strict.end());
-  out.strict.erase(std::unique(out.strict.begin(), out.strict.end()), out.strict.end());
+  exact::sort_rows(out.strict);  // (the zero sums dropped)
   return out;
 }
 
@@ -140,10 +139,10 @@ template <class T>
 std::optional<FieldNnc<T>> resolve(const Mat<T>& R, const Mat<T>& F, const Mat<T>& S) {
   return exact::with_exact_ring<T>([&]<class Rg>() -> std::optional<FieldNnc<T>> {
     namespace rg = exact::ring;
-    const std::vector<std::vector<Rg>> rays = rg::to_ring_rows<Rg>(R);
+    const exact::IntMatrix<Rg> rays = rg::to_ring_rows<Rg>(R);
     const std::vector<std::vector<bool>> zs = ring_zero_sets<Rg>(rays, rg::to_ring_rows<Rg>(S));
     if (empty(zs)) return std::nullopt;
-    RingNnc<Rg> r = resolve_in_ring<Rg>(zs, rays, rg::to_ring_rows<Rg>(F), F.cols());
+    RingNnc<Rg> r = resolve_in_ring<Rg>(zs, rays, rg::to_ring_rows<Rg>(F));
     return FieldNnc<T>{std::move(r.missing), rg::to_field_rows<T>(r.closed, F.cols()),
                        rg::to_field_rows<T>(r.strict, F.cols())};
   });
@@ -213,24 +212,28 @@ NncForm<T> nnc_form(const SpanCone<T>& cone, const DdBudget& budget) {
 }
 
 template <class T, class R>
-std::optional<FaceCone<T>> pointed_nnc_face(const std::vector<std::vector<R>>& F, const std::vector<std::vector<R>>& S,
-                                            Index d, const DdBudget& budget) {
+std::optional<FaceCone<T>> pointed_nnc_face(const exact::IntMatrix<R>& F, const exact::IntMatrix<R>& S,
+                                            const DdBudget& budget) {
   namespace rg = exact::ring;
+  const Index d = F.cols();
   // The steps of nnc_form in the ring; canonical rows are primitive, deduplicated and sorted, and
   // without equalities or lines nothing else is reduced.
-  std::vector<std::vector<R>> rows = F;
-  rows.insert(rows.end(), S.begin(), S.end());
-  auto rays = pointed_cone_rays<R>(std::move(rows), d, budget);  // K' = { F g <= 0, S g <= 0 }
-  if (!rays || rays->empty()) return std::nullopt;
-  std::sort(rays->begin(), rays->end());
+  const auto closure_rows = [&] {  // K' = { F g <= 0, S g <= 0 }
+    exact::IntMatrix<R> rows = F;
+    for (Index i = 0; i < S.rows(); ++i) rows.append_row(S.row(i));
+    return rows;
+  };
+  auto rays = pointed_cone_rays<R>(closure_rows(), budget);
+  if (!rays || rays->rows() == 0) return std::nullopt;
+  exact::sort_rows(*rays);  // (extreme rays: none zero, none twice)
   // Facets of the closure: the extreme rays of its polar, pointed iff the closure is full-dimensional
   // (not needed when a strict row vanishes on every ray: the cone is empty).
   const std::vector<std::vector<bool>> zs = ring_zero_sets<R>(*rays, S);
   if (empty(zs)) return empty_face<T>(d);
-  auto facets = pointed_cone_rays<R>(*rays, d, budget);
+  auto facets = pointed_cone_rays<R>(*rays, budget);
   if (!facets) return std::nullopt;
-  std::sort(facets->begin(), facets->end());
-  const RingNnc<R> r = resolve_in_ring<R>(zs, *rays, *facets, d);
+  exact::sort_rows(*facets);
+  const RingNnc<R> r = resolve_in_ring<R>(zs, *rays, *facets);
   return FaceCone<T>::from_rows(d, rg::to_field_rows<T>(r.closed, d), Mat<T>(0, d), rg::to_field_rows<T>(r.strict, d));
 }
 
@@ -269,11 +272,11 @@ PointPosition<T> locate(const FaceCone<T>& cone, const Vec<T>& g) {
   return p;
 }
 
-template std::optional<FaceCone<Q>> pointed_nnc_face<Q, std::int64_t>(const std::vector<std::vector<std::int64_t>>&,
-                                                                      const std::vector<std::vector<std::int64_t>>&,
-                                                                      Index, const DdBudget&);
-template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const std::vector<std::vector<Z>>&,
-                                                           const std::vector<std::vector<Z>>&, Index, const DdBudget&);
+template std::optional<FaceCone<Q>> pointed_nnc_face<Q, std::int64_t>(const exact::IntMatrix<std::int64_t>&,
+                                                                      const exact::IntMatrix<std::int64_t>&,
+                                                                      const DdBudget&);
+template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const exact::IntMatrix<Z>&, const exact::IntMatrix<Z>&,
+                                                           const DdBudget&);
 
 #define CONTACTCERT_NNC_INSTANTIATE(T)                                  \
   template struct NncForm<T>;                                           \

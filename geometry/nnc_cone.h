@@ -42,20 +42,19 @@ NncForm<T> nnc_form(const FaceCone<T>& cone, const DdBudget& budget = {});
 template <class T>
 NncForm<T> nnc_form(const SpanCone<T>& cone, const DdBudget& budget = {});
 
-/// nnc_form(...).face of { F g <= 0, S g < 0 } for rows F, S (d entries each) in an exact ring R of
+/// nnc_form(...).face of { F g <= 0, S g < 0 } for rows F, S (d columns each) in an exact ring R of
 /// exact/fraction_free.h, computed in R and turned into T = Q once, when the closure is pointed and
 /// full-dimensional or the cone is empty (the common case of a wrench cone); nullopt otherwise, and
 /// then nnc_form decides. std::int64_t throws RingOverflow.
 template <class T, class R>
-std::optional<FaceCone<T>> pointed_nnc_face(const std::vector<std::vector<R>>& F, const std::vector<std::vector<R>>& S,
-                                            Eigen::Index d, const DdBudget& budget = {});
+std::optional<FaceCone<T>> pointed_nnc_face(const exact::IntMatrix<R>& F, const exact::IntMatrix<R>& S,
+                                            const DdBudget& budget = {});
 
-extern template std::optional<FaceCone<Q>> pointed_nnc_face<Q, std::int64_t>(
-    const std::vector<std::vector<std::int64_t>>&, const std::vector<std::vector<std::int64_t>>&, Eigen::Index,
-    const DdBudget&);
-extern template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const std::vector<std::vector<Z>>&,
-                                                                  const std::vector<std::vector<Z>>&, Eigen::Index,
-                                                                  const DdBudget&);
+extern template std::optional<FaceCone<Q>> pointed_nnc_face<Q, std::int64_t>(const exact::IntMatrix<std::int64_t>&,
+                                                                             const exact::IntMatrix<std::int64_t>&,
+                                                                             const DdBudget&);
+extern template std::optional<FaceCone<Q>> pointed_nnc_face<Q, Z>(const exact::IntMatrix<Z>&,
+                                                                  const exact::IntMatrix<Z>&, const DdBudget&);
 
 /// a is a subset of b (sets as a bit per element, of one size).
 bool is_subset(const std::vector<bool>& a, const std::vector<bool>& b);

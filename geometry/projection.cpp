@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "exact/fraction_free.h"
+#include "exact/int_matrix.h"
 #include "exact/ladder_numbers.h"
 #include "exact/linalg.h"
 #include "exact/simplex.h"
@@ -110,59 +111,57 @@ FaceCone<T> whole_space(Index d) {
 
 template <class T>
 FaceCone<T> project_by_polar(const ProjectionProblem<T>& problem, const DdBudget& budget) {
-  const Index k = problem.K.cols(), d = problem.P.cols();
+  const Index d = problem.P.cols();
   return exact::with_exact_ring<T>([&]<class R>() {
     // The rows [P | K] as ring rows (positive multiples: the same P g = K z).
-    return project_by_polar_rows<T, R>(exact::ring::to_ring_rows<R>(problem.P, problem.K), d, k, problem.strict,
-                                       budget);
+    return project_by_polar_rows<T, R>(exact::ring::to_ring_rows<R>(problem.P, problem.K), d, problem.strict, budget);
   });
 }
 
 template <class T, class R>
-FaceCone<T> project_by_polar_rows(const std::vector<std::vector<R>>& rows, Index d, Index k,
-                                  const std::vector<bool>& strict_components, const DdBudget& budget) {
+FaceCone<T> project_by_polar_rows(const exact::IntMatrix<R>& rows, Index d, const std::vector<bool>& strict_components,
+                                  const DdBudget& budget) {
   namespace rg = exact::ring;
+  const Index k = rows.cols() - d;
   const std::vector<bool> strict =
       strict_components.empty() ? std::vector<bool>(static_cast<size_t>(k), false) : strict_components;
-  const Index m = static_cast<Index>(rows.size());
+  const Index m = rows.rows();
   if (m == 0) return nnc_form(whole_space<T>(d), budget).face;
   // The columns of K (ring rows of K^T, each scaled by a positive factor: the same pos(K) up to
   // scaling z) and of P.
-  std::vector<std::vector<R>> kc(static_cast<size_t>(k), std::vector<R>(static_cast<size_t>(m)));
-  std::vector<std::vector<R>> pc(static_cast<size_t>(d), std::vector<R>(static_cast<size_t>(m)));
+  exact::IntMatrix<R> kc(k, m), pc(d, m);
   for (Index i = 0; i < m; ++i) {
-    const std::vector<R>& row = rows[static_cast<size_t>(i)];
-    for (Index j = 0; j < d; ++j) pc[static_cast<size_t>(j)][static_cast<size_t>(i)] = row[static_cast<size_t>(j)];
-    for (Index j = 0; j < k; ++j) kc[static_cast<size_t>(j)][static_cast<size_t>(i)] = row[static_cast<size_t>(d + j)];
+    for (Index j = 0; j < d; ++j) pc(j, i) = rows(i, j);
+    for (Index j = 0; j < k; ++j) kc(j, i) = rows(i, d + j);
   }
-  for (std::vector<R>& c : kc) rg::normalize(c.data(), m);
+  for (Index j = 0; j < k; ++j) rg::normalize(kc.row(j), m);
   // K^F: pos(K) = { y : K^F y <= 0, E_K y = 0 } (section 3); its facets are the extreme rays of the
   // polar { f : k_i . f <= 0 }, pointed unless K has a left null space E_K.
-  RingGenerators<R> KF = cone_generators<R>(kc, {}, m, budget);  // facets and equalities, in the ring
-  std::vector<std::vector<R>> kf = std::move(KF.rays), ke = std::move(KF.lines);
+  const RingGenerators<R> KF = cone_generators<R>(kc, exact::IntMatrix<R>(0, m), budget);  // in the ring
   // A facet of pos(K) is open iff it misses a column k_i with z_i > 0: the relative interiors of the
   // faces of pos(K) that contain every such column make up { K z : z >= 0, z_i > 0 on strict }.
-  std::vector<std::vector<R>> closed, open, E;
+  exact::IntMatrix<R> closed(0, d), open(0, d), E(0, d);
   R x;
+  std::vector<R> row(static_cast<size_t>(d));
   // eq. (18): F = K^F P, row by row.
-  auto times_P = [&](const std::vector<R>& f) {
-    std::vector<R> row(static_cast<size_t>(d));
-    for (Index j = 0; j < d; ++j) rg::dot(f.data(), pc[static_cast<size_t>(j)].data(), m, row[static_cast<size_t>(j)]);
-    return row;
+  auto times_P = [&](const R* f) {
+    for (Index j = 0; j < d; ++j) rg::dot(f, pc.row(j), m, row[static_cast<size_t>(j)]);
+    return row.data();
   };
-  for (const std::vector<R>& f : kf) {
+  for (Index r = 0; r < KF.rays.rows(); ++r) {
+    const R* f = KF.rays.row(r);
     bool is_open = false;
     for (Index i = 0; i < k && !is_open; ++i) {
       if (!strict[static_cast<size_t>(i)]) continue;
-      rg::dot(f.data(), kc[static_cast<size_t>(i)].data(), m, x);
+      rg::dot(f, kc.row(i), m, x);
       is_open = rg::sign(x) < 0;
     }
-    (is_open ? open : closed).push_back(times_P(f));
+    (is_open ? open : closed).append_row(times_P(f));
   }
-  for (const std::vector<R>& e : ke) E.push_back(times_P(e));
+  for (Index r = 0; r < KF.lines.rows(); ++r) E.append_row(times_P(KF.lines.row(r)));
   if constexpr (exact::NumberTraits<T>::is_exact)  // the float paths keep nnc_form's normal forms
-    if (E.empty())
-      if (auto face = pointed_nnc_face<T, R>(closed, open, d, budget)) return std::move(*face);
+    if (E.rows() == 0)
+      if (auto face = pointed_nnc_face<T, R>(closed, open, budget)) return std::move(*face);
   return nnc_form(FaceCone<T>::from_rows(d, rg::to_field_rows<T>(closed, d), rg::to_field_rows<T>(E, d),
                                          rg::to_field_rows<T>(open, d)),
                   budget)
@@ -268,16 +267,17 @@ AffineFace<T> theorem1(const Mat<T>& K, const Mat<T>& P, const Vec<T>& k, const 
   return out;
 }
 
-template FaceCone<double> project_by_polar_rows<double, double>(const std::vector<std::vector<double>>&, Index, Index,
+template FaceCone<double> project_by_polar_rows<double, double>(const exact::IntMatrix<double>&, Index,
                                                                 const std::vector<bool>&, const DdBudget&);
-template FaceCone<Q> project_by_polar_rows<Q, std::int64_t>(const std::vector<std::vector<std::int64_t>>&, Index, Index,
+template FaceCone<Q> project_by_polar_rows<Q, std::int64_t>(const exact::IntMatrix<std::int64_t>&, Index,
                                                             const std::vector<bool>&, const DdBudget&);
-template FaceCone<Q> project_by_polar_rows<Q, Z>(const std::vector<std::vector<Z>>&, Index, Index,
-                                                 const std::vector<bool>&, const DdBudget&);
-template FaceCone<exact::Mpfr> project_by_polar_rows<exact::Mpfr, exact::Mpfr>(
-    const std::vector<std::vector<exact::Mpfr>>&, Index, Index, const std::vector<bool>&, const DdBudget&);
+template FaceCone<Q> project_by_polar_rows<Q, Z>(const exact::IntMatrix<Z>&, Index, const std::vector<bool>&,
+                                                 const DdBudget&);
+template FaceCone<exact::Mpfr> project_by_polar_rows<exact::Mpfr, exact::Mpfr>(const exact::IntMatrix<exact::Mpfr>&,
+                                                                               Index, const std::vector<bool>&,
+                                                                               const DdBudget&);
 template FaceCone<exact::Interval> project_by_polar_rows<exact::Interval, exact::Interval>(
-    const std::vector<std::vector<exact::Interval>>&, Index, Index, const std::vector<bool>&, const DdBudget&);
+    const exact::IntMatrix<exact::Interval>&, Index, const std::vector<bool>&, const DdBudget&);
 
 #define CONTACTCERT_PROJECTION_INSTANTIATE(T)                                             \
   template FaceCone<T> project_by_polar<T>(const ProjectionProblem<T>&, const DdBudget&); \

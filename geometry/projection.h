@@ -23,21 +23,19 @@ struct ProjectionProblem {
 template <class T>
 FaceCone<T> project_by_polar(const ProjectionProblem<T>& problem, const DdBudget& budget = {});
 
-/// project_by_polar for K z = P g given as rows [P | K] (d entries of P, k of K each) in the ring R of
+/// project_by_polar for K z = P g given as rows [P | K] (d columns of P, the others of K) in the ring R of
 /// T (exact/fraction_free.h; each row may be any positive multiple): the same result, with K^F, eq. (18)
 /// and, for exact rings, the face form of a pointed full-dimensional result computed in R (T only for
 /// the result). std::int64_t throws RingOverflow.
 template <class T, class R>
-FaceCone<T> project_by_polar_rows(const std::vector<std::vector<R>>& rows, Eigen::Index d, Eigen::Index k,
-                                  const std::vector<bool>& strict, const DdBudget& budget = {});
+FaceCone<T> project_by_polar_rows(const exact::IntMatrix<R>& rows, Eigen::Index d, const std::vector<bool>& strict,
+                                  const DdBudget& budget = {});
 
-extern template FaceCone<double> project_by_polar_rows<double, double>(const std::vector<std::vector<double>>&,
-                                                                       Eigen::Index, Eigen::Index,
+extern template FaceCone<double> project_by_polar_rows<double, double>(const exact::IntMatrix<double>&, Eigen::Index,
                                                                        const std::vector<bool>&, const DdBudget&);
-extern template FaceCone<Q> project_by_polar_rows<Q, std::int64_t>(const std::vector<std::vector<std::int64_t>>&,
-                                                                   Eigen::Index, Eigen::Index, const std::vector<bool>&,
-                                                                   const DdBudget&);
-extern template FaceCone<Q> project_by_polar_rows<Q, Z>(const std::vector<std::vector<Z>>&, Eigen::Index, Eigen::Index,
+extern template FaceCone<Q> project_by_polar_rows<Q, std::int64_t>(const exact::IntMatrix<std::int64_t>&, Eigen::Index,
+                                                                   const std::vector<bool>&, const DdBudget&);
+extern template FaceCone<Q> project_by_polar_rows<Q, Z>(const exact::IntMatrix<Z>&, Eigen::Index,
                                                         const std::vector<bool>&, const DdBudget&);
 
 /// Route (b), output-sensitive for a low-dimensional target: discovers the generators of the closed

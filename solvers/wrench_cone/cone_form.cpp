@@ -200,13 +200,13 @@ RingForm<R> ring_form(const geometry::PlanarScene& scene, const ContactModel<T>&
   RingForm<R> out;
   out.k = static_cast<Eigen::Index>(cols.size());
   const auto w = static_cast<std::size_t>(out.d + out.k);
-  out.rows.assign(rows.size(), std::vector<R>(w, R(0)));
+  out.rows = exact::IntMatrix<R>(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(w));
   // mu_i = p / q scales the force column of fixel i by q: -(q A(:, i) + coef_sign p A(:, n + i)).
   std::vector<R> p(static_cast<std::size_t>(y.n)), q(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) rg::from_rational(y.mu[i], p[i], q[i]);
   R a1, a2;
   for (std::size_t r = 0; r < rows.size(); ++r) {
-    std::vector<R>& row = out.rows[r];
+    R* row = out.rows.row(static_cast<Eigen::Index>(r));
     for (Eigen::Index j = 0; j < out.d; ++j)
       rg::get(model.B, rows[r], j, row[static_cast<std::size_t>(j)]);  // eq. (17)
     for (std::size_t c = 0; c < cols.size(); ++c) {
@@ -225,7 +225,7 @@ RingForm<R> ring_form(const geometry::PlanarScene& scene, const ContactModel<T>&
       rg::get(model.A, rows[r], y.n + col.i, a2);
       k = rg::sub(-rg::mul(q[i], a1), rg::mul(col.coef_sign > 0 ? p[i] : R(-p[i]), a2));
     }
-    rg::normalize(row.data(), static_cast<Eigen::Index>(w));
+    rg::normalize(row, static_cast<Eigen::Index>(w));
   }
   for (const KColumn& col : cols)
     out.strict.push_back(col.acceleration &&

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/int_matrix.h"
 #include "geometry/planar_scene.h"
 #include "solvers/wrench_cone/contact_model.h"
 #include "solvers/wrench_cone/mode.h"
@@ -54,10 +55,10 @@ ConeForm<T> cone_form(const geometry::PlanarScene& scene, const ContactModel<T>&
 /// same, with the same z and strict components as cone_form.
 template <class R>
 struct RingForm {
-  Eigen::Index d = 3;                ///< columns of P
-  Eigen::Index k = 0;                ///< columns of K
-  std::vector<std::vector<R>> rows;  ///< the rows of E: d + k entries each
-  std::vector<bool> strict;          ///< per z, as ConeForm::strict
+  Eigen::Index d = 3;        ///< columns of P
+  Eigen::Index k = 0;        ///< columns of K
+  exact::IntMatrix<R> rows;  ///< the rows of E: d + k columns
+  std::vector<bool> strict;  ///< per z, as ConeForm::strict
 };
 
 /// The RingForm of a valid mode of the scene.

@@ -18,20 +18,14 @@ namespace rg = exact::ring;
 // of the row space of K2 and zero rows, which are dropped. (Reducing above the pivots too keeps the entries as small
 // as those of reduced row echelon form.)
 template <class R>
-void reduce_rows(std::vector<std::vector<R>>& rows, Index d, Index k) {
-  const Index m = static_cast<Index>(rows.size()), w = d + k;
-  exact::IntMatrix<R> E(m, w);
-  for (Index i = 0; i < m; ++i)
-    std::move(rows[static_cast<std::size_t>(i)].begin(), rows[static_cast<std::size_t>(i)].end(), E.row(i));
+void reduce_rows(exact::IntMatrix<R>& E, Index d) {
   const auto r = static_cast<Index>(E.echelon(0, 0, d).size());
-  const Index rank = r + static_cast<Index>(E.echelon(r, d, w).size());
-  rows.resize(static_cast<std::size_t>(rank));
-  for (Index i = 0; i < rank; ++i) std::move(E.row(i), E.row(i) + w, rows[static_cast<std::size_t>(i)].begin());
+  E.resize_rows(r + static_cast<Index>(E.echelon(r, d).size()));
 }
 
 // The reduced ring rows as K z = P g over T.
 template <class T, class R>
-geometry::ProjectionProblem<T> to_problem(const std::vector<std::vector<R>>& rows, Index d, Index k,
+geometry::ProjectionProblem<T> to_problem(const exact::IntMatrix<R>& rows, Index d, Index k,
                                           const std::vector<bool>& strict) {
   return {rg::to_field_rows<T>(rows, k, d), rg::to_field_rows<T>(rows, d), strict};
 }
@@ -40,7 +34,7 @@ geometry::ProjectionProblem<T> to_problem(const std::vector<std::vector<R>>& row
 template <class R, class T>
 RingForm<R> reduced_form(const geometry::PlanarScene& scene, const ContactModel<T>& model, const ModeString& mode) {
   RingForm<R> form = ring_form<R>(scene, model, mode);
-  reduce_rows<R>(form.rows, form.d, form.k);
+  reduce_rows<R>(form.rows, form.d);
   return form;
 }
 
@@ -68,7 +62,7 @@ geometry::FaceCone<T> wrench_cone_face(const geometry::PlanarScene& scene, const
   if (route == Route::kPaper)
     return exact::with_exact_ring<T>([&]<class R>() {
       const RingForm<R> form = reduced_form<R>(scene, model, mode);
-      return geometry::project_by_polar_rows<T, R>(form.rows, form.d, form.k, form.strict, budget);
+      return geometry::project_by_polar_rows<T, R>(form.rows, form.d, form.strict, budget);
     });
   return geometry::project_by_lp(exact::with_exact_ring<T>([&]<class R>() {
                                    const RingForm<R> form = reduced_form<R>(scene, model, mode);

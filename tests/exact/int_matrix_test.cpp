@@ -1,6 +1,6 @@
 // IntMatrix, the one fraction-free elimination: row echelon form with primitive rows, rank, kernel, make-primitive
 // and the unique solution (dense, and square with a sparse front end), in Int128 with the restart in GMP integers on
-// overflow; its sparse form SparseIntMatrix.
+// overflow; its row operations; its sparse form SparseIntMatrix.
 #include "exact/int_matrix.h"
 
 #include <gtest/gtest.h>
@@ -158,6 +158,41 @@ TEST(IntMatrix, Int128OverflowRestartsInGmpAndAgrees) {
   EXPECT_EQ(row_gcd(K, 0), 1);
   EXPECT_GT(sgn(K(0, 3)), 0);
   expect_kernel(A, K);
+}
+
+// The row operations of the double description's rays and rows: append, erase (the rows below move up), swap,
+// select (in the order asked, a row twice), resize (fewer rows: the first kept; more: zero rows appended), in the
+// machine ring and in GMP integers, past the 64 entries held on the stack.
+template <class R>
+void expect_row_operations() {
+  IntMatrix<R> M(0, 3);
+  for (long i = 0; i < 30; ++i) {
+    R row[3];
+    for (long j = 0; j < 3; ++j) ring::from_integer(10 * i + j, row[j]);
+    M.append_row(row);
+  }
+  ASSERT_EQ(M.rows(), 30);  // 90 entries: on the heap
+  EXPECT_EQ(M(29, 2), R(292));
+  M.erase_row(0);
+  M.erase_row(28);  // the last
+  ASSERT_EQ(M.rows(), 28);
+  EXPECT_EQ(M(0, 0), R(10));
+  EXPECT_EQ(M(27, 1), R(281));
+  M.swap_rows(0, 27);
+  EXPECT_EQ(M(0, 2), R(282));
+  EXPECT_EQ(M(27, 2), R(12));
+  const IntMatrix<R> S = M.select_rows({27, 0, 27});
+  EXPECT_EQ(S, matrix<R>(3, 3, {10, 11, 12, 280, 281, 282, 10, 11, 12}));
+  EXPECT_EQ(M.select_rows({}), IntMatrix<R>(0, 3));
+  M.resize_rows(2);
+  EXPECT_EQ(M, matrix<R>(2, 3, {280, 281, 282, 20, 21, 22}));
+  M.resize_rows(3);
+  EXPECT_EQ(M, matrix<R>(3, 3, {280, 281, 282, 20, 21, 22, 0, 0, 0}));
+}
+
+TEST(IntMatrix, RowOperations) {
+  expect_row_operations<std::int64_t>();
+  expect_row_operations<Z>();
 }
 
 // The compressed rows of a dense matrix: its non-zero entries, row by row with columns ascending (an empty row

@@ -95,23 +95,23 @@ TEST(Projection, RingRowsRouteAgreesWithTheLpRouteAndOverflowsIntoZ) {
     ProjectionProblem<Q> p;
     p.K = Mat<Q>(m, n);
     p.P = Mat<Q>(m, d);
-    std::vector<std::vector<Z>> wide(static_cast<size_t>(m));
-    std::vector<std::vector<std::int64_t>> fixed(static_cast<size_t>(m));
+    exact::IntMatrix<Z> wide(m, d + n);
+    exact::IntMatrix<std::int64_t> fixed(m, d + n);
     for (Eigen::Index i = 0; i < m; ++i) {
       const long scale = 1 + (rep + i) % 3;  // a positive factor per row
       for (Eigen::Index j = 0; j < d + n; ++j) {
         const long x = u(rng);
         (j < d ? p.P(i, j) : p.K(i, j - d)) = Q(x);
-        wide[static_cast<size_t>(i)].push_back(Z(x) * scale);
-        fixed[static_cast<size_t>(i)].push_back(x * scale);
+        wide(i, j) = Z(x) * scale;
+        fixed(i, j) = x * scale;
       }
     }
     p.strict.assign(static_cast<size_t>(n), false);
     for (Eigen::Index j = 0; j < n; ++j) p.strict[static_cast<size_t>(j)] = (rep + j) % 3 == 0;
     const FaceCone<Q> want = project_by_lp(p);
-    ASSERT_TRUE(identical(project_by_polar_rows<Q, Z>(wide, d, n, p.strict), want)) << "rep " << rep;
+    ASSERT_TRUE(identical(project_by_polar_rows<Q, Z>(wide, d, p.strict), want)) << "rep " << rep;
     try {
-      ASSERT_TRUE(identical(project_by_polar_rows<Q, std::int64_t>(fixed, d, n, p.strict), want)) << "rep " << rep;
+      ASSERT_TRUE(identical(project_by_polar_rows<Q, std::int64_t>(fixed, d, p.strict), want)) << "rep " << rep;
     } catch (const exact::RingOverflow&) {
       ++overflowed;
     }

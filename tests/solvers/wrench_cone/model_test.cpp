@@ -257,17 +257,17 @@ TEST(ConeForm, RingFormIsConeFormUpToPositiveScalingAndRestartsInZ) {
         EXPECT_THROW(ring_form<std::int64_t>(s, m, mode), exact::RingOverflow) << text;
       }
       if (!huge) {
-        EXPECT_EQ(ring_form<std::int64_t>(s, m, mode).rows.size(), static_cast<std::size_t>(f.K.rows()));
+        EXPECT_EQ(ring_form<std::int64_t>(s, m, mode).rows.rows(), f.K.rows());
       }
       const RingForm<Z> g = ring_form<Z>(s, m, mode);
       EXPECT_EQ(g.strict, f.strict) << text;
-      ASSERT_EQ(g.rows.size(), static_cast<std::size_t>(f.K.rows())) << text;
+      ASSERT_EQ(g.rows.rows(), f.K.rows()) << text;
       for (Eigen::Index r = 0; r < f.K.rows(); ++r) {
         std::vector<Q> want, got;
         for (Eigen::Index j = 0; j < 3; ++j) want.push_back(f.P(r, j));
         for (Eigen::Index j = 0; j < f.K.cols(); ++j)
           want.push_back(f.K(r, j) * (f.names[static_cast<std::size_t>(j)].find("mu") != std::string::npos ? q : Z(1)));
-        for (const Z& x : g.rows[static_cast<std::size_t>(r)]) got.push_back(Q(x));
+        for (Eigen::Index j = 0; j < g.rows.cols(); ++j) got.push_back(Q(g.rows(r, j)));
         EXPECT_TRUE(positive_multiple(got, want)) << text << " row " << r;
       }
     }
