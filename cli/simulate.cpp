@@ -62,8 +62,13 @@ void print_simulate_text(const json& j) {
     std::cout << "  step " << s["index"] << " t = " << simulate_value(s, "time") << " h = " << simulate_value(s, "h")
               << ": " << s["verdict"].get<std::string>();
     if (s.contains("uniqueness")) std::cout << ", " << s["uniqueness"]["status"].get<std::string>();
-    if (s["verdict"] == "solvable") std::cout << ", q_dot = " << simulate_value(s, "q_dot");
+    if (s["verdict"] == "solvable" && !s.contains("bodies")) std::cout << ", q_dot = " << simulate_value(s, "q_dot");
     if (!s["cut_by"].is_null()) std::cout << ", cut by " << s["cut_by"].get<std::string>();
+    if (s["verdict"] == "solvable" && s.contains("bodies")) {
+      std::cout << "\n    q_dot:";
+      for (const json& b : s["bodies"])
+        std::cout << " " << b["name"].get<std::string>() << " " << simulate_value(b, "q_dot") << ";";
+    }
     std::cout << "\n    contacts:";
     for (const json& c : s["contacts"])
       std::cout << " [" << c["mode"].get<std::string>() << "] " << c["name"].get<std::string>() << ";";
@@ -75,8 +80,14 @@ void print_simulate_text(const json& j) {
     std::cout << "\n";
   }
   const json& f = j["final"];
-  std::cout << "  final: t = " << simulate_value(f, "time") << ", pose t = " << simulate_value(f["pose"], "t")
-            << ", angle ~ " << f["pose"]["angle_approx"] << " rad\n";
+  std::cout << "  final: t = " << simulate_value(f, "time");
+  if (f.contains("pose"))
+    std::cout << ", pose t = " << simulate_value(f["pose"], "t") << ", angle ~ " << f["pose"]["angle_approx"] << " rad";
+  else
+    for (const json& b : f["bodies"])
+      std::cout << "\n    " << b["name"].get<std::string>() << ": pose t = " << simulate_value(b["pose"], "t")
+                << ", angle ~ " << b["pose"]["angle_approx"] << " rad";
+  std::cout << "\n";
   if (j.contains("divergences")) {
     std::cout << "  float run: " << j["float"]["status"].get<std::string>() << " after " << j["float"]["steps_done"]
               << " steps; " << (j["divergences"].empty() ? "it agrees with the exact run at every step" : "it differs:")

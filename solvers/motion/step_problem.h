@@ -1,11 +1,14 @@
 // The quasistatic problem of one step: the body at its pose with the contacts found there, written as a
 // `"kind": "quasistatic_scene"` file (docs/formats.md section 2) and built by the existing scene builder, so each
-// step's problem and certificate are those `contactcert ucp` and `check` read.
+// step's problem and certificate are those `contactcert ucp` and `check` read. Several bodies: the step's assembly
+// (geometry/assembly.h) built directly, its problem by solvers/assembly (the one `contactcert assembly --ucp`
+// solves), and the assembly written as its scene file for the certificate, whose checker re-derives the problem.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "geometry/assembly.h"
 #include "solvers/motion/contacts.h"
 #include "solvers/ucp/problem.h"
 
@@ -18,7 +21,7 @@ struct FingerCommand {
   Vec2<T> value;
 };
 
-/// The step's scene: the workpiece at `pose` (world vertices and com), gravity, and per contact its point, normal
+/// The step's scene of one body: the workpiece at `pose` (world vertices and com), gravity, and per contact its point, normal
 /// and mu; a finger contact carries its command ("axes": "world"). Numbers are exact strings (a double is written
 /// as the rational it is).
 template <class T>
@@ -32,6 +35,30 @@ nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose
 /// rounded points lie near, not on, the boundary. Throws exact::InputError if the scene is refused.
 ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, const std::string& name);
 
+/// The step's assembly of several bodies: each body at its pose (world vertices, com, its weight as the load), the
+/// obstacles, each touching finger (world axes, its command; in the order of its contact), and per contact its
+/// parties (`from` the obstacle, other body or finger, `to` the body `which`), point, normal and mu. A double is
+/// taken as the rational it is.
+template <class T>
+geometry::Assembly step_assembly(const SceneGeometry<T>& g, const Poses<T>& poses,
+                                 const std::vector<Contact<T>>& contacts,
+                                 const std::vector<FingerCommand<T>>& commands);
+
+/// The problem of a step assembly (solvers/assembly/assembly_ucp.h); the float path's rounded points lie near, not
+/// on, the boundaries, and nothing re-checks them here.
+ucp::UcpProblem assembly_step_problem(const geometry::Assembly& a);
+
+/// The assembly as a `"kind": "quasistatic_scene"` file with `bodies` (docs/formats.md section 3a; each body's
+/// `load` given): the text a certificate embeds, from which `check` re-derives the problem and verifies every
+/// contact frame.
+nlohmann::ordered_json assembly_scene_json(const geometry::Assembly& a);
+
+extern template geometry::Assembly step_assembly<Q>(const SceneGeometry<Q>&, const Poses<Q>&,
+                                                    const std::vector<Contact<Q>>&,
+                                                    const std::vector<FingerCommand<Q>>&);
+extern template geometry::Assembly step_assembly<double>(const SceneGeometry<double>&, const Poses<double>&,
+                                                         const std::vector<Contact<double>>&,
+                                                         const std::vector<FingerCommand<double>>&);
 extern template nlohmann::ordered_json step_scene<Q>(const SceneGeometry<Q>&, const Pose<Q>&,
                                                      const std::vector<Contact<Q>>&,
                                                      const std::vector<FingerCommand<Q>>&);
