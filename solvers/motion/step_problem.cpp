@@ -81,14 +81,19 @@ geometry::Assembly step_assembly(const SceneGeometry<T>& g, const Poses<T>& pose
     const geometry::Point2 w = point2(g.weights[b]);
     a.bodies.push_back({shape, point2(poses[b].apply(g.coms[b])), Q(1), Q(1), w.x, w.y, Q(0)});
   }
-  for (const std::vector<Vec2<T>>& o : g.obstacles) {
-    geometry::PolygonShape shape;
-    for (const Vec2<T>& p : o) shape.vertices.push_back(point2(p));
-    a.obstacles.push_back(shape);
-  }
+  std::vector<long> obstacle(g.obstacles.size(), -1);  // its index in the assembly, once a contact names it
   for (const Contact<T>& c : contacts) {
-    Party from{Party::Kind::kObstacle, static_cast<std::size_t>(c.other)};
-    if (c.kind == ContactKind::kBodyBody) from.kind = Party::Kind::kBody;
+    Party from{Party::Kind::kBody, static_cast<std::size_t>(c.other)};
+    if (c.kind == ContactKind::kBodyVertex || c.kind == ContactKind::kObstacleVertex) {
+      long& index = obstacle[static_cast<std::size_t>(c.other)];
+      if (index < 0) {
+        index = static_cast<long>(a.obstacles.size());
+        geometry::PolygonShape shape;
+        for (const Vec2<T>& p : g.obstacles[static_cast<std::size_t>(c.other)]) shape.vertices.push_back(point2(p));
+        a.obstacles.push_back(shape);
+      }
+      from = {Party::Kind::kObstacle, static_cast<std::size_t>(index)};
+    }
     if (c.kind == ContactKind::kFinger) {
       const FingerCommand<T>& cmd = commands[static_cast<std::size_t>(c.other)];
       from = {Party::Kind::kFinger, a.fingers.size()};

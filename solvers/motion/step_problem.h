@@ -36,7 +36,8 @@ nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose
 ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, const std::string& name);
 
 /// The step's assembly of several bodies: each body at its pose (world vertices, com, its weight as the load), the
-/// obstacles, each touching finger (world axes, its command; in the order of its contact), and per contact its
+/// obstacles in contact (in the order of their first contact: the assembly's reader refuses overlapping obstacles,
+/// so obstacles that overlap and both touch a body make a certificate `check` refuses), each touching finger (world axes, its command; in the order of its contact), and per contact its
 /// parties (`from` the obstacle, other body or finger, `to` the body `which`), point, normal and mu. A double is
 /// taken as the rational it is.
 template <class T>
