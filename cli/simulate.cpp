@@ -1,6 +1,7 @@
 // `contactcert simulate SCENE --steps N --dt H`: quasistatic time-stepping of a motion scene (docs/motion.md) over
 // the query layer (queries/simulate_query.h): options in, the report or the trajectory's JSON out. Exit 0 for every
-// way a run ends (a jamming proof is an answer), 3 when a budget or the time limit stopped it, with the steps done.
+// way a run ends (a jamming proof is an answer), 3 when a budget or the time limit stopped it: then only the limit
+// and the steps done (stderr).
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <limits>
@@ -107,15 +108,19 @@ int run_simulate_command(const SimulateCliOptions& o) {
   const queries::Limited<queries::SimulateAnswer> r = queries::run_simulate(queries::load_motion(o.file), q);
   if (!r) return report_limit("simulate", r.limit(), o.common.json);
   const queries::SimulateAnswer& a = *r;
+  // A run stopped by a budget or the time limit reports the limit only (what ran out, the steps done), as every
+  // command does; Python's BudgetExceeded still carries the steps made.
+  if (queries::stopped_by_budget(a))
+    return report_limit("simulate",
+                        {"simulate: " + queries::run_reason(a), std::to_string(queries::steps_done(a)) + " steps",
+                         queries::Limit::Kind::kStopped},
+                        o.common.json);
   const json j = queries::to_json(a);
   if (o.common.json)
     std::cout << exact::json_text(j) << "\n";
   else
     print_simulate_text(j);
-  if (!queries::stopped_by_budget(a)) return 0;
-  std::cerr << "contactcert: simulate: " << queries::run_reason(a) << " (covered: " << queries::steps_done(a)
-            << " steps)\n";
-  return 3;
+  return 0;
 }
 
 }  // namespace
