@@ -338,7 +338,7 @@ json placement_json(const DesignReport& report, const PlacementReport& p) {
   j["points"] = points;
   j["normals"] = normals;
   j["figure"] = exact_json(p.ranked.figure);
-  j["figure_approx"] = p.ranked.figure.get_d();
+  j["figure_approx"] = exact::nearest_double(p.ranked.figure);
   j["scene_file"] = p.stem + ".json";
   if (problem.rank == solvers::Rank::kMargin && !ev.margins.empty())
     j["nearest"] = ev.margins[worst_margin(ev)].nearest;

@@ -18,7 +18,7 @@ using geometry::Vec2;
 
 // Exact strings (ex) and float views (ap) of the trajectory's numbers.
 json ex(const Q& x) { return exact::to_string(x); }
-double ap(const Q& x) { return x.get_d(); }
+double ap(const Q& x) { return exact::nearest_double(x); }
 double ap(double x) { return x; }
 template <class T>
 json ex(const Vec2<T>& p) {

@@ -1,7 +1,5 @@
 #include "solvers/motion/contacts.h"
 
-#include <mpfr.h>
-
 #include <algorithm>
 
 #include "solvers/motion/first_root.h"
@@ -82,15 +80,6 @@ std::string edge_name(const std::string& shape, std::size_t i) { return shape + 
 std::string vertex_name(const std::string& shape, std::size_t i) { return shape + " vertex " + std::to_string(i); }
 
 }  // namespace
-
-double nearest_double(const Q& q) {
-  mpfr_t x;
-  mpfr_init2(x, 53);
-  mpfr_set_q(x, q.get_mpq_t(), MPFR_RNDN);
-  const double d = mpfr_get_d(x, MPFR_RNDN);
-  mpfr_clear(x);
-  return d;
-}
 
 template <class T>
 SceneGeometry<T> scene_geometry(const MotionScene& scene) {

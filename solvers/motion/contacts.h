@@ -14,16 +14,13 @@ namespace contactcert::solvers::motion {
 using geometry::Pose;
 using geometry::Vec2;
 
-/// q rounded to the nearest double (GMP's get_d truncates: 1/10 would become 0.09999999999999999).
-double nearest_double(const Q& q);
-
 /// An exact scene number in the run's number type: itself for Q, its nearest double for the float run.
 template <class T>
 T from_q(const Q& q) {
   if constexpr (std::is_same_v<T, Q>)
     return q;
   else
-    return nearest_double(q);
+    return exact::nearest_double(q);
 }
 
 /// The scene's shapes in T: each body's vertices in its own frame (the world frame at time 0), com, weight, name and

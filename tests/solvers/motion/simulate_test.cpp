@@ -194,8 +194,8 @@ TEST(FloatDrift, TheFloatRunUsesTheNearestDoubles) {
   ASSERT_EQ(fl.steps.size(), 2u);
   EXPECT_EQ(fl.steps[0].h, 0.1);
   EXPECT_EQ(fl.steps[1].time, 0.1);
-  EXPECT_EQ(nearest_double(Q(2, 3)), 2.0 / 3.0);
-  EXPECT_EQ(nearest_double(Q(-1, 10)), -0.1);
+  EXPECT_EQ(exact::nearest_double(Q(2, 3)), 2.0 / 3.0);
+  EXPECT_EQ(exact::nearest_double(Q(-1, 10)), -0.1);
 }
 
 TEST(FloatDrift, GrazingCeilingIsAPhantomContactInFloat) {
