@@ -2,8 +2,8 @@
 // side by side in one run, and verified per step over float (the target: within 3x), on the bundled pushed
 // box (sliding, finger at height 1/2, or tipping about its front corner, 3/2; 100 steps of 1/200) and the bundled
 // peg lowered into a chamfered hole (16 steps of 3/4) and the bundled row of four boxes pushed by a finger (four
-// bodies, each step the assembly's problem; 9 steps of 1/3). "bare" runs the steps only, "full" also decides each step's
-// uniqueness and keeps its certificate (exact paths; the float path has neither). Then where float goes wrong: a
+// bodies, each step the assembly's problem; 9 steps of 1/3). "bare" runs the steps only, "full" also decides each
+// step's uniqueness and keeps its certificate (exact paths; the float path has neither). Then where float goes wrong: a
 // grazing family (a ceiling 10^-k above the sliding box's top) and near-threshold pushes (h = 1 +- 10^-k), each with
 // the step at which the float run first differs from the verified one (-1: never), its kind and the pose distance
 // then. Last, the 1000-step run, verified, with every step's certificate (no uniqueness), in seconds.

@@ -407,8 +407,8 @@ void closing_of_pair(const SceneGeometry<T>& g, std::size_t a, const std::vector
       };
       const auto root = first_gap_root<T>(poly, limit, accept);
       if (!root || (best && !(root->tau < best->tau))) continue;
-      best = ClosingContact<T>{root->tau, root->exact, vertex_name(g.body_names[a], i) + " on " +
-                                                           edge_name(g.body_names[b], k)};
+      best = ClosingContact<T>{root->tau, root->exact,
+                               vertex_name(g.body_names[a], i) + " on " + edge_name(g.body_names[b], k)};
       limit = root->tau;
     }
 }
@@ -439,12 +439,12 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
   return best;
 }
 
-#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                         \
-  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                                  \
-  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);  \
-  template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);          \
-  template std::optional<ClosingContact<T>> first_closing<T>(                                                      \
-      const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&,         \
+#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                       \
+  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                                \
+  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&); \
+  template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);         \
+  template std::optional<ClosingContact<T>> first_closing<T>(                                                     \
+      const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&,        \
       const std::vector<std::optional<Vec2<T>>>&, const T&);
 CONTACTCERT_MOTION_CONTACTS_INST(Q)
 CONTACTCERT_MOTION_CONTACTS_INST(double)

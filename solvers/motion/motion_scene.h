@@ -1,7 +1,7 @@
 // A quasistatic scene to simulate over time (docs/formats.md, "Motion"): a `"kind": "quasistatic_scene"` whose
 // contacts are not listed but found from geometry at every step: one movable convex polygonal workpiece (or several
-// movable convex polygonal bodies), fixed convex polygonal obstacles, point fingers with piecewise-constant velocity or force schedules (world axes),
-// and the step size and count.
+// movable convex polygonal bodies), fixed convex polygonal obstacles, point fingers with piecewise-constant velocity or
+// force schedules (world axes), and the step size and count.
 #pragma once
 
 #include <optional>

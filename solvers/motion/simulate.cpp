@@ -32,7 +32,8 @@ StepPhysics<Q> physics(const ucp::UcpProblem&, const ucp::UcpReport& r, const Q*
     out.ct.push_back(s.c_t(i));
   }
   for (Index j = 0; j < s.theta_dot.size(); ++j) out.theta.push_back(s.theta_dot(j));
-  for (Index b = 0; b + 2 < s.q_dot.size(); b += 3) out.twists.push_back({{s.q_dot(b), s.q_dot(b + 1)}, s.q_dot(b + 2)});
+  for (Index b = 0; b + 2 < s.q_dot.size(); b += 3)
+    out.twists.push_back({{s.q_dot(b), s.q_dot(b + 1)}, s.q_dot(b + 2)});
   return out;
 }
 
@@ -375,7 +376,8 @@ bool Stepper<T>::step() {
   r.verdict = rep.status;
   r.reason = rep.reason;
   if (exact_path && opts_.certificates)
-    r.certificate = ucp::certificate_text(problem, rep, assembly ? exact::json_text(assembly_scene_json(*assembly)) : "");
+    r.certificate =
+        ucp::certificate_text(problem, rep, assembly ? exact::json_text(assembly_scene_json(*assembly)) : "");
   if (rep.status != ucp::UcpStatus::kSolvable) {
     for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal, {T(0), T(0)}});
     r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();

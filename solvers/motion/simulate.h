@@ -63,7 +63,7 @@ struct StepRecord {
   /// What cut the step short (empty: a full step): the contact that closed, a finger reaching a body vertex, or
   /// "schedule change of finger NAME".
   std::string cut_by;
-  bool cut_exact = true;  ///< false: the closing time is irrational; h is a rational time just before it
+  bool cut_exact = true;        ///< false: the closing time is irrational; h is a rational time just before it
   Poses<T> poses, poses_after;  ///< per body
   std::vector<Vec2<T>> tips_after;
   std::vector<ContactRecord<T>> contacts;
@@ -72,8 +72,8 @@ struct StepRecord {
   std::string reason;
   /// Per body its q_dot: the velocity v of the body point at the world origin, and omega.
   std::vector<Twist<T>> twists;
-  /// Per body the twist the step applies: (v, omega) itself when omega = 0; turning, a rotation about a rolling obstacle
-  /// contact's point (exactly the instantaneous centre) or else about the instantaneous centre, by the Cayley
+  /// Per body the twist the step applies: (v, omega) itself when omega = 0; turning, a rotation about a rolling
+  /// obstacle contact's point (exactly the instantaneous centre) or else about the instantaneous centre, by the Cayley
   /// parameter that brings the pose's tan(theta / 2) after a full step to its exact value if that takes at most 128
   /// bits, else to the nearest multiple of 2^-40 (the centre likewise): exact where cheap, and the pose's numbers
   /// stay bounded (exact paths). The float path applies (v, omega).

@@ -58,10 +58,11 @@ nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose
     }
     list.push_back(j);
   }
-  return {{"kind", "quasistatic_scene"},
-          {"workpiece", {{"shape", {{"type", "polygon"}, {"vertices", vertices}}}, {"com", pair(pose.apply(g.coms[0]))}}},
-          {"gravity", pair(g.weights[0])},
-          {"contacts", list}};
+  return {
+      {"kind", "quasistatic_scene"},
+      {"workpiece", {{"shape", {{"type", "polygon"}, {"vertices", vertices}}}, {"com", pair(pose.apply(g.coms[0]))}}},
+      {"gravity", pair(g.weights[0])},
+      {"contacts", list}};
 }
 
 ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, const std::string& name) {
@@ -117,9 +118,10 @@ nlohmann::ordered_json assembly_scene_json(const geometry::Assembly& a) {
   nlohmann::ordered_json bodies = nlohmann::ordered_json::array(), obstacles = nlohmann::ordered_json::array(),
                          fingers = nlohmann::ordered_json::array(), contacts = nlohmann::ordered_json::array();
   for (const geometry::Body& b : a.bodies)
-    bodies.push_back({{"shape", polygon(b.shape)},
-                      {"com", pair(b.com)},
-                      {"load", nlohmann::ordered_json::array({text(b.load_fx), text(b.load_fy), text(b.load_torque)})}});
+    bodies.push_back(
+        {{"shape", polygon(b.shape)},
+         {"com", pair(b.com)},
+         {"load", nlohmann::ordered_json::array({text(b.load_fx), text(b.load_fy), text(b.load_torque)})}});
   for (const geometry::Shape& o : a.obstacles) obstacles.push_back({{"shape", polygon(o)}});
   for (const geometry::Finger& f : a.fingers)
     fingers.push_back({{"position", pair(f.position)},

@@ -21,9 +21,9 @@ struct FingerCommand {
   Vec2<T> value;
 };
 
-/// The step's scene of one body: the workpiece at `pose` (world vertices and com), gravity, and per contact its point, normal
-/// and mu; a finger contact carries its command ("axes": "world"). Numbers are exact strings (a double is written
-/// as the rational it is).
+/// The step's scene of one body: the workpiece at `pose` (world vertices and com), gravity, and per contact its point,
+/// normal and mu; a finger contact carries its command ("axes": "world"). Numbers are exact strings (a double is
+/// written as the rational it is).
 template <class T>
 nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose,
                                   const std::vector<Contact<T>>& contacts,
@@ -37,9 +37,9 @@ ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, const std::str
 
 /// The step's assembly of several bodies: each body at its pose (world vertices, com, its weight as the load), the
 /// obstacles in contact (in the order of their first contact: the assembly's reader refuses overlapping obstacles,
-/// so obstacles that overlap and both touch a body make a certificate `check` refuses), each touching finger (world axes, its command; in the order of its contact), and per contact its
-/// parties (`from` the obstacle, other body or finger, `to` the body `which`), point, normal and mu. A double is
-/// taken as the rational it is.
+/// so obstacles that overlap and both touch a body make a certificate `check` refuses), each touching finger (world
+/// axes, its command; in the order of its contact), and per contact its parties (`from` the obstacle, other body or
+/// finger, `to` the body `which`), point, normal and mu. A double is taken as the rational it is.
 template <class T>
 geometry::Assembly step_assembly(const SceneGeometry<T>& g, const Poses<T>& poses,
                                  const std::vector<Contact<T>>& contacts,

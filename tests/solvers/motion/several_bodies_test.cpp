@@ -20,7 +20,8 @@ MotionScene scene_of(const std::string& bodies, const std::string& extra_obstacl
     "obstacles": [{"name": "floor", "vertices": [[-10, -1], [20, -1], [20, 0], [-10, 0]], "mu": "1/5"})" +
                            extra_obstacles + R"(],
     "fingers": [{"name": "pusher", "tip": [0, "1/2"], "mu": 0, "schedule": [{"velocity": [1, 0]}]}],
-    "motion": {"dt": ")" + dt + R"(", "steps": )" + std::to_string(steps) + "}}";
+    "motion": {"dt": ")" + dt +
+                           R"(", "steps": )" + std::to_string(steps) + "}}";
   return read_motion_scene(exact::JsonInput::parse(text, "bodies.json"));
 }
 
@@ -32,8 +33,8 @@ std::string unit_box() {
 std::string pointed_box(int k, const Q& x) {
   const auto s = [](const Q& q) { return "\"" + q.get_str() + "\""; };
   return R"(, {"name": "box )" + std::to_string(k) + R"(", "shape": {"type": "polygon", "vertices": [[)" + s(x) +
-         R"(, "1/2"], [)" + s(x + Q(1, 4)) + ", 0], [" + s(x + 1) + ", 0], [" + s(x + 1) + ", 1], [" +
-         s(x + Q(1, 4)) + R"(, 1]]}, "mu": "1/2"})";
+         R"(, "1/2"], [)" + s(x + Q(1, 4)) + ", 0], [" + s(x + 1) + ", 0], [" + s(x + 1) + ", 1], [" + s(x + Q(1, 4)) +
+         R"(, 1]]}, "mu": "1/2"})";
 }
 
 SimulateOptions options() {
