@@ -6,16 +6,9 @@ from fractions import Fraction
 import pytest
 
 import contactcert as cc
-from conftest import SCENES, cli_json, run_cli
+from conftest import SCENES, cli_json, run_cli, without_seconds
 
 ROW = SCENES / "motion_pushed_row.json"
-
-
-def without_seconds(d):
-    d = dict(d)
-    d.pop("seconds")
-    d["steps"] = [{k: v for k, v in s.items() if k != "seconds"} for s in d["steps"]]
-    return d
 
 
 @pytest.mark.parametrize("args,kwargs", [
