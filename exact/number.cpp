@@ -5,6 +5,8 @@
 
 #include <type_traits>
 
+#include "exact/nearest_double.h"
+
 namespace contactcert::exact {
 
 static_assert(std::is_same_v<Q, CGAL::Exact_rational>,

@@ -93,13 +93,8 @@ bool is_negative(const T& x) {
   return NumberTraits<T>::sign(x) < 0;
 }
 
-/// Converts an exact matrix to doubles (for the float path; GMP's get_d, which truncates).
+/// Converts an exact matrix to doubles (for the float path and for `_approx` outputs).
 Mat<double> to_double(const Mat<Q>& A);
 Vec<double> to_double(const Vec<Q>& v);
-
-/// q rounded to the nearest double (ties to even): the float view that every `_approx` output prints (GMP's get_d
-/// truncates: 1/10 would print as 0.09999999999999999; the nearest double prints as 0.1).
-double nearest_double(const Q& q);
-Vec<double> nearest_doubles(const Vec<Q>& v);
 
 }  // namespace contactcert::exact

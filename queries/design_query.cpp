@@ -9,6 +9,7 @@
 #include "exact/deadline.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
+#include "exact/nearest_double.h"
 #include "exact/rational_text.h"
 #include "exact/sha256.h"
 #include "queries/design_svg.h"

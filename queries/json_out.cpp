@@ -9,6 +9,7 @@
 
 #include "exact/input_error.h"
 #include "exact/json_input.h"
+#include "exact/nearest_double.h"
 #include "exact/rational_text.h"
 
 namespace contactcert::queries {

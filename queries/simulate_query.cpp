@@ -5,6 +5,7 @@
 
 #include "exact/input_error.h"
 #include "exact/json_input.h"
+#include "exact/nearest_double.h"
 #include "exact/rational_text.h"
 #include "queries/trajectory_svg.h"
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/nearest_double.h"
 #include "geometry/rigid_motion.h"
 #include "solvers/motion/motion_scene.h"
 
