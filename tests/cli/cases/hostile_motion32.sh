@@ -15,3 +15,7 @@ check 0 'overlap (the box 0 overlaps the box 1 at time 0)' simulate "$work/sim_o
 rm -rf "$work/sim_row_certs"
 check 0 '3 of 3 steps' simulate "$row" --steps 3 --uniqueness off --certificates "$work/sim_row_certs"
 check 0 'ucp_solvable certificate is VALID' check "$work/sim_row_certs/step-2.json"
+# The `_approx` views are the nearest doubles (exact::nearest_double): 1/10 prints as 0.1, 2/5 as 0.4 (GMP's get_d
+# truncates to 0.09999999999999999 and 0.39999999999999997).
+check 0 '"dt_approx":0.1,' simulate "$s/motion_pushed_box.json" --steps 1 --json
+check 0 '"dt_approx":0.4,' simulate "$s/motion_block_wall.json" --steps 1 --json
