@@ -1,6 +1,7 @@
 #include "solvers/motion/simulate.h"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -345,10 +346,18 @@ bool Stepper<T>::step() {
   r.poses = r.poses_after = poses;
   r.tips_after = tips;
   const ContactSet<T> cs = find_contacts(g_, poses, tips);
-  if (!cs.unsupported.empty() || cs.contacts.empty()) {
+  std::vector<bool> held(poses.size(), false);  // every body needs a contact (else it would fall: no solution)
+  for (const Contact<T>& c : cs.contacts) {
+    held[static_cast<std::size_t>(c.which)] = true;
+    if (c.kind == ContactKind::kBodyBody) held[static_cast<std::size_t>(c.other)] = true;
+  }
+  const auto free_body = std::find(held.begin(), held.end(), false);
+  if (!cs.unsupported.empty() || free_body != held.end()) {
     const bool none = cs.unsupported.empty();
     finish(none ? RunStatus::kNoContact : RunStatus::kUnsupportedContact,
-           none ? "no contact holds the body (a quasistatic body needs one)" : cs.unsupported);
+           none ? "no contact holds the " + g_.body_names[static_cast<std::size_t>(free_body - held.begin())] +
+                      " (a quasistatic body needs one)"
+                : cs.unsupported);
     return done(false);
   }
   std::vector<std::string> names;

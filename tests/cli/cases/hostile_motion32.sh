@@ -19,3 +19,7 @@ check 0 'ucp_solvable certificate is VALID' check "$work/sim_row_certs/step-2.js
 # truncates to 0.09999999999999999 and 0.39999999999999997).
 check 0 '"dt_approx":0.1,' simulate "$s/motion_pushed_box.json" --steps 1 --json
 check 0 '"dt_approx":0.4,' simulate "$s/motion_block_wall.json" --steps 1 --json
+# Box 3 lifted off the floor: no contact holds it (a quasistatic body needs one), and the run says which body.
+sed 's/\[\["9\/2", "1\/2"\], \["19\/4", 0\], \["11\/2", 0\], \["11\/2", 1\], \["19\/4", 1\]\]/[["9\/2", "3\/2"], ["19\/4", 1], ["11\/2", 1], ["11\/2", 2], ["19\/4", 2]]/' \
+  "$row" > "$work/sim_lifted.json"
+check 0 'no_contact (no contact holds the box 3' simulate "$work/sim_lifted.json"
