@@ -140,15 +140,13 @@ nlohmann::ordered_json assembly_scene_json(const geometry::Assembly& a) {
           {"contacts", contacts}};
 }
 
-template geometry::Assembly step_assembly<Q>(const SceneGeometry<Q>&, const Poses<Q>&, const std::vector<Contact<Q>>&,
-                                             const std::vector<FingerCommand<Q>>&);
-template geometry::Assembly step_assembly<double>(const SceneGeometry<double>&, const Poses<double>&,
-                                                  const std::vector<Contact<double>>&,
-                                                  const std::vector<FingerCommand<double>>&);
-template nlohmann::ordered_json step_scene<Q>(const SceneGeometry<Q>&, const Pose<Q>&, const std::vector<Contact<Q>>&,
-                                              const std::vector<FingerCommand<Q>>&);
-template nlohmann::ordered_json step_scene<double>(const SceneGeometry<double>&, const Pose<double>&,
-                                                   const std::vector<Contact<double>>&,
-                                                   const std::vector<FingerCommand<double>>&);
+#define CONTACTCERT_MOTION_STEP_INST(T)                                                                               \
+  template geometry::Assembly step_assembly<T>(const SceneGeometry<T>&, const Poses<T>&,                              \
+                                               const std::vector<Contact<T>>&, const std::vector<FingerCommand<T>>&); \
+  template nlohmann::ordered_json step_scene<T>(const SceneGeometry<T>&, const Pose<T>&,                              \
+                                                const std::vector<Contact<T>>&, const std::vector<FingerCommand<T>>&);
+CONTACTCERT_MOTION_STEP_INST(Q)
+CONTACTCERT_MOTION_STEP_INST(double)
+#undef CONTACTCERT_MOTION_STEP_INST
 
 }  // namespace contactcert::solvers::motion

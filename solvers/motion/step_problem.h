@@ -54,17 +54,13 @@ ucp::UcpProblem assembly_step_problem(const geometry::Assembly& a);
 /// contact frame.
 nlohmann::ordered_json assembly_scene_json(const geometry::Assembly& a);
 
-extern template geometry::Assembly step_assembly<Q>(const SceneGeometry<Q>&, const Poses<Q>&,
-                                                    const std::vector<Contact<Q>>&,
-                                                    const std::vector<FingerCommand<Q>>&);
-extern template geometry::Assembly step_assembly<double>(const SceneGeometry<double>&, const Poses<double>&,
-                                                         const std::vector<Contact<double>>&,
-                                                         const std::vector<FingerCommand<double>>&);
-extern template nlohmann::ordered_json step_scene<Q>(const SceneGeometry<Q>&, const Pose<Q>&,
-                                                     const std::vector<Contact<Q>>&,
-                                                     const std::vector<FingerCommand<Q>>&);
-extern template nlohmann::ordered_json step_scene<double>(const SceneGeometry<double>&, const Pose<double>&,
-                                                          const std::vector<Contact<double>>&,
-                                                          const std::vector<FingerCommand<double>>&);
+#define CONTACTCERT_MOTION_STEP_EXTERN(T)                                                                              \
+  extern template geometry::Assembly step_assembly<T>(                                                                 \
+      const SceneGeometry<T>&, const Poses<T>&, const std::vector<Contact<T>>&, const std::vector<FingerCommand<T>>&); \
+  extern template nlohmann::ordered_json step_scene<T>(                                                                \
+      const SceneGeometry<T>&, const Pose<T>&, const std::vector<Contact<T>>&, const std::vector<FingerCommand<T>>&);
+CONTACTCERT_MOTION_STEP_EXTERN(Q)
+CONTACTCERT_MOTION_STEP_EXTERN(double)
+#undef CONTACTCERT_MOTION_STEP_EXTERN
 
 }  // namespace contactcert::solvers::motion
