@@ -1,8 +1,9 @@
 // Quasistatic time-stepping (solvers/motion, issue 32): steps per second of the exact, verified and float paths
 // side by side in one run, and verified per step over float (the issue's target: within 3x), on the bundled pushed
 // box (sliding, finger at height 1/2, or tipping about its front corner, 3/2; 100 steps of 1/200) and the bundled
-// peg lowered into a chamfered hole (16 steps of 3/4). "bare" runs the steps only, "full" also decides each step's
-// uniqueness and keeps its certificate (exact paths; the float path has neither). Then where float goes wrong: a
+// peg lowered into a chamfered hole (16 steps of 3/4) and the bundled row of four boxes pushed by a finger (four
+// bodies, each step the assembly's problem; 9 steps of 1/3). "bare" runs the steps only, "full" also decides each
+// step's uniqueness and keeps its certificate (exact paths; the float path has neither). Then where float goes wrong: a
 // grazing family (a ceiling 10^-k above the sliding box's top) and near-threshold pushes (h = 1 +- 10^-k), each with
 // the step at which the float run first differs from the verified one (-1: never), its kind and the pose distance
 // then. Last, the issue's 1000-step run, verified, with every step's certificate (no uniqueness), in seconds.
@@ -65,12 +66,14 @@ double per_step(const MotionScene& scene, SimulateOptions o, exact::Arith arith)
   return cpu_per_step([&] { return solvers::motion::simulate<T>(scene, o).steps.size(); });
 }
 
-/// range(0): 0 the box slides, 1 it tips, 2 the peg; range(1): 1 with uniqueness and certificates.
+/// range(0): 0 the box slides, 1 it tips, 2 the peg, 3 the four-box row; range(1): 1 with uniqueness and
+/// certificates.
 void BM_Paths(benchmark::State& state) {
   const long which = state.range(0);
   const bool full = state.range(1) == 1;
-  const MotionScene scene =
-      which == 2 ? bundled("motion_peg_chamfer.json") : pushed_box(which == 1 ? Q(3, 2) : Q(1, 2), Q(1, 200), 100);
+  const MotionScene scene = which == 3   ? bundled("motion_pushed_row.json")
+                            : which == 2 ? bundled("motion_peg_chamfer.json")
+                                         : pushed_box(which == 1 ? Q(3, 2) : Q(1, 2), Q(1, 200), 100);
   SimulateOptions o;
   o.uniqueness = o.certificates = full;
   double exact = 0, verified = 0, fl = 0;
@@ -85,10 +88,10 @@ void BM_Paths(benchmark::State& state) {
   state.counters["float_steps_per_s"] = n / fl;
   state.counters["verified_over_float"] = verified / fl;
   state.counters["exact_over_float"] = exact / fl;
-  const char* names[] = {"box slides", "box tips", "peg"};
+  const char* names[] = {"box slides", "box tips", "peg", "four-box row"};
   state.SetLabel(std::string(names[which]) + (full ? ", uniqueness + certificates" : ", bare"));
 }
-BENCHMARK(BM_Paths)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_Paths)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMillisecond)->Iterations(3);
 
 /// The verified and the float run of `scene` side by side: steps per second of each (CPU), the float run's first
 /// divergence of any kind (often a pose ~1e-16 inside a shape: rounding) and its first wrong answer (a different

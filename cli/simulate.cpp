@@ -1,6 +1,7 @@
 // `contactcert simulate SCENE --steps N --dt H`: quasistatic time-stepping of a motion scene (docs/motion.md) over
 // the query layer (queries/simulate_query.h): options in, the report or the trajectory's JSON out. Exit 0 for every
-// way a run ends (a jamming proof is an answer), 3 when a budget or the time limit stopped it, with the steps done.
+// way a run ends (a jamming proof is an answer), 3 when a budget or the time limit stopped it: then only the limit
+// and the steps done (stderr).
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <limits>
@@ -62,8 +63,13 @@ void print_simulate_text(const json& j) {
     std::cout << "  step " << s["index"] << " t = " << simulate_value(s, "time") << " h = " << simulate_value(s, "h")
               << ": " << s["verdict"].get<std::string>();
     if (s.contains("uniqueness")) std::cout << ", " << s["uniqueness"]["status"].get<std::string>();
-    if (s["verdict"] == "solvable") std::cout << ", q_dot = " << simulate_value(s, "q_dot");
+    if (s["verdict"] == "solvable" && !s.contains("bodies")) std::cout << ", q_dot = " << simulate_value(s, "q_dot");
     if (!s["cut_by"].is_null()) std::cout << ", cut by " << s["cut_by"].get<std::string>();
+    if (s["verdict"] == "solvable" && s.contains("bodies")) {
+      std::cout << "\n    q_dot:";
+      for (const json& b : s["bodies"])
+        std::cout << " " << b["name"].get<std::string>() << " " << simulate_value(b, "q_dot") << ";";
+    }
     std::cout << "\n    contacts:";
     for (const json& c : s["contacts"])
       std::cout << " [" << c["mode"].get<std::string>() << "] " << c["name"].get<std::string>() << ";";
@@ -75,8 +81,14 @@ void print_simulate_text(const json& j) {
     std::cout << "\n";
   }
   const json& f = j["final"];
-  std::cout << "  final: t = " << simulate_value(f, "time") << ", pose t = " << simulate_value(f["pose"], "t")
-            << ", angle ~ " << f["pose"]["angle_approx"] << " rad\n";
+  std::cout << "  final: t = " << simulate_value(f, "time");
+  if (f.contains("pose"))
+    std::cout << ", pose t = " << simulate_value(f["pose"], "t") << ", angle ~ " << f["pose"]["angle_approx"] << " rad";
+  else
+    for (const json& b : f["bodies"])
+      std::cout << "\n    " << b["name"].get<std::string>() << ": pose t = " << simulate_value(b["pose"], "t")
+                << ", angle ~ " << b["pose"]["angle_approx"] << " rad";
+  std::cout << "\n";
   if (j.contains("divergences")) {
     std::cout << "  float run: " << j["float"]["status"].get<std::string>() << " after " << j["float"]["steps_done"]
               << " steps; " << (j["divergences"].empty() ? "it agrees with the exact run at every step" : "it differs:")
@@ -96,15 +108,19 @@ int run_simulate_command(const SimulateCliOptions& o) {
   const queries::Limited<queries::SimulateAnswer> r = queries::run_simulate(queries::load_motion(o.file), q);
   if (!r) return report_limit("simulate", r.limit(), o.common.json);
   const queries::SimulateAnswer& a = *r;
+  // A run stopped by a budget or the time limit reports the limit only (what ran out, the steps done), as every
+  // command does; Python's BudgetExceeded still carries the steps made.
+  if (queries::stopped_by_budget(a))
+    return report_limit("simulate",
+                        {"simulate: " + queries::run_reason(a), std::to_string(queries::steps_done(a)) + " steps",
+                         queries::Limit::Kind::kStopped},
+                        o.common.json);
   const json j = queries::to_json(a);
   if (o.common.json)
     std::cout << exact::json_text(j) << "\n";
   else
     print_simulate_text(j);
-  if (!queries::stopped_by_budget(a)) return 0;
-  std::cerr << "contactcert: simulate: " << queries::run_reason(a) << " (covered: " << queries::steps_done(a)
-            << " steps)\n";
-  return 3;
+  return 0;
 }
 
 }  // namespace

@@ -1,8 +1,11 @@
 #include "exact/number.h"
 
 #include <CGAL/Exact_rational.h>
+#include <mpfr.h>
 
 #include <type_traits>
+
+#include "exact/nearest_double.h"
 
 namespace contactcert::exact {
 
@@ -19,6 +22,21 @@ Mat<double> to_double(const Mat<Q>& A) {
 Vec<double> to_double(const Vec<Q>& v) {
   Vec<double> d(v.size());
   for (Eigen::Index i = 0; i < v.size(); ++i) d(i) = v(i).get_d();
+  return d;
+}
+
+double nearest_double(const Q& q) {
+  mpfr_t x;
+  mpfr_init2(x, 53);
+  mpfr_set_q(x, q.get_mpq_t(), MPFR_RNDN);
+  const double d = mpfr_get_d(x, MPFR_RNDN);
+  mpfr_clear(x);
+  return d;
+}
+
+Vec<double> nearest_doubles(const Vec<Q>& v) {
+  Vec<double> d(v.size());
+  for (Eigen::Index i = 0; i < v.size(); ++i) d(i) = nearest_double(v(i));
   return d;
 }
 

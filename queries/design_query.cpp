@@ -9,6 +9,7 @@
 #include "exact/deadline.h"
 #include "exact/input_error.h"
 #include "exact/json_input.h"
+#include "exact/nearest_double.h"
 #include "exact/rational_text.h"
 #include "exact/sha256.h"
 #include "queries/design_svg.h"
@@ -338,7 +339,7 @@ json placement_json(const DesignReport& report, const PlacementReport& p) {
   j["points"] = points;
   j["normals"] = normals;
   j["figure"] = exact_json(p.ranked.figure);
-  j["figure_approx"] = p.ranked.figure.get_d();
+  j["figure_approx"] = exact::nearest_double(p.ranked.figure);
   j["scene_file"] = p.stem + ".json";
   if (problem.rank == solvers::Rank::kMargin && !ev.margins.empty())
     j["nearest"] = ev.margins[worst_margin(ev)].nearest;

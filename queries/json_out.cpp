@@ -9,6 +9,7 @@
 
 #include "exact/input_error.h"
 #include "exact/json_input.h"
+#include "exact/nearest_double.h"
 #include "exact/rational_text.h"
 
 namespace contactcert::queries {
@@ -33,7 +34,7 @@ json exact_json(const exact::Mat<Q>& M) {
   return rows;
 }
 
-json approx_json(const exact::Vec<Q>& v) { return approx_json(exact::to_double(v)); }
+json approx_json(const exact::Vec<Q>& v) { return approx_json(exact::nearest_doubles(v)); }
 
 json approx_json(const exact::Vec<double>& v) {
   json a = json::array();

@@ -5,6 +5,7 @@
 
 #include "exact/input_error.h"
 #include "exact/json_input.h"
+#include "exact/nearest_double.h"
 #include "exact/rational_text.h"
 #include "queries/trajectory_svg.h"
 
@@ -18,7 +19,7 @@ using geometry::Vec2;
 
 // Exact strings (ex) and float views (ap) of the trajectory's numbers.
 json ex(const Q& x) { return exact::to_string(x); }
-double ap(const Q& x) { return x.get_d(); }
+double ap(const Q& x) { return exact::nearest_double(x); }
 double ap(double x) { return x; }
 template <class T>
 json ex(const Vec2<T>& p) {
@@ -65,19 +66,46 @@ json uniqueness_json(const motion::MotionUniqueness& u) {
           {"solution_modes", u.solution_modes},          {"unbounded", u.unbounded}, {"lps", u.lps}};
 }
 
+/// Body b's twist as (v_x, v_y, omega); zero when the step has none (no solution).
 template <class T>
-json step_json(const motion::StepRecord<T>& s, const std::string& certificate) {
+std::vector<T> twist_of(const std::vector<motion::Twist<T>>& twists, std::size_t b) {
+  const motion::Twist<T> t = b < twists.size() ? twists[b] : motion::Twist<T>{};
+  return {t.v.x, t.v.y, t.omega};
+}
+
+/// One body of a step with several: its name, pose, q_dot, applied q_dot and pose after the step.
+template <class T>
+json body_step_json(const motion::StepRecord<T>& s, std::size_t b, const std::string& name) {
+  json j;
+  j["name"] = name;
+  j["pose"] = pose_json(s.poses[b]);
+  put<T>(j, "q_dot", twist_of(s.twists, b));
+  put<T>(j, "applied_q_dot", twist_of(s.applied, b));
+  j["pose_after"] = pose_json(s.poses_after[b]);
+  return j;
+}
+
+/// A step: with one body its pose, q_dot, applied_q_dot and pose_after at the top; with several, `bodies`.
+template <class T>
+json step_json(const motion::StepRecord<T>& s, const std::string& certificate, const std::vector<std::string>& names) {
+  const bool one = names.size() == 1;
   json j;
   j["index"] = s.index;
   put<T>(j, "time", s.time);
   put<T>(j, "h", s.h);
   j["cut_by"] = s.cut_by.empty() ? json(nullptr) : json(s.cut_by);
   j["cut_exact"] = s.cut_exact;
-  j["pose"] = pose_json(s.pose);
+  if (one) j["pose"] = pose_json(s.poses[0]);
   j["verdict"] = solvers::ucp::status_name(s.verdict);
   j["reason"] = s.reason;
-  put<T>(j, "q_dot", std::vector<T>{s.v.x, s.v.y, s.omega});
-  put<T>(j, "applied_q_dot", std::vector<T>{s.applied_v.x, s.applied_v.y, s.applied_omega});
+  if (one) {
+    put<T>(j, "q_dot", twist_of(s.twists, 0));
+    put<T>(j, "applied_q_dot", twist_of(s.applied, 0));
+  } else {
+    json bodies = json::array();
+    for (std::size_t b = 0; b < names.size(); ++b) bodies.push_back(body_step_json(s, b, names[b]));
+    j["bodies"] = bodies;
+  }
   json contacts = json::array();
   for (const motion::ContactRecord<T>& c : s.contacts) {
     json cj{{"name", c.name}, {"mode", std::string(1, c.mode)}};
@@ -89,29 +117,44 @@ json step_json(const motion::StepRecord<T>& s, const std::string& certificate) {
   j["contacts"] = contacts;
   j["events"] = {{"made", s.made}, {"broken", s.broken}};
   if (s.uniqueness) j["uniqueness"] = uniqueness_json(*s.uniqueness);
-  j["pose_after"] = pose_json(s.pose_after);
+  if (one) j["pose_after"] = pose_json(s.poses_after[0]);
   put<T>(j, "fingers_after", s.tips_after);
   if (!certificate.empty()) j["certificate"] = certificate;
   j["seconds"] = s.seconds;
   return j;
 }
 
+/// The final state: the pose (one body) or each body's name and pose (`bodies`), and the finger tips.
 template <class T>
-json final_json(const motion::Trajectory<T>& r) {
+json final_json(const motion::Trajectory<T>& r, const std::vector<std::string>& names) {
   json j;
   put<T>(j, "time", r.final_time);
-  j["pose"] = pose_json(r.final_pose);
+  if (names.size() == 1) {
+    j["pose"] = pose_json(r.final_poses[0]);
+  } else {
+    json bodies = json::array();
+    for (std::size_t b = 0; b < names.size(); ++b)
+      bodies.push_back({{"name", names[b]}, {"pose", pose_json(r.final_poses[b])}});
+    j["bodies"] = bodies;
+  }
   put<T>(j, "fingers", r.final_tips);
   return j;
 }
 
+std::vector<std::string> body_names(const motion::MotionScene& scene) {
+  std::vector<std::string> out;
+  for (const motion::MovingBody& b : scene.bodies) out.push_back(b.name);
+  return out;
+}
+
 template <class T>
-void put_run(json& j, const motion::Trajectory<T>& r, const std::vector<std::string>& certificates) {
+void put_run(json& j, const motion::Trajectory<T>& r, const std::vector<std::string>& certificates,
+             const std::vector<std::string>& names) {
   json steps = json::array();
   for (std::size_t k = 0; k < r.steps.size(); ++k)
-    steps.push_back(step_json(r.steps[k], k < certificates.size() ? certificates[k] : ""));
+    steps.push_back(step_json(r.steps[k], k < certificates.size() ? certificates[k] : "", names));
   j["steps"] = steps;
-  j["final"] = final_json(r);
+  j["final"] = final_json(r, names);
 }
 
 json divergence_json(const motion::Divergence& d) {
@@ -202,8 +245,9 @@ bool SimulateRun::advance() {
 
 std::optional<json> SimulateRun::next() {
   if (!advance()) return std::nullopt;
-  if (exact_) return step_json(exact_->trajectory().steps.back(), answer_.certificates.back());
-  return step_json(float_->trajectory().steps.back(), "");
+  const std::vector<std::string> names = body_names(answer_.scene);
+  if (exact_) return step_json(exact_->trajectory().steps.back(), answer_.certificates.back(), names);
+  return step_json(float_->trajectory().steps.back(), "", names);
 }
 
 SimulateAnswer SimulateRun::finish() {
@@ -253,16 +297,17 @@ json to_json(const SimulateAnswer& a) {
   put<Q>(j, "dt", a.dt);
   j["steps_asked"] = a.steps;
   j["steps_done"] = steps_done(a);
+  const std::vector<std::string> names = body_names(a.scene);
   if (a.exact_run)
-    put_run(j, *a.exact_run, a.certificates);
+    put_run(j, *a.exact_run, a.certificates, names);
   else
-    put_run(j, *a.float_run, {});
+    put_run(j, *a.float_run, {}, names);
   if (a.compared) {
     const motion::Trajectory<double>& f = *a.float_run;
     j["float"] = {{"status", motion::run_status_name(f.status)},
                   {"reason", f.reason},
                   {"steps_done", f.steps.size()},
-                  {"final", final_json(f)}};
+                  {"final", final_json(f, names)}};
     json d = json::array();
     for (const motion::Divergence& x : a.divergences) d.push_back(divergence_json(x));
     j["divergences"] = d;

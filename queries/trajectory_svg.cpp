@@ -37,15 +37,22 @@ struct FrameContact {
 
 /// What one frame shows, in doubles.
 struct Frame {
-  std::vector<P> body, tips, float_body;
+  std::vector<std::vector<P>> bodies, float_bodies;
+  std::vector<P> tips;
   std::vector<FrameContact> contacts;
   std::string caption;
 };
 
-std::vector<P> body_at(const motion::MotionScene& scene, const geometry::Pose<double>& pose) {
-  std::vector<P> out;
-  for (const geometry::Point2& v : std::get<geometry::PolygonShape>(scene.workpiece.shape).vertices)
-    out.push_back(pose.apply(view(geometry::Vec2<Q>{v.x, v.y})));
+/// Every body's outline at its pose.
+template <class T>
+std::vector<std::vector<P>> bodies_at(const motion::MotionScene& scene, const motion::Poses<T>& poses) {
+  std::vector<std::vector<P>> out;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const geometry::Pose<double> pose = view(poses[b]);
+    out.emplace_back();
+    for (const geometry::Point2& v : std::get<geometry::PolygonShape>(scene.bodies[b].workpiece.shape).vertices)
+      out.back().push_back(pose.apply(view(geometry::Vec2<Q>{v.x, v.y})));
+  }
   return out;
 }
 
@@ -56,7 +63,7 @@ std::vector<Frame> frames_of(const motion::MotionScene& scene, const motion::Tra
   std::vector<P> tips;
   for (const motion::Finger& f : scene.fingers) tips.push_back(view(geometry::Vec2<Q>{f.tip.x, f.tip.y}));
   for (const motion::StepRecord<T>& s : run.steps) {
-    Frame f{body_at(scene, view(s.pose)), tips, {}, {}, ""};
+    Frame f{bodies_at(scene, s.poses), {}, tips, {}, ""};
     std::string modes;
     for (const motion::ContactRecord<T>& c : s.contacts) {
       f.contacts.push_back({view(c.point), view(c.force), c.mode});
@@ -71,7 +78,7 @@ std::vector<Frame> frames_of(const motion::MotionScene& scene, const motion::Tra
     tips.clear();
     for (const auto& t : s.tips_after) tips.push_back(view(t));
   }
-  Frame last{body_at(scene, view(run.final_pose)), tips, {}, {}, ""};
+  Frame last{bodies_at(scene, run.final_poses), {}, tips, {}, ""};
   last.caption = "end, t = " + text_of(run.final_time) + ": " + motion::run_status_name(run.status);
   out.push_back(last);
   return out;
@@ -111,10 +118,10 @@ void draw_frame(std::ostringstream& s, const Canvas& c, const Frame& f, std::siz
   s << "<animate attributeName=\"visibility\" calcMode=\"discrete\" dur=\"" << seconds * double(n)
     << "s\" repeatCount=\"indefinite\" values=\"hidden;visible;hidden\" keyTimes=\"0;" << double(k) / double(n) << ";"
     << double(k + 1) / double(n) << "\"/>\n";
-  if (!f.float_body.empty())
-    s << "<polygon points=\"" << points(c, f.float_body)
-      << "\" fill=\"none\" stroke=\"crimson\" stroke-dasharray=\"4 3\"/>\n";
-  s << "<polygon points=\"" << points(c, f.body) << "\" fill=\"lightsteelblue\" stroke=\"navy\"/>\n";
+  for (const std::vector<P>& body : f.float_bodies)
+    s << "<polygon points=\"" << points(c, body) << "\" fill=\"none\" stroke=\"crimson\" stroke-dasharray=\"4 3\"/>\n";
+  for (const std::vector<P>& body : f.bodies)
+    s << "<polygon points=\"" << points(c, body) << "\" fill=\"lightsteelblue\" stroke=\"navy\"/>\n";
   for (const P& t : f.tips)
     s << "<circle cx=\"" << c.at(t).x << "\" cy=\"" << c.at(t).y << "\" r=\"7\" fill=\"none\" stroke=\"red\" "
       << "stroke-width=\"2\"/>\n";
@@ -136,17 +143,19 @@ std::string trajectory_svg(const SimulateAnswer& a) {
   std::vector<Frame> all = a.exact_run ? frames_of(a.scene, *a.exact_run) : frames_of(a.scene, *a.float_run);
   if (a.compared) {
     const std::vector<Frame> fl = frames_of(a.scene, *a.float_run);
-    for (std::size_t k = 0; k < all.size() && k < fl.size(); ++k) all[k].float_body = fl[k].body;
+    for (std::size_t k = 0; k < all.size() && k < fl.size(); ++k) all[k].float_bodies = fl[k].bodies;
   }
   // At most kMaxFrames frames: every k-th, and the last.
   const std::size_t stride = (all.size() + kMaxFrames - 1) / kMaxFrames;
   std::vector<Frame> frames;
   for (std::size_t k = 0; k < all.size(); k += stride) frames.push_back(all[k]);
   if ((all.size() - 1) % stride != 0) frames.push_back(all.back());
-  // The view: every body vertex and tip of every frame, with a margin of half the body's size.
+  // The view: every body vertex and tip of every frame, with a margin of half the bodies' extent.
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300, force = 0;
   for (const Frame& f : frames) {
-    for (const std::vector<P>* ps : {&f.body, &f.tips})
+    std::vector<const std::vector<P>*> all_points{&f.tips};
+    for (const std::vector<P>& body : f.bodies) all_points.push_back(&body);
+    for (const std::vector<P>* ps : all_points)
       for (const P& p : *ps)
         x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
     for (const FrameContact& x : f.contacts) force = std::max(force, std::hypot(x.force.x, x.force.y));
@@ -178,8 +187,9 @@ std::string trajectory_svg(const SimulateAnswer& a) {
   const std::size_t every = std::max<std::size_t>(1, frames.size() / 20);
   for (std::size_t k = 0; k < frames.size(); ++k)
     if (k % every == 0 || k + 1 == frames.size())
-      s << "<polygon points=\"" << points(c, frames[k].body)
-        << "\" fill=\"none\" stroke=\"steelblue\" stroke-opacity=\"0.3\"/>\n";
+      for (const std::vector<P>& body : frames[k].bodies)
+        s << "<polygon points=\"" << points(c, body)
+          << "\" fill=\"none\" stroke=\"steelblue\" stroke-opacity=\"0.3\"/>\n";
   for (std::size_t k = 0; k < frames.size(); ++k)
     draw_frame(s, c, frames[k], k, frames.size(), frame_seconds, force_scale, height);
   s << "<text x=\"" << kMargin << "\" y=\"" << height - 28 << "\" font-size=\"13\">"

@@ -30,8 +30,19 @@ class Step(Result):
 
     @property
     def q_dot(self) -> Vector:
-        """The body's velocity (v_x, v_y, omega) at the world origin, exactly."""
+        """The body's velocity (v_x, v_y, omega) at the world origin, exactly (a scene of one body; q_dots for
+        several)."""
+        if "q_dot" not in self._data:
+            raise ValueError("a step of several bodies has one q_dot per body: use q_dots")
         return exact(self._data["q_dot"])
+
+    @property
+    def q_dots(self) -> dict[str, Vector]:
+        """Each body's velocity (v_x, v_y, omega) at the world origin by the body's name, exactly (one body: its name
+        is "body")."""
+        if "bodies" in self._data:
+            return {b["name"]: exact(b["q_dot"]) for b in self._data["bodies"]}
+        return {"body": exact(self._data["q_dot"])}
 
     @property
     def modes(self) -> str:

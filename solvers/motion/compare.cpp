@@ -6,8 +6,12 @@
 namespace contactcert::solvers::motion {
 namespace {
 
-/// The float pose's own numbers as rationals (each double is a rational), to check them exactly.
-Pose<Q> as_rational(const Pose<double>& p) { return {Q(p.c), Q(p.s), {Q(p.t.x), Q(p.t.y)}}; }
+/// The float poses' own numbers as rationals (each double is a rational), to check them exactly.
+Poses<Q> as_rational(const Poses<double>& poses) {
+  Poses<Q> out;
+  for (const Pose<double>& p : poses) out.push_back({Q(p.c), Q(p.s), {Q(p.t.x), Q(p.t.y)}});
+  return out;
+}
 
 std::map<std::string, char> modes(const std::vector<ContactRecord<Q>>& c) {
   std::map<std::string, char> m;
@@ -35,13 +39,15 @@ std::string contact_difference(const StepRecord<Q>& e, const StepRecord<double>&
 
 }  // namespace
 
-double pose_distance(const MotionScene& scene, const Pose<Q>& a, const Pose<double>& b) {
-  const Pose<double> ad = geometry::to_double(a);
+double pose_distance(const MotionScene& scene, const Poses<Q>& a, const Poses<double>& b) {
   double d = 0;
-  for (const Point2& p : std::get<geometry::PolygonShape>(scene.workpiece.shape).vertices) {
-    const Vec2<double> q{p.x.get_d(), p.y.get_d()};
-    const Vec2<double> delta = ad.apply(q) - b.apply(q);
-    d = std::max(d, std::hypot(delta.x, delta.y));
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+    const Pose<double> ad = geometry::to_double(a[k]);
+    for (const Point2& p : std::get<geometry::PolygonShape>(scene.bodies[k].workpiece.shape).vertices) {
+      const Vec2<double> q{p.x.get_d(), p.y.get_d()};
+      const Vec2<double> delta = ad.apply(q) - b[k].apply(q);
+      d = std::max(d, std::hypot(delta.x, delta.y));
+    }
   }
   return d;
 }
@@ -50,8 +56,8 @@ std::vector<Divergence> compare_runs(const MotionScene& scene, const Trajectory<
   const SceneGeometry<Q> g = scene_geometry<Q>(scene);
   const std::size_t n = std::min(ex.steps.size(), fl.steps.size());
   std::vector<Divergence> out;
-  const auto note = [&](const std::string& kind, std::size_t k, const std::string& what, const Pose<Q>& pe,
-                        const Pose<double>& pf, double te, double tf) {
+  const auto note = [&](const std::string& kind, std::size_t k, const std::string& what, const Poses<Q>& pe,
+                        const Poses<double>& pf, double te, double tf) {
     for (const Divergence& d : out)
       if (d.kind == kind) return;
     out.push_back({static_cast<long>(k), kind, what, pose_distance(scene, pe, pf), te, tf});
@@ -63,19 +69,19 @@ std::vector<Divergence> compare_runs(const MotionScene& scene, const Trajectory<
     if (e.verdict != f.verdict)
       note("verdict", k,
            std::string(ucp::status_name(e.verdict)) + " (exact) vs " + ucp::status_name(f.verdict) + " (float)",
-           e.pose_after, f.pose_after, te, f.time);
+           e.poses_after, f.poses_after, te, f.time);
     if (const std::string c = contact_difference(e, f); !c.empty())
-      note(c.rfind("mode", 0) == 0 ? "mode" : "contacts", k, c, e.pose_after, f.pose_after, te, f.time);
+      note(c.rfind("mode", 0) == 0 ? "mode" : "contacts", k, c, e.poses_after, f.poses_after, te, f.time);
     std::vector<Vec2<Q>> tips;
     for (const Vec2<double>& t : f.tips_after) tips.push_back({Q(t.x), Q(t.y)});
-    if (const std::string o = overlap(g, as_rational(f.pose_after), tips); !o.empty())
-      note("penetration", k, o, e.pose_after, f.pose_after, te, f.time);
+    if (const std::string o = overlap(g, as_rational(f.poses_after), tips); !o.empty())
+      note("penetration", k, o, e.poses_after, f.poses_after, te, f.time);
   }
   if (ex.steps.size() != fl.steps.size() || ex.status != fl.status)
     note("run_end", n,
          std::string(run_status_name(ex.status)) + " after " + std::to_string(ex.steps.size()) + " steps (exact) vs " +
              run_status_name(fl.status) + " after " + std::to_string(fl.steps.size()) + " (float)",
-         ex.final_pose, fl.final_pose, ex.final_time.get_d(), fl.final_time);
+         ex.final_poses, fl.final_poses, ex.final_time.get_d(), fl.final_time);
   return out;
 }
 

@@ -17,7 +17,7 @@ struct Divergence {
   long step = -1;
   std::string kind;
   std::string what;          ///< e.g. "phantom contact: body vertex 2 on ceiling edge 3"
-  double pose_distance = 0;  ///< max over body vertices of |p_exact - p_float| after that step (or at the end)
+  double pose_distance = 0;  ///< max over bodies' vertices of |p_exact - p_float| after that step (or at the end)
   double time_exact = 0, time_float = 0;  ///< the step's start times
 };
 
@@ -26,7 +26,7 @@ struct Divergence {
 std::vector<Divergence> compare_runs(const MotionScene& scene, const Trajectory<Q>& exact_run,
                                      const Trajectory<double>& float_run);
 
-/// max over the body's vertices of the distance between their positions under the two poses.
-double pose_distance(const MotionScene& scene, const Pose<Q>& a, const Pose<double>& b);
+/// max over the bodies' vertices of the distance between their positions under the two poses of their body.
+double pose_distance(const MotionScene& scene, const Poses<Q>& a, const Poses<double>& b);
 
 }  // namespace contactcert::solvers::motion

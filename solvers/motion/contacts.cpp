@@ -1,7 +1,5 @@
 #include "solvers/motion/contacts.h"
 
-#include <mpfr.h>
-
 #include <algorithm>
 
 #include "solvers/motion/first_root.h"
@@ -17,9 +15,9 @@ Vec2<T> from_point(const Point2& p) {
 }
 
 template <class T>
-std::vector<Vec2<T>> world_body(const SceneGeometry<T>& g, const Pose<T>& pose) {
+std::vector<Vec2<T>> world_body(const std::vector<Vec2<T>>& body, const Pose<T>& pose) {
   std::vector<Vec2<T>> out;
-  for (const Vec2<T>& p : g.body) out.push_back(pose.apply(p));
+  for (const Vec2<T>& p : body) out.push_back(pose.apply(p));
   return out;
 }
 
@@ -51,8 +49,9 @@ bool separates(const std::vector<Vec2<T>>& x, std::size_t i, const std::vector<V
   return true;
 }
 
-/// True if the interiors of the bounding boxes of x and y are disjoint (comparisons only): then so are the shapes'.
-bool boxes_apart(const std::vector<Vec2<Q>>& x, const std::vector<Vec2<Q>>& y) {
+/// True if the interiors of the bounding boxes of x and y are disjoint (comparisons only): then so are the shapes';
+/// with `touching` false, only if the closed boxes are (then the shapes cannot touch either).
+bool boxes_apart(const std::vector<Vec2<Q>>& x, const std::vector<Vec2<Q>>& y, bool touching = true) {
   const auto range = [](const std::vector<Vec2<Q>>& v, Q Vec2<Q>::*c) {
     const auto [lo, hi] =
         std::minmax_element(v.begin(), v.end(), [c](const auto& a, const auto& b) { return a.*c < b.*c; });
@@ -61,7 +60,7 @@ bool boxes_apart(const std::vector<Vec2<Q>>& x, const std::vector<Vec2<Q>>& y) {
   for (Q Vec2<Q>::*c : {&Vec2<Q>::x, &Vec2<Q>::y}) {
     const auto [xlo, xhi] = range(x, c);
     const auto [ylo, yhi] = range(y, c);
-    if (xhi <= ylo || yhi <= xlo) return true;
+    if (xhi < ylo || yhi < xlo || (touching && (xhi == ylo || yhi == xlo))) return true;
   }
   return false;
 }
@@ -82,22 +81,18 @@ std::string vertex_name(const std::string& shape, std::size_t i) { return shape 
 
 }  // namespace
 
-double nearest_double(const Q& q) {
-  mpfr_t x;
-  mpfr_init2(x, 53);
-  mpfr_set_q(x, q.get_mpq_t(), MPFR_RNDN);
-  const double d = mpfr_get_d(x, MPFR_RNDN);
-  mpfr_clear(x);
-  return d;
-}
-
 template <class T>
 SceneGeometry<T> scene_geometry(const MotionScene& scene) {
   SceneGeometry<T> g;
-  for (const Point2& p : std::get<geometry::PolygonShape>(scene.workpiece.shape).vertices)
-    g.body.push_back(from_point<T>(p));
-  g.com = from_point<T>(scene.workpiece.com);
-  g.gravity = from_point<T>(scene.gravity);
+  for (const MovingBody& b : scene.bodies) {
+    std::vector<Vec2<T>> v;
+    for (const Point2& p : std::get<geometry::PolygonShape>(b.workpiece.shape).vertices) v.push_back(from_point<T>(p));
+    g.bodies.push_back(v);
+    g.coms.push_back(from_point<T>(b.workpiece.com));
+    g.weights.push_back(from_point<T>(b.weight));
+    g.body_mu.push_back(from_q<T>(b.mu));
+    g.body_names.push_back(b.name);
+  }
   for (std::size_t k = 0; k < scene.obstacles.size(); ++k) {
     const Obstacle& o = scene.obstacles[k];
     std::vector<Vec2<T>> v;
@@ -113,71 +108,120 @@ SceneGeometry<T> scene_geometry(const MotionScene& scene) {
   return g;
 }
 
+namespace {
+
+/// The contacts of body `which` (vertices `body`, world) with obstacle o, appended to out (docs/motion.md, step 1).
 template <class T>
-ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<Vec2<T>>& tips) {
-  ContactSet<T> out;
-  const std::vector<Vec2<T>> body = world_body(g, pose);
+void obstacle_contacts(const SceneGeometry<T>& g, int which, const std::vector<Vec2<T>>& body, std::size_t o,
+                       ContactSet<T>& out) {
+  const std::string& name = g.body_names[static_cast<std::size_t>(which)];
+  const std::vector<Vec2<T>>& ob = g.obstacles[o];
   const std::size_t nb = body.size();
-  for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
-    const std::vector<Vec2<T>>& ob = g.obstacles[o];
-    for (std::size_t i = 0; i < nb; ++i)
-      for (std::size_t k = 0; k < ob.size(); ++k) {
-        const int where = on_segment(body[i], ob[k], ob[(k + 1) % ob.size()]);
-        if (where == 0 && out.unsupported.empty())
-          out.unsupported =
-              "body vertex " + std::to_string(i) + " on " + g.obstacle_names[o] + " vertex (normal not determined)";
-        if (where != 1) continue;
-        const Vec2<T> e = ob[(k + 1) % ob.size()] - ob[k];
-        // The obstacle edge's outward normal (e turned by -90 degrees) points into the body.
-        out.contacts.push_back({ContactKind::kBodyVertex, int(i), int(o), int(k), body[i], Vec2<T>{e.y, -e.x},
-                                g.obstacle_mu[o], vertex_name("body", i) + " on " + edge_name(g.obstacle_names[o], k)});
-      }
-    for (std::size_t k = 0; k < ob.size(); ++k)
-      for (std::size_t i = 0; i < nb; ++i) {
-        if (on_segment(ob[k], body[i], body[(i + 1) % nb]) != 1) continue;
-        const Vec2<T> e = body[(i + 1) % nb] - body[i];
-        out.contacts.push_back({ContactKind::kObstacleVertex, int(i), int(o), int(k), ob[k], perp2(e), g.obstacle_mu[o],
-                                vertex_name(g.obstacle_names[o], k) + " on " + edge_name("body", i)});
-      }
+  for (std::size_t i = 0; i < nb; ++i)
+    for (std::size_t k = 0; k < ob.size(); ++k) {
+      const int where = on_segment(body[i], ob[k], ob[(k + 1) % ob.size()]);
+      if (where == 0 && out.unsupported.empty())
+        out.unsupported =
+            name + " vertex " + std::to_string(i) + " on " + g.obstacle_names[o] + " vertex (normal not determined)";
+      if (where != 1) continue;
+      const Vec2<T> e = ob[(k + 1) % ob.size()] - ob[k];
+      // The obstacle edge's outward normal (e turned by -90 degrees) points into the body.
+      out.contacts.push_back({ContactKind::kBodyVertex, int(i), int(o), int(k), which, body[i], Vec2<T>{e.y, -e.x},
+                              g.obstacle_mu[o], vertex_name(name, i) + " on " + edge_name(g.obstacle_names[o], k)});
+    }
+  for (std::size_t k = 0; k < ob.size(); ++k)
+    for (std::size_t i = 0; i < nb; ++i) {
+      if (on_segment(ob[k], body[i], body[(i + 1) % nb]) != 1) continue;
+      const Vec2<T> e = body[(i + 1) % nb] - body[i];
+      out.contacts.push_back({ContactKind::kObstacleVertex, int(i), int(o), int(k), which, ob[k], perp2(e),
+                              g.obstacle_mu[o], vertex_name(g.obstacle_names[o], k) + " on " + edge_name(name, i)});
+    }
+}
+
+/// The vertices of body a on the edges of body b (the force acts on a; mu is b's edge friction), appended to out.
+template <class T>
+void body_contacts(const SceneGeometry<T>& g, int a, const std::vector<Vec2<T>>& A, int b,
+                   const std::vector<Vec2<T>>& B, ContactSet<T>& out) {
+  const std::string &na = g.body_names[static_cast<std::size_t>(a)], &nb = g.body_names[static_cast<std::size_t>(b)];
+  for (std::size_t i = 0; i < A.size(); ++i)
+    for (std::size_t k = 0; k < B.size(); ++k) {
+      const int where = on_segment(A[i], B[k], B[(k + 1) % B.size()]);
+      if (where == 0 && out.unsupported.empty())
+        out.unsupported = na + " vertex " + std::to_string(i) + " on " + nb + " vertex (normal not determined)";
+      if (where != 1) continue;
+      const Vec2<T> e = B[(k + 1) % B.size()] - B[k];
+      out.contacts.push_back({ContactKind::kBodyBody, int(i), b, int(k), a, A[i], Vec2<T>{e.y, -e.x},
+                              g.body_mu[static_cast<std::size_t>(b)], vertex_name(na, i) + " on " + edge_name(nb, k)});
+    }
+}
+
+}  // namespace
+
+template <class T>
+ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips) {
+  ContactSet<T> out;
+  std::vector<std::vector<Vec2<T>>> world;
+  for (std::size_t b = 0; b < g.bodies.size(); ++b) world.push_back(world_body(g.bodies[b], poses[b]));
+  for (std::size_t b = 0; b < world.size(); ++b) {
+    for (std::size_t o = 0; o < g.obstacles.size(); ++o) obstacle_contacts(g, int(b), world[b], o, out);
+    for (std::size_t b2 = b + 1; b2 < world.size(); ++b2) {
+      if constexpr (std::is_same_v<T, Q>)
+        if (boxes_apart(world[b], world[b2], false)) continue;
+      body_contacts(g, int(b), world[b], int(b2), world[b2], out);
+      body_contacts(g, int(b2), world[b2], int(b), world[b], out);
+    }
   }
   for (std::size_t f = 0; f < tips.size(); ++f)
-    for (std::size_t i = 0; i < nb; ++i) {
-      const int where = on_segment(tips[f], body[i], body[(i + 1) % nb]);
-      if (where == 0 && out.unsupported.empty())
-        out.unsupported = g.finger_names[f] + " on a body vertex (normal not determined)";
-      if (where != 1) continue;
-      const Vec2<T> e = body[(i + 1) % nb] - body[i];
-      out.contacts.push_back({ContactKind::kFinger, int(i), int(f), -1, tips[f], perp2(e), g.finger_mu[f],
-                              g.finger_names[f] + " on " + edge_name("body", i)});
+    for (std::size_t b = 0; b < world.size(); ++b) {
+      const std::vector<Vec2<T>>& body = world[b];
+      const std::size_t nb = body.size();
+      for (std::size_t i = 0; i < nb; ++i) {
+        const int where = on_segment(tips[f], body[i], body[(i + 1) % nb]);
+        if (where == 0 && out.unsupported.empty())
+          out.unsupported = g.finger_names[f] + " on a " + g.body_names[b] + " vertex (normal not determined)";
+        if (where != 1) continue;
+        const Vec2<T> e = body[(i + 1) % nb] - body[i];
+        out.contacts.push_back({ContactKind::kFinger, int(i), int(f), -1, int(b), tips[f], perp2(e), g.finger_mu[f],
+                                g.finger_names[f] + " on " + edge_name(g.body_names[b], i)});
+      }
     }
   return out;
 }
 
 template <class T>
-std::string overlap(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<Vec2<T>>& tips) {
-  const std::vector<Vec2<T>> body = world_body(g, pose);
-  for (std::size_t o = 0; o < g.obstacles.size(); ++o)
-    if (convex_overlap(body, g.obstacles[o])) return "the body overlaps " + g.obstacle_names[o];
-  for (std::size_t f = 0; f < tips.size(); ++f) {
-    bool inside = true;
-    for (std::size_t i = 0; i < body.size() && inside; ++i)
-      inside = sign(cross2(body[(i + 1) % body.size()] - body[i], tips[f] - body[i])) > 0;
-    if (inside) return g.finger_names[f] + " is inside the body";
+std::string overlap(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips) {
+  std::vector<std::vector<Vec2<T>>> world;
+  for (std::size_t b = 0; b < g.bodies.size(); ++b) world.push_back(world_body(g.bodies[b], poses[b]));
+  for (std::size_t b = 0; b < world.size(); ++b) {
+    const std::vector<Vec2<T>>& body = world[b];
+    for (std::size_t o = 0; o < g.obstacles.size(); ++o)
+      if (convex_overlap(body, g.obstacles[o])) return "the " + g.body_names[b] + " overlaps " + g.obstacle_names[o];
+    for (std::size_t b2 = b + 1; b2 < world.size(); ++b2)
+      if (convex_overlap(body, world[b2])) return "the " + g.body_names[b] + " overlaps the " + g.body_names[b2];
+    for (std::size_t f = 0; f < tips.size(); ++f) {
+      bool inside = true;
+      for (std::size_t i = 0; i < body.size() && inside; ++i)
+        inside = sign(cross2(body[(i + 1) % body.size()] - body[i], tips[f] - body[i])) > 0;
+      if (inside) return g.finger_names[f] + " is inside the " + g.body_names[b];
+    }
   }
   return "";
 }
 
+namespace {
+
+/// The first closing contact of body `which` (world vertices `body`, twist (v, omega)) with the obstacles and the
+/// free fingers before `limit`: updates best and limit.
 template <class T>
-std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const Pose<T>& pose,
-                                               const std::vector<Vec2<T>>& tips, const Vec2<T>& v, const T& omega,
-                                               const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H) {
-  const std::vector<Vec2<T>> body = world_body(g, pose);
+void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::vector<Vec2<T>>& body,
+                     const std::vector<Vec2<T>>& tips, const Vec2<T>& v, const T& omega,
+                     const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H,
+                     std::optional<ClosingContact<T>>& best, T& limit) {
+  const std::string& name = g.body_names[which];
   const std::size_t nb = body.size();
   const bool turning = sign(omega) != 0;
   const T k = omega / T(2);  // u = k tau
   const Vec2<T> c = turning ? Vec2<T>{-v.y / omega, v.x / omega} : Vec2<T>{T(0), T(0)};
-  std::optional<ClosingContact<T>> best;
-  T limit = H;
   // Each point p with w = p - c, each segment a -> a + e with K = (c - a) x e: computed once per step, shared by
   // every pair that uses them. On the exact paths also boxes, [lo, hi]: the segment's bounding box, and the box
   // that a point not moving on its own stays in relative to the body (a body vertex in the world, an obstacle
@@ -268,28 +312,140 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
     for (std::size_t i = 0; i < nb; ++i)
       for (std::size_t j = 0; j < ob.size(); ++j)
         consider(body_points[i], zero, true, ob_edges[j],
-                 vertex_name("body", i) + " on " + edge_name(g.obstacle_names[o], j));
+                 vertex_name(name, i) + " on " + edge_name(g.obstacle_names[o], j));
     for (std::size_t j = 0; j < ob.size(); ++j)
       for (std::size_t i = 0; i < nb; ++i)
         consider(ob_points[j], zero, false, body_edges[i],
-                 vertex_name(g.obstacle_names[o], j) + " on " + edge_name("body", i));
+                 vertex_name(g.obstacle_names[o], j) + " on " + edge_name(name, i));
   }
   for (std::size_t f = 0; f < tips.size(); ++f) {
     if (!free_velocity[f]) continue;
     const Point tip = point(tips[f], true);
     for (std::size_t i = 0; i < nb; ++i)
-      consider(tip, *free_velocity[f], false, body_edges[i], g.finger_names[f] + " on " + edge_name("body", i));
+      consider(tip, *free_velocity[f], false, body_edges[i], g.finger_names[f] + " on " + edge_name(name, i));
   }
+}
+
+/// A body point's path over a step as N(tau) / D(tau): N with vector coefficients (low to high), D = 1 + k^2 tau^2
+/// (turning, k = omega / 2) or 1. p -> c + R(u)(p - c) with R(u)'s numerator (1 - u^2) I + 2u J, u = k tau
+/// (rigid_motion.h): N = p + 2k J(p - c) tau + k^2 (c - (p - c)) tau^2; a translation: N = p + v tau. An edge
+/// vector e turns only: N = e + 2k J e tau - k^2 e tau^2.
+template <class T>
+struct Path {
+  std::vector<Vec2<T>> N;
+  std::vector<T> D;
+};
+
+template <class T>
+Path<T> point_path(const Vec2<T>& p, const Twist<T>& tw, bool vector) {
+  if (sign(tw.omega) == 0) return {vector ? std::vector<Vec2<T>>{p} : std::vector<Vec2<T>>{p, tw.v}, {T(1)}};
+  const T k = tw.omega / T(2);
+  const Vec2<T> c{-tw.v.y / tw.omega, tw.v.x / tw.omega};
+  const Vec2<T> w = vector ? p : Vec2<T>(p - c);
+  const Vec2<T> top = vector ? T(-1) * p : Vec2<T>(c - w);
+  return {{p, T(T(2) * k) * perp2(w), T(k * k) * top}, {T(1), T(0), T(k * k)}};
+}
+
+/// a(tau) b(tau), a scalar and b a vector polynomial.
+template <class T>
+std::vector<Vec2<T>> times(const std::vector<T>& a, const std::vector<Vec2<T>>& b) {
+  std::vector<Vec2<T>> out(a.size() + b.size() - 1, Vec2<T>{T(0), T(0)});
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) out[i + j] = out[i + j] + a[i] * b[j];
+  return out;
+}
+
+/// The gap of vertex p of a body with twist ta against the edge a -> a + e of a body with twist tb, times the
+/// positive D_p D_b^2: cross(N_p D_b - N_a D_p, N_e) (degree <= 6; at 0, cross(p - a, e) > 0 outside the edge).
+template <class T>
+std::vector<T> pair_gap(const Vec2<T>& p, const Twist<T>& ta, const Vec2<T>& a, const Vec2<T>& e, const Twist<T>& tb) {
+  const Path<T> P = point_path(p, ta, false), A = point_path(a, tb, false), E = point_path(e, tb, true);
+  std::vector<Vec2<T>> rel = times(A.D, P.N);
+  const std::vector<Vec2<T>> sub = times(P.D, A.N);
+  if (rel.size() < sub.size()) rel.resize(sub.size(), Vec2<T>{T(0), T(0)});
+  for (std::size_t i = 0; i < sub.size(); ++i) rel[i] = rel[i] - sub[i];
+  std::vector<T> out(rel.size() + E.N.size() - 1, T(0));
+  for (std::size_t i = 0; i < rel.size(); ++i)
+    for (std::size_t j = 0; j < E.N.size(); ++j) out[i + j] += cross2(rel[i], E.N[j]);
+  return out;
+}
+
+/// The world box of a body's vertices over the step (exact paths): each coordinate moves by at most |v|_inf H (a
+/// translation) or |p - c|_2 |theta| <= 2 |p - c|_inf |omega| H (turning), as in closing_of_body.
+std::pair<Vec2<Q>, Vec2<Q>> swept_box(const std::vector<Vec2<Q>>& body, const Twist<Q>& tw, const Q& H) {
+  Vec2<Q> lo = body[0], hi = body[0];
+  Q reach(0);
+  const bool turning = sgn(tw.omega) != 0;
+  const Vec2<Q> c = turning ? Vec2<Q>{-tw.v.y / tw.omega, tw.v.x / tw.omega} : Vec2<Q>{Q(0), Q(0)};
+  for (const Vec2<Q>& p : body) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    const Q r = turning ? Q(2 * abs(tw.omega) * H * std::max(abs(p.x - c.x), abs(p.y - c.y)))
+                        : Q(std::max(abs(tw.v.x), abs(tw.v.y)) * H);
+    reach = std::max(reach, r);
+  }
+  return {{lo.x - reach, lo.y - reach}, {hi.x + reach, hi.y + reach}};
+}
+
+/// The first closing contact of a vertex of body a on an edge of body b before `limit`: updates best and limit.
+template <class T>
+void closing_of_pair(const SceneGeometry<T>& g, std::size_t a, const std::vector<Vec2<T>>& A, std::size_t b,
+                     const std::vector<Vec2<T>>& B, const std::vector<Twist<T>>& twists,
+                     std::optional<ClosingContact<T>>& best, T& limit) {
+  const Twist<T>&ta = twists[a], &tb = twists[b];
+  for (std::size_t i = 0; i < A.size(); ++i)
+    for (std::size_t k = 0; k < B.size(); ++k) {
+      const Vec2<T>&p = A[i], &q = B[k];
+      const Vec2<T> e = B[(k + 1) % B.size()] - q;
+      const std::vector<T> poly = pair_gap(p, ta, q, e, tb);
+      if (sign(poly[0]) <= 0) continue;  // touching (or beyond the edge's line) at the start
+      const auto accept = [&](const T& tau) {
+        const Pose<T> ma = geometry::twist_step(ta.v, ta.omega, tau), mb = geometry::twist_step(tb.v, tb.omega, tau);
+        const Vec2<T> x = ma.apply(p), a2 = mb.apply(q), e2 = mb.rotate(e);
+        const T s = dot2(x - a2, e2);
+        return sign(s) >= 0 && sign(T(dot2(e2, e2) - s)) >= 0;
+      };
+      const auto root = first_gap_root<T>(poly, limit, accept);
+      if (!root || (best && !(root->tau < best->tau))) continue;
+      best = ClosingContact<T>{root->tau, root->exact,
+                               vertex_name(g.body_names[a], i) + " on " + edge_name(g.body_names[b], k)};
+      limit = root->tau;
+    }
+}
+
+}  // namespace
+
+template <class T>
+std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const Poses<T>& poses,
+                                               const std::vector<Vec2<T>>& tips, const std::vector<Twist<T>>& twists,
+                                               const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H) {
+  std::optional<ClosingContact<T>> best;
+  T limit = H;
+  std::vector<std::vector<Vec2<T>>> world;
+  for (std::size_t b = 0; b < g.bodies.size(); ++b) {
+    world.push_back(world_body(g.bodies[b], poses[b]));
+    closing_of_body(g, b, world[b], tips, twists[b].v, twists[b].omega, free_velocity, H, best, limit);
+  }
+  for (std::size_t a = 0; a < world.size(); ++a)
+    for (std::size_t b = a + 1; b < world.size(); ++b) {
+      if constexpr (std::is_same_v<T, Q>) {
+        const auto [alo, ahi] = swept_box(world[a], twists[a], H);
+        const auto [blo, bhi] = swept_box(world[b], twists[b], H);
+        if (ahi.x < blo.x || bhi.x < alo.x || ahi.y < blo.y || bhi.y < alo.y) continue;
+      }
+      closing_of_pair(g, a, world[a], b, world[b], twists, best, limit);
+      closing_of_pair(g, b, world[b], a, world[a], twists, best, limit);
+    }
   return best;
 }
 
-#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                         \
-  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                                  \
-  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&);    \
-  template std::string overlap<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Vec2<T>>&);            \
-  template std::optional<ClosingContact<T>> first_closing<T>(const SceneGeometry<T>&, const Pose<T>&,               \
-                                                             const std::vector<Vec2<T>>&, const Vec2<T>&, const T&, \
-                                                             const std::vector<std::optional<Vec2<T>>>&, const T&);
+#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                       \
+  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                                \
+  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&); \
+  template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);         \
+  template std::optional<ClosingContact<T>> first_closing<T>(                                                     \
+      const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&,        \
+      const std::vector<std::optional<Vec2<T>>>&, const T&);
 CONTACTCERT_MOTION_CONTACTS_INST(Q)
 CONTACTCERT_MOTION_CONTACTS_INST(double)
 #undef CONTACTCERT_MOTION_CONTACTS_INST

@@ -64,17 +64,48 @@ ScheduleAt schedule_at(const Finger& f, const Q& t) {
   return {&f.schedule.back(), std::nullopt};
 }
 
+/// A convex polygonal body: its shape and com (default: the centroid) as a workpiece.
+geometry::Workpiece read_convex_body(const JsonInput& node, const JsonInput& shape_node) {
+  geometry::Workpiece w;
+  w.shape = geometry::read_shape(shape_node);
+  const auto* poly = std::get_if<geometry::PolygonShape>(&w.shape);
+  if (!poly) shape_node.fail("a polygon (motion is for polygonal bodies)");
+  expect_convex(poly->vertices, shape_node.at("vertices"));
+  const auto com = node.find("com");
+  w.com = com ? read_point(*com) : geometry::centroid(w.shape);
+  w.inertia_per_mass = geometry::inertia_per_mass(w.shape, w.com);
+  return w;
+}
+
 MotionScene read_motion_scene(const JsonInput& root) {
-  root.expect_keys(
-      {"kind", "name", "description", "source", "note", "workpiece", "gravity", "obstacles", "fingers", "motion"});
+  root.expect_keys({"kind", "name", "description", "source", "note", "workpiece", "bodies", "gravity", "obstacles",
+                    "fingers", "motion"});
   if (root.at("kind").string() != "quasistatic_scene") root.at("kind").fail("\"quasistatic_scene\"");
   MotionScene s;
   s.file = root.file();
-  s.workpiece = geometry::read_workpiece(root.at("workpiece"));
-  const auto* poly = std::get_if<geometry::PolygonShape>(&s.workpiece.shape);
-  if (!poly) root.at("workpiece").at("shape").fail("a polygon (motion is for polygonal workpieces)");
-  expect_convex(poly->vertices, root.at("workpiece").at("shape").at("vertices"));
-  if (const auto g = root.find("gravity")) s.gravity = read_point(*g);
+  const Point2 gravity = root.find("gravity") ? read_point(root.at("gravity")) : Point2{Q(0), Q(0)};
+  if (bool(root.find("workpiece")) == bool(root.find("bodies")))
+    root.fail("exactly one of \"workpiece\" (one body) or \"bodies\" (several)");
+  if (const auto w = root.find("workpiece")) {
+    s.bodies.push_back({"body", geometry::read_workpiece(*w), gravity, Q(0)});
+    const auto* poly = std::get_if<geometry::PolygonShape>(&s.bodies[0].workpiece.shape);
+    if (!poly) w->at("shape").fail("a polygon (motion is for polygonal workpieces)");
+    expect_convex(poly->vertices, w->at("shape").at("vertices"));
+  } else {
+    const std::vector<JsonInput> bodies = root.at("bodies").elements();
+    if (bodies.empty()) root.at("bodies").fail("at least one body");
+    for (std::size_t k = 0; k < bodies.size(); ++k) {
+      const JsonInput& b = bodies[k];
+      b.expect_keys({"name", "shape", "com", "weight", "mu"});
+      MovingBody body{"body " + std::to_string(k), read_convex_body(b, b.at("shape")), gravity, Q(0)};
+      if (const auto n = b.find("name")) body.name = n->string();
+      if (const auto w = b.find("weight")) body.weight = read_point(*w);
+      if (const auto m = b.find("mu")) body.mu = read_mu(*m);
+      for (const MovingBody& other : s.bodies)
+        if (other.name == body.name) b.at("name").fail("a name no other body has");
+      s.bodies.push_back(body);
+    }
+  }
   if (const auto obs = root.find("obstacles")) {
     for (const JsonInput& o : obs->elements()) {
       o.expect_keys({"name", "vertices", "mu"});

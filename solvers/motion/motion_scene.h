@@ -1,7 +1,7 @@
 // A quasistatic scene to simulate over time (docs/formats.md, "Motion"): a `"kind": "quasistatic_scene"` whose
-// contacts are not listed but found from geometry at every step: one movable convex polygonal workpiece, fixed
-// convex polygonal obstacles, point fingers with piecewise-constant velocity or force schedules (world axes),
-// and the step size and count.
+// contacts are not listed but found from geometry at every step: one movable convex polygonal workpiece (or several
+// movable convex polygonal bodies), fixed convex polygonal obstacles, point fingers with piecewise-constant velocity or
+// force schedules (world axes), and the step size and count.
 #pragma once
 
 #include <optional>
@@ -39,11 +39,19 @@ struct Finger {
   std::vector<ScheduleSegment> schedule;
 };
 
-/// The whole scene. The workpiece's vertices and com are its pose at time 0 (the body frame is the world frame
-/// then).
-struct MotionScene {
+/// A movable body: its name ("body" for a scene's one `workpiece`), its shape and com at time 0 (its body frame is
+/// the world frame then), its weight m g (a force at the com), and the friction coefficient of a contact on one of
+/// its edges made by another body's vertex.
+struct MovingBody {
+  std::string name;
   geometry::Workpiece workpiece;  ///< a convex polygon
-  Point2 gravity{Q(0), Q(0)};     ///< the weight m g, a force at the com
+  Point2 weight{Q(0), Q(0)};
+  Q mu;
+};
+
+/// The whole scene: one body (`workpiece`) or several (`bodies`), in the order of their q_dot blocks.
+struct MotionScene {
+  std::vector<MovingBody> bodies;
   std::vector<Obstacle> obstacles;
   std::vector<Finger> fingers;
   Q dt;        ///< step size H > 0

@@ -1,6 +1,7 @@
 #include "solvers/motion/simulate.h"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -15,12 +16,11 @@ namespace {
 using Index = Eigen::Index;
 using exact::sign;
 
-/// The solution's physics in T: per contact v_n, v_t, c_n, c_t; q_dot; every joint velocity.
+/// The solution's physics in T: per contact v_n, v_t, c_n, c_t; per body its q_dot; every joint velocity.
 template <class T>
 struct StepPhysics {
   std::vector<T> vn, vt, cn, ct, theta;
-  Vec2<T> v;
-  T omega;
+  std::vector<Twist<T>> twists;
 };
 
 StepPhysics<Q> physics(const ucp::UcpProblem&, const ucp::UcpReport& r, const Q*) {
@@ -33,8 +33,8 @@ StepPhysics<Q> physics(const ucp::UcpProblem&, const ucp::UcpReport& r, const Q*
     out.ct.push_back(s.c_t(i));
   }
   for (Index j = 0; j < s.theta_dot.size(); ++j) out.theta.push_back(s.theta_dot(j));
-  out.v = {s.q_dot(0), s.q_dot(1)};
-  out.omega = s.q_dot(2);
+  for (Index b = 0; b + 2 < s.q_dot.size(); b += 3)
+    out.twists.push_back({{s.q_dot(b), s.q_dot(b + 1)}, s.q_dot(b + 2)});
   return out;
 }
 
@@ -56,9 +56,8 @@ StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport
   const exact::Vec<double> u = exact::to_double(p.P).colPivHouseholderQr().solve(rhs);
   out.theta.assign(static_cast<std::size_t>(p.ntheta), 0.0);
   for (int j : p.alpha) out.theta[static_cast<std::size_t>(j)] = p.theta_dot(j).get_d();
-  for (std::size_t k = 0; k < p.abar.size(); ++k) out.theta[static_cast<std::size_t>(p.abar[k])] = -u(3 + Index(k));
-  out.v = {u(0), u(1)};
-  out.omega = u(2);
+  for (std::size_t k = 0; k < p.abar.size(); ++k) out.theta[static_cast<std::size_t>(p.abar[k])] = -u(p.nq + Index(k));
+  for (Index b = 0; b + 2 < p.nq; b += 3) out.twists.push_back({{u(b), u(b + 1)}, u(b + 2)});
   return out;
 }
 
@@ -98,11 +97,13 @@ std::vector<std::string> minus(const std::vector<std::string>& a, const std::vec
 /// A finger carried along body edge c.body with relative velocity `slip` (along the edge): the time it reaches the
 /// edge's end and which body vertex that is, if it ever does (linear in the body's frame).
 template <class T>
-std::optional<std::pair<T, int>> slide_to_vertex(const SceneGeometry<T>& g, const Pose<T>& pose, const Contact<T>& c,
+std::optional<std::pair<T, int>> slide_to_vertex(const SceneGeometry<T>& g, const Poses<T>& poses, const Contact<T>& c,
                                                  const Vec2<T>& slip) {
-  const auto nb = static_cast<int>(g.body.size());
-  const Vec2<T> a = pose.apply(g.body[static_cast<std::size_t>(c.body)]);
-  const Vec2<T> e = pose.apply(g.body[static_cast<std::size_t>((c.body + 1) % nb)]) - a;
+  const std::vector<Vec2<T>>& body = g.bodies[static_cast<std::size_t>(c.which)];
+  const Pose<T>& pose = poses[static_cast<std::size_t>(c.which)];
+  const auto nb = static_cast<int>(body.size());
+  const Vec2<T> a = pose.apply(body[static_cast<std::size_t>(c.body)]);
+  const Vec2<T> e = pose.apply(body[static_cast<std::size_t>((c.body + 1) % nb)]) - a;
   const T s0 = dot2(c.point - a, e), rate = dot2(slip, e);
   if (sign(rate) == 0) return std::nullopt;
   if (sign(rate) > 0) return std::pair<T, int>{T(dot2(e, e) - s0) / rate, (c.body + 1) % nb};
@@ -136,6 +137,13 @@ StepSchedule<T> step_schedule(const MotionScene& scene, const SceneGeometry<T>& 
   return out;
 }
 
+/// Whether contact c holds body b against a fixed obstacle.
+template <class T>
+bool fixed_party(const Contact<T>& c, std::size_t b) {
+  return static_cast<std::size_t>(c.which) == b &&
+         (c.kind == ContactKind::kBodyVertex || c.kind == ContactKind::kObstacleVertex);
+}
+
 /// How each finger moves over the step: carried along its edge with a slide (in contact, v_n = 0), or by a
 /// velocity (free, or separating), or not at all (a free force-controlled finger).
 template <class T>
@@ -167,7 +175,8 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
       m.free_velocity[f] = vf;
       continue;
     }
-    const Vec2<T> slip = vf - (ph.v + ph.omega * perp2(c.point));
+    const Twist<T>& tw = ph.twists[static_cast<std::size_t>(c.which)];
+    const Vec2<T> slip = vf - (tw.v + tw.omega * perp2(c.point));
     const Vec2<T> e{c.normal.y, -c.normal.x};
     m.carried_slip[f] = T(bounded(T(sched.H * dot2(slip, e) / dot2(e, e))) / sched.H) * e;
   }
@@ -176,41 +185,42 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
   return m;
 }
 
-/// The applied twist (StepRecord::applied_v, applied_omega): turning, about a rolling obstacle contact's point
-/// (exactly the instantaneous centre: the body's velocity is zero there) or else the instantaneous centre (bounded),
-/// by the rotation that brings the pose's tan(theta / 2) after a full step, (U + u) / (1 - U u) with u = omega H / 2,
-/// to a bounded value (exact paths).
+/// The twist applied to body b (StepRecord::applied): turning, about a rolling obstacle contact's point (exactly the
+/// instantaneous centre: the body's velocity is zero there) or else the instantaneous centre (bounded), by the
+/// rotation that brings the pose's tan(theta / 2) after a full step, (U + u) / (1 - U u) with u = omega H / 2, to a
+/// bounded value (exact paths).
 template <class T>
-void apply_twist(const ContactSet<T>& cs, const StepPhysics<T>& ph, const Pose<T>& pose, const T& H, StepRecord<T>& r) {
-  r.applied_omega = ph.omega;
-  r.applied_v = ph.v;
-  if (sign(ph.omega) == 0) return;
-  Vec2<T> centre{-ph.v.y / ph.omega, ph.v.x / ph.omega};
+Twist<T> applied_twist(const ContactSet<T>& cs, const StepRecord<T>& r, std::size_t b, const Twist<T>& tw,
+                       const Pose<T>& pose, const T& H) {
+  Twist<T> out = tw;
+  if (sign(tw.omega) == 0) return out;
+  Vec2<T> centre{-tw.v.y / tw.omega, tw.v.x / tw.omega};
   bool pivot = false;
   for (std::size_t i = 0; i < cs.contacts.size() && !pivot; ++i)
-    if (cs.contacts[i].kind != ContactKind::kFinger && r.contacts[i].mode == 'r') {
+    if (fixed_party(cs.contacts[i], b) && r.contacts[i].mode == 'r') {
       centre = cs.contacts[i].point;
       pivot = true;
     }
   if (!pivot) centre = {bounded(centre.x), bounded(centre.y)};
   if constexpr (std::is_same_v<T, Q>) {
-    const Q u = ph.omega * H / 2;
+    const Q u = tw.omega * H / 2;
     if (sgn(Q(1 + pose.c)) != 0 && sgn(Q(1 - pose.s / (1 + pose.c) * u)) != 0) {
       const Q U_old = pose.s / (1 + pose.c);
       const Q U_new = bounded(Q((U_old + u) / (1 - U_old * u)));
-      r.applied_omega = 2 * ((U_new - U_old) / (1 + U_old * U_new)) / H;
+      out.omega = 2 * ((U_new - U_old) / (1 + U_old * U_new)) / H;
     }
   }
-  r.applied_v = r.applied_omega * Vec2<T>{centre.y, -centre.x};  // omega J (0 - centre)
+  out.v = out.omega * Vec2<T>{centre.y, -centre.x};  // omega J (0 - centre)
+  return out;
 }
 
 /// Cuts the step (r.h, cut_by, cut_exact) at the first contact that closes, or where a carried finger reaches the
 /// end of its edge, if before H.
 template <class T>
-void cut_step(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<Vec2<T>>& tips, const ContactSet<T>& cs,
-              const FingerMotion<T>& m, const T& H, StepRecord<T>& r) {
+void cut_step(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips,
+              const ContactSet<T>& cs, const FingerMotion<T>& m, const T& H, StepRecord<T>& r) {
   r.h = H;
-  if (const auto closing = first_closing(g, pose, tips, r.applied_v, r.applied_omega, m.free_velocity, H)) {
+  if (const auto closing = first_closing(g, poses, tips, r.applied, m.free_velocity, H)) {
     r.h = closing->tau;
     r.cut_by = closing->name;
     r.cut_exact = closing->exact;
@@ -218,7 +228,7 @@ void cut_step(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<
   for (const Contact<T>& c : cs.contacts) {
     const auto f = static_cast<std::size_t>(c.other);
     if (c.kind != ContactKind::kFinger || !m.carried_slip[f]) continue;
-    if (const auto end = slide_to_vertex(g, pose, c, *m.carried_slip[f]); end && end->first < r.h) {
+    if (const auto end = slide_to_vertex(g, poses, c, *m.carried_slip[f]); end && end->first < r.h) {
       r.h = end->first;
       r.cut_by = g.finger_names[f] + " reaches body vertex " + std::to_string(end->second);
       r.cut_exact = true;
@@ -226,15 +236,16 @@ void cut_step(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<
   }
 }
 
-/// The step's translation corrected so that every maintained obstacle contact stays exactly on its line: a turning
+/// The step of body b, its translation corrected so that every maintained obstacle contact of b stays exactly on
+/// its line: a turning
 /// step moves a sliding contact point along a circle, off its line by O(h^2). Rows m . delta = m . (x - step(x)),
 /// with x the contact point and m the obstacle edge's normal (a body vertex on it) or the body edge's normal turned
 /// by the step (an obstacle vertex on it); a rolling contact gives two rows (both axes: it stays exactly fixed), then
 /// the sliding ones, up to two independent rows in all; delta is their least-norm solution. Rows beyond those may
-/// stay unsatisfied (the overlap test then has the last word).
+/// stay unsatisfied (the overlap test then has the last word), as may a contact with another body.
 template <class T>
-Pose<T> keep_contacts(Pose<T> step, const ContactSet<T>& cs, const StepRecord<T>& r) {
-  if (sign(r.applied_omega) == 0) return step;  // a translation keeps every line
+Pose<T> keep_contacts(Pose<T> step, const ContactSet<T>& cs, const StepRecord<T>& r, std::size_t b) {
+  if (sign(r.applied[b].omega) == 0) return step;  // a translation keeps every line
   std::vector<std::pair<Vec2<T>, T>> rows;
   const auto add = [&](const Vec2<T>& m, const Vec2<T>& x) {
     if (rows.size() == 2 || (rows.size() == 1 && sign(cross2(rows[0].first, m)) == 0)) return;
@@ -244,7 +255,7 @@ Pose<T> keep_contacts(Pose<T> step, const ContactSet<T>& cs, const StepRecord<T>
     for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
       const Contact<T>& c = cs.contacts[i];
       const char mode = r.contacts[i].mode;
-      if (c.kind == ContactKind::kFinger || mode == 's' || (mode == 'r') != bool(rolling)) continue;
+      if (!fixed_party(c, b) || mode == 's' || (mode == 'r') != bool(rolling)) continue;
       const Vec2<T> m = c.kind == ContactKind::kBodyVertex ? c.normal : step.rotate(c.normal);
       add(m, c.point);
       if (rolling) add(perp2(m), c.point);
@@ -297,7 +308,8 @@ Stepper<T>::Stepper(MotionScene scene, const SimulateOptions& opts)
   uopts_.arith =
       exact_path ? (opts.arith == exact::Arith::kFloat ? exact::Arith::kVerified : opts.arith) : exact::Arith::kFloat;
   for (const Finger& f : scene_.fingers) out_.final_tips.push_back({from_q<T>(f.tip.x), from_q<T>(f.tip.y)});
-  if (const std::string o = overlap(g_, out_.final_pose, out_.final_tips); !o.empty())
+  out_.final_poses.assign(g_.bodies.size(), Pose<T>{});
+  if (const std::string o = overlap(g_, out_.final_poses, out_.final_tips); !o.empty())
     finish(RunStatus::kOverlap, o + " at time 0");
 }
 
@@ -325,19 +337,27 @@ bool Stepper<T>::step() {
       return done(false);
     }
   }
-  Pose<T>& pose = out_.final_pose;
+  Poses<T>& poses = out_.final_poses;
   T& t = out_.final_time;
   std::vector<Vec2<T>>& tips = out_.final_tips;
   StepRecord<T> r;
   r.index = k;
   r.time = t;
-  r.pose = r.pose_after = pose;
+  r.poses = r.poses_after = poses;
   r.tips_after = tips;
-  const ContactSet<T> cs = find_contacts(g_, pose, tips);
-  if (!cs.unsupported.empty() || cs.contacts.empty()) {
+  const ContactSet<T> cs = find_contacts(g_, poses, tips);
+  std::vector<bool> held(poses.size(), false);  // every body needs a contact (else it would fall: no solution)
+  for (const Contact<T>& c : cs.contacts) {
+    held[static_cast<std::size_t>(c.which)] = true;
+    if (c.kind == ContactKind::kBodyBody) held[static_cast<std::size_t>(c.other)] = true;
+  }
+  const auto free_body = std::find(held.begin(), held.end(), false);
+  if (!cs.unsupported.empty() || free_body != held.end()) {
     const bool none = cs.unsupported.empty();
     finish(none ? RunStatus::kNoContact : RunStatus::kUnsupportedContact,
-           none ? "no contact holds the body (a quasistatic body needs one)" : cs.unsupported);
+           none ? "no contact holds the " + g_.body_names[static_cast<std::size_t>(free_body - held.begin())] +
+                      " (a quasistatic body needs one)"
+                : cs.unsupported);
     return done(false);
   }
   std::vector<std::string> names;
@@ -349,8 +369,14 @@ bool Stepper<T>::step() {
   r.cut_by = sched.cut_by;
 
   ucp::UcpProblem problem;
+  std::optional<geometry::Assembly> assembly;  // several bodies
   try {
-    problem = step_problem(step_scene(g_, pose, cs.contacts, sched.commands), "step " + std::to_string(k));
+    if (g_.bodies.size() == 1) {
+      problem = step_problem(step_scene(g_, poses[0], cs.contacts, sched.commands), "step " + std::to_string(k));
+    } else {
+      assembly = step_assembly(g_, poses, cs.contacts, sched.commands);
+      problem = assembly_step_problem(*assembly);
+    }
   } catch (const exact::InputError& e) {
     finish(RunStatus::kUnsupportedContact, std::string("the step's problem was refused: ") + e.what());
     return done(false);
@@ -358,7 +384,9 @@ bool Stepper<T>::step() {
   const ucp::UcpReport rep = ucp::solve_ucp(problem, uopts_);
   r.verdict = rep.status;
   r.reason = rep.reason;
-  if (exact_path && opts_.certificates) r.certificate = ucp::certificate_text(problem, rep);
+  if (exact_path && opts_.certificates)
+    r.certificate =
+        ucp::certificate_text(problem, rep, assembly ? exact::json_text(assembly_scene_json(*assembly)) : "");
   if (rep.status != ucp::UcpStatus::kSolvable) {
     for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal, {T(0), T(0)}});
     r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
@@ -369,28 +397,35 @@ bool Stepper<T>::step() {
     return done(true);
   }
   const StepPhysics<T> ph = physics(problem, rep, static_cast<const T*>(nullptr));
-  r.v = ph.v;
-  r.omega = ph.omega;
+  r.twists = ph.twists;
   if (exact_path && opts_.uniqueness)
     r.uniqueness = motion_uniqueness(problem, uopts_.arith, opts_.max_uniqueness_modes);
   const FingerMotion<T> fm = record_contacts(cs, ph, sched, r);
-  apply_twist(cs, ph, pose, sched.H, r);
-  cut_step(g_, pose, tips, cs, fm, sched.H, r);
+  for (std::size_t b = 0; b < poses.size(); ++b)
+    r.applied.push_back(applied_twist(cs, r, b, ph.twists[b], poses[b], sched.H));
+  cut_step(g_, poses, tips, cs, fm, sched.H, r);
 
-  const Pose<T> step = keep_contacts(geometry::twist_step(r.applied_v, r.applied_omega, r.h), cs, r);
-  pose = compose(step, pose);
+  Poses<T> steps;
+  for (std::size_t b = 0; b < poses.size(); ++b) {
+    steps.push_back(keep_contacts(geometry::twist_step(r.applied[b].v, r.applied[b].omega, r.h), cs, r, b));
+    poses[b] = compose(steps[b], poses[b]);
+  }
+  std::vector<int> carrier(tips.size(), 0);  // the body a carried finger touches
+  for (const Contact<T>& c : cs.contacts)
+    if (c.kind == ContactKind::kFinger) carrier[static_cast<std::size_t>(c.other)] = c.which;
   for (std::size_t f = 0; f < tips.size(); ++f) {
+    const Pose<T>& step = steps[static_cast<std::size_t>(carrier[f])];
     if (fm.carried_slip[f])
       tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);
     else if (fm.free_velocity[f])
       tips[f] = tips[f] + r.h * *fm.free_velocity[f];
   }
   t = t + r.h;
-  r.pose_after = pose;
+  r.poses_after = poses;
   r.tips_after = tips;
   r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
   out_.steps.push_back(r);
-  if (const std::string o = overlap(g_, pose, tips); !o.empty())
+  if (const std::string o = overlap(g_, poses, tips); !o.empty())
     finish(RunStatus::kOverlap, o + " after step " + std::to_string(k));
   else if (!r.cut_exact)
     finish(RunStatus::kIrrationalContactTime,

@@ -1,7 +1,8 @@
-// Quasistatic time-stepping of one movable body (docs/motion.md): at each step the contacts of the current pose
-// are found exactly, the quasistatic problem of those contacts is solved by the complete method (solvers/ucp), and
-// the body moves by the exact rigid motion of the solution's twist (geometry/rigid_motion.h), cut at the first
-// contact that closes during the step. One algorithm over T: Q (exact and verified paths) or double (float path).
+// Quasistatic time-stepping of one or several movable bodies (docs/motion.md): at each step the contacts of the
+// current poses are found exactly, the quasistatic problem of those contacts is solved by the complete method
+// (solvers/ucp; several bodies: the assembly's problem, solvers/assembly), and each body moves by the exact rigid
+// motion of its twist in the solution (geometry/rigid_motion.h), cut at the first contact that closes during the
+// step. One algorithm over T: Q (exact and verified paths) or double (float path).
 #pragma once
 
 #include <chrono>
@@ -46,7 +47,7 @@ struct SimulateOptions {
 };
 
 /// A contact of a step: its name (contacts.h), mode (s separate, r roll, + / - slide along +t / -t, t = n turned
-/// by +90 degrees), point, inward normal (as written, non-unit) and the force on the body c_n n + c_t t.
+/// by +90 degrees), point, inward normal (as written, non-unit) and the force c_n n + c_t t on its body (`which`).
 template <class T>
 struct ContactRecord {
   std::string name;
@@ -54,7 +55,7 @@ struct ContactRecord {
   Vec2<T> point, normal, force;
 };
 
-/// One step: the problem at `pose` (time `time`), its verdict and certificate, the twist, the motion over `h`.
+/// One step: the problem at `poses` (time `time`), its verdict and certificate, the twists, the motion over `h`.
 template <class T>
 struct StepRecord {
   long index = 0;
@@ -62,23 +63,23 @@ struct StepRecord {
   /// What cut the step short (empty: a full step): the contact that closed, a finger reaching a body vertex, or
   /// "schedule change of finger NAME".
   std::string cut_by;
-  bool cut_exact = true;  ///< false: the closing time is irrational; h is a rational time just before it
-  Pose<T> pose, pose_after;
+  bool cut_exact = true;        ///< false: the closing time is irrational; h is a rational time just before it
+  Poses<T> poses, poses_after;  ///< per body
   std::vector<Vec2<T>> tips_after;
   std::vector<ContactRecord<T>> contacts;
   std::vector<std::string> made, broken;  ///< contacts new at this step, and gone since the previous one
   ucp::UcpStatus verdict = ucp::UcpStatus::kUnknown;
   std::string reason;
-  Vec2<T> v{T(0), T(0)};  ///< q_dot: velocity of the body point at the world origin
-  T omega = T(0);         ///< q_dot: angular velocity
-  /// The twist the step applies: (v, omega) itself when omega = 0; turning, a rotation about a rolling obstacle
-  /// contact's point (exactly the instantaneous centre) or else about the instantaneous centre, by the Cayley
+  /// Per body its q_dot: the velocity v of the body point at the world origin, and omega.
+  std::vector<Twist<T>> twists;
+  /// Per body the twist the step applies: (v, omega) itself when omega = 0; turning, a rotation about a rolling
+  /// obstacle contact's point (exactly the instantaneous centre) or else about the instantaneous centre, by the Cayley
   /// parameter that brings the pose's tan(theta / 2) after a full step to its exact value if that takes at most 128
   /// bits, else to the nearest multiple of 2^-40 (the centre likewise): exact where cheap, and the pose's numbers
   /// stay bounded (exact paths). The float path applies (v, omega).
-  Vec2<T> applied_v{T(0), T(0)};
-  T applied_omega = T(0);
-  std::string certificate;  ///< "ucp_solvable" / "ucp_jammed" (exact paths)
+  std::vector<Twist<T>> applied;
+  /// "ucp_solvable" / "ucp_jammed" (exact paths; several bodies: with the step's assembly embedded)
+  std::string certificate;
   std::optional<MotionUniqueness> uniqueness;
   double seconds = 0;
 };
@@ -89,7 +90,7 @@ struct Trajectory {
   RunStatus status = RunStatus::kCompleted;
   std::string reason;
   std::vector<StepRecord<T>> steps;
-  Pose<T> final_pose;
+  Poses<T> final_poses;
   T final_time = T(0);
   std::vector<Vec2<T>> final_tips;
   double seconds = 0;

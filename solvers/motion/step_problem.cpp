@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "exact/rational_text.h"
+#include "solvers/assembly/assembly_ucp.h"
 
 namespace contactcert::solvers::motion {
 namespace {
@@ -13,6 +14,25 @@ std::string text(double x) { return exact::to_string(Q(x)); }
 template <class T>
 nlohmann::ordered_json pair(const Vec2<T>& p) {
   return nlohmann::ordered_json::array({text(p.x), text(p.y)});
+}
+
+Q rational(const Q& x) { return x; }
+Q rational(double x) { return Q(x); }
+template <class T>
+geometry::Point2 point2(const Vec2<T>& p) {
+  return {rational(p.x), rational(p.y)};
+}
+nlohmann::ordered_json pair(const geometry::Point2& p) { return pair(Vec2<Q>{p.x, p.y}); }
+
+nlohmann::ordered_json polygon(const geometry::Shape& s) {
+  nlohmann::ordered_json v = nlohmann::ordered_json::array();
+  for (const geometry::Point2& p : std::get<geometry::PolygonShape>(s).vertices) v.push_back(pair(p));
+  return {{"type", "polygon"}, {"vertices", v}};
+}
+
+nlohmann::ordered_json party(const geometry::Party& p) {
+  static const char* const kNames[] = {"body", "obstacle", "fixel", "finger"};
+  return {{kNames[static_cast<int>(p.kind)], p.index}};
 }
 
 /// The frame as the step scene writes it.
@@ -27,7 +47,7 @@ nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose
                                   const std::vector<Contact<T>>& contacts,
                                   const std::vector<FingerCommand<T>>& commands) {
   nlohmann::ordered_json vertices = nlohmann::ordered_json::array();
-  for (const Vec2<T>& p : g.body) vertices.push_back(pair(pose.apply(p)));
+  for (const Vec2<T>& p : g.bodies[0]) vertices.push_back(pair(pose.apply(p)));
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const Contact<T>& c : contacts) {
     nlohmann::ordered_json j{
@@ -38,10 +58,11 @@ nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose
     }
     list.push_back(j);
   }
-  return {{"kind", "quasistatic_scene"},
-          {"workpiece", {{"shape", {{"type", "polygon"}, {"vertices", vertices}}}, {"com", pair(pose.apply(g.com))}}},
-          {"gravity", pair(g.gravity)},
-          {"contacts", list}};
+  return {
+      {"kind", "quasistatic_scene"},
+      {"workpiece", {{"shape", {{"type", "polygon"}, {"vertices", vertices}}}, {"com", pair(pose.apply(g.coms[0]))}}},
+      {"gravity", pair(g.weights[0])},
+      {"contacts", list}};
 }
 
 ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, const std::string& name) {
@@ -49,10 +70,83 @@ ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, const std::str
   return ucp::read_ucp_problem(in, nullptr, frame_as_written);
 }
 
-template nlohmann::ordered_json step_scene<Q>(const SceneGeometry<Q>&, const Pose<Q>&, const std::vector<Contact<Q>>&,
-                                              const std::vector<FingerCommand<Q>>&);
-template nlohmann::ordered_json step_scene<double>(const SceneGeometry<double>&, const Pose<double>&,
-                                                   const std::vector<Contact<double>>&,
-                                                   const std::vector<FingerCommand<double>>&);
+template <class T>
+geometry::Assembly step_assembly(const SceneGeometry<T>& g, const Poses<T>& poses,
+                                 const std::vector<Contact<T>>& contacts,
+                                 const std::vector<FingerCommand<T>>& commands) {
+  using geometry::Party;
+  geometry::Assembly a;
+  for (std::size_t b = 0; b < g.bodies.size(); ++b) {
+    geometry::PolygonShape shape;
+    for (const Vec2<T>& p : g.bodies[b]) shape.vertices.push_back(point2(poses[b].apply(p)));
+    const geometry::Point2 w = point2(g.weights[b]);
+    a.bodies.push_back({shape, point2(poses[b].apply(g.coms[b])), Q(1), Q(1), w.x, w.y, Q(0)});
+  }
+  std::vector<long> obstacle(g.obstacles.size(), -1);  // its index in the assembly, once a contact names it
+  for (const Contact<T>& c : contacts) {
+    Party from{Party::Kind::kBody, static_cast<std::size_t>(c.other)};
+    if (c.kind == ContactKind::kBodyVertex || c.kind == ContactKind::kObstacleVertex) {
+      long& index = obstacle[static_cast<std::size_t>(c.other)];
+      if (index < 0) {
+        index = static_cast<long>(a.obstacles.size());
+        geometry::PolygonShape shape;
+        for (const Vec2<T>& p : g.obstacles[static_cast<std::size_t>(c.other)]) shape.vertices.push_back(point2(p));
+        a.obstacles.push_back(shape);
+      }
+      from = {Party::Kind::kObstacle, static_cast<std::size_t>(index)};
+    }
+    if (c.kind == ContactKind::kFinger) {
+      const FingerCommand<T>& cmd = commands[static_cast<std::size_t>(c.other)];
+      from = {Party::Kind::kFinger, a.fingers.size()};
+      a.fingers.push_back({point2(c.point), true, cmd.force, point2(cmd.value)});
+    }
+    const Q mu = rational(c.mu);
+    a.contacts.push_back(
+        {from, {Party::Kind::kBody, static_cast<std::size_t>(c.which)}, point2(c.point), point2(c.normal), mu, mu});
+  }
+  return a;
+}
+
+ucp::UcpProblem assembly_step_problem(const geometry::Assembly& a) {
+  ucp::UcpProblem problem;
+  problem.quasistatic = assembly::assembly_quasistatic(a);
+  problem.set(ucp::build_ucp(*problem.quasistatic));
+  return problem;
+}
+
+nlohmann::ordered_json assembly_scene_json(const geometry::Assembly& a) {
+  nlohmann::ordered_json bodies = nlohmann::ordered_json::array(), obstacles = nlohmann::ordered_json::array(),
+                         fingers = nlohmann::ordered_json::array(), contacts = nlohmann::ordered_json::array();
+  for (const geometry::Body& b : a.bodies)
+    bodies.push_back(
+        {{"shape", polygon(b.shape)},
+         {"com", pair(b.com)},
+         {"load", nlohmann::ordered_json::array({text(b.load_fx), text(b.load_fy), text(b.load_torque)})}});
+  for (const geometry::Shape& o : a.obstacles) obstacles.push_back({{"shape", polygon(o)}});
+  for (const geometry::Finger& f : a.fingers)
+    fingers.push_back({{"position", pair(f.position)},
+                       {"axes", f.world_axes ? "world" : "frame"},
+                       {f.force_controlled ? "force" : "velocity", pair(f.given)}});
+  for (const geometry::AssemblyContact& c : a.contacts)
+    contacts.push_back({{"from", party(c.from)},
+                        {"to", party(c.to)},
+                        {"point", pair(c.point)},
+                        {"normal", pair(c.normal)},
+                        {"mu", text(c.mu_s)}});
+  return {{"kind", "quasistatic_scene"},
+          {"bodies", bodies},
+          {"obstacles", obstacles},
+          {"fingers", fingers},
+          {"contacts", contacts}};
+}
+
+#define CONTACTCERT_MOTION_STEP_INST(T)                                                                               \
+  template geometry::Assembly step_assembly<T>(const SceneGeometry<T>&, const Poses<T>&,                              \
+                                               const std::vector<Contact<T>>&, const std::vector<FingerCommand<T>>&); \
+  template nlohmann::ordered_json step_scene<T>(const SceneGeometry<T>&, const Pose<T>&,                              \
+                                                const std::vector<Contact<T>>&, const std::vector<FingerCommand<T>>&);
+CONTACTCERT_MOTION_STEP_INST(Q)
+CONTACTCERT_MOTION_STEP_INST(double)
+#undef CONTACTCERT_MOTION_STEP_INST
 
 }  // namespace contactcert::solvers::motion

@@ -1,11 +1,14 @@
 // The quasistatic problem of one step: the body at its pose with the contacts found there, written as a
 // `"kind": "quasistatic_scene"` file (docs/formats.md section 2) and built by the existing scene builder, so each
-// step's problem and certificate are those `contactcert ucp` and `check` read.
+// step's problem and certificate are those `contactcert ucp` and `check` read. Several bodies: the step's assembly
+// (geometry/assembly.h) built directly, its problem by solvers/assembly (the one `contactcert assembly --ucp`
+// solves), and the assembly written as its scene file for the certificate, whose checker re-derives the problem.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "geometry/assembly.h"
 #include "solvers/motion/contacts.h"
 #include "solvers/ucp/problem.h"
 
@@ -18,9 +21,9 @@ struct FingerCommand {
   Vec2<T> value;
 };
 
-/// The step's scene: the workpiece at `pose` (world vertices and com), gravity, and per contact its point, normal
-/// and mu; a finger contact carries its command ("axes": "world"). Numbers are exact strings (a double is written
-/// as the rational it is).
+/// The step's scene of one body: the workpiece at `pose` (world vertices and com), gravity, and per contact its point,
+/// normal and mu; a finger contact carries its command ("axes": "world"). Numbers are exact strings (a double is
+/// written as the rational it is).
 template <class T>
 nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose,
                                   const std::vector<Contact<T>>& contacts,
@@ -32,11 +35,32 @@ nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose
 /// rounded points lie near, not on, the boundary. Throws exact::InputError if the scene is refused.
 ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, const std::string& name);
 
-extern template nlohmann::ordered_json step_scene<Q>(const SceneGeometry<Q>&, const Pose<Q>&,
-                                                     const std::vector<Contact<Q>>&,
-                                                     const std::vector<FingerCommand<Q>>&);
-extern template nlohmann::ordered_json step_scene<double>(const SceneGeometry<double>&, const Pose<double>&,
-                                                          const std::vector<Contact<double>>&,
-                                                          const std::vector<FingerCommand<double>>&);
+/// The step's assembly of several bodies: each body at its pose (world vertices, com, its weight as the load), the
+/// obstacles in contact (in the order of their first contact: the assembly's reader refuses overlapping obstacles,
+/// so obstacles that overlap and both touch a body make a certificate `check` refuses), each touching finger (world
+/// axes, its command; in the order of its contact), and per contact its parties (`from` the obstacle, other body or
+/// finger, `to` the body `which`), point, normal and mu. A double is taken as the rational it is.
+template <class T>
+geometry::Assembly step_assembly(const SceneGeometry<T>& g, const Poses<T>& poses,
+                                 const std::vector<Contact<T>>& contacts,
+                                 const std::vector<FingerCommand<T>>& commands);
+
+/// The problem of a step assembly (solvers/assembly/assembly_ucp.h); the float path's rounded points lie near, not
+/// on, the boundaries, and nothing re-checks them here.
+ucp::UcpProblem assembly_step_problem(const geometry::Assembly& a);
+
+/// The assembly as a `"kind": "quasistatic_scene"` file with `bodies` (docs/formats.md section 3a; each body's
+/// `load` given): the text a certificate embeds, from which `check` re-derives the problem and verifies every
+/// contact frame.
+nlohmann::ordered_json assembly_scene_json(const geometry::Assembly& a);
+
+#define CONTACTCERT_MOTION_STEP_EXTERN(T)                                                                              \
+  extern template geometry::Assembly step_assembly<T>(                                                                 \
+      const SceneGeometry<T>&, const Poses<T>&, const std::vector<Contact<T>>&, const std::vector<FingerCommand<T>>&); \
+  extern template nlohmann::ordered_json step_scene<T>(                                                                \
+      const SceneGeometry<T>&, const Pose<T>&, const std::vector<Contact<T>>&, const std::vector<FingerCommand<T>>&);
+CONTACTCERT_MOTION_STEP_EXTERN(Q)
+CONTACTCERT_MOTION_STEP_EXTERN(double)
+#undef CONTACTCERT_MOTION_STEP_EXTERN
 
 }  // namespace contactcert::solvers::motion

@@ -3,7 +3,8 @@
 # `stability`, a cone picture, `insert --svg`, `design --out`'s design.svg and the demo report (with its Figure 11
 # plot). The page holding them has no XML error (Chromium shows a parse error as a <parsererror> element in the
 # DOM) and no picture's screenshot is blank (more than 40 distinct pixel rows; a blank one has 2). One Chromium
-# run for all (each run costs ~2.5 s of CPU). Also the picture of `assembly --svg` (issue 31).
+# run for all (each run costs ~2.5 s of CPU). Also the pictures of `assembly --svg` (issue 31) and of `simulate`
+# with four bodies (issue 32).
 # Usage: svg_render.sh CONTACTCERT REPO_DIR WORK_DIR. Exit 77 (skipped) without chromium or python3.
 set -u
 cc=$1 repo=$2 work=$3
@@ -37,6 +38,8 @@ run design "$s/bt2002_fig10_pentagon_insert.json" --candidates 12 --stable-under
 add "$work/design/design.svg"
 run simulate "$s/motion_pushed_box.json" --compare --svg "$work/simulate.svg"
 add "$work/simulate.svg"
+run simulate "$s/motion_pushed_row.json" --compare --uniqueness off --svg "$work/simulate_row.svg"
+add "$work/simulate_row.svg"
 run assembly "$s/assembly_corbel_arch.json" --svg "$work/assembly.svg"
 add "$work/assembly.svg"
 run demo --out "$work/demo"

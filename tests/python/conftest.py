@@ -24,6 +24,14 @@ def cli_json(*args, expect=0):
     return json.loads(run_cli(*args, "--json", expect=expect).stdout)
 
 
+def without_seconds(d):
+    """A trajectory (`simulate --json`, Simulation.to_dict()) without its timings (the run's and each step's)."""
+    d = dict(d)
+    d.pop("seconds")
+    d["steps"] = [{k: v for k, v in s.items() if k != "seconds"} for s in d["steps"]]
+    return d
+
+
 def cli_error(*args):
     """The CLI's message for bad input (exit 2), without its "contactcert: " prefix."""
     err = run_cli(*args, expect=2).stderr.strip()

@@ -4,7 +4,8 @@ same message. Planar scenes: stability under (0, -1, 0) in every arithmetic (wit
 the region, the finger pushes, modes (with its certificate), the cones of the first mode `modes` lists, insert;
 quasistatic problems and quasistatic scenes: ucp for every method and arithmetic (with its certificate); every
 certificate written: check, alone, against its own problem file and against the same problem spelled otherwise;
-assemblies (files with `bodies`): `assembly` (stability, or `--ucp` for a quasistatic scene) against Assembly."""
+assemblies (files with `bodies`): `assembly` (stability, or `--ucp` for a quasistatic scene) against Assembly;
+motion scenes (files with `motion`, one body or several): `simulate` against Motion."""
 
 import json
 import subprocess
@@ -14,7 +15,7 @@ from fractions import Fraction
 import pytest
 
 import contactcert as cc
-from conftest import CLI, ROOT
+from conftest import CLI, ROOT, without_seconds
 
 FILES = sorted(p for d in ("scenes", "examples") for p in (ROOT / d).glob("*.json"))
 WRENCH = "0,-1,0"
@@ -22,14 +23,17 @@ TIMINGS = ("seconds", "phases")  # a UCP report's CPU times: measured, never equ
 
 
 def kind(path):
-    """The file's kind, "assembly" for one with several bodies."""
+    """The file's kind, "motion" for a motion scene, "assembly" for one with several bodies."""
     data = json.loads(path.read_text())
+    if "motion" in data:
+        return "motion"
     return "assembly" if "bodies" in data else data.get("kind")
 
 
 PLANAR = [p for p in FILES if kind(p) == "planar"]
 UCP = [p for p in FILES if kind(p) in ("quasistatic", "quasistatic_scene", "ucp")]
 ASSEMBLY = [p for p in FILES if kind(p) == "assembly"]
+MOTION = [p for p in FILES if kind(p) == "motion"]
 
 # Planar questions: name -> (the Python call on a Scene, the CLI's arguments after FILE).
 PLANAR_QUESTIONS = {
@@ -237,7 +241,16 @@ def test_assembly(path):
         same_answer(assembly.stability, ["assembly", path])
 
 
+# --- motion scenes ---------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("path", MOTION, ids=lambda p: p.name)
+def test_simulate(path):
+    code, out, err = cli("simulate", path, "--uniqueness", "off", "--compare")
+    assert code == 0, err
+    got = cc.Motion.from_file(path).simulate(uniqueness=False, compare=True).to_dict()
+    assert without_seconds(got) == without_seconds(json.loads(out))
+
+
 def test_every_bundled_file_is_covered():
     """A bundled file of a kind without questions here fails: add its questions."""
-    assert PLANAR and UCP and ASSEMBLY and set(FILES) == set(PLANAR) | set(UCP) | set(ASSEMBLY), \
-        [p.name for p in set(FILES) - set(PLANAR) - set(UCP) - set(ASSEMBLY)]
+    covered = set(PLANAR) | set(UCP) | set(ASSEMBLY) | set(MOTION)
+    assert PLANAR and UCP and ASSEMBLY and MOTION and set(FILES) == covered, [p.name for p in set(FILES) - covered]

@@ -6,18 +6,10 @@ from fractions import Fraction
 import pytest
 
 import contactcert as cc
-from conftest import SCENES, cli_error, cli_json, run_cli
+from conftest import SCENES, cli_error, cli_json, run_cli, without_seconds
 
 BOX = SCENES / "motion_pushed_box.json"
 WALL = SCENES / "motion_block_wall.json"
-
-
-def without_seconds(d):
-    """The trajectory without its timings (the run's and each step's seconds)."""
-    d = dict(d)
-    d.pop("seconds")
-    d["steps"] = [{k: v for k, v in s.items() if k != "seconds"} for s in d["steps"]]
-    return d
 
 
 @pytest.mark.parametrize("args,kwargs", [

@@ -56,7 +56,7 @@ void expect_certified_and_apart(const MotionScene& scene, const Trajectory<Q>& r
     ASSERT_FALSE(s.certificate.empty()) << "step " << s.index;
     const checker::CertificateCheck c = checker::check_ucp_certificate(exact::JsonInput::parse(s.certificate, "step"));
     EXPECT_EQ(c.verdict, checker::CertificateVerdict::kValid) << "step " << s.index << ": " << c.reason;
-    EXPECT_EQ(overlap(g, s.pose_after, s.tips_after), "") << "step " << s.index;
+    EXPECT_EQ(overlap(g, s.poses_after, s.tips_after), "") << "step " << s.index;
   }
 }
 
@@ -66,15 +66,15 @@ TEST(PushedBox, LowPushSlidesByExactlyNHV) {
   ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
   ASSERT_EQ(run.steps.size(), 8u);
   for (const StepRecord<Q>& s : run.steps) {
-    EXPECT_EQ(s.v, (Vec2<Q>{Q(1), Q(0)}));
-    EXPECT_EQ(s.omega, Q(0));
+    EXPECT_EQ(s.twists[0].v, (Vec2<Q>{Q(1), Q(0)}));
+    EXPECT_EQ(s.twists[0].omega, Q(0));
     ASSERT_TRUE(s.uniqueness);
     EXPECT_EQ(s.uniqueness->status, UniquenessStatus::kUnique) << "step " << s.index;
     EXPECT_TRUE(s.cut_by.empty());
   }
   // N H v = 8 * 1/10 * 1, exactly; no rotation.
-  EXPECT_EQ(run.final_pose.t, (Vec2<Q>{Q(4, 5), Q(0)}));
-  EXPECT_EQ(run.final_pose.c, Q(1));
+  EXPECT_EQ(run.final_poses[0].t, (Vec2<Q>{Q(4, 5), Q(0)}));
+  EXPECT_EQ(run.final_poses[0].c, Q(1));
   EXPECT_EQ(run.final_time, Q(4, 5));
   // The three contacts at every step: both floor corners slide along -t (t = (-20, 0)), the finger slides.
   EXPECT_EQ(run.steps[0].contacts.size(), 3u);
@@ -101,14 +101,14 @@ TEST(PushedBox, HighPushTipsAboutTheFrontCorner) {
   ASSERT_EQ(run.steps.size(), 6u);
   const Vec2<Q> corner{Q(2), Q(0)}, body_corner{Q(2), Q(0)};
   for (const StepRecord<Q>& s : run.steps) {
-    EXPECT_LT(s.omega, 0) << "step " << s.index;  // clockwise
-    EXPECT_EQ(s.pose_after.apply(body_corner), corner) << "step " << s.index;
-    EXPECT_EQ(s.pose_after.c * s.pose_after.c + s.pose_after.s * s.pose_after.s, Q(1));
+    EXPECT_LT(s.twists[0].omega, 0) << "step " << s.index;  // clockwise
+    EXPECT_EQ(s.poses_after[0].apply(body_corner), corner) << "step " << s.index;
+    EXPECT_EQ(s.poses_after[0].c * s.poses_after[0].c + s.poses_after[0].s * s.poses_after[0].s, Q(1));
     ASSERT_TRUE(s.uniqueness);
     EXPECT_EQ(s.uniqueness->status, UniquenessStatus::kUnique) << "step " << s.index;
   }
   // The first step: omega = -2/3 (the finger's speed 1 at lever 3/2), the rear corner lifts (broken at step 1).
-  EXPECT_EQ(run.steps[0].omega, Q(-2, 3));
+  EXPECT_EQ(run.steps[0].twists[0].omega, Q(-2, 3));
   EXPECT_EQ(run.steps[1].broken, std::vector<std::string>{"body vertex 0 on floor edge 2"});
   for (const ContactRecord<Q>& c : run.steps[0].contacts) {
     if (c.name == "body vertex 0 on floor edge 2") {
@@ -169,8 +169,8 @@ TEST(PushedBox, ExactAndVerifiedAgree) {
   const Trajectory<Q> a = simulate<Q>(scene, fast);
   const Trajectory<Q> b = simulate<Q>(scene, exact_options());
   ASSERT_EQ(a.steps.size(), b.steps.size());
-  EXPECT_EQ(a.final_pose.t, b.final_pose.t);
-  EXPECT_EQ(a.final_pose.s, b.final_pose.s);
+  EXPECT_EQ(a.final_poses[0].t, b.final_poses[0].t);
+  EXPECT_EQ(a.final_poses[0].s, b.final_poses[0].s);
 }
 
 TEST(FloatDrift, SlidingBoxDriftsOnlyByRounding) {
@@ -184,7 +184,7 @@ TEST(FloatDrift, SlidingBoxDriftsOnlyByRounding) {
     EXPECT_LT(d.pose_distance, 1e-12);
   }
   ASSERT_EQ(fl.status, RunStatus::kCompleted);
-  EXPECT_NEAR(fl.final_pose.t.x, 0.5, 1e-12);
+  EXPECT_NEAR(fl.final_poses[0].t.x, 0.5, 1e-12);
 }
 
 TEST(FloatDrift, TheFloatRunUsesTheNearestDoubles) {
@@ -194,8 +194,8 @@ TEST(FloatDrift, TheFloatRunUsesTheNearestDoubles) {
   ASSERT_EQ(fl.steps.size(), 2u);
   EXPECT_EQ(fl.steps[0].h, 0.1);
   EXPECT_EQ(fl.steps[1].time, 0.1);
-  EXPECT_EQ(nearest_double(Q(2, 3)), 2.0 / 3.0);
-  EXPECT_EQ(nearest_double(Q(-1, 10)), -0.1);
+  EXPECT_EQ(exact::nearest_double(Q(2, 3)), 2.0 / 3.0);
+  EXPECT_EQ(exact::nearest_double(Q(-1, 10)), -0.1);
 }
 
 TEST(FloatDrift, GrazingCeilingIsAPhantomContactInFloat) {
@@ -232,7 +232,7 @@ TEST(TippingBox, CaughtByAPostAtTheDerivedTime) {
   EXPECT_EQ(run.steps[0].h, Q(1));
   EXPECT_TRUE(run.steps[0].cut_exact);
   EXPECT_EQ(run.steps[0].cut_by, "body vertex 2 on post edge 3");
-  EXPECT_EQ(run.steps[0].pose_after.apply(Vec2<Q>{Q(2), Q(2)}), (Vec2<Q>{Q(16, 5), Q(8, 5)}));
+  EXPECT_EQ(run.steps[0].poses_after[0].apply(Vec2<Q>{Q(2), Q(2)}), (Vec2<Q>{Q(16, 5), Q(8, 5)}));
   // Step 1: the post contact is made, the rear corner's floor contact is broken; pinned, the box jams.
   EXPECT_EQ(run.steps[1].made, std::vector<std::string>{"body vertex 2 on post edge 3"});
   EXPECT_EQ(run.steps[1].broken, std::vector<std::string>{"body vertex 0 on floor edge 2"});
@@ -252,7 +252,7 @@ TEST(TippingBox, IrrationalFirstContactStopsJustBeforeIt) {
   EXPECT_LT(run.steps[0].h, Q(tau));
   EXPECT_GT(run.steps[0].h, Q(tau - 1e-9));
   // Just before: the corner is left of the post face, exactly.
-  EXPECT_LT(run.steps[0].pose_after.apply(Vec2<Q>{Q(2), Q(2)}).x, Q(3));
+  EXPECT_LT(run.steps[0].poses_after[0].apply(Vec2<Q>{Q(2), Q(2)}).x, Q(3));
   expect_certified_and_apart(scene, run);
 }
 
@@ -270,7 +270,7 @@ TEST(TippingBox, FingerSlidingToTheBodysCornerCutsTheStep) {
   ASSERT_EQ(run.steps.size(), 1u);
   EXPECT_EQ(run.steps[0].h, Q(9, 8));
   EXPECT_EQ(run.steps[0].cut_by, "finger pusher reaches body vertex 0");
-  EXPECT_EQ(run.steps[0].tips_after[0], run.steps[0].pose_after.apply(Vec2<Q>{Q(0), Q(0)}));
+  EXPECT_EQ(run.steps[0].tips_after[0], run.steps[0].poses_after[0].apply(Vec2<Q>{Q(0), Q(0)}));
   EXPECT_EQ(run.status, RunStatus::kUnsupportedContact) << run.reason;
 }
 
@@ -282,7 +282,7 @@ TEST(FloatDrift, NearThresholdPush) {
   const MotionScene scene = pushed_box("1.000000000001", "", "1/10", 3);
   const Trajectory<Q> ex = simulate<Q>(scene, exact_options());
   ASSERT_EQ(ex.steps.size(), 2u) << ex.reason;
-  EXPECT_LT(ex.steps[0].omega, 0);
+  EXPECT_LT(ex.steps[0].twists[0].omega, 0);
   ASSERT_TRUE(ex.steps[0].uniqueness);
   EXPECT_EQ(ex.steps[0].uniqueness->status, UniquenessStatus::kUnique);
   EXPECT_EQ(ex.status, RunStatus::kJammed);
@@ -359,14 +359,14 @@ TEST(Schedule, AStepIsCutAtTheScheduleChangeAndAForceFingerHolds) {
   EXPECT_EQ(run.steps[0].h, Q(1, 10));
   EXPECT_EQ(run.steps[1].h, Q(1, 20));  // cut at the schedule change, 3/20
   EXPECT_EQ(run.steps[1].cut_by, "schedule change of finger pusher");
-  EXPECT_EQ(run.steps[1].v, (Vec2<Q>{Q(1), Q(0)}));
+  EXPECT_EQ(run.steps[1].twists[0].v, (Vec2<Q>{Q(1), Q(0)}));
   for (std::size_t k = 2; k < 4; ++k) {
-    EXPECT_EQ(run.steps[k].v, (Vec2<Q>{Q(0), Q(0)}));
-    EXPECT_EQ(run.steps[k].omega, Q(0));
+    EXPECT_EQ(run.steps[k].twists[0].v, (Vec2<Q>{Q(0), Q(0)}));
+    EXPECT_EQ(run.steps[k].twists[0].omega, Q(0));
     ASSERT_TRUE(run.steps[k].uniqueness);
     EXPECT_EQ(run.steps[k].uniqueness->status, UniquenessStatus::kUnique);
   }
-  EXPECT_EQ(run.final_pose.t, (Vec2<Q>{Q(3, 20), Q(0)}));
+  EXPECT_EQ(run.final_poses[0].t, (Vec2<Q>{Q(3, 20), Q(0)}));
   EXPECT_EQ(run.final_time, Q(7, 20));
   // The force finger pushes with 1/2 (world force on the body), friction holds it.
   for (const ContactRecord<Q>& c : run.steps[2].contacts)
@@ -387,7 +387,7 @@ TEST(BundledScene, PushedBoxTipsForFiveSteps) {
   const Trajectory<Q> run = simulate<Q>(scene, exact_options());
   ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
   ASSERT_EQ(run.steps.size(), 5u);
-  EXPECT_EQ(run.final_pose.apply(Vec2<Q>{Q(2), Q(0)}), (Vec2<Q>{Q(2), Q(0)}));
+  EXPECT_EQ(run.final_poses[0].apply(Vec2<Q>{Q(2), Q(0)}), (Vec2<Q>{Q(2), Q(0)}));
   EXPECT_EQ(run.final_time, Q(1, 2));
   expect_certified_and_apart(scene, run);
 }
@@ -425,11 +425,11 @@ TEST(FirstContact, AnObstacleVertexMeetsTheSlidingFace) {
   EXPECT_EQ(run.steps[3].h, Q(1, 10));
   EXPECT_EQ(run.steps[3].cut_by, "wedge vertex 0 on body edge 1");
   EXPECT_EQ(run.steps[4].made, std::vector<std::string>{"wedge vertex 0 on body edge 1"});
-  EXPECT_EQ(run.steps[4].omega, Q(2));
-  EXPECT_EQ(run.steps[4].v, (Vec2<Q>{Q(2), Q(-2)}));
+  EXPECT_EQ(run.steps[4].twists[0].omega, Q(2));
+  EXPECT_EQ(run.steps[4].twists[0].v, (Vec2<Q>{Q(2), Q(-2)}));
   EXPECT_EQ(run.steps[4].cut_by, "body vertex 1 on wedge edge 0");
   EXPECT_EQ(run.status, RunStatus::kIrrationalContactTime);
-  const Pose<Q>& p = run.steps[4].pose_after;
+  const Pose<Q>& p = run.steps[4].poses_after[0];
   const Vec2<Q> a = p.apply(Vec2<Q>{Q(2), Q(0)}), b = p.apply(Vec2<Q>{Q(2), Q(2)});
   EXPECT_EQ(cross2(Vec2<Q>{b.x - a.x, b.y - a.y}, Vec2<Q>{Q(3) - a.x, Q(1) - a.y}), Q(0));  // tip on the face
   EXPECT_EQ(p.apply(Vec2<Q>{Q(0), Q(0)}).y, Q(0));                                          // rear corner on the floor
@@ -453,10 +453,10 @@ TEST(FirstContact, AFreeFingerMeetsTheBody) {
   EXPECT_EQ(run.steps[2].h, Q(1, 10));
   EXPECT_EQ(run.steps[2].cut_by, "finger stopper on body edge 1");
   EXPECT_EQ(run.steps[3].made, std::vector<std::string>{"finger stopper on body edge 1"});
-  EXPECT_EQ(run.steps[3].omega, Q(4));
+  EXPECT_EQ(run.steps[3].twists[0].omega, Q(4));
   EXPECT_EQ(run.steps[3].h, Q(1, 8));
   EXPECT_EQ(run.steps[3].cut_by, "finger stopper reaches body vertex 1");
-  EXPECT_EQ(run.steps[3].tips_after[1], run.steps[3].pose_after.apply(Vec2<Q>{Q(2), Q(0)}));
+  EXPECT_EQ(run.steps[3].tips_after[1], run.steps[3].poses_after[0].apply(Vec2<Q>{Q(2), Q(0)}));
   EXPECT_EQ(run.status, RunStatus::kUnsupportedContact);
   expect_certified_and_apart(scene, run);
 }
@@ -501,8 +501,8 @@ TEST(PegInChamferedHole, MakesAndBreaksContactsAtTheDerivedSteps) {
     EXPECT_EQ(contacts_with(s, "right edge"), none) << "step " << k;
     EXPECT_EQ(s.made, k == 0 ? fingers : (k == 11 ? bottom : none)) << "step " << k;
     EXPECT_EQ(s.broken, k == 14 ? fingers : none) << "step " << k;
-    EXPECT_EQ(s.omega, Q(0)) << "step " << k;
-    EXPECT_EQ(s.v, (Vec2<Q>{Q(0), Q(k <= 10 ? -1 : 0)})) << "step " << k;
+    EXPECT_EQ(s.twists[0].omega, Q(0)) << "step " << k;
+    EXPECT_EQ(s.twists[0].v, (Vec2<Q>{Q(0), Q(k <= 10 ? -1 : 0)})) << "step " << k;
   }
   EXPECT_EQ(run.steps[10].h, Q(1, 2));
   EXPECT_EQ(run.steps[10].cut_by, "body vertex 0 on bottom edge 2");
@@ -513,8 +513,8 @@ TEST(PegInChamferedHole, MakesAndBreaksContactsAtTheDerivedSteps) {
       EXPECT_EQ(c.mode, 's') << c.name;
     }
   }
-  EXPECT_EQ(run.final_pose.t, (Vec2<Q>{Q(0), Q(-8)}));
-  EXPECT_EQ(run.final_pose.c, Q(1));
+  EXPECT_EQ(run.final_poses[0].t, (Vec2<Q>{Q(0), Q(-8)}));
+  EXPECT_EQ(run.final_poses[0].c, Q(1));
   expect_certified_and_apart(scene, run);
 }
 

@@ -1,0 +1,174 @@
+// Several movable bodies (docs/motion.md, "Several bodies"): each step is the assembly's quasistatic problem of the
+// contacts found, body-body contacts are made when a vertex of one body reaches an edge of another (the step cut
+// there), and every step's certificate embeds the step's assembly. The expectations are derived by hand below.
+#include <gtest/gtest.h>
+
+#include "checker/ucp_check.h"
+#include "exact/json_input.h"
+#include "runtime/scenes.h"
+#include "solvers/motion/simulate.h"
+
+namespace contactcert::solvers::motion {
+namespace {
+
+using geometry::Vec2;
+
+/// A floor (mu = 1/5), a frictionless finger at (0, 1/2) pushing along +x at speed 1, and the bodies `bodies`
+/// (JSON), with extra obstacles; N steps of H.
+MotionScene scene_of(const std::string& bodies, const std::string& extra_obstacles, const std::string& dt, long steps) {
+  const std::string text = R"({"kind": "quasistatic_scene", "bodies": [)" + bodies + R"(], "gravity": [0, -1],
+    "obstacles": [{"name": "floor", "vertices": [[-10, -1], [20, -1], [20, 0], [-10, 0]], "mu": "1/5"})" +
+                           extra_obstacles + R"(],
+    "fingers": [{"name": "pusher", "tip": [0, "1/2"], "mu": 0, "schedule": [{"velocity": [1, 0]}]}],
+    "motion": {"dt": ")" + dt +
+                           R"(", "steps": )" + std::to_string(steps) + "}}";
+  return read_motion_scene(exact::JsonInput::parse(text, "bodies.json"));
+}
+
+/// The unit box [0, 1]^2, and a pointed box whose rear face is the vertex (x, 1/2): (x, 1/2), (x + 1/4, 0),
+/// (x + 1, 0), (x + 1, 1), (x + 1/4, 1) (so that no two vertices of a row meet).
+std::string unit_box() {
+  return R"({"name": "box 0", "shape": {"type": "polygon", "vertices": [[0, 0], [1, 0], [1, 1], [0, 1]]}, "mu": "1/2"})";
+}
+std::string pointed_box(int k, const Q& x) {
+  const auto s = [](const Q& q) { return "\"" + q.get_str() + "\""; };
+  return R"(, {"name": "box )" + std::to_string(k) + R"(", "shape": {"type": "polygon", "vertices": [[)" + s(x) +
+         R"(, "1/2"], [)" + s(x + Q(1, 4)) + ", 0], [" + s(x + 1) + ", 0], [" + s(x + 1) + ", 1], [" + s(x + Q(1, 4)) +
+         R"(, 1]]}, "mu": "1/2"})";
+}
+
+SimulateOptions options() {
+  SimulateOptions o;
+  o.uniqueness = false;
+  return o;
+}
+
+/// Every step's certificate (an assembly ucp certificate) is valid, and no recorded pose overlaps.
+void expect_certified_and_apart(const MotionScene& scene, const Trajectory<Q>& run) {
+  const SceneGeometry<Q> g = scene_geometry<Q>(scene);
+  for (const StepRecord<Q>& s : run.steps) {
+    ASSERT_FALSE(s.certificate.empty()) << "step " << s.index;
+    EXPECT_NE(s.certificate.find("bodies"), std::string::npos) << "the assembly is embedded";
+    const checker::CertificateCheck c = checker::check_ucp_certificate(exact::JsonInput::parse(s.certificate, "step"));
+    EXPECT_EQ(c.verdict, checker::CertificateVerdict::kValid) << "step " << s.index << ": " << c.reason;
+    EXPECT_EQ(overlap(g, s.poses_after, s.tips_after), "") << "step " << s.index;
+  }
+}
+
+// Three boxes touching in a row (the rear vertex of each on the front face of the one before), pushed by the
+// finger: the finger's contact keeps v_n = 0, so box 0 moves at the finger's speed 1; a box ahead cannot move slower
+// (v_n >= 0 at its rear vertex) and cannot move faster (then that contact separates, c_n = 0, and floor friction
+// alone acts on it: no equilibrium while it moves); nothing lifts or turns (each box is pushed at half height, and
+// a push of mu = 1/5 its weight is far below the 1/2 that would tip it). So every step all three have q_dot =
+// (1, 0, 0), and after N steps of H each has moved by N H exactly: 4 steps of 1/4, by (1, 0).
+TEST(SeveralBodies, ThreeBoxesPushedInARowSlideTogether) {
+  const MotionScene scene = scene_of(unit_box() + pointed_box(1, Q(1)) + pointed_box(2, Q(2)), "", "1/4", 4);
+  const Trajectory<Q> run = simulate<Q>(scene, options());
+  ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
+  ASSERT_EQ(run.steps.size(), 4u);
+  for (const StepRecord<Q>& s : run.steps) {
+    EXPECT_EQ(s.verdict, ucp::UcpStatus::kSolvable);
+    EXPECT_TRUE(s.cut_by.empty()) << s.cut_by;
+    ASSERT_EQ(s.twists.size(), 3u);
+    for (const Twist<Q>& tw : s.twists) {
+      EXPECT_EQ(tw.v, (Vec2<Q>{Q(1), Q(0)})) << "step " << s.index;
+      EXPECT_EQ(tw.omega, Q(0)) << "step " << s.index;
+    }
+    // 2 floor contacts per box, 2 rear vertices on the box before, the finger: 9.
+    EXPECT_EQ(s.contacts.size(), 9u);
+  }
+  for (const Pose<Q>& p : run.final_poses) {
+    EXPECT_EQ(p.t, (Vec2<Q>{Q(1), Q(0)}));
+    EXPECT_EQ(p.c, Q(1));
+  }
+  EXPECT_EQ(run.final_tips[0], (Vec2<Q>{Q(1), Q(1, 2)}));
+  expect_certified_and_apart(scene, run);
+}
+
+// The bundled row (scenes/motion_pushed_row.json): four boxes 1/2 apart, steps of 1/3. Box 0 moves at speed 1 alone
+// and reaches box 1's rear vertex at t = 1/2 (the step from 1/3 is cut there, exactly: a translation's gap is linear
+// in time); boxes 0 and 1 then reach box 2 at t = 1, and three boxes reach box 3 at t = 3/2 (the steps from 5/6 and
+// 4/3 are cut likewise; the step from 1/2 is a full one, to 5/6). Box k starts moving at t = k / 2, so at the end
+// (t = 13/6 + 1/3 = 5/2, 9 steps) it has moved by 5/2 - k/2.
+TEST(SeveralBodies, BundledRowMakesEachContactAtTheDerivedTime) {
+  const MotionScene scene =
+      read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_pushed_row.json"));
+  ASSERT_EQ(scene.bodies.size(), 4u);
+  const Trajectory<Q> run = simulate<Q>(scene, options());
+  ASSERT_EQ(run.status, RunStatus::kCompleted) << run.reason;
+  ASSERT_EQ(run.steps.size(), 9u);
+  const std::vector<Q> times{Q(0), Q(1, 3), Q(1, 2), Q(5, 6), Q(1), Q(4, 3), Q(3, 2), Q(11, 6), Q(13, 6)};
+  for (std::size_t k = 0; k < times.size(); ++k) EXPECT_EQ(run.steps[k].time, times[k]) << "step " << k;
+  EXPECT_EQ(run.steps[1].cut_by, "box 1 vertex 0 on box 0 edge 1");
+  EXPECT_EQ(run.steps[3].cut_by, "box 2 vertex 0 on box 1 edge 2");
+  EXPECT_EQ(run.steps[5].cut_by, "box 3 vertex 0 on box 2 edge 2");
+  EXPECT_EQ(run.steps[2].made, std::vector<std::string>{"box 1 vertex 0 on box 0 edge 1"});
+  EXPECT_EQ(run.steps[6].made, std::vector<std::string>{"box 3 vertex 0 on box 2 edge 2"});
+  EXPECT_EQ(run.final_time, Q(5, 2));
+  for (std::size_t b = 0; b < 4; ++b)
+    EXPECT_EQ(run.final_poses[b].t, (Vec2<Q>{Q(5, 2) - Q(static_cast<long>(b), 2), Q(0)})) << "box " << b;
+  for (const Twist<Q>& tw : run.steps[8].twists) EXPECT_EQ(tw.v, (Vec2<Q>{Q(1), Q(0)}));
+  expect_certified_and_apart(scene, run);
+}
+
+// Box 0 pushed into box 1, which stands against a wall (its front face on the wall's face x = 5/2, the wall's foot
+// at y = 1/4 so that only box 1's top front corner (5/2, 1) touches it, strictly inside its edge): the step from 1/3
+// is cut at t = 1/2 when box 0 reaches box 1's rear vertex (3/2, 1/2). Then box 0 must move at the finger's speed 1,
+// so box 1's rear vertex moves with v_x >= 1 while its top front corner has v_x <= 0: box 1 would have to turn
+// counter-clockwise (omega >= 2) about a point at height >= 1/2, pushed at half height by a force its floor friction
+// (mu = 1/5) and weight cannot balance: no solution, and the run stops jammed with the proof (a ucp_jammed
+// certificate embedding the assembly) as the last step's certificate.
+TEST(SeveralBodies, BoxPushedIntoABoxAgainstAWallJams) {
+  const MotionScene scene = scene_of(
+      unit_box() + pointed_box(1, Q(3, 2)),
+      R"(, {"name": "wall", "vertices": [["5/2", "1/4"], [4, "1/4"], [4, 5], ["5/2", 5]], "mu": "1/5"})", "1/3", 5);
+  const Trajectory<Q> run = simulate<Q>(scene, options());
+  ASSERT_EQ(run.status, RunStatus::kJammed) << run.reason;
+  ASSERT_EQ(run.steps.size(), 3u);
+  EXPECT_EQ(run.steps[1].h, Q(1, 6));
+  EXPECT_EQ(run.steps[1].cut_by, "box 1 vertex 0 on box 0 edge 1");
+  EXPECT_EQ(run.steps[2].verdict, ucp::UcpStatus::kJammed);
+  EXPECT_EQ(run.steps[2].made, std::vector<std::string>{"box 1 vertex 0 on box 0 edge 1"});
+  EXPECT_NE(run.steps[2].certificate.find("ucp_jammed"), std::string::npos);
+  EXPECT_EQ(run.final_poses[0].t, (Vec2<Q>{Q(1, 2), Q(0)}));
+  EXPECT_EQ(run.final_poses[1].t, (Vec2<Q>{Q(0), Q(0)}));
+  expect_certified_and_apart(scene, run);
+}
+
+// A turning body meets a still one: the 2 x 2 box pushed at height 3/2 tips about its front corner (2, 0) with
+// omega = -2/3 (simulate_test.cpp, TippingBox); its top-right corner is at (2 + 2 s, 2 c), s = 2|u|/(1 + u^2),
+// c = (1 - u^2)/(1 + u^2), u = -tau / 3. A post standing on the floor as a second body, its face at x = 16/5, is
+// reached when 4|u|/(1 + u^2) = 6/5: |u| = 1/3, tau = 1 exactly, the corner at (16/5, 8/5) (the same time as an
+// obstacle post): the gap polynomial of two bodies is exact here too.
+TEST(SeveralBodies, TurningBodyMeetsAStillBodyAtTheDerivedTime) {
+  const std::string text = R"({"kind": "quasistatic_scene", "bodies": [
+      {"name": "box", "shape": {"type": "polygon", "vertices": [[0, 0], [2, 0], [2, 2], [0, 2]]}, "com": [1, 1]},
+      {"name": "post", "shape": {"type": "polygon", "vertices": [["16/5", 0], [5, 0], [5, 3], ["16/5", 3]]}}],
+    "gravity": [0, -1],
+    "obstacles": [{"name": "floor", "vertices": [[-10, -1], [10, -1], [10, 0], [-10, 0]], "mu": 1}],
+    "fingers": [{"name": "pusher", "tip": [0, "3/2"], "mu": 0, "schedule": [{"velocity": [1, 0]}]}],
+    "motion": {"dt": "6/5", "steps": 1}})";
+  const MotionScene scene = read_motion_scene(exact::JsonInput::parse(text, "post.json"));
+  const Trajectory<Q> run = simulate<Q>(scene, options());
+  ASSERT_EQ(run.steps.size(), 1u) << run.reason;
+  EXPECT_EQ(run.steps[0].twists[0].omega, Q(-2, 3));
+  EXPECT_EQ(run.steps[0].twists[1].omega, Q(0));
+  EXPECT_EQ(run.steps[0].h, Q(1));
+  EXPECT_TRUE(run.steps[0].cut_exact);
+  EXPECT_EQ(run.steps[0].cut_by, "box vertex 2 on post edge 3");
+  EXPECT_EQ(run.steps[0].poses_after[0].apply(Vec2<Q>{Q(2), Q(2)}), (Vec2<Q>{Q(16, 5), Q(8, 5)}));
+  EXPECT_EQ(run.steps[0].poses_after[0].apply(Vec2<Q>{Q(2), Q(0)}), (Vec2<Q>{Q(2), Q(0)}));  // the pivot
+  expect_certified_and_apart(scene, run);
+}
+
+// The float path steps the same scene (the assembly's problem in doubles): the same verdict at step 0.
+TEST(SeveralBodies, FloatPathStepsTheRow) {
+  const MotionScene scene = scene_of(unit_box() + pointed_box(1, Q(1)), "", "1/4", 2);
+  const Trajectory<double> fl = simulate<double>(scene, options());
+  ASSERT_GE(fl.steps.size(), 1u) << fl.reason;
+  EXPECT_EQ(fl.steps[0].verdict, ucp::UcpStatus::kSolvable);
+  EXPECT_NEAR(fl.steps[0].twists[1].v.x, 1.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::motion
