@@ -55,13 +55,11 @@ bool Insertion<T>::in_goal(const Vec<T>& g) const {
 
 namespace {
 
-/// G of one set in the goal scene: the wrench cone of the set's mode in the set's contact state, with its form.
+/// G of one set in the goal scene: the wrench cone of the set's mode in the set's contact state.
 template <class T>
-SetCone<T> set_cone(const geometry::PlanarScene& goal, const InsertionSet& set, Route route) {
+geometry::FaceCone<T> set_cone(const geometry::PlanarScene& goal, const InsertionSet& set, Route route) {
   const geometry::PlanarScene s = scene_in_state(goal, set.state);
-  SetCone<T> out{wrench_cone_face<T>(s, contact_model<T>(s), set.mode, route), {}};
-  if (!is_empty_cone<T>(out.cone)) out.form = geometry::nnc_form<T>(out.cone);
-  return out;
+  return wrench_cone_face<T>(s, contact_model<T>(s), set.mode, route);
 }
 
 bool unconstrained(Interaction letter) { return letter == Interaction::kUnconstrained; }
@@ -80,37 +78,53 @@ const SetCone<T>& InsertionCones<T>::cone(const geometry::PlanarScene& goal, std
   const auto known = cones_.find(key);
   if (known != cones_.end()) return known->second;
   if (cones_.size() >= capacity_) cones_.clear();
-  return cones_.emplace(std::move(key), set_cone<T>(goal, set, route)).first->second;
+  SetCone<T> c{set_cone<T>(goal, set, route), std::nullopt};
+  if (!is_empty_cone<T>(c.cone)) c.form = geometry::nnc_form<T>(c.cone);
+  return cones_.emplace(std::move(key), std::move(c)).first->second;
 }
 
 template <class T>
-Insertion<T> insertion(const geometry::PlanarScene& goal, Route route, InsertionCones<T>* cones) {
+void find_redundant(Insertion<T>& ins) {
+  const std::size_t n = ins.cones.size();
+  ins.forms.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (!ins.forms[i] && !is_empty_cone<T>(ins.cones[i])) ins.forms[i] = geometry::nnc_form<T>(ins.cones[i]);
+  ins.redundant.assign(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool empty = is_empty_cone<T>(ins.cones[i]);
+    for (std::size_t j = 0; j < n && !ins.redundant[i]; ++j) {
+      if (i == j || ins.redundant[j]) continue;
+      if (empty || geometry::contains<T>(ins.cones[j], ins.cones[i], *ins.forms[i]).status ==
+                       geometry::ContainmentStatus::kContained)
+        ins.redundant[i] = true;
+    }
+  }
+}
+
+template <class T>
+Insertion<T> insertion(const geometry::PlanarScene& goal, Route route, InsertionCones<T>* cones,
+                       Redundancy redundancy) {
   const std::size_t k = goal.fixels.size();
-  if (k != 2 && k != 3) throw exact::InputError("", "$.fixels", "insertion needs 2 or 3 fixels, found " + std::to_string(k));
+  if (k != 2 && k != 3)
+    throw exact::InputError("", "$.fixels", "insertion needs 2 or 3 fixels, found " + std::to_string(k));
   for (std::size_t i = 0; i < k; ++i)
     if (!goal.fixels[i].frame.touching())
       throw exact::InputError("", "$.fixels[" + std::to_string(i) + "]",
                               "insertion takes the goal configuration: every fixel must touch the workpiece");
   Insertion<T> out;
   out.sets = insertion_sets(k);
-  std::vector<geometry::NncForm<T>> forms;  // of each cone, for the containment tests
   for (std::size_t i = 0; i < out.sets.size(); ++i) {
     const auto& letters = out.sets[i].mode.letters;
-    const bool shared = cones && std::any_of(letters.begin(), letters.end(), unconstrained);
-    SetCone<T> c = shared ? cones->cone(goal, i, out.sets[i], route) : set_cone<T>(goal, out.sets[i], route);
-    out.cones.push_back(std::move(c.cone));
-    forms.push_back(std::move(c.form));
-  }
-  out.redundant.assign(out.cones.size(), false);
-  for (std::size_t i = 0; i < out.cones.size(); ++i) {
-    const bool empty = is_empty_cone<T>(out.cones[i]);
-    for (std::size_t j = 0; j < out.cones.size() && !out.redundant[i]; ++j) {
-      if (i == j || out.redundant[j]) continue;
-      if (empty ||
-          geometry::contains<T>(out.cones[j], out.cones[i], forms[i]).status == geometry::ContainmentStatus::kContained)
-        out.redundant[i] = true;
+    if (cones && std::any_of(letters.begin(), letters.end(), unconstrained)) {
+      const SetCone<T>& c = cones->cone(goal, i, out.sets[i], route);
+      out.cones.push_back(c.cone);
+      out.forms.push_back(c.form);
+    } else {
+      out.cones.push_back(set_cone<T>(goal, out.sets[i], route));
+      out.forms.emplace_back();
     }
   }
+  if (redundancy == Redundancy::kFound) find_redundant(out);
   return out;
 }
 
@@ -122,10 +136,11 @@ BoundaryPieces<T, bool> insertion_pushes(const geometry::PlanarScene& goal, cons
   return boundary_pieces<T, bool>(goal, cone_rows<T>(cones), [&](const Vec<T>& g) { return ins.in_goal(g); });
 }
 
-#define CONTACTCERT_INSERTION_INSTANTIATE(T)                                                   \
-  template struct Insertion<T>;                                                                \
-  template class InsertionCones<T>;                                                            \
-  template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route, InsertionCones<T>*); \
+#define CONTACTCERT_INSERTION_INSTANTIATE(T)                                                               \
+  template struct Insertion<T>;                                                                            \
+  template class InsertionCones<T>;                                                                        \
+  template void find_redundant<T>(Insertion<T>&);                                                          \
+  template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route, InsertionCones<T>*, Redundancy); \
   template BoundaryPieces<T, bool> insertion_pushes<T>(const geometry::PlanarScene&, const Insertion<T>&);
 CONTACTCERT_INSERTION_INSTANTIATE(double)
 CONTACTCERT_INSERTION_INSTANTIATE(Q)
