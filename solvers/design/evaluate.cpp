@@ -45,6 +45,9 @@ bool in_cone(const geometry::FaceCone<Q>& cone, const geometry::SphereArrangemen
 /// another, left out of the arrangement, add no point to the union). With `witness`, the point of the first such
 /// cell, highest dimension first. Runs the containment pass if insertion() left it.
 bool goal_nonempty(Insertion<Q>& ins, Vec<Q>* witness) {
+  // A cone of no rows is all of R^3: it covers every cell.
+  for (const auto& c : ins.cones)
+    if (c.inequalities.rows() + c.equalities.rows() + c.strict.rows() == 0 && !is_empty_cone<Q>(c)) return false;
   if (ins.redundant.empty()) find_redundant(ins);
   std::vector<const geometry::FaceCone<Q>*> cones;
   for (std::size_t i = 0; i < ins.cones.size(); ++i)

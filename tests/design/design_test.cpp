@@ -240,6 +240,27 @@ TEST(DesignEvaluate, ArrangementSignsAloneGiveTheSameCells) {
   }
 }
 
+TEST(DesignEvaluate, ArrangementSignsAloneGiveTheSameCellsOnRandomPlanes) {
+  // Small integer normals: simple vertices (two planes, the shortcut without points) and vertices of three or more.
+  std::uint32_t state = 12345;
+  auto next = [&]() {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<long>((state >> 16) % 7) - 3;
+  };
+  for (int trial = 0; trial < 40; ++trial) {
+    exact::Mat<geometry::Q> normals(4 + trial % 9, 3);
+    for (Eigen::Index r = 0; r < normals.rows(); ++r)
+      for (Eigen::Index j = 0; j < 3; ++j) normals(r, j) = geometry::Q(next(), 1 + trial % 4);
+    const auto full = geometry::sphere_arrangement<geometry::Q>(normals);
+    const auto signs = geometry::sphere_arrangement<geometry::Q>(normals, {}, geometry::CellPoints::kSigns);
+    ASSERT_EQ(full.cells.size(), signs.cells.size()) << trial;
+    for (std::size_t c = 0; c < full.cells.size(); ++c) {
+      EXPECT_EQ(full.cells[c].dimension, signs.cells[c].dimension) << trial << " " << c;
+      EXPECT_EQ(full.cells[c].signs, signs.cells[c].signs) << trial << " " << c;
+    }
+  }
+}
+
 TEST(DesignEvaluate, SharedInsertionConesAreTheConesOfEachPlacement) {
   const DesignProblem p = pentagon_problem();
   InsertionCones<geometry::Q> shared(40);  // small: the cache is also emptied on the way
