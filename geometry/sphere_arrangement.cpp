@@ -224,7 +224,7 @@ class Builder {
     if (through != 2) return false;
     const int t = triple_sign(n_[f], nd_[f], n_[o], nd_[o], v);
     const std::array<std::array<int, 3>, 8> around{
-        {{2, 0, -t}, {3, 1, -t}, {2, 1, 0}, {3, 1, -t}, {2, 0, t}, {3, -1, t}, {2, -1, 0}, {3, -1, -t}}};
+        {{2, 0, -t}, {3, 1, -t}, {2, 1, 0}, {3, 1, t}, {2, 0, t}, {3, -1, t}, {2, -1, 0}, {3, -1, -t}}};
     for (const auto& [dimension, sf, so] : around) {
       std::vector<int> s(sv);
       s[f] = sf;
