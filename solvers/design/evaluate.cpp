@@ -107,21 +107,22 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
   const geometry::PlanarScene scene = placement_scene(problem, placement);
   const Mat<Q>& W = problem.wrenches.rows;
   const bool stable_under = problem.wrenches.kind != WrenchSet::Kind::kNone;
-  std::optional<StableRegion<Q>> region;  // the moving modes' cones, for a cone of wrenches and the margin
+  std::optional<StabilityOracle<Q>> oracle;  // its mode tree also gives the moving modes' cones
+  std::optional<StableRegion<Q>> region;     // the moving modes' cones, for a cone of wrenches and the margin
   if (stable_under) {
     const geometry::FaceCone<Q> weak = weakly_stable_cone<Q>(scene);
     for (Eigen::Index r = 0; r < W.rows(); ++r)
       if (!geometry::contains_point<Q>(weak, row_vector(W, r))) return reject(PlacementStatus::kNotWeaklyStable);
-    const StabilityOracle<Q> oracle(scene, {exact::Arith::kVerified});
-    out.lps += oracle.preparation_lps();
+    oracle.emplace(scene, StabilityOptions{exact::Arith::kVerified});
+    out.lps += oracle->preparation_lps();
     for (Eigen::Index r = 0; r < W.rows(); ++r) {
-      StabilityResult<Q> v = oracle.verdict(row_vector(W, r));
+      StabilityResult<Q> v = oracle->verdict(row_vector(W, r));
       out.lps += v.lps;
       if (v.verdict != StabilityVerdict::kStronglyStable) return reject(PlacementStatus::kNotStronglyStable);
       if (evidence) evidence->stability.push_back(std::move(v));
     }
     if (problem.wrenches.kind == WrenchSet::Kind::kCone) {
-      region = mode_cones<Q>(scene);
+      region = mode_cones<Q>(scene, oracle->mode_tree());
       const geometry::FaceCone<Q> generated =
           geometry::to_face<Q>(geometry::SpanCone<Q>::from_rows(3, W, Mat<Q>(0, 3)));
       for (const auto& c : region->cones)
@@ -164,7 +165,7 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
   }
   // The margin last: it rejects nothing, so a placement rejected above needs none.
   if (stable_under && problem.rank == Rank::kMargin) {
-    if (!region) region = mode_cones<Q>(scene);
+    if (!region) region = mode_cones<Q>(scene, oracle->mode_tree());
     for (Eigen::Index r = 0; r < W.rows(); ++r) {
       const Margin<Q> m = stability_margin<Q>(*region, row_vector(W, r));
       if (r == 0 || m.squared_radius < out.figure) out.figure = m.squared_radius;

@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "exact/input_error.h"
+#include "geometry/canonical.h"
 #include "geometry/sphere_arrangement.h"
 #include "solvers/design/candidates.h"
 #include "solvers/design/ranking.h"
 #include "solvers/design/symmetry.h"
 #include "solvers/insertion/insertion.h"
+#include "solvers/stability/stable_region.h"
 #include "solvers/stability/strong_stability.h"
 
 namespace contactcert::solvers {
@@ -259,6 +261,23 @@ TEST(DesignEvaluate, ArrangementSignsAloneGiveTheSameCellsOnRandomPlanes) {
       EXPECT_EQ(full.cells[c].signs, signs.cells[c].signs) << trial << " " << c;
     }
   }
+}
+
+TEST(DesignEvaluate, ModeConesFromTheOraclesTreeAreTheWalkedOnes) {
+  const DesignProblem p = pentagon_problem();
+  int compared = 0;
+  for (long i = 0; i < placement_count(8, 3); i += 3) {
+    const geometry::PlanarScene scene = placement_scene(p, placement_at(i, 8, 3));
+    const StabilityOracle<geometry::Q> oracle(scene);
+    const auto walked = mode_cones<geometry::Q>(scene), reused = mode_cones<geometry::Q>(scene, oracle.mode_tree());
+    ASSERT_EQ(walked.modes.size(), reused.modes.size()) << i;
+    for (std::size_t m = 0; m < walked.modes.size(); ++m) {
+      EXPECT_EQ(walked.modes[m].text(), reused.modes[m].text()) << i;
+      EXPECT_TRUE(geometry::identical(walked.cones[m], reused.cones[m])) << i;
+    }
+    compared += static_cast<int>(walked.modes.size());
+  }
+  EXPECT_GT(compared, 0);
 }
 
 TEST(DesignEvaluate, SharedInsertionConesAreTheConesOfEachPlacement) {
