@@ -2,6 +2,8 @@
 // of the top K (independent of how the placements were split), symmetry, chunk results as text.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "exact/input_error.h"
 #include "geometry/canonical.h"
 #include "geometry/sphere_arrangement.h"
@@ -244,11 +246,9 @@ TEST(DesignEvaluate, ArrangementSignsAloneGiveTheSameCells) {
 
 TEST(DesignEvaluate, ArrangementSignsAloneGiveTheSameCellsOnRandomPlanes) {
   // Small integer normals: simple vertices (two planes, the shortcut without points) and vertices of three or more.
-  std::uint32_t state = 12345;
-  auto next = [&]() {
-    state = state * 1664525u + 1013904223u;
-    return static_cast<long>((state >> 16) % 7) - 3;
-  };
+  std::mt19937 rng(12345);
+  std::uniform_int_distribution<long> entry(-3, 3);
+  auto next = [&]() { return entry(rng); };
   for (int trial = 0; trial < 40; ++trial) {
     exact::Mat<geometry::Q> normals(4 + trial % 9, 3);
     for (Eigen::Index r = 0; r < normals.rows(); ++r)
