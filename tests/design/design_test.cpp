@@ -2,10 +2,12 @@
 // of the top K (independent of how the placements were split), symmetry, chunk results as text.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "exact/input_error.h"
 #include "geometry/canonical.h"
+#include "geometry/set_ops.h"
 #include "geometry/sphere_arrangement.h"
 #include "solvers/design/candidates.h"
 #include "solvers/design/ranking.h"
@@ -294,6 +296,30 @@ TEST(DesignEvaluate, SharedInsertionConesAreTheConesOfEachPlacement) {
       EXPECT_EQ(fresh.cones[c].strict, kept.cones[c].strict) << i << " " << c;
     }
   }
+}
+
+TEST(DesignEvaluate, DeferredContainmentFindsTheRedundantConesOfTheExactTest) {
+  // find_redundant (float filter, then geometry::contains) against the exact test alone, pair by pair.
+  const DesignProblem p = pentagon_problem();
+  int redundant = 0;
+  for (long i = 0; i < placement_count(8, 3); i += 7) {
+    const geometry::PlanarScene scene = placement_scene(p, placement_at(i, 8, 3));
+    Insertion<geometry::Q> ins = insertion<geometry::Q>(scene, Route::kPaper, nullptr, Redundancy::kDeferred);
+    EXPECT_TRUE(ins.redundant.empty());
+    find_redundant(ins);
+    std::vector<bool> expected(ins.cones.size(), false);
+    for (std::size_t a = 0; a < ins.cones.size(); ++a) {
+      const bool empty = is_empty_cone<geometry::Q>(ins.cones[a]);
+      for (std::size_t b = 0; b < ins.cones.size() && !expected[a]; ++b)
+        if (a != b && !expected[b] &&
+            (empty || geometry::contains<geometry::Q>(ins.cones[b], ins.cones[a]).status ==
+                          geometry::ContainmentStatus::kContained))
+          expected[a] = true;
+    }
+    EXPECT_EQ(ins.redundant, expected) << i;
+    redundant += static_cast<int>(std::count(expected.begin(), expected.end(), true));
+  }
+  EXPECT_GT(redundant, 0);
 }
 
 }  // namespace contactcert::solvers
