@@ -265,11 +265,16 @@ TEST(DesignEvaluate, ArrangementSignsAloneGiveTheSameCellsOnRandomPlanes) {
   }
 }
 
-TEST(DesignEvaluate, ModeConesFromTheOraclesTreeAreTheWalkedOnes) {
+// f(i, scene of placement i) for every step-th placement of 3 fixels among the pentagon's 8 candidates.
+template <class F>
+void each_pentagon_placement(long step, F f) {
   const DesignProblem p = pentagon_problem();
+  for (long i = 0; i < placement_count(8, 3); i += step) f(i, placement_scene(p, placement_at(i, 8, 3)));
+}
+
+TEST(DesignEvaluate, ModeConesFromTheOraclesTreeAreTheWalkedOnes) {
   int compared = 0;
-  for (long i = 0; i < placement_count(8, 3); i += 3) {
-    const geometry::PlanarScene scene = placement_scene(p, placement_at(i, 8, 3));
+  each_pentagon_placement(3, [&](long i, const geometry::PlanarScene& scene) {
     const StabilityOracle<geometry::Q> oracle(scene);
     const auto walked = mode_cones<geometry::Q>(scene), reused = mode_cones<geometry::Q>(scene, oracle.mode_tree());
     ASSERT_EQ(walked.modes.size(), reused.modes.size()) << i;
@@ -278,7 +283,7 @@ TEST(DesignEvaluate, ModeConesFromTheOraclesTreeAreTheWalkedOnes) {
       EXPECT_TRUE(geometry::identical(walked.cones[m], reused.cones[m])) << i;
     }
     compared += static_cast<int>(walked.modes.size());
-  }
+  });
   EXPECT_GT(compared, 0);
 }
 
@@ -300,10 +305,8 @@ TEST(DesignEvaluate, SharedInsertionConesAreTheConesOfEachPlacement) {
 
 TEST(DesignEvaluate, DeferredContainmentFindsTheRedundantConesOfTheExactTest) {
   // find_redundant (float filter, then geometry::contains) against the exact test alone, pair by pair.
-  const DesignProblem p = pentagon_problem();
   int redundant = 0;
-  for (long i = 0; i < placement_count(8, 3); i += 7) {
-    const geometry::PlanarScene scene = placement_scene(p, placement_at(i, 8, 3));
+  each_pentagon_placement(7, [&](long i, const geometry::PlanarScene& scene) {
     Insertion<geometry::Q> ins = insertion<geometry::Q>(scene, Route::kPaper, nullptr, Redundancy::kDeferred);
     EXPECT_TRUE(ins.redundant.empty());
     find_redundant(ins);
@@ -318,7 +321,7 @@ TEST(DesignEvaluate, DeferredContainmentFindsTheRedundantConesOfTheExactTest) {
     }
     EXPECT_EQ(ins.redundant, expected) << i;
     redundant += static_cast<int>(std::count(expected.begin(), expected.end(), true));
-  }
+  });
   EXPECT_GT(redundant, 0);
 }
 
