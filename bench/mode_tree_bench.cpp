@@ -5,6 +5,7 @@
 // And the contact modes from rest of bench/modes_polygons.py's polygons (k fixels in convex position on a lower
 // chain, touching or all at a gap) in process: by the prefixes' cones (what `modes` runs), by an LP per prefix
 // (verified) and in doubles (the float LP walk, no certificate): time, prefixes, modes.
+// It runs with the command line's memory settings (runtime/memory.h), so that it times what a user's run does.
 //   build/bench/mode_tree_bench --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>
 
@@ -16,6 +17,7 @@
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
+#include "runtime/memory.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
@@ -215,4 +217,12 @@ BENCHMARK(BM_Region)->Arg(4)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  contactcert::runtime::keep_heap_until_exit();
+  contactcert::runtime::use_pooled_gmp_memory();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -113,6 +113,24 @@ int dot_sign(const V3<double>& n, const V3<double>&, const V3<double>& u, const 
   return sign_of(dot(n, u));
 }
 
+// sign det(a, b, v) = sign a . (b x v): in doubles when the float value clears its error bound (inputs rounded
+// once, three-term products, five sums: under 12 u sum of the terms' magnitudes; taken as 1e-14, which an overflow
+// never clears), else exactly.
+int triple_sign(const V3<Z>& a, const V3<double>& ad, const V3<Z>& b, const V3<double>& bd, const V3<Z>& v) {
+  const V3<double> vd = to_double(v);
+  const V3<double> c{bd[1] * vd[2], bd[2] * vd[0], bd[0] * vd[1]}, e{bd[2] * vd[1], bd[0] * vd[2], bd[1] * vd[0]};
+  double s = 0, m = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    s += ad[i] * c[i] - ad[i] * e[i];
+    m += std::abs(ad[i] * c[i]) + std::abs(ad[i] * e[i]);
+  }
+  if (std::abs(s) > 1e-14 * m) return s > 0 ? 1 : -1;
+  return sign_of(dot(a, cross(b, v)));
+}
+int triple_sign(const V3<double>& a, const V3<double>&, const V3<double>& b, const V3<double>&, const V3<double>& v) {
+  return sign_of(dot(a, cross(b, v)));
+}
+
 template <class T>
 Vec<T> from_ring(const V3<Ring<T>>& p) {
   Vec<T> v(3);
@@ -194,6 +212,28 @@ class Builder {
     keep(dimension, combine(b, v, a, u), std::move(s));
   }
 
+  // Without points, the eight cells around a vertex v on exactly the two planes f < o, in the order the general
+  // walk below finds them. With c_j = n_j x v and D = det(n_f, n_o, v), the tangent directions sorted around v are
+  // c_f, t c_o, -c_f, -t c_o (t = sign D: the angle of c_o from c_f is that of n_f . c_o = D), and the signs
+  // (n_f . u, n_o . u) along them and between them follow from n_f . c_o = D, n_o . c_f = -D.
+  bool add_simple_vertex(const V3<R>& v, const std::vector<int>& sv) {
+    if (points_ || !std::is_same_v<R, Z>) return false;  // floats take the general walk
+    std::size_t f = n_.size(), o = n_.size(), through = 0;
+    for (std::size_t j = 0; j < n_.size(); ++j)
+      if (sv[j] == 0) (through++ == 0 ? f : o) = j;
+    if (through != 2) return false;
+    const int t = triple_sign(n_[f], nd_[f], n_[o], nd_[o], v);
+    const std::array<std::array<int, 3>, 8> around{
+        {{2, 0, -t}, {3, 1, -t}, {2, 1, 0}, {3, 1, t}, {2, 0, t}, {3, -1, t}, {2, -1, 0}, {3, -1, -t}}};
+    for (const auto& [dimension, sf, so] : around) {
+      std::vector<int> s(sv);
+      s[f] = sf;
+      s[o] = so;
+      record(dimension, v, std::move(s));
+    }
+    return true;
+  }
+
   // Keeps the cell of sign vector s (with the point p if points are kept) unless it is known.
   void record(int dimension, const V3<R>& p, std::vector<int> s) {
     if (seen_.insert(s).second) keep(dimension, p, std::move(s));
@@ -270,6 +310,7 @@ SphereArrangement<T> sphere_arrangement(const Mat<T>& normals, const Arrangement
       b.check_budget(std::to_string(visited++) + " of " + std::to_string(vertices.size()) + " vertices visited");
       const std::vector<int> sv = b.signs_at(v);
       b.record(1, v, sv);
+      if (b.add_simple_vertex(v, sv)) continue;
       // Tangent directions at v of the circles through v, sorted around v.
       std::vector<V3<R>> dirs;
       for (std::size_t j = 0; j < n.size(); ++j)

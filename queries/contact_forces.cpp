@@ -67,6 +67,12 @@ json contacts_json(const geometry::PlanarScene& scene, const std::vector<Eigen::
 }
 
 template <class T>
+json contacts_json(const solvers::ForceFrames& frames, const std::vector<Eigen::Index>& touching,
+                   const exact::Vec<T>& c) {
+  return forces_json(frames.forces<T>(touching, c), "fixel");
+}
+
+template <class T>
 std::string contacts_text(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
                           const exact::Vec<T>& c, const std::string& indent) {
   return forces_text(solvers::world_forces<T>(scene, touching, c), "fixel", indent);
@@ -121,6 +127,8 @@ template json forces_json(const std::vector<solvers::WorldForce<Q>>&, const std:
 template std::string forces_text(const std::vector<solvers::WorldForce<Q>>&, const std::string&, const std::string&);
 template json contacts_json(const geometry::PlanarScene&, const std::vector<Eigen::Index>&, const exact::Vec<Q>&);
 template json contacts_json(const geometry::PlanarScene&, const std::vector<Eigen::Index>&, const exact::Vec<double>&);
+template json contacts_json(const solvers::ForceFrames&, const std::vector<Eigen::Index>&, const exact::Vec<Q>&);
+template json contacts_json(const solvers::ForceFrames&, const std::vector<Eigen::Index>&, const exact::Vec<double>&);
 template std::string contacts_text(const geometry::PlanarScene&, const std::vector<Eigen::Index>&, const exact::Vec<Q>&,
                                    const std::string&);
 template std::string contacts_text(const geometry::PlanarScene&, const std::vector<Eigen::Index>&,

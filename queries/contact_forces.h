@@ -32,6 +32,10 @@ std::string forces_text(const std::vector<solvers::WorldForce<T>>& forces, const
 template <class T>
 json contacts_json(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
                    const exact::Vec<T>& c);
+/// The same from the scene's force frames, prepared once for many answers.
+template <class T>
+json contacts_json(const solvers::ForceFrames& frames, const std::vector<Eigen::Index>& touching,
+                   const exact::Vec<T>& c);
 
 /// One line per touching fixel, each starting with `indent`: "fixel i at (x, y): force (fx, fy), torque tau
 /// (c_n = .. along n = (..), c_t = .. along t = (..))".

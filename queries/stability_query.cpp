@@ -39,13 +39,16 @@ json result_json(const StabilityAnswer& a, const StabilityResult<T>& r) {
   for (auto i : r.touching) touching.push_back(i);
   j["touching_fixels"] = touching;
   json w;
+  auto contacts = [&](const exact::Vec<T>& c) {
+    return a.frames ? contacts_json(*a.frames, r.touching, c) : contacts_json(a.scene, r.touching, c);
+  };
   if (r.has_resting) {
     w["resting_forces"] = vector_json(r.resting_forces);
-    w["resting_contacts"] = contacts_json(a.scene, r.touching, r.resting_forces);
+    w["resting_contacts"] = contacts(r.resting_forces);
   }
   if (r.has_moving) {
     w["moving"] = moving_json(r.moving);
-    w["moving"]["contacts"] = contacts_json(a.scene, r.touching, r.moving.forces);
+    w["moving"]["contacts"] = contacts(r.moving.forces);
   }
   j["witness"] = w;
   j["lps"] = r.lps;
@@ -75,7 +78,7 @@ StabilityAnswer stability_answer(const SceneInput& input, const StabilityQueryOp
   const exact::Arith arith = scene_arith(options.common.arith);
   const exact::Vec<Q>& g = options.wrench;
   const exact::Deadline deadline = options.common.deadline();
-  StabilityAnswer a{input.scene, g, arith, StabilityResult<Q>{}, std::nullopt, "", ""};
+  StabilityAnswer a{input.scene, g, arith, StabilityResult<Q>{}, std::nullopt, "", "", nullptr};
   if (arith == exact::Arith::kFloat) {
     if (!options.certificate.empty())
       throw exact::InputError("command line", "--certificate", "certificates need --arith exact or verified");

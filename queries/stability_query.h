@@ -4,6 +4,7 @@
 // margin of section 8 (the squared radius of the largest strongly stable ball around g, eq. 19).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -14,6 +15,7 @@
 #include "queries/scene_input.h"
 #include "solvers/stability/margin.h"
 #include "solvers/stability/strong_stability.h"
+#include "solvers/stability/world_forces.h"
 
 namespace contactcert::queries {
 
@@ -35,6 +37,8 @@ struct StabilityAnswer {
   std::optional<solvers::Margin<exact::Q>> margin;  ///< asked for and g strongly stable
   std::string certificate;                          ///< the file written ("" = none)
   std::string certificate_text;                     ///< its text ("" = none)
+  /// The scene's force frames when a batch prepared them once (StabilityVerdicts), else null: built per answer.
+  std::shared_ptr<const solvers::ForceFrames> frames;
 };
 
 /// The solver's options of a run: its arithmetic (as scene_arith runs it), the default node budget and `deadline`.

@@ -12,6 +12,9 @@ using exact::Vec;
 
 StabilityVerdicts::StabilityVerdicts(const geometry::PlanarScene& scene, const CommonOptions& common)
     : scene_(scene), arith_(scene_arith(common.arith)) {
+  std::vector<Eigen::Index> every(scene.fixels.size());
+  for (std::size_t i = 0; i < every.size(); ++i) every[i] = static_cast<Eigen::Index>(i);
+  frames_ = std::make_shared<const solvers::ForceFrames>(scene, every);
   const solvers::StabilityOptions options = stability_options(arith_, common.deadline());
   if (arith_ == exact::Arith::kFloat)
     float_.emplace(scene, options);
@@ -27,7 +30,7 @@ StabilityOutcome StabilityVerdicts::verdict(const Vec<Q>& g) const {
 StabilityAnswer StabilityVerdicts::answer(const Vec<Q>& g) const { return answer(g, verdict(g)); }
 
 StabilityAnswer StabilityVerdicts::answer(const Vec<Q>& g, StabilityOutcome verdict) const {
-  return {scene_, g, arith_, std::move(verdict), std::nullopt, "", ""};
+  return {scene_, g, arith_, std::move(verdict), std::nullopt, "", "", frames_};
 }
 
 std::vector<StabilityOutcome> StabilityVerdicts::verdicts(const std::vector<Vec<Q>>& wrenches) const {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,7 @@ class StabilityVerdicts {
   exact::Arith arith_;
   std::optional<solvers::StabilityOracle<exact::Q>> exact_;
   std::optional<solvers::StabilityOracle<double>> float_;
+  std::shared_ptr<const solvers::ForceFrames> frames_;  // of every fixel, for the answers' contact forces
 };
 
 struct WrenchesOptions {

@@ -1,5 +1,7 @@
 #include "solvers/design/evaluate.h"
 
+#include <optional>
+
 #include "geometry/double_description.h"
 #include "geometry/set_ops.h"
 #include "geometry/sphere_arrangement.h"
@@ -41,8 +43,12 @@ bool in_cone(const geometry::FaceCone<Q>& cone, const geometry::SphereArrangemen
 /// Is G_goal (the complement of the union of the insertion cones) non-empty? G_goal is a union of cells of the
 /// arrangement of the cones' planes, so one point per cell decides it, by the cell's signs (the cones contained in
 /// another, left out of the arrangement, add no point to the union). With `witness`, the point of the first such
-/// cell, highest dimension first.
-bool goal_nonempty(const Insertion<Q>& ins, Vec<Q>* witness) {
+/// cell, highest dimension first. Runs the containment pass if insertion() left it.
+bool goal_nonempty(Insertion<Q>& ins, Vec<Q>* witness) {
+  // A cone of no rows is all of R^3: it covers every cell.
+  for (const auto& c : ins.cones)
+    if (c.inequalities.rows() + c.equalities.rows() + c.strict.rows() == 0 && !is_empty_cone<Q>(c)) return false;
+  if (ins.redundant.empty()) find_redundant(ins);
   std::vector<const geometry::FaceCone<Q>*> cones;
   for (std::size_t i = 0; i < ins.cones.size(); ++i)
     if (!ins.redundant[i] && !is_empty_cone<Q>(ins.cones[i])) cones.push_back(&ins.cones[i]);
@@ -101,37 +107,30 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
   const geometry::PlanarScene scene = placement_scene(problem, placement);
   const Mat<Q>& W = problem.wrenches.rows;
   const bool stable_under = problem.wrenches.kind != WrenchSet::Kind::kNone;
+  std::optional<StabilityOracle<Q>> oracle;  // its mode tree also gives the moving modes' cones
+  std::optional<StableRegion<Q>> region;     // the moving modes' cones, for a cone of wrenches and the margin
   if (stable_under) {
     const geometry::FaceCone<Q> weak = weakly_stable_cone<Q>(scene);
     for (Eigen::Index r = 0; r < W.rows(); ++r)
       if (!geometry::contains_point<Q>(weak, row_vector(W, r))) return reject(PlacementStatus::kNotWeaklyStable);
-    const StabilityOracle<Q> oracle(scene, {exact::Arith::kVerified});
-    out.lps += oracle.preparation_lps();
+    oracle.emplace(scene, StabilityOptions{exact::Arith::kVerified});
+    out.lps += oracle->preparation_lps();
     for (Eigen::Index r = 0; r < W.rows(); ++r) {
-      StabilityResult<Q> v = oracle.verdict(row_vector(W, r));
+      StabilityResult<Q> v = oracle->verdict(row_vector(W, r));
       out.lps += v.lps;
       if (v.verdict != StabilityVerdict::kStronglyStable) return reject(PlacementStatus::kNotStronglyStable);
       if (evidence) evidence->stability.push_back(std::move(v));
     }
-    const bool cone = problem.wrenches.kind == WrenchSet::Kind::kCone;
-    if (cone || problem.rank == Rank::kMargin) {
-      const StableRegion<Q> region = mode_cones<Q>(scene);
-      if (cone) {
-        const geometry::FaceCone<Q> generated =
-            geometry::to_face<Q>(geometry::SpanCone<Q>::from_rows(3, W, Mat<Q>(0, 3)));
-        for (const auto& c : region.cones)
-          if (meets_beyond_origin(generated, c)) return reject(PlacementStatus::kConeMeetsMovingMode);
-      }
-      if (problem.rank == Rank::kMargin)
-        for (Eigen::Index r = 0; r < W.rows(); ++r) {
-          const Margin<Q> m = stability_margin<Q>(region, row_vector(W, r));
-          if (r == 0 || m.squared_radius < out.figure) out.figure = m.squared_radius;
-          if (evidence) evidence->margins.push_back(m);
-        }
+    if (problem.wrenches.kind == WrenchSet::Kind::kCone) {
+      region = mode_cones<Q>(scene, oracle->mode_tree());
+      const geometry::FaceCone<Q> generated =
+          geometry::to_face<Q>(geometry::SpanCone<Q>::from_rows(3, W, Mat<Q>(0, 3)));
+      for (const auto& c : region->cones)
+        if (meets_beyond_origin(generated, c)) return reject(PlacementStatus::kConeMeetsMovingMode);
     }
   }
   if (problem.insertable) {
-    const Insertion<Q> ins = insertion<Q>(scene, Route::kPaper, cones);
+    Insertion<Q> ins = insertion<Q>(scene, Route::kPaper, cones, Redundancy::kDeferred);
     long in_goal = 0, first = -1;
     Vec<Q> push_witness;
     for (std::size_t i = 0; i < problem.pushes.size(); ++i) {
@@ -162,6 +161,15 @@ Evaluation evaluate_placement(const DesignProblem& problem, const CandidateSymme
       evidence->goal_witness = in_goal > 0 ? push_witness : witness;  // a finger push reads better
       evidence->goal_pushes = in_goal;
       evidence->goal_push_point = first;
+    }
+  }
+  // The margin last: it rejects nothing, so a placement rejected above needs none.
+  if (stable_under && problem.rank == Rank::kMargin) {
+    if (!region) region = mode_cones<Q>(scene, oracle->mode_tree());
+    for (Eigen::Index r = 0; r < W.rows(); ++r) {
+      const Margin<Q> m = stability_margin<Q>(*region, row_vector(W, r));
+      if (r == 0 || m.squared_radius < out.figure) out.figure = m.squared_radius;
+      if (evidence) evidence->margins.push_back(m);
     }
   }
   return out;

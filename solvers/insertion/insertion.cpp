@@ -1,6 +1,8 @@
 #include "solvers/insertion/insertion.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "exact/input_error.h"
 #include "geometry/nnc_cone.h"
@@ -55,13 +57,11 @@ bool Insertion<T>::in_goal(const Vec<T>& g) const {
 
 namespace {
 
-/// G of one set in the goal scene: the wrench cone of the set's mode in the set's contact state, with its form.
+/// G of one set in the goal scene: the wrench cone of the set's mode in the set's contact state.
 template <class T>
-SetCone<T> set_cone(const geometry::PlanarScene& goal, const InsertionSet& set, Route route) {
+geometry::FaceCone<T> set_cone(const geometry::PlanarScene& goal, const InsertionSet& set, Route route) {
   const geometry::PlanarScene s = scene_in_state(goal, set.state);
-  SetCone<T> out{wrench_cone_face<T>(s, contact_model<T>(s), set.mode, route), {}};
-  if (!is_empty_cone<T>(out.cone)) out.form = geometry::nnc_form<T>(out.cone);
-  return out;
+  return wrench_cone_face<T>(s, contact_model<T>(s), set.mode, route);
 }
 
 bool unconstrained(Interaction letter) { return letter == Interaction::kUnconstrained; }
@@ -80,37 +80,130 @@ const SetCone<T>& InsertionCones<T>::cone(const geometry::PlanarScene& goal, std
   const auto known = cones_.find(key);
   if (known != cones_.end()) return known->second;
   if (cones_.size() >= capacity_) cones_.clear();
-  return cones_.emplace(std::move(key), set_cone<T>(goal, set, route)).first->second;
+  SetCone<T> c{set_cone<T>(goal, set, route), std::nullopt};
+  if (!is_empty_cone<T>(c.cone)) c.form = geometry::nnc_form<T>(c.cone);
+  return cones_.emplace(std::move(key), std::move(c)).first->second;
+}
+
+namespace {
+
+// A float filter for "c is not in the cone" (the first test of geometry::contains, c the sum of the inner cone's
+// closure rays): rows and point rounded to doubles once; sign(row . c) taken from the float dot when it clears its
+// error bound (each operand within 2^-52 relative, three products, two sums: under 8 u sum |row_k c_k|; taken as
+// 1e-14), else unknown. Unusable (every sign unknown) when a non-zero rational rounds to 0, a subnormal or infinity.
+struct FloatRows {
+  std::vector<std::array<double, 3>> equalities, inequalities, strict;
+  bool usable = true;
+};
+
+bool rounds_well(const Q& x, double& d) {
+  d = x.get_d();
+  return sgn(x) == 0 ? d == 0 : std::isnormal(d);
+}
+
+template <class M>
+std::vector<std::array<double, 3>> float_rows(const M& rows, bool& usable) {
+  std::vector<std::array<double, 3>> out(static_cast<std::size_t>(rows.rows()));
+  for (Eigen::Index r = 0; r < rows.rows(); ++r)
+    for (Eigen::Index k = 0; k < 3; ++k)
+      usable = rounds_well(rows(r, k), out[static_cast<std::size_t>(r)][k]) && usable;
+  return out;
+}
+
+FloatRows float_rows(const geometry::FaceCone<Q>& cone) {
+  FloatRows f;
+  if (cone.dim != 3) return f.usable = false, f;
+  f.equalities = float_rows(cone.equalities, f.usable);
+  f.inequalities = float_rows(cone.inequalities, f.usable);
+  f.strict = float_rows(cone.strict, f.usable);
+  return f;
+}
+
+// sign(row . c): -1, 0 (never: a zero is always unknown), 1, or 2 for unknown.
+int filtered_sign(const std::array<double, 3>& row, const std::array<double, 3>& c) {
+  double s = 0, m = 0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    s += row[k] * c[k];
+    m += std::abs(row[k] * c[k]);
+  }
+  if (std::abs(s) > 1e-14 * m) return s > 0 ? 1 : -1;
+  return 2;
+}
+
+// True when c is certainly not in the cone of `f` (as contains_point would find); false when in or unknown.
+bool certainly_outside(const FloatRows& f, const std::array<double, 3>& c) {
+  if (!f.usable) return false;
+  for (const auto& row : f.equalities)
+    if (filtered_sign(row, c) != 2) return true;  // a certain non-zero sign
+  for (const auto& row : f.inequalities)
+    if (filtered_sign(row, c) == 1) return true;
+  for (const auto& row : f.strict)
+    if (filtered_sign(row, c) == 1) return true;
+  return false;
+}
+
+}  // namespace
+
+template <class T>
+void find_redundant(Insertion<T>& ins) {
+  const std::size_t n = ins.cones.size();
+  ins.forms.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (!ins.forms[i] && !is_empty_cone<T>(ins.cones[i])) ins.forms[i] = geometry::nnc_form<T>(ins.cones[i]);
+  // Exact cones: each outer cone's rows and each inner cone's point c in doubles, so that most pairs are told apart
+  // without the exact test.
+  std::vector<FloatRows> outer;
+  std::vector<std::optional<std::array<double, 3>>> point(n);
+  if constexpr (std::is_same_v<T, Q>) {
+    for (std::size_t i = 0; i < n; ++i) {
+      outer.push_back(float_rows(ins.cones[i]));
+      const auto& form = ins.forms[i];
+      if (!form || form->status == geometry::NncStatus::kEmpty || form->closure.rays.cols() != 3) continue;
+      Vec<Q> c = Vec<Q>::Zero(3);
+      for (Eigen::Index r = 0; r < form->closure.rays.rows(); ++r) c += form->closure.rays.row(r).transpose();
+      std::array<double, 3> d{};
+      bool usable = true;
+      for (Eigen::Index k = 0; k < 3; ++k) usable = rounds_well(c(k), d[static_cast<std::size_t>(k)]) && usable;
+      if (usable) point[i] = d;
+    }
+  }
+  ins.redundant.assign(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool empty = is_empty_cone<T>(ins.cones[i]);
+    for (std::size_t j = 0; j < n && !ins.redundant[i]; ++j) {
+      if (i == j || ins.redundant[j]) continue;
+      if (!empty && point[i] && certainly_outside(outer[j], *point[i])) continue;  // contains() would say so
+      if (empty || geometry::contains<T>(ins.cones[j], ins.cones[i], *ins.forms[i]).status ==
+                       geometry::ContainmentStatus::kContained)
+        ins.redundant[i] = true;
+    }
+  }
 }
 
 template <class T>
-Insertion<T> insertion(const geometry::PlanarScene& goal, Route route, InsertionCones<T>* cones) {
+Insertion<T> insertion(const geometry::PlanarScene& goal, Route route, InsertionCones<T>* cones,
+                       Redundancy redundancy) {
   const std::size_t k = goal.fixels.size();
-  if (k != 2 && k != 3) throw exact::InputError("", "$.fixels", "insertion needs 2 or 3 fixels, found " + std::to_string(k));
+  if (k != 2 && k != 3)
+    throw exact::InputError("", "$.fixels", "insertion needs 2 or 3 fixels, found " + std::to_string(k));
   for (std::size_t i = 0; i < k; ++i)
     if (!goal.fixels[i].frame.touching())
       throw exact::InputError("", "$.fixels[" + std::to_string(i) + "]",
                               "insertion takes the goal configuration: every fixel must touch the workpiece");
   Insertion<T> out;
   out.sets = insertion_sets(k);
-  std::vector<geometry::NncForm<T>> forms;  // of each cone, for the containment tests
   for (std::size_t i = 0; i < out.sets.size(); ++i) {
     const auto& letters = out.sets[i].mode.letters;
-    const bool shared = cones && std::any_of(letters.begin(), letters.end(), unconstrained);
-    SetCone<T> c = shared ? cones->cone(goal, i, out.sets[i], route) : set_cone<T>(goal, out.sets[i], route);
-    out.cones.push_back(std::move(c.cone));
-    forms.push_back(std::move(c.form));
-  }
-  out.redundant.assign(out.cones.size(), false);
-  for (std::size_t i = 0; i < out.cones.size(); ++i) {
-    const bool empty = is_empty_cone<T>(out.cones[i]);
-    for (std::size_t j = 0; j < out.cones.size() && !out.redundant[i]; ++j) {
-      if (i == j || out.redundant[j]) continue;
-      if (empty ||
-          geometry::contains<T>(out.cones[j], out.cones[i], forms[i]).status == geometry::ContainmentStatus::kContained)
-        out.redundant[i] = true;
+    if (cones && std::any_of(letters.begin(), letters.end(), unconstrained)) {
+      const SetCone<T>& c = cones->cone(goal, i, out.sets[i], route);
+      out.cones.push_back(c.cone);
+      out.forms.push_back(c.form);
+    } else {
+      out.cones.push_back(set_cone<T>(goal, out.sets[i], route));
+      out.forms.emplace_back();
     }
   }
+  if (redundancy == Redundancy::kFound) find_redundant(out);
   return out;
 }
 
@@ -122,10 +215,11 @@ BoundaryPieces<T, bool> insertion_pushes(const geometry::PlanarScene& goal, cons
   return boundary_pieces<T, bool>(goal, cone_rows<T>(cones), [&](const Vec<T>& g) { return ins.in_goal(g); });
 }
 
-#define CONTACTCERT_INSERTION_INSTANTIATE(T)                                                   \
-  template struct Insertion<T>;                                                                \
-  template class InsertionCones<T>;                                                            \
-  template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route, InsertionCones<T>*); \
+#define CONTACTCERT_INSERTION_INSTANTIATE(T)                                                               \
+  template struct Insertion<T>;                                                                            \
+  template class InsertionCones<T>;                                                                        \
+  template void find_redundant<T>(Insertion<T>&);                                                          \
+  template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route, InsertionCones<T>*, Redundancy); \
   template BoundaryPieces<T, bool> insertion_pushes<T>(const geometry::PlanarScene&, const Insertion<T>&);
 CONTACTCERT_INSERTION_INSTANTIATE(double)
 CONTACTCERT_INSERTION_INSTANTIATE(Q)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,19 @@ template <class T>
 struct Insertion {
   std::vector<InsertionSet> sets;
   std::vector<geometry::FaceCone<T>> cones;  ///< G of each set (empty-cone encoding when empty)
-  std::vector<bool> redundant;               ///< contained in another set's cone (exactly checked)
-  bool in_goal(const Vec<T>& g) const;       ///< g in G_goal: in no set's cone
+  std::vector<bool> redundant;  ///< contained in another set's cone (exactly checked); empty until find_redundant
+  std::vector<std::optional<geometry::NncForm<T>>> forms;  ///< nnc_form of a non-empty cone, where already known
+  bool in_goal(const Vec<T>& g) const;                     ///< g in G_goal: in no set's cone
 };
+
+/// Fills ins.redundant: a cone is redundant when it is empty or contained in another cone not already redundant
+/// (the union, hence G_goal, stays the same without it).
+template <class T>
+void find_redundant(Insertion<T>& ins);
+
+/// Whether insertion() runs the containment pass (Insertion::redundant) or leaves it to find_redundant (in_goal
+/// reads every cone, so it needs none).
+enum class Redundancy { kFound, kDeferred };
 
 /// The scene in contact state `touching` (frames of the goal configuration; fixels not in contact get
 /// a positive gap).
@@ -44,7 +55,7 @@ geometry::PlanarScene scene_in_state(const geometry::PlanarScene& goal, const st
 template <class T>
 struct SetCone {
   geometry::FaceCone<T> cone;
-  geometry::NncForm<T> form;
+  std::optional<geometry::NncForm<T>> form;
 };
 
 template <class T>
@@ -63,16 +74,17 @@ class InsertionCones {
 /// `cones`, the cones of sets that leave a fixel unconstrained come from there.
 template <class T>
 Insertion<T> insertion(const geometry::PlanarScene& goal, Route route = Route::kPaper,
-                       InsertionCones<T>* cones = nullptr);
+                       InsertionCones<T>* cones = nullptr, Redundancy redundancy = Redundancy::kFound);
 
 /// Frictionless finger pushes along the boundary that lie in G_goal (Figure 10).
 template <class T>
 BoundaryPieces<T, bool> insertion_pushes(const geometry::PlanarScene& goal, const Insertion<T>& ins);
 
-#define CONTACTCERT_INSERTION_EXTERN(T)                                                               \
-  extern template struct Insertion<T>;                                                                \
-  extern template class InsertionCones<T>;                                                            \
-  extern template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route, InsertionCones<T>*); \
+#define CONTACTCERT_INSERTION_EXTERN(T)                                                                           \
+  extern template struct Insertion<T>;                                                                            \
+  extern template class InsertionCones<T>;                                                                        \
+  extern template void find_redundant<T>(Insertion<T>&);                                                          \
+  extern template Insertion<T> insertion<T>(const geometry::PlanarScene&, Route, InsertionCones<T>*, Redundancy); \
   extern template BoundaryPieces<T, bool> insertion_pushes<T>(const geometry::PlanarScene&, const Insertion<T>&);
 CONTACTCERT_INSERTION_EXTERN(double)
 CONTACTCERT_INSERTION_EXTERN(Q)

@@ -1,5 +1,7 @@
 #include "solvers/stability/margin.h"
 
+#include <type_traits>
+
 #include "exact/linalg.h"
 #include "geometry/double_description.h"
 
@@ -9,10 +11,49 @@ using Index = Eigen::Index;
 
 namespace {
 
+// face_distance below for exact numbers in R^3, without the inverse: the Gram matrix G = B^T B is singular exactly
+// when B's columns are dependent (always for more than three); one column b: |g|^2 - (b.g)^2 / |b|^2; two columns:
+// |g|^2 - (B^T g) . G^-1 B^T g with the 2 x 2 adjugate; three independent columns span R^3 (distance 0), with the ray
+// coefficients det(B with column i replaced by g) / det B by Cramer's rule.
+Q det3(const Mat<Q>& M) {
+  return Q(M(0, 0) * (M(1, 1) * M(2, 2) - M(1, 2) * M(2, 1)) - M(0, 1) * (M(1, 0) * M(2, 2) - M(1, 2) * M(2, 0)) +
+           M(0, 2) * (M(1, 0) * M(2, 1) - M(1, 1) * M(2, 0)));
+}
+
+std::optional<Q> face_distance_exact(const Vec<Q>& g, const Mat<Q>& B, Index rays) {
+  const Index m = B.cols();
+  if (m > 3) return std::nullopt;
+  if (m == 3) {
+    const Q d = det3(B);
+    if (sgn(d) == 0) return std::nullopt;
+    for (Index i = 0; i < rays; ++i) {
+      Mat<Q> Bi = B;
+      Bi.col(i) = g;
+      if (sgn(det3(Bi)) * sgn(d) < 0) return std::nullopt;
+    }
+    return Q(0);
+  }
+  const Q gg = g.dot(g);
+  if (m == 1) {
+    const Q bb = B.col(0).dot(B.col(0)), bg = B.col(0).dot(g);
+    if (sgn(bb) == 0 || (rays > 0 && sgn(bg) < 0)) return std::nullopt;
+    return Q(gg - bg * bg / bb);
+  }
+  const Q aa = B.col(0).dot(B.col(0)), ab = B.col(0).dot(B.col(1)), bb = B.col(1).dot(B.col(1));
+  const Q det = aa * bb - ab * ab;
+  if (sgn(det) == 0) return std::nullopt;
+  const Q ag = B.col(0).dot(g), bg = B.col(1).dot(g);
+  const Q ca = (bb * ag - ab * bg) / det, cb = (aa * bg - ab * ag) / det;  // G^-1 B^T g
+  if ((rays > 0 && sgn(ca) < 0) || (rays > 1 && sgn(cb) < 0)) return std::nullopt;
+  return Q(gg - ca * ag - cb * bg);
+}
+
 // Projection of g onto span(B) with the coefficients of the ray columns (the first `rays` columns)
 // non-negative; nullopt when B is dependent or a ray coefficient is negative.
 template <class T>
 std::optional<T> face_distance(const Vec<T>& g, const Mat<T>& B, Index rays) {
+  if constexpr (std::is_same_v<T, Q>)
+    if (B.rows() == 3) return face_distance_exact(g, B, rays);
   const Mat<T> BtB = B.transpose() * B;
   const auto inv = exact::inverse<T>(BtB);
   if (!inv) return std::nullopt;

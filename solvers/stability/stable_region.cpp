@@ -65,20 +65,20 @@ bool cell_in_cone(const geometry::SphereArrangement<T>& arr, const std::vector<i
 }  // namespace
 
 template <class T>
-StableRegion<T> mode_cones(const geometry::PlanarScene& full, Route route, const ModeTreeOptions& tree_options) {
+StableRegion<T> mode_cones(const geometry::PlanarScene& full, const ModeTree<T>& tree, Route route,
+                           const exact::Deadline& deadline) {
   StableRegion<T> out;
   const geometry::PlanarScene scene = touching_scene(full, &out.touching);
   out.weak = weakly_stable_cone<T>(scene);
   const ContactModel<T> model = contact_model<T>(scene);
   const std::size_t k = scene.fixels.size();
-  const ModeTree<T> tree = walk_modes(motion_model<T>(scene), moving_alphabet(k), tree_options);
   out.tree_nodes = tree.nodes;
   geometry::DdBudget cone_budget;
-  cone_budget.deadline = tree_options.deadline;
+  cone_budget.deadline = deadline;
   std::size_t done = 0;
   for (const ModeString& m : tree.modes) {
-    if (tree_options.deadline.expired())
-      throw exact::BudgetExceeded("wrench cones of the moving modes: " + tree_options.deadline.reached_text(),
+    if (deadline.expired())
+      throw exact::BudgetExceeded("wrench cones of the moving modes: " + deadline.reached_text(),
                                   std::to_string(done) + " of " + std::to_string(tree.modes.size()) +
                                       " kinematically feasible modes' cones computed");
     ++done;
@@ -89,6 +89,13 @@ StableRegion<T> mode_cones(const geometry::PlanarScene& full, Route route, const
     out.cones.push_back(std::move(c));
   }
   return out;
+}
+
+template <class T>
+StableRegion<T> mode_cones(const geometry::PlanarScene& full, Route route, const ModeTreeOptions& tree_options) {
+  const geometry::PlanarScene scene = touching_scene(full, nullptr);
+  const ModeTree<T> tree = walk_modes(motion_model<T>(scene), moving_alphabet(scene.fixels.size()), tree_options);
+  return mode_cones<T>(full, tree, route, tree_options.deadline);
 }
 
 template <class T>
@@ -132,6 +139,8 @@ StableRegion<T> stable_region(const geometry::PlanarScene& full, Route route, co
   template struct StableRegion<T>;                                                                     \
   template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&);                  \
   template StableRegion<T> mode_cones<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&); \
+  template StableRegion<T> mode_cones<T>(const geometry::PlanarScene&, const ModeTree<T>&, Route,      \
+                                         const exact::Deadline&);                                      \
   template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);
 CONTACTCERT_STABLE_REGION_INSTANTIATE(double)
 CONTACTCERT_STABLE_REGION_INSTANTIATE(Q)

@@ -44,6 +44,12 @@ template <class T>
 StableRegion<T> mode_cones(const geometry::PlanarScene& scene, Route route = Route::kPaper,
                            const ModeTreeOptions& tree = {});
 
+/// The same from the modes of a tree already walked over the scene's touching fixels with moving_alphabet (a
+/// StabilityOracle's mode_tree()), in that tree's order, without walking it again; tree_nodes is that tree's.
+template <class T>
+StableRegion<T> mode_cones(const geometry::PlanarScene& scene, const ModeTree<T>& tree, Route route = Route::kPaper,
+                           const exact::Deadline& deadline = {});
+
 /// The wrench cones of every moving mode of the touching fixels and the labelled cells of wrench space. Only
 /// the kinematically feasible modes (mode_tree.h) have a non-empty cone (forces c = 0 put M vdot in it), so
 /// only theirs are computed. The tree options' deadline also bounds the cones (their conversions' loops test it) and
@@ -57,6 +63,8 @@ StableRegion<T> stable_region(const geometry::PlanarScene& scene, Route route = 
   extern template struct StableRegion<T>;                                                                     \
   extern template geometry::FaceCone<T> weakly_stable_cone<T>(const geometry::PlanarScene&);                  \
   extern template StableRegion<T> mode_cones<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&); \
+  extern template StableRegion<T> mode_cones<T>(const geometry::PlanarScene&, const ModeTree<T>&, Route,      \
+                                                const exact::Deadline&);                                      \
   extern template StableRegion<T> stable_region<T>(const geometry::PlanarScene&, Route, const ModeTreeOptions&);
 CONTACTCERT_STABLE_REGION_EXTERN(double)
 CONTACTCERT_STABLE_REGION_EXTERN(Q)

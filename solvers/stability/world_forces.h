@@ -5,6 +5,7 @@
 // components against the frame the user wrote (reported_normal): the internal scaling stays internal.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "exact/number.h"
@@ -31,12 +32,36 @@ struct WorldForce {
 /// direction (docs/formats.md section 3).
 geometry::Point2 reported_normal(const geometry::Fixel& f);
 
+/// The part of world_forces that depends on the scene only, exact: per fixel its two columns of J (eq. 4; column i of
+/// J depends on fixel i and the centre of mass alone), its point and its reported frame. Prepared once, it serves
+/// every answer of a batch.
+class ForceFrames {
+ public:
+  /// The frames of the fixels `fixels` of the scene.
+  ForceFrames(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& fixels);
+  /// world_forces(scene, touching, c); every fixel of `touching` must be one of the constructor's.
+  template <class T>
+  std::vector<WorldForce<T>> forces(const std::vector<Eigen::Index>& touching, const Vec<T>& c) const;
+
+ private:
+  struct Frame {
+    Vec<exact::Q> point, normal, normal_wrench, tangent_wrench;  // p_i, the reported n_i, J's columns i and k + i
+    exact::Q normal_squared;                                     // |n_i|^2
+  };
+  std::vector<std::optional<Frame>> by_fixel_;
+};
+
 /// The world forces of `c` (the layout of StabilityResult: normals then tangents of the touching fixels
 /// `touching`, in that order). Then sum_i (f_i, torque_i) = J c, so a resting solution has
 /// sum_i f_i + (g_x, g_y) = 0 and sum_i torque_i + g_tau = 0 (eq. 4 with zero acceleration).
 template <class T>
 std::vector<WorldForce<T>> world_forces(const geometry::PlanarScene& scene, const std::vector<Eigen::Index>& touching,
                                         const Vec<T>& c);
+
+extern template std::vector<WorldForce<double>> ForceFrames::forces<double>(const std::vector<Eigen::Index>&,
+                                                                            const Vec<double>&) const;
+extern template std::vector<WorldForce<exact::Q>> ForceFrames::forces<exact::Q>(const std::vector<Eigen::Index>&,
+                                                                                const Vec<exact::Q>&) const;
 
 extern template std::vector<WorldForce<double>> world_forces<double>(const geometry::PlanarScene&,
                                                                      const std::vector<Eigen::Index>&,

@@ -2,12 +2,18 @@
 // of the top K (independent of how the placements were split), symmetry, chunk results as text.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+
 #include "exact/input_error.h"
+#include "geometry/canonical.h"
+#include "geometry/set_ops.h"
 #include "geometry/sphere_arrangement.h"
 #include "solvers/design/candidates.h"
 #include "solvers/design/ranking.h"
 #include "solvers/design/symmetry.h"
 #include "solvers/insertion/insertion.h"
+#include "solvers/stability/stable_region.h"
 #include "solvers/stability/strong_stability.h"
 
 namespace contactcert::solvers {
@@ -240,6 +246,47 @@ TEST(DesignEvaluate, ArrangementSignsAloneGiveTheSameCells) {
   }
 }
 
+TEST(DesignEvaluate, ArrangementSignsAloneGiveTheSameCellsOnRandomPlanes) {
+  // Small integer normals: simple vertices (two planes, the shortcut without points) and vertices of three or more.
+  std::mt19937 rng(12345);
+  std::uniform_int_distribution<long> entry(-3, 3);
+  auto next = [&]() { return entry(rng); };
+  for (int trial = 0; trial < 40; ++trial) {
+    exact::Mat<geometry::Q> normals(4 + trial % 9, 3);
+    for (Eigen::Index r = 0; r < normals.rows(); ++r)
+      for (Eigen::Index j = 0; j < 3; ++j) normals(r, j) = geometry::Q(next(), 1 + trial % 4);
+    const auto full = geometry::sphere_arrangement<geometry::Q>(normals);
+    const auto signs = geometry::sphere_arrangement<geometry::Q>(normals, {}, geometry::CellPoints::kSigns);
+    ASSERT_EQ(full.cells.size(), signs.cells.size()) << trial;
+    for (std::size_t c = 0; c < full.cells.size(); ++c) {
+      EXPECT_EQ(full.cells[c].dimension, signs.cells[c].dimension) << trial << " " << c;
+      EXPECT_EQ(full.cells[c].signs, signs.cells[c].signs) << trial << " " << c;
+    }
+  }
+}
+
+// f(i, scene of placement i) for every step-th placement of 3 fixels among the pentagon's 8 candidates.
+template <class F>
+void each_pentagon_placement(long step, F f) {
+  const DesignProblem p = pentagon_problem();
+  for (long i = 0; i < placement_count(8, 3); i += step) f(i, placement_scene(p, placement_at(i, 8, 3)));
+}
+
+TEST(DesignEvaluate, ModeConesFromTheOraclesTreeAreTheWalkedOnes) {
+  int compared = 0;
+  each_pentagon_placement(3, [&](long i, const geometry::PlanarScene& scene) {
+    const StabilityOracle<geometry::Q> oracle(scene);
+    const auto walked = mode_cones<geometry::Q>(scene), reused = mode_cones<geometry::Q>(scene, oracle.mode_tree());
+    ASSERT_EQ(walked.modes.size(), reused.modes.size()) << i;
+    for (std::size_t m = 0; m < walked.modes.size(); ++m) {
+      EXPECT_EQ(walked.modes[m].text(), reused.modes[m].text()) << i;
+      EXPECT_TRUE(geometry::identical(walked.cones[m], reused.cones[m])) << i;
+    }
+    compared += static_cast<int>(walked.modes.size());
+  });
+  EXPECT_GT(compared, 0);
+}
+
 TEST(DesignEvaluate, SharedInsertionConesAreTheConesOfEachPlacement) {
   const DesignProblem p = pentagon_problem();
   InsertionCones<geometry::Q> shared(40);  // small: the cache is also emptied on the way
@@ -254,6 +301,28 @@ TEST(DesignEvaluate, SharedInsertionConesAreTheConesOfEachPlacement) {
       EXPECT_EQ(fresh.cones[c].strict, kept.cones[c].strict) << i << " " << c;
     }
   }
+}
+
+TEST(DesignEvaluate, DeferredContainmentFindsTheRedundantConesOfTheExactTest) {
+  // find_redundant (float filter, then geometry::contains) against the exact test alone, pair by pair.
+  int redundant = 0;
+  each_pentagon_placement(7, [&](long i, const geometry::PlanarScene& scene) {
+    Insertion<geometry::Q> ins = insertion<geometry::Q>(scene, Route::kPaper, nullptr, Redundancy::kDeferred);
+    EXPECT_TRUE(ins.redundant.empty());
+    find_redundant(ins);
+    std::vector<bool> expected(ins.cones.size(), false);
+    for (std::size_t a = 0; a < ins.cones.size(); ++a) {
+      const bool empty = is_empty_cone<geometry::Q>(ins.cones[a]);
+      for (std::size_t b = 0; b < ins.cones.size() && !expected[a]; ++b)
+        if (a != b && !expected[b] &&
+            (empty || geometry::contains<geometry::Q>(ins.cones[b], ins.cones[a]).status ==
+                          geometry::ContainmentStatus::kContained))
+          expected[a] = true;
+    }
+    EXPECT_EQ(ins.redundant, expected) << i;
+    redundant += static_cast<int>(std::count(expected.begin(), expected.end(), true));
+  });
+  EXPECT_GT(redundant, 0);
 }
 
 }  // namespace contactcert::solvers

@@ -526,6 +526,32 @@ TEST(Margin, SquaredDistanceToAQuarterPlaneByHand) {
   EXPECT_EQ(squared_distance<Q>(wrench(2, 3, 0), c), 0);
 }
 
+TEST(Margin, ExactSquaredDistanceAgreesWithTheFloatOneOnRandomCones) {
+  // The exact path solves its faces in closed form, the float path by the Gram matrix's inverse.
+  std::uint32_t state = 99;
+  auto next = [&]() {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<int>((state >> 16) % 9) - 4;
+  };
+  for (int trial = 0; trial < 60; ++trial) {
+    geometry::SpanCone<Q> c;
+    c.dim = 3;
+    c.rays = exact::Mat<Q>(2 + trial % 3, 3);
+    c.lines = exact::Mat<Q>(trial % 5 == 0 ? 1 : 0, 3);
+    for (Eigen::Index r = 0; r < c.rays.rows(); ++r)
+      for (Eigen::Index j = 0; j < 3; ++j) c.rays(r, j) = next();
+    for (Eigen::Index r = 0; r < c.lines.rows(); ++r)
+      for (Eigen::Index j = 0; j < 3; ++j) c.lines(r, j) = next();
+    geometry::SpanCone<double> f;
+    f.dim = 3;
+    f.rays = c.rays.unaryExpr([](const Q& x) { return x.get_d(); });
+    f.lines = c.lines.unaryExpr([](const Q& x) { return x.get_d(); });
+    const Vec<Q> g = wrench(next(), next(), next());
+    const Vec<double> gd = g.unaryExpr([](const Q& x) { return x.get_d(); });
+    EXPECT_NEAR(squared_distance<Q>(g, c).get_d(), squared_distance<double>(gd, f), 1e-9) << trial;
+  }
+}
+
 TEST(Margin, BallOfTheMarginStaysStronglyStable) {
   // Section 8: every wrench within the margin of a strongly stable biasing wrench is strongly stable.
   const auto scene = section7("1.2");
