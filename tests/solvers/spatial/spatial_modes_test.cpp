@@ -85,6 +85,20 @@ TEST(SpatialModes, BoxInCornerSlidesAlongTheWallOnly) {
   EXPECT_TRUE(check_text(spatial_modes_certificate(text, t)).valid);
 }
 
+// Peg in a square hole that it fits exactly, 8 contacts (4 walls, 2 heights): opposite contacts at one height share
+// the acceleration along their normal line, so neither separates, and every contact keeps touching: a = (0, 0, a_z),
+// alpha = (0, 0, alpha_z). A contact's tangential acceleration is then (+-alpha_z, a_z) in its frame (t1 horizontal,
+// t2 = z), whose letter is fixed by the signs of alpha_z +- a_z: the 9 faces of two lines through the origin of the
+// plane (a_z, alpha_z) - rest, 4 sectors, 4 rays.
+TEST(SpatialModes, PegInHoleSlidesAndTwistsOnly) {
+  const std::string text = read("spatial_peg_in_hole");
+  const SpatialModeTree t = spatial_modes(spatial_model(parse(text)));
+  EXPECT_EQ(t.modes.size(), 9u);
+  for (const std::string& m : t.modes) EXPECT_EQ(m.find('s'), std::string::npos) << m;
+  EXPECT_EQ(t.modes.front(), "ffffffff");
+  EXPECT_TRUE(check_text(spatial_modes_certificate(text, t)).valid);
+}
+
 // The brute force's own reading: contact i's point accelerates by a + alpha x r_i = P_i vdot; a letter is feasible
 // with P's rows and the global argmin of d_j . (P vdot) over all edges (not the neighbours alone).
 bool brute_feasible(const SpatialScene& s, const std::string& mode) {
