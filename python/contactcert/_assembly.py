@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Any
 from . import _core
 from ._numbers import exact
 from ._options import ARITHS, LONG_MAX, Arith, choice, seconds, whole_number
-from ._file_problem import FileProblem
+from ._file_problem import ModesProblem
 from ._results import Result, Vector
 from ._source import Path
 
@@ -92,7 +92,7 @@ def _unknown(result: Result, what: str) -> BudgetExceeded:
     return e
 
 
-class Assembly(FileProblem[_core.Assembly]):
+class Assembly(ModesProblem[_core.Assembly]):
     """Several movable bodies, the fixed obstacles, fixels and fingers they touch, and their contacts."""
 
     _core_type = _core.Assembly

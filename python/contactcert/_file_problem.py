@@ -1,5 +1,6 @@
-"""Problems whose extension class keeps their file's name and text (an Assembly, a SpatialScene): the name, the
-dict, what check(certificate, problem=...) compares, and the contact modes from rest (`contactcert modes FILE`)."""
+"""Problems whose extension class keeps their file's name and text (a Scene, an Assembly, a SpatialScene): the name,
+the dict and what check(certificate, problem=...) compares; for an Assembly and a SpatialScene also the contact
+modes from rest (`contactcert modes FILE`, listed with their accelerations only)."""
 
 from __future__ import annotations
 
@@ -17,11 +18,15 @@ class _FileCore(Protocol):
     def name(self) -> str: ...
     @property
     def text(self) -> str: ...
+
+
+class _ModesCore(_FileCore, Protocol):
     def modes(self, arith: str, time_limit: float, max_nodes: int | None, max_modes: int | None, certificate: str, /
               ) -> tuple[str, str]: ...
 
 
 C = TypeVar("C", bound=_FileCore)
+M = TypeVar("M", bound=_ModesCore)
 
 
 class FileProblem(FromSource[C]):
@@ -37,6 +42,11 @@ class FileProblem(FromSource[C]):
     def _problem_source(self) -> tuple[str, str]:
         """What `check(certificate, problem=this)` compares a certificate with (as `check --problem FILE`)."""
         return self._core.text, self.name
+
+
+
+class ModesProblem(FileProblem[M]):
+    """A file problem whose contact modes `contactcert modes FILE` lists with their accelerations only."""
 
     def modes(self, arith: Arith = "verified", time_limit: float = 0, max_nodes: int | None = None,
               max_modes: int | None = None, certificate: Path | None = None) -> Modes:

@@ -4,10 +4,10 @@ for a spatial scene (s separating, f sticking, and the sliding letters of each c
 from __future__ import annotations
 
 from . import _core
-from ._file_problem import FileProblem
+from ._file_problem import ModesProblem
 
 
-class SpatialScene(FileProblem[_core.SpatialScene]):
+class SpatialScene(ModesProblem[_core.SpatialScene]):
     """One rigid body in space (mass, inertia, com) and its point contacts with friction pyramids; modes() lists its
     contact modes from rest with their proof (a spatial_modes certificate)."""
 
