@@ -18,7 +18,9 @@ namespace contactcert::geometry {
 
 using Vec3 = std::array<exact::Q, 3>;
 
+/// a x b.
 Vec3 cross(const Vec3& a, const Vec3& b);
+/// a . b.
 exact::Q dot(const Vec3& a, const Vec3& b);
 
 /// An axis-aligned box: its centre and its half extents (each > 0).

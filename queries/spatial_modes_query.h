@@ -45,6 +45,7 @@ Limited<SpatialModesAnswer> run_spatial_modes(const SpatialInput& in, const Spat
 /// {"kind": "spatial", "contacts", "letters", "list": "kinematic", "modes": [{"mode", "acceleration"}],
 /// "counts": {"modes", "all_separating", "all_touching"}, "tree": {"nodes", "dead_prefixes", "lps"}, "certificate"}.
 json to_json(const SpatialModesAnswer& answer);
+/// The text `modes SPATIAL` prints: the counts, the tree's size, every mode with its (a, alpha).
 std::string to_text(const SpatialModesAnswer& answer, const std::string& name);
 
 }  // namespace contactcert::queries

@@ -53,6 +53,7 @@ struct SpatialModel {
   std::vector<Contact> contacts;
 };
 
+/// The functionals w_u = (u, (p - com) x u) of each contact's n, t1, t2 and pyramid edges d_j.
 SpatialModel spatial_model(const geometry::SpatialScene& scene);
 
 /// The rows of letter L at a contact (the header's table); empty if L is not one of its letters.
