@@ -63,25 +63,24 @@ bool realises(const SpatialModel& model, const std::string& prefix, const Vec<Q>
 
 namespace {
 
-// The strict-feasibility system of a prefix (SpatialDeadPrefix's layout).
-exact::StrictSystem<Q> prefix_system(const SpatialModel& model, const std::string& prefix) {
-  std::vector<SignRow> rows;
+// The strict-feasibility system of a prefix (SpatialDeadPrefix's layout), by its non-zero entries: a row has at most
+// six on vdot and one on its slack, so a deep prefix's system stays linear in its rows.
+exact::SparseStrictSystem<Q> prefix_system(const SpatialModel& model, const std::string& prefix) {
+  exact::SparseStrictSystem<Q> sys;
+  sys.cols = 6;
+  sys.is_free.assign(6, true);
+  sys.strict.assign(6, false);
   for (std::size_t i = 0; i < prefix.size(); ++i)
-    for (SignRow& r : letter_rows(model.contacts[i], prefix[i])) rows.push_back(std::move(r));
-  Index strict = 0;
-  for (const SignRow& r : rows) strict += r.strict;
-  exact::StrictSystem<Q> sys;
-  sys.A = exact::Mat<Q>::Zero(static_cast<Index>(rows.size()), 6 + strict);
-  sys.b = Vec<Q>::Zero(static_cast<Index>(rows.size()));
-  sys.is_free.assign(static_cast<std::size_t>(6 + strict), false);
-  sys.strict.assign(static_cast<std::size_t>(6 + strict), true);
-  for (std::size_t c = 0; c < 6; ++c) sys.is_free[c] = true, sys.strict[c] = false;
-  Index sigma = 6;
-  for (Index r = 0; r < sys.A.rows(); ++r) {
-    const SignRow& row = rows[static_cast<std::size_t>(r)];
-    sys.A.row(r).head(6) = row.f.transpose();
-    if (row.strict) sys.A(r, sigma++) = Q(-1);
-  }
+    for (const SignRow& row : letter_rows(model.contacts[i], prefix[i])) {
+      for (Index c = 0; c < 6; ++c)
+        if (sgn(row.f(c)) != 0) sys.entries.push_back({sys.rows, c, row.f(c)});
+      if (row.strict) {  // f . vdot - sigma = 0, sigma > 0
+        sys.entries.push_back({sys.rows, sys.cols++, Q(-1)});
+        sys.is_free.push_back(false);
+        sys.strict.push_back(true);
+      }
+      ++sys.rows;
+    }
   return sys;
 }
 
