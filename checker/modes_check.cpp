@@ -65,11 +65,13 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
   return modes_coverage_check(k, alphabet, dead, leaves);
 }
 
-ModesCertificateCheck modes_coverage_check(std::size_t k, const ModeAlphabet& alphabet,
-                                           const std::vector<std::string>& dead,
-                                           const std::vector<std::string>& leaves) {
+namespace {
+
+// The verdict on verified leaves and dead prefixes: valid unless their coverage has a gap.
+ModesCertificateCheck coverage_verdict(const std::optional<CoverageGap>& gap, const std::vector<std::string>& dead,
+                                       const std::vector<std::string>& leaves) {
   ModesCertificateCheck out{false, "", static_cast<long>(leaves.size()), static_cast<long>(dead.size())};
-  if (auto gap = mode_coverage(k, alphabet, dead, leaves)) {
+  if (gap) {
     out.reason = coverage_gap_text(*gap);
     return out;
   }
@@ -79,6 +81,20 @@ ModesCertificateCheck modes_coverage_check(std::size_t k, const ModeAlphabet& al
       "exactly one proven dead prefix: " +
       std::to_string(out.modes) + " feasible modes, " + std::to_string(out.dead) + " dead prefixes";
   return out;
+}
+
+}  // namespace
+
+ModesCertificateCheck modes_coverage_check(std::size_t k, const ModeAlphabet& alphabet,
+                                           const std::vector<std::string>& dead,
+                                           const std::vector<std::string>& leaves) {
+  return coverage_verdict(mode_coverage(k, alphabet, dead, leaves), dead, leaves);
+}
+
+ModesCertificateCheck modes_coverage_check(std::size_t k, const std::function<std::string(std::size_t)>& letters,
+                                           const std::vector<std::string>& dead,
+                                           const std::vector<std::string>& leaves) {
+  return coverage_verdict(mode_coverage(k, letters, dead, leaves), dead, leaves);
 }
 
 }  // namespace contactcert::checker

@@ -28,5 +28,9 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& certificat
 ModesCertificateCheck modes_coverage_check(std::size_t k, const solvers::ModeAlphabet& alphabet,
                                            const std::vector<std::string>& dead,
                                            const std::vector<std::string>& leaves);
+/// The same over any alphabet (mode_coverage's `letters`).
+ModesCertificateCheck modes_coverage_check(std::size_t k, const std::function<std::string(std::size_t)>& letters,
+                                           const std::vector<std::string>& dead,
+                                           const std::vector<std::string>& leaves);
 
 }  // namespace contactcert::checker

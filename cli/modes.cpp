@@ -65,6 +65,19 @@ int run_assembly_modes_command(const ModesCliOptions& o, const AssemblyInput& in
   return print_assembly_answer(run_assembly_modes(in, q), o.file, o.common.json, "modes");
 }
 
+/// `modes SPATIAL`: the modes of a body in space (queries/spatial_modes_query.h); its letters are s, f and the sliding
+/// letters of each friction pyramid, always listed with their accelerations only.
+int run_spatial_modes_command(const ModesCliOptions& o, const SpatialInput& in) {
+  if (o.unions) throw exact::InputError("command line", "--unions", "a spatial scene's modes have no union letters");
+  if (o.table2 != "strict")
+    throw exact::InputError("command line", "--table2", "a spatial scene's modes read s strictly (a_n > 0)");
+  const Limited<SpatialModesAnswer> r =
+      run_spatial_modes(in, {o.common.query(), o.max_nodes, o.max_modes, o.certificate});
+  if (!r) return report_limit("modes", r.limit(), o.common.json);
+  std::cout << (o.common.json ? to_json(*r).dump() + "\n" : to_text(*r, o.file));
+  return 0;
+}
+
 int run_modes_command(const ModesCliOptions& o) {
   ModesOptions options;
   options.common = o.common.query();
@@ -81,6 +94,7 @@ int run_modes_command(const ModesCliOptions& o) {
                    kModesDefaultSeconds);
   SceneOrAssembly input = read_scene_or_assembly(o.file, o.snap);
   if (const auto* assembly = std::get_if<AssemblyInput>(&input)) return run_assembly_modes_command(o, *assembly);
+  if (const auto* spatial = std::get_if<SpatialInput>(&input)) return run_spatial_modes_command(o, *spatial);
   const Limited<ModesAnswer> r = run_modes(std::get<SceneInput>(input), options);
   if (!r) return report_limit("modes", r.limit(), o.common.json);
   const ModesAnswer& a = *r;
@@ -98,7 +112,9 @@ void register_modes(CLI::App& app, Action& action) {
   CLI::App* sub = app.add_subcommand("modes", "Every kinematically feasible contact mode of a scene, with a proof");
   add_snap_option(*sub, o->snap);
   add_common_options(*sub, o->common);
-  sub->add_option("file", o->file, "Planar scene file (docs/formats.md), or an assembly (section 3a)")->required();
+  sub->add_option("file", o->file,
+                  "Planar scene file (docs/formats.md), an assembly (section 3a) or a spatial scene (3b)")
+      ->required();
   sub->add_flag("--kinematic", o->kinematic, "List the modes with their accelerations only (no witness wrench)");
   sub->add_flag("--unions", o->unions, "Also the letters m (l, r or n) and u (s or a), whose modes overlap");
   sub->add_option(

@@ -173,6 +173,10 @@ int run_assembly_stability_command(const StabilityOptions& o, const AssemblyInpu
 int run_stability_command(const StabilityOptions& o) {
   SceneOrAssembly read = read_scene_or_assembly(o.file, o.snap);
   if (const auto* assembly = std::get_if<AssemblyInput>(&read)) return run_assembly_stability_command(o, *assembly);
+  if (std::holds_alternative<SpatialInput>(read))
+    throw exact::InputError(o.file, "$.kind",
+                            "a planar scene or an assembly: strong stability of a spatial scene is not built yet "
+                            "(issue 34); `modes` takes it");
   const SceneInput& input = std::get<SceneInput>(read);
   if (int(o.region) + int(o.finger) + int(!o.wrench.empty() && !o.region) + int(!o.wrenches.empty()) != 1)
     throw exact::InputError("command line", "--wrench",

@@ -53,6 +53,7 @@ void bind_design(py::module_& m);
 void bind_simulate(py::module_& m);
 /// The class Assembly: stability, ucp and svg (assembly_bindings.cpp).
 void bind_assembly(py::module_& m);
+void bind_spatial(py::module_& m);
 /// demo and bench (bench_bindings.cpp).
 void bind_demo_bench(py::module_& m);
 

@@ -61,6 +61,7 @@ PYBIND11_MODULE(_core, m) {
   python::bind_design(m);
   python::bind_simulate(m);
   python::bind_assembly(m);
+  python::bind_spatial(m);
   python::bind_demo_bench(m);
   // geometry::snap_planar_scene: the snapped text and the snaps as (field, original, snapped, distance^2) texts.
   m.def(

@@ -7,6 +7,7 @@
 #include "checker/frame_check.h"
 #include "checker/goal_check.h"
 #include "checker/modes_check.h"
+#include "checker/spatial_modes_check.h"
 #include "checker/stability_check.h"
 #include "checker/ucp_check.h"
 #include "exact/sha256.h"
@@ -83,6 +84,12 @@ void check_assembly_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckR
   c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
 }
 
+void check_spatial_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
+  const checker::ModesCertificateCheck m = checker::check_spatial_modes_certificate(cert);
+  take(m, c);
+  c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
+}
+
 /// One certificate kind: whether it embeds a planar scene (else a UCP problem) and its checker, which sets the
 /// verdict, the reason and the details and, for a valid certificate, the view a person reads of its evidence (which
 /// makes it INVALID if the certificate's own readable numbers are not those of the checked evidence).
@@ -98,6 +105,7 @@ constexpr CertificateKind kKinds[] = {
     {"cone_empty", true, check_cone},     {"cone_nonempty", true, check_cone},
     {"goal_nonempty", true, check_goal},  {"assembly_stability", true, check_assembly},
     {"assembly_modes", true, check_assembly_modes},
+    {"spatial_modes", true, check_spatial_modes},
 };
 
 const CertificateKind& certificate_kind(const exact::JsonInput& cert) {

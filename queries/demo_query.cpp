@@ -8,6 +8,7 @@
 #include <random>
 
 #include "checker/assembly_check.h"
+#include "checker/spatial_modes_check.h"
 #include "checker/stability_check.h"
 #include "checker/ucp_check.h"
 #include "exact/deadline.h"
@@ -27,6 +28,7 @@
 #include "runtime/scenes.h"
 #include "solvers/assembly/assembly_certificate.h"
 #include "solvers/insertion/insertion.h"
+#include "solvers/spatial/spatial_modes.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
 #include "solvers/ucp/certificate.h"
@@ -317,6 +319,14 @@ DemoScene own_scene(const fs::path& path, HtmlReport& rep) {
     const std::string text = exact::JsonInput::read_text(path.string());
     const auto in = exact::JsonInput::parse(text, path.string());
     if (geometry::is_assembly(in)) return assembly_row(name, in.at("kind").string(), text, path.string(), rep);
+    if (geometry::is_spatial_scene(in)) {  // a body in space: its contact modes from rest, checked
+      namespace sp = solvers::spatial;
+      const sp::SpatialModeTree t = sp::spatial_modes(sp::spatial_model(geometry::read_spatial_scene(in)));
+      const auto check = checker::check_spatial_modes_certificate(
+          exact::JsonInput::parse(sp::spatial_modes_certificate(text, t), "certificate"));
+      return {name, "spatial", std::to_string(t.modes.size()) + " contact modes",
+              std::string("certificate ") + (check.valid ? "valid" : "INVALID: " + check.reason)};
+    }
     if (in.at("kind").string() == "planar") {
       const auto scene = geometry::read_planar_scene(in);
       exact::Vec<Q> g(3);

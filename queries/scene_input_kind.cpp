@@ -5,6 +5,7 @@
 #include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "geometry/assembly.h"
+#include "geometry/spatial_scene.h"
 #include "solvers/ucp/phases.h"
 
 namespace contactcert::queries {
@@ -19,13 +20,26 @@ bool is_assembly_text(const std::string& text, const std::string& name) {
   }
 }
 
+bool is_spatial_text(const std::string& text, const std::string& name) {
+  if (text.find("spatial") == std::string::npos) return false;
+  try {
+    return geometry::is_spatial_scene(exact::JsonInput::parse(text, name));
+  } catch (const exact::InputError&) {
+    return false;
+  }
+}
+
 SceneOrAssembly load_scene_or_assembly(const std::string& path, const std::string& snap_tolerance,
                                        const std::string& snap_field) {
   std::string text = exact::JsonInput::read_text(path);
-  if (!is_assembly_text(text, path)) return parse_scene(text, path, snap_tolerance, snap_field);
+  const bool spatial = is_spatial_text(text, path);
+  if (!spatial && !is_assembly_text(text, path)) return parse_scene(text, path, snap_tolerance, snap_field);
   if (!snap_tolerance.empty())
     throw exact::InputError(snap_field == "--snap" ? "command line" : path, snap_field,
-                            "an assembly (a file with bodies) is read exactly; snapping reads one workpiece only");
+                            spatial ? "a spatial scene is read exactly; snapping reads one planar workpiece only"
+                                    : "an assembly (a file with bodies) is read exactly; snapping reads one "
+                                      "workpiece only");
+  if (spatial) return parse_spatial(text, path);
   return parse_assembly(text, path);
 }
 

@@ -9,6 +9,7 @@
 
 #include "queries/assembly_query.h"
 #include "queries/scene_input.h"
+#include "queries/spatial_modes_query.h"
 #include "queries/ucp_query.h"
 
 namespace contactcert::queries {
@@ -16,9 +17,13 @@ namespace contactcert::queries {
 /// Whether the JSON text is an assembly (it has `bodies`); a text that is not JSON is not one (its reader says why).
 bool is_assembly_text(const std::string& text, const std::string& name);
 
-using SceneOrAssembly = std::variant<SceneInput, AssemblyInput>;
-/// The scene or assembly in the file `path` (read once), as load_scene or load_assembly. An assembly is read
-/// exactly: a snap tolerance is refused (InputError naming `snap_field`).
+/// Whether the JSON text is a spatial scene ("kind": "spatial", docs/formats.md section 3b).
+bool is_spatial_text(const std::string& text, const std::string& name);
+
+using SceneOrAssembly = std::variant<SceneInput, AssemblyInput, SpatialInput>;
+/// The scene, assembly or spatial scene in the file `path` (read once), as load_scene, load_assembly or
+/// parse_spatial. An assembly or a spatial scene is read exactly: a snap tolerance is refused (InputError naming
+/// `snap_field`).
 SceneOrAssembly load_scene_or_assembly(const std::string& path, const std::string& snap_tolerance = "",
                                        const std::string& snap_field = "--snap");
 

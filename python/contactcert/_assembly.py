@@ -10,8 +10,9 @@ from typing import TYPE_CHECKING, Any
 from . import _core
 from ._numbers import exact
 from ._options import ARITHS, LONG_MAX, Arith, choice, seconds, whole_number
-from ._results import Modes, Result, Vector
-from ._source import FromSource, Path
+from ._file_problem import ModesProblem
+from ._results import Result, Vector
+from ._source import Path
 
 if TYPE_CHECKING:
     from ._results import Certificate
@@ -91,14 +92,10 @@ def _unknown(result: Result, what: str) -> BudgetExceeded:
     return e
 
 
-class Assembly(FromSource[_core.Assembly]):
+class Assembly(ModesProblem[_core.Assembly]):
     """Several movable bodies, the fixed obstacles, fixels and fingers they touch, and their contacts."""
 
     _core_type = _core.Assembly
-
-    @property
-    def name(self) -> str:
-        return self._core.name
 
     @property
     def bodies(self) -> int:
@@ -107,13 +104,6 @@ class Assembly(FromSource[_core.Assembly]):
     @property
     def contacts(self) -> int:
         return self._core.contacts
-
-    def to_dict(self) -> dict[str, Any]:
-        return json.loads(self._core.text)
-
-    def _problem_source(self) -> tuple[str, str]:
-        """What `check(certificate, problem=assembly)` compares an assembly_stability certificate with."""
-        return self._core.text, self.name
 
     def stability(self, arith: Arith = "verified", time_limit: float = 0, max_nodes: int | None = None,
                   certificate: Path | None = None) -> AssemblyStability:
@@ -148,21 +138,6 @@ class Assembly(FromSource[_core.Assembly]):
         if result.status == "unknown":
             raise _unknown(result, result["reason"])
         return result
-
-    def modes(self, arith: Arith = "verified", time_limit: float = 0, max_nodes: int | None = None,
-              max_modes: int | None = None, certificate: Path | None = None) -> Modes:
-        """`contactcert modes FILE` on an assembly: every kinematically feasible contact mode of the N bodies from
-        rest (s l r n per contact), each with the 3N accelerations that realise it; `certificate` is the file its
-        completeness proof (assembly_modes) is written to. Past a budget, BudgetExceeded."""
-        from ._results import Certificate
-
-        choice(arith, ARITHS, "--arith")
-        time_limit = seconds(time_limit)
-        max_nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
-        max_modes = None if max_modes is None else whole_number(max_modes, 1, LONG_MAX, "--max-modes")
-        path = os.fspath(certificate) if certificate is not None else ""
-        data, text = self._core.modes(arith, time_limit, max_nodes, max_modes, path)
-        return Modes(json.loads(data), certificate=Certificate(text, path) if text else None)
 
     def svg(self) -> str:
         """The assembly: bodies (numbered, com marked), obstacles, fixels, fingers and each contact's normal."""

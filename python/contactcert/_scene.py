@@ -13,7 +13,8 @@ from ._results import Certificate
 from ._numbers import Exact, ExactVector, vector_text
 from ._options import ARITHS, LONG_MAX, Arith, choice, seconds, whole_number
 from ._results import Cone, Finger, Insertion, Modes, Region, Stability
-from ._source import FromSource, Path
+from ._file_problem import FileProblem
+from ._source import Path
 
 
 def _computed_float(value: Any, path: str) -> tuple[str, float] | None:
@@ -67,7 +68,7 @@ class Snap:
         return f"Snap({self.field}: {self.original} -> {self.snapped}, moved ~{self.distance_approx:.3g})"
 
 
-class Scene(FromSource[_core.Scene]):
+class Scene(FileProblem[_core.Scene]):
     """A planar scene: a workpiece held by fixels. Queries run in C++ with the GIL released."""
 
     _core_type = _core.Scene
@@ -104,17 +105,6 @@ class Scene(FromSource[_core.Scene]):
         tol = repr(snap) if isinstance(snap, float) else str(snap)
         snapped, snaps = _core.snap_scene(text, name, tol)
         return cls(cls._core_type.parse(snapped, name)), [Snap(*s) for s in snaps]
-
-    @property
-    def name(self) -> str:
-        return self._core.name
-
-    def to_dict(self) -> dict[str, Any]:
-        return json.loads(self._core.text)
-
-    def _problem_source(self) -> tuple[str, str]:
-        """The text it was read from and its name (check's problem)."""
-        return self._core.text, self.name
 
     def cone(self, mode: str, route: Literal["paper", "project"] = "paper", arith: Arith = "verified",
              table2: Literal["strict", "printed"] = "strict", certificate: Path | None = None,

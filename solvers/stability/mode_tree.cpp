@@ -500,6 +500,18 @@ class PrefixTrie {
 
 std::optional<CoverageGap> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
                                          const std::vector<std::string>& dead, const std::vector<std::string>& leaves) {
+  return mode_coverage(
+      k,
+      [&](std::size_t i) {
+        std::string s;
+        for (Interaction L : alphabet.letters(i)) s += static_cast<char>(L);
+        return s;
+      },
+      dead, leaves);
+}
+
+std::optional<CoverageGap> mode_coverage(std::size_t k, const std::function<std::string(std::size_t)>& letters,
+                                         const std::vector<std::string>& dead, const std::vector<std::string>& leaves) {
   using Kind = CoverageGap::Kind;
   // A prefix is accounted for if it is listed (dead, or a full-length leaf); the walk descends only into
   // proper prefixes of listed strings, so it never expands more than the lists spell out. Memory and time are
@@ -523,9 +535,9 @@ std::optional<CoverageGap> mode_coverage(std::size_t k, const ModeAlphabet& alph
     const std::size_t at = stack.back();
     stack.pop_back();
     if (trie[at].depth == k) return CoverageGap{Kind::kMissing, trie.text(at), {}};  // a full mode nothing lists
-    for (Interaction L : alphabet.letters(trie[at].depth)) {
-      const std::size_t next = trie.child(at, static_cast<char>(L));
-      if (next == PrefixTrie::kNone) return CoverageGap{Kind::kMissing, trie.text(at) + static_cast<char>(L), {}};
+    for (const char L : letters(trie[at].depth)) {
+      const std::size_t next = trie.child(at, L);
+      if (next == PrefixTrie::kNone) return CoverageGap{Kind::kMissing, trie.text(at) + L, {}};
       if (!trie[next].listed) stack.push_back(next);
     }
   }

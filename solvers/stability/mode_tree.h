@@ -104,6 +104,10 @@ struct CoverageGap {
 /// so a forged list is rejected in time linear in its size. Returns nullopt if they do, else the first gap found.
 std::optional<CoverageGap> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
                                          const std::vector<std::string>& dead, const std::vector<std::string>& leaves);
+/// The same over any alphabet: `letters(i)` is the letters of contact i, one char each (the spatial modes,
+/// solvers/spatial/spatial_modes.h).
+std::optional<CoverageGap> mode_coverage(std::size_t k, const std::function<std::string(std::size_t)>& letters,
+                                         const std::vector<std::string>& dead, const std::vector<std::string>& leaves);
 
 /// The gap as a checker's reason.
 std::string coverage_gap_text(const CoverageGap& gap);

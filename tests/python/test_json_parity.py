@@ -34,6 +34,7 @@ PLANAR = [p for p in FILES if kind(p) == "planar"]
 UCP = [p for p in FILES if kind(p) in ("quasistatic", "quasistatic_scene", "ucp")]
 ASSEMBLY = [p for p in FILES if kind(p) == "assembly"]
 MOTION = [p for p in FILES if kind(p) == "motion"]
+SPATIAL = [p for p in FILES if kind(p) == "spatial"]
 
 # Planar questions: name -> (the Python call on a Scene, the CLI's arguments after FILE).
 PLANAR_QUESTIONS = {
@@ -250,7 +251,17 @@ def test_simulate(path):
     assert without_seconds(got) == without_seconds(json.loads(out))
 
 
+@pytest.mark.parametrize("path", SPATIAL, ids=lambda p: p.name)
+def test_spatial(path, tmp_path):
+    scene = cc.SpatialScene.from_file(path)
+    cert = same_certificate(tmp_path / "modes.json", lambda p: scene.modes(certificate=p), ["modes", path])
+    assert cert is not None
+    same_check(cert, path, cc.SpatialScene.from_file, tmp_path)
+
+
 def test_every_bundled_file_is_covered():
     """A bundled file of a kind without questions here fails: add its questions."""
-    covered = set(PLANAR) | set(UCP) | set(ASSEMBLY) | set(MOTION)
-    assert PLANAR and UCP and ASSEMBLY and MOTION and set(FILES) == covered, [p.name for p in set(FILES) - covered]
+    covered = set(PLANAR) | set(UCP) | set(ASSEMBLY) | set(MOTION) | set(SPATIAL)
+    assert PLANAR and UCP and ASSEMBLY and MOTION and SPATIAL and set(FILES) == covered, [
+        p.name for p in set(FILES) - covered
+    ]

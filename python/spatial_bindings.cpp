@@ -1,0 +1,42 @@
+// The class SpatialScene (a body in space, docs/formats.md section 3b): its contact modes from rest through the query
+// layer (queries/spatial_modes_query.h), as `contactcert modes SPATIAL` runs them.
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+
+#include "python/bindings.h"
+#include "queries/spatial_modes_query.h"
+
+namespace contactcert::python {
+namespace {
+
+using Spatial = queries::SpatialInput;
+
+/// `modes SPATIAL [--max-nodes N] [--max-modes N] [--certificate F]`: the --json text and the certificate's.
+WithCertificate modes(const Spatial& s, const std::string& arith, double time_limit, std::optional<long> max_nodes,
+                      std::optional<long> max_modes, const std::string& certificate) {
+  queries::SpatialModesOptions o;
+  o.common = {queries::parse_arith(arith, "--arith"), time_limit};
+  o.max_nodes = max_nodes.value_or(o.max_nodes);
+  o.max_modes = max_modes.value_or(o.max_modes);
+  o.certificate = certificate;
+  const queries::SpatialModesAnswer ans = answer(queries::run_spatial_modes(s, o));
+  return {queries::to_json(ans).dump(), ans.certificate_text};
+}
+
+}  // namespace
+
+void bind_spatial(py::module_& m) {
+  py::class_<Spatial>(m, "SpatialScene")
+      .def_static(
+          "load",
+          [](const std::string& path) { return queries::parse_spatial(exact::JsonInput::read_text(path), path); })
+      .def_static("parse", &queries::parse_spatial, py::arg("text"), py::arg("name"))
+      .def_readonly("name", &Spatial::name)
+      .def_readonly("text", &Spatial::text)
+      .def_property_readonly("contacts", [](const Spatial& s) { return s.scene.contacts.size(); })
+      .def("modes", &modes, Release());
+}
+
+}  // namespace contactcert::python

@@ -1,0 +1,94 @@
+// Every kinematically feasible contact mode of a spatial scene from rest (issue 34), with a witness acceleration per
+// mode and a Motzkin certificate per dead prefix. The body's acceleration vdot = (a, alpha) in R^6 (the com's linear
+// acceleration, the angular acceleration); from rest a body point p accelerates by a + alpha x r, r = p - com (the
+// velocity products vanish), so along a world direction u the contact acceleration is w_u . vdot, w_u = (u, r x u).
+// Contact i has a_n = w_n . vdot and tangential acceleration a_t with d_j . a_t = w_{d_j} . vdot for its pyramid edges.
+//
+// The letters of a contact, and their rows (each a sign condition f . vdot = 0 or f . vdot > 0, in this order):
+//   s (separating):     a_n > 0
+//   f (sticking):       a_n = 0, t1 . a_t = 0, t2 . a_t = 0
+//   sliding, by the maximal-dissipation law of the linearised (pyramid) friction model (Stewart and Trinkle 1996,
+//   their LCP; Anitescu and Potra 1997): the friction force lies on the pyramid's edges d_j that minimise d_j . a_t
+//   (its complementarity lambda e + D^T a_t >= 0 _|_ beta >= 0), so the sliding directions split by the normal fan
+//   of the friction polygon conv(d_j), strictly convex: letter 2j ('A' + 2j) is friction along edge j alone,
+//       a_n = 0, (d_{j-1} - d_j) . a_t > 0, (d_{j+1} - d_j) . a_t > 0          (an open sector of directions)
+//   and letter 2j + 1 ('A' + 2j + 1) is friction on the pyramid's face between edges j and j + 1,
+//       a_n = 0, (d_{j+1} - d_j) . a_t = 0, (d_{j-1} - d_j) . a_t > 0, (d_{j+2} - d_{j+1}) . a_t > 0   (a ray)
+//   (indices mod m). For a_n >= 0 exactly one letter holds, so the modes partition {a_n >= 0 at every contact} and
+//   the feasible ones are the cells of an arrangement of hyperplanes through the origin of R^6 (Balkcom and Trinkle
+//   2002, section 7, for the planar case with s l r n).
+// The tree walks the contacts depth first, as the planar one (solvers/stability/mode_tree.h): a letter that the
+// parent's vdot meets needs no LP, else one strict-feasibility LP decides it, and a dead prefix (with its Motzkin
+// certificate) ends its subtree, so the walk visits (2 + 2m) x (feasible prefixes) nodes, never (2 + 2m)^k.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "exact/arith.h"
+#include "exact/deadline.h"
+#include "exact/number.h"
+#include "geometry/spatial_scene.h"
+
+namespace contactcert::solvers::spatial {
+
+using exact::Q;
+using exact::Vec;
+
+/// The letters of a contact with m pyramid edges: "sf" then 'A' .. 'A' + 2m - 1 (edge 0, face 0-1, edge 1, ...).
+std::string letters(std::size_t m);
+
+/// One row of a letter: f . vdot = 0, or f . vdot > 0 if strict.
+struct SignRow {
+  Vec<Q> f;
+  bool strict = false;
+};
+
+/// The contact accelerations of a scene as functionals on vdot in R^6: per contact w_n, w_t1, w_t2 and w_{d_j}.
+struct SpatialModel {
+  struct Contact {
+    Vec<Q> n, t1, t2;
+    std::vector<Vec<Q>> d;
+  };
+  std::vector<Contact> contacts;
+};
+
+/// The functionals w_u = (u, (p - com) x u) of each contact's n, t1, t2 and pyramid edges d_j.
+SpatialModel spatial_model(const geometry::SpatialScene& scene);
+
+/// The rows of letter L at a contact (the header's table); empty if L is not one of its letters.
+std::vector<SignRow> letter_rows(const SpatialModel::Contact& c, char L);
+
+struct SpatialModeOptions {
+  exact::Arith arith = exact::Arith::kVerified;
+  long max_nodes = 1L << 22;   ///< prefixes visited at most; beyond: BudgetExceeded
+  long max_modes = 100000;     ///< modes listed at most; beyond: BudgetExceeded
+  exact::Deadline deadline{};  ///< tested at every node
+};
+
+/// A prefix whose rows have no solution, with the Motzkin certificate of its LP (columns vdot (6, free), then one
+/// slack sigma > 0 per strict row; rows f . vdot - sigma = 0, or f . vdot = 0, letter by letter in the header's order).
+struct SpatialDeadPrefix {
+  std::string prefix;
+  Vec<Q> motzkin;
+};
+
+struct SpatialModeTree {
+  std::vector<std::string> modes;     ///< depth first, letters in alphabet order
+  std::vector<Vec<Q>> accelerations;  ///< per mode: a vdot (6) that realises it
+  std::vector<SpatialDeadPrefix> dead;
+  long nodes = 0;  ///< prefixes visited, the empty one included
+  long lps = 0;    ///< strict-feasibility LPs solved
+};
+
+/// The walk. Throws exact::BudgetExceeded (with what was covered) past a budget or the deadline.
+SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOptions& options = {});
+
+/// Whether vdot meets every row of the letters of `prefix` (a mode or a prefix of one).
+bool realises(const SpatialModel& model, const std::string& prefix, const Vec<Q>& vdot);
+
+/// The "spatial_modes" certificate (docs/formats.md section 5b): the scene text, its digest, every mode with its
+/// acceleration, every dead prefix with its Motzkin vector (sparse); checked by checker/spatial_modes_check.h.
+std::string spatial_modes_certificate(const std::string& scene_text, const SpatialModeTree& tree);
+
+}  // namespace contactcert::solvers::spatial

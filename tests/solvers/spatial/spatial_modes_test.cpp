@@ -1,0 +1,341 @@
+// The contact modes of a body in space from rest (solvers/spatial/spatial_modes.h): the hand-derived counts of a box
+// on a plane and in a corner, seeded random bodies against a brute force over all mode strings (one LP each, in
+// its own formulation), extruded planar scenes against the planar tree, the reader's refusals, and forged
+// certificates, which the independent checker (checker/spatial_modes_check.h) must reject.
+#include "solvers/spatial/spatial_modes.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <set>
+
+#include "checker/spatial_modes_check.h"
+#include "exact/input_error.h"
+#include "exact/strict_feasibility.h"
+#include "geometry/scene_json.h"
+#include "runtime/scenes.h"
+#include "solvers/stability/contact_modes.h"
+
+namespace contactcert::solvers::spatial {
+namespace {
+
+using geometry::SpatialContact;
+using geometry::SpatialScene;
+using geometry::Vec3;
+
+std::string read(const std::string& scene) {
+  return exact::JsonInput::read_text(runtime::bundled_scenes_dir() + "/" + scene + ".json");
+}
+
+SpatialScene parse(const std::string& text) { return geometry::read_spatial_scene(exact::JsonInput::parse(text, "t")); }
+
+checker::ModesCertificateCheck check_text(const std::string& certificate) {
+  return checker::check_spatial_modes_certificate(exact::JsonInput::parse(certificate, "certificate.json"));
+}
+
+std::set<std::string> mode_set(const SpatialModeTree& t) { return {t.modes.begin(), t.modes.end()}; }
+
+// Box on a plane on its 4 bottom corners (x, y) in {-1, 1}^2, r_z = -1/2, square pyramids along x and y.
+// a_n = a_z + alpha_x y - alpha_y x: the cone {a_n >= 0} in (a_z, alpha_x, alpha_y) is a square pyramid, and its
+// faces are the contact patterns: its interior (all separate, 1), 4 facets (one corner touches), 4 edges (two
+// adjacent corners), the apex (all four): 10 patterns. A touching corner's tangential acceleration v has the letter
+// of (sign(v_x + v_y), sign(v_x - v_y)): 9 letters (f, 4 sectors, 4 diagonal rays).
+//   one corner: v free (a_x, a_y free): 9 modes each, 36.
+//   two corners on x = 1: v at (1, +-1) is (U -+ alpha_z, V): same y component, free x components: per V > 0 the x's
+//     fall among {-V, V} in 5 x 5 ways, V < 0 as many, V = 0 3 x 3; 4 patterns counted twice, 4 of V = 0's too:
+//     25 + 25 - 4 + 5 = 51 per edge, 204.
+//   all four: a_z = alpha_x = alpha_y = 0, v_i = T + alpha_z (-y_i, x_i): in P = T_x + T_y, R = T_x - T_y, w = alpha_z
+//     the forms are P, P +- 2w, R, R +- 2w: 7 x 7 sign patterns for w > 0, as many for w < 0 (4 shared), 3 x 3 at
+//     w = 0 (4 of them seen before): 49 + 49 - 4 + 5 = 99.
+// Total 1 + 36 + 204 + 99 = 340.
+TEST(SpatialModes, BoxOnPlaneHasTheHandCountedModes) {
+  const std::string text = read("spatial_box_on_plane");
+  const SpatialModeTree t = spatial_modes(spatial_model(parse(text)));
+  EXPECT_EQ(t.modes.size(), 340u);
+  std::map<std::string, int> per_pattern;  // touching pattern (t or s per corner) -> modes
+  for (const std::string& m : t.modes) {
+    std::string p;
+    for (const char c : m) p += c == 's' ? 's' : 't';
+    ++per_pattern[p];
+  }
+  EXPECT_EQ(per_pattern.size(), 10u);
+  EXPECT_EQ(per_pattern["ssss"], 1);
+  EXPECT_EQ(per_pattern["tttt"], 99);
+  EXPECT_EQ(per_pattern["ttss"], 51);  // corners (1, 1) and (1, -1)
+  EXPECT_EQ(per_pattern["stss"], 9);
+  EXPECT_EQ(per_pattern.count("tsts"), 0u);  // diagonal corners cannot touch without the other two
+  const checker::ModesCertificateCheck c = check_text(spatial_modes_certificate(text, t));
+  EXPECT_TRUE(c.valid) << c.reason;
+  EXPECT_EQ(c.modes, 340);
+}
+
+// Box in a corner: on the floor and against the wall x = -1 at two top corners. All six touch only for
+// a_z = alpha = 0 and a_x = 0: the box slides along the wall's y axis or sticks, 3 modes. Sliding along +y puts the
+// friction on the edge along -y: the floor's edge 3 (G), the octagon's edge 4 stated in the frame (y, z) (I), the
+// default square's edge 2 in the frame (y, z) of the normal x (E); along -y the edges along +y (C, A, A).
+TEST(SpatialModes, BoxInCornerSlidesAlongTheWallOnly) {
+  const std::string text = read("spatial_box_in_corner");
+  const SpatialModeTree t = spatial_modes(spatial_model(parse(text)));
+  std::set<std::string> touching;
+  for (const std::string& m : t.modes)
+    if (m.find('s') == std::string::npos) touching.insert(m);
+  EXPECT_EQ(touching, (std::set<std::string>{"ffffff", "GGGGIE", "CCCCAA"}));
+  EXPECT_TRUE(check_text(spatial_modes_certificate(text, t)).valid);
+}
+
+// Peg in a square hole that it fits exactly, 8 contacts (4 walls, 2 heights): opposite contacts at one height share
+// the acceleration along their normal line, so neither separates, and every contact keeps touching: a = (0, 0, a_z),
+// alpha = (0, 0, alpha_z). A contact's tangential acceleration is then (+-alpha_z, a_z) in its frame (t1 horizontal,
+// t2 = z), whose letter is fixed by the signs of alpha_z +- a_z: the 9 faces of two lines through the origin of the
+// plane (a_z, alpha_z) - rest, 4 sectors, 4 rays.
+TEST(SpatialModes, PegInHoleSlidesAndTwistsOnly) {
+  const std::string text = read("spatial_peg_in_hole");
+  const SpatialModeTree t = spatial_modes(spatial_model(parse(text)));
+  EXPECT_EQ(t.modes.size(), 9u);
+  for (const std::string& m : t.modes) EXPECT_EQ(m.find('s'), std::string::npos) << m;
+  EXPECT_EQ(t.modes.front(), "ffffffff");
+  EXPECT_TRUE(check_text(spatial_modes_certificate(text, t)).valid);
+}
+
+// The brute force's own reading: contact i's point accelerates by a + alpha x r_i = P_i vdot; a letter is feasible
+// with P's rows and the global argmin of d_j . (P vdot) over all edges (not the neighbours alone).
+bool brute_feasible(const SpatialScene& s, const std::string& mode) {
+  std::vector<std::pair<Vec<Q>, bool>> rows;  // (row on vdot, strict > 0) or = 0
+  for (std::size_t i = 0; i < mode.size(); ++i) {
+    const SpatialContact& c = s.contacts[i];
+    exact::Mat<Q> P = exact::Mat<Q>::Zero(3, 6);  // a + alpha x r: alpha x r = -r x alpha
+    const Vec3 r{c.point[0] - s.body.com[0], c.point[1] - s.body.com[1], c.point[2] - s.body.com[2]};
+    for (Eigen::Index k = 0; k < 3; ++k) P(k, k) = 1;
+    P(0, 4) = r[2], P(0, 5) = -r[1], P(1, 3) = -r[2], P(1, 5) = r[0], P(2, 3) = r[1], P(2, 4) = -r[0];
+    auto along = [&](const Vec3& u) -> Vec<Q> {
+      Vec<Q> f = Vec<Q>::Zero(6);
+      for (Eigen::Index k = 0; k < 3; ++k) f += u[static_cast<std::size_t>(k)] * Vec<Q>(P.row(k).transpose());
+      return f;
+    };
+    const Vec<Q> n = along(c.normal);
+    if (mode[i] == 's') {
+      rows.push_back({n, true});
+      continue;
+    }
+    if (mode[i] == 'f') {
+      for (Eigen::Index k = 0; k < 3; ++k) rows.push_back({Vec<Q>(P.row(k).transpose()), false});
+      continue;
+    }
+    rows.push_back({n, false});
+    const std::size_t m = c.edges.size(), L = static_cast<std::size_t>(mode[i] - 'A'), j = L / 2;
+    const std::set<std::size_t> active = L % 2 ? std::set<std::size_t>{j, (j + 1) % m} : std::set<std::size_t>{j};
+    for (const std::size_t e : active)
+      if (e != j) rows.push_back({along(c.edge(e)) - along(c.edge(j)), false});
+    for (std::size_t e = 0; e < m; ++e)
+      if (!active.count(e)) rows.push_back({along(c.edge(e)) - along(c.edge(j)), true});
+  }
+  exact::StrictSystem<Q> sys;
+  const auto R = static_cast<Eigen::Index>(rows.size());
+  sys.A = exact::Mat<Q>::Zero(R, 6 + R);
+  sys.b = Vec<Q>::Zero(R);
+  sys.is_free.assign(static_cast<std::size_t>(6 + R), false);
+  sys.strict.assign(static_cast<std::size_t>(6 + R), false);
+  for (std::size_t k = 0; k < 6; ++k) sys.is_free[k] = true;
+  for (Eigen::Index k = 0; k < R; ++k) {
+    sys.A.row(k).head(6) = rows[static_cast<std::size_t>(k)].first.transpose();
+    sys.A(k, 6 + k) = -1;  // slack: = 0 rows fix it at 0 below
+    if (rows[static_cast<std::size_t>(k)].second)
+      sys.strict[static_cast<std::size_t>(6 + k)] = true;
+    else
+      sys.A(k, 6 + k) = 0;
+  }
+  return exact::strict_feasibility(sys, exact::Arith::kVerified).status == exact::StrictStatus::kFeasible;
+}
+
+std::set<std::string> brute_force(const SpatialScene& s) {
+  std::vector<std::string> all{""};
+  for (const SpatialContact& c : s.contacts) {
+    std::vector<std::string> next;
+    for (const std::string& p : all)
+      for (const char L : letters(c.edges.size())) next.push_back(p + L);
+    all = std::move(next);
+  }
+  std::set<std::string> out;
+  for (const std::string& m : all)
+    if (brute_feasible(s, m)) out.insert(m);
+  return out;
+}
+
+// A body with k contacts at small integer points with small integer normals (degenerate often: parallel normals,
+// shared points), square pyramids or a stated hexagon.
+SpatialScene random_scene(std::mt19937& rng, std::size_t k, bool hexagon) {
+  std::uniform_int_distribution<int> coord(-2, 2);
+  SpatialScene s;
+  s.body.mass = 1;
+  s.body.com = {Q(coord(rng)), Q(coord(rng)), Q(coord(rng))};
+  for (std::size_t i = 0; i < k; ++i) {
+    SpatialContact c;
+    c.point = {Q(coord(rng)), Q(coord(rng)), Q(coord(rng))};
+    do c.normal = {Q(coord(rng)), Q(coord(rng)), Q(coord(rng))};
+    while (sgn(c.normal[0]) == 0 && sgn(c.normal[1]) == 0 && sgn(c.normal[2]) == 0);
+    std::tie(c.t1, c.t2) = geometry::default_tangent_frame(c.normal);
+    if (hexagon)
+      c.edges = {{2, 0}, {1, 2}, {-1, 2}, {-2, 0}, {-1, -2}, {1, -2}};
+    else
+      c.edges = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    s.contacts.push_back(std::move(c));
+  }
+  return s;
+}
+
+// 100 seeded bodies of 1 to 3 contacts (square pyramids; hexagons up to 2 contacts) and one of 4 contacts: the tree's
+// list is the brute force's, every listed vdot realises its mode, and the certificate verifies.
+TEST(SpatialModes, RandomBodiesAgainstBruteForce) {
+  std::mt19937 rng(34);
+  for (int trial = 0; trial < 101; ++trial) {
+    const bool hexagon = trial % 5 == 0;
+    const std::size_t k = trial >= 100 ? 4 : hexagon ? 1 + trial % 2 : 1 + static_cast<std::size_t>(trial % 3);
+    const SpatialScene s = random_scene(rng, k, hexagon);
+    const SpatialModel model = spatial_model(s);
+    const SpatialModeTree t = spatial_modes(model);
+    EXPECT_EQ(mode_set(t), brute_force(s)) << "trial " << trial;
+    for (std::size_t i = 0; i < t.modes.size(); ++i) EXPECT_TRUE(realises(model, t.modes[i], t.accelerations[i]));
+  }
+}
+
+// The letters partition {a_n >= 0}: at a random acceleration every contact with a_n >= 0 meets exactly one letter.
+TEST(SpatialModes, LettersPartitionTheAccelerations) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> small(-1, 1);
+  const SpatialScene s = random_scene(rng, 3, true);
+  const SpatialModel model = spatial_model(s);
+  for (int trial = 0; trial < 300; ++trial) {
+    Vec<Q> vdot(6);
+    for (Eigen::Index d = 0; d < 6; ++d) vdot(d) = small(rng);
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (sgn(Q(model.contacts[i].n.dot(vdot))) < 0) continue;
+      int hits = 0;
+      for (const char L : letters(6)) hits += realises(SpatialModel{{model.contacts[i]}}, std::string(1, L), vdot);
+      EXPECT_EQ(hits, 1) << "trial " << trial << " contact " << i;
+    }
+  }
+}
+
+// An extruded planar scene (each touching fixel twice, at z = +-1, normals in the plane, frame (t, z) with t the
+// planar tangent): its modes whose two copies agree on a letter of {s, f, A, E} are the planar modes, read
+// s = s, f = n, E (friction along -t: sliding along +t) = l, A = r.
+TEST(SpatialModes, ExtrudedPlanarScenesHaveThePlanarModes) {
+  for (const char* name :
+       {"bt2002_fig4b_nnn", "bt2002_fig4d_peg_nn", "bt2002_section7_disk", "bt2002_fig10_pentagon_insert"}) {
+    const geometry::PlanarScene ps = geometry::load_planar_scene(runtime::bundled_scenes_dir() + "/" + name + ".json");
+    std::set<std::string> planar;
+    for (const ModeString& m : contact_modes(ps).tree.modes) planar.insert(m.text());
+    SpatialScene s;
+    s.body.mass = 1;
+    s.body.com = {ps.workpiece.com.x, ps.workpiece.com.y, Q(0)};
+    for (const geometry::Fixel& f : ps.fixels)
+      for (const int z : {1, -1}) {
+        SpatialContact c;
+        const geometry::Point2 p = f.frame.point, n = f.frame.normal;
+        c.point = {p.x, p.y, Q(z)};
+        c.normal = {n.x, n.y, Q(0)};
+        c.t1 = {-n.y, n.x, Q(0)};
+        c.t2 = {Q(0), Q(0), n.x * n.x + n.y * n.y};
+        c.edges = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+        s.contacts.push_back(std::move(c));
+      }
+    std::set<std::string> in_plane;
+    for (const std::string& m : spatial_modes(spatial_model(s)).modes) {
+      std::string p;
+      for (std::size_t i = 0; i < m.size(); i += 2) {
+        const char L = m[i];
+        if (m[i + 1] != L || std::string("sfAE").find(L) == std::string::npos) break;
+        p += L == 's' ? 's' : L == 'f' ? 'n' : L == 'E' ? 'l' : 'r';
+      }
+      if (p.size() == ps.fixels.size()) in_plane.insert(p);
+    }
+    EXPECT_EQ(in_plane, planar) << name;
+  }
+}
+
+// The reader names the field of each defect (exit 2 in the CLI).
+TEST(SpatialScene, ReaderNamesTheField) {
+  const std::string box = read("spatial_box_on_plane");
+  auto refuses = [&](const std::string& from, const std::string& to, const std::string& field) {
+    std::string text = box;
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    try {
+      parse(text);
+      ADD_FAILURE() << "accepted: " << to;
+    } catch (const exact::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  refuses("\"mass\": 1", "\"mass\": 0", "$.body.mass");
+  refuses("[0, 0, \"2/3\"]", "[0, 0, \"-2/3\"]", "$.body.inertia");
+  refuses("[[\"5/12\", 0, 0]", "[[\"5/12\", 1, 0]", "$.body.inertia");
+  refuses("[1, 1, 0], \"normal\": [0, 0, 1]", "[1, 1, 0], \"normal\": [0, 0, 0]", "$.contacts[0].normal");
+  refuses("[1, 1, 0], \"normal\": [0, 0, 1]", "[1, 1, 0], \"normal\": [0, 0, -1]", "$.contacts[0].normal");
+  refuses("\"point\": [1, 1, 0]", "\"point\": [2, 1, 0]", "$.contacts[0].point");
+  refuses("\"point\": [1, 1, 0]", "\"point\": [0, 0, \"1/2\"]", "$.contacts[0].point");
+  refuses("\"normal\": [0, 0, 1]}", "\"normal\": [0, 0, 1], \"edges\": [[1, 0], [0, 1], [-1, 0]]}", "edges");
+  refuses("\"normal\": [0, 0, 1]}", "\"normal\": [0, 0, 1], \"edges\": [[1, 0], [-1, 0], [0, 1], [0, -1]]}", "edges");
+  refuses("\"normal\": [0, 0, 1]}", "\"normal\": [0, 0, 1], \"edges\": [[2, 0], [1, 1], [0, 2], [-1, 0], [0, -1]]}",
+          "edges");
+  refuses("\"normal\": [0, 0, 1]}", "\"normal\": [0, 0, 1], \"tangent\": [[0, 1, 0], [1, 0, 0]]}", "tangent");
+  refuses("\"mu\": \"1/2\",", "", "$.contacts[0]");
+}
+
+// The default frame: rational, orthogonal, right-handed, and (x, y) for the normal z.
+TEST(SpatialScene, DefaultFrame) {
+  const auto [t1, t2] = geometry::default_tangent_frame({Q(0), Q(0), Q(1)});
+  EXPECT_EQ(t1, (Vec3{Q(1), Q(0), Q(0)}));
+  EXPECT_EQ(t2, (Vec3{Q(0), Q(1), Q(0)}));
+  const Vec3 n{Q(2), Q(-3), Q(5, 7)};
+  const auto [u1, u2] = geometry::default_tangent_frame(n);
+  EXPECT_EQ(geometry::dot(u1, n), 0);
+  EXPECT_EQ(geometry::dot(u2, n), 0);
+  EXPECT_EQ(geometry::dot(u1, u2), 0);
+  EXPECT_GT(geometry::dot(geometry::cross(u1, u2), n), 0);
+}
+
+// Forged certificates: each change below must be rejected (INVALID or an InputError naming the field).
+TEST(SpatialModes, ForgedCertificatesAreRejected) {
+  const std::string text = read("spatial_box_on_plane");
+  const SpatialModeTree t = spatial_modes(spatial_model(parse(text)));
+  const nlohmann::json good = nlohmann::json::parse(spatial_modes_certificate(text, t));
+  auto rejected = [](const nlohmann::json& forged) {
+    try {
+      return !check_text(forged.dump()).valid;
+    } catch (const exact::InputError&) {
+      return true;
+    }
+  };
+  nlohmann::json f = good;
+  f["modes"].erase(f["modes"].begin() + 5);  // a feasible mode left out
+  EXPECT_TRUE(rejected(f));
+  f = good;
+  f["modes"][5]["acceleration"][0] = "123";  // a witness that does not realise its mode
+  EXPECT_TRUE(rejected(f));
+  f = good;
+  f["dead"].erase(f["dead"].begin());  // a dead prefix left out
+  EXPECT_TRUE(rejected(f));
+  f = good;
+  f["dead"][0]["motzkin"][0][1] = "-7";  // a Motzkin weight changed
+  EXPECT_TRUE(rejected(f));
+  f = good;
+  f["dead"].push_back(f["dead"][0]);  // a dead prefix listed twice
+  EXPECT_TRUE(rejected(f));
+  f = good;
+  f["modes"][0]["mode"] = "ssZs";  // not a letter
+  EXPECT_TRUE(rejected(f));
+  f = good;
+  const std::size_t at = text.find("[1, -1, 0]");
+  std::string moved = text;
+  moved.replace(at, 10, "[1, 0, 0]");  // the scene changed under its digest
+  f["scene"] = moved;
+  EXPECT_TRUE(rejected(f));
+  EXPECT_FALSE(rejected(good));
+}
+
+}  // namespace
+}  // namespace contactcert::solvers::spatial
