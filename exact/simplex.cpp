@@ -104,9 +104,9 @@ LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_fre
                          long& pivots) {
   long degenerate_run = 0;
   for (;;) {
-    const bool bland = options.rule == PivotRule::kBland ||
-                       degenerate_run >= (NumberTraits<T>::is_exact ? kDegenerateRunBeforeBland
-                                                                    : kFloatDegenerateRunBeforeBland);
+    const bool bland =
+        options.rule == PivotRule::kBland ||
+        degenerate_run >= (NumberTraits<T>::is_exact ? kDegenerateRunBeforeBland : kFloatDegenerateRunBeforeBland);
     const Entering e = entering_column(tab, is_free, bland);
     if (e.column < 0) return {LoopEnd::kOptimal, -1, 1};
     const Index r = blocking_row(tab, is_free, e, bland);
