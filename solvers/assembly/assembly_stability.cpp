@@ -138,7 +138,7 @@ std::vector<std::size_t> walk_order(const geometry::Assembly& a) {
       if (done[b]) continue;
       std::size_t open = 0;
       for (std::size_t i = 0; i < k; ++i) open += !placed[i] && touches(i, b);
-      if (open <= fewest) {
+      if (open < fewest) {
         best = b;
         fewest = open;
       }
