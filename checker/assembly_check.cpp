@@ -235,6 +235,27 @@ std::string coverage_violation(std::size_t k, const std::vector<AssemblyDeadPref
   return {};
 }
 
+/// The order of a claim's dead prefixes' letters: `order` if it lists each of the k contacts once, the file's order
+/// if it is empty; else empty.
+std::vector<std::size_t> walk_positions(const std::vector<std::size_t>& order, std::size_t k) {
+  std::vector<std::size_t> out(order);
+  if (out.empty())
+    for (std::size_t i = 0; i < k; ++i) out.push_back(i);
+  std::vector<bool> seen(k, false);
+  for (const std::size_t i : out) {
+    if (out.size() != k || i >= k || seen[i]) return {};
+    seen[i] = true;
+  }
+  return out;
+}
+
+/// The file-order letters of a prefix in the walk's order: contact order[j] takes letter j, the later ones `*`.
+std::string placed_letters(const std::vector<std::size_t>& order, const std::string& prefix) {
+  std::string letters(order.size(), '*');
+  for (std::size_t j = 0; j < prefix.size(); ++j) letters[order[j]] = prefix[j];
+  return letters;
+}
+
 }  // namespace
 
 std::string assembly_motion_violation(const geometry::Assembly& a, const AssemblyMotion& m) {
@@ -314,8 +335,10 @@ std::string check_assembly_stability(const geometry::Assembly& a, const Assembly
     return claim.has_moving ? std::string() : "weakly stable without a moving solution";
   if (claim.has_moving) return "strongly stable with a moving solution";
   if (const std::string why = coverage_violation(cs.size(), claim.dead); !why.empty()) return why;
+  const std::vector<std::size_t> order = walk_positions(claim.contact_order, cs.size());
+  if (order.empty() && !cs.empty()) return "contact_order is not an order of the contacts (each index once)";
   for (const AssemblyDeadPrefix& d : claim.dead) {
-    const Rows R = checked_rows(a, cs, d.prefix + std::string(cs.size() - d.prefix.size(), '*'), false);
+    const Rows R = checked_rows(a, cs, placed_letters(order, d.prefix), false);
     if (d.motzkin.size() != static_cast<Eigen::Index>(R.rows.size()) || !table2_check::motzkin_holds(R, d.motzkin))
       return "dead prefix \"" + d.prefix + "\": its certificate does not prove the prefix's system infeasible";
   }
@@ -323,7 +346,7 @@ std::string check_assembly_stability(const geometry::Assembly& a, const Assembly
 }
 
 AssemblyCertificateCheck check_assembly_certificate(const exact::JsonInput& c) {
-  c.expect_keys({"kind", "verdict", "scene", "problem_sha256", "resting", "moving", "dead"});
+  c.expect_keys({"kind", "verdict", "scene", "problem_sha256", "resting", "moving", "contact_order", "dead"});
   const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
   const geometry::Assembly a = geometry::read_assembly(embedded);
   const std::size_t N = a.bodies.size(), k = a.contacts.size();
@@ -356,6 +379,12 @@ AssemblyCertificateCheck check_assembly_certificate(const exact::JsonInput& c) {
     claim.has_moving = true;
     claim.moving = {read_letters(m->at("mode"), k, true), m->at("acceleration").rational_vector(3 * N),
                     m->at("forces").rational_vector(2 * k)};
+  }
+  if (const auto order = c.find("contact_order")) {
+    for (const exact::JsonInput& i : order->elements())
+      claim.contact_order.push_back(static_cast<std::size_t>(i.integer(0, static_cast<long>(k) - 1)));
+    if (walk_positions(claim.contact_order, k).empty())
+      order->fail("each of the " + std::to_string(k) + " contacts once");
   }
   std::set<std::string> listed;
   for (const exact::JsonInput& d : c.at("dead").elements()) {

@@ -20,6 +20,11 @@ using Index = Eigen::Index;
 /// After this many consecutive degenerate pivots, Dantzig's rule gives way to Bland's rule until the
 /// objective moves again (Bland's rule cannot cycle, so every degenerate run ends).
 constexpr long kDegenerateRunBeforeBland = 50;
+/// The same in floating point, where Bland's rule is only the fallback for a cycle: its smallest-index ties take
+/// pivots just above the sign tolerance, which wreck a float tableau (on a wall of 16 boxes, phase 1 then wanders for
+/// 10^5 pivots), while Dantzig's rule with the largest tied pivot ends its degenerate runs in practice. The float
+/// answer is checked exactly afterwards, and options.max_pivots bounds a cycle.
+constexpr long kFloatDegenerateRunBeforeBland = 1000;
 
 enum class LoopEnd { kOptimal, kUnbounded, kPivotLimit, kTimeLimit };
 
@@ -99,7 +104,9 @@ LoopOutcome simplex_loop(SimplexTableau<T>& tab, const std::vector<bool>& is_fre
                          long& pivots) {
   long degenerate_run = 0;
   for (;;) {
-    const bool bland = options.rule == PivotRule::kBland || degenerate_run >= kDegenerateRunBeforeBland;
+    const bool bland =
+        options.rule == PivotRule::kBland ||
+        degenerate_run >= (NumberTraits<T>::is_exact ? kDegenerateRunBeforeBland : kFloatDegenerateRunBeforeBland);
     const Entering e = entering_column(tab, is_free, bland);
     if (e.column < 0) return {LoopEnd::kOptimal, -1, 1};
     const Index r = blocking_row(tab, is_free, e, bland);

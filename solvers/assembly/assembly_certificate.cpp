@@ -32,6 +32,13 @@ std::string assembly_certificate(const std::string& scene_text, const AssemblySt
     j["moving"] = {{"mode", r.moving.mode},
                    {"acceleration", exact_strings(r.moving.acceleration)},
                    {"forces", exact_strings(r.moving.forces)}};
+  // The walk's contact order, where a dead prefix has letters and it is not the file's (a certificate without it
+  // reads its prefixes in the file's order).
+  bool order_matters = false;
+  for (const AssemblyDeadPrefix& d : r.dead) order_matters = order_matters || !d.prefix.empty();
+  bool in_file_order = true;
+  for (std::size_t i = 0; i < r.contact_order.size(); ++i) in_file_order = in_file_order && r.contact_order[i] == i;
+  if (order_matters && !in_file_order) j["contact_order"] = r.contact_order;
   json dead = json::array();
   for (const AssemblyDeadPrefix& d : r.dead)
     dead.push_back({{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(d.motzkin)}});

@@ -66,6 +66,7 @@ bool meets(const AssemblyModel& model, std::size_t i, char L, const Vec<Q>& vdot
 /// a moving solution). Stops at the first one.
 void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, AssemblyStabilityResult& r) {
   const std::size_t k = model.contacts.size();
+  const std::vector<std::size_t>& order = r.contact_order;
   std::vector<Node> stack;
   CertificateMemory memory;
   {
@@ -94,8 +95,8 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
       }
       ++r.nodes;
       Node child{prefix, node.vdot, node.c};
-      if (!meets(model, i, L, node.vdot, node.c)) {
-        const AssemblySystem s = assembly_system(model, prefix + std::string(k - prefix.size(), '*'));
+      if (!meets(model, order[i], L, node.vdot, node.c)) {
+        const AssemblySystem s = assembly_system(model, file_letters(order, prefix));
         if (options.reuse_certificates)
           if (std::optional<Vec<Q>> y = memory.recall(s, prefix.size())) {
             r.dead.push_back({std::move(prefix), std::move(*y)});
@@ -112,7 +113,7 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
       }
       if (child.prefix.size() == k) {
         r.has_moving = true;
-        r.moving = {child.prefix, child.vdot, child.c};
+        r.moving = {file_letters(order, child.prefix), child.vdot, child.c};
         return;
       }
       stack.push_back(std::move(child));
@@ -121,6 +122,45 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
 }
 
 }  // namespace
+
+std::vector<std::size_t> walk_order(const geometry::Assembly& a) {
+  const std::size_t k = a.contacts.size();
+  std::vector<bool> placed(k, false);
+  std::vector<std::size_t> order;
+  const auto touches = [&a](std::size_t i, std::size_t b) {
+    const geometry::AssemblyContact& c = a.contacts[i];
+    return (c.from.movable() && c.from.index == b) || (c.to.movable() && c.to.index == b);
+  };
+  std::vector<bool> done(a.bodies.size(), false);
+  for (;;) {
+    std::size_t best = a.bodies.size(), fewest = k + 1;
+    for (std::size_t b = 0; b < a.bodies.size(); ++b) {
+      if (done[b]) continue;
+      std::size_t open = 0;
+      for (std::size_t i = 0; i < k; ++i) open += !placed[i] && touches(i, b);
+      if (open < fewest) {
+        best = b;
+        fewest = open;
+      }
+    }
+    if (best == a.bodies.size()) break;
+    done[best] = true;
+    for (std::size_t i = 0; i < k; ++i)
+      if (!placed[i] && touches(i, best)) {
+        placed[i] = true;
+        order.push_back(i);
+      }
+  }
+  for (std::size_t i = 0; i < k; ++i)  // a contact of no movable body (none in a valid assembly) comes last
+    if (!placed[i]) order.push_back(i);
+  return order;
+}
+
+std::string file_letters(const std::vector<std::size_t>& order, const std::string& prefix) {
+  std::string letters(order.size(), '*');
+  for (std::size_t j = 0; j < prefix.size(); ++j) letters[order[j]] = prefix[j];
+  return letters;
+}
 
 const char* verdict_name(AssemblyVerdict v) {
   switch (v) {
@@ -150,6 +190,7 @@ AssemblyStabilityResult assembly_stability(const geometry::Assembly& a, const As
   const AssemblyModel model = assembly_model(a);
   const std::size_t k = model.contacts.size();
   AssemblyStabilityResult r;
+  r.contact_order = walk_order(a);
   try {
     const AssemblySystem rest = assembly_system(model, std::string(k, 'n'), true);
     const auto f = solve(rest, options.arith);

@@ -207,5 +207,33 @@ TEST(AssemblyCheck, ForgedUnstableCertificatesAreRefused) {
   EXPECT_NE(checker::check_assembly_stability(stable, r), "");
 }
 
+// The walk's contact order (AssemblyStabilityResult::contact_order): a row of three boxes under a lateral push goes
+// body by body from the first box (the fewest open contacts, ties to the earlier body): box 0's ground and interface
+// contacts 0, 1, 4, 5, box 1's ground and interface 2, 3, 8, 9, box 2's ground 6, 7. Its dead prefixes are letters
+// in that order; the checker places them itself, so the file's order, two swapped contacts or an index listed twice
+// are refused.
+TEST(AssemblyCheck, ContactOrderIsCheckedNotTrusted) {
+  SceneText s = testing::box_row(3);
+  for (std::string& b : s.bodies) b.insert(b.size() - 1, R"(, "load": ["1/2", -2, 0])");
+  const geometry::Assembly a = s.read();
+  EXPECT_EQ(walk_order(a), (std::vector<std::size_t>{0, 1, 4, 5, 2, 3, 8, 9, 6, 7}));
+  EXPECT_EQ(file_letters(walk_order(a), "slr"), "sl**r*****");
+  const AssemblyStabilityResult r = assembly_stability(a);
+  ASSERT_EQ(r.verdict, AssemblyVerdict::kStronglyStable);
+  ASSERT_EQ(r.contact_order, walk_order(a));
+  ASSERT_EQ(checker::check_assembly_stability(a, r), "");
+  AssemblyStabilityResult f = r;
+  f.contact_order.clear();  // read in the file's order
+  EXPECT_NE(checker::check_assembly_stability(a, f), "");
+  f = r;
+  std::swap(f.contact_order[0], f.contact_order[9]);
+  EXPECT_NE(checker::check_assembly_stability(a, f), "");
+  f = r;
+  f.contact_order[1] = f.contact_order[0];
+  EXPECT_EQ(checker::check_assembly_stability(a, f), "contact_order is not an order of the contacts (each index once)");
+  f.contact_order.pop_back();
+  EXPECT_NE(checker::check_assembly_stability(a, f), "");
+}
+
 }  // namespace
 }  // namespace contactcert::solvers::assembly

@@ -21,8 +21,9 @@ geometry::Assembly windy_row(std::size_t n) {
   return s.read();
 }
 
-AssemblySystem prefix_system(const AssemblyModel& m, const std::string& prefix) {
-  return assembly_system(m, prefix + std::string(m.contacts.size() - prefix.size(), '*'));
+/// The system of a prefix in the walk's contact order `order` (AssemblyStabilityResult::contact_order).
+AssemblySystem prefix_system(const AssemblyModel& m, const std::vector<std::size_t>& order, const std::string& prefix) {
+  return assembly_system(m, file_letters(order, prefix));
 }
 
 TEST(AssemblyCertificateMemory, RowLabelsNameEveryRowOnce) {
@@ -41,7 +42,7 @@ TEST(AssemblyCertificateMemory, RecallsOnlyCertificatesThatHold) {
   ASSERT_EQ(r.verdict, AssemblyVerdict::kStronglyStable);
   ASSERT_GE(r.dead.size(), 2u);
   const AssemblyDeadPrefix& d = r.dead.front();
-  const AssemblySystem dead = prefix_system(m, d.prefix);
+  const AssemblySystem dead = prefix_system(m, r.contact_order, d.prefix);
   ASSERT_TRUE(motzkin_holds(dead, d.motzkin));
   // A wrong vector fails: its negation, and (the system being infeasible only through it) zero.
   EXPECT_FALSE(motzkin_holds(dead, Vec<Q>(-d.motzkin)));
@@ -63,11 +64,11 @@ TEST(AssemblyCertificateMemory, RecallsOnlyCertificatesThatHold) {
   ASSERT_TRUE(again);
   EXPECT_TRUE(motzkin_holds(dead, *again));
   // The root's system (every contact relaxed) is feasible: no certificate can hold there, whatever is remembered.
-  for (const AssemblyDeadPrefix& e : r.dead) memory.remember(prefix_system(m, e.prefix), 0, e.motzkin);
-  EXPECT_FALSE(memory.recall(prefix_system(m, ""), 0));
+  for (const AssemblyDeadPrefix& e : r.dead) memory.remember(prefix_system(m, r.contact_order, e.prefix), 0, e.motzkin);
+  EXPECT_FALSE(memory.recall(prefix_system(m, r.contact_order, ""), 0));
   // Every recall on a dead prefix's system gives a certificate of that system.
   for (const AssemblyDeadPrefix& e : r.dead) {
-    const AssemblySystem s = prefix_system(m, e.prefix);
+    const AssemblySystem s = prefix_system(m, r.contact_order, e.prefix);
     if (const std::optional<Vec<Q>> y = memory.recall(s, 0)) {
       EXPECT_TRUE(motzkin_holds(s, *y)) << e.prefix;
     }
