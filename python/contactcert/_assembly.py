@@ -112,7 +112,7 @@ class Assembly(FromSource[_core.Assembly]):
         return json.loads(self._core.text)
 
     def _problem_source(self) -> tuple[str, str]:
-        """What `check(certificate, problem=assembly)` compares an assembly_stability certificate with."""
+        """What `check(certificate, problem=assembly)` compares an assembly certificate (stability, modes, ucp) with."""
         return self._core.text, self.name
 
     def stability(self, arith: Arith = "verified", time_limit: float = 0, max_nodes: int | None = None,
