@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Any
 from . import _core
 from ._numbers import exact
 from ._options import ARITHS, LONG_MAX, Arith, choice, seconds, whole_number
-from ._results import Modes, Result, Vector
+from ._results import Modes, Result, Vector, budget_exceeded, ucp_covered
 from ._source import FromSource, Path
 
 if TYPE_CHECKING:
@@ -84,13 +84,6 @@ class AssemblyUcp(Result):
         return f"AssemblyUcp({self.status}, {self._data['reason']!r})"
 
 
-def _unknown(result: Result, what: str) -> BudgetExceeded:
-    """The BudgetExceeded of a run whose budget ran out, with the result as its `result`."""
-    e = BudgetExceeded(f"budget exceeded: {what}")
-    e.result = result  # type: ignore[attr-defined]  # set here, not by the extension
-    return e
-
-
 class Assembly(FromSource[_core.Assembly]):
     """Several movable bodies, the fixed obstacles, fixels and fingers they touch, and their contacts."""
 
@@ -129,7 +122,7 @@ class Assembly(FromSource[_core.Assembly]):
         data, text, svg = self._core.stability(arith, time_limit, max_nodes, path)
         result = AssemblyStability(json.loads(data), Certificate(text, path) if text else None, svg)
         if result.verdict == "unknown":
-            raise _unknown(result, f"{result['status']} ({result['covered']})")
+            raise budget_exceeded(result, result["status"], result["covered"])
         return result
 
     def ucp(self, arith: Arith = "verified", time_limit: float = 0, max_nodes: int | None = None,
@@ -146,7 +139,7 @@ class Assembly(FromSource[_core.Assembly]):
         data, text, svg = self._core.ucp(arith, time_limit, max_nodes, max_bases, path)
         result = AssemblyUcp(json.loads(data), Certificate(text, path) if text else None, svg)
         if result.status == "unknown":
-            raise _unknown(result, result["reason"])
+            raise budget_exceeded(result, result["reason"], ucp_covered(result.to_dict()))
         return result
 
     def modes(self, arith: Arith = "verified", time_limit: float = 0, max_nodes: int | None = None,

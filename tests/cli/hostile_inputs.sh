@@ -29,7 +29,7 @@ for limit in 0.00001 0.0001 0.001 0.01; do
   done
 done
 check 3 'time limit of 1e-05 s reached after' ucp "$ds4" --time-limit 0.00001
-check 3 '"status":"unknown"' ucp "$ds4" --time-limit 0.00001 --json --arith adaptive
+check 3 'budget exceeded: time limit of 1e-05 s reached' ucp "$ds4" --time-limit 0.00001 --json --arith adaptive
 check 3 'node budget of 1 exhausted' ucp "$ds4" --max-nodes 1 --arith adaptive
 check 3 'node budget of 2 exhausted' ucp "$ds4" --max-nodes 2 --arith float
 # every command takes --time-limit; the watchdog ends what has no loop of its own
