@@ -21,3 +21,10 @@ limit_only 'budget exceeded: time limit of 1e-09 s reached' assembly "$s/assembl
 limit_only 'budget exceeded: time limit of 1e-09 s reached' ucp "$s/assembly_pushed_boxes_wall.json" --time-limit 1e-9
 # the paper method's stationary pair: an answer with status unknown (exit 3), on stdout
 check 3 '"status":"unknown","reason":"stationary pair' ucp "$q30_ds4" --method paper --json
+# insert honours --time-limit through the query's deadline (not only the watchdog): a tiny limit on a long sweep
+# stops at once, exit 3, naming what it computed; no picture written
+q30_mus=$(python3 -c "print(','.join(f'{i}/100' for i in range(1, 201)))")
+limit_only 'insert '"$s"'/bt2002_fig10_pentagon_insert.json: time limit of 1e-09 s reached (covered: nothing' \
+  insert "$s/bt2002_fig10_pentagon_insert.json" --sweep-mu "$q30_mus" --time-limit 1e-9 --svg "$work/q30_insert.svg"
+[ ! -e "$work/q30_insert.svg" ] || { failures=$((failures + 1)); echo "FAIL: insert wrote its picture past the limit"; }
+limit_only 'time limit of 1e-09 s reached' insert "$s/bt2002_section7_disk.json" --time-limit 1e-9 --json
