@@ -9,7 +9,6 @@ namespace contactcert::checker {
 
 using exact::Q;
 using exact::Vec;
-using namespace solvers;  // the mode types the certificate is read into
 
 ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
   const std::string kind = c.at("kind").string();

@@ -16,7 +16,7 @@ limit_only 'budget exceeded: node budget of 1 exhausted' ucp "$q30_ds4" --max-no
 limit_only 'budget exceeded: time limit of 1e-09 s reached' ucp "$q30_ds4" --time-limit 1e-9 --method paper
 limit_only 'budget exceeded: node_limit (covered: 1 prefixes visited' assembly "$s/assembly_pushed_box_weak.json" --max-nodes 1
 limit_only 'budget exceeded: node_limit (covered: 1 prefixes visited' assembly "$s/assembly_pushed_box_weak.json" --max-nodes 1 --json
-limit_only 'budget exceeded: node_limit' stability "$s/assembly_pushed_box_weak.json" --max-nodes 1 --json
+limit_only 'budget exceeded: time_limit (covered: ' stability "$s/assembly_pushed_box_weak.json" --time-limit 1e-9 --json
 limit_only 'budget exceeded: time limit of 1e-09 s reached' assembly "$s/assembly_pushed_boxes_wall.json" --ucp --time-limit 1e-9 --json
 limit_only 'budget exceeded: time limit of 1e-09 s reached' ucp "$s/assembly_pushed_boxes_wall.json" --time-limit 1e-9
 # the paper method's stationary pair: an answer with status unknown (exit 3), on stdout
