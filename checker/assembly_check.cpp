@@ -2,14 +2,13 @@
 
 #include <set>
 
+#include "checker/sparse_motzkin_reader.h"
 #include "checker/table2_rows.h"
 #include "geometry/contact_frame.h"
-#include "solvers/stability/sparse_motzkin.h"
 
 namespace contactcert::checker {
 
 using namespace solvers::assembly;  // the verdict and evidence types the certificate is read into
-using solvers::read_sparse_motzkin;
 namespace {
 
 /// Rows of the system of `letters` (s l r n *) over N bodies, or of the resting system (docs/formats.md section

@@ -2,29 +2,18 @@
 
 #include "checker/assembly_check.h"
 #include "checker/modes_check.h"
+#include "checker/sparse_motzkin_reader.h"
 #include "exact/input_error.h"
-#include "solvers/stability/sparse_motzkin.h"
 
 namespace contactcert::checker {
 namespace {
 
 using exact::Q;
 using exact::Vec;
-using solvers::read_sparse_motzkin;
 
 using table2_check::Rows;
 using Sign = Rows::Sign;
 using Accelerations = std::vector<std::array<std::vector<Rows::Entry>, 2>>;
-
-/// The letters of a mode (`whole`) or of a prefix: s l r n, one per contact; InputError naming the field otherwise.
-std::string read_letters(const exact::JsonInput& j, std::size_t k, bool whole) {
-  const std::string text = j.string();
-  if (text.find_first_not_of("slrn") != std::string::npos || text.size() > k ||
-      (whole ? text.size() != k : text.empty()))
-    j.fail(whole ? "a mode: one letter s l r n per contact (" + std::to_string(k) + ")"
-                 : "a prefix: 1 to " + std::to_string(k) + " letters s l r n");
-  return text;
-}
 
 /// The kinematic rows of a prefix in the layout of assembly_modes.h.
 Rows prefix_rows(const Accelerations& acc, std::size_t dims, const std::string& letters) {
@@ -78,20 +67,20 @@ ModesCertificateCheck check_assembly_modes_certificate(const exact::JsonInput& c
   std::vector<std::string> leaves, dead;
   for (const exact::JsonInput& e : c.at("modes").elements()) {
     e.expect_keys({"mode", "acceleration"});
-    std::string m = read_letters(e.at("mode"), k, true);
+    std::string m = read_mode_letters(e.at("mode"), ModeAlphabet{}, k, false);
     if (!realises(acc.rows, m, e.at("acceleration").rational_vector(dims)))
       return {false, "the acceleration listed for mode " + m + " does not realise it (Table 2)", 0, 0};
     leaves.push_back(std::move(m));
   }
   for (const exact::JsonInput& e : c.at("dead").elements()) {
     e.expect_keys({"prefix", "motzkin"});
-    std::string p = read_letters(e.at("prefix"), k, false);
+    std::string p = read_mode_letters(e.at("prefix"), ModeAlphabet{}, k, true);
     const Rows rows = prefix_rows(acc.rows, dims, p);
     if (!table2_check::motzkin_holds(rows, read_sparse_motzkin(e.at("motzkin"), rows.rows.size())))
       return {false, "the certificate of dead prefix " + p + " does not verify", 0, 0};
     dead.push_back(std::move(p));
   }
-  return modes_coverage_check(k, solvers::ModeAlphabet{}, dead, leaves);
+  return modes_coverage_check(k, ModeAlphabet{}, dead, leaves);
 }
 
 }  // namespace contactcert::checker

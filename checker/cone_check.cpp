@@ -1,15 +1,14 @@
 #include "checker/cone_check.h"
 
 #include "checker/frame_check.h"
+#include "checker/mode_letters.h"
+#include "checker/sparse_motzkin_reader.h"
 #include "checker/table2_rows.h"
-#include "solvers/stability/sparse_motzkin.h"
-#include "solvers/wrench_cone/mode.h"
 
 namespace contactcert::checker {
 
 using exact::Q;
 using exact::Vec;
-using namespace solvers;  // the mode types the certificate is read into
 
 ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
   const std::string kind = c.at("kind").string();
@@ -24,13 +23,12 @@ ConeCertificateCheck check_cone_certificate(const exact::JsonInput& c) {
   const geometry::PlanarScene& scene = read.scene;
   std::vector<bool> touching;
   for (const auto& f : scene.fixels) touching.push_back(f.frame.touching());
-  const ModeParse mode = parse_mode(c.at("mode").string(), touching);
-  if (mode.status != ModeStatus::kValid) c.at("mode").fail(mode.message);
+  const std::string mode = read_mode_letters(c.at("mode"), ModeAlphabet{touching, true, true}, touching.size(), false);
   // K and P are the checker's own (table2_rows.h), rebuilt from the scene's contact frames, not cone_form's.
   namespace t2 = table2_check;
   const t2::CheckedScene checked = t2::checked_scene(scene, /*touching_only=*/false);
   t2::ConeColumns cols;
-  if (!t2::cone_columns(checked, mode.mode.text(), cols)) c.at("mode").fail("not a mode of Table 2 for this scene");
+  if (!t2::cone_columns(checked, mode, cols)) c.at("mode").fail("not a mode of Table 2 for this scene");
   if (empty) {
     const std::string why =
         t2::cone_empty_violation(cols, read_sparse_motzkin(c.at("motzkin"), cols.row_wrenches.size()));

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "checker/frame_check.h"
+#include "checker/sparse_motzkin_reader.h"
 #include "checker/table2_rows.h"
-#include "solvers/stability/sparse_motzkin.h"
 
 namespace contactcert::checker {
 namespace {
@@ -16,7 +16,6 @@ namespace {
 using exact::Q;
 using exact::Vec;
 namespace t2 = table2_check;
-using solvers::read_sparse_motzkin;
 
 /// The sets (contact state, mode) whose wrench cones G_goal avoids, row by row as printed: eq. (21) for two
 /// fixels; Table 5 for three, whose state-111 row prints "mss" twice, the second being "ssm" (the row lists

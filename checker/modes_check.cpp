@@ -1,34 +1,11 @@
 #include "checker/modes_check.h"
 
 #include "checker/frame_check.h"
+#include "checker/mode_coverage.h"
+#include "checker/sparse_motzkin_reader.h"
 #include "checker/table2_rows.h"
-#include "solvers/stability/contact_modes.h"
-#include "solvers/stability/sparse_motzkin.h"
 
 namespace contactcert::checker {
-namespace {
-
-using namespace solvers;  // the mode types the certificate is read into
-
-// A mode or prefix over the alphabet's letters for its fixels (1 to k letters; exactly k for a mode).
-ModeString read_letters(const exact::JsonInput& j, const ModeAlphabet& alphabet, std::size_t k, bool prefix) {
-  const std::string text = j.string();
-  if (text.size() > k || (prefix ? text.empty() : text.size() != k))
-    j.fail(prefix ? "a mode prefix of 1 to " + std::to_string(k) + " letters"
-                  : "one letter per fixel (" + std::to_string(k) + ")");
-  ModeString m;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    bool known = false;
-    for (Interaction L : alphabet.letters(i)) known = known || static_cast<char>(L) == text[i];
-    if (!known)
-      j.fail("fixel " + std::to_string(i) + "'s letter '" + std::string(1, text[i]) +
-             "' is not one of its letters in this alphabet");
-    m.letters.push_back(static_cast<Interaction>(text[i]));
-  }
-  return m;
-}
-
-}  // namespace
 
 ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
   c.expect_keys({"kind", "scene", "problem_sha256", "table2", "unions", "modes", "dead"});
@@ -40,27 +17,27 @@ ModesCertificateCheck check_modes_certificate(const exact::JsonInput& c) {
   if (table2 != "strict" && table2 != "printed") c.at("table2").fail("expected \"strict\" or \"printed\"");
   std::vector<bool> touching;
   for (const geometry::Fixel& f : scene.fixels) touching.push_back(f.frame.touching());
-  const ModeAlphabet alphabet = ModeAlphabet{{touching, table2 == "printed"}, c.at("unions").boolean()};
+  const ModeAlphabet alphabet{touching, c.at("unions").boolean()};
   const std::size_t k = scene.fixels.size();
-  const bool printed = alphabet.rules.printed_separation;
+  const bool printed = table2 == "printed";
   // The rows and signs are the checker's own (table2_rows.h), rebuilt from the scene's contact frames.
   const table2_check::CheckedScene checked = table2_check::checked_scene(scene, /*touching_only=*/false);
   std::vector<std::string> leaves, dead;
   for (const auto& e : c.at("modes").elements()) {
     e.expect_keys({"mode", "acceleration"});
-    const ModeString m = read_letters(e.at("mode"), alphabet, k, false);
-    if (!table2_check::realises(checked, m.text(), printed, e.at("acceleration").rational_vector(3)))
-      return {false, "the acceleration listed for mode " + m.text() + " does not realise it (Table 2)", 0, 0};
-    leaves.push_back(m.text());
+    std::string m = read_mode_letters(e.at("mode"), alphabet, k, false);
+    if (!table2_check::realises(checked, m, printed, e.at("acceleration").rational_vector(3)))
+      return {false, "the acceleration listed for mode " + m + " does not realise it (Table 2)", 0, 0};
+    leaves.push_back(std::move(m));
   }
   for (const auto& e : c.at("dead").elements()) {
     e.expect_keys({"prefix", "motzkin"});
-    const ModeString p = read_letters(e.at("prefix"), alphabet, k, true);
+    std::string p = read_mode_letters(e.at("prefix"), alphabet, k, true);
     table2_check::Rows rows;
-    if (!table2_check::kinematic_rows(checked, p.text(), printed, rows) ||
+    if (!table2_check::kinematic_rows(checked, p, printed, rows) ||
         !table2_check::motzkin_holds(rows, read_sparse_motzkin(e.at("motzkin"), rows.rows.size())))
-      return {false, "the certificate of dead prefix " + p.text() + " does not verify", 0, 0};
-    dead.push_back(p.text());
+      return {false, "the certificate of dead prefix " + p + " does not verify", 0, 0};
+    dead.push_back(std::move(p));
   }
   return modes_coverage_check(k, alphabet, dead, leaves);
 }

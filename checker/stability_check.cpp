@@ -1,8 +1,9 @@
 #include "checker/stability_check.h"
 
 #include "checker/frame_check.h"
+#include "checker/mode_coverage.h"
+#include "checker/sparse_motzkin_reader.h"
 #include "checker/table2_rows.h"
-#include "solvers/stability/sparse_motzkin.h"
 
 namespace contactcert::checker {
 namespace {
@@ -15,16 +16,12 @@ using namespace solvers;  // the verdict and mode types the certificates are rea
 /// Whether every letter is one of s l r n, the letters of motion from rest at a touching fixel (section 7).
 bool motion_letters(const std::string& letters) { return letters.find_first_not_of("slrn") == std::string::npos; }
 
-// A mode of the k touching fixels, or with `prefix` one of its prefixes (1 to k letters).
+// A mode of the k touching fixels over s l r n, the letters of motion from rest (section 7), or with `prefix` one of
+// its prefixes (1 to k letters).
 ModeString read_mode(const exact::JsonInput& j, std::size_t k, bool prefix = false) {
-  const std::string text = j.string();
-  if (prefix && (text.empty() || text.size() > k))
-    j.fail("a mode prefix: 1 to " + std::to_string(k) + " letters from s l r n");
-  const ModeParse p = parse_mode(text, std::vector<bool>(prefix ? text.size() : k, true));
-  if (p.status != ModeStatus::kValid) j.fail(p.message);
-  if (text.find_first_not_of("slrn") != std::string::npos)
-    j.fail("only the letters s l r n describe motion from rest (strong stability, section 7)");
-  return p.mode;
+  ModeString m;
+  for (const char L : read_mode_letters(j, ModeAlphabet{}, k, prefix)) m.letters.push_back(static_cast<Interaction>(L));
+  return m;
 }
 
 }  // namespace
@@ -77,7 +74,7 @@ std::string check_stability(const geometry::PlanarScene& full, const Vec<Q>& g, 
         leaves.push_back(text);
       }
     }
-    if (auto gap = mode_coverage(k, moving_alphabet(k), dead, leaves))
+    if (auto gap = mode_coverage(k, ModeAlphabet{}, dead, leaves))
       return gap->kind == CoverageGap::Kind::kMissing
                  ? "no proof covers the moving modes that start with '" + gap->prefix + "'"
                  : coverage_gap_text(*gap);

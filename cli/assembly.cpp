@@ -14,26 +14,24 @@
 namespace contactcert::cli {
 
 int print_assembly_answer(const queries::Limited<queries::AssemblyStabilityAnswer>& r, const std::string& file,
-                          bool json, bool certificate_asked, const std::string& command) {
+                          bool json, const std::string& command) {
   if (!r) return report_limit(command, r.limit(), json);
-  const queries::AssemblyStabilityAnswer& a = *r;
-  std::cout << (json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, file));
-  if (a.decided()) return 0;
-  std::cerr << "contactcert: " << command << ": budget exceeded before a verdict (" << a.result.covered << ")"
-            << (certificate_asked ? "; no certificate written" : "") << "\n";
-  return 3;
+  if (const auto limit = queries::limit_of(*r)) return report_limit(command, *limit, json);
+  std::cout << (json ? queries::to_json(*r).dump() + "\n" : queries::to_text(*r, file));
+  return 0;
 }
 
 int print_assembly_answer(const queries::Limited<queries::AssemblyUcpAnswer>& r, const std::string& file, bool json,
                           const std::string& command) {
   if (!r) return report_limit(command, r.limit(), json);
   const queries::AssemblyUcpAnswer& a = *r;
+  if (const auto limit = queries::limit_of(a.report)) return report_limit(command, *limit, json);
   std::cout << (json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, file));
   return a.report.status == solvers::ucp::UcpStatus::kUnknown ? 3 : 0;
 }
 
-int print_assembly_answer(const queries::Limited<queries::AssemblyModesAnswer>& r, const std::string& file,
-                          bool json, const std::string& command) {
+int print_assembly_answer(const queries::Limited<queries::AssemblyModesAnswer>& r, const std::string& file, bool json,
+                          const std::string& command) {
   if (!r) return report_limit(command, r.limit(), json);
   const queries::AssemblyModesAnswer& a = *r;
   std::cout << (json ? queries::to_json(a).dump() + "\n" : queries::to_text(a, file));
@@ -67,8 +65,7 @@ int run_assembly(const AssemblyCliOptions& o) {
   if (o.max_nodes > 0) q.max_nodes = o.max_nodes;
   q.certificate = o.certificate;
   q.svg = o.svg;
-  return print_assembly_answer(queries::run_assembly_stability(in, q), o.file, o.common.json, !o.certificate.empty(),
-                               "assembly");
+  return print_assembly_answer(queries::run_assembly_stability(in, q), o.file, o.common.json, "assembly");
 }
 
 }  // namespace

@@ -12,15 +12,16 @@ namespace contactcert::cli {
 
 // Each prints its query's Limit as every command does (report_limit, exit 3); `command` names the command there.
 
-/// Prints the stability answer (its --json object or its text) and returns the exit code: 0, or 3 (with the
-/// coverage on stderr) if a budget ran out before a verdict.
+/// Prints the stability answer (its --json object or its text) and returns 0, or if a budget ran out before a
+/// verdict only that limit (queries::limit_of) and 3.
 int print_assembly_answer(const queries::Limited<queries::AssemblyStabilityAnswer>& r, const std::string& file,
-                          bool json, bool certificate_asked, const std::string& command);
-/// Prints the quasistatic answer and returns 0, or 3 for an unknown status.
+                          bool json, const std::string& command);
+/// Prints the quasistatic answer and returns 0, or 3 for an unknown status: a run stopped by a budget or the time
+/// limit prints only that limit.
 int print_assembly_answer(const queries::Limited<queries::AssemblyUcpAnswer>& r, const std::string& file, bool json,
                           const std::string& command);
 /// Prints the modes answer and returns 0.
-int print_assembly_answer(const queries::Limited<queries::AssemblyModesAnswer>& r, const std::string& file,
-                          bool json, const std::string& command);
+int print_assembly_answer(const queries::Limited<queries::AssemblyModesAnswer>& r, const std::string& file, bool json,
+                          const std::string& command);
 
 }  // namespace contactcert::cli

@@ -47,7 +47,7 @@ void register_check(CLI::App& app, Action& action) {
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Certificate file")->required();
   sub->add_option("--problem", o->problem,
-                  "Problem (or scene) file the certificate must be about: INVALID if its embedded problem differs");
+                  "Problem, scene or assembly file the certificate must be about: INVALID if its embedded problem differs");
   sub->callback([o, &action] {
     // The checkers re-derive everything in rationals: a float check would be ignored, so it is refused.
     if (o->common.arith == "float")

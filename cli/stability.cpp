@@ -166,8 +166,7 @@ int run_assembly_stability_command(const StabilityOptions& o, const AssemblyInpu
   queries::AssemblyStabilityOptions q;
   q.common = o.common.query();
   q.certificate = o.certificate;
-  return print_assembly_answer(run_assembly_stability(in, q), o.file, o.common.json, !o.certificate.empty(),
-                               "stability");
+  return print_assembly_answer(run_assembly_stability(in, q), o.file, o.common.json, "stability");
 }
 
 int run_stability_command(const StabilityOptions& o) {

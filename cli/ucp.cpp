@@ -129,6 +129,7 @@ int run_ucp(const UcpCliOptions& o) {
   progress.finish();
   if (!r) return report_limit("ucp", r.limit(), o.common.json);
   const queries::UcpAnswer& a = *r;
+  if (const auto limit = queries::limit_of(a.report)) return report_limit("ucp", *limit, o.common.json);
   if (o.common.json)
     std::cout << exact::json_text(queries::to_json(a)) << "\n";
   else

@@ -82,23 +82,24 @@ AdjacentResult<T> adjacent_vertices(const LpProblem<T>& problem, const std::vect
   Mat<T> G(static_cast<Index>(degenerate.size()), p);
   for (size_t i = 0; i < degenerate.size(); ++i)
     for (Index k = 0; k < p; ++k) G(static_cast<Index>(i), k) = tab.entry(degenerate[i], N[static_cast<size_t>(k)]);
-  OrthantConeRays<T> cone = orthant_cone_rays<T>(G, options.max_bases);
-  if (cone.status == ConeStatus::kBudgetExceeded) {
+  std::optional<std::vector<Vec<T>>> cone = orthant_cone_rays<T>(G, options.max_bases);
+  if (!cone) {
     // Keep the edges that are single pivots from this basis: non-basic columns with G e_k <= 0.
     res.status = AdjacencyStatus::kBudgetExceeded;
+    cone.emplace();
     for (Index k = 0; k < p; ++k) {
       bool feasible = true;
       for (Index i = 0; i < G.rows() && feasible; ++i) feasible = !exact::is_positive(G(i, k));
       if (!feasible) continue;
       Vec<T> e = Vec<T>::Zero(p);
       e(k) = T(1);
-      cone.rays.push_back(std::move(e));
+      cone->push_back(std::move(e));
     }
   }
 
   // Each extreme ray of the tangent cone is an edge; one ratio test along it finds its other end.
   T tmp;
-  for (const Vec<T>& w : cone.rays) {
+  for (const Vec<T>& w : *cone) {
     Vec<T> d = Vec<T>::Zero(n);
     Index single = -1, support = 0;
     for (Index k = 0; k < p; ++k) {

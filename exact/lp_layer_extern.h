@@ -19,7 +19,7 @@
   CONTACTCERT_LINALG_EXTERN(T)                                                                                    \
   extern template void IntMatrix<T>::make_primitive();                                                            \
   extern template std::vector<Eigen::Index> IntMatrix<T>::echelon(Eigen::Index, Eigen::Index, Eigen::Index);      \
-  extern template OrthantConeRays<T> orthant_cone_rays<T>(const Mat<T>&, long);                                   \
+  extern template std::optional<std::vector<Vec<T>>> orthant_cone_rays<T>(const Mat<T>&, long);                 \
   CONTACTCERT_DD_RING_EXTERN(T)                                                                                   \
   extern template struct AdjacentResult<T>;                                                                       \
   extern template AdjacentResult<T> adjacent_vertices<T>(const LpProblem<T>&, const std::vector<Eigen::Index>&,   \

@@ -13,19 +13,18 @@ namespace contactcert::exact {
 // ring of T: the rays come in the order of Motzkin's iteration on the orthant (the order in which the UCP
 // search visits the adjacent vertices). A ring ray is a positive multiple of the field ray.
 template <class T>
-OrthantConeRays<T> orthant_cone_rays(const Mat<T>& G, long max_rays) {
+std::optional<std::vector<Vec<T>>> orthant_cone_rays(const Mat<T>& G, long max_rays) {
   const Eigen::Index p = G.cols();
   DdBudget budget;
   budget.max_rays = static_cast<std::size_t>(std::max(max_rays, 0L));
-  OrthantConeRays<T> out;
   Mat<T> W;
   try {
     W = with_exact_ring<T>(
         [&]<class R>() { return ring::to_field_rows<T>(orthant_rays<R>(ring::to_ring_rows<R>(G), budget), p); });
   } catch (const BudgetExceeded&) {
-    out.status = ConeStatus::kBudgetExceeded;
-    return out;
+    return std::nullopt;
   }
+  std::vector<Vec<T>> rays;
   for (Eigen::Index r = 0; r < W.rows(); ++r) {
     Vec<T> w = W.row(r).transpose();
     for (Eigen::Index j = 0; j < p; ++j) {
@@ -35,14 +34,14 @@ OrthantConeRays<T> orthant_cone_rays(const Mat<T>& G, long max_rays) {
       for (Eigen::Index l = j; l < p; ++l) w(l) /= first;  // entries before j are 0; w(j) becomes 1
       break;
     }
-    out.rays.push_back(std::move(w));
+    rays.push_back(std::move(w));
   }
-  return out;
+  return rays;
 }
 
-template OrthantConeRays<double> orthant_cone_rays<double>(const Mat<double>&, long);
-template OrthantConeRays<Q> orthant_cone_rays<Q>(const Mat<Q>&, long);
-template OrthantConeRays<Mpfr> orthant_cone_rays<Mpfr>(const Mat<Mpfr>&, long);
-template OrthantConeRays<Interval> orthant_cone_rays<Interval>(const Mat<Interval>&, long);
+template std::optional<std::vector<Vec<double>>> orthant_cone_rays<double>(const Mat<double>&, long);
+template std::optional<std::vector<Vec<Q>>> orthant_cone_rays<Q>(const Mat<Q>&, long);
+template std::optional<std::vector<Vec<Mpfr>>> orthant_cone_rays<Mpfr>(const Mat<Mpfr>&, long);
+template std::optional<std::vector<Vec<Interval>>> orthant_cone_rays<Interval>(const Mat<Interval>&, long);
 
 }  // namespace contactcert::exact

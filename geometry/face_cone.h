@@ -5,12 +5,9 @@
 #include <utility>
 
 #include "exact/number.h"
+#include "geometry/number_names.h"
 
 namespace contactcert::geometry {
-
-using exact::Mat;
-using exact::Q;
-using exact::Vec;
 
 /// The cone { g in R^dim : F g <= 0, E g = 0, S g < 0 }. Closed when there are no strict rows.
 template <class T>

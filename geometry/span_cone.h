@@ -4,12 +4,10 @@
 #include <utility>
 
 #include "exact/number.h"
+#include "geometry/number_names.h"
 
 namespace contactcert::geometry {
 
-using exact::Mat;
-using exact::Q;
-using exact::Vec;
 using exact::Z;
 
 /// The cone { sum_i a_i r_i + sum_j b_j l_j : a >= 0 } in R^dim. Generators are stored as ROWS

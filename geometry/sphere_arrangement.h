@@ -8,12 +8,9 @@
 
 #include "exact/deadline.h"
 #include "exact/number.h"
+#include "geometry/number_names.h"
 
 namespace contactcert::geometry {
-
-using exact::Mat;
-using exact::Q;
-using exact::Vec;
 
 /// One relatively open cell: dimension 0 (the origin), 1 (a ray: a vertex on the sphere), 2 (a sector
 /// of a plane: an arc) or 3 (an open region).

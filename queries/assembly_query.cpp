@@ -119,6 +119,11 @@ Limited<AssemblyStabilityAnswer> run_assembly_stability(const AssemblyInput& in,
   return with_limits(options.common.arith, [&] { return assembly_stability_answer(in, options); });
 }
 
+std::optional<Limit> limit_of(const AssemblyStabilityAnswer& ans) {
+  if (ans.decided()) return std::nullopt;
+  return Limit{sa::status_name(ans.result.status), ans.result.covered};
+}
+
 json to_json(const AssemblyStabilityAnswer& ans) {
   const sa::AssemblyStabilityResult& r = ans.result;
   json j;

@@ -5,6 +5,7 @@
 // answered exactly (`--arith float` is refused; adaptive runs as verified, scene_arith).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,9 @@ struct AssemblyStabilityAnswer {
 /// (decided verdicts only) and the picture.
 Limited<AssemblyStabilityAnswer> run_assembly_stability(const AssemblyInput& in,
                                                         const AssemblyStabilityOptions& options);
+/// The Limit of an undecided walk (its status, e.g. node_limit, and what it covered), which `assembly` reports in
+/// place of the answer; nullopt for a verdict.
+std::optional<Limit> limit_of(const AssemblyStabilityAnswer& answer);
 /// {"verdict" (or "unknown"), "status", "arith", "bodies", "contacts", "witness": {"resting", "moving"},
 /// "search": {"nodes", "lps", "dead_prefixes"}, "covered", "certificate", "svg"}.
 json to_json(const AssemblyStabilityAnswer& answer);

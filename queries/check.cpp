@@ -100,10 +100,14 @@ struct CertificateKind {
 };
 
 constexpr CertificateKind kKinds[] = {
-    {"ucp_jammed", false, check_ucp},     {"ucp_solvable", false, check_ucp},
-    {"stability", true, check_stability}, {"modes", true, check_modes},
-    {"cone_empty", true, check_cone},     {"cone_nonempty", true, check_cone},
-    {"goal_nonempty", true, check_goal},  {"assembly_stability", true, check_assembly},
+    {"ucp_jammed", false, check_ucp},
+    {"ucp_solvable", false, check_ucp},
+    {"stability", true, check_stability},
+    {"modes", true, check_modes},
+    {"cone_empty", true, check_cone},
+    {"cone_nonempty", true, check_cone},
+    {"goal_nonempty", true, check_goal},
+    {"assembly_stability", true, check_assembly},
     {"assembly_modes", true, check_assembly_modes},
     {"spatial_modes", true, check_spatial_modes},
 };
@@ -120,12 +124,19 @@ const CertificateKind& certificate_kind(const exact::JsonInput& cert) {
 
 /// The canonical text of a problem file as the certificate kind reads it: a UCP problem through its reader (a
 /// quasistatic_scene with the checker's frames) and writer (so equal problems compare equal whatever their spelling),
-/// a scene as its canonical JSON.
+/// a scene or an assembly as its canonical JSON.
 std::string problem_file_text(const exact::JsonInput& in, const CertificateKind& kind) {
-  if (kind.embeds_scene) return in.canonical_text();
+  if (kind.embeds_scene || in.find("bodies")) return in.canonical_text();
   const std::string text =
       solvers::ucp::to_json_text(solvers::ucp::read_ucp_problem(in, nullptr, checker::frame_check::checked_frame));
   return exact::JsonInput::parse(text, in.file()).canonical_text();
+}
+
+/// The canonical text of the assembly an `assembly --ucp` certificate embeds ("" if it embeds none).
+std::string embedded_assembly_text(const exact::JsonInput& cert) {
+  const auto assembly = cert.find("assembly");
+  return assembly ? exact::JsonInput::parse(assembly->string(), cert.file() + " (embedded assembly)").canonical_text()
+                  : "";
 }
 
 }  // namespace
@@ -140,10 +151,16 @@ CheckResult check(const exact::JsonInput& certificate, const exact::JsonInput* p
   if (problem != nullptr) {
     c.problem = problem->file();
     const std::string file_text = problem_file_text(*problem, kind);
-    if (c.valid() && file_text != embedded.get().canonical_text()) {
+    // An assembly file against a UCP certificate: the assembly an `assembly --ucp` certificate embeds.
+    const bool by_assembly = !kind.embeds_scene && problem->find("bodies");
+    const std::string about = by_assembly ? embedded_assembly_text(certificate) : embedded.get().canonical_text();
+    if (c.valid() && file_text != about) {
       c.verdict = CheckVerdict::kInvalid;
-      c.reason = "the certificate is about another problem than " + problem->file() + " (its problem_sha256 is " +
-                 c.digest + ", the file's " + exact::sha256_hex(file_text) + ")";
+      c.reason = "the certificate is about another problem than " + problem->file() + " (" +
+                 (!by_assembly    ? "its problem_sha256 is " + c.digest
+                  : about.empty() ? std::string("it embeds no assembly")
+                                  : "its embedded assembly's sha256 is " + exact::sha256_hex(about)) +
+                 ", the file's " + exact::sha256_hex(file_text) + ")";
     }
   }
   return c;

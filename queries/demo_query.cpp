@@ -24,11 +24,13 @@
 #include "queries/html_report.h"
 #include "queries/insert_query.h"
 #include "queries/line_plot.h"
+#include "queries/simulate_query.h"
 #include "queries/stability_svg.h"
 #include "runtime/scenes.h"
 #include "solvers/assembly/assembly_certificate.h"
 #include "solvers/insertion/insertion.h"
 #include "solvers/spatial/spatial_modes.h"
+#include "solvers/motion/motion_scene.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
 #include "solvers/ucp/certificate.h"
@@ -309,10 +311,25 @@ DemoScene assembly_row(const std::string& name, const std::string& kind, const s
           std::string("certificate ") + (check.valid ? "valid" : "INVALID: " + check.reason)};
 }
 
+/// A motion scene of the folder (docs/motion.md): its first steps of `simulate` (at most kDemoMotionSteps, to keep
+/// the demo short; each step exact, as `simulate` makes them) and how the run stands after them.
+constexpr long kDemoMotionSteps = 3;
+
+DemoScene motion_row(const std::string& name, const std::string& text, const std::string& path) {
+  const MotionInput in = parse_motion(text, path);
+  SimulateOptions o;
+  o.steps = std::min(kDemoMotionSteps, in.scene.steps);
+  const Limited<SimulateAnswer> r = run_simulate(in, o);
+  if (!r) return {name, "motion", "budget exhausted", r.limit().what};
+  return {name, "motion", solvers::motion::run_status_name(run_status(*r)),
+          std::to_string(steps_done(*r)) + " of its " + std::to_string(in.scene.steps) +
+              " steps simulated (dt = " + exact::to_string(in.scene.dt) + "): " + run_reason(*r)};
+}
+
 /// A scene of the folder that is not one of the papers' examples: a planar scene gets its verdict under gravity
 /// g = (0, -1, 0) with a checked certificate, its region picture and its finger pushes; a quasistatic or UCP
-/// problem its status with the evidence; an assembly as assembly_row says. A file that cannot be read is listed
-/// with the reason.
+/// problem its status with the evidence; an assembly as assembly_row says, a motion scene as motion_row. A file that
+/// cannot be read is listed with the reason.
 DemoScene own_scene(const fs::path& path, HtmlReport& rep) {
   const std::string name = path.filename().string();
   try {
@@ -327,6 +344,7 @@ DemoScene own_scene(const fs::path& path, HtmlReport& rep) {
       return {name, "spatial", std::to_string(t.modes.size()) + " contact modes",
               std::string("certificate ") + (check.valid ? "valid" : "INVALID: " + check.reason)};
     }
+    if (solvers::motion::is_motion_scene(in)) return motion_row(name, text, path.string());
     if (in.at("kind").string() == "planar") {
       const auto scene = geometry::read_planar_scene(in);
       exact::Vec<Q> g(3);
@@ -362,7 +380,7 @@ void own_scenes(const Demo& d) {
   d.rep.heading("Your scenes");
   d.rep.paragraph(
       "Planar scenes under gravity g = (0, -1, 0) (torque about the centre of mass); quasistatic "
-      "problems solved exactly.");
+      "problems solved exactly; motion scenes simulated for their first steps.");
   std::vector<std::vector<std::string>> rows;
   for (const auto& path : files) {
     d.check_time();

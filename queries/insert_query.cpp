@@ -63,16 +63,27 @@ solvers::Insertion<Q> insertion_of(const geometry::PlanarScene& scene, const std
 
 namespace {
 
-InsertAnswer insert_answer(const SceneInput& input, const InsertOptions& options, const SweepProgress& progress) {
+/// Stops between units of work (G_goal with its pushes, then each friction value of the sweep) once the time limit
+/// has passed: the Limit names what was computed.
+Limited<InsertAnswer> insert_answer(const SceneInput& input, const InsertOptions& options,
+                                    const SweepProgress& progress) {
   refuse_float(options.common.arith, "insert is computed exactly (use exact or verified)");
+  const exact::Deadline deadline = options.common.deadline();
+  const auto stopped = [&](const std::string& covered) {
+    return Limit{"insert " + input.name + ": " + deadline.reached_text(), covered, Limit::Kind::kStopped};
+  };
+  if (deadline.expired()) return stopped("nothing: G_goal not computed");
   InsertAnswer a{input.scene, insertion_of(input.scene, input.name), {}, 0, {}};
   a.pushes = solvers::insertion_pushes<Q>(a.scene, a.insertion);
   a.boundary_fraction = boundary_fraction(a.scene, a.pushes);
-  if (!options.svg.empty()) write_text_file(options.svg, insertion_svg(a.scene, a.pushes));
   for (const Q& mu : options.sweep_mu) {
+    if (deadline.expired())
+      return stopped("G_goal and its pushes, " + std::to_string(a.sweep.size()) + " of " +
+                     std::to_string(options.sweep_mu.size()) + " friction values of the sweep");
     if (progress) progress(a.sweep.size(), options.sweep_mu.size(), mu);
     a.sweep.push_back(sweep_entry(a.scene, mu));
   }
+  if (!options.svg.empty()) write_text_file(options.svg, insertion_svg(a.scene, a.pushes));
   return a;
 }
 

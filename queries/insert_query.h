@@ -17,7 +17,7 @@
 namespace contactcert::queries {
 
 struct InsertOptions {
-  CommonOptions common;            ///< exact or verified (float is refused); the computation is finite, with no budget
+  CommonOptions common;  ///< exact or verified (float is refused); its time limit is tested between units of work
   std::vector<exact::Q> sweep_mu;  ///< the friction values of the sweep (each >= 0; empty = no sweep)
   std::string svg;                 ///< the file the picture is written to ("" = none)
 };
@@ -47,7 +47,8 @@ std::vector<exact::Q> parse_sweep_mu(const std::string& text, const std::string&
 solvers::Insertion<exact::Q> insertion_of(const geometry::PlanarScene& scene, const std::string& file);
 
 /// G_goal, its pushes and the sweep (InputError for --arith float or a scene unfit for insertion), the picture
-/// written where asked.
+/// written where asked. Past the time limit it stops before the next unit (G_goal with its pushes, each friction value
+/// of the sweep): a kStopped Limit with what was computed, and no picture.
 Limited<InsertAnswer> run_insert(const SceneInput& input, const InsertOptions& options,
                                  const SweepProgress& progress = {});
 

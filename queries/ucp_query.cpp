@@ -107,6 +107,12 @@ Limited<UcpAnswer> run_ucp(const UcpInput& in, const UcpQueryOptions& o) {
   return with_limits(o.common.arith, [&] { return ucp_answer(in, o); });
 }
 
+std::optional<Limit> limit_of(const ucp::UcpReport& r) {
+  if (!r.limited) return std::nullopt;
+  const std::string nodes = r.method == ucp::Method::kComplete ? std::to_string(r.nodes) + " nodes, " : "";
+  return Limit{r.reason, nodes + std::to_string(r.pairs) + " pairs, " + std::to_string(r.lps) + " lps"};
+}
+
 json report_head_json(const ucp::UcpReport& r, bool with_method) {
   json j;
   j["status"] = ucp::status_name(r.status);

@@ -70,6 +70,11 @@ struct UcpAnswer {
 /// down (an LP's pivots) is the Limit.
 Limited<UcpAnswer> run_ucp(const UcpInput& in, const UcpQueryOptions& o);
 
+/// The Limit of a run that stopped on a budget or the time limit (report.limited), as `ucp` and `assembly --ucp`
+/// report it in place of their `unknown` answer: the reason and what the run covered (its nodes, pairs and LPs);
+/// nullopt for an answer (an `unknown` of the bilinear method that cannot decide is one).
+std::optional<Limit> limit_of(const solvers::ucp::UcpReport& r);
+
 /// The head of the JSON object of a UCP report, shared by `ucp` and `assembly --ucp`: status, reason, the method
 /// (with_method: `ucp`'s) and the arithmetic.
 json report_head_json(const solvers::ucp::UcpReport& r, bool with_method);

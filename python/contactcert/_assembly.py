@@ -11,7 +11,7 @@ from . import _core
 from ._numbers import exact
 from ._options import ARITHS, LONG_MAX, Arith, choice, seconds, whole_number
 from ._file_problem import ModesProblem
-from ._results import Result, Vector
+from ._results import Result, Vector, budget_exceeded, ucp_covered
 from ._source import Path
 
 if TYPE_CHECKING:
@@ -85,13 +85,6 @@ class AssemblyUcp(Result):
         return f"AssemblyUcp({self.status}, {self._data['reason']!r})"
 
 
-def _unknown(result: Result, what: str) -> BudgetExceeded:
-    """The BudgetExceeded of a run whose budget ran out, with the result as its `result`."""
-    e = BudgetExceeded(f"budget exceeded: {what}")
-    e.result = result  # type: ignore[attr-defined]  # set here, not by the extension
-    return e
-
-
 class Assembly(ModesProblem[_core.Assembly]):
     """Several movable bodies, the fixed obstacles, fixels and fingers they touch, and their contacts."""
 
@@ -119,7 +112,7 @@ class Assembly(ModesProblem[_core.Assembly]):
         data, text, svg = self._core.stability(arith, time_limit, max_nodes, path)
         result = AssemblyStability(json.loads(data), Certificate(text, path) if text else None, svg)
         if result.verdict == "unknown":
-            raise _unknown(result, f"{result['status']} ({result['covered']})")
+            raise budget_exceeded(result, result["status"], result["covered"])
         return result
 
     def ucp(self, arith: Arith = "verified", time_limit: float = 0, max_nodes: int | None = None,
@@ -136,7 +129,7 @@ class Assembly(ModesProblem[_core.Assembly]):
         data, text, svg = self._core.ucp(arith, time_limit, max_nodes, max_bases, path)
         result = AssemblyUcp(json.loads(data), Certificate(text, path) if text else None, svg)
         if result.status == "unknown":
-            raise _unknown(result, result["reason"])
+            raise budget_exceeded(result, result["reason"], ucp_covered(result.to_dict()))
         return result
 
     def svg(self) -> str:

@@ -307,6 +307,19 @@ class UcpResult(Result):
         return f"UcpResult({self.status}, {self._data['reason']!r}, method {self._data['method']})"
 
 
+def budget_exceeded(result: Result, what: str, covered: str) -> _core.BudgetExceeded:
+    """The BudgetExceeded of a run that a budget or the time limit stopped, with the result as its `result`: its
+    message is the CLI's report of that limit (without "contactcert: ")."""
+    e = _core.BudgetExceeded(f"budget exceeded: {what} (covered: {covered})")
+    e.result = result  # type: ignore[attr-defined]  # set here, not by the extension
+    return e
+
+
+def ucp_covered(d: dict[str, Any]) -> str:
+    """What a UCP run covered before it stopped: its nodes (the complete search), pairs and LPs."""
+    return ", ".join(f"{d[k]} {k}" for k in ("nodes", "pairs", "lps") if k in d)
+
+
 class CheckResult(Result):
     """`contactcert check`'s answer: is the certificate valid, and why; `text` the readable lines of its evidence
     (the world forces of a witness), as the CLI prints them under a VALID verdict."""

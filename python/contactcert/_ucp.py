@@ -11,7 +11,7 @@ from . import _core
 from ._results import Certificate
 from ._numbers import Exact, number_text
 from ._options import ARITHS, LONG_MAX, UINT64_MAX, Arith, choice, seconds, whole_number
-from ._results import UcpResult
+from ._results import UcpResult, budget_exceeded, ucp_covered
 from ._source import FromSource, Path
 
 BudgetExceeded = _core.BudgetExceeded
@@ -45,11 +45,7 @@ class Ucp(FromSource[_core.Ucp]):
         data, text = self._core.solve(method, arith, seed, max_nodes, max_bases, time_limit, path)
         result = UcpResult(json.loads(data), Certificate(text, path) if text else None)
         if result.status == "unknown":
-            d = result.to_dict()
-            covered = ", ".join(f"{d[k]} {k}" for k in ("nodes", "pairs", "lps") if k in d)
-            e = BudgetExceeded(f"budget exceeded: {d['reason']} (covered: {covered})")
-            e.result = result  # type: ignore[attr-defined]  # set here, not by the extension
-            raise e
+            raise budget_exceeded(result, result["reason"], ucp_covered(result.to_dict()))
         return result
 
     def _problem_source(self) -> tuple[str, str]:

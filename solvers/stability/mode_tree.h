@@ -9,7 +9,8 @@
 // >= 0), never 4^k. The unions (m, u) and Table 2's printed `s` (a_n >= 0 at a touching fixel) give overlapping
 // modes - vdot = 0 alone realises 2^(touching) printed ones - so there the walk is only output-sensitive and its
 // output can be exponential: ModeTreeOptions bounds it. Every dead prefix carries a Motzkin certificate, so the
-// tree is a completeness proof that a checker verifies by walking only the prefixes it lists (mode_coverage).
+// tree is a completeness proof that a checker verifies by walking only the prefixes it lists
+// (checker/mode_coverage.h).
 #pragma once
 
 #include <cstddef>
@@ -87,30 +88,6 @@ ModeTree<Q> walk_modes_by_cones(const MotionModel<Q>& model, const ModeAlphabet&
 /// and a_t = J_t^T vdot, with the sign test of T (exact for Q): a direct reading of the table, not its LP rows.
 template <class T>
 bool realises(const MotionModel<T>& model, const KinematicRules& rules, const Vec<T>& vdot, const ModeString& mode);
-
-/// Why listed prefixes do not partition the modes: a mode prefix that no listed string accounts for
-/// (kMissing), a string listed twice (kRepeated), or a listed string that extends another one (kInside: its
-/// modes are already accounted for, so a count of the list would count them twice).
-struct CoverageGap {
-  enum class Kind { kMissing, kRepeated, kInside };
-  Kind kind;
-  std::string prefix;  ///< the prefix no string accounts for, the repeated string, or the string inside another
-  std::string within;  ///< kInside: the listed string that `prefix` extends
-};
-
-/// Whether the listed prefixes partition the modes of k fixels over the alphabet: each mode extends exactly one
-/// `dead` prefix or equals exactly one `leaves` mode, and no listed string is listed twice or extends another.
-/// Walks only the prefixes of listed strings, at most (total length of the lists) x (letters per fixel) of them,
-/// so a forged list is rejected in time linear in its size. Returns nullopt if they do, else the first gap found.
-std::optional<CoverageGap> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
-                                         const std::vector<std::string>& dead, const std::vector<std::string>& leaves);
-/// The same over any alphabet: `letters(i)` is the letters of contact i, one char each (the spatial modes,
-/// solvers/spatial/spatial_modes.h).
-std::optional<CoverageGap> mode_coverage(std::size_t k, const std::function<std::string(std::size_t)>& letters,
-                                         const std::vector<std::string>& dead, const std::vector<std::string>& leaves);
-
-/// The gap as a checker's reason.
-std::string coverage_gap_text(const CoverageGap& gap);
 
 #define CONTACTCERT_MODE_TREE_EXTERN(T)                                                                         \
   extern template ModeTree<T> walk_modes<T>(const MotionModel<T>&, const ModeAlphabet&, const ModeTreeOptions&, \

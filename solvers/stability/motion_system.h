@@ -11,13 +11,10 @@
 
 #include "exact/strict_feasibility.h"
 #include "geometry/planar_scene.h"
+#include "solvers/number_names.h"
 #include "solvers/wrench_cone/mode.h"
 
 namespace contactcert::solvers {
-
-using exact::Mat;
-using exact::Q;
-using exact::Vec;
 
 /// The linear system of one mode: columns vdot (3, free), then per fixel its forces and slacks; rows:
 /// kinematic rows first (they do not involve g), then friction rows, then the 3 dynamics rows.

@@ -13,14 +13,11 @@
 #include "exact/json_input.h"
 #include "exact/number.h"
 #include "geometry/contact_frame.h"
+#include "solvers/number_names.h"
 #include "solvers/ucp/integer_rows.h"
 #include "solvers/ucp/phases.h"
 
 namespace contactcert::solvers::ucp {
-
-using exact::Mat;
-using exact::Q;
-using exact::Vec;
 
 /// A polyhedron in standard form {x >= 0 : A x = b}, the form the LP layer solves over.
 template <class T>

@@ -148,6 +148,7 @@ void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& o
     rep.pairs = b.pairs;
     rep.lps = b.counters.lps;
     rep.incomplete_adjacencies = b.counters.incomplete_adjacencies;
+    rep.limited = b.status == BilinearStatus::kTimeLimit;
     switch (b.status) {
       case BilinearStatus::kComplementary:
         rep.status = UcpStatus::kSolvable;
@@ -193,6 +194,7 @@ void run(const UcpProblem& problem, const UcpInstance<T>& u, const UcpOptions& o
   SearchResult<T> s = complete_search(u, search_options(opts, deadline), rng);
   rep.status = s.status;
   rep.reason = s.reason;
+  rep.limited = s.status == UcpStatus::kUnknown;  // the node budget or the time limit ran out
   rep.pairs = s.pairs;
   rep.lps = s.counters.lps;
   rep.incomplete_adjacencies = s.counters.incomplete_adjacencies;
@@ -325,6 +327,7 @@ void run_float(const UcpProblem& problem, const UcpOptions& opts, const exact::D
   } catch (const exact::UncertainSign&) {
     rep.status = UcpStatus::kUnknown;
     rep.reason = "an interval sign is uncertain";
+    rep.limited = false;
   }
 }
 
@@ -376,6 +379,7 @@ UcpReport solve_ucp(const UcpProblem& problem, const UcpOptions& opts) {
     rep.arith = a;
     EnumerateResult e = enumerate_modes(problem, a, opts.max_enumerate_lps, deadline, opts.progress);
     rep.status = e.status;
+    rep.limited = e.status == UcpStatus::kUnknown;  // the time limit before all modes were tested
     rep.lps = e.lps;
     rep.solutions = e.solutions;
     rep.solution_modes = e.solution_modes;

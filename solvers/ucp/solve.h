@@ -46,6 +46,9 @@ struct UcpOptions {
 struct UcpReport {
   UcpStatus status = UcpStatus::kUnknown;
   std::string reason;
+  /// kUnknown because a budget ran out (the complete search's nodes, the time limit), not because the method cannot
+  /// decide (the bilinear algorithm's stationary pair, an uncertain interval sign): the run stopped on a limit.
+  bool limited = false;
   Method method = Method::kComplete;
   Arith arith = Arith::kVerified;
   /// The complementary pair (exact paths, kSolvable), over a common denominator: x->to_q() or (*x)(i) give

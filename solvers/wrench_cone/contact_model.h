@@ -7,12 +7,9 @@
 #include "exact/int_matrix.h"
 #include "exact/number.h"
 #include "geometry/planar_scene.h"
+#include "solvers/number_names.h"
 
 namespace contactcert::solvers {
-
-using exact::Mat;
-using exact::Q;
-using exact::Vec;
 
 /// A matrix of the model over the ring of T: integers for the exact path (held in machine integers
 /// when they fit, exact::FittedIntMatrix), T itself for the float types (double, MPFR, intervals).

@@ -87,8 +87,8 @@ check 2 'ucp_form_b_length.json: $.X.b: expected an array of 1 numbers, found 2'
 check 2 'bt2002_section7_disk.json: $.kind: expected "quasistatic", "quasistatic_scene" or "ucp", found "planar"' ucp "$s/bt2002_section7_disk.json"
 check 2 'qs_scene_bad_finger.json: $.contacts[0].finger: exactly one of "velocity"' ucp "$m/qs_scene_bad_finger.json"
 # ---- command-line options of ucp; the node budget ends in exit 3 with what it covered ----
-check 3 'unknown (node budget of 1 exhausted)' ucp "$s/pang1994_dataset4.json" --method complete --max-nodes 1
-check 3 '"status":"unknown","reason":"node budget of 1 exhausted"' ucp "$s/pang1994_dataset4.json" --method complete --max-nodes 1 --json
+check 3 'budget exceeded: node budget of 1 exhausted (covered: 1 nodes, 9 pairs, 18 lps)' ucp "$s/pang1994_dataset4.json" --method complete --max-nodes 1
+check 3 'budget exceeded: node budget of 1 exhausted (covered: 1 nodes, 9 pairs, 18 lps)' ucp "$s/pang1994_dataset4.json" --method complete --max-nodes 1 --json
 check 2 '--max-nodes' ucp "$s/pang1994_dataset4.json" --max-nodes 0
 check 2 '--max-nodes' ucp "$s/pang1994_dataset4.json" --max-nodes lots
 check 2 '--method' ucp "$s/pang1994_dataset4.json" --method bogus

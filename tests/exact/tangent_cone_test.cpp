@@ -20,27 +20,26 @@ std::vector<std::vector<T>> rows_of(const std::vector<Vec<T>>& rays) {
 TEST(OrthantConeRays, RaysInTheOrderOfTheIterationOnTheOrthant) {
   Mat<Q> G(2, 3);
   G << 1, -1, 0, 2, 0, -1;
-  const OrthantConeRays<Q> exact_rays = orthant_cone_rays<Q>(G, 100);
-  ASSERT_EQ(exact_rays.status, ConeStatus::kComplete);
-  EXPECT_EQ(rows_of(exact_rays.rays), (std::vector<std::vector<Q>>{{0, 1, 0}, {0, 0, 1}, {1, 1, 2}}));
+  const std::optional<std::vector<Vec<Q>>> exact_rays = orthant_cone_rays<Q>(G, 100);
+  ASSERT_TRUE(exact_rays.has_value());
+  EXPECT_EQ(rows_of(*exact_rays), (std::vector<std::vector<Q>>{{0, 1, 0}, {0, 0, 1}, {1, 1, 2}}));
   Mat<double> Gd(2, 3);
   Gd << 1, -1, 0, 2, 0, -1;
-  const OrthantConeRays<double> float_rays = orthant_cone_rays<double>(Gd, 100);
-  EXPECT_EQ(rows_of(float_rays.rays), (std::vector<std::vector<double>>{{0, 1, 0}, {0, 0, 1}, {1, 1, 2}}));
+  const std::optional<std::vector<Vec<double>>> float_rays = orthant_cone_rays<double>(Gd, 100);
+  ASSERT_TRUE(float_rays.has_value());
+  EXPECT_EQ(rows_of(*float_rays), (std::vector<std::vector<double>>{{0, 1, 0}, {0, 0, 1}, {1, 1, 2}}));
   // Rational rows: the ray (1/2, 1/2, 1) is scaled to its first entry 1 as well.
   Mat<Q> H = G;
   H.row(1) /= Q(7);
-  EXPECT_EQ(rows_of(orthant_cone_rays<Q>(H, 100).rays), rows_of(exact_rays.rays));
+  EXPECT_EQ(rows_of(orthant_cone_rays<Q>(H, 100).value()), rows_of(*exact_rays));
 }
 
 // The budget counts the rays held at once: the orthant's three and one more do not fit in three.
-TEST(OrthantConeRays, BudgetIsAStatus) {
+TEST(OrthantConeRays, BudgetRunOutIsNoRays) {
   Mat<Q> G(1, 3);
   G << 1, -1, 0;
-  const OrthantConeRays<Q> cut = orthant_cone_rays<Q>(G, 3);
-  EXPECT_EQ(cut.status, ConeStatus::kBudgetExceeded);
-  EXPECT_TRUE(cut.rays.empty());
-  EXPECT_EQ(orthant_cone_rays<Q>(G, 4).status, ConeStatus::kComplete);
+  EXPECT_FALSE(orthant_cone_rays<Q>(G, 3).has_value());
+  EXPECT_TRUE(orthant_cone_rays<Q>(G, 4).has_value());
 }
 
 }  // namespace

@@ -84,4 +84,5 @@ def test_budget_raises_budget_exceeded():
         cc.Ucp.from_file(f).solve(max_nodes=1)
     assert e.value.result.status == "unknown"
     assert str(e.value) == "budget exceeded: node budget of 1 exhausted (covered: 1 nodes, 9 pairs, 18 lps)"
-    run_cli("ucp", f, "--max-nodes", 1, expect=3)
+    p = run_cli("ucp", f, "--max-nodes", 1, expect=3)
+    assert p.stdout == "" and p.stderr == f"contactcert: {e.value}\n"  # the limit alone, in the same words

@@ -312,49 +312,6 @@ TEST(ModeTree, ForgedCompletenessProofsAreRejected) {
   EXPECT_THROW(checker::check_stability_certificate(exact::JsonInput::parse(cert, "forged.json")), exact::InputError);
 }
 
-// The first prefix a coverage gap names, or "" when the lists partition the modes.
-std::string gap_prefix(const std::optional<CoverageGap>& gap, CoverageGap::Kind kind = CoverageGap::Kind::kMissing) {
-  if (!gap) return "";
-  EXPECT_EQ(gap->kind, kind) << coverage_gap_text(*gap);
-  return gap->prefix;
-}
-
-TEST(ModeTree, CoverageWalksOnlyWhatTheListsSpellOut) {
-  const ModeAlphabet four = moving_alphabet(40);
-  // Forty fixels, nothing listed: the first uncovered prefix is found at once (no 4^40 walk).
-  EXPECT_EQ(gap_prefix(mode_coverage(40, four, {}, {})), "s");
-  // "s", "l", "r" dead and the n branch closed by n..n alone is not complete: "ns" is uncovered.
-  EXPECT_EQ(gap_prefix(mode_coverage(3, moving_alphabet(3), {"s", "l", "r"}, {"nnn"})), "ns");
-  EXPECT_EQ(mode_coverage(1, moving_alphabet(1), {"s", "l", "r"}, {"n"}), std::nullopt);
-}
-
-TEST(ModeTree, CoverageCountsEachModeOnce) {
-  using Kind = CoverageGap::Kind;
-  const ModeAlphabet two = moving_alphabet(2);
-  const std::vector<std::string> dead{"s", "l", "r"}, leaves{"ns", "nl", "nr", "nn"};
-  EXPECT_EQ(mode_coverage(2, two, dead, leaves), std::nullopt);
-  // A mode listed twice, or a thousand times: the count would be wrong.
-  std::vector<std::string> twice = leaves;
-  twice.push_back("nl");
-  EXPECT_EQ(gap_prefix(mode_coverage(2, two, dead, twice), Kind::kRepeated), "nl");
-  std::vector<std::string> many = leaves;
-  for (int i = 0; i < 1000; ++i) many.push_back("nn");
-  EXPECT_EQ(gap_prefix(mode_coverage(2, two, dead, many), Kind::kRepeated), "nn");
-  // A dead prefix listed twice, or one inside another, or a listed mode inside a dead prefix: extra entries.
-  EXPECT_EQ(gap_prefix(mode_coverage(2, two, {"s", "l", "r", "l"}, leaves), Kind::kRepeated), "l");
-  const auto inside = mode_coverage(2, two, {"s", "l", "r", "sl"}, leaves);
-  EXPECT_EQ(gap_prefix(inside, Kind::kInside), "sl");
-  EXPECT_EQ(inside->within, "s");
-  std::vector<std::string> under_dead = leaves;
-  under_dead.push_back("rn");
-  EXPECT_EQ(gap_prefix(mode_coverage(2, two, dead, under_dead), Kind::kInside), "rn");
-  // A leaf equal to a full-length dead prefix is listed twice.
-  EXPECT_EQ(gap_prefix(mode_coverage(2, two, {"s", "l", "r", "nn"}, leaves), Kind::kRepeated), "nn");
-  // A dropped entry leaves a gap.
-  EXPECT_EQ(gap_prefix(mode_coverage(2, two, {"s", "r"}, leaves)), "l");
-  EXPECT_EQ(gap_prefix(mode_coverage(2, two, dead, {"ns", "nl", "nn"})), "nr");
-}
-
 // The mode tree by plain recursion, as it was written before the walk became iterative: at a live prefix, each
 // letter in alphabet order either extends it (its rows feasible: recurse) or is a dead prefix.
 void recursive_walk(const MotionModel<Q>& model, const ModeAlphabet& alphabet, std::size_t k, ModeString& prefix,

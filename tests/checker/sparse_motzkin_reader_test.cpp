@@ -1,12 +1,15 @@
-// Sparse Motzkin vectors (sparse_motzkin.h): written as the weighted rows of the primitive integer multiple,
-// read back to the same direction, and every other spelling refused with the entry named.
-#include "solvers/stability/sparse_motzkin.h"
+// Sparse Motzkin vectors: written as the weighted rows of the primitive integer multiple (solvers' writer), read
+// back by the checker's reader (sparse_motzkin_reader.h) to the same direction, every other spelling refused with
+// the entry named.
+#include "checker/sparse_motzkin_reader.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-namespace contactcert::solvers {
+#include "solvers/stability/sparse_motzkin.h"
+
+namespace contactcert::checker {
 namespace {
 
 using exact::Q;
@@ -28,10 +31,10 @@ std::string refusal(const std::string& text, std::size_t rows) {
 
 TEST(SparseMotzkin, WritesTheWeightedRowsOfThePrimitiveMultiple) {
   const Vec<Q> y = (Vec<Q>(6) << 0, 0, Q(-1, 2), 0, Q(3, 2), 0).finished();
-  EXPECT_EQ(sparse_motzkin_json(y).dump(), R"([[2,"-1"],[4,"3"]])");
-  const Vec<Q> back = read(sparse_motzkin_json(y).dump(), 6);
+  EXPECT_EQ(solvers::sparse_motzkin_json(y).dump(), R"([[2,"-1"],[4,"3"]])");
+  const Vec<Q> back = read(solvers::sparse_motzkin_json(y).dump(), 6);
   EXPECT_EQ(back, Vec<Q>(2 * y));  // the same direction, scaled by 2 > 0
-  EXPECT_EQ(sparse_motzkin_json((Vec<Q>(3) << 6, 0, -4).finished()).dump(), R"([[0,"3"],[2,"-2"]])");
+  EXPECT_EQ(solvers::sparse_motzkin_json((Vec<Q>(3) << 6, 0, -4).finished()).dump(), R"([[0,"3"],[2,"-2"]])");
 }
 
 TEST(SparseMotzkin, RefusesEveryOtherSpelling) {
@@ -51,4 +54,4 @@ TEST(SparseMotzkin, RefusesEveryOtherSpelling) {
 }
 
 }  // namespace
-}  // namespace contactcert::solvers
+}  // namespace contactcert::checker
