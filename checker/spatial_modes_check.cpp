@@ -4,7 +4,7 @@
 
 #include "checker/table2_rows.h"
 #include "geometry/spatial_scene.h"
-#include "solvers/stability/sparse_motzkin.h"
+#include "checker/sparse_motzkin_reader.h"
 
 namespace contactcert::checker {
 namespace {
@@ -142,7 +142,7 @@ ModesCertificateCheck check_spatial_modes_certificate(const exact::JsonInput& c)
     e.expect_keys({"prefix", "motzkin"});
     std::string p = read_letters(e.at("prefix"), cs, false);
     const Rows rows = prefix_rows(cs, p);
-    if (!table2_check::motzkin_holds(rows, solvers::read_sparse_motzkin(e.at("motzkin"), rows.rows.size())))
+    if (!table2_check::motzkin_holds(rows, read_sparse_motzkin(e.at("motzkin"), rows.rows.size())))
       return {false, "the certificate of dead prefix " + p + " does not verify", 0, 0};
     dead.push_back(std::move(p));
   }
