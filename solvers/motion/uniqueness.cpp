@@ -57,7 +57,7 @@ const char* uniqueness_name(UniquenessStatus s) {
 MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith arith, long max_modes) {
   MotionUniqueness out;
   const ucp::QuasistaticProblem& p = *problem.quasistatic;
-  const ucp::EnumerateResult e = ucp::enumerate_modes(problem, arith, max_modes);
+  const ucp::EnumerateResult e = ucp::solution_modes_by_prefix(problem, arith, max_modes);
   out.lps = e.lps;
   if (e.status == ucp::UcpStatus::kUnknown || !e.complete) return out;
   out.solution_modes = e.solution_modes;
