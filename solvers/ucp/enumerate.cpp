@@ -1,5 +1,7 @@
 #include "solvers/ucp/enumerate.h"
 
+#include <algorithm>
+
 namespace contactcert::solvers::ucp {
 
 namespace {
@@ -106,39 +108,41 @@ EnumerateResult solution_modes_by_prefix(const UcpProblem& problem, Arith arith,
                                          const exact::Deadline& deadline) {
   const UcpInstance<Q>& u = problem.ucp();
   const Index n = u.n();
-  const StandardPolyhedron<Q> XY = product_polyhedron(u);
   const ModeLetters letters(problem);
   EnumerateResult out;
   LpCounters count;
   std::string name(static_cast<std::size_t>(letters.units), '?');
+  // Whether the face of `side` (X or Y) with the zeros zero[offset, offset + n) is non-empty (false also when the
+  // budget or the deadline stops the walk).
+  const auto non_empty = [&](const StandardPolyhedron<Q>& side, const std::vector<bool>& zero, Index offset) {
+    if (!out.complete) return false;
+    if (count.lps >= max_lps || deadline.expired()) return out.complete = false;
+    const auto from = zero.begin() + offset;
+    const FaceLpResult<Q> r = minimize_on_face(make_face(side, std::vector<bool>(from, from + n)),
+                                               Vec<Q>(Vec<Q>::Zero(n)), arith, count, deadline);
+    if (r.status == FaceLpStatus::kTimeLimit) return out.complete = false;
+    return r.status == FaceLpStatus::kOptimal;
+  };
   // Depth first over the units, the last one decided first, so that the modes come in enumerate_modes's order.
   // A node with k units undecided has their complementarity relaxed: its face of X x Y contains the faces of all
-  // its completions, so an empty one (one LP) prunes them all.
+  // its completions, so an empty one prunes them all. X and Y are uncoupled: the face is (face of X) x (face of
+  // Y), each side decided by its own LP, and a side whose zeros a letter leaves as the parent's is non-empty.
   const auto walk = [&](const auto& self, Index k, const std::vector<bool>& zero) -> void {
-    if (!out.complete) return;
-    if (count.lps >= max_lps || deadline.expired()) {
-      out.complete = false;
-      return;
-    }
-    const FaceLpResult<Q> r =
-        minimize_on_face(make_face(XY, zero), Vec<Q>(Vec<Q>::Zero(2 * n)), arith, count, deadline);
-    if (r.status == FaceLpStatus::kTimeLimit) {
-      out.complete = false;
-      return;
-    }
-    if (r.status == FaceLpStatus::kEmpty) return;
     if (k == 0) {
-      if (out.solutions++ == 0) out.x = r.vertex.x.head(n), out.y = r.vertex.x.tail(n);
+      ++out.solutions;
       out.solution_modes.push_back(name);
       return;
     }
-    for (int c = 0; c < letters.choices; ++c) {
+    for (int c = 0; c < letters.choices && out.complete; ++c) {
       std::vector<bool> child = zero;
       name[static_cast<std::size_t>(k - 1)] = letters.fix(k - 1, c, child);
-      self(self, k - 1, child);
+      const bool same_x = std::equal(zero.begin(), zero.begin() + n, child.begin());
+      const bool same_y = std::equal(zero.begin() + n, zero.end(), child.begin() + n);
+      if ((same_x || non_empty(u.X, child, 0)) && (same_y || non_empty(u.Y, child, n))) self(self, k - 1, child);
     }
   };
-  walk(walk, letters.units, std::vector<bool>(static_cast<std::size_t>(2 * n), false));
+  const std::vector<bool> none(static_cast<std::size_t>(2 * n), false);
+  if (non_empty(u.X, none, 0) && non_empty(u.Y, none, n)) walk(walk, letters.units, none);
   finish(out, count);
   return out;
 }
