@@ -38,7 +38,7 @@ struct SimulateOptions {
   std::optional<exact::Q> dt;  ///< H > 0, else the scene's
   bool compare = false;        ///< also run the float path and report where it first differs
   bool uniqueness = solvers::motion::SimulateOptions{}.uniqueness;  ///< decide per step whether the motion is unique
-  long max_modes = solvers::motion::SimulateOptions{}.max_uniqueness_modes;  ///< the uniqueness enumeration's budget
+  long max_modes = solvers::motion::SimulateOptions{}.max_uniqueness_modes;  ///< the uniqueness prefix tree's LP budget
   long max_nodes = solvers::ucp::UcpOptions{}.max_nodes;                     ///< each step's complete search budget
   std::string certificates;  ///< folder for step-K.json (each step's certificate), "" = none
   std::string svg;           ///< the animated picture's file, "" = none

@@ -372,7 +372,7 @@ bool Stepper<T>::step() {
   std::optional<geometry::Assembly> assembly;  // several bodies
   try {
     if (g_.bodies.size() == 1) {
-      problem = step_problem(step_scene(g_, poses[0], cs.contacts, sched.commands), "step " + std::to_string(k));
+      problem = step_problem(g_, poses[0], cs.contacts, sched.commands, "step " + std::to_string(k));
     } else {
       assembly = step_assembly(g_, poses, cs.contacts, sched.commands);
       problem = assembly_step_problem(*assembly);

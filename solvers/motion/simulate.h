@@ -38,7 +38,7 @@ struct SimulateOptions {
   std::optional<long> steps;             ///< N, overriding the scene's
   std::optional<Q> dt;                   ///< H, overriding the scene's
   bool uniqueness = true;                ///< decide per step whether the motion is unique (exact paths)
-  long max_uniqueness_modes = 1L << 12;  ///< the enumeration's budget (4^nc modes): above it, `unknown`
+  long max_uniqueness_modes = 1L << 12;  ///< the uniqueness prefix tree's LP budget: past it, `unknown`
   bool certificates = true;              ///< keep each step's UCP certificate text (exact paths)
   /// Seconds of wall clock for the whole run (0 = none): then `unknown`, with the steps done so far. Each step's
   /// solve gets what is left (UcpOptions::time_limit).

@@ -4,17 +4,12 @@
 
 #include "exact/rational_text.h"
 #include "solvers/assembly/assembly_ucp.h"
+#include "solvers/ucp/scene_builder.h"
 
 namespace contactcert::solvers::motion {
 namespace {
 
 std::string text(const Q& x) { return exact::to_string(x); }
-std::string text(double x) { return exact::to_string(Q(x)); }
-
-template <class T>
-nlohmann::ordered_json pair(const Vec2<T>& p) {
-  return nlohmann::ordered_json::array({text(p.x), text(p.y)});
-}
 
 Q rational(const Q& x) { return x; }
 Q rational(double x) { return Q(x); }
@@ -22,7 +17,7 @@ template <class T>
 geometry::Point2 point2(const Vec2<T>& p) {
   return {rational(p.x), rational(p.y)};
 }
-nlohmann::ordered_json pair(const geometry::Point2& p) { return pair(Vec2<Q>{p.x, p.y}); }
+nlohmann::ordered_json pair(const geometry::Point2& p) { return nlohmann::ordered_json::array({text(p.x), text(p.y)}); }
 
 nlohmann::ordered_json polygon(const geometry::Shape& s) {
   nlohmann::ordered_json v = nlohmann::ordered_json::array();
@@ -35,39 +30,27 @@ nlohmann::ordered_json party(const geometry::Party& p) {
   return {{kNames[static_cast<int>(p.kind)], p.index}};
 }
 
-/// The frame as the step scene writes it.
-geometry::FrameResult frame_as_written(const geometry::Shape&, const geometry::FrameInput& given) {
-  return {geometry::FrameStatus::kOk, {given.point, given.normal, Q(0)}, ""};
-}
-
 }  // namespace
 
 template <class T>
-nlohmann::ordered_json step_scene(const SceneGeometry<T>& g, const Pose<T>& pose,
-                                  const std::vector<Contact<T>>& contacts,
-                                  const std::vector<FingerCommand<T>>& commands) {
-  nlohmann::ordered_json vertices = nlohmann::ordered_json::array();
-  for (const Vec2<T>& p : g.bodies[0]) vertices.push_back(pair(pose.apply(p)));
-  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+ucp::UcpProblem step_problem(const SceneGeometry<T>& g, const Pose<T>& pose, const std::vector<Contact<T>>& contacts,
+                             const std::vector<FingerCommand<T>>& commands, const std::string& name) {
+  std::vector<ucp::SceneContact> list;
   for (const Contact<T>& c : contacts) {
-    nlohmann::ordered_json j{
-        {"name", c.name}, {"point", pair(c.point)}, {"normal", pair(c.normal)}, {"mu", text(c.mu)}};
+    ucp::SceneContact s;
+    s.r = point2(c.point), s.n = point2(c.normal), s.mu = rational(c.mu);
     if (c.kind == ContactKind::kFinger) {
       const FingerCommand<T>& cmd = commands[static_cast<std::size_t>(c.other)];
-      j["finger"] = {{"axes", "world"}, {cmd.force ? "force" : "velocity", pair(cmd.value)}};
+      s.finger = s.world_axes = true;
+      s.force_controlled = cmd.force;
+      s.given = point2(cmd.value);
     }
-    list.push_back(j);
+    list.push_back(s);
   }
-  return {
-      {"kind", "quasistatic_scene"},
-      {"workpiece", {{"shape", {{"type", "polygon"}, {"vertices", vertices}}}, {"com", pair(pose.apply(g.coms[0]))}}},
-      {"gravity", pair(g.weights[0])},
-      {"contacts", list}};
-}
-
-ucp::UcpProblem step_problem(const nlohmann::ordered_json& scene, const std::string& name) {
-  const exact::JsonInput in = exact::JsonInput::parse(exact::json_text(scene), name);
-  return ucp::read_ucp_problem(in, nullptr, frame_as_written);
+  ucp::UcpProblem problem;
+  problem.quasistatic = ucp::quasistatic_of_contacts(point2(pose.apply(g.coms[0])), point2(g.weights[0]), list, name);
+  problem.set(ucp::build_ucp(*problem.quasistatic));
+  return problem;
 }
 
 template <class T>
@@ -143,8 +126,8 @@ nlohmann::ordered_json assembly_scene_json(const geometry::Assembly& a) {
 #define CONTACTCERT_MOTION_STEP_INST(T)                                                                               \
   template geometry::Assembly step_assembly<T>(const SceneGeometry<T>&, const Poses<T>&,                              \
                                                const std::vector<Contact<T>>&, const std::vector<FingerCommand<T>>&); \
-  template nlohmann::ordered_json step_scene<T>(const SceneGeometry<T>&, const Pose<T>&,                              \
-                                                const std::vector<Contact<T>>&, const std::vector<FingerCommand<T>>&);
+  template ucp::UcpProblem step_problem<T>(const SceneGeometry<T>&, const Pose<T>&, const std::vector<Contact<T>>&,   \
+                                           const std::vector<FingerCommand<T>>&, const std::string&);
 CONTACTCERT_MOTION_STEP_INST(Q)
 CONTACTCERT_MOTION_STEP_INST(double)
 #undef CONTACTCERT_MOTION_STEP_INST

@@ -1,5 +1,7 @@
 #include "solvers/motion/uniqueness.h"
 
+#include <algorithm>
+
 #include "exact/simplex.h"
 #include "solvers/ucp/enumerate.h"
 
@@ -10,18 +12,23 @@ using Index = Eigen::Index;
 using exact::Mat;
 using exact::Vec;
 
-/// min sign * q_dot_k over the mode's face: variables [u (free, P's columns); x = (v_n, v_t^+, v_t^-) >= 0] with
-/// P u - E x = J_alpha theta_alpha, E = [I 0 0; 0 I -I], and the mode's zero components of x dropped.
-exact::LpProblem<Q> mode_lp(const ucp::QuasistaticProblem& p, const std::string& mode) {
-  const Index nc = p.nc, m = p.P.cols();
+/// The components of x = (v_n, v_t^+, v_t^-) that the mode leaves free, contact by contact: 's' all three, 'r'
+/// none, '+' v_t^+, '-' v_t^-.
+std::vector<Index> kept_components(Index nc, const std::string& mode) {
   std::vector<Index> kept;
   for (Index i = 0; i < nc; ++i) {
     const char l = mode[static_cast<std::size_t>(i)];
-    // 's' leaves x free; 'r' fixes all three; '+' keeps v_t^+; '-' keeps v_t^-.
     if (l == 's') kept.insert(kept.end(), {i, nc + i, 2 * nc + i});
     if (l == '+') kept.push_back(nc + i);
     if (l == '-') kept.push_back(2 * nc + i);
   }
+  return kept;
+}
+
+/// min sign * q_dot_k over the mode's face: variables [u (free, P's columns); x = (v_n, v_t^+, v_t^-) >= 0] with
+/// P u - E x = J_alpha theta_alpha, E = [I 0 0; 0 I -I], and the mode's zero components of x dropped.
+exact::LpProblem<Q> mode_lp(const ucp::QuasistaticProblem& p, const std::vector<Index>& kept) {
+  const Index nc = p.nc, m = p.P.cols();
   exact::LpProblem<Q> lp;
   lp.A = Mat<Q>::Zero(2 * nc, m + static_cast<Index>(kept.size()));
   lp.A.leftCols(m) = p.P;
@@ -57,17 +64,21 @@ const char* uniqueness_name(UniquenessStatus s) {
 MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith arith, long max_modes) {
   MotionUniqueness out;
   const ucp::QuasistaticProblem& p = *problem.quasistatic;
-  const ucp::EnumerateResult e = ucp::enumerate_modes(problem, arith, max_modes);
+  const ucp::EnumerateResult e = ucp::solution_modes_by_prefix(problem, arith, max_modes);
   out.lps = e.lps;
   if (e.status == ucp::UcpStatus::kUnknown || !e.complete) return out;
   out.solution_modes = e.solution_modes;
+  const std::size_t count = e.solution_modes.size();
+  std::vector<std::vector<Index>> kept;
+  for (const std::string& mode : e.solution_modes) kept.push_back(kept_components(p.nc, mode));
   const auto seen = [&](const Vec<Q>& q) {
     for (const Vec<Q>& m : out.motions)
       if (m == q) return true;
     return false;
   };
-  for (const std::string& mode : e.solution_modes) {
-    exact::LpProblem<Q> lp = mode_lp(p, mode);
+  // min and max of each q_dot_k over mode i's face: the distinct optima are real motions.
+  const auto bound = [&](std::size_t i) {
+    exact::LpProblem<Q> lp = mode_lp(p, kept[i]);
     for (Index k = 0; k < p.nq; ++k)
       for (int dir : {1, -1}) {
         lp.c = Vec<Q>::Zero(lp.A.cols());
@@ -82,12 +93,34 @@ MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith 
         const Vec<Q> q = r.x.head(p.nq);
         if (!seen(q)) {
           out.motions.push_back(q);
-          out.modes.push_back(mode);
+          out.modes.push_back(e.solution_modes[i]);
         }
       }
+  };
+  // First the widest faces (no other solution mode's face of X strictly contains it, the first of equal ones): a
+  // mode whose free components are among another's has its face inside the other's, and every face lies in a widest
+  // one, so if their bounds all meet at one q_dot, so do all.
+  std::vector<std::vector<Index>> sorted = kept;
+  for (std::vector<Index>& k : sorted) std::sort(k.begin(), k.end());
+  const auto inside = [&](std::size_t i, std::size_t j) {
+    return std::includes(sorted[j].begin(), sorted[j].end(), sorted[i].begin(), sorted[i].end()) &&
+           (sorted[i] != sorted[j] || j < i);
+  };
+  for (std::size_t i = 0; i < count; ++i) {
+    bool widest = true;
+    for (std::size_t j = 0; j < count && widest; ++j) widest = j == i || !inside(i, j);
+    if (widest) bound(i);
   }
   // Every LP optimum is the same point iff each component's min equals its max over every solution mode.
-  out.status = out.unbounded || out.motions.size() > 1 ? UniquenessStatus::kNotUnique : UniquenessStatus::kUnique;
+  if (!out.unbounded && out.motions.size() <= 1) {
+    out.status = UniquenessStatus::kUnique;
+    if (!out.motions.empty()) out.modes = {e.solution_modes[0]};  // the one motion is every mode's, the first's too
+    return out;
+  }
+  // Not unique: every solution mode's optima, in the modes' order, as the evidence.
+  out.motions.clear(), out.modes.clear(), out.unbounded = false;
+  for (std::size_t i = 0; i < count; ++i) bound(i);
+  out.status = UniquenessStatus::kNotUnique;
   return out;
 }
 

@@ -4,7 +4,8 @@
 // (those whose two faces are non-empty), the sets {q_dot : P u = v + J_alpha theta_alpha, u = [q_dot; ...],
 // x = (v_n, v_t^+, v_t^-) >= 0 in the mode's face}. The motion is unique iff one LP per component and direction
 // (min and max of each q_dot_k over each solution mode's face) gives the same value everywhere.
-// Cost: 4^nc mode LPs (the enumeration) plus 2 nq LPs per solution mode, all exact (or verified).
+// The solution modes come from the prefix tree over the contacts (ucp::solution_modes_by_prefix: one LP per
+// non-empty prefix and letter, not 4^nc), then 2 nq LPs per solution mode, all exact (or verified).
 #pragma once
 
 #include <string>
@@ -20,7 +21,7 @@ using exact::Q;
 enum class UniquenessStatus {
   kUnique,     ///< every solution has the same q_dot (proven: the LP bounds agree over every solution mode)
   kNotUnique,  ///< two solutions with different q_dot (both in `motions`), or a q_dot range unbounded
-  kUnknown     ///< the enumeration's budget (max_modes) was too small
+  kUnknown     ///< the prefix tree's LP budget (max_modes) ran out
 };
 
 const char* uniqueness_name(UniquenessStatus s);
@@ -32,11 +33,11 @@ struct MotionUniqueness {
   std::vector<std::string> modes;      ///< the mode of each motion (letters s r + - per contact)
   std::vector<std::string> solution_modes;
   bool unbounded = false;  ///< some q_dot component is unbounded over a solution mode
-  long lps = 0;
+  long lps = 0;            ///< LPs solved (with kUnknown: the prefixes covered before the budget ran out)
 };
 
 /// Decides whether all solutions of a quasistatic problem have the same q_dot (exact or verified LPs; kUnknown
-/// when 4^nc exceeds max_modes).
+/// when the prefix tree needs more than max_modes LPs).
 MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith arith, long max_modes);
 
 }  // namespace contactcert::solvers::motion

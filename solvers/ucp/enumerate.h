@@ -33,4 +33,13 @@ EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max
                                 const exact::Deadline& deadline = {},
                                 const std::function<void(long, long)>& progress = {});
 
+/// The same solution modes, in the same order, found by a prefix tree instead: depth first over the contacts (the
+/// last first), a prefix fixing the letters of some contacts and relaxing the others' complementarity. Its face
+/// of X x Y contains the faces of all its completions, so one LP that finds it empty prunes them all: the LPs are
+/// (letters) x (non-empty prefixes), not 4^nc; X and Y by separate LPs, a side a letter leaves unchanged without
+/// one. `x` and `y` are not set. kUnknown with complete = false when max_lps LPs or the deadline ran out (`lps`
+/// then says how many were solved).
+EnumerateResult solution_modes_by_prefix(const UcpProblem& problem, Arith arith, long max_lps,
+                                         const exact::Deadline& deadline = {});
+
 }  // namespace contactcert::solvers::ucp

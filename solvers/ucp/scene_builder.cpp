@@ -9,17 +9,9 @@ using exact::JsonInput;
 using geometry::Point2;
 using geometry::read_point;
 
-/// One contact as read: its frame and, for a finger, its control.
-struct Contact {
-  Point2 r, n;
-  Q mu;
-  bool finger = false, world_axes = false, force_controlled = false;
-  Point2 given;  ///< the velocity (velocity control) or the force (force control), in the finger's axes
-};
-
-Contact read_contact(const geometry::Shape& shape, const JsonInput& c, geometry::FrameRule frames) {
+SceneContact read_contact(const geometry::Shape& shape, const JsonInput& c, geometry::FrameRule frames) {
   c.expect_keys({"name", "point", "normal", "position", "mu", "finger"});
-  Contact out;
+  SceneContact out;
   geometry::FrameInput given;
   const auto pos = c.find("position");
   if (pos) {
@@ -60,8 +52,9 @@ Contact read_contact(const geometry::Shape& shape, const JsonInput& c, geometry:
 }
 
 /// The contacts of the scene `root` on the workpiece `w`, at least one.
-std::vector<Contact> read_contacts(const JsonInput& root, const geometry::Workpiece& w, geometry::FrameRule frames) {
-  std::vector<Contact> contacts;
+std::vector<SceneContact> read_contacts(const JsonInput& root, const geometry::Workpiece& w,
+                                        geometry::FrameRule frames) {
+  std::vector<SceneContact> contacts;
   const JsonInput list = root.at("contacts");
   for (const JsonInput& c : list.elements()) contacts.push_back(read_contact(w.shape, c, frames));
   if (contacts.empty()) list.fail("at least one contact");
@@ -72,7 +65,7 @@ std::vector<Contact> read_contacts(const JsonInput& root, const geometry::Workpi
 
 std::vector<geometry::ContactFrame> quasistatic_scene_frames(const JsonInput& root) {
   std::vector<geometry::ContactFrame> out;
-  for (const Contact& c : read_contacts(root, geometry::read_workpiece(root.at("workpiece")), geometry::frame_of))
+  for (const SceneContact& c : read_contacts(root, geometry::read_workpiece(root.at("workpiece")), geometry::frame_of))
     out.push_back({c.r, c.n, Q(0)});
   return out;
 }
@@ -81,12 +74,15 @@ QuasistaticProblem build_quasistatic_scene(const JsonInput& root, geometry::Fram
   root.expect_keys({"kind", "name", "description", "source", "note", "workpiece", "gravity", "contacts"});
   const geometry::Workpiece w = geometry::read_workpiece(root.at("workpiece"));
   const Point2 gravity = root.find("gravity") ? read_point(root.at("gravity")) : Point2{Q(0), Q(0)};
-  const std::vector<Contact> contacts = read_contacts(root, w, frames);
+  return quasistatic_of_contacts(w.com, gravity, read_contacts(root, w, frames), root.file());
+}
 
+QuasistaticProblem quasistatic_of_contacts(const Point2& com, const Point2& gravity,
+                                           const std::vector<SceneContact>& contacts, const std::string& file) {
   QuasistaticProblem p;
   p.nc = static_cast<int>(contacts.size());
   p.nq = 3;
-  for (const Contact& c : contacts) p.ntheta += c.finger ? 2 : 0;
+  for (const SceneContact& c : contacts) p.ntheta += c.finger ? 2 : 0;
   p.Jn = Mat<Q>::Zero(p.nc, p.ntheta);
   p.Jt = Mat<Q>::Zero(p.nc, p.ntheta);
   p.theta_dot = Vec<Q>::Zero(p.ntheta);
@@ -94,7 +90,7 @@ QuasistaticProblem build_quasistatic_scene(const JsonInput& root, geometry::Fram
   Vec<Q> tau = Vec<Q>::Zero(p.ntheta);
   int joint = 0;
   for (int i = 0; i < p.nc; ++i) {
-    const Contact& c = contacts[static_cast<std::size_t>(i)];
+    const SceneContact& c = contacts[static_cast<std::size_t>(i)];
     const Point2 t = geometry::perp(c.n);
     Wt.row(i) << c.n.x, c.n.y, geometry::cross(c.r, c.n);
     Wt.row(p.nc + i) << t.x, t.y, geometry::cross(c.r, t);
@@ -119,7 +115,7 @@ QuasistaticProblem build_quasistatic_scene(const JsonInput& root, geometry::Fram
   p.P = Mat<Q>::Zero(2 * p.nc, m);
   p.P.leftCols(3) = Wt;
   p.d = Vec<Q>::Zero(p.nc + m);
-  p.d.segment(p.nc, 3) << gravity.x, gravity.y, geometry::cross(w.com, gravity);
+  p.d.segment(p.nc, 3) << gravity.x, gravity.y, geometry::cross(com, gravity);
   for (std::size_t k = 0; k < p.abar.size(); ++k) {
     const int j = p.abar[k];
     p.P.col(3 + static_cast<Eigen::Index>(k)) << p.Jn.col(j), p.Jt.col(j);
@@ -127,7 +123,7 @@ QuasistaticProblem build_quasistatic_scene(const JsonInput& root, geometry::Fram
   }
   p.mu = Vec<Q>(p.nc);
   for (int i = 0; i < p.nc; ++i) p.mu(i) = contacts[static_cast<std::size_t>(i)].mu;
-  validate(p, root.file());
+  validate(p, file);
   return p;
 }
 

@@ -3,6 +3,7 @@
 // which P = [W^T  J_abar], Jn, Jt, theta_dot, alpha and d are built exactly (docs/formats.md, section 2).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "exact/json_input.h"
@@ -10,6 +11,20 @@
 #include "solvers/ucp/problem.h"
 
 namespace contactcert::solvers::ucp {
+
+/// One contact of a quasistatic scene: its frame (point r on the workpiece boundary, inward normal n), mu and, for a
+/// finger, its control.
+struct SceneContact {
+  geometry::Point2 r, n;
+  Q mu;
+  bool finger = false, world_axes = false, force_controlled = false;
+  geometry::Point2 given;  ///< the velocity (velocity control) or the force (force control), in the finger's axes
+};
+
+/// The problem of a workpiece with centre of mass `com` under `gravity` held by `contacts`, as
+/// build_quasistatic_scene below builds it from a file (`file` names the problem in a refusal: exact::InputError).
+QuasistaticProblem quasistatic_of_contacts(const geometry::Point2& com, const geometry::Point2& gravity,
+                                           const std::vector<SceneContact>& contacts, const std::string& file);
 
 /// The problem of a `"kind": "quasistatic_scene"` file. Per contact i (point r_i on the workpiece boundary,
 /// inward normal n_i as written, t_i = (-n_iy, n_ix)): the wrench columns w_in = (n_i, r_i x n_i) and

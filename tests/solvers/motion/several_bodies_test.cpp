@@ -3,6 +3,8 @@
 // there), and every step's certificate embeds the step's assembly. The expectations are derived by hand below.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "checker/ucp_check.h"
 #include "exact/json_input.h"
 #include "runtime/scenes.h"
@@ -109,6 +111,48 @@ TEST(SeveralBodies, BundledRowMakesEachContactAtTheDerivedTime) {
     EXPECT_EQ(run.final_poses[b].t, (Vec2<Q>{Q(5, 2) - Q(static_cast<long>(b), 2), Q(0)})) << "box " << b;
   for (const Twist<Q>& tw : run.steps[8].twists) EXPECT_EQ(tw.v, (Vec2<Q>{Q(1), Q(0)}));
   expect_certified_and_apart(scene, run);
+}
+
+// Uniqueness on the bundled row: 9 to 12 contacts per step, past the 4^nc enumeration's reach (4096 modes); the
+// prefix tree over the contacts (ucp::solution_modes_by_prefix) decides every step within the same LP budget, and the
+// motion derived above (each box at the finger's speed or still) is the only one.
+TEST(SeveralBodies, BundledRowMotionIsUniqueAtEveryStep) {
+  const MotionScene scene =
+      read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_pushed_row.json"));
+  SimulateOptions o;
+  o.certificates = false;
+  const Trajectory<Q> run = simulate<Q>(scene, o);
+  ASSERT_EQ(run.steps.size(), 9u);
+  for (const StepRecord<Q>& s : run.steps) {
+    ASSERT_TRUE(s.uniqueness) << "step " << s.index;
+    EXPECT_EQ(s.uniqueness->status, UniquenessStatus::kUnique) << "step " << s.index;
+    EXPECT_EQ(s.uniqueness->motions.size(), 1u) << "step " << s.index;
+  }
+}
+
+// Two bodies, one at its threshold: a 1/5 x 1 box on the floor (mu = 1/5), pushed at height 1/2 by the frictionless
+// finger, slides when the push is mu W = W / 5 and tips about its front corner (1/5, 0) when the push's moment
+// about it, F / 2, is the weight's, W / 10: F = W / 5 both ways, so both solve the step. Sliding is q_dot = (1, 0, 0);
+// tipping turns about c = (1/5, 0) with the finger point's v_x = -omega / 2 = 1, omega = -2, and the origin's velocity
+// omega J(0 - c) = (0, 2/5). A pointed box far ahead stays still (0, 0, 0) in both.
+TEST(SeveralBodies, BoxAtItsTippingThresholdBesideAnotherHasTwoMotions) {
+  const std::string narrow =
+      R"({"name": "box 0", "shape": {"type": "polygon", "vertices": [[0, 0], ["1/5", 0], ["1/5", 1], [0, 1]]}, "mu": "1/2"})";
+  const MotionScene scene = scene_of(narrow + pointed_box(1, Q(3)), "", "1/10", 1);
+  SimulateOptions o;
+  o.certificates = false;
+  const Trajectory<Q> run = simulate<Q>(scene, o);
+  ASSERT_EQ(run.steps.size(), 1u);
+  const auto& u = run.steps[0].uniqueness;
+  ASSERT_TRUE(u);
+  EXPECT_EQ(u->status, UniquenessStatus::kNotUnique);
+  const auto has = [&](const std::vector<Q>& q) {
+    for (const exact::Vec<Q>& m : u->motions)
+      if (m.size() == 6 && std::equal(q.begin(), q.end(), m.data())) return true;
+    return false;
+  };
+  EXPECT_TRUE(has({Q(1), Q(0), Q(0), Q(0), Q(0), Q(0)}));
+  EXPECT_TRUE(has({Q(0), Q(2, 5), Q(-2), Q(0), Q(0), Q(0)}));
 }
 
 // Box 0 pushed into box 1, which stands against a wall (its front face on the wall's face x = 5/2, the wall's foot

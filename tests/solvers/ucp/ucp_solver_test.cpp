@@ -108,6 +108,32 @@ TEST(UcpCompleteSearch, DataSet2MuSweepAgreesWithTheEnumerativeBaseline) {
   EXPECT_GT(jammed, 0);
 }
 
+// The prefix tree over the contacts finds the enumeration's solution modes, in its order, with fewer LPs when some
+// prefix is empty (motion uniqueness, solvers/motion/uniqueness.h); its LP budget ends it `unknown`.
+TEST(UcpSolutionModes, PrefixTreeFindsTheEnumeratedSolutionModes) {
+  const UcpProblem base = load_ucp_problem(scene(2));
+  long tree_lps = 0, enumerated_lps = 0;
+  for (int a = 0; a <= 4; a += 2)
+    for (int b = 0; b <= 4; b += 2) {
+      Vec<Q> mu(3);
+      mu << Q(a, 4), Q(b, 4), Q(1, 2);
+      const UcpProblem p = with_mu(base, mu);
+      for (Arith arith : {Arith::kExact, Arith::kVerified}) {
+        const EnumerateResult e = enumerate_modes(p, arith, 1000);
+        const EnumerateResult t = solution_modes_by_prefix(p, arith, 1000);
+        EXPECT_EQ(t.status, e.status) << "mu = " << mu.transpose();
+        EXPECT_TRUE(t.complete);
+        EXPECT_EQ(t.solution_modes, e.solution_modes) << "mu = " << mu.transpose();
+        tree_lps += t.lps, enumerated_lps += e.lps;
+      }
+    }
+  EXPECT_LT(tree_lps, enumerated_lps);
+  const EnumerateResult cut = solution_modes_by_prefix(base, Arith::kExact, 3);
+  EXPECT_EQ(cut.status, UcpStatus::kUnknown);
+  EXPECT_FALSE(cut.complete);
+  EXPECT_EQ(cut.lps, 3);
+}
+
 TEST(UcpCompleteSearch, RandomProblemsAgreeWithTheEnumerativeBaselineOnEveryPath) {
   int solvable = 0, jammed = 0;
   for (int seed = 0; seed < 24; ++seed) {
