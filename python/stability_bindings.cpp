@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "python/bindings.h"
-#include "python/json_objects.h"
+#include "python/stability_objects.h"
 #include "queries/finger_query.h"
 #include "queries/json_out.h"
 #include "queries/region_query.h"
@@ -42,13 +42,11 @@ struct Batch {
 };
 
 /// One verdict of a batch: its `stability --wrench` JSON object, built (as json.loads would build it from the text,
-/// json_objects) only when Python first reads more than the verdict.
+/// stability_object) only when Python first reads more than the verdict.
 class Verdict {
  public:
   Verdict(std::shared_ptr<const Batch> batch, std::size_t i) : batch_(std::move(batch)), i_(i) {}
-  py::object object() const {
-    return json_objects(queries::to_json(batch_->oracle->answer(batch_->wrenches[i_], batch_->verdicts[i_])));
-  }
+  py::object object() const { return stability_object(*batch_->oracle, batch_->wrenches[i_], batch_->verdicts[i_]); }
 
  private:
   std::shared_ptr<const Batch> batch_;

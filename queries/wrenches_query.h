@@ -34,6 +34,9 @@ class StabilityVerdicts {
   std::vector<StabilityOutcome> verdicts(const std::vector<exact::Vec<exact::Q>>& wrenches) const;
   /// LPs solved while preparing.
   long preparation_lps() const;
+  /// The arithmetic of its verdicts (never adaptive) and the scene's force frames (of every fixel).
+  exact::Arith arith() const { return arith_; }
+  const solvers::ForceFrames& frames() const { return *frames_; }
 
  private:
   geometry::PlanarScene scene_;

@@ -1,6 +1,6 @@
 #include "solvers/stability/stability_certificate.h"
 
-#include <nlohmann/json.hpp>
+#include <utility>
 
 #include "exact/rational_text.h"
 #include "solvers/stability/sparse_motzkin.h"
@@ -19,7 +19,7 @@ json strings(const Vec<Q>& v) {
 
 }  // namespace
 
-std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g, const StabilityResult<Q>& r) {
+json stability_certificate_json(const std::string& scene_text, const Vec<Q>& g, const StabilityResult<Q>& r) {
   json j;
   j["kind"] = "stability";
   j["verdict"] = verdict_name(r.verdict);
@@ -38,8 +38,12 @@ std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g
   for (const auto& p : r.proofs)
     proofs.push_back(
         {{"mode", p.mode.text()}, {"kinematic", p.kinematic}, {"motzkin", sparse_motzkin_json(p.motzkin)}});
-  j["proofs"] = proofs;
-  return j.dump(1) + "\n";
+  j["proofs"] = std::move(proofs);
+  return j;
+}
+
+std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g, const StabilityResult<Q>& r) {
+  return exact::json_text(stability_certificate_json(scene_text, g, r), 1) + "\n";
 }
 
 }  // namespace contactcert::solvers

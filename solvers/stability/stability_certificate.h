@@ -10,6 +10,7 @@
 // proof once (mode_coverage: no repeated or extra entry).
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "exact/json_input.h"
@@ -17,7 +18,10 @@
 
 namespace contactcert::solvers {
 
-/// The certificate as JSON text.
+/// The certificate as a JSON value.
+nlohmann::ordered_json stability_certificate_json(const std::string& scene_text, const Vec<Q>& g,
+                                                  const StabilityResult<Q>& result);
+/// The same as JSON text (one member or element per line).
 std::string stability_certificate(const std::string& scene_text, const Vec<Q>& g, const StabilityResult<Q>& result);
 
 }  // namespace contactcert::solvers

@@ -243,7 +243,10 @@ StabilityResult<T> strong_stability(const geometry::PlanarScene& full, const Vec
         return ModeLp<T>{rolling_name, *rolling_ms, *rolling_solver};
       },
       [&](StabilityResult<T>& r) {
-        for (ModeProof<T>& p : dead_prefix_proofs(std::move(tree.dead))) r.proofs.push_back(std::move(p));
+        std::vector<ModeProof<T>> proofs = dead_prefix_proofs(std::move(tree.dead));
+        const std::size_t n = r.proofs.size() + proofs.size();
+        r.proofs.reserve(n, n);  // a growing list would copy its rational vectors
+        for (ModeProof<T>& p : proofs) r.proofs.push_back(std::move(p));
       },
       static_cast<ReusedCertificates<T>*>(nullptr));
   out.lps += tree.lps;

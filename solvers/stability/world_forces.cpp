@@ -18,13 +18,13 @@ geometry::Point2 reported_normal(const geometry::Fixel& f) {
 
 namespace {
 
-// An exact vector in T (a copy for Q, else rounded entry by entry).
+// An exact vector in T: itself for Q (no copy), else rounded entry by entry.
 template <class T>
-Vec<T> vector_in(const Vec<Q>& v) {
+decltype(auto) vector_in(const Vec<Q>& v) {
   if constexpr (std::is_same_v<T, Q>) {
-    return v;
+    return (v);
   } else {
-    return v.unaryExpr([](const Q& x) { return from_exact<T>(x); });
+    return Vec<T>(v.unaryExpr([](const Q& x) { return from_exact<T>(x); }));
   }
 }
 
@@ -63,7 +63,8 @@ std::vector<WorldForce<T>> ForceFrames::forces(const std::vector<Eigen::Index>& 
     w.point = vector_in<T>(f.point);
     // f_i and its torque from the model's frame; then f_i = c_n n + c_t t in the reported frame (n, t = perp(n)),
     // so c_n = f_i . n / |n|^2 and c_t = f_i . t / |n|^2.
-    const Vec<T> jn = vector_in<T>(f.normal_wrench), jt = vector_in<T>(f.tangent_wrench);
+    const auto& jn = vector_in<T>(f.normal_wrench);
+    const auto& jt = vector_in<T>(f.tangent_wrench);
     w.force = c(i) * jn.head(2) + c(k + i) * jt.head(2);
     w.torque = c(i) * jn(2) + c(k + i) * jt(2);
     w.normal = vector_in<T>(f.normal);
