@@ -31,4 +31,5 @@ set(CONTACTCERT_DETAIL_HEADERS
     solvers/wrench_cone/cone_form.h solvers/wrench_cone/contact_model.h
     solvers/stability/mode_tree.h solvers/stability/motion_system.h solvers/stability/reused_certificates.h
     solvers/ucp/integer_rows.h solvers/ucp/phases.h solvers/ucp/face_lp.h solvers/ucp/bilinear.h solvers/ucp/search.h
-    solvers/ucp/float_check.h solvers/ucp/recovery.h)
+    solvers/ucp/float_check.h solvers/ucp/recovery.h
+    geometry/number_names.h solvers/number_names.h checker/mode_letters.h)
