@@ -1,5 +1,8 @@
 #include "solvers/assembly/assembly_stability.h"
 
+#include <algorithm>
+#include <utility>
+
 #include "solvers/assembly/assembly_certificate_memory.h"
 
 namespace contactcert::solvers::assembly {
@@ -124,32 +127,78 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
 }  // namespace
 
 std::vector<std::size_t> walk_order(const geometry::Assembly& a) {
-  const std::size_t k = a.contacts.size();
+  const std::size_t k = a.contacts.size(), N = a.bodies.size();
+  // The contact graph: a body's neighbouring parties, every fixed party one node (index N).
+  const auto node = [N](const geometry::Party& p) { return p.movable() ? p.index : N; };
+  std::vector<std::vector<std::size_t>> neighbours(N);
+  for (const geometry::AssemblyContact& c : a.contacts)
+    for (const auto& [p, q] : {std::pair{&c.from, &c.to}, std::pair{&c.to, &c.from}})
+      if (p->movable()) neighbours[p->index].push_back(node(*q));
+  for (std::vector<std::size_t>& v : neighbours) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+  }
+  // Leaves peeled round by round: a body with at most one neighbour not yet peeled hangs off the rest (done).
+  std::vector<std::size_t> bodies;
+  std::vector<bool> done(N, false);
+  for (bool more = true; more;) {
+    more = false;
+    std::vector<std::size_t> leaves;
+    for (std::size_t b = 0; b < N; ++b)
+      if (!done[b] && std::count_if(neighbours[b].begin(), neighbours[b].end(),
+                                    [&](std::size_t q) { return q == N || !done[q]; }) <= 1)
+        leaves.push_back(b);
+    for (const std::size_t b : leaves) {
+      done[b] = more = true;
+      bodies.push_back(b);
+    }
+  }
+  // The distance of every body from the fixed parties in the contact graph (breadth first).
+  std::vector<std::size_t> distance(N, N + 1), layer;
+  for (std::size_t b = 0; b < N; ++b)
+    if (std::binary_search(neighbours[b].begin(), neighbours[b].end(), N)) {
+      distance[b] = 1;
+      layer.push_back(b);
+    }
+  while (!layer.empty()) {
+    std::vector<std::size_t> next;
+    for (const std::size_t b : layer)
+      for (const std::size_t q : neighbours[b])
+        if (q < N && distance[q] > distance[b] + 1) {
+          distance[q] = distance[b] + 1;
+          next.push_back(q);
+        }
+    layer = std::move(next);
+  }
   std::vector<bool> placed(k, false);
   std::vector<std::size_t> order;
   const auto touches = [&a](std::size_t i, std::size_t b) {
     const geometry::AssemblyContact& c = a.contacts[i];
     return (c.from.movable() && c.from.index == b) || (c.to.movable() && c.to.index == b);
   };
-  std::vector<bool> done(a.bodies.size(), false);
+  const auto take = [&](std::size_t b) {
+    for (std::size_t i = 0; i < k; ++i)
+      if (!placed[i] && touches(i, b)) {
+        placed[i] = true;
+        order.push_back(i);
+      }
+  };
+  for (const std::size_t b : bodies) take(b);
+  // The rest: the nearest the fixed parties first, then the fewest contacts not yet taken, then the earlier body.
   for (;;) {
-    std::size_t best = a.bodies.size(), fewest = k + 1;
-    for (std::size_t b = 0; b < a.bodies.size(); ++b) {
+    std::size_t best = N, fewest = k + 1;
+    for (std::size_t b = 0; b < N; ++b) {
       if (done[b]) continue;
       std::size_t open = 0;
       for (std::size_t i = 0; i < k; ++i) open += !placed[i] && touches(i, b);
-      if (open < fewest) {
+      if (best == N || distance[b] < distance[best] || (distance[b] == distance[best] && open < fewest)) {
         best = b;
         fewest = open;
       }
     }
-    if (best == a.bodies.size()) break;
+    if (best == N) break;
     done[best] = true;
-    for (std::size_t i = 0; i < k; ++i)
-      if (!placed[i] && touches(i, best)) {
-        placed[i] = true;
-        order.push_back(i);
-      }
+    take(best);
   }
   for (std::size_t i = 0; i < k; ++i)  // a contact of no movable body (none in a valid assembly) comes last
     if (!placed[i]) order.push_back(i);
