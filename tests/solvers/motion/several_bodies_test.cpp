@@ -31,7 +31,7 @@ std::string unit_box() {
   return R"({"name": "box 0", "shape": {"type": "polygon", "vertices": [[0, 0], [1, 0], [1, 1], [0, 1]]}, "mu": "1/2"})";
 }
 std::string pointed_box(int k, const Q& x) {
-  const auto s = [](const Q& q) { return "\"" + q.get_str() + "\""; };
+  const auto s = [](const Q& q) { return std::string("\"") + q.get_str() + "\""; };
   return R"(, {"name": "box )" + std::to_string(k) + R"(", "shape": {"type": "polygon", "vertices": [[)" + s(x) +
          R"(, "1/2"], [)" + s(x + Q(1, 4)) + ", 0], [" + s(x + 1) + ", 0], [" + s(x + 1) + ", 1], [" + s(x + Q(1, 4)) +
          R"(, 1]]}, "mu": "1/2"})";
