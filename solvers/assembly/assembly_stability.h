@@ -12,7 +12,8 @@
 // system by row labels and checked exactly (assembly_certificate_memory.h): a local contradiction (a body pushed
 // against its friction) recurs under every choice of the earlier letters, and its certificate with it. Exact answers
 // are needed only for a dead prefix (its certificate) and a whole mode (the moving witness): an interior prefix the
-// float LP finds feasible is extended even if its point does not round to an exact one (docs/bench.md section 8).
+// float LP finds feasible is extended even if its point does not round to an exact one, and so is a child whose
+// letter that float point meets within a tolerance, without an LP (docs/bench.md section 8).
 #pragma once
 
 #include <string>
