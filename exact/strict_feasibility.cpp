@@ -152,7 +152,8 @@ std::optional<StrictFeasibility<Q>> check_rounded(const IntegerLp& ilp, const St
 // *float_feasible: whether the float LP found the system feasible.
 std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const LpProblem<double>& hint,
                                                   const std::vector<bool>& is_free, const std::vector<bool>& strict,
-                                                  const std::vector<Index>& S, const Vec<Q>& b, bool* float_feasible) {
+                                                  const std::vector<Index>& S, const Vec<Q>& b, bool* float_feasible,
+                                                  Vec<double>* float_point) {
   const Index m = ilp.rows(), n = ilp.cols();
   Z d;
   const std::optional<std::vector<i64>> B = integer_rhs(ilp, b, d);
@@ -162,6 +163,7 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
   try {
     const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp, with_duals()), m, n, S);
     *float_feasible = f.status == StrictStatus::kFeasible;
+    if (float_point && *float_feasible) *float_point = f.x / d.get_d();  // A_int x = d (L o b): x / d solves A x = b
     return check_rounded(ilp, f, is_free, strict, *B, d);
   } catch (const RingOverflow&) {
     return std::nullopt;
@@ -281,11 +283,13 @@ StrictFeasibility<T> StrictSolver<T>::solve_unrounded(const Vec<T>& b) const {
 }
 
 template <class T>
-std::optional<StrictFeasibility<T>> StrictSolver<T>::solve_rounded(const Vec<T>& b, bool* float_feasible) const {
+std::optional<StrictFeasibility<T>> StrictSolver<T>::solve_rounded(const Vec<T>& b, bool* float_feasible,
+                                                                   Vec<double>* float_point) const {
   *float_feasible = false;
+  if (float_point) *float_point = Vec<double>();
   if constexpr (std::is_same_v<T, Q>) {
     if (!integer_) return std::nullopt;
-    return rounded_solve(*integer_, hint_, is_free_, strict_, strict_columns_, b, float_feasible);
+    return rounded_solve(*integer_, hint_, is_free_, strict_, strict_columns_, b, float_feasible, float_point);
   } else {
     return solve(b);
   }

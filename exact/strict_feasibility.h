@@ -78,7 +78,9 @@ class StrictSolver {
   /// nullopt where solve(b) would go on to the verified or exact LP, and then *float_feasible tells whether the
   /// float LP found the system feasible (false if it ran out of pivots, or with no float step: kExact, or rows not
   /// in 64 bits). For a caller that needs an exact answer only when it is "infeasible". Other T: solve(b).
-  std::optional<StrictFeasibility<T>> solve_rounded(const Vec<T>& b, bool* float_feasible) const;
+  /// *float_point, if given: the float LP's point of A x = b when it found one (else empty), a hint only.
+  std::optional<StrictFeasibility<T>> solve_rounded(const Vec<T>& b, bool* float_feasible,
+                                                    Vec<double>* float_point = nullptr) const;
   /// The rest of solve(b), for a caller whose solve_rounded(b) gave nullopt: the verified LP (for kExact or rows
   /// not in 64 bits, the exact or verified LP on the rows as given). Other T: solve(b).
   StrictFeasibility<T> solve_unrounded(const Vec<T>& b) const;

@@ -208,10 +208,10 @@ TEST(AssemblyCheck, ForgedUnstableCertificatesAreRefused) {
 }
 
 // The walk's contact order (AssemblyStabilityResult::contact_order): a row of three boxes under a lateral push goes
-// body by body from the first box (the fewest open contacts, ties to the earlier body): box 0's ground and interface
-// contacts 0, 1, 4, 5, box 1's ground and interface 2, 3, 8, 9, box 2's ground 6, 7. Its dead prefixes are letters
-// in that order; the checker places them itself, so the file's order, two swapped contacts or an index listed twice
-// are refused.
+// body by body from the first box (no box hangs off the others and all stand on the ground: the fewest open contacts,
+// ties to the earlier body): box 0's ground and interface contacts 0, 1, 4, 5, box 1's ground and interface 2, 3, 8,
+// 9, box 2's ground 6, 7. Its dead prefixes are letters in that order; the checker places them itself, so the file's
+// order, two swapped contacts or an index listed twice are refused.
 TEST(AssemblyCheck, ContactOrderIsCheckedNotTrusted) {
   SceneText s = testing::box_row(3);
   for (std::string& b : s.bodies) b.insert(b.size() - 1, R"(, "load": ["1/2", -2, 0])");

@@ -6,6 +6,7 @@
 
 #include "exact/rounded_check.h"
 #include "exact/simplex.h"
+#include "exact/strict_feasibility.h"
 #include "tests/exact/lp_expectations.h"
 #include "tests/exact/random_lp.h"
 #include "tests/reference/cdd_lp.h"
@@ -144,6 +145,27 @@ TEST(VerifiedLp, RoundedCertificateAcceptsOnlyAnExactOptimum) {
   y(0) += 1e-3;
   EXPECT_FALSE(round_and_check_optimal(p, *ilp, f.basis, f.x, y));
   EXPECT_FALSE(round_and_check_optimal(p, *ilp, {2, 3}, f.x, f.duals));
+}
+
+// StrictSolver::solve_rounded's float point: a point of A x = b in doubles when the float LP finds one (here
+// x_0 / 2 + x_1 / 3 = 1 with x_0 > 0, x >= 0, on the integer row 3 x_0 + 2 x_1 = 6), none for an infeasible system
+// (x_0 + x_1 = -1 with x >= 0).
+TEST(StrictSolver, FloatPointOfTheRoundedSolve) {
+  StrictSystem<Q> s{Mat<Q>(1, 2), Vec<Q>(1), {}, {true, false}};
+  s.A << Q(1, 2), Q(1, 3);
+  s.b << Q(1);
+  bool feasible = false;
+  Vec<double> x;
+  ASSERT_TRUE(StrictSolver<Q>(s).solve_rounded(s.b, &feasible, &x));
+  EXPECT_TRUE(feasible);
+  ASSERT_EQ(x.size(), 2);
+  EXPECT_NEAR(x(0) / 2 + x(1) / 3, 1, 1e-12);
+  EXPECT_GT(x(0), 0);
+  s.A << Q(1), Q(1);
+  s.b << Q(-1);
+  EXPECT_TRUE(StrictSolver<Q>(s).solve_rounded(s.b, &feasible, &x));
+  EXPECT_FALSE(feasible);
+  EXPECT_EQ(x.size(), 0);
 }
 
 }  // namespace

@@ -190,5 +190,18 @@ TEST(AssemblyStability, NodeBudgetIsAStatus) {
   EXPECT_EQ(decided(a).verdict, AssemblyVerdict::kStronglyStable);
 }
 
+// The walk's contact order (walk_order). A stack of three hangs off the ground: its boxes are peeled as leaves of the
+// contact graph from the top, box 2's contacts with box 1 (4, 5), box 1's with box 0 (2, 3), box 0's with the ground
+// (0, 1). The corbelled arch hangs nowhere (both piers stand on the ground, the keystone on both): its blocks go by
+// their distance from the ground, course by course, left then right: block L0 takes its ground contacts 0, 1 and its
+// interface with L1 4, 5, R0 takes 2, 3 and 6, 7, then L1 (8, 9), R1 (10, 11), ..., R3 the keystone's right pair
+// 18, 19, and the keystone, last, has no contact left.
+TEST(AssemblyStability, WalkOrderPeelsHangingBodiesThenGoesCourseByCourse) {
+  EXPECT_EQ(walk_order(testing::box_stack(3).read()), (std::vector<std::size_t>{4, 5, 2, 3, 0, 1}));
+  std::vector<std::size_t> arch{0, 1, 4, 5, 2, 3, 6, 7};
+  for (std::size_t i = 8; i < 20; ++i) arch.push_back(i);
+  EXPECT_EQ(walk_order(testing::corbel_arch().read()), arch);
+}
+
 }  // namespace
 }  // namespace contactcert::solvers::assembly
