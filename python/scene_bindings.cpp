@@ -51,20 +51,20 @@ WithCertificate modes(const Scene& s, bool kinematic, const std::string& table2,
   return {queries::to_json(a).dump(), a.certificate_text};
 }
 
-queries::InsertOptions insert_options(const std::string& sweep_mu, const std::string& arith) {
+queries::InsertOptions insert_options(const std::string& sweep_mu, const std::string& arith, double time_limit) {
   queries::InsertOptions o;
-  o.common.arith = queries::parse_arith(arith, "--arith");
+  o.common = {queries::parse_arith(arith, "--arith"), time_limit};
   o.sweep_mu = queries::parse_sweep_mu(sweep_mu);
   return o;
 }
 
-/// `insert FILE [--sweep-mu a,b,...] [--arith A]`.
-std::string insertion(const Scene& s, const std::string& sweep_mu, const std::string& arith) {
-  return queries::to_json(answer(queries::run_insert(s, insert_options(sweep_mu, arith)))).dump();
+/// `insert FILE [--sweep-mu a,b,...] [--arith A] [--time-limit S]`.
+std::string insertion(const Scene& s, const std::string& sweep_mu, const std::string& arith, double time_limit) {
+  return queries::to_json(answer(queries::run_insert(s, insert_options(sweep_mu, arith, time_limit)))).dump();
 }
 
 std::string insertion_svg(const Scene& s) {
-  const queries::InsertAnswer a = answer(queries::run_insert(s, insert_options("", "verified")));
+  const queries::InsertAnswer a = answer(queries::run_insert(s, insert_options("", "verified", 0)));
   return queries::insertion_svg(a.scene, a.pushes);
 }
 

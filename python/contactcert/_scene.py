@@ -182,12 +182,15 @@ class Scene(FileProblem[_core.Scene]):
         time_limit = seconds(time_limit)
         return Finger(json.loads(self._core.finger(time_limit)), lambda: self._core.finger_svg(time_limit))
 
-    def insertion(self, sweep_mu: str | Iterable[Exact] | None = None, arith: Arith = "verified") -> Insertion:
+    def insertion(self, sweep_mu: str | Iterable[Exact] | None = None, arith: Arith = "verified",
+                  time_limit: float = 0) -> Insertion:
         """`contactcert insert FILE [--sweep-mu ...]`: G_goal and the pushes that seat the workpiece from any
-        contact state; `sweep_mu` (exact numbers) repeats the pushes with every fixel's mu set to each value."""
+        contact state; `sweep_mu` (exact numbers) repeats the pushes with every fixel's mu set to each value.
+        Past `time_limit` seconds (0: none), BudgetExceeded naming what was computed."""
         choice(arith, ARITHS, "--arith")
+        time_limit = seconds(time_limit)
         sweep = vector_text(sweep_mu, "--sweep-mu") if sweep_mu is not None else ""
-        return Insertion(json.loads(self._core.insertion(sweep, arith)), self._core.insertion_svg)
+        return Insertion(json.loads(self._core.insertion(sweep, arith, time_limit)), self._core.insertion_svg)
 
     def __repr__(self) -> str:
         return f"Scene({self.name!r}, {self._core.fixels} fixels)"
