@@ -25,6 +25,8 @@
 
 using namespace contactcert;
 using namespace contactcert::solvers::ucp;
+using contactcert::exact::Q;
+using contactcert::exact::Vec;
 
 namespace {
 

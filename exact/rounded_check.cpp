@@ -99,7 +99,68 @@ std::optional<OptimalCertificate> check_optimal(const LpProblem<Q>& problem, con
   return cert;
 }
 
+/// Column v of the integer LP's phase-1 matrix [A_int | S_int], S_int = diag(row_scale o sign b) (the rows of
+/// problem's [A | S] times row_scale), as the terms of the equation (B^T u)_k = rhs for v = basis[k].
+template <class R>
+SparseEquation<R> basis_column(const IntegerLp& ilp, Index v) {
+  SparseEquation<R> eq;
+  if (v < ilp.cols()) {
+    for (Index i = 0; i < ilp.rows(); ++i)
+      if (ilp.A(i, v) != 0) eq.terms.emplace_back(i, R(ilp.A(i, v)));
+  } else {
+    const auto i = static_cast<std::size_t>(v - ilp.cols());
+    eq.terms.emplace_back(v - ilp.cols(), R(ilp.b[i] < 0 ? -ilp.row_scale[i] : ilp.row_scale[i]));
+  }
+  return eq;
+}
+
+/// The solution U / D (D > 0) of B^T u = rhs, B the basis columns of [A_int | S_int]; nullopt if B is singular or
+/// not square.
+template <class R>
+std::optional<RoundedVector<R>> basis_dual_solve(const IntegerLp& ilp, const std::vector<Index>& basis,
+                                                 const std::vector<R>& rhs) {
+  const Index m = ilp.rows();
+  if (static_cast<Index>(basis.size()) != m) return std::nullopt;
+  std::vector<SparseEquation<R>> eqs;
+  for (std::size_t k = 0; k < basis.size(); ++k) {
+    eqs.push_back(basis_column<R>(ilp, basis[k]));
+    eqs.back().rhs = rhs[k];
+  }
+  RoundedVector<R> u;
+  if (solve_sparse_square(eqs, m, u.X, u.D) != SolutionKind::kUnique) return std::nullopt;
+  return u;
+}
+
 }  // namespace
+
+std::optional<Vec<Q>> basis_farkas_certificate(const LpProblem<Q>& problem, const IntegerLp& ilp,
+                                               const std::vector<Index>& basis) {
+  const Index m = problem.rows(), n = problem.cols();
+  if (ilp.rows() != m || ilp.cols() != n) return std::nullopt;
+  for (Index v : basis)
+    if (v < 0 || v >= n + m) return std::nullopt;
+  return with_exact_ring<Q, Int128>([&]<class R>() -> std::optional<Vec<Q>> {
+    std::vector<R> cB;
+    for (Index v : basis) cB.push_back(R(v >= n ? 1 : 0));
+    const std::optional<RoundedVector<R>> u = basis_dual_solve<R>(ilp, basis, cB);
+    if (!u) return std::nullopt;
+    // farkas = -(row_scale o U) / D: farkas^T A = -U^T A_int / D >= 0 (== 0 on free columns), farkas^T b < 0.
+    const std::vector<R> t = left_product(ilp, u->X);
+    for (Index j = 0; j < n; ++j) {
+      const int s = -ring::sign(t[static_cast<std::size_t>(j)]);
+      if (problem.free(j) ? s != 0 : s < 0) return std::nullopt;
+    }
+    R ub(0);
+    for (Index i = 0; i < m; ++i)
+      ub = ring::add(ub, ring::mul(u->X[static_cast<std::size_t>(i)], R(ilp.b[static_cast<std::size_t>(i)])));
+    if (ring::sign(ub) <= 0) return std::nullopt;
+    Vec<Q> farkas(m);
+    for (Index i = 0; i < m; ++i)
+      ring::to_rational(ring::mul(u->X[static_cast<std::size_t>(i)], R(-ilp.row_scale[static_cast<std::size_t>(i)])),
+                        u->D, farkas(i));
+    return farkas;
+  });
+}
 
 std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& problem, const IntegerLp& ilp,
                                                           const std::vector<Index>& basis, const Vec<double>& x_approx,
@@ -139,6 +200,7 @@ std::optional<Vec<Q>> rounded_point(const IntegerSystem<R>& s, const Vec<double>
 CONTACTCERT_ROUNDED_CHECK_INSTANTIATE(Int128, std::int64_t)
 CONTACTCERT_ROUNDED_CHECK_INSTANTIATE(Int128, Int128)
 CONTACTCERT_ROUNDED_CHECK_INSTANTIATE(Z, Z)
+CONTACTCERT_ROUNDED_CHECK_INSTANTIATE(Z, std::int64_t)
 #undef CONTACTCERT_ROUNDED_CHECK_INSTANTIATE
 
 template std::optional<Vec<Q>> rounded_point<Int128>(const IntegerSystem<Int128>&, const Vec<double>&,

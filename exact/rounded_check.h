@@ -37,6 +37,7 @@ std::vector<R> left_product(const IntegerSystem<S>& s, const std::vector<R>& Y);
 CONTACTCERT_ROUNDED_CHECK_EXTERN(Int128, std::int64_t)
 CONTACTCERT_ROUNDED_CHECK_EXTERN(Int128, Int128)
 CONTACTCERT_ROUNDED_CHECK_EXTERN(Z, Z)
+CONTACTCERT_ROUNDED_CHECK_EXTERN(Z, std::int64_t)
 #undef CONTACTCERT_ROUNDED_CHECK_EXTERN
 
 /// An exact optimality certificate: A x = b, x >= 0 on non-free columns, A^T y <= c (== on free columns
@@ -54,6 +55,14 @@ struct OptimalCertificate {
 std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& problem, const IntegerLp& ilp,
                                                           const std::vector<Eigen::Index>& basis,
                                                           const Vec<double>& x_approx, const Vec<double>& y_approx);
+
+/// The Farkas vector y of a float phase-1 basis (columns of [A | S], S = diag(sign b)), computed from the basis
+/// itself rather than rounded (its determinants may outgrow rational reconstruction): B^T y = 1 on artificial
+/// columns, 0 on the others, solved fraction-free in the integer rows of `ilp` (solve_sparse_square, Int128 then Z),
+/// returned if y^T A >= 0 (== 0 on free columns) and y^T b < 0; nullopt if the basis is singular, not square, or y is
+/// no proof.
+std::optional<Vec<Q>> basis_farkas_certificate(const LpProblem<Q>& problem, const IntegerLp& ilp,
+                                               const std::vector<Eigen::Index>& basis);
 
 /// A point of the face {x >= 0 : A x = b, x_j = 0 where zero[j]} near x_approx: the entries off `zero`
 /// reconstructed over their common denominator D, then A X = D b and X >= 0 checked in R. nullopt if a

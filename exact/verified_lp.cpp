@@ -100,16 +100,25 @@ std::optional<Proposal> propose(Rung rung, const LpProblem<Q>& problem, const st
 }
 
 /// The Farkas vector of a float phase-1 basis, recomputed exactly (y with B1^T y = 1 on artificials) and
-/// checked; nullopt if it does not prove the LP infeasible.
-std::optional<LpResult<Q>> check_infeasible(const LpProblem<Q>& problem, const std::vector<Index>& basis) {
+/// checked: in the integer rows when there are some (basis_farkas_certificate), else in Q. nullopt if it does not
+/// prove the LP infeasible.
+std::optional<LpResult<Q>> check_infeasible(const LpProblem<Q>& problem, const std::optional<IntegerLp>& ilp,
+                                            const std::vector<Index>& basis) {
   const Index n = problem.cols();
   if (!valid_indices(basis, n + problem.rows())) return std::nullopt;
-  Vec<Q> cB(static_cast<Index>(basis.size()));
-  for (size_t k = 0; k < basis.size(); ++k) cB(static_cast<Index>(k)) = basis[k] >= n ? Q(1) : Q(0);
-  std::optional<Vec<Q>> y = basis_duals(problem, basis, cB);
-  if (!y) return std::nullopt;
-  Vec<Q> farkas = -*y;
-  if (!verify_farkas(problem, farkas)) return std::nullopt;
+  std::optional<Vec<Q>> integer_farkas;
+  if (ilp) integer_farkas = basis_farkas_certificate(problem, *ilp, basis);
+  Vec<Q> farkas;
+  if (integer_farkas) {
+    farkas = std::move(*integer_farkas);
+  } else {
+    Vec<Q> cB(static_cast<Index>(basis.size()));
+    for (size_t k = 0; k < basis.size(); ++k) cB(static_cast<Index>(k)) = basis[k] >= n ? Q(1) : Q(0);
+    std::optional<Vec<Q>> y = basis_duals(problem, basis, cB);
+    if (!y) return std::nullopt;
+    farkas = -*y;
+    if (!verify_farkas(problem, farkas)) return std::nullopt;
+  }
   LpResult<Q> res;
   res.status = LpStatus::kInfeasible;
   res.basis = basis;
@@ -146,7 +155,7 @@ std::optional<LpResult<Q>> check_basis(const LpProblem<Q>& problem, const std::v
 /// pivots); otherwise the basis must check out as it is. nullopt if it does not.
 std::optional<LpResult<Q>> check(const LpProblem<Q>& problem, const std::optional<IntegerLp>& ilp, const Proposal& p,
                                  bool last, const LpOptions& options) {
-  if (p.status == LpStatus::kInfeasible) return check_infeasible(problem, p.basis);
+  if (p.status == LpStatus::kInfeasible) return check_infeasible(problem, ilp, p.basis);
   if (!valid_indices(p.basis, problem.cols())) return std::nullopt;
   if (p.status == LpStatus::kOptimal && ilp) {
     // Fast path: round the float optimum and check it exactly in integers.

@@ -168,5 +168,29 @@ TEST(StrictSolver, FloatPointOfTheRoundedSolve) {
   EXPECT_EQ(x.size(), 0);
 }
 
+// The Farkas vector of a float phase-1 basis, solved in the integer rows, is that basis's own (B1^T y = -1 on its
+// artificial columns, 0 on the others, in the rational rows) and proves infeasibility; a basis whose vector
+// proves nothing (all structural: y = 0) is refused.
+TEST(VerifiedLp, BasisFarkasCertificateIsTheBasisOwnVector) {
+  LpProblem<Q> p;
+  p.A = Mat<Q>(2, 2);
+  p.A << Q(1, 2), Q(1, 3), 1, Q(5, 7);
+  p.b = Vec<Q>(2);
+  p.b << 1, Q(-2, 5);
+  const std::optional<IntegerLp> ilp = integer_lp(p);
+  ASSERT_TRUE(ilp);
+  const LpResult<double> f = solve_lp<double>(ilp->to_double(p.is_free));
+  ASSERT_EQ(f.status, LpStatus::kInfeasible);
+  const std::optional<Vec<Q>> y = basis_farkas_certificate(p, *ilp, f.basis);
+  ASSERT_TRUE(y);
+  EXPECT_TRUE(verify_farkas(p, *y));
+  for (Eigen::Index v : f.basis) {
+    const Q column_dot = v < 2 ? Q(p.A.col(v).dot(*y)) : Q(sgn(p.b(v - 2)) < 0 ? -(*y)(v - 2) : (*y)(v - 2));
+    EXPECT_EQ(column_dot, v < 2 ? Q(0) : Q(-1)) << v;
+  }
+  EXPECT_FALSE(basis_farkas_certificate(p, *ilp, {0, 1}));
+  EXPECT_FALSE(basis_farkas_certificate(p, *ilp, {0}));
+}
+
 }  // namespace
 }  // namespace contactcert::exact
