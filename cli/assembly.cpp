@@ -10,6 +10,7 @@
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "queries/assembly_query.h"
+#include "queries/ucp_query.h"
 
 namespace contactcert::cli {
 
