@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "checker/sparse_motzkin_reader.h"
 #include "checker/table2_rows.h"
 #include "geometry/spatial_scene.h"
-#include "checker/sparse_motzkin_reader.h"
 
 namespace contactcert::checker {
 namespace {
@@ -30,6 +30,20 @@ std::vector<Seen> seen(const geometry::SpatialScene& s) {
     out.push_back(std::move(x));
   }
   return out;
+}
+
+/// Contact i's frame as the checker relies on it, verified rather than taken from the reader: t1 and t2 non-zero,
+/// orthogonal to the normal and to each other, t1 x t2 along +normal (a right-handed tangent frame, whichever way
+/// the reader chose or derived it). Empty if so, else the reason.
+std::string frame_fault(const std::vector<Seen>& cs) {
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    const Seen& c = cs[i];
+    const bool zero = sgn(geometry::dot(c.t1, c.t1)) == 0 || sgn(geometry::dot(c.t2, c.t2)) == 0;
+    if (zero || sgn(geometry::dot(c.t1, c.n)) != 0 || sgn(geometry::dot(c.t2, c.n)) != 0 ||
+        sgn(geometry::dot(c.t1, c.t2)) != 0 || sgn(geometry::dot(geometry::cross(c.t1, c.t2), c.n)) <= 0)
+      return "contact " + std::to_string(i) + "'s tangent frame is not a right-handed frame orthogonal to its normal";
+  }
+  return {};
 }
 
 std::string alphabet(std::size_t m) {
@@ -130,6 +144,7 @@ ModesCertificateCheck check_spatial_modes_certificate(const exact::JsonInput& c)
   const std::vector<Seen> cs = seen(geometry::read_spatial_scene(embedded));
   if (c.at("problem_sha256").string() != embedded.canonical_sha256())
     return {false, "problem_sha256 is not the digest of the embedded scene", 0, 0};
+  if (const std::string fault = frame_fault(cs); !fault.empty()) return {false, fault, 0, 0};
   std::vector<std::string> leaves, dead;
   for (const exact::JsonInput& e : c.at("modes").elements()) {
     e.expect_keys({"mode", "acceleration"});
