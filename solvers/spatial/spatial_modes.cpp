@@ -299,22 +299,24 @@ SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOption
 }
 
 std::string spatial_modes_certificate(const std::string& scene_text, const SpatialModeTree& tree) {
-  nlohmann::ordered_json j;
-  j["kind"] = "spatial_modes";
-  j["scene"] = scene_text;
-  j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
-  nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+  // One line per mode and per dead prefix, each a compact JSON object (a box on a plane with 16 contacts lists
+  // ~110 000 dead prefixes: one indented line per number would be 17 MB and a tree of JSON values 300 MB).
+  std::string out = "{\n \"kind\": \"spatial_modes\",\n \"scene\": " + nlohmann::json(scene_text).dump() +
+                    ",\n \"problem_sha256\": \"" + exact::JsonInput::parse(scene_text, "scene").canonical_sha256() +
+                    "\",\n \"modes\": [";
   for (std::size_t i = 0; i < tree.modes.size(); ++i) {
     nlohmann::ordered_json a = nlohmann::ordered_json::array();
     for (Index d = 0; d < 6; ++d) a.push_back(exact::to_string(tree.accelerations[i](d)));
-    modes.push_back({{"mode", tree.modes[i]}, {"acceleration", a}});
+    out += (i ? ",\n  " : "\n  ") + nlohmann::ordered_json{{"mode", tree.modes[i]}, {"acceleration", a}}.dump();
   }
-  j["modes"] = modes;
-  nlohmann::ordered_json dead = nlohmann::ordered_json::array();
-  for (const SpatialDeadPrefix& d : tree.dead)
-    dead.push_back({{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(d.motzkin)}});
-  j["dead"] = dead;
-  return j.dump(1) + "\n";
+  out += tree.modes.empty() ? "],\n \"dead\": [" : "\n ],\n \"dead\": [";
+  for (std::size_t i = 0; i < tree.dead.size(); ++i) {
+    const SpatialDeadPrefix& d = tree.dead[i];
+    out += (i ? ",\n  " : "\n  ") +
+           nlohmann::ordered_json{{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(d.motzkin)}}.dump();
+  }
+  out += tree.dead.empty() ? "]\n}\n" : "\n ]\n}\n";
+  return out;
 }
 
 }  // namespace contactcert::solvers::spatial
