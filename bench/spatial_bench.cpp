@@ -102,8 +102,8 @@ int main(int argc, char** argv) {
   contactcert::runtime::keep_heap_until_exit();
   contactcert::runtime::use_pooled_gmp_memory();
   benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
+  const bool unknown = benchmark::ReportUnrecognizedArguments(argc, argv);
+  if (!unknown) benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
-  return 0;
+  return unknown ? 1 : 0;
 }

@@ -18,7 +18,9 @@
 //   the feasible ones are the cells of an arrangement of hyperplanes through the origin of R^6 (Balkcom and Trinkle
 //   2002, section 7, for the planar case with s l r n).
 // The tree walks the contacts depth first, as the planar one (solvers/stability/mode_tree.h): a letter that the
-// parent's vdot meets needs no LP, else one strict-feasibility LP decides it, and a dead prefix (with its Motzkin
+// parent's vdot meets needs no LP; a prefix that has every row a known dead prefix's Motzkin certificate weighs (the
+// same functionals at the same contacts, signs permitting) is dead by that certificate moved to its rows, as the
+// planar tree reuses certificates by row kind; else one strict-feasibility LP decides it. A dead prefix (with its
 // certificate) ends its subtree, so the walk visits (2 + 2m) x (feasible prefixes) nodes, never (2 + 2m)^k.
 #pragma once
 
