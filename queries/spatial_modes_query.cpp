@@ -12,8 +12,11 @@ namespace sp = solvers::spatial;
 
 SpatialModesAnswer spatial_modes_answer(const SpatialInput& in, const SpatialModesOptions& options) {
   refuse_float(options.common.arith, "modes are enumerated exactly (use exact or verified)");
-  const sp::SpatialModeOptions tree{scene_arith(options.common.arith), options.max_nodes, options.max_modes,
-                                    options.common.deadline()};
+  sp::SpatialModeOptions tree;
+  tree.arith = scene_arith(options.common.arith);
+  tree.max_nodes = options.max_nodes;
+  tree.max_modes = options.max_modes;
+  tree.deadline = options.common.deadline();
   SpatialModesAnswer a{sp::spatial_modes(sp::spatial_model(in.scene), tree), {}, options.certificate, {}, {}};
   for (const geometry::SpatialContact& c : in.scene.contacts) a.letters.push_back(sp::letters(c.edges.size()));
   if (!options.certificate.empty())

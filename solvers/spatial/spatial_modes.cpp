@@ -169,6 +169,7 @@ class Walker {
         continue;
       }
       if (Vec<Q> y = reuse(); y.size()) {
+        hold(y.size());
         out_.dead.push_back({prefix, std::move(y)});
         prefix.pop_back();
         continue;
@@ -180,6 +181,7 @@ class Walker {
         continue;
       }
       remember(kin.motzkin);
+      hold(kin.motzkin.size());
       out_.dead.push_back({prefix, std::move(kin.motzkin)});
       prefix.pop_back();
     }
@@ -275,6 +277,15 @@ class Walker {
           covered());
   }
 
+  // Counts the entries of a dead prefix's certificate against options.max_held_weights.
+  void hold(Index entries) {
+    held_ += static_cast<long>(entries);
+    if (held_ > options_.max_held_weights)
+      throw exact::BudgetExceeded("spatial modes: the dead prefixes' certificates would hold more than " +
+                                      std::to_string(options_.max_held_weights) + " weights (memory)",
+                                  covered());
+  }
+
   std::string covered() const {
     return std::to_string(out_.nodes - 1) + " prefixes visited, " + std::to_string(out_.modes.size()) +
            " feasible modes found";
@@ -288,6 +299,7 @@ class Walker {
   std::vector<std::vector<std::vector<RowKey>>> keys_;   ///< per contact and letter
   std::vector<std::vector<std::vector<SignRow>>> rows_;  ///< per contact and letter
   std::vector<std::size_t> at_;                          ///< the current prefix's letters as indices
+  long held_ = 0;                                        ///< entries of the dead prefixes' certificates so far
 };
 
 }  // namespace

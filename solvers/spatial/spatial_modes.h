@@ -66,6 +66,10 @@ struct SpatialModeOptions {
   long max_nodes = 1L << 22;   ///< prefixes visited at most; beyond: BudgetExceeded
   long max_modes = 100000;     ///< modes listed at most; beyond: BudgetExceeded
   exact::Deadline deadline{};  ///< tested at every node
+  /// Entries (zeros included: one per row of its prefix) of the dead prefixes' Motzkin vectors held at most, their
+  /// memory (~60 bytes each); beyond: BudgetExceeded. A prefix that takes a known certificate needs no LP, so the list
+  /// can grow fast; a box on a plane with 32 contacts holds ~4 10^7 (2.4 GB).
+  long max_held_weights = 1L << 26;
 };
 
 /// A prefix whose rows have no solution, with the Motzkin certificate of its LP (columns vdot (6, free), then one
