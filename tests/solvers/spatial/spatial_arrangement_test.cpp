@@ -86,11 +86,7 @@ TEST(SpatialArrangement, FormulaOnSmallCases) {
 
 // k = 1 to 6 contacts, 3 seeds each (1 in the ASan + UBSan build): the modes without `s` count F(2k, e(k)), the
 // sector-only ones r(2k, e(k)), and the s/touching patterns all 2^k.
-#ifdef CONTACTCERT_SANITIZED
-constexpr int kSeeds = 1;
-#else
-constexpr int kSeeds = 3;
-#endif
+constexpr int kSeeds = CONTACTCERT_SANITIZED ? 1 : 3;
 TEST(SpatialArrangement, ModesWithoutSeparationAreTheFacesOfTheSlidingArrangement) {
   std::mt19937 rng(3434);
   for (std::size_t k = 1; k <= 6; ++k)
