@@ -26,6 +26,7 @@ struct ModesCliOptions {
   long max_nodes = ModesOptions{}.max_nodes;
   long max_modes = ModesOptions{}.max_modes;
   std::string certificate;
+  std::string svg;  ///< --svg FILE: a spatial scene's picture ("" = none)
 };
 
 void print_modes(const std::string& file, const ModesAnswer& a) {
@@ -72,7 +73,7 @@ int run_spatial_modes_command(const ModesCliOptions& o, const SpatialInput& in) 
   if (o.table2 != "strict")
     throw exact::InputError("command line", "--table2", "a spatial scene's modes read s strictly (a_n > 0)");
   const Limited<SpatialModesAnswer> r =
-      run_spatial_modes(in, {o.common.query(), o.max_nodes, o.max_modes, o.certificate});
+      run_spatial_modes(in, {o.common.query(), o.max_nodes, o.max_modes, o.certificate, o.svg});
   if (!r) return report_limit("modes", r.limit(), o.common.json);
   std::cout << (o.common.json ? to_json(*r).dump() + "\n" : to_text(*r, o.file));
   return 0;
@@ -93,6 +94,8 @@ int run_modes_command(const ModesCliOptions& o) {
     start_watchdog("modes (the default budget of --unions and --table2 printed; --time-limit sets another)",
                    kModesDefaultSeconds);
   SceneOrAssembly input = read_scene_or_assembly(o.file, o.snap);
+  if (!o.svg.empty() && !std::holds_alternative<SpatialInput>(input))
+    throw exact::InputError("command line", "--svg", "modes draws a picture of a spatial scene only");
   if (const auto* assembly = std::get_if<AssemblyInput>(&input)) return run_assembly_modes_command(o, *assembly);
   if (const auto* spatial = std::get_if<SpatialInput>(&input)) return run_spatial_modes_command(o, *spatial);
   const Limited<ModesAnswer> r = run_modes(std::get<SceneInput>(input), options);
@@ -131,6 +134,9 @@ void register_modes(CLI::App& app, Action& action) {
       ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
       ->default_str(std::to_string(o->max_modes));
   sub->add_option("--certificate", o->certificate, "Write the completeness proof for `contactcert check` here");
+  sub->add_option(
+      "--svg", o->svg,
+      "A spatial scene's picture here: isometric view of the box, com, contacts, normals, friction pyramids");
   sub->callback([o, &action] { action = [o] { return run_modes_command(*o); }; });
 }
 

@@ -3,6 +3,7 @@
 #include "exact/input_error.h"
 #include "exact/json_input.h"
 #include "queries/modes_query.h"
+#include "queries/spatial_svg.h"
 
 namespace contactcert::queries {
 namespace {
@@ -11,13 +12,21 @@ namespace sp = solvers::spatial;
 
 SpatialModesAnswer spatial_modes_answer(const SpatialInput& in, const SpatialModesOptions& options) {
   refuse_float(options.common.arith, "modes are enumerated exactly (use exact or verified)");
-  const sp::SpatialModeOptions tree{scene_arith(options.common.arith), options.max_nodes, options.max_modes,
-                                    options.common.deadline()};
-  SpatialModesAnswer a{sp::spatial_modes(sp::spatial_model(in.scene), tree), {}, options.certificate, {}};
+  sp::SpatialModeOptions tree;
+  tree.arith = scene_arith(options.common.arith);
+  tree.max_nodes = options.max_nodes;
+  tree.max_modes = options.max_modes;
+  tree.deadline = options.common.deadline();
+  SpatialModesAnswer a{sp::spatial_modes(sp::spatial_model(in.scene), tree), {}, options.certificate, {}, {}};
   for (const geometry::SpatialContact& c : in.scene.contacts) a.letters.push_back(sp::letters(c.edges.size()));
   if (!options.certificate.empty())
     a.certificate_text = write_modes_certificate(options.certificate, sp::spatial_modes_certificate(in.text, a.tree),
                                                  a.tree.modes.size(), a.tree.dead.size());
+  if (!options.svg.empty()) {
+    write_text_file(options.svg, spatial_svg(in.scene, in.name + ": " + std::to_string(a.tree.modes.size()) +
+                                                           " contact modes from rest"));
+    a.svg = options.svg;
+  }
   return a;
 }
 
@@ -55,6 +64,7 @@ json to_json(const SpatialModesAnswer& a) {
   j["counts"] = {{"modes", a.tree.modes.size()}, {"all_separating", separating}, {"all_touching", touching}};
   j["tree"] = {{"nodes", a.tree.nodes}, {"dead_prefixes", a.tree.dead.size()}, {"lps", a.tree.lps}};
   if (!a.certificate.empty()) j["certificate"] = a.certificate;
+  if (!a.svg.empty()) j["svg"] = a.svg;
   return j;
 }
 
@@ -71,6 +81,7 @@ std::string to_text(const SpatialModesAnswer& a, const std::string& name) {
     s += "    " + a.tree.modes[i] + "  vdot = " + tuple_text(a.tree.accelerations[i]) + " (a of the com, alpha)\n";
   if (a.tree.modes.empty()) s += "  none\n";
   if (!a.certificate.empty()) s += "  certificate written to " + a.certificate + "\n";
+  if (!a.svg.empty()) s += "  picture: " + a.svg + "\n";
   return s;
 }
 

@@ -29,6 +29,7 @@ struct SpatialModesOptions {
   long max_nodes = solvers::spatial::SpatialModeOptions{}.max_nodes;  ///< prefixes visited at most
   long max_modes = solvers::spatial::SpatialModeOptions{}.max_modes;  ///< modes listed at most
   std::string certificate;                                            ///< the certificate's file ("" = none)
+  std::string svg;  ///< the picture's file (queries/spatial_svg.h; "" = none)
 };
 
 struct SpatialModesAnswer {
@@ -36,6 +37,7 @@ struct SpatialModesAnswer {
   std::vector<std::string> letters;  ///< per contact, its alphabet
   std::string certificate;           ///< the file written ("" = none)
   std::string certificate_text;      ///< its text
+  std::string svg;                   ///< the picture written ("" = none)
 };
 
 /// The feasible modes (InputError for --arith float; a Limit past a budget or the time limit, or for a certificate
@@ -43,7 +45,8 @@ struct SpatialModesAnswer {
 Limited<SpatialModesAnswer> run_spatial_modes(const SpatialInput& in, const SpatialModesOptions& options);
 
 /// {"kind": "spatial", "contacts", "letters", "list": "kinematic", "modes": [{"mode", "acceleration"}],
-/// "counts": {"modes", "all_separating", "all_touching"}, "tree": {"nodes", "dead_prefixes", "lps"}, "certificate"}.
+/// "counts": {"modes", "all_separating", "all_touching"}, "tree": {"nodes", "dead_prefixes", "lps"}, "certificate",
+/// "svg"}.
 json to_json(const SpatialModesAnswer& answer);
 /// The text `modes SPATIAL` prints: the counts, the tree's size, every mode with its (a, alpha).
 std::string to_text(const SpatialModesAnswer& answer, const std::string& name);

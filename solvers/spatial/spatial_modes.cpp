@@ -1,5 +1,6 @@
 #include "solvers/spatial/spatial_modes.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "exact/input_error.h"
@@ -36,27 +37,58 @@ SpatialModel spatial_model(const geometry::SpatialScene& scene) {
   return model;
 }
 
-std::vector<SignRow> letter_rows(const SpatialModel::Contact& c, char L) {
-  const std::size_t m = c.d.size();
-  if (L == 's') return {{c.n, true}};
-  if (L == 'f') return {{c.n, false}, {c.t1, false}, {c.t2, false}};
+namespace {
+
+// A row of a letter named by its direction and sign: the direction u is n (a = -1, b = 0), t1 (-1, 1), t2 (-1, 2) or
+// d_a - d_b; the row is w_u . vdot = 0, or > 0 if strict. Two prefixes with one letter each at a contact share the
+// rows of equal directions there, so a Motzkin certificate moves between them row by row (Walker::reuse).
+struct RowKey {
+  int a = -1, b = 0;
+  bool strict = false;
+};
+
+// The keys of letter L with m pyramid edges (the header's table, in its order); empty if L is not a letter.
+std::vector<RowKey> letter_keys(std::size_t m, char L) {
+  const RowKey n{-1, 0, false};
+  if (L == 's') return {{-1, 0, true}};
+  if (L == 'f') return {n, {-1, 1, false}, {-1, 2, false}};
   if (L < 'A' || static_cast<std::size_t>(L - 'A') >= 2 * m) return {};
-  const std::size_t j = static_cast<std::size_t>(L - 'A') / 2;
-  const auto& d = c.d;
-  const std::size_t prev = (j + m - 1) % m, next = (j + 1) % m, after = (j + 2) % m;
-  if ((L - 'A') % 2 == 0) return {{c.n, false}, {d[prev] - d[j], true}, {d[next] - d[j], true}};
-  return {{c.n, false}, {d[next] - d[j], false}, {d[prev] - d[j], true}, {d[after] - d[next], true}};
+  const int M = static_cast<int>(m), j = (L - 'A') / 2;
+  const int prev = (j + M - 1) % M, next = (j + 1) % M, after = (j + 2) % M;
+  if ((L - 'A') % 2 == 0) return {n, {prev, j, true}, {next, j, true}};
+  return {n, {next, j, false}, {prev, j, true}, {after, next, true}};
+}
+
+SignRow key_row(const SpatialModel::Contact& c, const RowKey& key) {
+  if (key.a >= 0) return {c.d[static_cast<std::size_t>(key.a)] - c.d[static_cast<std::size_t>(key.b)], key.strict};
+  return {key.b == 0 ? c.n : key.b == 1 ? c.t1 : c.t2, key.strict};
+}
+
+// Whether vdot meets every row (f . vdot = 0, or > 0 if strict).
+bool meets(const std::vector<SignRow>& rows, const Vec<Q>& vdot) {
+  for (const SignRow& r : rows) {
+    Q dot(0);
+    for (Index c = 0; c < 6; ++c)
+      if (sgn(r.f(c)) != 0) dot += r.f(c) * vdot(c);
+    const int s = sgn(dot);
+    if (r.strict ? s <= 0 : s != 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<SignRow> letter_rows(const SpatialModel::Contact& c, char L) {
+  std::vector<SignRow> rows;
+  for (const RowKey& key : letter_keys(c.d.size(), L)) rows.push_back(key_row(c, key));
+  return rows;
 }
 
 bool realises(const SpatialModel& model, const std::string& prefix, const Vec<Q>& vdot) {
   if (vdot.size() != 6 || prefix.size() > model.contacts.size()) return false;
   for (std::size_t i = 0; i < prefix.size(); ++i) {
     const std::vector<SignRow> rows = letter_rows(model.contacts[i], prefix[i]);
-    if (rows.empty()) return false;
-    for (const SignRow& r : rows) {
-      const int s = sgn(Q(r.f.dot(vdot)));
-      if (r.strict ? s <= 0 : s != 0) return false;
-    }
+    if (rows.empty() || !meets(rows, vdot)) return false;
   }
   return true;
 }
@@ -87,9 +119,22 @@ exact::SparseStrictSystem<Q> prefix_system(const SpatialModel& model, const std:
 class Walker {
  public:
   Walker(const SpatialModel& model, const SpatialModeOptions& options, SpatialModeTree& out)
-      : model_(model), options_(options), out_(out) {}
+      : model_(model), options_(options), out_(out), known_(model.contacts.size()) {
+    for (std::size_t i = 0; i < model.contacts.size(); ++i) {
+      const SpatialModel::Contact& c = model.contacts[i];
+      alphabets_.push_back(letters(c.d.size()));
+      keys_.emplace_back();
+      rows_.emplace_back();
+      for (char L : alphabets_.back()) {
+        keys_[i].push_back(letter_keys(c.d.size(), L));
+        rows_[i].push_back(letter_rows(c, L));
+      }
+    }
+  }
 
-  // Depth first with an explicit stack: per live prefix its realising vdot and the next letter to try below it.
+  // Depth first with an explicit stack: per live prefix its realising vdot and the next letter to try below it. A
+  // child is live without an LP when the parent's vdot meets its letter, dead without one when a known certificate
+  // moves to it (reuse, as the planar tree's certificates reused by row kind); else one LP decides it.
   void walk() {
     struct Frame {
       Vec<Q> vdot;
@@ -108,17 +153,25 @@ class Walker {
         out_.modes.push_back(prefix);
         out_.accelerations.push_back(path.back().vdot);
       }
-      const std::string alphabet = i < k ? letters(model_.contacts[i].d.size()) : std::string();
-      if (i == k || path.back().next == alphabet.size()) {
+      if (i == k || path.back().next == alphabets_[i].size()) {
         path.pop_back();
         if (!prefix.empty()) prefix.pop_back();
         continue;
       }
-      prefix.push_back(alphabet[path.back().next++]);
+      const std::size_t letter = path.back().next++;
+      prefix.push_back(alphabets_[i][letter]);
+      at_.resize(i);
+      at_.push_back(letter);
       count_node();
-      if (realises(model_, prefix, path.back().vdot)) {
+      if (meets(rows_[i][letter], path.back().vdot)) {
         Vec<Q> vdot = path.back().vdot;
         path.push_back({std::move(vdot), 0});
+        continue;
+      }
+      if (Vec<Q> y = reuse(); y.size()) {
+        hold(y.size());
+        out_.dead.push_back({prefix, std::move(y)});
+        prefix.pop_back();
         continue;
       }
       auto kin = exact::strict_feasibility(prefix_system(model_, prefix), options_.arith);
@@ -127,12 +180,93 @@ class Walker {
         path.push_back({Vec<Q>(kin.x.head(6)), 0});
         continue;
       }
+      remember(kin.motzkin);
+      hold(kin.motzkin.size());
       out_.dead.push_back({prefix, std::move(kin.motzkin)});
       prefix.pop_back();
     }
   }
 
  private:
+  // A certificate by the rows it weighs: (contact, key, weight), in contact order.
+  struct KnownProof {
+    struct Weight {
+      std::size_t contact;
+      RowKey key;
+      Q y;
+    };
+    std::vector<Weight> support;
+  };
+
+  // The keys of the current prefix's letter at contact i.
+  const std::vector<RowKey>& keys_at(std::size_t i) const { return keys_[i][at_[i]]; }
+
+  // The first row of each letter of the current prefix in prefix_system's layout, and the row count.
+  std::vector<Index> first_rows(Index& rows) const {
+    std::vector<Index> first;
+    rows = 0;
+    for (std::size_t i = 0; i < at_.size(); ++i) {
+      first.push_back(rows);
+      rows += static_cast<Index>(keys_at(i).size());
+    }
+    return first;
+  }
+
+  // Keeps the rows a new dead prefix's certificate weighs, under the prefix's last contact (every certificate weighs
+  // a row there: else the parent would be dead).
+  void remember(const Vec<Q>& y) {
+    Index rows = 0;
+    const std::vector<Index> first = first_rows(rows);
+    KnownProof known;
+    for (std::size_t i = 0; i < at_.size(); ++i) {
+      const std::vector<RowKey>& keys = keys_at(i);
+      for (std::size_t r = 0; r < keys.size(); ++r)
+        if (const Q& w = y(first[i] + static_cast<Index>(r)); sgn(w) != 0) known.support.push_back({i, keys[r], w});
+    }
+    if (!known.support.empty()) known_[known.support.back().contact].push_back(std::move(known));
+  }
+
+  // A certificate for the current prefix moved from a known one, or empty. Each weighed row moves to the prefix's row
+  // of the same functional at its contact (the same direction, or the reversed d_b - d_a with the weight negated),
+  // so sum y_r f_r = 0 still holds; it is a Motzkin certificate again (checker's motzkin_holds: y_r <= 0 on strict
+  // rows, some strict y_r < 0, any sign on equalities) if every row it lands on as strict weighs <= 0 and one < 0.
+  Vec<Q> reuse() const {
+    std::vector<std::pair<Index, bool>> at;  // per weighed row: its index in the letter's rows, reversed
+    for (const KnownProof& known : known_[at_.size() - 1]) {
+      at.clear();
+      bool strict_negative = false;
+      for (const auto& w : known.support) {
+        const std::vector<RowKey>& ks = keys_at(w.contact);
+        std::size_t r = 0;
+        bool reversed = false;
+        for (; r < ks.size(); ++r) {
+          if (ks[r].a == w.key.a && ks[r].b == w.key.b) break;
+          if (w.key.a >= 0 && ks[r].a == w.key.b && ks[r].b == w.key.a) {
+            reversed = true;
+            break;
+          }
+        }
+        if (r == ks.size()) break;
+        if (ks[r].strict) {
+          const int s = reversed ? -sgn(w.y) : sgn(w.y);
+          if (s > 0) break;
+          strict_negative = true;
+        }
+        at.push_back({static_cast<Index>(r), reversed});
+      }
+      if (at.size() != known.support.size() || !strict_negative) continue;
+      Index rows = 0;
+      const std::vector<Index> first = first_rows(rows);
+      Vec<Q> y = Vec<Q>::Zero(rows);
+      for (std::size_t r = 0; r < at.size(); ++r) {
+        const auto& w = known.support[r];
+        y(first[w.contact] + at[r].first) = at[r].second ? Q(-w.y) : w.y;
+      }
+      return y;
+    }
+    return Vec<Q>();
+  }
+
   void count_node() {
     ++out_.nodes;
     if (out_.nodes > options_.max_nodes || options_.deadline.expired())
@@ -143,6 +277,15 @@ class Walker {
           covered());
   }
 
+  // Counts the entries of a dead prefix's certificate against options.max_held_weights.
+  void hold(Index entries) {
+    held_ += static_cast<long>(entries);
+    if (held_ > options_.max_held_weights)
+      throw exact::BudgetExceeded("spatial modes: the dead prefixes' certificates would hold more than " +
+                                      std::to_string(options_.max_held_weights) + " weights (memory)",
+                                  covered());
+  }
+
   std::string covered() const {
     return std::to_string(out_.nodes - 1) + " prefixes visited, " + std::to_string(out_.modes.size()) +
            " feasible modes found";
@@ -151,6 +294,12 @@ class Walker {
   const SpatialModel& model_;
   const SpatialModeOptions& options_;
   SpatialModeTree& out_;
+  std::vector<std::string> alphabets_;                   ///< per contact
+  std::vector<std::vector<KnownProof>> known_;           ///< by the last contact of their support
+  std::vector<std::vector<std::vector<RowKey>>> keys_;   ///< per contact and letter
+  std::vector<std::vector<std::vector<SignRow>>> rows_;  ///< per contact and letter
+  std::vector<std::size_t> at_;                          ///< the current prefix's letters as indices
+  long held_ = 0;                                        ///< entries of the dead prefixes' certificates so far
 };
 
 }  // namespace
@@ -162,22 +311,24 @@ SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOption
 }
 
 std::string spatial_modes_certificate(const std::string& scene_text, const SpatialModeTree& tree) {
-  nlohmann::ordered_json j;
-  j["kind"] = "spatial_modes";
-  j["scene"] = scene_text;
-  j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
-  nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+  // One line per mode and per dead prefix, each a compact JSON object (a box on a plane with 16 contacts lists
+  // ~110 000 dead prefixes: one indented line per number would be 17 MB and a tree of JSON values 300 MB).
+  std::string out = "{\n \"kind\": \"spatial_modes\",\n \"scene\": " + nlohmann::json(scene_text).dump() +
+                    ",\n \"problem_sha256\": \"" + exact::JsonInput::parse(scene_text, "scene").canonical_sha256() +
+                    "\",\n \"modes\": [";
   for (std::size_t i = 0; i < tree.modes.size(); ++i) {
     nlohmann::ordered_json a = nlohmann::ordered_json::array();
     for (Index d = 0; d < 6; ++d) a.push_back(exact::to_string(tree.accelerations[i](d)));
-    modes.push_back({{"mode", tree.modes[i]}, {"acceleration", a}});
+    out += (i ? ",\n  " : "\n  ") + nlohmann::ordered_json{{"mode", tree.modes[i]}, {"acceleration", a}}.dump();
   }
-  j["modes"] = modes;
-  nlohmann::ordered_json dead = nlohmann::ordered_json::array();
-  for (const SpatialDeadPrefix& d : tree.dead)
-    dead.push_back({{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(d.motzkin)}});
-  j["dead"] = dead;
-  return j.dump(1) + "\n";
+  out += tree.modes.empty() ? "],\n \"dead\": [" : "\n ],\n \"dead\": [";
+  for (std::size_t i = 0; i < tree.dead.size(); ++i) {
+    const SpatialDeadPrefix& d = tree.dead[i];
+    out += (i ? ",\n  " : "\n  ") +
+           nlohmann::ordered_json{{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(d.motzkin)}}.dump();
+  }
+  out += tree.dead.empty() ? "]\n}\n" : "\n ]\n}\n";
+  return out;
 }
 
 }  // namespace contactcert::solvers::spatial

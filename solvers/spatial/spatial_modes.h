@@ -18,7 +18,9 @@
 //   the feasible ones are the cells of an arrangement of hyperplanes through the origin of R^6 (Balkcom and Trinkle
 //   2002, section 7, for the planar case with s l r n).
 // The tree walks the contacts depth first, as the planar one (solvers/stability/mode_tree.h): a letter that the
-// parent's vdot meets needs no LP, else one strict-feasibility LP decides it, and a dead prefix (with its Motzkin
+// parent's vdot meets needs no LP; a prefix that has every row a known dead prefix's Motzkin certificate weighs (the
+// same functionals at the same contacts, signs permitting) is dead by that certificate moved to its rows, as the
+// planar tree reuses certificates by row kind; else one strict-feasibility LP decides it. A dead prefix (with its
 // certificate) ends its subtree, so the walk visits (2 + 2m) x (feasible prefixes) nodes, never (2 + 2m)^k.
 #pragma once
 
@@ -64,6 +66,10 @@ struct SpatialModeOptions {
   long max_nodes = 1L << 22;   ///< prefixes visited at most; beyond: BudgetExceeded
   long max_modes = 100000;     ///< modes listed at most; beyond: BudgetExceeded
   exact::Deadline deadline{};  ///< tested at every node
+  /// Entries (zeros included: one per row of its prefix) of the dead prefixes' Motzkin vectors held at most, their
+  /// memory (~60 bytes each); beyond: BudgetExceeded. A prefix that takes a known certificate needs no LP, so the list
+  /// can grow fast; a box on a plane with 32 contacts holds ~4 10^7 (2.4 GB).
+  long max_held_weights = 1L << 26;
 };
 
 /// A prefix whose rows have no solution, with the Motzkin certificate of its LP (columns vdot (6, free), then one

@@ -4,7 +4,7 @@
 # plot). The page holding them has no XML error (Chromium shows a parse error as a <parsererror> element in the
 # DOM) and no picture's screenshot is blank (more than 40 distinct pixel rows; a blank one has 2). One Chromium
 # run for all (each run costs ~2.5 s of CPU). Also the pictures of `assembly --svg` (issue 31) and of `simulate`
-# with four bodies (issue 32).
+# with four bodies (issue 32), and of `modes --svg` on a spatial scene (issue 34).
 # Usage: svg_render.sh CONTACTCERT REPO_DIR WORK_DIR. Exit 77 (skipped) without chromium or python3.
 set -u
 cc=$1 repo=$2 work=$3
@@ -42,6 +42,8 @@ run simulate "$s/motion_pushed_row.json" --compare --uniqueness off --svg "$work
 add "$work/simulate_row.svg"
 run assembly "$s/assembly_corbel_arch.json" --svg "$work/assembly.svg"
 add "$work/assembly.svg"
+run modes "$s/spatial_box_in_corner.json" --svg "$work/spatial.svg"
+add "$work/spatial.svg"
 run demo --out "$work/demo"
 add "$work/demo/index.html"
 page=$work/pictures.xhtml

@@ -58,6 +58,10 @@ for spec in section4_disk fig4c_peg_lra fig4d_peg_nn; do
 done
 run insert "$s/bt2002_fig10_pentagon_insert.json" --svg "$work/insert.svg"
 lint "$work/insert.svg"
+for spatial in box_on_plane box_in_corner peg_in_hole; do
+  run modes "$s/spatial_$spatial.json" --svg "$work/spatial_$spatial.svg"
+  lint "$work/spatial_$spatial.svg"
+done
 run assembly "$s/assembly_pushed_box_weak.json" --svg "$work/assembly.svg"
 lint "$work/assembly.svg"
 run assembly --ucp "$s/assembly_pushed_boxes.json" --svg "$work/assembly_ucp.svg"

@@ -75,6 +75,19 @@ TEST(SpatialModes, BoxOnPlaneHasTheHandCountedModes) {
 // a_z = alpha = 0 and a_x = 0: the box slides along the wall's y axis or sticks, 3 modes. Sliding along +y puts the
 // friction on the edge along -y: the floor's edge 3 (G), the octagon's edge 4 stated in the frame (y, z) (I), the
 // default square's edge 2 in the frame (y, z) of the normal x (E); along -y the edges along +y (C, A, A).
+// The budgets: the dead prefixes' certificates held (the box on a plane holds 2442 vectors of 1 to 12 entries) and
+// the nodes stop the walk with what it covered.
+TEST(SpatialModes, BudgetsStopTheWalk) {
+  const SpatialModel model = spatial_model(parse(read("spatial_box_on_plane")));
+  SpatialModeOptions held;
+  held.max_held_weights = 100;
+  EXPECT_THROW(spatial_modes(model, held), exact::BudgetExceeded);
+  SpatialModeOptions nodes;
+  nodes.max_nodes = 50;
+  EXPECT_THROW(spatial_modes(model, nodes), exact::BudgetExceeded);
+  EXPECT_EQ(spatial_modes(model).modes.size(), 340u);  // the default budgets hold it
+}
+
 TEST(SpatialModes, BoxInCornerSlidesAlongTheWallOnly) {
   const std::string text = read("spatial_box_in_corner");
   const SpatialModeTree t = spatial_modes(spatial_model(parse(text)));

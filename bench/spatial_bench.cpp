@@ -1,0 +1,109 @@
+// Contact modes of a body in space from rest (issue 34; solvers/spatial/spatial_modes.h) on k = 4, 8, 16, 32
+// contacts: a 2 x 2 x 1 box on a plane touching it at k points around its bottom face's rim (k / 4 per side from
+// each corner: k = 4 is scenes/spatial_box_on_plane.json), and a 2 x 2 x 4 peg in a square hole it fits exactly,
+// touching the four walls on their middle lines at k / 4 heights from z = 1/2 to 7/2 (k = 8 is
+// scenes/spatial_peg_in_hole.json up to the contacts' order); square pyramids, mu = 1/2. Per case: the walk with
+// its certificate text (what `modes SCENE --certificate F` computes), CPU time, and the counters modes, nodes
+// (prefixes visited), LPs and the certificate's bytes. bench/spatial_growth.py fits the growth in k and times the
+// command line end to end; `spatial_bench --scenes DIR` writes the scenes it uses as DIR/{box,peg}_K.json.
+//   build-bench/bench/spatial_bench --benchmark_filter=BM_SpatialModes
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "exact/json_input.h"
+#include "exact/rational_text.h"
+#include "geometry/spatial_scene.h"
+#include "runtime/memory.h"
+#include "solvers/spatial/spatial_modes.h"
+
+namespace {
+
+using namespace contactcert;
+using exact::Q;
+
+// Box on a plane: the corners (1, 1), (1, -1), (-1, -1), (-1, 1) of the bottom face z = 0, and k / 4 points per side
+// from each corner towards the next, normal +z; the com at the centre (0, 0, 1/2).
+std::string box_text(int k) {
+  const int corner[5][2] = {{1, 1}, {1, -1}, {-1, -1}, {-1, 1}, {1, 1}};
+  std::ostringstream s;
+  s << R"({"kind":"spatial","name":"box on a plane, )" << k << R"( contacts","body":{"mass":1,)"
+    << R"("inertia":[["5/12",0,0],[0,"5/12",0],[0,0,"2/3"]],"com":[0,0,"1/2"],)"
+    << R"("box":{"center":[0,0,"1/2"],"half":[1,1,"1/2"]}},"mu":"1/2","contacts":[)";
+  for (int side = 0, i = 0; side < 4; ++side)
+    for (int j = 0; j < k / 4; ++j, ++i) {
+      const Q t(j, k / 4);
+      const Q x = corner[side][0] + (corner[side + 1][0] - corner[side][0]) * t;
+      const Q y = corner[side][1] + (corner[side + 1][1] - corner[side][1]) * t;
+      s << (i ? "," : "") << R"({"point":[")" << x << R"(",")" << y << R"(",0],"normal":[0,0,1]})";
+    }
+  s << "]}";
+  return s.str();
+}
+
+// Peg in a square hole: per height z (k / 4 of them, evenly from 1/2 to 7/2; 2 for k = 4) the walls x+, x-, y+, y-
+// at the middle of the peg's faces, normals into the peg.
+std::string peg_text(int k) {
+  const int wall[4][4] = {{1, 0, -1, 0}, {-1, 0, 1, 0}, {0, 1, 0, -1}, {0, -1, 0, 1}};
+  std::ostringstream s;
+  s << R"({"kind":"spatial","name":"peg in a square hole, )" << k << R"( contacts","body":{"mass":1,)"
+    << R"("inertia":[["5/3",0,0],[0,"5/3",0],[0,0,"2/3"]],"com":[0,0,2],)"
+    << R"("box":{"center":[0,0,2],"half":[1,1,2]}},"mu":"1/2","contacts":[)";
+  const int heights = k / 4;
+  for (int h = 0, i = 0; h < heights; ++h) {
+    const Q z = heights == 1 ? Q(2) : Q(1, 2) + Q(3 * h, heights - 1);
+    for (const auto& w : wall)
+      s << (i++ ? "," : "") << R"({"point":[)" << w[0] << "," << w[1] << R"(,")" << z << R"("],"normal":[)" << w[2]
+        << "," << w[3] << ",0]}";
+  }
+  s << "]}";
+  return s.str();
+}
+
+std::string scene_text(int shape, int k) { return shape == 0 ? box_text(k) : peg_text(k); }
+
+// range(0): 0 box on a plane, 1 peg in a hole; range(1): k.
+void BM_SpatialModes(benchmark::State& state) {
+  const int shape = static_cast<int>(state.range(0)), k = static_cast<int>(state.range(1));
+  const std::string text = scene_text(shape, k);
+  const solvers::spatial::SpatialModel model =
+      solvers::spatial::spatial_model(geometry::read_spatial_scene(exact::JsonInput::parse(text, "bench")));
+  solvers::spatial::SpatialModeTree tree;
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    tree = solvers::spatial::spatial_modes(model);
+    bytes = solvers::spatial::spatial_modes_certificate(text, tree).size();
+    benchmark::DoNotOptimize(bytes);
+  }
+  state.counters["modes"] = static_cast<double>(tree.modes.size());
+  state.counters["nodes"] = static_cast<double>(tree.nodes);
+  state.counters["lps"] = static_cast<double>(tree.lps);
+  state.counters["cert_bytes"] = static_cast<double>(bytes);
+  state.SetLabel(std::string(shape == 0 ? "box" : "peg") + " k=" + std::to_string(k));
+}
+BENCHMARK(BM_SpatialModes)
+    ->ArgsProduct({{0, 1}, {4, 8, 16, 32}})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->Iterations(1);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "--scenes") {
+    for (int shape = 0; shape < 2; ++shape)
+      for (int k : {4, 8, 16, 32})
+        std::ofstream(std::string(argv[2]) + (shape == 0 ? "/box_" : "/peg_") + std::to_string(k) + ".json")
+            << scene_text(shape, k) << "\n";
+    return 0;
+  }
+  contactcert::runtime::keep_heap_until_exit();
+  contactcert::runtime::use_pooled_gmp_memory();
+  benchmark::Initialize(&argc, argv);
+  const bool unknown = benchmark::ReportUnrecognizedArguments(argc, argv);
+  if (!unknown) benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return unknown ? 1 : 0;
+}
