@@ -201,7 +201,7 @@ std::optional<Vec<Q>> basis_farkas_certificate(const LpProblem<Q>& problem, cons
 std::optional<Vec<Q>> basis_farkas_certificate(const IntegerLp& ilp, const std::vector<bool>& is_free,
                                                const std::vector<Index>& basis, const Vec<double>& y_approx) {
   const Index m = ilp.rows(), n = ilp.cols();
-  const auto free = [&is_free](Index j) { return !is_free.empty() && is_free[static_cast<std::size_t>(j)]; };
+  const auto free_column = [&is_free](Index j) { return !is_free.empty() && is_free[static_cast<std::size_t>(j)]; };
   for (Index v : basis)
     if (v < 0 || v >= n + m) return std::nullopt;
   return with_exact_ring<Q, Int128>([&]<class R>() -> std::optional<Vec<Q>> {
@@ -221,7 +221,7 @@ std::optional<Vec<Q>> basis_farkas_certificate(const IntegerLp& ilp, const std::
     const std::vector<R> t = left_product(ilp, u->X);
     for (Index j = 0; j < n; ++j) {
       const int s = -ring::sign(t[static_cast<std::size_t>(j)]);
-      if (free(j) ? s != 0 : s < 0) return std::nullopt;
+      if (free_column(j) ? s != 0 : s < 0) return std::nullopt;
     }
     R ub(0);
     for (Index i = 0; i < m; ++i)
