@@ -1,5 +1,7 @@
 #include "exact/rounded_check.h"
 
+#include <cmath>
+#include <tuple>
 #include <type_traits>
 
 namespace contactcert::exact {
@@ -131,24 +133,95 @@ std::optional<RoundedVector<R>> basis_dual_solve(const IntegerLp& ilp, const std
   return u;
 }
 
+/// basis_dual_solve on the rows `support` alone (u_i = 0 elsewhere): its |support| basis equations chosen by Gaussian
+/// elimination in doubles (the largest pivot per unknown), solved exactly, and the solution kept only if it meets
+/// every basis equation, so that it is the solution of basis_dual_solve (u = B^-T rhs is unique). nullopt if no
+/// square choice is regular in doubles or the solution is not B^-T rhs (its support is larger).
+template <class R>
+std::optional<RoundedVector<R>> support_dual_solve(const IntegerLp& ilp, const std::vector<Index>& basis,
+                                                   const std::vector<R>& rhs, const std::vector<Index>& support) {
+  const Index m = ilp.rows(), s = static_cast<Index>(support.size());
+  std::vector<Index> unknown(static_cast<std::size_t>(m), -1);
+  for (Index t = 0; t < s; ++t) unknown[static_cast<std::size_t>(support[static_cast<std::size_t>(t)])] = t;
+  // Every basis equation on the support; one with no term there must have a zero right-hand side.
+  std::vector<SparseEquation<R>> eqs;
+  std::vector<std::tuple<Index, Index, double>> entries;  // (equation, unknown, coefficient) in doubles
+  for (std::size_t k = 0; k < basis.size(); ++k) {
+    SparseEquation<R> eq;
+    for (const auto& [i, a] : basis_column<std::int64_t>(ilp, basis[k]).terms) {
+      const Index t = unknown[static_cast<std::size_t>(i)];
+      if (t < 0) continue;
+      eq.terms.emplace_back(t, R(a));
+      entries.emplace_back(static_cast<Index>(eqs.size()), t, static_cast<double>(a));
+    }
+    eq.rhs = rhs[k];
+    if (!eq.terms.empty()) {
+      eqs.push_back(std::move(eq));
+    } else if (ring::sign(rhs[k]) != 0) {
+      return std::nullopt;
+    }
+  }
+  const Index ne = static_cast<Index>(eqs.size());
+  if (ne < s) return std::nullopt;
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(ne, s);
+  for (const auto& [e, t, a] : entries) E(e, t) = a;
+  std::vector<bool> chosen(static_cast<std::size_t>(ne), false);
+  std::vector<SparseEquation<R>> square;
+  for (Index c = 0; c < s; ++c) {
+    Index p = -1;
+    for (Index e = 0; e < ne; ++e)
+      if (!chosen[static_cast<std::size_t>(e)] && (p < 0 || std::abs(E(e, c)) > std::abs(E(p, c)))) p = e;
+    if (p < 0 || std::abs(E(p, c)) < 1e-9 * (1 + E.row(p).cwiseAbs().maxCoeff())) return std::nullopt;
+    chosen[static_cast<std::size_t>(p)] = true;
+    square.push_back(eqs[static_cast<std::size_t>(p)]);
+    for (Index e = 0; e < ne; ++e)
+      if (!chosen[static_cast<std::size_t>(e)] && E(e, c) != 0) E.row(e) -= (E(e, c) / E(p, c)) * E.row(p);
+  }
+  RoundedVector<R> v;
+  if (solve_sparse_square(square, s, v.X, v.D) != SolutionKind::kUnique) return std::nullopt;
+  RoundedVector<R> u{std::vector<R>(static_cast<std::size_t>(m), R(0)), v.D};
+  for (Index t = 0; t < s; ++t)
+    u.X[static_cast<std::size_t>(support[static_cast<std::size_t>(t)])] = v.X[static_cast<std::size_t>(t)];
+  for (std::size_t e = 0; e < eqs.size(); ++e) {  // the equations not chosen hold too: u is B^-T rhs
+    R sum(0);
+    for (const auto& [t, a] : eqs[e].terms) sum = ring::add(sum, ring::mul(a, v.X[static_cast<std::size_t>(t)]));
+    if (!(sum == ring::mul(eqs[e].rhs, v.D))) return std::nullopt;
+  }
+  return u;
+}
+
 }  // namespace
 
 std::optional<Vec<Q>> basis_farkas_certificate(const LpProblem<Q>& problem, const IntegerLp& ilp,
                                                const std::vector<Index>& basis) {
-  const Index m = problem.rows(), n = problem.cols();
-  if (ilp.rows() != m || ilp.cols() != n) return std::nullopt;
+  if (ilp.rows() != problem.rows() || ilp.cols() != problem.cols()) return std::nullopt;
+  return basis_farkas_certificate(ilp, problem.is_free, basis, {});
+}
+
+std::optional<Vec<Q>> basis_farkas_certificate(const IntegerLp& ilp, const std::vector<bool>& is_free,
+                                               const std::vector<Index>& basis, const Vec<double>& y_approx) {
+  const Index m = ilp.rows(), n = ilp.cols();
+  const auto free_column = [&is_free](Index j) { return !is_free.empty() && is_free[static_cast<std::size_t>(j)]; };
   for (Index v : basis)
     if (v < 0 || v >= n + m) return std::nullopt;
   return with_exact_ring<Q, Int128>([&]<class R>() -> std::optional<Vec<Q>> {
     std::vector<R> cB;
     for (Index v : basis) cB.push_back(R(v >= n ? 1 : 0));
-    const std::optional<RoundedVector<R>> u = basis_dual_solve<R>(ilp, basis, cB);
+    std::optional<RoundedVector<R>> u;
+    if (y_approx.size() == m) {  // first on the rows where the float Farkas vector is not zero
+      const double tol = 1e-9 * y_approx.cwiseAbs().maxCoeff();
+      std::vector<Index> support;
+      for (Index i = 0; i < m; ++i)
+        if (std::abs(y_approx(i)) > tol) support.push_back(i);
+      if (static_cast<Index>(support.size()) < m) u = support_dual_solve<R>(ilp, basis, cB, support);
+    }
+    if (!u) u = basis_dual_solve<R>(ilp, basis, cB);
     if (!u) return std::nullopt;
     // farkas = -(row_scale o U) / D: farkas^T A = -U^T A_int / D >= 0 (== 0 on free columns), farkas^T b < 0.
     const std::vector<R> t = left_product(ilp, u->X);
     for (Index j = 0; j < n; ++j) {
       const int s = -ring::sign(t[static_cast<std::size_t>(j)]);
-      if (problem.free(j) ? s != 0 : s < 0) return std::nullopt;
+      if (free_column(j) ? s != 0 : s < 0) return std::nullopt;
     }
     R ub(0);
     for (Index i = 0; i < m; ++i)

@@ -63,6 +63,12 @@ std::optional<OptimalCertificate> round_and_check_optimal(const LpProblem<Q>& pr
 /// no proof.
 std::optional<Vec<Q>> basis_farkas_certificate(const LpProblem<Q>& problem, const IntegerLp& ilp,
                                                const std::vector<Eigen::Index>& basis);
+/// The same for the LP of `ilp` itself (is_free: its free columns, empty = none). y_approx (empty or one entry per
+/// row): the float LP's Farkas vector; y is then first solved on the rows where y_approx is not zero (the basis
+/// equations there, chosen in doubles and solved exactly), far smaller than B when the contradiction is local, and
+/// kept only if it meets every basis equation (then it is B^-T c_B: the same y).
+std::optional<Vec<Q>> basis_farkas_certificate(const IntegerLp& ilp, const std::vector<bool>& is_free,
+                                               const std::vector<Eigen::Index>& basis, const Vec<double>& y_approx);
 
 /// A point of the face {x >= 0 : A x = b, x_j = 0 where zero[j]} near x_approx: the entries off `zero`
 /// reconstructed over their common denominator D, then A X = D b and X >= 0 checked in R. nullopt if a

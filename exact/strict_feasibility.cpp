@@ -1,5 +1,7 @@
 #include "exact/strict_feasibility.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <numeric>
 #include <type_traits>
 
@@ -147,13 +149,50 @@ std::optional<StrictFeasibility<Q>> check_rounded(const IntegerLp& ilp, const St
   return out;
 }
 
+// The Motzkin certificate of A x = b from the final basis of the float LP that found it infeasible (phase 1 of
+// strict_lp on the integer rows A_int, right-hand side B = d (L o b)): the Farkas vector of that basis computed exactly
+// (basis_farkas_certificate on strict_lp in 64-bit integers), its first m entries y' (the t and u columns only add
+// non-negative terms, as in read_strict), then y = L o y' as in check_rounded. nullopt if the t column's sums
+// overflow 64 bits or the basis proves nothing.
+std::optional<StrictFeasibility<Q>> basis_certificate(const IntegerLp& ilp, const std::vector<bool>& is_free,
+                                                      const std::vector<Index>& S, const std::vector<i64>& B,
+                                                      const std::vector<Index>& basis, const Vec<double>& y_approx) {
+  const Index m = ilp.rows(), n = ilp.cols();
+  for (Index i = 0; i < m; ++i) {  // strict_lp<i64> sums the strict columns: they must fit
+    Int128 sum = 0;
+    for (Index j : S) sum += ilp.A(i, j);
+    if (sum > Int128(INT64_MAX) || sum < Int128(INT64_MIN)) return std::nullopt;
+  }
+  Mat<i64> A(m, n);
+  for (Index i = 0; i < m; ++i)
+    for (Index j = 0; j < n; ++j) A(i, j) = ilp.A(i, j);
+  const LpProblem<i64> lp = strict_lp<i64>(A, is_free, S);
+  IntegerLp strict;
+  strict.A = IntMatrix<i64>(lp.A.rows(), lp.A.cols());
+  for (Index i = 0; i < lp.A.rows(); ++i)
+    for (Index j = 0; j < lp.A.cols(); ++j) strict.A(i, j) = lp.A(i, j);
+  strict.b.assign(static_cast<size_t>(lp.A.rows()), S.empty() ? 0 : 1);  // row m: t + u = 1
+  std::copy(B.begin(), B.end(), strict.b.begin());
+  strict.row_scale.assign(strict.b.size(), 1);
+  strict.c.assign(static_cast<size_t>(lp.A.cols()), 0);
+  const std::optional<Vec<Q>> y = basis_farkas_certificate(strict, lp.is_free, basis, y_approx);
+  if (!y) return std::nullopt;
+  StrictFeasibility<Q> out;
+  out.lps = 1;
+  out.decided_by = DecidedBy::kFloatBasisCheckedExactly;
+  out.motzkin = y->head(m);
+  for (Index i = 0; i < m; ++i) out.motzkin(i) *= Q(static_cast<long>(ilp.row_scale[static_cast<size_t>(i)]));
+  return out;
+}
+
 // The float LP on the integer rows, its point or certificate rounded to fractions and checked exactly;
-// nullopt if the check fails, a number outgrows 128 bits or the float LP runs out of pivots.
-// *float_feasible: whether the float LP found the system feasible.
+// nullopt if the check fails, a number outgrows 128 bits or the float LP runs out of pivots. With
+// `from_basis`, an infeasible float LP whose rounded certificate fails gets the exact one of its basis
+// (basis_certificate). *float_feasible: whether the float LP found the system feasible.
 std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const LpProblem<double>& hint,
                                                   const std::vector<bool>& is_free, const std::vector<bool>& strict,
                                                   const std::vector<Index>& S, const Vec<Q>& b, bool* float_feasible,
-                                                  Vec<double>* float_point) {
+                                                  Vec<double>* float_point, bool from_basis) {
   const Index m = ilp.rows(), n = ilp.cols();
   Z d;
   const std::optional<std::vector<i64>> B = integer_rhs(ilp, b, d);
@@ -161,12 +200,17 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
   LpProblem<double> lp = hint;
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
   try {
-    const StrictFeasibility<double> f = read_strict(solve_lp<double>(lp, with_duals()), m, n, S);
+    const LpResult<double> r = solve_lp<double>(lp, with_duals());
+    const StrictFeasibility<double> f = read_strict(r, m, n, S);
     *float_feasible = f.status == StrictStatus::kFeasible;
     if (float_point && *float_feasible) *float_point = f.x / d.get_d();  // A_int x = d (L o b): x / d solves A x = b
-    return check_rounded(ilp, f, is_free, strict, *B, d);
-  } catch (const RingOverflow&) {
-    return std::nullopt;
+    std::optional<StrictFeasibility<Q>> out;
+    try {
+      out = check_rounded(ilp, f, is_free, strict, *B, d);
+    } catch (const RingOverflow&) {
+    }
+    if (out || !from_basis || r.status != LpStatus::kInfeasible) return out;
+    return basis_certificate(ilp, is_free, S, *B, r.basis, r.farkas);
   } catch (const BudgetExceeded&) {  // the float simplex cycled on a degenerate LP: the verified LP decides
     return std::nullopt;
   }
@@ -284,12 +328,14 @@ StrictFeasibility<T> StrictSolver<T>::solve_unrounded(const Vec<T>& b) const {
 
 template <class T>
 std::optional<StrictFeasibility<T>> StrictSolver<T>::solve_rounded(const Vec<T>& b, bool* float_feasible,
-                                                                   Vec<double>* float_point) const {
+                                                                   Vec<double>* float_point,
+                                                                   FloatInfeasible infeasible) const {
   *float_feasible = false;
   if (float_point) *float_point = Vec<double>();
   if constexpr (std::is_same_v<T, Q>) {
     if (!integer_) return std::nullopt;
-    return rounded_solve(*integer_, hint_, is_free_, strict_, strict_columns_, b, float_feasible, float_point);
+    return rounded_solve(*integer_, hint_, is_free_, strict_, strict_columns_, b, float_feasible, float_point,
+                         infeasible == FloatInfeasible::kBasisCertificate);
   } else {
     return solve(b);
   }

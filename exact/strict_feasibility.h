@@ -47,6 +47,10 @@ struct SparseStrictSystem {
 
 enum class StrictStatus { kFeasible, kInfeasible };
 
+/// What StrictSolver::solve_rounded does with a float LP that finds the system infeasible while its rounded
+/// certificate fails the exact check.
+enum class FloatInfeasible { kVerifiedLp, kBasisCertificate };
+
 template <class T>
 struct StrictFeasibility {
   StrictStatus status = StrictStatus::kInfeasible;
@@ -79,8 +83,13 @@ class StrictSolver {
   /// float LP found the system feasible (false if it ran out of pivots, or with no float step: kExact, or rows not
   /// in 64 bits). For a caller that needs an exact answer only when it is "infeasible". Other T: solve(b).
   /// *float_point, if given: the float LP's point of A x = b when it found one (else empty), a hint only.
+  /// `infeasible`: where the float LP finds the system infeasible but its rounded certificate fails the check,
+  /// kVerifiedLp gives nullopt (solve(b) solves the LP again in the verified LP), kBasisCertificate computes the
+  /// certificate of the float LP's final basis exactly (Farkas, B^T y = 1 on the artificials, checked in integers)
+  /// without a second LP: a valid certificate, not necessarily the one solve(b) gives (the assembly tree's choice).
   std::optional<StrictFeasibility<T>> solve_rounded(const Vec<T>& b, bool* float_feasible,
-                                                    Vec<double>* float_point = nullptr) const;
+                                                    Vec<double>* float_point = nullptr,
+                                                    FloatInfeasible infeasible = FloatInfeasible::kVerifiedLp) const;
   /// The rest of solve(b), for a caller whose solve_rounded(b) gave nullopt: the verified LP (for kExact or rows
   /// not in 64 bits, the exact or verified LP on the rows as given). Other T: solve(b).
   StrictFeasibility<T> solve_unrounded(const Vec<T>& b) const;

@@ -20,7 +20,8 @@ exact::StrictFeasibility<Q> solve(const AssemblySystem& s, exact::Arith arith, b
   try {
     const exact::StrictSolver<Q> solver(s.system, arith);
     bool float_feasible = false;
-    if (std::optional<exact::StrictFeasibility<Q>> f = solver.solve_rounded(s.b, &float_feasible, float_point))
+    if (std::optional<exact::StrictFeasibility<Q>> f =
+            solver.solve_rounded(s.b, &float_feasible, float_point, exact::FloatInfeasible::kBasisCertificate))
       return std::move(*f);
     if (float_feasible && !need_point) {
       exact::StrictFeasibility<Q> f;

@@ -13,7 +13,9 @@
 // against its friction) recurs under every choice of the earlier letters, and its certificate with it. Exact answers
 // are needed only for a dead prefix (its certificate) and a whole mode (the moving witness): an interior prefix the
 // float LP finds feasible is extended even if its point does not round to an exact one, and so is a child whose
-// letter that float point meets within a tolerance, without an LP (docs/bench.md section 8).
+// letter that float point meets within a tolerance, without an LP. A dead prefix whose float certificate does not
+// round gets the exact Farkas vector of the float LP's own basis, not a second LP (exact::FloatInfeasible;
+// docs/bench.md section 8).
 #pragma once
 
 #include <string>

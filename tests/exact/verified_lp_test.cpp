@@ -192,5 +192,36 @@ TEST(VerifiedLp, BasisFarkasCertificateIsTheBasisOwnVector) {
   EXPECT_FALSE(basis_farkas_certificate(p, *ilp, {0}));
 }
 
+// The Farkas vector solved on the float vector's support alone (basis_farkas_certificate with y_approx) is the
+// basis's own, the same as the full solve: here rows 0-1 contradict each other (x_0 + x_1 = 1, 2 x_0 + 2 x_1 = 3:
+// y = (2, -1) up to scale) and rows 2-3 have a point, so y is zero there. A y_approx whose support misses a row
+// of y (the solve on it meets no basis equation there) or has the wrong size falls back to the full solve: the same
+// vector again.
+TEST(VerifiedLp, BasisFarkasOnTheFloatSupportIsTheSameVector) {
+  LpProblem<Q> p;
+  p.A = Mat<Q>::Zero(4, 5);
+  p.A.row(0) << 1, 1, 0, 0, 0;
+  p.A.row(1) << 2, 2, 0, 0, 0;
+  p.A.row(2) << 0, Q(1, 3), 1, 0, Q(1, 2);
+  p.A.row(3) << 0, 0, 1, Q(2, 7), 1;
+  p.b = Vec<Q>(4);
+  p.b << 1, 3, 2, Q(5, 3);
+  const std::optional<IntegerLp> ilp = integer_lp(p);
+  ASSERT_TRUE(ilp);
+  const LpResult<double> f = solve_lp<double>(ilp->to_double(p.is_free));
+  ASSERT_EQ(f.status, LpStatus::kInfeasible);
+  ASSERT_EQ(f.farkas.size(), 4);
+  ASSERT_EQ(f.farkas(2), 0);
+  ASSERT_EQ(f.farkas(3), 0);
+  const std::optional<Vec<Q>> full = basis_farkas_certificate(p, *ilp, f.basis);
+  ASSERT_TRUE(full);
+  EXPECT_TRUE(verify_farkas(p, *full));
+  EXPECT_EQ(basis_farkas_certificate(*ilp, p.is_free, f.basis, f.farkas), full);
+  Vec<double> missing = f.farkas;
+  missing(0) = 0;
+  EXPECT_EQ(basis_farkas_certificate(*ilp, p.is_free, f.basis, missing), full);
+  EXPECT_EQ(basis_farkas_certificate(*ilp, p.is_free, f.basis, Vec<double>(f.farkas.head(3))), full);
+}
+
 }  // namespace
 }  // namespace contactcert::exact

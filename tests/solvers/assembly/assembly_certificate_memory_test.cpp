@@ -86,5 +86,30 @@ TEST(AssemblyCertificateMemory, WalkReusesCertificates) {
   EXPECT_LT(r.lps, r.nodes - static_cast<long>(r.dead.size()) + static_cast<long>(r.dead.size()) / 2);
 }
 
+// The walk's LPs take a dead prefix's certificate from the float LP's basis (exact::FloatInfeasible::kBasisCertificate)
+// where the rounded one fails the check: on the row of four boxes under wind, some dead prefixes' float certificates
+// do not round, and for each of them the basis gives a certificate of that system, where the default gives nothing
+// (the verified LP would solve it again).
+TEST(AssemblyCertificateMemory, DeadPrefixCertificatesFromTheFloatBasis) {
+  const geometry::Assembly a = windy_row(4);
+  const AssemblyModel m = assembly_model(a);
+  const AssemblyStabilityResult r = assembly_stability(a);
+  ASSERT_EQ(r.verdict, AssemblyVerdict::kStronglyStable);
+  int from_basis = 0;
+  for (const AssemblyDeadPrefix& d : r.dead) {
+    const AssemblySystem s = prefix_system(m, r.contact_order, d.prefix);
+    const exact::StrictSolver<Q> solver(s.system);
+    bool feasible = true;
+    if (solver.solve_rounded(s.b, &feasible) || feasible) continue;
+    const std::optional<exact::StrictFeasibility<Q>> f =
+        solver.solve_rounded(s.b, &feasible, nullptr, exact::FloatInfeasible::kBasisCertificate);
+    ASSERT_TRUE(f) << d.prefix;
+    ASSERT_EQ(f->status, exact::StrictStatus::kInfeasible);
+    EXPECT_TRUE(exact::verify_motzkin(s.system.dense(s.b), f->motzkin)) << d.prefix;
+    ++from_basis;
+  }
+  EXPECT_GT(from_basis, 0);
+}
+
 }  // namespace
 }  // namespace contactcert::solvers::assembly
