@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -69,10 +70,15 @@ CertificateCandidates certificate_candidates(const std::vector<ConeRow>& rows, s
                                              const PrefixCone& parent);
 
 /// Integer weights w on `rows` with sum w_i f_i = 0, w_i >= 0 on sign rows and w_r > 0 on a kPositive row r: a
-/// Motzkin certificate of the rows, when `cone` (the cone of all of them) has no point meeting them, from a strict
-/// row that vanishes on `cone` and one to three candidates, smallest subsets first (each answer checked). Nullopt if
-/// none qualifies within `budget` three-row subsets. Throws exact::RingOverflow.
+/// Motzkin certificate of the rows, when `cone` (the cone of all of them) has no point meeting them. First the
+/// circuits of the candidates (minimal dependent sets of 2 to 4 rows, a new one among them): of those with the
+/// fewest rows the one shortest as written, where row i's written entry is factors[i] w_i (1 without factors) and
+/// the entries are made primitive (sparse_motzkin.h); then, should none qualify, a strict row that vanishes on
+/// `cone` and one to three candidates, smallest subsets first. Each answer checked. Nullopt if none qualifies
+/// within `budget` subsets of four rows. Throws exact::RingOverflow.
 std::optional<std::vector<exact::Int128>> cone_motzkin(const std::vector<ConeRow>& rows, const PrefixCone& cone,
-                                                       const CertificateCandidates& candidates, long budget);
+                                                       const CertificateCandidates& candidates, long budget,
+                                                       const std::vector<std::int64_t>* factors = nullptr,
+                                                       std::vector<exact::Int128>* first_found = nullptr);
 
 }  // namespace contactcert::solvers
