@@ -164,7 +164,7 @@ class Walker {
             path.push_back({std::move(vdot), 0, std::move(cone)});
             continue;
           }
-          Vec<Q> first_found;  // reused where the shorter y is not (its rows' kinds are more common)
+          Vec<Q> first_found;  // when y replaced it: remembered too, so that its reuses are not lost
           if (Vec<Q> y = cone_certificate(prefix, *path.back().cone, *cone, first_found); y.size()) {
             remember(prefix, y);
             if (first_found.size()) remember(prefix, first_found);

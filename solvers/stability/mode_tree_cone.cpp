@@ -189,9 +189,10 @@ long written_length(const std::array<std::size_t, 4>& support, const std::array<
 // The certificate to write: `first` (first_vanishing_row's), or a circuit of the candidates with fewer rows, or
 // with as many and shorter as written. A circuit is a minimal dependent set of 2 to 4 candidates, a new one among
 // them, with sum w_i f_i = 0, every weight non-zero, the sign rows' weights of one sign (made positive) and a
-// kPositive row among them. Circuits of two and of three rows are compared (up to kCompared of each size); of
-// four rows only where there are at most kFourRows subsets with a new row, else none if `first` has four rows
-// and the first found if there is no `first` (within `budget`).
+// kPositive row among them. Circuits of two and of three rows are compared (up to kCompared of each size), of four
+// rows where there are at most kFourRows subsets with a new row. Where there are more and `first` has four rows,
+// `first` is kept without a search (the many candidates of a long prefix whose cone is a point or a ray); with no
+// `first`, the first circuit found (within `budget`).
 constexpr long kCompared = 1024;
 constexpr long kFourRows = 16;
 
@@ -352,7 +353,13 @@ std::optional<std::vector<Int128>> cone_motzkin(const std::vector<ConeRow>& rows
                                                 const std::vector<std::int64_t>* factors,
                                                 std::vector<Int128>* first_found) {
   std::optional<std::vector<Int128>> first = first_vanishing_row(rows, cone, candidates, budget);
-  std::optional<std::vector<Int128>> w = shortest_circuit(rows, candidates, budget, factors, first);
+  std::optional<std::vector<Int128>> w;
+  try {
+    w = shortest_circuit(rows, candidates, budget, factors, first);
+  } catch (const exact::RingOverflow&) {  // a subset's determinants or a written weight beyond 128 bits
+    if (!first) throw;
+    w = first;
+  }
   if (first_found) {
     first_found->clear();
     if (first && w != first) *first_found = std::move(*first);
