@@ -164,8 +164,10 @@ class Walker {
             path.push_back({std::move(vdot), 0, std::move(cone)});
             continue;
           }
-          if (Vec<Q> y = cone_certificate(prefix, *path.back().cone, *cone); y.size()) {
+          Vec<Q> first_found;  // when y replaced it: remembered too, so that its reuses are not lost
+          if (Vec<Q> y = cone_certificate(prefix, *path.back().cone, *cone, first_found); y.size()) {
             remember(prefix, y);
+            if (first_found.size()) remember(prefix, first_found);
             dead_.push_back({prefix, std::move(y)});
             prefix.letters.pop_back();
             continue;
@@ -367,20 +369,27 @@ class Walker {
   }
 
   // A Motzkin certificate of the prefix's kinematic system from its cone (cone_motzkin), or empty.
-  Vec<Q> cone_certificate(const ModeString& prefix, const PrefixCone& parent, const PrefixCone& cone) const {
+  Vec<Q> cone_certificate(const ModeString& prefix, const PrefixCone& parent, const PrefixCone& cone,
+                          Vec<Q>& first_found) const {
     std::vector<std::int64_t> factors;
     const std::vector<ConeRow> rows = rows_of(prefix, &factors);
     ModeString head = prefix;
     head.letters.pop_back();
-    try {
-      const std::size_t first_new = rows_of(head).size();
-      const auto w = cone_motzkin(rows, cone, certificate_candidates(rows, first_new, parent), kCertificateBudget);
-      if (!w) return Vec<Q>();
+    auto motzkin = [&](const std::vector<exact::Int128>& w) {
       Vec<Q> y = Vec<Q>::Zero(static_cast<Index>(rows.size()));
       for (std::size_t i = 0; i < rows.size(); ++i)
-        if ((*w)[i] != 0)
-          ring::to_rational(ring::mul((*w)[i], exact::Int128(factors[i])), exact::Int128(1), y(static_cast<Index>(i)));
+        if (w[i] != 0)
+          ring::to_rational(ring::mul(w[i], exact::Int128(factors[i])), exact::Int128(1), y(static_cast<Index>(i)));
       return y;
+    };
+    try {
+      const std::size_t first_new = rows_of(head).size();
+      std::vector<exact::Int128> first;
+      const auto w = cone_motzkin(rows, cone, certificate_candidates(rows, first_new, parent), kCertificateBudget,
+                                  &factors, &first);
+      if (!w) return Vec<Q>();
+      if (!first.empty()) first_found = motzkin(first);
+      return motzkin(*w);
     } catch (const exact::RingOverflow&) {
       return Vec<Q>();
     }

@@ -164,10 +164,132 @@ std::array<Int128, 4> null_combination(const std::array<Int3, 4>& a, std::size_t
   return w;
 }
 
-}  // namespace
+// The length of the certificate entries [row, "weight"] that weights w on the rows at `support` become when
+// written (sparse_motzkin_json): the entries factor_i w_i made primitive, in decimal, with their row numbers.
+long written_length(const std::array<std::size_t, 4>& support, const std::array<Int128, 4>& w, std::size_t s,
+                    const std::vector<std::int64_t>* factors) {
+  auto digits = [](Int128 x) {
+    int d = 1;
+    for (x = x < 0 ? -x : x; !ring::fits_int64(x); x /= 10) ++d;
+    for (auto u = static_cast<std::uint64_t>(x); u >= 10; u /= 10) ++d;
+    return d;
+  };
+  std::array<Int128, 4> y{};
+  Int128 g = 0;
+  for (std::size_t i = 0; i < s; ++i) {
+    y[i] = factors ? ring::mul(w[i], Int128((*factors)[support[i]])) : w[i];
+    g = ring::gcd(g, y[i] < 0 ? -y[i] : y[i]);
+  }
+  long length = 0;
+  for (std::size_t i = 0; i < s; ++i)
+    length += 6 + digits(Int128(support[i])) + digits(g > 1 ? y[i] / g : y[i]) + (y[i] < 0);
+  return length;
+}
 
-std::optional<std::vector<Int128>> cone_motzkin(const std::vector<ConeRow>& rows, const PrefixCone& cone,
-                                                const CertificateCandidates& candidates, long budget) {
+// The certificate to write: `first` (first_vanishing_row's), or a circuit of the candidates with fewer rows, or
+// with as many and shorter as written. A circuit is a minimal dependent set of 2 to 4 candidates, a new one among
+// them, with sum w_i f_i = 0, every weight non-zero, the sign rows' weights of one sign (made positive) and a
+// kPositive row among them. Circuits of two and of three rows are compared (up to kCompared of each size), of four
+// rows where there are at most kFourRows subsets with a new row. Where there are more and `first` has four rows,
+// `first` is kept without a search (the many candidates of a long prefix whose cone is a point or a ray); with no
+// `first`, the first circuit found (within `budget`).
+constexpr long kCompared = 1024;
+constexpr long kFourRows = 16;
+
+std::optional<std::vector<Int128>> shortest_circuit(const std::vector<ConeRow>& rows,
+                                                    const CertificateCandidates& candidates, long& budget,
+                                                    const std::vector<std::int64_t>* factors,
+                                                    const std::optional<std::vector<Int128>>& first) {
+  const std::vector<std::size_t>& c = candidates.rows;
+  std::array<std::size_t, 4> t{}, support{}, best_support{};
+  std::array<Int128, 4> best_w{};
+  std::array<Int3, 4> a;
+  std::size_t best_s = 0;
+  long best_length = 0;
+  if (first) {
+    for (std::size_t i = 0; i < first->size(); ++i)
+      if ((*first)[i] != 0) best_support[best_s] = i, best_w[best_s++] = (*first)[i];
+    best_length = written_length(best_support, best_w, best_s, factors);
+  }
+  auto circuit = [&](std::size_t s) {
+    for (std::size_t i = 0; i < s; ++i) a[i] = rows[c[t[i]]].f;
+    std::array<Int128, 4> w = null_combination(a, s);
+    int sign = 0;
+    bool strict = false;
+    for (std::size_t i = 0; i < s; ++i) {
+      if (w[i] == 0) return false;  // a smaller subset is dependent: its circuit is found there
+      const RowSign row_sign = rows[c[t[i]]].sign;
+      if (row_sign == RowSign::kZero) continue;
+      if (sign != 0 && (w[i] > 0 ? 1 : -1) != sign) return false;
+      sign = w[i] > 0 ? 1 : -1;
+      strict = strict || row_sign == RowSign::kPositive;
+    }
+    if (!strict) return false;
+    Int3 sum{0, 0, 0};  // the check: sum w_i f_i = 0
+    for (std::size_t i = 0; i < s; ++i)
+      for (int d = 0; d < 3; ++d) sum[d] = ring::add(sum[d], ring::mul(w[i], a[i][d]));
+    if (!is_zero(sum)) return false;
+    const Int128 g = ring::gcd(ring::gcd(w[0], w[1]), ring::gcd(w[2], w[3]));
+    for (std::size_t i = 0; i < s; ++i) {
+      w[i] = g > 1 ? sign * w[i] / g : sign * w[i];
+      support[i] = c[t[i]];
+    }
+    const long length = written_length(support, w, s, factors);
+    if (best_s == 0 || s < best_s || (s == best_s && length < best_length))
+      best_s = s, best_length = length, best_support = support, best_w = w;
+    return true;
+  };
+  auto answer = [&]() -> std::optional<std::vector<Int128>> {
+    if (best_s == 0) return std::nullopt;
+    std::vector<Int128> out(rows.size(), 0);
+    for (std::size_t i = 0; i < best_s; ++i) out[best_support[i]] = best_w[i];
+    return out;
+  };
+  const std::size_t m = c.size();
+  long quads = static_cast<long>(candidates.new_rows);  // four-row subsets with a new row (kFourRows + 1 if more)
+  for (long i = 1; i <= 3; ++i) quads = std::min(quads * std::max(0L, static_cast<long>(m) - i) / i, kFourRows + 1);
+  if (best_s == 4 && quads > kFourRows) return answer();
+  long tried = 0;  // circuits of the current size tried: past kCompared, the shortest found so far is taken
+  auto enough = [&] { return ++tried > kCompared && best_s != 0; };
+  for (t[0] = 0; t[0] < candidates.new_rows; ++t[0])  // two rows: parallel ones
+    for (t[1] = t[0] + 1; t[1] < m; ++t[1])
+      if (circuit(2); enough()) return answer();
+  if (best_s != 0 && best_s <= 2) return answer();
+  // Three rows: a new row g and f_j, f_k on one plane, i.e. g x f_j parallel to g x f_k. The rows are sorted by
+  // that direction and only rows of one direction paired.
+  tried = 0;
+  std::vector<std::pair<Int3, std::size_t>> planes;
+  for (t[0] = 0; t[0] < candidates.new_rows; ++t[0]) {
+    planes.clear();
+    for (std::size_t j = t[0] + 1; j < m; ++j) {
+      Int3 d = primitive(cross(rows[c[t[0]]].f, rows[c[j]].f));
+      if (d < Int3{0, 0, 0})
+        for (Int128& x : d) x = -x;
+      if (!is_zero(d)) planes.emplace_back(d, j);
+    }
+    std::sort(planes.begin(), planes.end());
+    for (std::size_t lo = 0, hi = 0; lo < planes.size(); lo = hi) {
+      for (hi = lo + 1; hi < planes.size() && planes[hi].first == planes[lo].first;) ++hi;
+      for (std::size_t p = lo; p < hi; ++p)
+        for (std::size_t q = p + 1; q < hi; ++q) {
+          t[1] = planes[p].second, t[2] = planes[q].second;
+          if (circuit(3); enough()) return answer();
+        }
+    }
+  }
+  if (best_s != 0 && best_s <= 3) return answer();
+  for (t[0] = 0; t[0] < candidates.new_rows; ++t[0])  // four rows
+    for (t[1] = t[0] + 1; t[1] < m; ++t[1])
+      for (t[2] = t[1] + 1; t[2] < m; ++t[2])
+        for (t[3] = t[2] + 1; t[3] < m; ++t[3]) {
+          if (--budget < 0) return answer();
+          if (circuit(4) && quads > kFourRows) return answer();
+        }
+  return answer();
+}
+
+std::optional<std::vector<Int128>> first_vanishing_row(const std::vector<ConeRow>& rows, const PrefixCone& cone,
+                                                       const CertificateCandidates& candidates, long& budget) {
   const Int3 v = cone.ray_sum();
   const std::vector<std::size_t>& c = candidates.rows;
   const std::size_t n = c.size();
@@ -222,6 +344,27 @@ std::optional<std::vector<Int128>> cone_motzkin(const std::vector<ConeRow>& rows
       }
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::vector<Int128>> cone_motzkin(const std::vector<ConeRow>& rows, const PrefixCone& cone,
+                                                const CertificateCandidates& candidates, long budget,
+                                                const std::vector<std::int64_t>* factors,
+                                                std::vector<Int128>* first_found) {
+  std::optional<std::vector<Int128>> first = first_vanishing_row(rows, cone, candidates, budget);
+  std::optional<std::vector<Int128>> w;
+  try {
+    w = shortest_circuit(rows, candidates, budget, factors, first);
+  } catch (const exact::RingOverflow&) {  // a subset's determinants or a written weight beyond 128 bits
+    if (!first) throw;
+    w = first;
+  }
+  if (first_found) {
+    first_found->clear();
+    if (first && w != first) *first_found = std::move(*first);
+  }
+  return w;
 }
 
 }  // namespace contactcert::solvers

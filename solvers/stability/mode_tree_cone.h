@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -69,10 +70,16 @@ CertificateCandidates certificate_candidates(const std::vector<ConeRow>& rows, s
                                              const PrefixCone& parent);
 
 /// Integer weights w on `rows` with sum w_i f_i = 0, w_i >= 0 on sign rows and w_r > 0 on a kPositive row r: a
-/// Motzkin certificate of the rows, when `cone` (the cone of all of them) has no point meeting them, from a strict
-/// row that vanishes on `cone` and one to three candidates, smallest subsets first (each answer checked). Nullopt if
-/// none qualifies within `budget` three-row subsets. Throws exact::RingOverflow.
+/// Motzkin certificate of the rows, when `cone` (the cone of all of them) has no point meeting them. The first one
+/// found - a strict row that vanishes on `cone` with one to three candidates, smallest subsets first - unless a
+/// circuit of the candidates (a minimal dependent set of 2 to 4 of them, a new one among them) has fewer rows, or
+/// as many and is shorter as written: row i's written entry is factors[i] w_i (w_i without factors), the entries
+/// made primitive (sparse_motzkin.h). `first_found`, if given, receives the first one when it was not chosen (else
+/// it is emptied). Each answer checked. Nullopt if none qualifies within `budget` subsets of four rows. Throws
+/// exact::RingOverflow.
 std::optional<std::vector<exact::Int128>> cone_motzkin(const std::vector<ConeRow>& rows, const PrefixCone& cone,
-                                                       const CertificateCandidates& candidates, long budget);
+                                                       const CertificateCandidates& candidates, long budget,
+                                                       const std::vector<std::int64_t>* factors = nullptr,
+                                                       std::vector<exact::Int128>* first_found = nullptr);
 
 }  // namespace contactcert::solvers

@@ -74,6 +74,32 @@ TEST(PrefixCone, RandomSignSystemsAgreeWithTheExactLpAndEveryNoHasACheckedCertif
   EXPECT_GT(infeasible, 50);
 }
 
+// The block's floor rows a_n = vy + x omega at x = 0 and 9 (strict), 10 (equality), 11 (strict, new) and its
+// a_t = vx > 0: no acceleration meets them. The first strict row that vanishes on the cone (x = 0) with the
+// candidates gives 1 (x = 0) + 10 (x = 11) - 11 (x = 10); the circuit of the rows at x = 9, 10, 11 gives 1, -2, 1,
+// fewer digits: the shorter is chosen, checks, and the first one is handed back for reuse.
+TEST(PrefixCone, TheShorterOfTheFirstAndTheCircuitsCertificatesIsChosen) {
+  const std::vector<ConeRow> rows{{{0, 1, 0}, RowSign::kPositive},
+                                  {{0, 1, 9}, RowSign::kPositive},
+                                  {{0, 1, 10}, RowSign::kZero},
+                                  {{1, 0, 0}, RowSign::kPositive},
+                                  {{0, 1, 11}, RowSign::kPositive}};
+  PrefixCone parent;
+  for (std::size_t i = 0; i + 1 < rows.size(); ++i) parent.cut(rows[i]);
+  ASSERT_TRUE(parent.point_meeting({rows.begin(), rows.end() - 1}).has_value());
+  PrefixCone cone = parent;
+  cone.cut(rows.back());
+  ASSERT_FALSE(cone.point_meeting(rows).has_value());
+  std::vector<Int128> first;
+  const auto w = cone_motzkin(rows, cone, certificate_candidates(rows, 4, parent), 1000, nullptr, &first);
+  ASSERT_TRUE(w.has_value());
+  EXPECT_EQ(*w, (std::vector<Int128>{0, 1, -2, 0, 1}));
+  EXPECT_EQ(first, (std::vector<Int128>{1, 0, -11, 0, 10}));
+  exact::Vec<Q> y(5);
+  for (Eigen::Index i = 0; i < 5; ++i) exact::ring::to_rational(-(*w)[static_cast<std::size_t>(i)], Int128(1), y(i));
+  EXPECT_TRUE(exact::verify_motzkin(system_of(rows), y));
+}
+
 TEST(PrefixCone, ACutThroughALinealityVectorOrAnEqualityKeepsTheRightRays) {
   PrefixCone cone;                               // R^3
   cone.cut({{0, 0, 1}, RowSign::kNonNegative});  // z >= 0: lineality x, y; ray e3
