@@ -215,6 +215,45 @@ class Stability(Result):
         return f"Stability({self.verdict}, wrench=({w}), {len(self.touching_fixels)} touching fixels{extra})"
 
 
+class SpatialStability(Result):
+    """Strong stability of a body in space under one wrench g = (force, torque about the com) (issue 34): the
+    verdict with a resting and a moving solution where they exist; forces are world vectors, one per contact."""
+
+    def __init__(self, data: dict[str, Any], certificate: Certificate | None = None) -> None:
+        super().__init__(data)
+        self.certificate = certificate  # a Certificate when one was written
+
+    @property
+    def verdict(self) -> str:
+        """strongly_stable, weakly_stable or unstable."""
+        return str(self._data["verdict"])
+
+    @property
+    def wrench(self) -> Vector:
+        return exact(self._data["wrench"])
+
+    @property
+    def resting_forces(self) -> tuple[Vector, ...] | None:
+        """The world contact forces balancing g at rest, one (Fraction) 3-vector per contact, or None."""
+        f = self._data["witness"].get("resting_forces")
+        return tuple(exact(c) for c in f) if f is not None else None
+
+    @property
+    def moving_mode(self) -> str | None:
+        m = self._data["witness"].get("moving")
+        return m["mode"] if m else None
+
+    @property
+    def acceleration(self) -> Vector | None:
+        """The moving solution's vdot = (a, alpha) (Fractions), or None."""
+        m = self._data["witness"].get("moving")
+        return exact(m["acceleration"]) if m else None
+
+    def __repr__(self) -> str:
+        extra = f", moving mode {self.moving_mode!r}" if self.moving_mode else ""
+        return f"SpatialStability({self.verdict}, wrench={tuple(str(x) for x in self.wrench)}{extra})"
+
+
 class Modes(Result):
     """The kinematically feasible contact modes of a scene from rest (`contactcert modes`), each with an
     acceleration that realises it and, in the dynamic list, a wrench in its cone."""
