@@ -1,7 +1,7 @@
 #include "queries/spatial_stability_query.h"
 
 #include "exact/input_error.h"
-#include "exact/rational_text.h"
+#include "queries/stability_query.h"
 
 namespace contactcert::queries {
 namespace {
@@ -25,23 +25,22 @@ SpatialStabilityAnswer spatial_stability_answer(const SpatialInput& in, const Sp
   return a;
 }
 
+exact::Vec<exact::Q> vec(const geometry::Vec3& f) {
+  exact::Vec<exact::Q> v(3);
+  v << f[0], f[1], f[2];
+  return v;
+}
+
 json forces_json(const std::vector<geometry::Vec3>& forces) {
   json out = json::array();
-  for (const geometry::Vec3& f : forces) {
-    json v = json::array();
-    for (const exact::Q& x : f) v.push_back(exact_json(x));
-    out.push_back(v);
-  }
+  for (const geometry::Vec3& f : forces) out.push_back(exact_json(vec(f)));
   return out;
 }
 
 std::string forces_text(const std::vector<geometry::Vec3>& forces) {
   std::string s;
-  for (std::size_t i = 0; i < forces.size(); ++i) {
-    exact::Vec<exact::Q> f(3);
-    f << forces[i][0], forces[i][1], forces[i][2];
-    s += "    contact " + std::to_string(i) + ": " + tuple_text(f) + "\n";
-  }
+  for (std::size_t i = 0; i < forces.size(); ++i)
+    s += "    contact " + std::to_string(i) + ": " + tuple_text(vec(forces[i])) + "\n";
   return s;
 }
 
@@ -69,10 +68,7 @@ json to_json(const SpatialStabilityAnswer& a) {
   j["wrench"] = exact_json(a.wrench);
   j["contacts"] = a.scene.contacts.size();
   j["witness"] = w;
-  j["lps"] = r.lps;
-  j["modes_checked"] = r.modes_checked;
-  j["modes_kinematically_feasible"] = r.modes_kinematically_feasible;
-  j["mode_tree"] = {{"nodes", r.tree_nodes}, {"dead_prefixes", r.dead_prefixes}};
+  put_search_counts(j, r);
   if (!a.certificate.empty()) j["certificate"] = a.certificate;
   return j;
 }

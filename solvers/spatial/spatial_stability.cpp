@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "exact/input_error.h"
-#include "exact/rational_text.h"
 #include "solvers/stability/sparse_motzkin.h"
+#include "solvers/stability/stability_certificate.h"
 
 namespace contactcert::solvers::spatial {
 
@@ -154,23 +154,13 @@ std::vector<geometry::Vec3> contact_forces(const geometry::SpatialScene& scene, 
 
 std::string spatial_stability_certificate(const std::string& scene_text, const Vec<Q>& g, const SpatialStability& r) {
   using json = nlohmann::ordered_json;
-  auto strings = [](const Vec<Q>& v) {
-    json a = json::array();
-    for (Index i = 0; i < v.size(); ++i) a.push_back(exact::to_string(v(i)));
-    return a;
-  };
-  json j;
-  j["kind"] = "spatial_stability";
-  j["verdict"] = verdict_name(r.verdict);
-  j["wrench"] = strings(g);
-  j["scene"] = scene_text;
-  j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
-  j["resting"] = r.has_resting ? json{{"weights", strings(r.resting_weights)}}
+  json j = stability_certificate_head("spatial_stability", r.verdict, scene_text, g);
+  j["resting"] = r.has_resting ? json{{"weights", exact_strings(r.resting_weights)}}
                                : json{{"motzkin", sparse_motzkin_json(r.resting_motzkin)}};
   if (r.has_moving)
     j["moving"] = {{"mode", r.moving.mode},
-                   {"weights", strings(r.moving.weights)},
-                   {"acceleration", strings(r.moving.acceleration)}};
+                   {"weights", exact_strings(r.moving.weights)},
+                   {"acceleration", exact_strings(r.moving.acceleration)}};
   json proofs = json::array();
   for (const SpatialModeProof& p : r.proofs)
     proofs.push_back({{"mode", p.mode}, {"kinematic", p.kinematic}, {"motzkin", sparse_motzkin_json(p.motzkin)}});

@@ -9,11 +9,11 @@
 #include "checker/spatial_stability_check.h"
 #include "geometry/scene_json.h"
 #include "runtime/scenes.h"
+#include "tests/solvers/spatial/extruded_scene.h"
 
 namespace contactcert::solvers::spatial {
 namespace {
 
-using geometry::SpatialContact;
 using geometry::SpatialScene;
 
 std::string box_text() {
@@ -76,30 +76,15 @@ TEST(SpatialStability, BoxWithItsWeightOutsideTheSupportTips) {
   EXPECT_GT(r.moving.acceleration(4), 0);
 }
 
-// A planar scene extruded (each touching fixel twice, at z = +-1, normals in the plane, frame (t, z), square pyramid
-// with the scene's mu, mass 1 and I = diag(1, 1, I/m)) under the planar wrench (fx, fy, 0, 0, 0, tz) has the planar
-// verdict, for scenes with mu_s = mu_k > 0.
+// A planar scene extruded (extruded_scene.h: its touching fixels, with the scene's mu) under the planar wrench (fx, fy,
+// 0, 0, 0, tz) has the planar verdict, for scenes with mu_s = mu_k > 0.
 TEST(SpatialStability, ExtrudedPlanarScenesHaveThePlanarVerdicts) {
   const std::vector<std::vector<Q>> wrenches = {{0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, -1, 1}, {1, -2, -1}};
   for (const char* name : {"bt2002_fig4d_peg_nn", "bt2002_section7_disk", "bt2002_fig10_pentagon_insert"}) {
     const geometry::PlanarScene full =
         geometry::load_planar_scene(runtime::bundled_scenes_dir() + "/" + name + ".json");
     const geometry::PlanarScene ps = touching_scene(full);
-    SpatialScene s;
-    s.body.mass = 1;
-    s.body.inertia = {{{Q(1), Q(0), Q(0)}, {Q(0), Q(1), Q(0)}, {Q(0), Q(0), ps.workpiece.inertia_per_mass}}};
-    s.body.com = {ps.workpiece.com.x, ps.workpiece.com.y, Q(0)};
-    for (const geometry::Fixel& f : ps.fixels)
-      for (const int z : {1, -1}) {
-        SpatialContact c;
-        const geometry::Point2 p = f.frame.point, n = f.frame.normal;
-        c.point = {p.x, p.y, Q(z)};
-        c.normal = {n.x, n.y, Q(0)};
-        c.t1 = {-n.y, n.x, Q(0)};
-        c.t2 = {Q(0), Q(0), Q(1)};
-        c.edges = {{f.mu_s, 0}, {0, f.mu_s}, {-f.mu_s, 0}, {0, -f.mu_s}};
-        s.contacts.push_back(std::move(c));
-      }
+    const SpatialScene s = extruded(ps, /*mu_of_fixels=*/true);
     for (const std::vector<Q>& g : wrenches) {
       Vec<Q> g3(3), g6 = Vec<Q>::Zero(6);
       g3 << g[0], g[1], g[2];
