@@ -2,3 +2,5 @@
 target_sources(contactcert_solvers PRIVATE spatial/spatial_modes.cpp)
 # Its strong stability under a wrench (checker/spatial_stability_check.h).
 target_sources(contactcert_solvers PRIVATE spatial/spatial_stability.cpp)
+# The wrench cone of a spatial mode (6-D, both forms).
+target_sources(contactcert_solvers PRIVATE spatial/spatial_cone.cpp)
