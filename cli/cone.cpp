@@ -9,6 +9,8 @@
 #include "cli/snap_option.h"
 #include "exact/rational_text.h"
 #include "queries/cone_query.h"
+#include "queries/scene_input_kind.h"
+#include "queries/spatial_cone_query.h"
 #include "queries/contact_forces.h"
 #include "solvers/stability/world_forces.h"
 
@@ -133,7 +135,23 @@ void print_cone_float(const std::string& file, const ConeAnswer& a) {
               << c.cone.closure.rays(r, 2) << ")\n";
 }
 
+/// `cone SPATIAL --mode M`: a body in space (queries/spatial_cone_query.h); the planar-only options are refused.
+int run_spatial_cone_command(const ConeCliOptions& o, const SpatialInput& in) {
+  const std::pair<bool, const char*> planar[] = {{o.route != "paper", "--route"},
+                                                 {o.table2 != "strict", "--table2"},
+                                                 {!o.certificate.empty(), "--certificate"},
+                                                 {!o.svg.empty(), "--svg"}};
+  for (const auto& [given, name] : planar)
+    if (given) throw exact::InputError("command line", name, "a spatial scene's cone takes --mode only");
+  const Limited<SpatialConeAnswer> r = run_spatial_cone(in, {o.common.query(), o.mode});
+  if (!r) return report_limit("cone", r.limit(), o.common.json);
+  std::cout << (o.common.json ? to_json(*r).dump() + "\n" : to_text(*r, o.file));
+  return 0;
+}
+
 int run_cone_command(const ConeCliOptions& o) {
+  if (queries::is_spatial_text(exact::JsonInput::read_text(o.file), o.file))
+    return run_spatial_cone_command(o, std::get<SpatialInput>(read_scene_or_assembly(o.file, o.snap)));
   const SceneInput input = read_scene(o.file, o.snap);
   ConeOptions options;
   options.common = o.common.query();
@@ -159,7 +177,8 @@ int run_cone_command(const ConeCliOptions& o) {
 void register_cone(CLI::App& app, Action& action) {
   auto opts = std::make_shared<ConeCliOptions>();
   CLI::App* sub = app.add_subcommand("cone", "Wrench cone of an augmented contact mode (Balkcom, Trinkle 2002)");
-  sub->add_option("FILE", opts->file, "Planar scene file (format: docs/formats.md, section 3)")->required();
+  sub->add_option("FILE", opts->file, "Planar scene file (format: docs/formats.md, section 3) or a spatial scene (3b)")
+      ->required();
   sub->add_option("--mode", opts->mode, "One letter per fixel from s a u l r n m (Table 2)")->required();
   sub->add_option("--route", opts->route, "paper: F = K^F P; project: facets by exact LPs in wrench space")
       ->check(CLI::IsMember({"paper", "project"}))

@@ -16,3 +16,10 @@ check 2 '--region: a spatial scene takes one --wrench' stability "$box" --region
 check 2 '--margin' stability "$box" --wrench 0,0,-1,0,0,0 --margin
 check 2 '--arith: strong stability in space is decided exactly' stability "$box" --wrench 0,0,-1,0,0,0 --arith float
 check 3 'time limit of 0.001 s reached' stability "$box" --wrench 0,0,-1,0,0,0 --time-limit 0.001
+# `cone` on a spatial scene: the all-separating cone of the box (four strict rows, lineality 3), refusals
+check 0 'dimension 6; face form' cone "$box" --mode ssss
+check 0 '"kind":"spatial","mode":"ffff"' cone "$box" --mode ffff --json
+check 2 '--mode: one letter per contact (4)' cone "$box" --mode ssz
+check 2 '--route: a spatial scene' cone "$box" --mode ssss --route project
+check 2 '--certificate: a spatial scene' cone "$box" --mode ssss --certificate "$st/cone.json"
+check 2 '--arith: a spatial wrench cone is computed exactly' cone "$box" --mode ssss --arith float
