@@ -7,6 +7,7 @@
 #include <string>
 
 #include "python/bindings.h"
+#include "queries/spatial_cone_query.h"
 #include "queries/spatial_modes_query.h"
 #include "queries/spatial_stability_query.h"
 
@@ -38,6 +39,13 @@ WithCertificate stability(const Spatial& s, const std::string& wrench, const std
   return {queries::to_json(ans).dump(), ans.certificate_text};
 }
 
+/// `cone SPATIAL --mode M`: the --json text.
+std::string cone(const Spatial& s, const std::string& mode, const std::string& arith, double time_limit) {
+  return queries::to_json(
+             answer(queries::run_spatial_cone(s, {{queries::parse_arith(arith, "--arith"), time_limit}, mode})))
+      .dump();
+}
+
 }  // namespace
 
 void bind_spatial(py::module_& m) {
@@ -50,7 +58,8 @@ void bind_spatial(py::module_& m) {
       .def_readonly("text", &Spatial::text)
       .def_property_readonly("contacts", [](const Spatial& s) { return s.scene.contacts.size(); })
       .def("modes", &modes, Release())
-      .def("stability", &stability, Release());
+      .def("stability", &stability, Release())
+      .def("cone", &cone, Release());
 }
 
 }  // namespace contactcert::python

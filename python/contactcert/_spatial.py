@@ -11,7 +11,7 @@ from . import _core
 from ._file_problem import ModesProblem
 from ._numbers import ExactVector, vector_text
 from ._options import ARITHS, Arith, choice, seconds
-from ._results import Certificate, SpatialStability
+from ._results import Certificate, Result, SpatialStability
 from ._source import Path
 
 
@@ -36,6 +36,13 @@ class SpatialScene(ModesProblem[_core.SpatialScene]):
         path = os.fspath(certificate) if certificate is not None else ""
         data, text = self._core.stability(vector_text(wrench, "--wrench"), arith, time_limit, path)
         return SpatialStability(json.loads(data), Certificate(text, path) if text else None)
+
+    def cone(self, mode: str, arith: Arith = "verified", time_limit: float = 0) -> Result:
+        """`contactcert cone FILE --mode M`: the 6-D wrench cone of a contact mode (one letter per contact: s, f or a
+        sliding letter of its pyramid) in both forms; to_dict()["cone"] is the cone as docs/formats.md section 4
+        writes one. Past `time_limit` seconds (0 = none), BudgetExceeded."""
+        choice(arith, ARITHS, "--arith")
+        return Result(json.loads(self._core.cone(mode, arith, seconds(time_limit))))
 
     def __repr__(self) -> str:
         return f"SpatialScene({self.name!r}, {self.contacts} contacts)"

@@ -39,3 +39,11 @@ def test_to_dict_is_the_cli_json() -> None:
     out = subprocess.run([cli, "stability", str(BOX), "--wrench", "0,0,-1,0,2,0", "--json"], check=True,
                          capture_output=True, text=True).stdout
     assert contactcert.SpatialScene.from_file(BOX).stability((0, 0, -1, 0, 2, 0)).to_dict() == json.loads(out)
+
+
+def test_cone_of_the_all_separating_mode() -> None:
+    """ssss: four strict rows 5 f_z + 12 (y tau_x - x tau_y) > 0 at the corners (x, y) = (+-1, +-1) (I = 5/12)."""
+    cone = contactcert.SpatialScene.from_file(BOX).cone("ssss").to_dict()
+    assert cone["kind"] == "spatial" and cone["mode"] == "ssss"
+    assert cone["cone"]["dimension"] == 6
+    assert len(cone["cone"]["face"]["strict"]) == 4
