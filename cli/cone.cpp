@@ -9,9 +9,8 @@
 #include "cli/snap_option.h"
 #include "exact/rational_text.h"
 #include "queries/cone_query.h"
-#include "queries/scene_input_kind.h"
-#include "queries/spatial_cone_query.h"
 #include "queries/contact_forces.h"
+#include "queries/spatial_cone_query.h"
 #include "solvers/stability/world_forces.h"
 
 namespace contactcert::cli {
@@ -150,9 +149,11 @@ int run_spatial_cone_command(const ConeCliOptions& o, const SpatialInput& in) {
 }
 
 int run_cone_command(const ConeCliOptions& o) {
-  if (queries::is_spatial_text(exact::JsonInput::read_text(o.file), o.file))
-    return run_spatial_cone_command(o, std::get<SpatialInput>(read_scene_or_assembly(o.file, o.snap)));
-  const SceneInput input = read_scene(o.file, o.snap);
+  SceneOrAssembly read = read_scene_or_assembly(o.file, o.snap);  // read once: FILE may be a pipe
+  if (const auto* spatial = std::get_if<SpatialInput>(&read)) return run_spatial_cone_command(o, *spatial);
+  if (std::holds_alternative<AssemblyInput>(read))
+    throw exact::InputError(o.file, "$.bodies", "one workpiece: `cone` takes a planar or a spatial scene");
+  const SceneInput& input = std::get<SceneInput>(read);
   ConeOptions options;
   options.common = o.common.query();
   options.mode = o.mode;
