@@ -10,6 +10,7 @@
 #include "exact/rational_text.h"
 #include "queries/cone_query.h"
 #include "queries/contact_forces.h"
+#include "queries/spatial_cone_query.h"
 #include "solvers/stability/world_forces.h"
 
 namespace contactcert::cli {
@@ -133,8 +134,26 @@ void print_cone_float(const std::string& file, const ConeAnswer& a) {
               << c.cone.closure.rays(r, 2) << ")\n";
 }
 
+/// `cone SPATIAL --mode M`: a body in space (queries/spatial_cone_query.h); the planar-only options are refused.
+int run_spatial_cone_command(const ConeCliOptions& o, const SpatialInput& in) {
+  const std::pair<bool, const char*> planar[] = {{o.route != "paper", "--route"},
+                                                 {o.table2 != "strict", "--table2"},
+                                                 {!o.certificate.empty(), "--certificate"},
+                                                 {!o.svg.empty(), "--svg"}};
+  for (const auto& [given, name] : planar)
+    if (given) throw exact::InputError("command line", name, "a spatial scene's cone takes --mode only");
+  const Limited<SpatialConeAnswer> r = run_spatial_cone(in, {o.common.query(), o.mode});
+  if (!r) return report_limit("cone", r.limit(), o.common.json);
+  std::cout << (o.common.json ? to_json(*r).dump() + "\n" : to_text(*r, o.file));
+  return 0;
+}
+
 int run_cone_command(const ConeCliOptions& o) {
-  const SceneInput input = read_scene(o.file, o.snap);
+  SceneOrAssembly read = read_scene_or_assembly(o.file, o.snap);  // read once: FILE may be a pipe
+  if (const auto* spatial = std::get_if<SpatialInput>(&read)) return run_spatial_cone_command(o, *spatial);
+  if (std::holds_alternative<AssemblyInput>(read))
+    throw exact::InputError(o.file, "$.bodies", "one workpiece: `cone` takes a planar or a spatial scene");
+  const SceneInput& input = std::get<SceneInput>(read);
   ConeOptions options;
   options.common = o.common.query();
   options.mode = o.mode;
@@ -159,7 +178,8 @@ int run_cone_command(const ConeCliOptions& o) {
 void register_cone(CLI::App& app, Action& action) {
   auto opts = std::make_shared<ConeCliOptions>();
   CLI::App* sub = app.add_subcommand("cone", "Wrench cone of an augmented contact mode (Balkcom, Trinkle 2002)");
-  sub->add_option("FILE", opts->file, "Planar scene file (format: docs/formats.md, section 3)")->required();
+  sub->add_option("FILE", opts->file, "Planar scene file (format: docs/formats.md, section 3) or a spatial scene (3b)")
+      ->required();
   sub->add_option("--mode", opts->mode, "One letter per fixel from s a u l r n m (Table 2)")->required();
   sub->add_option("--route", opts->route, "paper: F = K^F P; project: facets by exact LPs in wrench space")
       ->check(CLI::IsMember({"paper", "project"}))

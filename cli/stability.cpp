@@ -19,6 +19,7 @@
 #include "queries/json_out.h"
 #include "queries/region_data.h"
 #include "queries/region_query.h"
+#include "queries/spatial_stability_query.h"
 #include "queries/stability_query.h"
 #include "queries/wrenches_query.h"
 #include "solvers/stability/strong_cones.h"
@@ -169,13 +170,27 @@ int run_assembly_stability_command(const StabilityOptions& o, const AssemblyInpu
   return print_assembly_answer(run_assembly_stability(in, q), o.file, o.common.json, "stability");
 }
 
+/// `stability SPATIAL --wrench fx,fy,fz,tx,ty,tz`: a body in space (queries/spatial_stability_query.h).
+int run_spatial_stability_command(const StabilityOptions& o, const SpatialInput& in) {
+  const std::pair<bool, const char*> others[] = {
+      {!o.wrenches.empty(), "--wrenches"}, {o.region, "--region"}, {o.finger, "--finger"}, {o.margin, "--margin"}};
+  for (const auto& [given, name] : others)
+    if (given) throw exact::InputError("command line", name, "a spatial scene takes one --wrench fx,fy,fz,tx,ty,tz");
+  if (o.wrench.empty())
+    throw exact::InputError("command line", "--wrench",
+                            "a spatial scene needs --wrench fx,fy,fz,tx,ty,tz (force, torque about the com)");
+  queries::SpatialStabilityOptions q;
+  q.common = o.common.query();
+  q.wrench = parse_number_list(o.wrench, "--wrench", 6);
+  q.certificate = o.certificate;
+  const auto a = run_spatial_stability(in, q);
+  return print(o, a, [&] { std::cout << to_text(*a, o.file); });
+}
+
 int run_stability_command(const StabilityOptions& o) {
   SceneOrAssembly read = read_scene_or_assembly(o.file, o.snap);
   if (const auto* assembly = std::get_if<AssemblyInput>(&read)) return run_assembly_stability_command(o, *assembly);
-  if (std::holds_alternative<SpatialInput>(read))
-    throw exact::InputError(o.file, "$.kind",
-                            "a planar scene or an assembly: strong stability of a spatial scene is not built yet "
-                            "(issue 34); `modes` takes it");
+  if (const auto* spatial = std::get_if<SpatialInput>(&read)) return run_spatial_stability_command(o, *spatial);
   const SceneInput& input = std::get<SceneInput>(read);
   if (int(o.region) + int(o.finger) + int(!o.wrench.empty() && !o.region) + int(!o.wrenches.empty()) != 1)
     throw exact::InputError("command line", "--wrench",
@@ -209,10 +224,13 @@ void register_stability(CLI::App& app, Action& action) {
   add_snap_option(*sub, o->snap);
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file,
-                  "Planar scene file (format: docs/formats.md, section 3), or an assembly (section 3a)")
+                  "Planar scene file (format: docs/formats.md, section 3), an assembly (section 3a) or a spatial scene "
+                  "(3b)")
       ->required();
-  CLI::Option* wrench = sub->add_option("--wrench", o->wrench,
-                                        "External wrench fx,fy,tz (torque about the centre of mass), exact numbers");
+  CLI::Option* wrench =
+      sub->add_option("--wrench", o->wrench,
+                      "External wrench fx,fy,tz (torque about the centre of mass), exact numbers; a spatial "
+                      "scene: fx,fy,fz,tx,ty,tz");
   sub->add_option("--wrenches", o->wrenches,
                   "Many wrenches, one verdict each: a JSON array of [fx, fy, tz] or one fx,fy,tz per line");
   CLI::Option* region =

@@ -1,12 +1,15 @@
-// The class SpatialScene (a body in space, docs/formats.md section 3b): its contact modes from rest through the query
-// layer (queries/spatial_modes_query.h), as `contactcert modes SPATIAL` runs them.
+// The class SpatialScene (a body in space, docs/formats.md section 3b): its contact modes from rest and its strong
+// stability under a wrench through the query layer (queries/spatial_modes_query.h, spatial_stability_query.h), as
+// `contactcert modes SPATIAL` and `stability SPATIAL --wrench ...` run them.
 #include <pybind11/stl.h>
 
 #include <optional>
 #include <string>
 
 #include "python/bindings.h"
+#include "queries/spatial_cone_query.h"
 #include "queries/spatial_modes_query.h"
+#include "queries/spatial_stability_query.h"
 
 namespace contactcert::python {
 namespace {
@@ -25,6 +28,24 @@ WithCertificate modes(const Spatial& s, const std::string& arith, double time_li
   return {queries::to_json(ans).dump(), ans.certificate_text};
 }
 
+/// `stability SPATIAL --wrench fx,fy,fz,tx,ty,tz [--certificate F]`: the --json text and the certificate's.
+WithCertificate stability(const Spatial& s, const std::string& wrench, const std::string& arith, double time_limit,
+                          const std::string& certificate) {
+  queries::SpatialStabilityOptions o;
+  o.common = {queries::parse_arith(arith, "--arith"), time_limit};
+  o.wrench = queries::parse_number_list(wrench, "--wrench", 6);
+  o.certificate = certificate;
+  const queries::SpatialStabilityAnswer ans = answer(queries::run_spatial_stability(s, o));
+  return {queries::to_json(ans).dump(), ans.certificate_text};
+}
+
+/// `cone SPATIAL --mode M`: the --json text.
+std::string cone(const Spatial& s, const std::string& mode, const std::string& arith, double time_limit) {
+  return queries::to_json(
+             answer(queries::run_spatial_cone(s, {{queries::parse_arith(arith, "--arith"), time_limit}, mode})))
+      .dump();
+}
+
 }  // namespace
 
 void bind_spatial(py::module_& m) {
@@ -36,7 +57,9 @@ void bind_spatial(py::module_& m) {
       .def_readonly("name", &Spatial::name)
       .def_readonly("text", &Spatial::text)
       .def_property_readonly("contacts", [](const Spatial& s) { return s.scene.contacts.size(); })
-      .def("modes", &modes, Release());
+      .def("modes", &modes, Release())
+      .def("stability", &stability, Release())
+      .def("cone", &cone, Release());
 }
 
 }  // namespace contactcert::python

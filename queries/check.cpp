@@ -8,6 +8,7 @@
 #include "checker/goal_check.h"
 #include "checker/modes_check.h"
 #include "checker/spatial_modes_check.h"
+#include "checker/spatial_stability_check.h"
 #include "checker/stability_check.h"
 #include "checker/ucp_check.h"
 #include "exact/sha256.h"
@@ -90,6 +91,10 @@ void check_spatial_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckRe
   c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
 }
 
+void check_spatial_stability(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
+  take(checker::check_spatial_stability_certificate(cert), c);
+}
+
 /// One certificate kind: whether it embeds a planar scene (else a UCP problem) and its checker, which sets the
 /// verdict, the reason and the details and, for a valid certificate, the view a person reads of its evidence (which
 /// makes it INVALID if the certificate's own readable numbers are not those of the checked evidence).
@@ -110,6 +115,7 @@ constexpr CertificateKind kKinds[] = {
     {"assembly_stability", true, check_assembly},
     {"assembly_modes", true, check_assembly_modes},
     {"spatial_modes", true, check_spatial_modes},
+    {"spatial_stability", true, check_spatial_stability},
 };
 
 const CertificateKind& certificate_kind(const exact::JsonInput& cert) {

@@ -51,10 +51,7 @@ json result_json(const StabilityAnswer& a, const StabilityResult<T>& r) {
     w["moving"]["contacts"] = contacts(r.moving.forces);
   }
   j["witness"] = w;
-  j["lps"] = r.lps;
-  j["modes_checked"] = r.modes_checked;
-  j["modes_kinematically_feasible"] = r.modes_kinematically_feasible;
-  j["mode_tree"] = {{"nodes", r.tree_nodes}, {"dead_prefixes", r.dead_prefixes}};
+  put_search_counts(j, r);
   if (!a.certificate.empty()) j["certificate"] = a.certificate;
   if (a.margin && !a.margin->nearest.empty())
     j["margin"] = {{"squared_radius", exact_json(a.margin->squared_radius)},

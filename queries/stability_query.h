@@ -48,6 +48,16 @@ solvers::StabilityOptions stability_options(exact::Arith arith, const exact::Dea
 /// InputError naming --certificate or --margin for either on the float path; a Limit past the time limit.
 Limited<StabilityAnswer> run_stability(const SceneInput& input, const StabilityQueryOptions& options);
 
+/// The counts of a verdict's search, planar or spatial: `lps`, `modes_checked`, `modes_kinematically_feasible`,
+/// `mode_tree` (`nodes`, `dead_prefixes`).
+template <class Result>
+void put_search_counts(json& j, const Result& r) {
+  j["lps"] = r.lps;
+  j["modes_checked"] = r.modes_checked;
+  j["modes_kinematically_feasible"] = r.modes_kinematically_feasible;
+  j["mode_tree"] = {{"nodes", r.tree_nodes}, {"dead_prefixes", r.dead_prefixes}};
+}
+
 /// The object `stability --wrench --json` prints.
 json to_json(const StabilityAnswer& answer);
 

@@ -6,7 +6,8 @@ same C++ code as the contactcert CLI; every result's to_dict() is the CLI's --js
 numbers are fractions.Fraction (inputs: int, str or Fraction). See
 docs/python.md. `python -m contactcert ARGS` runs the CLI itself.
 Assembly (several bodies: stability from rest, the quasistatic problem) likewise runs `contactcert assembly`;
-SpatialScene (a body in space) lists its contact modes as `contactcert modes` does;
+SpatialScene (a body in space) lists its contact modes as `contactcert modes` does and decides its strong
+stability as `contactcert stability` does;
 demo and bench run `contactcert demo` and `contactcert bench`.
 """
 
@@ -16,6 +17,7 @@ from ._demo_bench import Bench, Demo, bench, demo
 from ._design import Converted, Design, convert, design
 from ._motion import Motion, Simulation, Step
 from ._results import Certificate, CheckResult, Cone, Contact, Finger, Insertion, Modes, Region, Stability, UcpResult
+from ._results import SpatialStability
 from ._certificate import check
 from ._scene import Scene, Snap
 from ._spatial import SpatialScene
@@ -26,4 +28,4 @@ __all__ = ["BudgetExceeded", "Certificate", "CheckResult", "Cone", "Contact", "C
            "design", "generate_random", "generate_reduction", "Motion", "Simulation", "Step"]
 __all__ += ["Assembly", "AssemblyStability", "AssemblyUcp"]
 __all__ += ["Bench", "Demo", "bench", "demo"]
-__all__ += ["SpatialScene"]
+__all__ += ["SpatialScene", "SpatialStability"]

@@ -144,7 +144,26 @@ def _contacts(items: list[dict[str, Any]] | None) -> tuple[Contact, ...] | None:
                          _number(c["c_t"]), vec(c["force"]), _number(c["torque"])) for c in items)
 
 
-class Stability(Result):
+class _Witnessed(Result):
+    """A verdict with a moving solution where one exists (`witness.moving`): Stability and SpatialStability."""
+
+    @property
+    def wrench(self) -> Vector:
+        return exact(self._data["wrench"])
+
+    @property
+    def moving_mode(self) -> str | None:
+        m = self._data["witness"].get("moving")
+        return m["mode"] if m else None
+
+    @property
+    def acceleration(self) -> Vector | None:
+        """The moving solution's acceleration vdot (Fractions), or None."""
+        m = self._data["witness"].get("moving")
+        return exact(m["acceleration"]) if m and "acceleration" in m else None
+
+
+class Stability(_Witnessed):
     """Strong stability under one wrench (Balkcom-Trinkle 2002, section 7): the verdict with a resting and
     a moving solution where they exist."""
 
@@ -158,10 +177,6 @@ class Stability(Result):
     def verdict(self) -> str:
         """strongly_stable, weakly_stable or unstable."""
         return self._verdict if self._verdict is not None else str(self._data["verdict"])
-
-    @property
-    def wrench(self) -> Vector:
-        return exact(self._data["wrench"])
 
     @property
     def touching_fixels(self) -> tuple[int, ...]:
@@ -187,17 +202,6 @@ class Stability(Result):
         return _contacts(m["contacts"]) if m else None
 
     @property
-    def moving_mode(self) -> str | None:
-        m = self._data["witness"].get("moving")
-        return m["mode"] if m else None
-
-    @property
-    def acceleration(self) -> Vector | None:
-        """The moving solution's acceleration vdot (Fractions), or None."""
-        m = self._data["witness"].get("moving")
-        return exact(m["acceleration"]) if m and "acceleration" in m else None
-
-    @property
     def acceleration_approx(self) -> NDArray[Any] | None:
         m = self._data["witness"].get("moving")
         return floats(m["acceleration_approx"]) if m else None
@@ -213,6 +217,30 @@ class Stability(Result):
         w = ", ".join(str(x) for x in self.wrench)
         extra = f", moving mode {self.moving_mode!r}" if self.moving_mode else ""
         return f"Stability({self.verdict}, wrench=({w}), {len(self.touching_fixels)} touching fixels{extra})"
+
+
+class SpatialStability(_Witnessed):
+    """Strong stability of a body in space under one wrench g = (force, torque about the com) (issue 34): the
+    verdict with a resting and a moving solution (its acceleration is (a, alpha)) where they exist."""
+
+    def __init__(self, data: dict[str, Any], certificate: Certificate | None = None) -> None:
+        super().__init__(data)
+        self.certificate = certificate  # a Certificate when one was written
+
+    @property
+    def verdict(self) -> str:
+        """strongly_stable, weakly_stable or unstable."""
+        return str(self._data["verdict"])
+
+    @property
+    def resting_forces(self) -> tuple[Vector, ...] | None:
+        """The world contact forces balancing g at rest, one (Fraction) 3-vector per contact, or None."""
+        f = self._data["witness"].get("resting_forces")
+        return tuple(exact(c) for c in f) if f is not None else None
+
+    def __repr__(self) -> str:
+        extra = f", moving mode {self.moving_mode!r}" if self.moving_mode else ""
+        return f"SpatialStability({self.verdict}, wrench={tuple(str(x) for x in self.wrench)}{extra})"
 
 
 class Modes(Result):

@@ -19,13 +19,20 @@ json strings(const Vec<Q>& v) {
 
 }  // namespace
 
-json stability_certificate_json(const std::string& scene_text, const Vec<Q>& g, const StabilityResult<Q>& r) {
+json exact_strings(const Vec<Q>& v) { return strings(v); }
+
+json stability_certificate_head(const char* kind, StabilityVerdict v, const std::string& scene_text, const Vec<Q>& g) {
   json j;
-  j["kind"] = "stability";
-  j["verdict"] = verdict_name(r.verdict);
+  j["kind"] = kind;
+  j["verdict"] = verdict_name(v);
   j["wrench"] = strings(g);
   j["scene"] = scene_text;
   j["problem_sha256"] = exact::JsonInput::parse(scene_text, "scene").canonical_sha256();
+  return j;
+}
+
+json stability_certificate_json(const std::string& scene_text, const Vec<Q>& g, const StabilityResult<Q>& r) {
+  json j = stability_certificate_head("stability", r.verdict, scene_text, g);
   if (r.has_resting)
     j["resting"] = {{"forces", strings(r.resting_forces)}};
   else

@@ -18,6 +18,13 @@
 
 namespace contactcert::solvers {
 
+/// The members a verdict's certificate starts with (also "spatial_stability", solvers/spatial/spatial_stability.h):
+/// "kind", "verdict", "wrench" and "scene" (exact strings), "problem_sha256" (the scene's canonical digest).
+nlohmann::ordered_json stability_certificate_head(const char* kind, StabilityVerdict v, const std::string& scene_text,
+                                                  const Vec<Q>& g);
+/// A vector as a JSON array of exact strings.
+nlohmann::ordered_json exact_strings(const Vec<Q>& v);
+
 /// The certificate as a JSON value.
 nlohmann::ordered_json stability_certificate_json(const std::string& scene_text, const Vec<Q>& g,
                                                   const StabilityResult<Q>& result);

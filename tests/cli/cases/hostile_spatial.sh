@@ -1,6 +1,6 @@
 # `modes` on a spatial scene (issue 34; docs/formats.md section 3b), sourced by hostile_inputs.sh: the modes of a body
 # in space with their certificate, the reader's refusals (exit 2 naming the field), the options that do not apply
-# refused, the budgets (exit 3 with what was covered), and `stability`, not built for a spatial scene, refused.
+# refused, the budgets (exit 3 with what was covered), and `stability` with a planar wrench refused.
 
 sd=$work/spatial
 mkdir -p "$sd"
@@ -19,7 +19,7 @@ check 2 '--unions' modes "$box" --unions
 check 2 '--table2' modes "$box" --table2 printed
 check 2 '--snap' modes "$box" --snap 1e-9
 check 2 '--arith' modes "$box" --arith float
-check 2 'strong stability of a spatial scene is not built yet' stability "$box" --wrench 0,0,0
+check 2 'expected 6 comma-separated numbers' stability "$box" --wrench 0,0,0
 # the reader: each defect names its field
 spatial_case() {  # spatial_case NAME PYTHON-EDIT EXPECTED-TEXT
   python3 -c "import json, sys; c = json.load(open(sys.argv[1])); $2; json.dump(c, open(sys.argv[2], 'w'))" "$box" "$sd/$1.json"

@@ -17,6 +17,7 @@
 #include "geometry/scene_json.h"
 #include "runtime/scenes.h"
 #include "solvers/stability/contact_modes.h"
+#include "tests/solvers/spatial/extruded_scene.h"
 
 namespace contactcert::solvers::spatial {
 namespace {
@@ -246,20 +247,7 @@ TEST(SpatialModes, ExtrudedPlanarScenesHaveThePlanarModes) {
     const geometry::PlanarScene ps = geometry::load_planar_scene(runtime::bundled_scenes_dir() + "/" + name + ".json");
     std::set<std::string> planar;
     for (const ModeString& m : contact_modes(ps).tree.modes) planar.insert(m.text());
-    SpatialScene s;
-    s.body.mass = 1;
-    s.body.com = {ps.workpiece.com.x, ps.workpiece.com.y, Q(0)};
-    for (const geometry::Fixel& f : ps.fixels)
-      for (const int z : {1, -1}) {
-        SpatialContact c;
-        const geometry::Point2 p = f.frame.point, n = f.frame.normal;
-        c.point = {p.x, p.y, Q(z)};
-        c.normal = {n.x, n.y, Q(0)};
-        c.t1 = {-n.y, n.x, Q(0)};
-        c.t2 = {Q(0), Q(0), n.x * n.x + n.y * n.y};
-        c.edges = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-        s.contacts.push_back(std::move(c));
-      }
+    const SpatialScene s = extruded(ps, /*mu_of_fixels=*/false);
     std::set<std::string> in_plane;
     for (const std::string& m : spatial_modes(spatial_model(s)).modes) {
       std::string p;

@@ -1,0 +1,132 @@
+#include "checker/spatial_rows.h"
+
+#include <algorithm>
+
+namespace contactcert::checker::spatial_check {
+
+using exact::Q;
+using exact::Vec;
+using geometry::Vec3;
+using table2_check::Rows;
+
+namespace {
+
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+}  // namespace
+
+std::vector<Seen> seen(const geometry::SpatialScene& s) {
+  std::vector<Seen> out;
+  for (const auto& c : s.contacts) {
+    Seen x{
+        {c.point[0] - s.body.com[0], c.point[1] - s.body.com[1], c.point[2] - s.body.com[2]}, c.normal, c.t1, c.t2, {}};
+    for (const auto& [u, v] : c.edges)
+      x.d.push_back({u * c.t1[0] + v * c.t2[0], u * c.t1[1] + v * c.t2[1], u * c.t1[2] + v * c.t2[2]});
+    out.push_back(std::move(x));
+  }
+  return out;
+}
+
+/// Contact i's frame as the checker relies on it, verified rather than taken from the reader: t1 and t2 non-zero,
+/// orthogonal to the normal and to each other, t1 x t2 along +normal (a right-handed tangent frame, whichever way
+/// the reader chose or derived it). Empty if so, else the reason.
+std::string frame_fault(const std::vector<Seen>& cs) {
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    const Seen& c = cs[i];
+    const bool zero = sgn(geometry::dot(c.t1, c.t1)) == 0 || sgn(geometry::dot(c.t2, c.t2)) == 0;
+    if (zero || sgn(geometry::dot(c.t1, c.n)) != 0 || sgn(geometry::dot(c.t2, c.n)) != 0 ||
+        sgn(geometry::dot(c.t1, c.t2)) != 0 || sgn(geometry::dot(geometry::cross(c.t1, c.t2), c.n)) <= 0)
+      return "contact " + std::to_string(i) + "'s tangent frame is not a right-handed frame orthogonal to its normal";
+  }
+  return {};
+}
+
+std::string alphabet(std::size_t m) {
+  std::string s = "sf";
+  for (std::size_t j = 0; j < 2 * m; ++j) s.push_back(static_cast<char>('A' + j));
+  return s;
+}
+
+/// The row u . (a + alpha x r) = u . a + (r x u) . alpha on vdot's six columns, by its non-zero entries.
+std::vector<Rows::Entry> along(const Seen& c, const Vec3& u) {
+  const Vec3 m = geometry::cross(c.r, u);
+  std::vector<Rows::Entry> e;
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (sgn(u[i]) != 0) e.push_back({i, u[i]});
+    if (sgn(m[i]) != 0) e.push_back({3 + i, m[i]});
+  }
+  std::sort(e.begin(), e.end(), [](const Rows::Entry& x, const Rows::Entry& y) { return x.col < y.col; });
+  return e;
+}
+
+/// The rows of a prefix in the certificate's layout: per letter its directions u (rows u . A vdot) and which of them
+/// are strict (one slack sigma > 0 each, after vdot's six columns).
+Rows prefix_rows(const std::vector<Seen>& cs, const std::string& prefix) {
+  Rows R;
+  R.columns.assign(6, Rows::Sign::kFree);
+  auto add = [&](const Seen& c, const Vec3& u, bool strict) {
+    R.rows.push_back(along(c, u));
+    if (!strict) return;
+    R.rows.back().push_back({R.columns.size(), Q(-1)});
+    R.columns.push_back(Rows::Sign::kPositive);
+  };
+  for (std::size_t i = 0; i < prefix.size(); ++i) {
+    const Seen& c = cs[i];
+    const std::size_t m = c.d.size(), L = static_cast<std::size_t>(prefix[i] - 'A'), j = L / 2;
+    if (prefix[i] == 's') {
+      add(c, c.n, true);
+      continue;
+    }
+    add(c, c.n, false);
+    if (prefix[i] == 'f') {
+      add(c, c.t1, false);
+      add(c, c.t2, false);
+    } else if (L % 2 == 0) {
+      add(c, minus(c.d[(j + m - 1) % m], c.d[j]), true);
+      add(c, minus(c.d[(j + 1) % m], c.d[j]), true);
+    } else {
+      add(c, minus(c.d[(j + 1) % m], c.d[j]), false);
+      add(c, minus(c.d[(j + m - 1) % m], c.d[j]), true);
+      add(c, minus(c.d[(j + 2) % m], c.d[(j + 1) % m]), true);
+    }
+  }
+  return R;
+}
+
+/// Whether vdot = (a, alpha) realises the letters, read directly from the contact point's acceleration.
+bool realises(const std::vector<Seen>& cs, const std::string& mode, const Vec<Q>& vdot) {
+  const Vec3 a{vdot(0), vdot(1), vdot(2)}, alpha{vdot(3), vdot(4), vdot(5)};
+  for (std::size_t i = 0; i < mode.size(); ++i) {
+    const Seen& c = cs[i];
+    const Vec3 w = geometry::cross(alpha, c.r);
+    const Vec3 acc{a[0] + w[0], a[1] + w[1], a[2] + w[2]};
+    const int an = sgn(geometry::dot(c.n, acc));
+    const bool still = sgn(acc[0]) == 0 && sgn(acc[1]) == 0 && sgn(acc[2]) == 0;
+    if (mode[i] == 's' || mode[i] == 'f') {
+      if (mode[i] == 's' ? an <= 0 : !still) return false;
+      continue;
+    }
+    if (an != 0 || still) return false;
+    std::vector<Q> v;
+    for (const Vec3& d : c.d) v.push_back(geometry::dot(d, acc));
+    const Q low = *std::min_element(v.begin(), v.end());
+    const std::size_t m = c.d.size(), L = static_cast<std::size_t>(mode[i] - 'A'), j = L / 2;
+    for (std::size_t e = 0; e < m; ++e) {
+      const bool active = e == j || (L % 2 == 1 && e == (j + 1) % m);
+      if ((v[e] == low) != active) return false;
+    }
+  }
+  return true;
+}
+
+std::string read_letters(const exact::JsonInput& j, const std::vector<Seen>& cs, bool whole) {
+  const std::string text = j.string();
+  bool ok = whole ? text.size() == cs.size() : !text.empty() && text.size() <= cs.size();
+  for (std::size_t i = 0; ok && i < text.size(); ++i) ok = alphabet(cs[i].d.size()).find(text[i]) != std::string::npos;
+  if (!ok)
+    j.fail(std::string(whole ? "a mode: one letter per contact (" : "a prefix: 1 to ") + std::to_string(cs.size()) +
+           (whole ? ")" : " letters") + ", each s, f or A.. (2m sliding letters for m pyramid edges)");
+  return text;
+}
+
+}  // namespace contactcert::checker::spatial_check

@@ -1,0 +1,172 @@
+#include "checker/spatial_stability_check.h"
+
+#include <algorithm>
+
+#include "checker/mode_coverage.h"
+#include "checker/sparse_motzkin_reader.h"
+#include "checker/spatial_rows.h"
+
+namespace contactcert::checker {
+namespace {
+
+using exact::Q;
+using exact::Vec;
+using geometry::Vec3;
+using namespace spatial_check;  // the checker's own reading of a body in space
+using solvers::StabilityVerdict;
+using solvers::verdict_name;
+using table2_check::Rows;
+
+/// The edges on which a letter may carry force (the header's table), in the certificate's column order.
+std::vector<std::size_t> allowed(std::size_t m, char L) {
+  std::vector<std::size_t> e;
+  if (L == 'f')
+    for (std::size_t j = 0; j < m; ++j) e.push_back(j);
+  if (L == 'f' || L == 's') return e;
+  const std::size_t j = static_cast<std::size_t>(L - 'A') / 2;
+  e.push_back(j);
+  if ((L - 'A') % 2 == 1) e.push_back((j + 1) % m);
+  return e;
+}
+
+/// The body's mass matrix row d (0..5) on vdot's six columns.
+std::vector<Rows::Entry> mass_row(const geometry::SpatialBody& b, std::size_t d) {
+  std::vector<Rows::Entry> e;
+  if (d < 3) return {{d, b.mass}};
+  for (std::size_t c = 0; c < 3; ++c)
+    if (sgn(b.inertia[d - 3][c]) != 0) e.push_back({3 + c, b.inertia[d - 3][c]});
+  return e;
+}
+
+/// The rows of a mode for g (zero_acceleration: of the resting solutions, mode f..f) in the certificate's layout:
+/// columns vdot and its strict slacks (prefix_rows), then each contact's allowed weights (>= 0); rows the kinematic
+/// rows (b = 0), then the six Newton-Euler rows M vdot - sum beta (u, r x u) = g.
+Rows motion_rows(const geometry::SpatialBody& body, const std::vector<Seen>& cs, const std::string& mode,
+                 const Vec<Q>& g, bool zero_acceleration) {
+  Rows R;
+  if (!zero_acceleration) R = prefix_rows(cs, mode);
+  const std::size_t first = R.rows.size();
+  for (std::size_t d = 0; d < 6; ++d)
+    R.rows.push_back(zero_acceleration ? std::vector<Rows::Entry>{} : mass_row(body, d));
+  for (std::size_t i = 0; i < cs.size(); ++i)
+    for (const std::size_t j : allowed(cs[i].d.size(), mode[i])) {
+      const Vec3 u{cs[i].n[0] + cs[i].d[j][0], cs[i].n[1] + cs[i].d[j][1], cs[i].n[2] + cs[i].d[j][2]};
+      const std::size_t col = R.columns.size();
+      R.columns.push_back(Rows::Sign::kNonNegative);
+      for (const Rows::Entry& e : along(cs[i], u)) R.rows[first + e.col].push_back({col, -e.value});
+    }
+  R.b = Vec<Q>::Zero(static_cast<Eigen::Index>(R.rows.size()));
+  R.b.tail(6) = g;
+  return R;
+}
+
+/// Why weights beta (every edge of every contact) with acceleration vdot are not a solution in `mode`: a negative
+/// weight, a weight the letter does not allow, or Newton-Euler violated. Empty if they are one.
+std::string motion_fault(const geometry::SpatialBody& body, const std::vector<Seen>& cs, const std::string& mode,
+                         const Vec<Q>& g, const Vec<Q>& vdot, const Vec<Q>& beta) {
+  Vec<Q> residual = -g;  // M vdot - sum beta (u, r x u) - g, entry by entry
+  for (std::size_t d = 0; d < 6; ++d)
+    for (const Rows::Entry& e : mass_row(body, d))
+      residual(static_cast<Eigen::Index>(d)) += e.value * vdot(static_cast<Eigen::Index>(e.col));
+  Eigen::Index at = 0;
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    const std::vector<std::size_t> ok = allowed(cs[i].d.size(), mode[i]);
+    for (std::size_t j = 0; j < cs[i].d.size(); ++j, ++at) {
+      const int s = sgn(beta(at));
+      if (s < 0) return "a negative weight at contact " + std::to_string(i);
+      if (s == 0) continue;
+      if (std::find(ok.begin(), ok.end(), j) == ok.end())
+        return "contact " + std::to_string(i) + " carries force on edge " + std::to_string(j) + ", which letter " +
+               mode[i] + " does not allow";
+      const Vec3 u{cs[i].n[0] + cs[i].d[j][0], cs[i].n[1] + cs[i].d[j][1], cs[i].n[2] + cs[i].d[j][2]};
+      for (const Rows::Entry& e : along(cs[i], u)) residual(static_cast<Eigen::Index>(e.col)) -= beta(at) * e.value;
+    }
+  }
+  for (Eigen::Index d = 0; d < 6; ++d)
+    if (sgn(residual(d)) != 0) return "Newton-Euler does not hold (M vdot != g + the contact wrenches)";
+  return {};
+}
+
+StabilityVerdict read_verdict(const exact::JsonInput& v) {
+  const std::string s = v.string();
+  for (const StabilityVerdict x :
+       {StabilityVerdict::kStronglyStable, StabilityVerdict::kWeaklyStable, StabilityVerdict::kUnstable})
+    if (s == verdict_name(x)) return x;
+  v.fail("expected strongly_stable, weakly_stable or unstable");
+}
+
+}  // namespace
+
+StabilityCertificateCheck check_spatial_stability_certificate(const exact::JsonInput& c) {
+  c.expect_keys({"kind", "verdict", "wrench", "scene", "problem_sha256", "resting", "moving", "proofs"});
+  const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
+  const geometry::SpatialScene scene = geometry::read_spatial_scene(embedded);
+  const std::vector<Seen> cs = seen(scene);
+  if (c.at("problem_sha256").string() != embedded.canonical_sha256())
+    return {false, "problem_sha256 is not the digest of the embedded scene"};
+  if (const std::string fault = frame_fault(cs); !fault.empty()) return {false, fault};
+  const StabilityVerdict claimed = read_verdict(c.at("verdict"));
+  const Vec<Q> g = c.at("wrench").rational_vector(6);
+  const std::size_t k = cs.size();
+  std::size_t edges = 0;
+  for (const Seen& s : cs) edges += s.d.size();
+  const std::string sticking(k, 'f');
+  const Vec<Q> zero = Vec<Q>::Zero(6);
+
+  // Resting: weights that balance g, or a Motzkin vector of the resting rows.
+  const exact::JsonInput resting = c.at("resting");
+  bool rests = false;
+  if (const auto w = resting.find("weights")) {
+    resting.expect_keys({"weights"});
+    if (std::string why = motion_fault(scene.body, cs, sticking, g, zero, w->rational_vector(edges)); !why.empty())
+      return {false, "the resting forces: " + why};
+    rests = true;
+  } else {
+    resting.expect_keys({"motzkin"});
+    const Rows rows = motion_rows(scene.body, cs, sticking, g, true);
+    if (!table2_check::motzkin_holds(rows, read_sparse_motzkin(resting.at("motzkin"), rows.rows.size())))
+      return {false, "the certificate that no resting solution exists does not verify"};
+  }
+  // Moving: a solution with vdot != 0, or (beside a resting solution) proofs covering every moving mode.
+  bool moves = false;
+  if (const auto m = c.find("moving")) {
+    m->expect_keys({"mode", "weights", "acceleration"});
+    const std::string mode = read_letters(m->at("mode"), cs, true);
+    const Vec<Q> vdot = m->at("acceleration").rational_vector(6);
+    if (vdot == zero) return {false, "the moving witness does not move"};
+    if (!realises(cs, mode, vdot)) return {false, "the moving witness's acceleration does not realise mode " + mode};
+    if (std::string why = motion_fault(scene.body, cs, mode, g, vdot, m->at("weights").rational_vector(edges));
+        !why.empty())
+      return {false, "the moving witness: " + why};
+    moves = true;
+  }
+  const exact::JsonInput proofs = c.at("proofs");
+  if (proofs.size() > 0 && (!rests || moves))
+    return {false, "the proofs are extra entries: they are evidence only of a strongly stable verdict"};
+  if (rests && !moves) {
+    std::vector<std::string> dead, leaves{sticking};
+    for (const exact::JsonInput& p : proofs.elements()) {
+      p.expect_keys({"mode", "kinematic", "motzkin"});
+      const bool kinematic = p.at("kinematic").boolean();
+      std::string mode = read_letters(p.at("mode"), cs, !kinematic);
+      if (!kinematic && mode == sticking) return {false, "a proof for f..f is not evidence beside a resting solution"};
+      const Rows rows = kinematic ? prefix_rows(cs, mode) : motion_rows(scene.body, cs, mode, g, false);
+      if (!table2_check::motzkin_holds(rows, read_sparse_motzkin(p.at("motzkin"), rows.rows.size())))
+        return {false, std::string(kinematic ? "the kinematic proof for prefix " : "the proof for mode ") + mode +
+                           " does not verify"};
+      (kinematic ? dead : leaves).push_back(std::move(mode));
+    }
+    if (auto gap = mode_coverage(
+            k, [&](std::size_t i) { return alphabet(cs[i].d.size()); }, dead, leaves))
+      return {false, gap->kind == CoverageGap::Kind::kMissing
+                         ? "no proof covers the moving modes that start with '" + gap->prefix + "'"
+                         : coverage_gap_text(*gap)};
+  }
+  const StabilityVerdict v = !rests  ? StabilityVerdict::kUnstable
+                             : moves ? StabilityVerdict::kWeaklyStable
+                                     : StabilityVerdict::kStronglyStable;
+  if (v != claimed) return {false, std::string("the evidence supports ") + verdict_name(v)};
+  return {true, std::string("every vector of the evidence verifies exactly: ") + verdict_name(v)};
+}
+
+}  // namespace contactcert::checker

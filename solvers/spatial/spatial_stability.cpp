@@ -1,0 +1,171 @@
+#include "solvers/spatial/spatial_stability.h"
+
+#include <nlohmann/json.hpp>
+
+#include "exact/input_error.h"
+#include "solvers/stability/sparse_motzkin.h"
+#include "solvers/stability/stability_certificate.h"
+
+namespace contactcert::solvers::spatial {
+
+using Index = Eigen::Index;
+using exact::StrictStatus;
+
+std::vector<std::size_t> force_edges(std::size_t m, char L) {
+  if (L == 's') return {};
+  std::vector<std::size_t> out;
+  if (L == 'f') {
+    for (std::size_t j = 0; j < m; ++j) out.push_back(j);
+    return out;
+  }
+  const std::size_t j = static_cast<std::size_t>(L - 'A') / 2;
+  out.push_back(j);
+  if ((L - 'A') % 2 == 1) out.push_back((j + 1) % m);
+  return out;
+}
+
+exact::SparseStrictSystem<Q> spatial_motion_system(const geometry::SpatialBody& body, const SpatialModel& model,
+                                                   const std::string& mode, bool zero_acceleration) {
+  exact::SparseStrictSystem<Q> sys;
+  auto column = [&](bool free, bool strict) {
+    sys.is_free.push_back(free);
+    sys.strict.push_back(strict);
+    return sys.cols++;
+  };
+  auto put = [&](Index row, Index col, const Q& v) {
+    if (sgn(v) != 0) sys.entries.push_back({row, col, v});
+  };
+  if (!zero_acceleration) {
+    for (Index c = 0; c < 6; ++c) column(true, false);
+    for (std::size_t i = 0; i < mode.size(); ++i)
+      for (const SignRow& row : letter_rows(model.contacts[i], mode[i])) {
+        for (Index c = 0; c < 6; ++c) put(sys.rows, c, row.f(c));
+        if (row.strict) put(sys.rows, column(false, true), Q(-1));  // f . vdot - sigma = 0, sigma > 0
+        ++sys.rows;
+      }
+    // M vdot: m a and I alpha.
+    for (Index d = 0; d < 3; ++d) put(sys.rows + d, d, body.mass);
+    for (Index r = 0; r < 3; ++r)
+      for (Index c = 0; c < 3; ++c) put(sys.rows + 3 + r, 3 + c, body.inertia[r][c]);
+  }
+  // - sum beta w(n + d) on the six dynamics rows.
+  for (std::size_t i = 0; i < mode.size(); ++i) {
+    const SpatialModel::Contact& k = model.contacts[i];
+    for (const std::size_t j : force_edges(k.d.size(), mode[i])) {
+      const Index col = column(false, false);
+      const Vec<Q> w = k.n + k.d[j];
+      for (Index d = 0; d < 6; ++d) put(sys.rows + d, col, -w(d));
+    }
+  }
+  sys.rows += 6;
+  return sys;
+}
+
+namespace {
+
+// The weights of every edge of every contact (zero off the mode's force_edges) read off a point x of the mode's
+// system, whose beta columns are its last ones.
+Vec<Q> weights_of(const SpatialModel& model, const std::string& mode, const Vec<Q>& x) {
+  std::size_t total = 0, used = 0;
+  for (std::size_t i = 0; i < mode.size(); ++i) {
+    total += model.contacts[i].d.size();
+    used += force_edges(model.contacts[i].d.size(), mode[i]).size();
+  }
+  Vec<Q> w = Vec<Q>::Zero(static_cast<Index>(total));
+  Index at = x.size() - static_cast<Index>(used), base = 0;
+  for (std::size_t i = 0; i < mode.size(); ++i) {
+    const std::size_t m = model.contacts[i].d.size();
+    for (const std::size_t j : force_edges(m, mode[i])) w(base + static_cast<Index>(j)) = x(at++);
+    base += static_cast<Index>(m);
+  }
+  return w;
+}
+
+}  // namespace
+
+SpatialStability spatial_stability(const geometry::SpatialScene& scene, const Vec<Q>& g,
+                                   const SpatialModeOptions& options) {
+  const SpatialModel model = spatial_model(scene);
+  const std::string sticking(model.contacts.size(), 'f');
+  SpatialStability out;
+  auto solve = [&](const std::string& mode, bool resting) {
+    if (options.deadline.expired())
+      throw exact::BudgetExceeded("spatial stability: " + options.deadline.reached_text(),
+                                  std::to_string(out.modes_checked) + " moving modes checked");
+    const exact::SparseStrictSystem<Q> sys = spatial_motion_system(scene.body, model, mode, resting);
+    Vec<Q> b = Vec<Q>::Zero(sys.rows);
+    b.tail(6) = g;
+    exact::StrictFeasibility<Q> f = exact::StrictSolver<Q>(sys, options.arith).solve(b);
+    out.lps += f.lps;
+    return f;
+  };
+  auto r = solve(sticking, true);
+  out.has_resting = r.status == StrictStatus::kFeasible;
+  if (out.has_resting)
+    out.resting_weights = weights_of(model, sticking, r.x);
+  else
+    out.resting_motzkin = std::move(r.motzkin);
+
+  SpatialModeTree tree = spatial_modes(model, options);
+  out.lps += tree.lps;
+  out.tree_nodes = tree.nodes;
+  out.dead_prefixes = static_cast<long>(tree.dead.size());
+  if (out.has_resting)
+    for (SpatialDeadPrefix& d : tree.dead) out.proofs.push_back({std::move(d.prefix), true, std::move(d.motzkin)});
+  // Every feasible moving mode but f..f in tree order until one admits g; f..f last, only without a resting
+  // solution (then its solutions have vdot != 0).
+  std::vector<std::string> moving;
+  for (std::string& m : tree.modes)
+    if (m != sticking) moving.push_back(std::move(m));
+  out.modes_kinematically_feasible = static_cast<long>(moving.size());
+  if (!out.has_resting) moving.push_back(sticking);
+  for (const std::string& m : moving) {
+    ++out.modes_checked;
+    auto f = solve(m, false);
+    bool still = true;
+    for (Index d = 0; d < 6 && f.status == StrictStatus::kFeasible; ++d) still = still && sgn(f.x(d)) == 0;
+    if (f.status == StrictStatus::kFeasible && !still) {
+      out.has_moving = true;
+      out.moving = {m, weights_of(model, m, f.x), f.x.head(6)};
+      break;
+    }
+    if (out.has_resting) out.proofs.push_back({m, false, std::move(f.motzkin)});
+  }
+  if (out.has_moving || !out.has_resting) out.proofs.clear();  // evidence only of a strongly stable verdict
+  out.verdict = !out.has_resting ? StabilityVerdict::kUnstable
+                : out.has_moving ? StabilityVerdict::kWeaklyStable
+                                 : StabilityVerdict::kStronglyStable;
+  return out;
+}
+
+std::vector<geometry::Vec3> contact_forces(const geometry::SpatialScene& scene, const Vec<Q>& weights) {
+  std::vector<geometry::Vec3> out;
+  Index at = 0;
+  for (const geometry::SpatialContact& c : scene.contacts) {
+    geometry::Vec3 f{Q(0), Q(0), Q(0)};
+    for (std::size_t j = 0; j < c.edges.size(); ++j, ++at) {
+      const geometry::Vec3 d = c.edge(j);
+      for (std::size_t x = 0; x < 3; ++x) f[x] += weights(at) * (c.normal[x] + d[x]);
+    }
+    out.push_back(f);
+  }
+  return out;
+}
+
+std::string spatial_stability_certificate(const std::string& scene_text, const Vec<Q>& g, const SpatialStability& r) {
+  using json = nlohmann::ordered_json;
+  json j = stability_certificate_head("spatial_stability", r.verdict, scene_text, g);
+  j["resting"] = r.has_resting ? json{{"weights", exact_strings(r.resting_weights)}}
+                               : json{{"motzkin", sparse_motzkin_json(r.resting_motzkin)}};
+  if (r.has_moving)
+    j["moving"] = {{"mode", r.moving.mode},
+                   {"weights", exact_strings(r.moving.weights)},
+                   {"acceleration", exact_strings(r.moving.acceleration)}};
+  json proofs = json::array();
+  for (const SpatialModeProof& p : r.proofs)
+    proofs.push_back({{"mode", p.mode}, {"kinematic", p.kinematic}, {"motzkin", sparse_motzkin_json(p.motzkin)}});
+  j["proofs"] = std::move(proofs);
+  return j.dump(1) + "\n";
+}
+
+}  // namespace contactcert::solvers::spatial

@@ -1,0 +1,52 @@
+# Forged spatial_stability certificates (issue 34), sourced by forged_certificates.sh: the checker
+# (checker/spatial_stability_check.h) rebuilds every row from the embedded spatial scene, so a dropped proof, a changed
+# Motzkin weight or resting force, a witness that does not move, forces its letter does not allow, a claimed verdict
+# the evidence does not support, or a changed scene are INVALID (exit 2) and the genuine certificates VALID.
+
+fz=$work/forged_stab34
+mkdir -p "$fz"
+"$cc" stability "$s/spatial_box_on_plane.json" --wrench 0,0,-1,0,0,0 --certificate "$fz/rest.json" > /dev/null
+"$cc" stability "$s/spatial_box_on_plane.json" --wrench 3/5,0,-1,0,0,0 --certificate "$fz/slide.json" > /dev/null
+check 0 'spatial_stability certificate is VALID' check "$fz/rest.json"
+check 0 'spatial_stability certificate is VALID' check "$fz/slide.json"
+python3 - "$fz" <<'PY'
+import json, sys
+out = sys.argv[1]
+# one forgery a line: its name, the certificate it edits (rest or slide), a statement on that certificate's dict c
+spec = r"""
+no_proof rest del c["proofs"][-1]
+no_dead rest del c["proofs"][0]
+weight rest m = c["proofs"][-1]["motzkin"]; m[0][1] = str(-int(m[0][1]))
+resting rest c["resting"]["weights"][0] = "1"
+negative rest c["resting"]["weights"][1] = "-1/5"; c["resting"]["weights"][0] = "2/5"
+claim rest c["verdict"] = "weakly_stable"
+sticking rest c["proofs"].append({"mode": "ffff", "kinematic": False, "motzkin": []})
+still slide c["moving"]["acceleration"] = ["0"] * 6
+letter slide c["moving"]["weights"][0] = "1/8"
+farkas slide m = c["resting"]["motzkin"]; m[0][1] = str(-int(m[0][1]))
+scene slide c["scene"] = c["scene"].replace('"mu": "1/2"', '"mu": "1/3"')
+extra slide c["proofs"] = [{"mode": "s", "kinematic": True, "motzkin": []}]
+"""
+for line in spec.strip().splitlines():
+    name, base, statement = line.split(" ", 2)
+    c = json.load(open(f"{out}/{base}.json"))
+    exec(statement)
+    json.dump(c, open(f"{out}/{name}.json", "w"))
+PY
+# each forgery and the reason check gives (exit 2)
+while IFS='|' read -r name reason; do
+  check 2 "$reason" check "$fz/$name.json"
+done <<'CASES'
+no_proof|no proof covers the moving modes
+no_dead|no proof covers the moving modes
+weight|does not verify
+resting|the resting forces: Newton-Euler does not hold
+negative|the resting forces: a negative weight
+claim|the evidence supports strongly_stable
+sticking|a proof for f..f is not evidence
+still|the moving witness does not move
+letter|which letter E does not allow
+farkas|no resting solution exists does not verify
+scene|problem_sha256 is not the digest
+extra|the proofs are extra entries
+CASES
