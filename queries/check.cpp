@@ -10,6 +10,7 @@
 #include "checker/spatial_modes_check.h"
 #include "checker/stability_check.h"
 #include "checker/ucp_check.h"
+#include "checker/uniqueness_check.h"
 #include "exact/sha256.h"
 #include "queries/assembly_check_view.h"
 #include "queries/check_views.h"
@@ -90,6 +91,12 @@ void check_spatial_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckRe
   c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
 }
 
+void check_uniqueness(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
+  const checker::UniquenessCertificateCheck u = checker::check_uniqueness_certificate(cert);
+  take(u, c);
+  c.details = {{"verdict", u.verdict}, {"solution_modes", u.solution_modes}, {"dead_prefixes", u.dead}};
+}
+
 /// One certificate kind: whether it embeds a planar scene (else a UCP problem) and its checker, which sets the
 /// verdict, the reason and the details and, for a valid certificate, the view a person reads of its evidence (which
 /// makes it INVALID if the certificate's own readable numbers are not those of the checked evidence).
@@ -102,6 +109,7 @@ struct CertificateKind {
 constexpr CertificateKind kKinds[] = {
     {"ucp_jammed", false, check_ucp},
     {"ucp_solvable", false, check_ucp},
+    {"motion_uniqueness", false, check_uniqueness},
     {"stability", true, check_stability},
     {"modes", true, check_modes},
     {"cone_empty", true, check_cone},
