@@ -141,10 +141,10 @@ MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith 
   }
   // Not unique: every solution mode's optima, in the modes' order, as the evidence.
   out.motions.clear(), out.modes.clear(), out.unbounded = false;
-  ev.witnesses.clear();
+  ev.witnesses.clear(), ev.bounds.clear();
   for (std::size_t i = 0; i < count; ++i) bound(i);
   out.status = UniquenessStatus::kNotUnique;
-  if (evidence) ev.bounds.clear(), out.evidence = std::move(ev);
+  if (evidence) out.evidence = std::move(ev);
   return out;
 }
 

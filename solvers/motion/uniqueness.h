@@ -29,8 +29,9 @@ enum class UniquenessStatus {
 const char* uniqueness_name(UniquenessStatus s);
 
 /// What proves the verdict (uniqueness_certificate.h writes it down): the prefix tree's dead prefixes and solution
-/// modes' points; for `unique`, per bounded solution mode and q_dot component k the optimal duals y of min q_dot_k
-/// (low) and of min -q_dot_k (high) over its face; for `not_unique`, two solutions (mode, u, x) with different q_dot.
+/// modes' points; per bounded solution mode (`unique`: the widest ones; `not_unique`: all) and q_dot component k the
+/// optimal duals y of min q_dot_k (low) and of min -q_dot_k (high) over its face; for `not_unique`, the solutions
+/// (mode, u, x) with distinct q_dot found (at least two).
 struct UniquenessEvidence {
   struct Bound {
     std::size_t mode = 0;  ///< index in solution_modes

@@ -20,13 +20,13 @@ json vectors_json(const std::vector<Vec<Q>>& v) {
 
 std::string uniqueness_certificate(const ucp::UcpProblem& problem, const MotionUniqueness& u,
                                    const std::string& assembly_text) {
-  if (!u.evidence || u.status == UniquenessStatus::kUnknown) return "";
+  if (!u.evidence || u.status == UniquenessStatus::kUnknown || u.solution_modes.empty()) return "";
   const UniquenessEvidence& ev = *u.evidence;
   json j = ucp::certificate_header("motion_uniqueness", 1, problem, assembly_text);
   const bool unique = u.status == UniquenessStatus::kUnique;
   j["verdict"] = uniqueness_name(u.status);
   if (unique) {
-    j["motion"] = u.motions.empty() ? json::array() : ucp::rationals_json(u.motions[0]);
+    j["motion"] = ucp::rationals_json(u.motions[0]);
     json dead = json::array();
     for (const ucp::PrefixEvidence::Dead& d : ev.tree.dead)
       dead.push_back({{"prefix", d.prefix},

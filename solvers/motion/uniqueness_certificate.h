@@ -26,7 +26,8 @@
 namespace contactcert::solvers::motion {
 
 /// The certificate text of a decided verdict that carries its evidence (motion_uniqueness(..., evidence = true));
-/// "" otherwise. `assembly_text`: the step's assembly (several bodies), embedded as the UCP certificates do.
+/// "" otherwise, and for a problem without a solution (its `unique` is vacuous: the ucp_jammed certificate proves it).
+/// `assembly_text`: the step's assembly (several bodies), embedded as the UCP certificates do.
 std::string uniqueness_certificate(const ucp::UcpProblem& problem, const MotionUniqueness& u,
                                    const std::string& assembly_text = "");
 
