@@ -1,5 +1,7 @@
 #include "checker/uniqueness_check.h"
 
+#include <algorithm>
+
 #include "checker/frame_check.h"
 #include "checker/mode_coverage.h"
 #include "checker/ucp_sets.h"
@@ -69,6 +71,11 @@ std::string tree_order(const std::string& mode) {
   std::string out;
   for (auto it = mode.rbegin(); it != mode.rend() && *it != '?'; ++it) out += *it;
   return out;
+}
+
+/// A string in the tree's order back as a pattern per contact ('?' for the contacts it leaves undecided).
+std::string as_pattern(const std::string& tree, std::size_t nc) {
+  return std::string(nc - std::min(nc, tree.size()), '?') + std::string(tree.rbegin(), tree.rend());
 }
 
 /// Why z is not in the non-negative orthant's face with the given zeros, or "".
@@ -160,9 +167,10 @@ UniquenessCertificateCheck check_unique(const JsonInput& cert, const CheckData& 
     return out;
   }
   // The tree: every one of the 4^nc modes extends exactly one dead prefix or is exactly one solution mode.
-  if (const auto gap = mode_coverage(
-          nc, [](std::size_t) { return std::string("sr+-"); }, dead, leaves)) {
-    out.reason = "the prefix tree (in the order it decides the contacts, the last first): " + coverage_gap_text(*gap);
+  const auto letters = [](std::size_t) { return std::string("sr+-"); };
+  if (auto gap = mode_coverage(nc, letters, dead, leaves)) {
+    gap->prefix = as_pattern(gap->prefix, nc), gap->within = as_pattern(gap->within, nc);
+    out.reason = "the prefix tree (one letter per contact, '?' for any): " + coverage_gap_text(*gap);
     return out;
   }
   // Bounds: each pins q_dot over its mode's face of X.
