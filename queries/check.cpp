@@ -109,7 +109,6 @@ struct CertificateKind {
 constexpr CertificateKind kKinds[] = {
     {"ucp_jammed", false, check_ucp},
     {"ucp_solvable", false, check_ucp},
-    {"motion_uniqueness", false, check_uniqueness},
     {"stability", true, check_stability},
     {"modes", true, check_modes},
     {"cone_empty", true, check_cone},
@@ -118,6 +117,7 @@ constexpr CertificateKind kKinds[] = {
     {"assembly_stability", true, check_assembly},
     {"assembly_modes", true, check_assembly_modes},
     {"spatial_modes", true, check_spatial_modes},
+    {"motion_uniqueness", false, check_uniqueness},
 };
 
 const CertificateKind& certificate_kind(const exact::JsonInput& cert) {
