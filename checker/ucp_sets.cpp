@@ -102,7 +102,9 @@ bool satisfies_X(const CheckData& c, const Vec<Q>& x) {
   return exact::solve<Q>(c.P, Vec<Q>(contact_velocity(c, x) + c.h)).has_value();
 }
 
-std::string assembly_violation(const JsonInput& cert, const UcpProblem& problem) {
+std::string embedding_violation(const JsonInput& cert, const UcpProblem& problem) {
+  if (cert.at("problem_sha256").string() != cert.at("problem").canonical_sha256())
+    return "problem_sha256 is not the digest of the embedded problem";
   const auto text = cert.find("assembly");
   if (!text) return "";
   const geometry::Assembly a =

@@ -47,8 +47,10 @@ Vec<Q> contact_velocity(const CheckData& c, const Vec<Q>& x);
 /// the signs are the caller's.
 bool satisfies_X(const CheckData& c, const Vec<Q>& x);
 
-/// With an embedded assembly (`assembly --ucp`, a step of `simulate` with several bodies): why the embedded problem is
-/// not the one the checker derives from the assembly's geometry (assembly_ucp_check.h), or "".
-std::string assembly_violation(const exact::JsonInput& cert, const solvers::ucp::UcpProblem& problem);
+/// Why the certificate's embedded problem (read as `problem`) is not the one it certifies, or "": its problem_sha256
+/// is not the embedded problem's digest, or, with an embedded assembly (`assembly --ucp`, a step of `simulate` with
+/// several bodies), the problem is not the one the checker derives from the assembly's geometry
+/// (assembly_ucp_check.h).
+std::string embedding_violation(const exact::JsonInput& cert, const solvers::ucp::UcpProblem& problem);
 
 }  // namespace contactcert::checker::ucp_sets
