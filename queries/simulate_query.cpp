@@ -8,6 +8,7 @@
 #include "exact/nearest_double.h"
 #include "exact/rational_text.h"
 #include "queries/trajectory_svg.h"
+#include "queries/ucp_uniqueness.h"
 
 namespace contactcert::queries {
 namespace {
@@ -57,13 +58,6 @@ json pose_json(const Pose<T>& p) {
   put<T>(j, "t", p.t);
   j["angle_approx"] = std::atan2(ap(p.s), ap(p.c));
   return j;
-}
-
-json uniqueness_json(const motion::MotionUniqueness& u) {
-  json motions = json::array();
-  for (const exact::Vec<Q>& m : u.motions) motions.push_back(exact_json(m));
-  return {{"status", motion::uniqueness_name(u.status)}, {"motions", motions},       {"modes", u.modes},
-          {"solution_modes", u.solution_modes},          {"unbounded", u.unbounded}, {"lps", u.lps}};
 }
 
 /// Body b's twist as (v_x, v_y, omega); zero when the step has none (no solution).
