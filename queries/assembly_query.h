@@ -88,7 +88,8 @@ struct AssemblyUcpOptions {
   long max_bases = solvers::ucp::UcpOptions{}.max_bases;  ///< Step 3's bases per degenerate vertex (as `ucp`)
   std::string certificate;  ///< the ucp_solvable / ucp_jammed certificate's file ("" = none)
   std::string svg;          ///< the picture's file, with the contact forces of a solution ("" = none)
-  UniquenessOptions uniqueness;  ///< `ucp ASSEMBLY --all`: is the bodies' motion unique?
+  /// `ucp ASSEMBLY --all`: is the bodies' motion unique?
+  UniquenessOptions uniqueness;
 };
 
 /// Body b's velocity: q_dot_b = (v_x, v_y, omega) of the body point at the world origin (torques about the origin,
@@ -105,7 +106,8 @@ struct AssemblyUcpAnswer {
   std::string certificate;                   ///< the file written ("" = none: not asked, or unknown)
   std::string certificate_text;              ///< its text
   std::string svg;                           ///< the picture written ("" = none)
-  std::optional<UniquenessAnswer> uniqueness;  ///< with uniqueness.all and a solution
+  /// with uniqueness.all and a solution: is its motion unique?
+  std::optional<UniquenessAnswer> uniqueness;
 };
 
 /// Builds P, Jn, Jt, d for the N bodies, solves (complete search), recovers the physics and writes the files.

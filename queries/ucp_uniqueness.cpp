@@ -15,22 +15,22 @@ void check_uniqueness_options(const UniquenessOptions& o, exact::Arith arith) {
     throw exact::InputError("command line", "--uniqueness-certificate",
                             "the certificate of --all's uniqueness verdict; add --all");
   if (o.all && arith == exact::Arith::kFloat)
-    throw exact::InputError("command line", "--all", "the uniqueness question is decided exactly: --arith exact or verified");
+    throw exact::InputError("command line", "--all",
+                            "the uniqueness question is decided exactly: --arith exact or verified");
 }
 
-Limited<std::optional<UniquenessAnswer>> decide_uniqueness(const ucp::UcpProblem& problem,
-                                                           const ucp::UcpReport& report, const UniquenessOptions& o,
-                                                           exact::Arith arith, const std::string& command,
+Limited<std::optional<UniquenessAnswer>> decide_uniqueness(const ucp::UcpProblem& problem, const ucp::UcpReport& report,
+                                                           const UniquenessOptions& o, exact::Arith arith,
+                                                           const std::string& command,
                                                            const std::string& assembly_text) {
-  if (!o.all || report.status != ucp::UcpStatus::kSolvable)
-    return std::optional<UniquenessAnswer>();
+  if (!o.all || report.status != ucp::UcpStatus::kSolvable) return std::optional<UniquenessAnswer>();
   const long budget = o.max_modes.value_or(motion::SimulateOptions{}.max_uniqueness_modes);
   UniquenessAnswer a;
   a.verdict = motion::motion_uniqueness(problem, arith, budget, !o.certificate.empty());
   if (a.verdict.status == motion::UniquenessStatus::kUnknown)
-    return Limit{command + ": the uniqueness prefix tree's LP budget (--max-modes " + std::to_string(budget) +
-                     ") ran out",
-                 std::to_string(a.verdict.lps) + " lps"};
+    return Limit{
+        command + ": the uniqueness prefix tree's LP budget (--max-modes " + std::to_string(budget) + ") ran out",
+        std::to_string(a.verdict.lps) + " lps"};
   if (!o.certificate.empty()) {
     a.certificate_text = motion::uniqueness_certificate(problem, a.verdict, assembly_text);
     write_text_file(o.certificate, a.certificate_text);
@@ -61,8 +61,8 @@ std::string to_text(const UniquenessAnswer& a, long body_size) {
                   (u.unbounded ? ", a q_dot component unbounded" : "") + ")\n";
   for (std::size_t k = 0; k < u.motions.size(); ++k) {
     const exact::Vec<exact::Q>& m = u.motions[k];
-    s += std::string("    ") + (unique ? "the motion" : "motion " + std::to_string(k + 1)) + " (mode " +
-         u.modes[k] + "):";
+    s += std::string("    ") + (unique ? "the motion" : "motion " + std::to_string(k + 1)) + " (mode " + u.modes[k] +
+         "):";
     const Eigen::Index n = body_size > 0 ? body_size : m.size();
     for (Eigen::Index b = 0; b * n < m.size(); ++b)
       s += (m.size() > n ? (b > 0 ? ", body " : " body ") + std::to_string(b) + " " : std::string(" q_dot ")) +

@@ -37,8 +37,8 @@ struct UniquenessAnswer {
 /// float path.
 void check_uniqueness_options(const UniquenessOptions& o, exact::Arith arith);
 
-/// The uniqueness of a solvable quasistatic problem's motion (nullopt without --all or for an unsolvable problem: no motion),
-/// its certificate written if asked (`assembly_text` embedded, as the UCP certificates do); the Limit when the
+/// The uniqueness of a solvable quasistatic problem's motion (nullopt without --all or for an unsolvable problem: no
+/// motion), its certificate written if asked (`assembly_text` embedded, as the UCP certificates do); the Limit when the
 /// prefix tree's budget runs out, with the LPs it covered. `command` names the run in that Limit.
 Limited<std::optional<UniquenessAnswer>> decide_uniqueness(const solvers::ucp::UcpProblem& problem,
                                                            const solvers::ucp::UcpReport& report,
