@@ -97,9 +97,15 @@ void print_simulate_text(const json& j) {
       std::cout << "    step " << d["step"] << ", " << d["kind"].get<std::string>() << ": "
                 << d["what"].get<std::string>() << " (poses " << d["pose_distance"] << " apart)\n";
   }
-  std::size_t written = 0;
-  for (const json& s : j["steps"]) written += s.contains("certificate") ? 1 : 0;
-  if (written > 0) std::cout << "  certificates: " << written << " files, step-K.json (check them with `check`)\n";
+  std::size_t written = 0, unique = 0;
+  for (const json& s : j["steps"]) {
+    written += s.contains("certificate") ? 1 : 0;
+    unique += s.contains("uniqueness_certificate") ? 1 : 0;
+  }
+  if (written > 0)
+    std::cout << "  certificates: " << written << " files, step-K.json"
+              << (unique > 0 ? ", and " + std::to_string(unique) + " of uniqueness, step-K-uniqueness.json" : "")
+              << " (check them with `check`)\n";
   if (j.contains("svg")) std::cout << "  picture written to " << j["svg"].get<std::string>() << "\n";
 }
 

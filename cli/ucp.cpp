@@ -32,6 +32,7 @@ struct UcpCliOptions {
   std::string method = ucp::method_name(queries::UcpQueryOptions{}.method);
   long max_nodes = ucp::UcpOptions{}.max_nodes;  // shown as the default; unset unless given
   long max_bases = ucp::UcpOptions{}.max_bases;
+  long max_modes = solvers::motion::SimulateOptions{}.max_uniqueness_modes;
   queries::UcpQueryOptions query;  ///< set from the above by the callback
   // --generate (and --seed, for both)
   std::string generate;
@@ -94,6 +95,8 @@ void print_ucp_text(const UcpCliOptions& o, const queries::UcpAnswer& a) {
   if (!a.certificate.empty()) std::cout << "  certificate written to " << a.certificate << "\n";
   if (!o.query.certificate.empty() && a.certificate.empty())
     std::cout << "  no certificate written: the verdict is unknown\n";
+  if (a.uniqueness) std::cout << queries::to_text(*a.uniqueness, 0);
+  if (o.query.uniqueness.all && !a.uniqueness) std::cout << "  uniqueness: no solution, no motion\n";
 }
 
 /// `ucp ASSEMBLY` (a quasistatic_scene with bodies): the query of `contactcert assembly --ucp`, the complete search.
@@ -107,6 +110,7 @@ int run_assembly_ucp_command(const UcpCliOptions& o, const queries::AssemblyInpu
   q.max_nodes = o.query.max_nodes.value_or(q.max_nodes);
   q.max_bases = o.query.max_bases.value_or(q.max_bases);
   q.certificate = o.query.certificate;
+  q.uniqueness = o.query.uniqueness;
   return print_assembly_answer(queries::run_assembly_ucp(in, q), o.file, o.common.json, "ucp");
 }
 
@@ -158,6 +162,13 @@ void register_ucp(CLI::App& app, Action& action) {
   sub->add_option("--max-bases", o->max_bases, "Step 3: bases explored per degenerate vertex")
       ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
       ->capture_default_str();
+  sub->add_flag("--all", o->query.uniqueness.all,
+                "Also decide whether the solution's motion q_dot is unique (the prefix tree of simulate's steps)");
+  sub->add_option("--max-modes", o->max_modes, "--all: LP budget of the uniqueness prefix tree")
+      ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
+      ->capture_default_str();
+  sub->add_option("--uniqueness-certificate", o->query.uniqueness.certificate,
+                  "--all: write the motion_uniqueness certificate of its verdict to this file");
   sub->add_option("--generate", o->generate, "Write a problem instead: random (section 5) | reduction (Proposition 2)")
       ->check(CLI::IsMember({"random", "reduction"}));
   sub->add_option("--out", o->out, "Generated problem file (- = stdout)")->capture_default_str();
@@ -185,14 +196,18 @@ void register_ucp(CLI::App& app, Action& action) {
       q.method = queries::parse_method(o->method, "--method");
       if (sub->count("--max-nodes") > 0) q.max_nodes = o->max_nodes;
       if (sub->count("--max-bases") > 0) q.max_bases = o->max_bases;
+      if (sub->count("--max-modes") > 0) q.uniqueness.max_modes = o->max_modes;
       o->seed_given = sub->count("--seed") > 0;
       // The budgets are refused here, what a certificate needs once FILE is known to be given (run_ucp): the
       // messages keep their order.
       queries::UcpQueryOptions budgets = q;
       budgets.certificate.clear();
+      budgets.uniqueness.certificate.clear();
       queries::check_ucp_options(budgets);
     } else {
-      refuse_given(*sub, {"file", "--certificate", "--method", "--max-nodes", "--max-bases", "--arith", "--json"},
+      refuse_given(*sub,
+                   {"file", "--certificate", "--method", "--max-nodes", "--max-bases", "--arith", "--json", "--all",
+                    "--max-modes", "--uniqueness-certificate"},
                    "--generate writes a problem and solves none");
     }
     if (o->generate == "random")

@@ -14,10 +14,12 @@
 namespace contactcert::python {
 namespace {
 
-/// `ucp FILE` with its options (a budget not given: the default); `certificate`: the file to write, or empty.
+/// `ucp FILE` with its options (a budget not given: the default); `certificate`: the file to write, or empty;
+/// `uniqueness`: --all, with its budget and certificate file.
 WithCertificate solve(const Ucp& u, const std::string& method, const std::string& arith, std::uint64_t seed,
                       std::optional<long> max_nodes, std::optional<long> max_bases, double time_limit,
-                      const std::string& certificate) {
+                      const std::string& certificate, bool uniqueness, std::optional<long> max_modes,
+                      const std::string& uniqueness_certificate) {
   queries::UcpQueryOptions o;
   o.common = {queries::parse_arith(arith, "--arith"), time_limit};
   o.method = queries::parse_method(method, "--method");
@@ -25,6 +27,7 @@ WithCertificate solve(const Ucp& u, const std::string& method, const std::string
   o.max_nodes = max_nodes;
   o.max_bases = max_bases;
   o.certificate = certificate;
+  o.uniqueness = {uniqueness, max_modes, uniqueness_certificate};
   const queries::UcpAnswer a = answer(queries::run_ucp(u, o));
   return {exact::json_text(queries::to_json(a)), a.certificate_text};
 }

@@ -13,6 +13,7 @@
 #include "queries/json_out.h"
 #include "queries/limit.h"
 #include "queries/options.h"
+#include "queries/ucp_uniqueness.h"
 #include "solvers/assembly/assembly_stability.h"
 #include "solvers/ucp/solve.h"
 
@@ -87,6 +88,8 @@ struct AssemblyUcpOptions {
   long max_bases = solvers::ucp::UcpOptions{}.max_bases;  ///< Step 3's bases per degenerate vertex (as `ucp`)
   std::string certificate;  ///< the ucp_solvable / ucp_jammed certificate's file ("" = none)
   std::string svg;          ///< the picture's file, with the contact forces of a solution ("" = none)
+  /// `ucp ASSEMBLY --all`: is the bodies' motion unique?
+  UniquenessOptions uniqueness;
 };
 
 /// Body b's velocity: q_dot_b = (v_x, v_y, omega) of the body point at the world origin (torques about the origin,
@@ -103,12 +106,14 @@ struct AssemblyUcpAnswer {
   std::string certificate;                   ///< the file written ("" = none: not asked, or unknown)
   std::string certificate_text;              ///< its text
   std::string svg;                           ///< the picture written ("" = none)
+  /// with uniqueness.all and a solution: is its motion unique?
+  std::optional<UniquenessAnswer> uniqueness;
 };
 
 /// Builds P, Jn, Jt, d for the N bodies, solves (complete search), recovers the physics and writes the files.
 Limited<AssemblyUcpAnswer> run_assembly_ucp(const AssemblyInput& in, const AssemblyUcpOptions& options);
 /// {"status", "reason", "arith", "bodies": [{"body", "q_dot", "com_velocity"}], "contacts": [...], "theta_dot",
-/// "tau", "conditions_2_to_10", "pairs", "lps", "nodes", "certificate", "svg"}.
+/// "tau", "conditions_2_to_10", "pairs", "lps", "nodes", "certificate", "svg", "uniqueness"}.
 json to_json(const AssemblyUcpAnswer& answer);
 std::string to_text(const AssemblyUcpAnswer& answer, const std::string& name);
 

@@ -12,9 +12,10 @@ using exact::Q;
 
 namespace {
 
-AssemblyUcpAnswer assembly_ucp_answer(const AssemblyInput& in, const AssemblyUcpOptions& options) {
+Limited<AssemblyUcpAnswer> assembly_ucp_answer(const AssemblyInput& in, const AssemblyUcpOptions& options) {
   refuse_float(options.common.arith,
                "an assembly's quasistatic problem is solved exactly here (use exact, verified or adaptive)");
+  check_uniqueness_options(options.uniqueness, options.common.arith);
   const geometry::Assembly& a = in.assembly;
   ucp::UcpProblem problem;
   problem.quasistatic = solvers::assembly::assembly_quasistatic(a, in.name);
@@ -40,6 +41,10 @@ AssemblyUcpAnswer assembly_ucp_answer(const AssemblyInput& in, const AssemblyUcp
   // The certificate embeds the assembly too: its checker derives P, Jn and Jt from the geometry itself.
   if (!options.certificate.empty()) ans.certificate_text = ucp::certificate_text(problem, ans.report, in.text);
   write_files(in, options, ans);
+  Limited<std::optional<UniquenessAnswer>> u =
+      decide_uniqueness(problem, ans.report, options.uniqueness, options.common.arith, "ucp " + in.name, in.text);
+  if (!u) return u.limit();
+  ans.uniqueness = *std::move(u);
   return ans;
 }
 
@@ -71,6 +76,7 @@ json to_json(const AssemblyUcpAnswer& ans) {
   j["nodes"] = r.nodes;
   if (!ans.certificate.empty()) j["certificate"] = ans.certificate;
   if (!ans.svg.empty()) j["svg"] = ans.svg;
+  if (ans.uniqueness) j["uniqueness"] = to_json(*ans.uniqueness);
   return j;
 }
 
@@ -90,6 +96,7 @@ std::string to_text(const AssemblyUcpAnswer& ans, const std::string& name) {
          (r.conditions->status == ucp::ConditionsStatus::kSatisfied ? "satisfied exactly" : "VIOLATED") + "\n";
   if (!ans.certificate.empty()) s += std::string("  certificate: ") + ans.certificate + "\n";
   if (!ans.svg.empty()) s += std::string("  picture: ") + ans.svg + "\n";
+  if (ans.uniqueness) s += to_text(*ans.uniqueness, 3);
   return s;
 }
 

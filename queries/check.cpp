@@ -11,6 +11,7 @@
 #include "checker/spatial_stability_check.h"
 #include "checker/stability_check.h"
 #include "checker/ucp_check.h"
+#include "checker/uniqueness_check.h"
 #include "exact/sha256.h"
 #include "queries/assembly_check_view.h"
 #include "queries/check_views.h"
@@ -95,6 +96,12 @@ void check_spatial_stability(const exact::JsonInput& cert, EmbeddedProblem&, Che
   take(checker::check_spatial_stability_certificate(cert), c);
 }
 
+void check_uniqueness(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
+  const checker::UniquenessCertificateCheck u = checker::check_uniqueness_certificate(cert);
+  take(u, c);
+  c.details = {{"verdict", u.verdict}, {"solution_modes", u.solution_modes}, {"dead_prefixes", u.dead}};
+}
+
 /// One certificate kind: whether it embeds a planar scene (else a UCP problem) and its checker, which sets the
 /// verdict, the reason and the details and, for a valid certificate, the view a person reads of its evidence (which
 /// makes it INVALID if the certificate's own readable numbers are not those of the checked evidence).
@@ -116,6 +123,7 @@ constexpr CertificateKind kKinds[] = {
     {"assembly_modes", true, check_assembly_modes},
     {"spatial_modes", true, check_spatial_modes},
     {"spatial_stability", true, check_spatial_stability},
+    {"motion_uniqueness", false, check_uniqueness},
 };
 
 const CertificateKind& certificate_kind(const exact::JsonInput& cert) {

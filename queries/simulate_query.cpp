@@ -8,6 +8,7 @@
 #include "exact/nearest_double.h"
 #include "exact/rational_text.h"
 #include "queries/trajectory_svg.h"
+#include "queries/ucp_uniqueness.h"
 
 namespace contactcert::queries {
 namespace {
@@ -59,13 +60,6 @@ json pose_json(const Pose<T>& p) {
   return j;
 }
 
-json uniqueness_json(const motion::MotionUniqueness& u) {
-  json motions = json::array();
-  for (const exact::Vec<Q>& m : u.motions) motions.push_back(exact_json(m));
-  return {{"status", motion::uniqueness_name(u.status)}, {"motions", motions},       {"modes", u.modes},
-          {"solution_modes", u.solution_modes},          {"unbounded", u.unbounded}, {"lps", u.lps}};
-}
-
 /// Body b's twist as (v_x, v_y, omega); zero when the step has none (no solution).
 template <class T>
 std::vector<T> twist_of(const std::vector<motion::Twist<T>>& twists, std::size_t b) {
@@ -87,7 +81,8 @@ json body_step_json(const motion::StepRecord<T>& s, std::size_t b, const std::st
 
 /// A step: with one body its pose, q_dot, applied_q_dot and pose_after at the top; with several, `bodies`.
 template <class T>
-json step_json(const motion::StepRecord<T>& s, const std::string& certificate, const std::vector<std::string>& names) {
+json step_json(const motion::StepRecord<T>& s, const std::string& certificate,
+               const std::string& uniqueness_certificate, const std::vector<std::string>& names) {
   const bool one = names.size() == 1;
   json j;
   j["index"] = s.index;
@@ -120,6 +115,7 @@ json step_json(const motion::StepRecord<T>& s, const std::string& certificate, c
   if (one) j["pose_after"] = pose_json(s.poses_after[0]);
   put<T>(j, "fingers_after", s.tips_after);
   if (!certificate.empty()) j["certificate"] = certificate;
+  if (!uniqueness_certificate.empty()) j["uniqueness_certificate"] = uniqueness_certificate;
   j["seconds"] = s.seconds;
   return j;
 }
@@ -149,10 +145,11 @@ std::vector<std::string> body_names(const motion::MotionScene& scene) {
 
 template <class T>
 void put_run(json& j, const motion::Trajectory<T>& r, const std::vector<std::string>& certificates,
-             const std::vector<std::string>& names) {
+             const std::vector<std::string>& uniqueness_certificates, const std::vector<std::string>& names) {
+  const auto at = [](const std::vector<std::string>& files, std::size_t k) { return k < files.size() ? files[k] : ""; };
   json steps = json::array();
   for (std::size_t k = 0; k < r.steps.size(); ++k)
-    steps.push_back(step_json(r.steps[k], k < certificates.size() ? certificates[k] : "", names));
+    steps.push_back(step_json(r.steps[k], at(certificates, k), at(uniqueness_certificates, k), names));
   j["steps"] = steps;
   j["final"] = final_json(r, names);
 }
@@ -234,20 +231,27 @@ bool SimulateRun::advance() {
   if (!exact_) return float_->step();
   if (!exact_->step()) return false;
   const motion::StepRecord<Q>& s = exact_->trajectory().steps.back();
-  if (options_.certificates.empty() || s.certificate.empty()) {
-    answer_.certificates.emplace_back();
-  } else {
-    answer_.certificates.push_back(options_.certificates + "/step-" + std::to_string(s.index) + ".json");
-    write_text_file(answer_.certificates.back(), s.certificate);
-  }
+  // A step's certificate (and its uniqueness's) to DIR/step-K{suffix}.json, if it has one.
+  const auto write = [&](std::vector<std::string>& files, const std::string& text, const std::string& suffix) {
+    if (options_.certificates.empty() || text.empty()) {
+      files.emplace_back();
+      return;
+    }
+    files.push_back(options_.certificates + "/step-" + std::to_string(s.index) + suffix + ".json");
+    write_text_file(files.back(), text);
+  };
+  write(answer_.certificates, s.certificate, "");
+  write(answer_.uniqueness_certificates, s.uniqueness_certificate, "-uniqueness");
   return true;
 }
 
 std::optional<json> SimulateRun::next() {
   if (!advance()) return std::nullopt;
   const std::vector<std::string> names = body_names(answer_.scene);
-  if (exact_) return step_json(exact_->trajectory().steps.back(), answer_.certificates.back(), names);
-  return step_json(float_->trajectory().steps.back(), "", names);
+  if (exact_)
+    return step_json(exact_->trajectory().steps.back(), answer_.certificates.back(),
+                     answer_.uniqueness_certificates.back(), names);
+  return step_json(float_->trajectory().steps.back(), "", "", names);
 }
 
 SimulateAnswer SimulateRun::finish() {
@@ -299,9 +303,9 @@ json to_json(const SimulateAnswer& a) {
   j["steps_done"] = steps_done(a);
   const std::vector<std::string> names = body_names(a.scene);
   if (a.exact_run)
-    put_run(j, *a.exact_run, a.certificates, names);
+    put_run(j, *a.exact_run, a.certificates, a.uniqueness_certificates, names);
   else
-    put_run(j, *a.float_run, {}, names);
+    put_run(j, *a.float_run, {}, {}, names);
   if (a.compared) {
     const motion::Trajectory<double>& f = *a.float_run;
     j["float"] = {{"status", motion::run_status_name(f.status)},

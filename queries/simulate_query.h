@@ -57,7 +57,9 @@ struct SimulateAnswer {
   bool compared = false;
   std::vector<solvers::motion::Divergence> divergences;
   std::vector<std::string> certificates;  ///< per step of exact_run: the file written, or "" (none asked)
-  std::string svg;                        ///< the picture's file, if written
+  /// per step of exact_run: its uniqueness certificate's file (step-K-uniqueness.json), or "" (none written)
+  std::vector<std::string> uniqueness_certificates;
+  std::string svg;  ///< the picture's file, if written
   double seconds = 0;
 };
 

@@ -70,12 +70,17 @@ void check_ucp_options(const UcpQueryOptions& o) {
     throw exact::InputError("command line", "--certificate",
                             "--method enumerate writes no certificate (its jammed verdict has no proof tree); use "
                             "--method complete");
+  check_uniqueness_options(o.uniqueness, o.common.arith);
 }
 
 namespace {
 
-UcpAnswer ucp_answer(const UcpInput& in, const UcpQueryOptions& o) {
+Limited<UcpAnswer> ucp_answer(const UcpInput& in, const UcpQueryOptions& o) {
   check_ucp_options(o);
+  if (o.uniqueness.all && !in.problem.quasistatic)
+    throw exact::InputError(in.name, "kind",
+                            "--all asks whether the body velocity q_dot is unique: a quasistatic problem, not a plain "
+                            "UCP one");
   const auto start = std::chrono::steady_clock::now();
   ucp::UcpOptions opts;
   opts.method = o.method;
@@ -85,7 +90,7 @@ UcpAnswer ucp_answer(const UcpInput& in, const UcpQueryOptions& o) {
   opts.max_bases = o.max_bases.value_or(opts.max_bases);
   opts.time_limit = o.common.time_limit;
   opts.progress = o.progress;
-  UcpAnswer a{ucp::solve_ucp(in.problem, opts), {}, {}, in.frames};
+  UcpAnswer a{ucp::solve_ucp(in.problem, opts), {}, {}, in.frames, {}};
   ucp::UcpReport& r = a.report;
   r.phases.parse = in.setup.parse;
   r.phases.build = in.setup.build;
@@ -97,6 +102,10 @@ UcpAnswer ucp_answer(const UcpInput& in, const UcpQueryOptions& o) {
       a.certificate = o.certificate;
     }
   }
+  Limited<std::optional<UniquenessAnswer>> u =
+      decide_uniqueness(in.problem, r, o.uniqueness, o.common.arith, "ucp " + in.name);
+  if (!u) return u.limit();
+  a.uniqueness = *std::move(u);
   r.seconds = in.seconds + seconds_since(start);
   return a;
 }
@@ -172,6 +181,7 @@ json to_json(const UcpAnswer& a) {
     j["solution_modes"] = r.solution_modes;
   }
   if (!a.certificate.empty()) j["certificate"] = a.certificate;
+  if (a.uniqueness) j["uniqueness"] = to_json(*a.uniqueness);
   j["seconds"] = r.seconds;
   const ucp::UcpPhases& t = r.phases;
   j["phases"] = {{"parse", t.parse},     {"build", t.build}, {"solve", t.solve},

@@ -14,6 +14,7 @@
 #include "queries/json_out.h"
 #include "queries/limit.h"
 #include "queries/options.h"
+#include "queries/ucp_uniqueness.h"
 #include "solvers/ucp/problem.h"
 #include "solvers/ucp/solve.h"
 
@@ -46,6 +47,7 @@ struct UcpQueryOptions {
   std::optional<long> max_nodes;  ///< node budget of the complete search
   std::optional<long> max_bases;  ///< Step 3: bases explored per degenerate vertex
   std::string certificate;        ///< file the certificate of the verdict is written to ("" = none)
+  UniquenessOptions uniqueness;   ///< --all: is the solvable problem's motion unique?
   std::function<void(long units, long lps)> progress;  ///< search nodes (or enumerated modes) so far
 };
 
@@ -53,21 +55,23 @@ struct UcpQueryOptions {
 solvers::ucp::Method parse_method(const std::string& text, const std::string& field);
 /// Refuses (InputError naming the option) what the run would ignore or cannot do: --max-nodes without the complete
 /// search's tree, --max-bases without Step 3 (method enumerate), a certificate from the float path or from
-/// method enumerate (whose jammed verdict has no proof tree).
+/// method enumerate (whose jammed verdict has no proof tree), --all's options without it (check_uniqueness_options).
 void check_ucp_options(const UcpQueryOptions& o);
 
 /// The verdict with its evidence, the certificate written (its text, and `certificate` the file, or both empty if
-/// none was asked or the verdict is unknown) and the frames of the problem's contacts (a quasistatic_scene).
+/// none was asked or the verdict is unknown), the frames of the problem's contacts (a quasistatic_scene) and with
+/// --all the uniqueness of a solvable problem's motion.
 struct UcpAnswer {
   solvers::ucp::UcpReport report;
   std::string certificate_text;
   std::string certificate;
   std::vector<geometry::ContactFrame> frames;
+  std::optional<UniquenessAnswer> uniqueness;
 };
 
 /// Solves `in` (check_ucp_options first), writes the certificate file if asked and one exists; `report.seconds`
 /// counts reading the input too. The search's own budgets end it `unknown` with what it covered; a budget deeper
-/// down (an LP's pivots) is the Limit.
+/// down (an LP's pivots) and --all's prefix tree budget (--max-modes) are the Limit.
 Limited<UcpAnswer> run_ucp(const UcpInput& in, const UcpQueryOptions& o);
 
 /// The Limit of a run that stopped on a budget or the time limit (report.limited), as `ucp` and `assembly --ucp`

@@ -31,18 +31,25 @@ class Ucp(FromSource[_core.Ucp]):
 
     def solve(self, method: Literal["paper", "modified", "complete", "enumerate"] = "complete",
               arith: Arith = "verified", seed: int = 1, max_nodes: int | None = None, max_bases: int | None = None,
-              time_limit: float = 0, certificate: Path | None = None) -> UcpResult:
+              time_limit: float = 0, certificate: Path | None = None, uniqueness: bool = False,
+              max_modes: int | None = None, uniqueness_certificate: Path | None = None) -> UcpResult:
         """`contactcert ucp FILE`: solvable (with the pair and its physics) or jammed. An `unknown` verdict (a
         budget ran out) raises BudgetExceeded with the result as its `result`. max_nodes (default 200000) budgets
-        the complete search only, max_bases (default 100000) Step 3 (not in method enumerate), as in the CLI."""
+        the complete search only, max_bases (default 100000) Step 3 (not in method enumerate), as in the CLI.
+        uniqueness=True is `--all`: a solvable problem's result["uniqueness"] says whether its motion q_dot is
+        unique (max_modes: the prefix tree's LP budget, `--max-modes`; uniqueness_certificate: the file of its
+        motion_uniqueness certificate, `--uniqueness-certificate`)."""
         choice(method, ("paper", "modified", "complete", "enumerate"), "--method")
         choice(arith, ARITHS, "--arith")
         seed = whole_number(seed, 0, UINT64_MAX, "--seed")
         max_nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
         max_bases = None if max_bases is None else whole_number(max_bases, 1, LONG_MAX, "--max-bases")
         time_limit = seconds(time_limit)
+        max_modes = None if max_modes is None else whole_number(max_modes, 1, LONG_MAX, "--max-modes")
         path = os.fspath(certificate) if certificate is not None else ""
-        data, text = self._core.solve(method, arith, seed, max_nodes, max_bases, time_limit, path)
+        unique_path = os.fspath(uniqueness_certificate) if uniqueness_certificate is not None else ""
+        data, text = self._core.solve(method, arith, seed, max_nodes, max_bases, time_limit, path, bool(uniqueness),
+                                      max_modes, unique_path)
         result = UcpResult(json.loads(data), Certificate(text, path) if text else None)
         if result.status == "unknown":
             raise budget_exceeded(result, result["reason"], ucp_covered(result.to_dict()))

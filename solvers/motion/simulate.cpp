@@ -9,6 +9,7 @@
 #include "exact/input_error.h"
 #include "solvers/motion/first_root.h"
 #include "solvers/motion/step_problem.h"
+#include "solvers/motion/uniqueness_certificate.h"
 
 namespace contactcert::solvers::motion {
 namespace {
@@ -384,9 +385,9 @@ bool Stepper<T>::step() {
   const ucp::UcpReport rep = ucp::solve_ucp(problem, uopts_);
   r.verdict = rep.status;
   r.reason = rep.reason;
-  if (exact_path && opts_.certificates)
-    r.certificate =
-        ucp::certificate_text(problem, rep, assembly ? exact::json_text(assembly_scene_json(*assembly)) : "");
+  const std::string assembly_text =
+      exact_path && opts_.certificates && assembly ? exact::json_text(assembly_scene_json(*assembly)) : "";
+  if (exact_path && opts_.certificates) r.certificate = ucp::certificate_text(problem, rep, assembly_text);
   if (rep.status != ucp::UcpStatus::kSolvable) {
     for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal, {T(0), T(0)}});
     r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
@@ -398,8 +399,11 @@ bool Stepper<T>::step() {
   }
   const StepPhysics<T> ph = physics(problem, rep, static_cast<const T*>(nullptr));
   r.twists = ph.twists;
-  if (exact_path && opts_.uniqueness)
-    r.uniqueness = motion_uniqueness(problem, uopts_.arith, opts_.max_uniqueness_modes);
+  if (exact_path && opts_.uniqueness) {
+    r.uniqueness = motion_uniqueness(problem, uopts_.arith, opts_.max_uniqueness_modes, opts_.certificates);
+    r.uniqueness_certificate = uniqueness_certificate(problem, *r.uniqueness, assembly_text);
+    r.uniqueness->evidence.reset();  // written down; a long run keeps only the verdicts
+  }
   const FingerMotion<T> fm = record_contacts(cs, ph, sched, r);
   for (std::size_t b = 0; b < poses.size(); ++b)
     r.applied.push_back(applied_twist(cs, r, b, ph.twists[b], poses[b], sched.H));

@@ -81,6 +81,8 @@ struct StepRecord {
   /// "ucp_solvable" / "ucp_jammed" (exact paths; several bodies: with the step's assembly embedded)
   std::string certificate;
   std::optional<MotionUniqueness> uniqueness;
+  /// "motion_uniqueness" of a decided uniqueness (exact paths, with certificates; uniqueness_certificate.h), or ""
+  std::string uniqueness_certificate;
   double seconds = 0;
 };
 

@@ -61,10 +61,12 @@ const char* uniqueness_name(UniquenessStatus s) {
   return "unknown";
 }
 
-MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith arith, long max_modes) {
+MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith arith, long max_modes, bool evidence) {
   MotionUniqueness out;
   const ucp::QuasistaticProblem& p = *problem.quasistatic;
-  const ucp::EnumerateResult e = ucp::solution_modes_by_prefix(problem, arith, max_modes);
+  UniquenessEvidence ev;
+  const ucp::EnumerateResult e =
+      ucp::solution_modes_by_prefix(problem, arith, max_modes, {}, evidence ? &ev.tree : nullptr);
   out.lps = e.lps;
   if (e.status == ucp::UcpStatus::kUnknown || !e.complete) return out;
   out.solution_modes = e.solution_modes;
@@ -76,26 +78,45 @@ MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith 
       if (m == q) return true;
     return false;
   };
-  // min and max of each q_dot_k over mode i's face: the distinct optima are real motions.
+  // With evidence: a solution (u, x) of mode i's face, kept if its q_dot is not yet among the witnesses'.
+  const auto witness = [&](std::size_t i, const Vec<Q>& z) {
+    const Index m = p.P.cols();
+    for (const UniquenessEvidence::Witness& w : ev.witnesses)
+      if (w.u.head(p.nq) == z.head(p.nq)) return;
+    Vec<Q> x = Vec<Q>::Zero(3 * p.nc);
+    for (std::size_t k = 0; k < kept[i].size(); ++k) x(kept[i][k]) = z(m + static_cast<Index>(k));
+    ev.witnesses.push_back({i, z.head(m), x});
+  };
+  // min and max of each q_dot_k over mode i's face: the distinct optima are real motions; with evidence the optimal
+  // duals of each bound, and an unbounded component's vertex and vertex + ray (two q_dot).
+  exact::LpOptions options;
+  options.duals = evidence;
   const auto bound = [&](std::size_t i) {
     exact::LpProblem<Q> lp = mode_lp(p, kept[i]);
+    UniquenessEvidence::Bound b{i, {}, {}};
     for (Index k = 0; k < p.nq; ++k)
       for (int dir : {1, -1}) {
         lp.c = Vec<Q>::Zero(lp.A.cols());
         lp.c(k) = dir;
-        const exact::LpResult<Q> r = exact::solve_lp(lp);
+        const exact::LpResult<Q> r = exact::solve_lp(lp, options);
         ++out.lps;
         if (r.status == exact::LpStatus::kUnbounded) {
           out.unbounded = true;
+          if (evidence) witness(i, r.x), witness(i, Vec<Q>(r.x + r.ray));
           continue;
         }
         if (r.status != exact::LpStatus::kOptimal) continue;  // cannot happen for a solution mode
         const Vec<Q> q = r.x.head(p.nq);
+        if (evidence) {
+          (dir == 1 ? b.low : b.high).push_back(r.duals);
+          witness(i, r.x);
+        }
         if (!seen(q)) {
           out.motions.push_back(q);
           out.modes.push_back(e.solution_modes[i]);
         }
       }
+    if (evidence) ev.bounds.push_back(std::move(b));
   };
   // First the widest faces (no other solution mode's face of X strictly contains it, the first of equal ones): a
   // mode whose free components are among another's has its face inside the other's, and every face lies in a widest
@@ -115,12 +136,15 @@ MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith 
   if (!out.unbounded && out.motions.size() <= 1) {
     out.status = UniquenessStatus::kUnique;
     if (!out.motions.empty()) out.modes = {e.solution_modes[0]};  // the one motion is every mode's, the first's too
+    if (evidence) ev.witnesses.clear(), out.evidence = std::move(ev);
     return out;
   }
   // Not unique: every solution mode's optima, in the modes' order, as the evidence.
   out.motions.clear(), out.modes.clear(), out.unbounded = false;
+  ev.witnesses.clear(), ev.bounds.clear();
   for (std::size_t i = 0; i < count; ++i) bound(i);
   out.status = UniquenessStatus::kNotUnique;
+  if (evidence) out.evidence = std::move(ev);
   return out;
 }
 

@@ -8,10 +8,12 @@
 // non-empty prefix and letter, not 4^nc), then 2 nq LPs per solution mode, all exact (or verified).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "exact/arith.h"
+#include "solvers/ucp/enumerate.h"
 #include "solvers/ucp/problem.h"
 
 namespace contactcert::solvers::motion {
@@ -26,6 +28,24 @@ enum class UniquenessStatus {
 
 const char* uniqueness_name(UniquenessStatus s);
 
+/// What proves the verdict (uniqueness_certificate.h writes it down): the prefix tree's dead prefixes and solution
+/// modes' points; per bounded solution mode (`unique`: the widest ones; `not_unique`: all) and q_dot component k the
+/// optimal duals y of min q_dot_k (low) and of min -q_dot_k (high) over its face; for `not_unique`, the solutions
+/// (mode, u, x) with distinct q_dot found (at least two).
+struct UniquenessEvidence {
+  struct Bound {
+    std::size_t mode = 0;  ///< index in solution_modes
+    std::vector<exact::Vec<Q>> low, high;
+  };
+  struct Witness {
+    std::size_t mode = 0;
+    exact::Vec<Q> u, x;  ///< u = [q_dot; P's other columns], x = (v_n, v_t^+, v_t^-) with P u = v + J_alpha theta_alpha
+  };
+  ucp::PrefixEvidence tree;
+  std::vector<Bound> bounds;
+  std::vector<Witness> witnesses;
+};
+
 /// The verdict and its evidence: distinct body velocities reached (each an LP optimum, with its mode).
 struct MotionUniqueness {
   UniquenessStatus status = UniquenessStatus::kUnknown;
@@ -34,10 +54,12 @@ struct MotionUniqueness {
   std::vector<std::string> solution_modes;
   bool unbounded = false;  ///< some q_dot component is unbounded over a solution mode
   long lps = 0;            ///< LPs solved (with kUnknown: the prefixes covered before the budget ran out)
+  std::optional<UniquenessEvidence> evidence;  ///< with `evidence` asked and a decided verdict
 };
 
 /// Decides whether all solutions of a quasistatic problem have the same q_dot (exact or verified LPs; kUnknown
-/// when the prefix tree needs more than max_modes LPs).
-MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith arith, long max_modes);
+/// when the prefix tree needs more than max_modes LPs); with `evidence`, also what proves a decided verdict.
+MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith arith, long max_modes,
+                                   bool evidence = false);
 
 }  // namespace contactcert::solvers::motion

@@ -11,29 +11,6 @@ namespace {
 using Index = Eigen::Index;
 using json = nlohmann::ordered_json;
 
-json integers(const std::vector<exact::Z>& v) {
-  json a = json::array();
-  for (const auto& z : v) a.push_back(z.get_str());
-  return a;
-}
-
-json rationals(const Vec<Q>& v) {
-  json a = json::array();
-  for (Index i = 0; i < v.size(); ++i) a.push_back(exact::to_string(v(i)));
-  return a;
-}
-
-json header(const std::string& kind, const UcpProblem& problem, const std::string& assembly_text) {
-  json p = to_json(problem);
-  json j;
-  j["kind"] = kind;
-  j["format"] = 2;
-  j["problem_sha256"] = exact::canonical_sha256(p);
-  j["problem"] = std::move(p);
-  if (!assembly_text.empty()) j["assembly"] = assembly_text;
-  return j;
-}
-
 /// Z^T u for Z's sparse rows, X's rows (build_X: row r of X.A is row r of Z, n = 2nc entries, then its v_t block
 /// negated): the combination of P's left null vectors.
 Vec<Q> z_transpose_times(const SparseRows& Z, Index n, const Vec<Q>& u) {
@@ -48,15 +25,43 @@ Vec<Q> z_transpose_times(const SparseRows& Z, Index n, const Vec<Q>& u) {
 
 }  // namespace
 
-std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>& result,
-                               const std::string& assembly_text) {
-  json j = header("ucp_jammed", problem, assembly_text);
-  j["reason"] = result.reason;
+json integers_json(const std::vector<exact::Z>& v) {
+  json a = json::array();
+  for (const auto& z : v) a.push_back(z.get_str());
+  return a;
+}
+
+json rationals_json(const Vec<Q>& v) {
+  json a = json::array();
+  for (Index i = 0; i < v.size(); ++i) a.push_back(exact::to_string(v(i)));
+  return a;
+}
+
+json certificate_header(const std::string& kind, int format, const UcpProblem& problem,
+                        const std::string& assembly_text) {
+  json p = to_json(problem);
+  json j;
+  j["kind"] = kind;
+  j["format"] = format;
+  j["problem_sha256"] = exact::canonical_sha256(p);
+  j["problem"] = std::move(p);
+  if (!assembly_text.empty()) j["assembly"] = assembly_text;
+  return j;
+}
+
+std::vector<exact::Z> written_farkas(const UcpProblem& problem, bool x_side, const Vec<Q>& u) {
+  if (!problem.quasistatic) return exact::primitive(u);
   // build_Y scales row r of [C | -d] by y_factor[r] > 0; a Farkas vector u of the scaled rows is (y_factor[r] u_r)
   // for C.
-  const SparseRows& Z = problem.rows().X.A;
-  Vec<Q> y_scale;
-  if (problem.quasistatic) y_scale = Eigen::Map<const Vec<Q>>(problem.rows().y_factor.data(), problem.rows().Y.rows());
+  if (x_side) return exact::primitive(z_transpose_times(problem.rows().X.A, problem.quasistatic->P.rows(), u));
+  const Vec<Q> y_scale = Eigen::Map<const Vec<Q>>(problem.rows().y_factor.data(), problem.rows().Y.rows());
+  return exact::primitive(Vec<Q>(y_scale.cwiseProduct(u)));
+}
+
+std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>& result,
+                               const std::string& assembly_text) {
+  json j = certificate_header("ucp_jammed", 2, problem, assembly_text);
+  j["reason"] = result.reason;
   json nodes = json::array();
   for (const SearchNode<Q>& node : result.tree) {
     json n;
@@ -66,11 +71,7 @@ std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>&
       n["y_zero"] = node.child_y_zero;
     } else {
       n["empty"] = node.side == Side::kX ? "X" : "Y";
-      // Quasistatic X: state the certificate as w = Z^T u, independent of the choice of Z.
-      Vec<Q> u = node.farkas;
-      if (problem.quasistatic && node.side == Side::kX) u = z_transpose_times(Z, problem.quasistatic->P.rows(), u);
-      if (problem.quasistatic && node.side == Side::kY) u = y_scale.cwiseProduct(u);
-      n["farkas"] = integers(exact::primitive(u));
+      n["farkas"] = integers_json(written_farkas(problem, node.side == Side::kX, node.farkas));
     }
     nodes.push_back(n);
   }
@@ -80,9 +81,9 @@ std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>&
 
 std::string solvable_certificate(const UcpProblem& problem, const Vec<Q>& x, const Vec<Q>& y,
                                  const std::string& assembly_text) {
-  json j = header("ucp_solvable", problem, assembly_text);
-  j["x"] = rationals(x);
-  j["y"] = rationals(y);
+  json j = certificate_header("ucp_solvable", 2, problem, assembly_text);
+  j["x"] = rationals_json(x);
+  j["y"] = rationals_json(y);
   return exact::json_text(j, 1) + "\n";
 }
 

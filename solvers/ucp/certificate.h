@@ -32,6 +32,19 @@ std::string jammed_certificate(const UcpProblem& problem, const SearchResult<Q>&
 std::string solvable_certificate(const UcpProblem& problem, const Vec<Q>& x, const Vec<Q>& y,
                                  const std::string& assembly_text = "");
 
+/// The head of a certificate of a UCP problem: "kind", "format", "problem_sha256", "problem" and, given,
+/// "assembly" (the certificates above, and motion_uniqueness: solvers/motion/uniqueness_certificate.h).
+nlohmann::ordered_json certificate_header(const std::string& kind, int format, const UcpProblem& problem,
+                                          const std::string& assembly_text);
+/// A Farkas vector u of the face LP over X's (x_side) or Y's rows as a certificate states it: a quasistatic problem's
+/// X side as w = Z^T u (independent of the choice of Z), its Y side over the rows of [C | -d] (build_Y's rows
+/// unscaled); primitive integers.
+std::vector<exact::Z> written_farkas(const UcpProblem& problem, bool x_side, const Vec<Q>& u);
+/// Integers as JSON strings.
+nlohmann::ordered_json integers_json(const std::vector<exact::Z>& v);
+/// Exact numbers as JSON strings.
+nlohmann::ordered_json rationals_json(const Vec<Q>& v);
+
 /// True if `kind` names a UCP certificate.
 bool is_ucp_certificate_kind(const std::string& kind);
 

@@ -105,32 +105,41 @@ EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max
 }
 
 EnumerateResult solution_modes_by_prefix(const UcpProblem& problem, Arith arith, long max_lps,
-                                         const exact::Deadline& deadline) {
+                                         const exact::Deadline& deadline, PrefixEvidence* evidence) {
   const UcpInstance<Q>& u = problem.ucp();
   const Index n = u.n();
   const ModeLetters letters(problem);
   EnumerateResult out;
   LpCounters count;
   std::string name(static_cast<std::size_t>(letters.units), '?');
-  // Whether the face of `side` (X or Y) with the zeros zero[offset, offset + n) is non-empty (false also when the
-  // budget or the deadline stops the walk).
-  const auto non_empty = [&](const StandardPolyhedron<Q>& side, const std::vector<bool>& zero, Index offset) {
+  // Whether the face of X (x_side) or Y with the zeros zero[offset, offset + n) is non-empty (false also when the
+  // budget or the deadline stops the walk). With evidence: a point of it in `point`, or the Farkas vector of the
+  // dead prefix whose letters are those of the units from k on.
+  const auto non_empty = [&](bool x_side, const std::vector<bool>& zero, Index k, Vec<Q>& point) {
     if (!out.complete) return false;
     if (count.lps >= max_lps || deadline.expired()) return out.complete = false;
+    const Index offset = x_side ? 0 : n;
     const auto from = zero.begin() + offset;
-    const FaceLpResult<Q> r = minimize_on_face(make_face(side, std::vector<bool>(from, from + n)),
+    const FaceLpResult<Q> r = minimize_on_face(make_face(x_side ? u.X : u.Y, std::vector<bool>(from, from + n)),
                                                Vec<Q>(Vec<Q>::Zero(n)), arith, count, deadline);
     if (r.status == FaceLpStatus::kTimeLimit) return out.complete = false;
+    if (evidence && r.status == FaceLpStatus::kOptimal) point = r.vertex.x;
+    if (evidence && r.status == FaceLpStatus::kEmpty)
+      evidence->dead.push_back(
+          {std::string(static_cast<std::size_t>(k), '?') + name.substr(static_cast<std::size_t>(k)), x_side, r.farkas});
     return r.status == FaceLpStatus::kOptimal;
   };
   // Depth first over the units, the last one decided first, so that the modes come in enumerate_modes's order.
   // A node with k units undecided has their complementarity relaxed: its face of X x Y contains the faces of all
   // its completions, so an empty one prunes them all. X and Y are uncoupled: the face is (face of X) x (face of
-  // Y), each side decided by its own LP, and a side whose zeros a letter leaves as the parent's is non-empty.
-  const auto walk = [&](const auto& self, Index k, const std::vector<bool>& zero) -> void {
+  // Y), each side decided by its own LP, and a side whose zeros a letter leaves as the parent's is non-empty (its
+  // parent's point, px or py, is in it).
+  const auto walk = [&](const auto& self, Index k, const std::vector<bool>& zero, const Vec<Q>& px,
+                        const Vec<Q>& py) -> void {
     if (k == 0) {
       ++out.solutions;
       out.solution_modes.push_back(name);
+      if (evidence) evidence->x.push_back(px), evidence->y.push_back(py);
       return;
     }
     for (int c = 0; c < letters.choices && out.complete; ++c) {
@@ -138,11 +147,15 @@ EnumerateResult solution_modes_by_prefix(const UcpProblem& problem, Arith arith,
       name[static_cast<std::size_t>(k - 1)] = letters.fix(k - 1, c, child);
       const bool same_x = std::equal(zero.begin(), zero.begin() + n, child.begin());
       const bool same_y = std::equal(zero.begin() + n, zero.end(), child.begin() + n);
-      if ((same_x || non_empty(u.X, child, 0)) && (same_y || non_empty(u.Y, child, n))) self(self, k - 1, child);
+      Vec<Q> cx = px, cy = py;
+      if ((same_x || non_empty(true, child, k - 1, cx)) && (same_y || non_empty(false, child, k - 1, cy)))
+        self(self, k - 1, child, cx, cy);
     }
   };
   const std::vector<bool> none(static_cast<std::size_t>(2 * n), false);
-  if (non_empty(u.X, none, 0) && non_empty(u.Y, none, n)) walk(walk, letters.units, none);
+  Vec<Q> px, py;
+  if (non_empty(true, none, letters.units, px) && non_empty(false, none, letters.units, py))
+    walk(walk, letters.units, none, px, py);
   finish(out, count);
   return out;
 }

@@ -33,13 +33,27 @@ EnumerateResult enumerate_modes(const UcpProblem& problem, Arith arith, long max
                                 const exact::Deadline& deadline = {},
                                 const std::function<void(long, long)>& progress = {});
 
+/// The evidence of a prefix tree's walk (solution_modes_by_prefix with `evidence`), for its certificate: each dead
+/// prefix (one letter per contact, '?' for the contacts still undecided: the tree decides the last contact first,
+/// so the letters are a suffix) with the side found empty and the LP's Farkas vector over that side's rows
+/// (f^T A_j >= 0 on the face's columns, f^T b < 0), and per solution mode a point of its face of X and of Y.
+struct PrefixEvidence {
+  struct Dead {
+    std::string prefix;
+    bool x_side = true;
+    Vec<Q> farkas;
+  };
+  std::vector<Dead> dead;
+  std::vector<Vec<Q>> x, y;  ///< per solution mode (in solution_modes's order)
+};
+
 /// The same solution modes, in the same order, found by a prefix tree instead: depth first over the contacts (the
 /// last first), a prefix fixing the letters of some contacts and relaxing the others' complementarity. Its face
 /// of X x Y contains the faces of all its completions, so one LP that finds it empty prunes them all: the LPs are
 /// (letters) x (non-empty prefixes), not 4^nc; X and Y by separate LPs, a side a letter leaves unchanged without
 /// one. `x` and `y` are not set. kUnknown with complete = false when max_lps LPs or the deadline ran out (`lps`
-/// then says how many were solved).
+/// then says how many were solved). With `evidence`, also what proves each branch (PrefixEvidence).
 EnumerateResult solution_modes_by_prefix(const UcpProblem& problem, Arith arith, long max_lps,
-                                         const exact::Deadline& deadline = {});
+                                         const exact::Deadline& deadline = {}, PrefixEvidence* evidence = nullptr);
 
 }  // namespace contactcert::solvers::ucp

@@ -83,5 +83,26 @@ TEST(UcpQuery, GeneratorsCheckTheirRanges) {
   EXPECT_EQ(parse_generator("reduction", "--generate"), UcpGenerator::kReduction);
 }
 
+// `--all` (issue 32): the unique motion of Data Set 2 is the solve's own q_dot; a jammed problem has no motion (no
+// uniqueness answer); the prefix tree's budget is the run's Limit with the LPs covered; its options without --all
+// are refused.
+TEST(UcpQuery, AllDecidesTheUniquenessOfTheInstant) {
+  UcpQueryOptions o;
+  o.uniqueness.all = true;
+  const UcpAnswer unique = *run_ucp(load_ucp(scene("pang1994_dataset2.json")), o);
+  ASSERT_TRUE(unique.uniqueness);
+  EXPECT_EQ(unique.uniqueness->verdict.status, solvers::motion::UniquenessStatus::kUnique);
+  ASSERT_EQ(unique.uniqueness->verdict.motions.size(), 1u);
+  EXPECT_EQ(unique.uniqueness->verdict.motions[0], unique.report.physical->q_dot.to_q());
+  EXPECT_EQ(to_json(unique)["uniqueness"]["status"], "unique");
+  EXPECT_FALSE(run_ucp(load_ucp(scene("pang1994_dataset4.json")), o)->uniqueness);
+  o.uniqueness.max_modes = 2;
+  const Limited<UcpAnswer> limited = run_ucp(load_ucp(scene("pang1994_dataset2.json")), o);
+  ASSERT_FALSE(limited);
+  EXPECT_NE(limited.limit().what.find("(--max-modes 2) ran out"), std::string::npos) << limited.limit().what;
+  o.uniqueness.all = false;
+  EXPECT_NE(message([&] { check_ucp_options(o); }).find("--max-modes"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace contactcert::queries

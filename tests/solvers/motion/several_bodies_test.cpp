@@ -6,9 +6,11 @@
 #include <algorithm>
 
 #include "checker/ucp_check.h"
+#include "checker/uniqueness_check.h"
 #include "exact/json_input.h"
 #include "runtime/scenes.h"
 #include "solvers/motion/simulate.h"
+#include "solvers/motion/uniqueness_certificate.h"
 
 namespace contactcert::solvers::motion {
 namespace {
@@ -130,6 +132,28 @@ TEST(SeveralBodies, BundledRowMotionIsUniqueAtEveryStep) {
   }
 }
 
+/// The verdict of `check` on a step's motion_uniqueness certificate.
+checker::UniquenessCertificateCheck checked_uniqueness(const std::string& text) {
+  return checker::check_uniqueness_certificate(exact::JsonInput::parse(text, "step-K-uniqueness.json"));
+}
+
+// The row's first step with certificates: its `unique` is certified (the prefix tree's dead prefixes and solution
+// modes, the widest faces' duals) and `check` verifies it with the assembly embedded.
+TEST(SeveralBodies, BundledRowUniquenessIsCertified) {
+  const MotionScene scene =
+      read_motion_scene(exact::JsonInput::load(runtime::bundled_scenes_dir() + "/motion_pushed_row.json"));
+  SimulateOptions o;
+  o.steps = 1;
+  const Trajectory<Q> run = simulate<Q>(scene, o);
+  ASSERT_EQ(run.steps.size(), 1u);
+  EXPECT_FALSE(run.steps[0].uniqueness->evidence) << "the evidence is dropped once written";
+  const checker::UniquenessCertificateCheck c = checked_uniqueness(run.steps[0].uniqueness_certificate);
+  EXPECT_TRUE(c.valid) << c.reason;
+  EXPECT_EQ(c.verdict, "unique");
+  EXPECT_EQ(c.solution_modes, 81);
+  EXPECT_GT(c.dead, 0);
+}
+
 // Two bodies, one at its threshold: a 1/5 x 1 box on the floor (mu = 1/5), pushed at height 1/2 by the frictionless
 // finger, slides when the push is mu W = W / 5 and tips about its front corner (1/5, 0) when the push's moment
 // about it, F / 2, is the weight's, W / 10: F = W / 5 both ways, so both solve the step. Sliding is q_dot = (1, 0, 0);
@@ -153,6 +177,37 @@ TEST(SeveralBodies, BoxAtItsTippingThresholdBesideAnotherHasTwoMotions) {
   };
   EXPECT_TRUE(has({Q(1), Q(0), Q(0), Q(0), Q(0), Q(0)}));
   EXPECT_TRUE(has({Q(0), Q(2, 5), Q(-2), Q(0), Q(0), Q(0)}));
+}
+
+// The same step with certificates: its `not_unique` carries two solutions whose q_dot are the two motions derived
+// above, and `check` verifies them; `unique` written over the same problem, with the genuine prefix tree and every
+// solution mode's genuine duals, is refused (the duals bound q_dot to different values in different modes).
+TEST(SeveralBodies, TwoMotionsAtTheTippingThresholdAreCertifiedAndAForgedUniqueIsRefused) {
+  const std::string narrow =
+      R"({"name": "box 0", "shape": {"type": "polygon", "vertices": [[0, 0], ["1/5", 0], ["1/5", 1], [0, 1]]}, "mu": "1/2"})";
+  const Trajectory<Q> run = simulate<Q>(scene_of(narrow + pointed_box(1, Q(3)), "", "1/10", 1), SimulateOptions{});
+  ASSERT_EQ(run.steps.size(), 1u);
+  const std::string& text = run.steps[0].uniqueness_certificate;
+  const checker::UniquenessCertificateCheck c = checked_uniqueness(text);
+  EXPECT_TRUE(c.valid) << c.reason;
+  EXPECT_EQ(c.verdict, "not_unique");
+  const exact::JsonInput cert = exact::JsonInput::parse(text, "step-0-uniqueness.json");
+  std::vector<exact::Vec<Q>> q;
+  for (const exact::JsonInput& w : cert.at("witnesses").elements()) q.push_back(w.at("u").rational_vector().head(6));
+  ASSERT_EQ(q.size(), 2u);
+  exact::Vec<Q> slide(6), tip(6);
+  slide << 1, 0, 0, 0, 0, 0;
+  tip << 0, Q(2, 5), -2, 0, 0, 0;
+  EXPECT_TRUE((q[0] == slide && q[1] == tip) || (q[0] == tip && q[1] == slide));
+
+  const ucp::UcpProblem problem = ucp::read_ucp_problem(cert.at("problem"));
+  MotionUniqueness forged = motion_uniqueness(problem, exact::Arith::kExact, 1L << 12, true);
+  ASSERT_EQ(forged.status, UniquenessStatus::kNotUnique);
+  forged.status = UniquenessStatus::kUnique;
+  forged.motions.resize(1);
+  const checker::UniquenessCertificateCheck f = checked_uniqueness(uniqueness_certificate(problem, forged));
+  EXPECT_FALSE(f.valid);
+  EXPECT_NE(f.reason.find("bound of mode"), std::string::npos) << f.reason;
 }
 
 // Box 0 pushed into box 1, which stands against a wall (its front face on the wall's face x = 5/2, the wall's foot
