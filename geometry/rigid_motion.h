@@ -104,6 +104,9 @@ std::vector<Vec2<T>> apply_all(const Pose<T>& pose, const std::vector<Vec2<T>>& 
 }
 template <>
 std::vector<Vec2<exact::Q>> apply_all(const Pose<exact::Q>& pose, const std::vector<Vec2<exact::Q>>& points);
+/// R p + t over common denominators (as apply_all).
+template <>
+Vec2<exact::Q> Pose<exact::Q>::apply(const Vec2<exact::Q>& p) const;
 
 /// The angle (radians, a float view) that the rotation of a pose turns: atan2(s, c).
 double turned_angle(const Pose<double>& p);
