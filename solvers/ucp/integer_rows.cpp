@@ -1,5 +1,9 @@
 #include "solvers/ucp/integer_rows.h"
 
+#include <algorithm>
+#include <functional>
+#include <numeric>
+
 #include "exact/int_matrix.h"
 
 namespace contactcert::solvers::ucp {
@@ -35,14 +39,45 @@ std::vector<Z> primitive_integers_in(const std::vector<const Q*>& v) {
   return out;
 }
 
+std::size_t bits(const Z& x) { return mpz_sizeinbase(x.get_mpz_t(), 2); }
+
+/// A lower bound on the bits of the largest entry of the row q(0..k) over its common denominator L: q = a / b
+/// becomes a L / b, of at least bits(a) + bits(L) - bits(b) - 1 bits, and L >= every b.
+template <class Get>
+std::size_t row_bits(Index k, Get q) {
+  std::size_t max_den = 0, out = 0;
+  for (Index i = 0; i < k; ++i) max_den = std::max(max_den, bits(q(i).get_den()));
+  for (Index i = 0; i < k; ++i)
+    if (sgn(q(i)) != 0) out = std::max(out, bits(q(i).get_num()) + max_den - bits(q(i).get_den()) - 1);
+  return out;
+}
+
+/// f in Int128 (restarted in Z on overflow, exact::with_exact_ring) when `bits`, a lower bound on the bits the
+/// computation forms, fits in Int128 (127 bits), else straight in Z: a skipped attempt would have overflowed
+/// (cancellation aside, when only time is lost: both rings give the same answer).
+template <class F>
+auto in_ring(std::size_t bits, F&& f) {
+  return bits <= 127 ? exact::with_exact_ring<Q, Int128>(f) : f.template operator()<Z>();
+}
+
 }  // namespace
 
 SparseRows left_null_rows(const Mat<Q>& P) {
-  return exact::with_exact_ring<Q, Int128>([&]<class R>() { return left_null_rows_in<R>(P); });
+  // The kernel's elimination of P^T forms minors over up to min(rows, cols) of its rows (the columns of P), each a
+  // sum of products of one entry per row: at least the bits of the largest rows' entries, summed.
+  std::vector<std::size_t> b(static_cast<std::size_t>(P.cols()));
+  for (Index j = 0; j < P.cols(); ++j)
+    b[static_cast<std::size_t>(j)] = row_bits(P.rows(), [&](Index i) -> const Q& { return P(i, j); });
+  std::sort(b.begin(), b.end(), std::greater<>());
+  const auto depth = static_cast<std::ptrdiff_t>(std::min(P.rows(), P.cols()));
+  return in_ring(std::accumulate(b.begin(), b.begin() + depth, std::size_t{0}),
+                 [&]<class R>() { return left_null_rows_in<R>(P); });
 }
 
 std::vector<Z> primitive_integers(const std::vector<const Q*>& v) {
-  return exact::with_exact_ring<Q, Int128>([&]<class R>() { return primitive_integers_in<R>(v); });
+  return in_ring(
+      row_bits(static_cast<Index>(v.size()), [&](Index i) -> const Q& { return *v[static_cast<std::size_t>(i)]; }),
+      [&]<class R>() { return primitive_integers_in<R>(v); });
 }
 
 }  // namespace contactcert::solvers::ucp
