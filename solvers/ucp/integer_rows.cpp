@@ -52,26 +52,23 @@ std::size_t row_bits(Index k, Get q) {
   return out;
 }
 
-/// f in Int128 (restarted in Z on overflow, exact::with_exact_ring) when `bits`, a lower bound on the bits the
-/// computation forms, fits in Int128 (127 bits), else straight in Z: a skipped attempt would have overflowed
-/// (cancellation aside, when only time is lost: both rings give the same answer).
-template <class F>
-auto in_ring(std::size_t bits, F&& f) {
-  return bits <= 127 ? exact::with_exact_ring<Q, Int128>(f) : f.template operator()<Z>();
-}
-
 }  // namespace
 
-SparseRows left_null_rows(const Mat<Q>& P) {
-  // The kernel's elimination of P^T forms minors over up to min(rows, cols) of its rows (the columns of P), each a
-  // sum of products of one entry per row: at least the bits of the largest rows' entries, summed.
-  std::vector<std::size_t> b(static_cast<std::size_t>(P.cols()));
-  for (Index j = 0; j < P.cols(); ++j)
-    b[static_cast<std::size_t>(j)] = row_bits(P.rows(), [&](Index i) -> const Q& { return P(i, j); });
+std::size_t elimination_bits(const Mat<Q>& M, bool by_rows) {
+  // Minors over up to min(rows, cols) of the rows, each a sum of products of one entry per row: the largest rows'
+  // bits, summed.
+  const Index n = by_rows ? M.rows() : M.cols(), k = by_rows ? M.cols() : M.rows();
+  std::vector<std::size_t> b(static_cast<std::size_t>(n));
+  for (Index r = 0; r < n; ++r)
+    b[static_cast<std::size_t>(r)] = row_bits(k, [&](Index i) -> const Q& { return by_rows ? M(r, i) : M(i, r); });
   std::sort(b.begin(), b.end(), std::greater<>());
-  const auto depth = static_cast<std::ptrdiff_t>(std::min(P.rows(), P.cols()));
-  return in_ring(std::accumulate(b.begin(), b.begin() + depth, std::size_t{0}),
-                 [&]<class R>() { return left_null_rows_in<R>(P); });
+  const auto depth = static_cast<std::ptrdiff_t>(std::min(n, k));
+  return std::accumulate(b.begin(), b.begin() + depth, std::size_t{0});
+}
+
+SparseRows left_null_rows(const Mat<Q>& P) {
+  // The kernel of P^T: an elimination over the columns of P.
+  return in_ring(elimination_bits(P, false), [&]<class R>() { return left_null_rows_in<R>(P); });
 }
 
 std::vector<Z> primitive_integers(const std::vector<const Q*>& v) {

@@ -20,6 +20,10 @@ TEST(IntegerRows, LeftNullRowsDoNotDependOnTheColumnsScale) {
   P << 0, 1, Q(-3, 2), 0, 1, Q(5, 2), 1, 0, -1, 1, 0, 2;  // W^T of two contacts on a floor (normal rows, tangent rows)
   Mat<Q> big = P;
   for (Eigen::Index j = 0; j < 3; ++j) big.col(j) *= kBig * Q(static_cast<long>(j) + 2, 7);
+  // Small entries try Int128; the 80-bit columns go straight to Z (three pivots of 80 bits each).
+  EXPECT_LE(elimination_bits(P, false), 127u);
+  EXPECT_GT(elimination_bits(big, false), 3 * 79u);
+  EXPECT_GT(elimination_bits(big, true), 127u);
   const SparseRows a = left_null_rows(P), b = left_null_rows(big);
   ASSERT_EQ(a.rows(), 1);
   EXPECT_EQ(a.dense(), b.dense());
