@@ -10,6 +10,8 @@
 // puts it after the time 2 u / omega: a step cut at u is the step of that shorter time.
 #pragma once
 
+#include <vector>
+
 #include "exact/number.h"
 
 namespace contactcert::geometry {
@@ -90,6 +92,21 @@ Pose<T> twist_step(const Vec2<T>& v, const T& omega, const T& h) {
   r.t = centre - r.rotate(centre);
   return r;
 }
+
+/// R p + t for every point p of `points`: for T = Q over the pose's least common denominator L and each point's,
+/// (c, s, t) = (C, S, T) / L and p = P / M: R p + t = (C P_x - S P_y + T_x M, S P_x + C P_y + T_y M) / (L M), integer
+/// products and one reduction per coordinate instead of a reduced rational after every operation.
+template <class T>
+std::vector<Vec2<T>> apply_all(const Pose<T>& pose, const std::vector<Vec2<T>>& points) {
+  std::vector<Vec2<T>> out;
+  for (const Vec2<T>& p : points) out.push_back(pose.apply(p));
+  return out;
+}
+template <>
+std::vector<Vec2<exact::Q>> apply_all(const Pose<exact::Q>& pose, const std::vector<Vec2<exact::Q>>& points);
+/// R p + t over common denominators (as apply_all).
+template <>
+Vec2<exact::Q> Pose<exact::Q>::apply(const Vec2<exact::Q>& p) const;
 
 /// The angle (radians, a float view) that the rotation of a pose turns: atan2(s, c).
 double turned_angle(const Pose<double>& p);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "exact/interval_number.h"
 #include "solvers/motion/first_root.h"
 
 namespace contactcert::solvers::motion {
@@ -16,9 +17,7 @@ Vec2<T> from_point(const Point2& p) {
 
 template <class T>
 std::vector<Vec2<T>> world_body(const std::vector<Vec2<T>>& body, const Pose<T>& pose) {
-  std::vector<Vec2<T>> out;
-  for (const Vec2<T>& p : body) out.push_back(pose.apply(p));
-  return out;
+  return geometry::apply_all(pose, body);
 }
 
 /// Whether x lies outside the closed interval between u and v (comparisons only).
@@ -39,13 +38,42 @@ int on_segment(const Vec2<T>& p, const Vec2<T>& a, const Vec2<T>& b) {
   return lo > 0 && hi > 0 ? 1 : 0;
 }
 
+Vec2<exact::Interval> enclose(const Vec2<Q>& p) { return {exact::to_interval(p.x), exact::to_interval(p.y)}; }
+
+/// A polygon's vertices and, on the exact paths, their interval enclosures (exact/interval_number.h), from which
+/// most sign tests are taken without rationals.
+template <class T>
+struct Polygon {
+  const std::vector<Vec2<T>>& v;
+  std::vector<Vec2<exact::Interval>> in{};
+};
+
+template <class T>
+Polygon<T> polygon(const std::vector<Vec2<T>>& v) {
+  Polygon<T> p{v};
+  if constexpr (std::is_same_v<T, Q>)
+    for (const Vec2<Q>& x : v) p.in.push_back(enclose(x));
+  return p;
+}
+
+/// The sign of e x (q - a) for x's edge i (a -> a + e) and vertex k of y: from the enclosures when they prove it (exact
+/// paths), else from the numbers.
+template <class T>
+int side(const Polygon<T>& x, std::size_t i, const Polygon<T>& y, std::size_t k) {
+  const std::size_t j = (i + 1) % x.v.size();
+  if constexpr (std::is_same_v<T, Q>) {
+    const exact::Interval t = cross2(x.in[j] - x.in[i], y.in[k] - x.in[i]);
+    if (t.inf() > 0) return 1;
+    if (t.sup() < 0) return -1;
+  }
+  return sign(cross2(x.v[j] - x.v[i], y.v[k] - x.v[i]));
+}
+
 /// True if no vertex of `other` is strictly on the inner (left) side of x's edge i.
 template <class T>
-bool separates(const std::vector<Vec2<T>>& x, std::size_t i, const std::vector<Vec2<T>>& other) {
-  const Vec2<T>& a = x[i];
-  const Vec2<T> e = x[(i + 1) % x.size()] - a;
-  for (const Vec2<T>& q : other)
-    if (sign(cross2(e, q - a)) > 0) return false;
+bool separates(const Polygon<T>& x, std::size_t i, const Polygon<T>& other) {
+  for (std::size_t k = 0; k < other.v.size(); ++k)
+    if (side(x, i, other, k) > 0) return false;
   return true;
 }
 
@@ -66,12 +94,12 @@ bool boxes_apart(const std::vector<Vec2<Q>>& x, const std::vector<Vec2<Q>>& y, b
 }
 
 template <class T>
-bool convex_overlap(const std::vector<Vec2<T>>& x, const std::vector<Vec2<T>>& y) {
+bool convex_overlap(const Polygon<T>& x, const Polygon<T>& y) {
   if constexpr (std::is_same_v<T, Q>)
-    if (boxes_apart(x, y)) return false;  // the exact paths' quick test; the float path keeps its tolerance
-  for (std::size_t i = 0; i < x.size(); ++i)
+    if (boxes_apart(x.v, y.v)) return false;  // the exact paths' quick test; the float path keeps its tolerance
+  for (std::size_t i = 0; i < x.v.size(); ++i)
     if (separates(x, i, y)) return false;
-  for (std::size_t i = 0; i < y.size(); ++i)
+  for (std::size_t i = 0; i < y.v.size(); ++i)
     if (separates(y, i, x)) return false;
   return true;
 }
@@ -192,16 +220,19 @@ template <class T>
 std::string overlap(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips) {
   std::vector<std::vector<Vec2<T>>> world;
   for (std::size_t b = 0; b < g.bodies.size(); ++b) world.push_back(world_body(g.bodies[b], poses[b]));
+  std::vector<Polygon<T>> bodies, obstacles;
+  for (const std::vector<Vec2<T>>& x : world) bodies.push_back(polygon(x));
+  for (const std::vector<Vec2<T>>& x : g.obstacles) obstacles.push_back(polygon(x));
+  const Polygon<T> fingers = polygon(tips);
   for (std::size_t b = 0; b < world.size(); ++b) {
-    const std::vector<Vec2<T>>& body = world[b];
+    const Polygon<T>& body = bodies[b];
     for (std::size_t o = 0; o < g.obstacles.size(); ++o)
-      if (convex_overlap(body, g.obstacles[o])) return "the " + g.body_names[b] + " overlaps " + g.obstacle_names[o];
+      if (convex_overlap(body, obstacles[o])) return "the " + g.body_names[b] + " overlaps " + g.obstacle_names[o];
     for (std::size_t b2 = b + 1; b2 < world.size(); ++b2)
-      if (convex_overlap(body, world[b2])) return "the " + g.body_names[b] + " overlaps the " + g.body_names[b2];
+      if (convex_overlap(body, bodies[b2])) return "the " + g.body_names[b] + " overlaps the " + g.body_names[b2];
     for (std::size_t f = 0; f < tips.size(); ++f) {
       bool inside = true;
-      for (std::size_t i = 0; i < body.size() && inside; ++i)
-        inside = sign(cross2(body[(i + 1) % body.size()] - body[i], tips[f] - body[i])) > 0;
+      for (std::size_t i = 0; i < body.v.size() && inside; ++i) inside = side(body, i, fingers, f) > 0;
       if (inside) return g.finger_names[f] + " is inside the " + g.body_names[b];
     }
   }
@@ -210,6 +241,39 @@ std::string overlap(const SceneGeometry<T>& g, const Poses<T>& poses, const std:
 
 namespace {
 
+using exact::Interval;
+
+/// The gap (times 1 + u^2) of a point p (w = p - c) against the segment a -> a + e (K = (c - a) x e) over a step
+/// that turns a body by u = k tau about c, or translates it by v tau: p is the body's own vertex (body_point) or a
+/// point moving with velocity pv in the world against the body's edge. In powers of tau; over T or an enclosure.
+template <class U>
+std::vector<U> gap_polynomial(bool turning, bool body_point, const Vec2<U>& p, const Vec2<U>& w, const Vec2<U>& pv,
+                              const Vec2<U>& v, const Vec2<U>& a, const Vec2<U>& e, const U& K, const U& k) {
+  if (!turning) {
+    const Vec2<U> rel = body_point ? v : pv - v;
+    return {cross2(p - a, e), cross2(rel, e)};
+  }
+  const U C = cross2(w, e), D = dot2(w, e);
+  if (body_point) return {K + C, U(-2) * D * k, (K - C) * k * k};
+  // The point relative to the body: c + R(-u)(p + tau pv - c); eq. for a fixed point when pv = 0.
+  const U Cv = cross2(pv, e), Dv = dot2(pv, e);
+  return {K + C, Cv + U(2) * D * k, (K - C) * k * k + U(2) * Dv * k, -Cv * k * k};
+}
+
+/// True if the enclosure g of a pair's gap polynomial proves the exact path's verdict that the pair closes no gap
+/// in (0, H]: g_0 <= 0 (touching or beyond the edge's line at the start: skipped), or g_0 > 0 and positive_on's
+/// bound g_0 + sum min(0, g_i) H^i > 0 (first_root.cpp); the exact bound lies in the enclosure computed here.
+bool closes_no_gap(const std::vector<Interval>& g, const Interval& H) {
+  if (g[0].sup() <= 0) return true;
+  if (g[0].inf() <= 0) return false;
+  Interval bound = g[0], power(1);
+  for (std::size_t i = 1; i < g.size(); ++i) {
+    power *= H;
+    bound += Interval(std::min(g[i].inf(), 0.0), std::min(g[i].sup(), 0.0)) * power;
+  }
+  return bound.inf() > 0;
+}
+
 /// The first closing contact of body `which` (world vertices `body`, twist (v, omega)) with the obstacles and the
 /// free fingers before `limit`: updates best and limit.
 template <class T>
@@ -217,17 +281,20 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::ve
                      const std::vector<Vec2<T>>& tips, const Vec2<T>& v, const T& omega,
                      const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H,
                      std::optional<ClosingContact<T>>& best, T& limit) {
+  constexpr bool exact_path = std::is_same_v<T, Q>;
   const std::string& name = g.body_names[which];
   const std::size_t nb = body.size();
   const bool turning = sign(omega) != 0;
   const T k = omega / T(2);  // u = k tau
   const Vec2<T> c = turning ? Vec2<T>{-v.y / omega, v.x / omega} : Vec2<T>{T(0), T(0)};
-  // Each point p with w = p - c, each segment a -> a + e with K = (c - a) x e: computed once per step, shared by
-  // every pair that uses them. On the exact paths also boxes, [lo, hi]: the segment's bounding box, and the box
-  // that a point not moving on its own stays in relative to the body (a body vertex in the world, an obstacle
-  // vertex in the body's frame) over the step: each coordinate moves by at most |v|_inf H (a translation) or
-  // |p - c|_2 |theta| <= 2 |p - c|_inf |omega| H (turning: the Cayley angle |theta| = 2 |atan(omega tau / 2)| <=
-  // |omega| tau). A pair whose boxes are apart cannot meet in the step: it is skipped by comparisons alone.
+  // Each point p with w = p - c, each segment a -> a + e with K = (c - a) x e: computed once per step when a pair
+  // needs them, shared by every pair that uses them. On the exact paths also boxes, [lo, hi]: the segment's
+  // bounding box, and the box that a point not moving on its own stays in relative to the body (a body vertex in
+  // the world, an obstacle vertex in the body's frame) over the step: each coordinate moves by at most |v|_inf H (a
+  // translation) or |p - c|_2 |theta| <= 2 |p - c|_inf |omega| H (turning: the Cayley angle |theta| = 2 |atan(omega
+  // tau / 2)| <= |omega| tau). A pair whose boxes are apart cannot meet in the step: it is skipped by comparisons.
+  // Before all that, the exact paths compute each pair's gap polynomial over interval enclosures of the data
+  // (exact/interval_number.h): most pairs are proved to close no gap there (closes_no_gap), without rationals.
   const auto magnitude = [](const T& x) { return sign(x) < 0 ? T(-x) : x; };
   const auto larger = [](const T& x, const T& y) { return x < y ? y : x; };
   const T reach = turning ? T(2 * magnitude(omega) * H) : T(larger(magnitude(v.x), magnitude(v.y)) * H);
@@ -241,7 +308,7 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::ve
   };
   const auto point = [&](const Vec2<T>& p, bool moves_on_its_own) {
     Point P{p, turning ? Vec2<T>(p - c) : p, p, p};
-    if constexpr (std::is_same_v<T, Q>) {
+    if constexpr (exact_path) {
       if (moves_on_its_own) return P;
       const T r = turning ? T(reach * larger(magnitude(P.w.x), magnitude(P.w.y))) : reach;
       P = {p, P.w, {p.x - r, p.y - r}, {p.x + r, p.y + r}, true};
@@ -257,26 +324,54 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::ve
                    {std::max(a.x, b.x), std::max(a.y, b.y)},
                    turning ? T(cross2(c - a, e)) : T(0)};
   };
-  // g: the gap (times 1 + u^2) of point P.p, moving with velocity pv in the world (unless it is the body's own
-  // vertex, body_point), against the segment S (a body edge when !body_point), in powers of tau.
-  const auto consider = [&](const Point& P, const Vec2<T>& pv, bool body_point, const Segment& S,
-                            const std::string& name) {
+  // A shape's points and segments, each made on first use, and the velocity of its points in the world (a free
+  // finger's; zero for a body or an obstacle); on the exact paths with the enclosures of its vertices and velocity.
+  struct Shape {
+    const std::vector<Vec2<T>>& x;
+    Vec2<T> velocity;
+    bool moves_on_its_own = false;
+    std::vector<std::optional<Point>> points = std::vector<std::optional<Point>>(x.size());
+    std::vector<std::optional<Segment>> segments = std::vector<std::optional<Segment>>(x.size());
+    std::vector<Vec2<Interval>> enclosed{};
+    Vec2<Interval> velocity_in{};
+  };
+  const Vec2<T> zero{T(0), T(0)};
+  const auto enclosed = [&](Shape&& s) {
+    if constexpr (exact_path) {
+      for (const Vec2<Q>& p : s.x) s.enclosed.push_back(enclose(p));
+      s.velocity_in = enclose(s.velocity);
+    }
+    return std::move(s);
+  };
+  [[maybe_unused]] Interval k_in, limit_in;
+  [[maybe_unused]] Vec2<Interval> c_in, v_in;
+  if constexpr (exact_path) {
+    const Interval omega_in = exact::to_interval(omega);
+    v_in = enclose(v);
+    k_in = omega_in / 2;
+    if (turning) c_in = {-v_in.y / omega_in, v_in.x / omega_in};
+    limit_in = exact::to_interval(limit);
+  }
+  // The gap (times 1 + u^2) of point i of X, moving with velocity pv in the world (unless it is the body's own
+  // vertex, body_point), against segment j of Y (a body edge when !body_point), in powers of tau.
+  const auto consider = [&](Shape& X, std::size_t i, bool body_point, Shape& Y, std::size_t j, const auto& pair_name) {
+    const Vec2<T>& pv = X.velocity;
+    if constexpr (exact_path) {
+      const Vec2<Interval>&p = X.enclosed[i], &a = Y.enclosed[j];
+      const Vec2<Interval> e = Y.enclosed[(j + 1) % Y.enclosed.size()] - a;
+      const Vec2<Interval> w = turning ? p - c_in : p;
+      const Interval K = turning ? cross2(c_in - a, e) : Interval(0);
+      if (closes_no_gap(gap_polynomial<Interval>(turning, body_point, p, w, X.velocity_in, v_in, a, e, K, k_in),
+                        limit_in))
+        return;
+    }
+    if (!X.points[i]) X.points[i] = point(X.x[i], X.moves_on_its_own);
+    if (!Y.segments[j]) Y.segments[j] = segment(Y.x, j);
+    const Point& P = *X.points[i];
+    const Segment& S = *Y.segments[j];
     if (P.boxed && (P.hi.x < S.lo.x || S.hi.x < P.lo.x || P.hi.y < S.lo.y || S.hi.y < P.lo.y)) return;
     const Vec2<T>&p = P.p, &a = S.a, &e = S.e;
-    std::vector<T> poly;
-    if (!turning) {
-      const Vec2<T> rel = body_point ? v : pv - v;
-      poly = {cross2(p - a, e), cross2(rel, e)};
-    } else {
-      const T &K = S.K, C = cross2(P.w, e), D = dot2(P.w, e);
-      if (body_point) {
-        poly = {K + C, T(-2) * D * k, (K - C) * k * k};
-      } else {
-        // The point relative to the body: c + R(-u)(p + tau pv - c); eq. for a fixed point when pv = 0.
-        const T Cv = cross2(pv, e), Dv = dot2(pv, e);
-        poly = {K + C, Cv + T(2) * D * k, (K - C) * k * k + T(2) * Dv * k, -Cv * k * k};
-      }
-    }
+    const std::vector<T> poly = gap_polynomial<T>(turning, body_point, p, P.w, pv, v, a, e, S.K, k);
     if (sign(poly[0]) <= 0) return;  // touching (or beyond the edge's line) at the start
     const auto accept = [&](const T& tau) {
       const Pose<T> m = geometry::twist_step(v, omega, tau);
@@ -291,38 +386,27 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::ve
     const auto root = first_gap_root<T>(poly, limit, accept);
     if (!root) return;
     if (best && !(root->tau < best->tau)) return;
-    best = ClosingContact<T>{root->tau, root->exact, name};
+    best = ClosingContact<T>{root->tau, root->exact, pair_name()};
     limit = root->tau;
+    if constexpr (exact_path) limit_in = exact::to_interval(limit);
   };
-  const Vec2<T> zero{T(0), T(0)};
-  std::vector<Point> body_points;
-  std::vector<Segment> body_edges;
-  for (std::size_t i = 0; i < nb; ++i) {
-    body_points.push_back(point(body[i], false));
-    body_edges.push_back(segment(body, i));
-  }
+  Shape B = enclosed({body, zero});
   for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
     const std::vector<Vec2<T>>& ob = g.obstacles[o];
-    std::vector<Point> ob_points;
-    std::vector<Segment> ob_edges;
-    for (std::size_t j = 0; j < ob.size(); ++j) {
-      ob_points.push_back(point(ob[j], false));
-      ob_edges.push_back(segment(ob, j));
-    }
+    Shape O = enclosed({ob, zero});
     for (std::size_t i = 0; i < nb; ++i)
       for (std::size_t j = 0; j < ob.size(); ++j)
-        consider(body_points[i], zero, true, ob_edges[j],
-                 vertex_name(name, i) + " on " + edge_name(g.obstacle_names[o], j));
+        consider(B, i, true, O, j, [&] { return vertex_name(name, i) + " on " + edge_name(g.obstacle_names[o], j); });
     for (std::size_t j = 0; j < ob.size(); ++j)
       for (std::size_t i = 0; i < nb; ++i)
-        consider(ob_points[j], zero, false, body_edges[i],
-                 vertex_name(g.obstacle_names[o], j) + " on " + edge_name(name, i));
+        consider(O, j, false, B, i, [&] { return vertex_name(g.obstacle_names[o], j) + " on " + edge_name(name, i); });
   }
   for (std::size_t f = 0; f < tips.size(); ++f) {
     if (!free_velocity[f]) continue;
-    const Point tip = point(tips[f], true);
+    const std::vector<Vec2<T>> at{tips[f]};
+    Shape tip = enclosed({at, *free_velocity[f], true});
     for (std::size_t i = 0; i < nb; ++i)
-      consider(tip, *free_velocity[f], false, body_edges[i], g.finger_names[f] + " on " + edge_name(name, i));
+      consider(tip, 0, false, B, i, [&] { return g.finger_names[f] + " on " + edge_name(name, i); });
   }
 }
 

@@ -428,12 +428,13 @@ bool Stepper<T>::step() {
   r.poses_after = poses;
   r.tips_after = tips;
   r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
-  out_.steps.push_back(r);
+  out_.steps.push_back(std::move(r));
+  const StepRecord<T>& last = out_.steps.back();
   if (const std::string o = overlap(g_, poses, tips); !o.empty())
     finish(RunStatus::kOverlap, o + " after step " + std::to_string(k));
-  else if (!r.cut_exact)
+  else if (!last.cut_exact)
     finish(RunStatus::kIrrationalContactTime,
-           r.cut_by + " closes at an irrational time: the run stops just before it, the gap > 0 (step " +
+           last.cut_by + " closes at an irrational time: the run stops just before it, the gap > 0 (step " +
                std::to_string(k) + ")");
   return done(true);
 }

@@ -1,5 +1,9 @@
 #include "solvers/ucp/integer_rows.h"
 
+#include <algorithm>
+#include <functional>
+#include <numeric>
+
 #include "exact/int_matrix.h"
 
 namespace contactcert::solvers::ucp {
@@ -35,14 +39,42 @@ std::vector<Z> primitive_integers_in(const std::vector<const Q*>& v) {
   return out;
 }
 
+std::size_t bits(const Z& x) { return mpz_sizeinbase(x.get_mpz_t(), 2); }
+
+/// A lower bound on the bits of the largest entry of the row q(0..k) over its common denominator L: q = a / b
+/// becomes a L / b, of at least bits(a) + bits(L) - bits(b) - 1 bits, and L >= every b.
+template <class Get>
+std::size_t row_bits(Index k, Get q) {
+  std::size_t max_den = 0, out = 0;
+  for (Index i = 0; i < k; ++i) max_den = std::max(max_den, bits(q(i).get_den()));
+  for (Index i = 0; i < k; ++i)
+    if (sgn(q(i)) != 0) out = std::max(out, bits(q(i).get_num()) + max_den - bits(q(i).get_den()) - 1);
+  return out;
+}
+
 }  // namespace
 
+std::size_t elimination_bits(const Mat<Q>& M, bool by_rows) {
+  // Minors over up to min(rows, cols) of the rows, each a sum of products of one entry per row: the largest rows'
+  // bits, summed.
+  const Index n = by_rows ? M.rows() : M.cols(), k = by_rows ? M.cols() : M.rows();
+  std::vector<std::size_t> b(static_cast<std::size_t>(n));
+  for (Index r = 0; r < n; ++r)
+    b[static_cast<std::size_t>(r)] = row_bits(k, [&](Index i) -> const Q& { return by_rows ? M(r, i) : M(i, r); });
+  std::sort(b.begin(), b.end(), std::greater<>());
+  const auto depth = static_cast<std::ptrdiff_t>(std::min(n, k));
+  return std::accumulate(b.begin(), b.begin() + depth, std::size_t{0});
+}
+
 SparseRows left_null_rows(const Mat<Q>& P) {
-  return exact::with_exact_ring<Q, Int128>([&]<class R>() { return left_null_rows_in<R>(P); });
+  // The kernel of P^T: an elimination over the columns of P.
+  return in_ring(elimination_bits(P, false), [&]<class R>() { return left_null_rows_in<R>(P); });
 }
 
 std::vector<Z> primitive_integers(const std::vector<const Q*>& v) {
-  return exact::with_exact_ring<Q, Int128>([&]<class R>() { return primitive_integers_in<R>(v); });
+  return in_ring(
+      row_bits(static_cast<Index>(v.size()), [&](Index i) -> const Q& { return *v[static_cast<std::size_t>(i)]; }),
+      [&]<class R>() { return primitive_integers_in<R>(v); });
 }
 
 }  // namespace contactcert::solvers::ucp

@@ -3,6 +3,7 @@
 // null-space row has at most rank(P) + 1 non-zero entries, a row of Y's C at most 2 per contact).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "exact/int_matrix.h"
@@ -18,6 +19,18 @@ using SparseRows = exact::SparseIntMatrix<exact::Z>;
 /// quasistatic problem, whose rows are primitive integers), b as rationals; exact::integer_system scales them for the
 /// exact checks.
 using IntegerPolyhedron = exact::RationalRows;
+
+/// A lower bound on the bits of the minors an elimination over the rows of M (by_rows) or over its columns forms:
+/// each row over its common denominator, the largest min(rows, cols) of them summed (cancellation aside).
+std::size_t elimination_bits(const exact::Mat<exact::Q>& M, bool by_rows);
+
+/// f in Int128, restarted in Z on overflow (exact::with_exact_ring<Q, Int128>), or straight in Z when `bits` (a
+/// lower bound on the bits f forms) is over the 127 that Int128 holds: a skipped attempt would have overflowed
+/// (cancellation aside, when only time is lost: both rings give the same answer).
+template <class F>
+auto in_ring(std::size_t bits, F&& f) {
+  return bits <= 127 ? exact::with_exact_ring<exact::Q, exact::Int128>(f) : f.template operator()<exact::Z>();
+}
 
 /// A basis of the left null space {z : z^T P = 0} of P: one row per row f of P outside the pivots of the
 /// reduced row echelon form of P^T, with z_f > 0, zero at the other non-pivot rows (the basis of

@@ -6,12 +6,14 @@
 #include "exact/fraction_free.h"
 #include "exact/int_matrix.h"
 #include "exact/linalg.h"
+#include "solvers/ucp/integer_rows.h"
 
 // Everything here runs in integers: the problem's data once per call (IntegerData: each row of P and of [Jn; Jt]
 // times the lcm of its denominators, dense and sparse exact::IntMatrix rows with their scales), every rational vector
 // over one common denominator, so that each equality of (2)-(5) is an integer dot product equal to 0 and each friction
 // condition an integer comparison; the physics stays in that form (exact::RationalVector). Int128 first and, when a
-// number does not fit (RingOverflow), again in Z (with_exact_ring): exact either way, 128 bits are only a speed-up.
+// number does not fit (RingOverflow), again in Z (in_ring: straight in Z when the sizes of P show Int128 would
+// overflow): exact either way, 128 bits are only a speed-up.
 
 namespace contactcert::solvers::ucp {
 
@@ -441,7 +443,7 @@ std::optional<PatternSolution> pattern_solution_in(const QuasistaticProblem& p, 
 }  // namespace
 
 std::optional<PhysicalSolution> recover(const QuasistaticProblem& p, const Vec<Q>& x, const Vec<Q>& y) {
-  return exact::with_exact_ring<Q, Int128>([&]<class R>() {
+  return in_ring(elimination_bits(p.P, true), [&]<class R>() {
     const IntegerData<R> g(p);
     std::optional<PhysicalSolution> s = velocities_in<R>(p, g, x);
     if (s) forces_in<R>(g, y, *s);
@@ -451,11 +453,11 @@ std::optional<PhysicalSolution> recover(const QuasistaticProblem& p, const Vec<Q
 
 std::optional<PatternSolution> pattern_solution(const QuasistaticProblem& p, const std::vector<bool>& x_zero,
                                                 const std::vector<bool>& y_zero) {
-  return exact::with_exact_ring<Q, Int128>([&]<class R>() { return pattern_solution_in<R>(p, x_zero, y_zero); });
+  return in_ring(elimination_bits(p.P, true), [&]<class R>() { return pattern_solution_in<R>(p, x_zero, y_zero); });
 }
 
 ConditionsCheck check_conditions(const QuasistaticProblem& p, const PhysicalSolution& s) {
-  return exact::with_exact_ring<Q, Int128>([&]<class R>() { return check_in<R>(p, IntegerData<R>(p), s); });
+  return in_ring(elimination_bits(p.P, true), [&]<class R>() { return check_in<R>(p, IntegerData<R>(p), s); });
 }
 
 }  // namespace contactcert::solvers::ucp

@@ -45,5 +45,25 @@ TEST(RigidMotion, ZeroOmegaIsATranslation) {
   EXPECT_EQ(step.t, (Vec2<Q>{Q(3, 10), Q(-3, 5)}));
 }
 
+// Pose<Q>::apply and apply_all work over common denominators: the same reduced rationals as R p + t computed
+// operation by operation (== compares reduced rationals: the result is in lowest terms), for a pose whose numbers share
+// one denominator and for one whose numbers do not.
+TEST(RigidMotion, ApplyOverCommonDenominatorsIsRotatePlusTranslate) {
+  const Pose<Q> shared = compose(twist_step<Q>({Q(1, 3), Q(-2)}, Q(5, 7), Q(1, 10)), cayley_rotation<Q>(Q(2, 9)));
+  Pose<Q> mixed = cayley_rotation<Q>(Q(3, 4));  // t over other denominators
+  mixed.t = {Q(-7, 6), Q(5, 11)};
+  const std::vector<Vec2<Q>> points{{Q(0), Q(0)}, {Q(2), Q(-3)}, {Q(1, 2), Q(7, 3)}, {Q(-5, 8), Q(4)}};
+  for (const Pose<Q>* pose : {&shared, static_cast<const Pose<Q>*>(&mixed)}) {
+    const std::vector<Vec2<Q>> all = apply_all(*pose, points);
+    ASSERT_EQ(all.size(), points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Vec2<Q>& p = points[i];
+      const Vec2<Q> want{pose->c * p.x - pose->s * p.y + pose->t.x, pose->s * p.x + pose->c * p.y + pose->t.y};
+      EXPECT_EQ(pose->apply(p), want);
+      EXPECT_EQ(all[i], want);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace contactcert::geometry
