@@ -1,7 +1,7 @@
 // `contactcert assembly FILE`: the questions on an assembly of several bodies (docs/formats.md section 3a) through
 // the query layer (queries/assembly_query.h): stability from rest under the bodies' loads (strongly stable, weakly
 // stable or unstable, with a witness or a certificate), or with --ucp Pang, Trinkle and Lo's quasistatic problem for
-// N bodies. Exit 3 when a budget runs out before an answer.
+// N bodies (with --all: is the bodies' motion unique?). Exit 3 when a budget runs out before an answer.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <limits>
@@ -11,6 +11,7 @@
 #include "cli/option_checks.h"
 #include "queries/assembly_query.h"
 #include "queries/ucp_query.h"
+#include "solvers/motion/simulate.h"
 
 namespace contactcert::cli {
 
@@ -48,6 +49,8 @@ struct AssemblyCliOptions {
   long max_nodes = 0;  ///< 0: the query's default (it differs between the questions)
   long max_bases = 0;
   std::string certificate, svg;
+  long max_modes = solvers::motion::SimulateOptions{}.max_uniqueness_modes;  // shown as the default; unset unless given
+  queries::UniquenessOptions uniqueness;  ///< --ucp --all; its max_modes set from the above by the callback
 };
 
 int run_assembly(const AssemblyCliOptions& o) {
@@ -59,6 +62,7 @@ int run_assembly(const AssemblyCliOptions& o) {
     if (o.max_bases > 0) q.max_bases = o.max_bases;
     q.certificate = o.certificate;
     q.svg = o.svg;
+    q.uniqueness = o.uniqueness;
     return print_assembly_answer(queries::run_assembly_ucp(in, q), o.file, o.common.json, "assembly");
   }
   queries::AssemblyStabilityOptions q;
@@ -98,8 +102,21 @@ void register_assembly(CLI::App& app, Action& action) {
                   "Write the evidence for `contactcert check` here (assembly_stability; with --ucp ucp_solvable or "
                   "ucp_jammed)");
   sub->add_option("--svg", o->svg, "Draw the assembly with its contacts and the witness's contact forces here");
+  sub->add_flag("--all", o->uniqueness.all,
+                "With --ucp: also decide whether the bodies' motion is unique (the prefix tree of simulate's steps)");
+  sub->add_option("--max-modes", o->max_modes, "--ucp --all: LP budget of the uniqueness prefix tree")
+      ->check(whole_number<long>(1, std::numeric_limits<long>::max()))
+      ->capture_default_str();
+  sub->add_option("--uniqueness-certificate", o->uniqueness.certificate,
+                  "--ucp --all: write the motion_uniqueness certificate of its verdict to this file");
   sub->callback([o, sub, &action] {
-    if (!o->ucp) refuse_given(*sub, {"--max-bases"}, "only --ucp has a Step 3");
+    if (!o->ucp) {
+      refuse_given(*sub, {"--max-bases"}, "only --ucp has a Step 3");
+      refuse_given(*sub, {"--all", "--max-modes", "--uniqueness-certificate"},
+                   "an option of --ucp's uniqueness question (stability from rest asks none)");
+    }
+    if (sub->count("--max-modes") > 0) o->uniqueness.max_modes = o->max_modes;
+    queries::check_uniqueness_options(o->uniqueness, o->common.query().arith);
     action = [o] { return run_assembly(*o); };
   });
 }

@@ -96,7 +96,6 @@ void print_ucp_text(const UcpCliOptions& o, const queries::UcpAnswer& a) {
   if (!o.query.certificate.empty() && a.certificate.empty())
     std::cout << "  no certificate written: the verdict is unknown\n";
   if (a.uniqueness) std::cout << queries::to_text(*a.uniqueness, 0);
-  if (o.query.uniqueness.all && !a.uniqueness) std::cout << "  uniqueness: no solution, no motion\n";
 }
 
 /// `ucp ASSEMBLY` (a quasistatic_scene with bodies): the query of `contactcert assembly --ucp`, the complete search.

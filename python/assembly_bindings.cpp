@@ -39,11 +39,14 @@ Answer stability(const Assembly& a, const std::string& arith, double time_limit,
   return {queries::to_json(ans).dump(), ans.certificate_text, queries::to_svg(a, ans)};
 }
 
-/// `assembly FILE --ucp [--max-nodes N] [--max-bases N] [--certificate F]`.
+/// `assembly FILE --ucp [--max-nodes N] [--max-bases N] [--certificate F]`; `uniqueness`: --all, with its budget
+/// (--max-modes) and certificate file (--uniqueness-certificate).
 Answer ucp(const Assembly& a, const std::string& arith, double time_limit, std::optional<long> max_nodes,
-           std::optional<long> max_bases, const std::string& certificate) {
+           std::optional<long> max_bases, const std::string& certificate, bool uniqueness,
+           std::optional<long> max_modes, const std::string& uniqueness_certificate) {
   auto o = options<queries::AssemblyUcpOptions>(arith, time_limit, max_nodes, certificate);
   o.max_bases = max_bases.value_or(o.max_bases);
+  o.uniqueness = {uniqueness, max_modes, uniqueness_certificate};
   const queries::AssemblyUcpAnswer ans = answer(queries::run_assembly_ucp(a, o));
   return {queries::to_json(ans).dump(), ans.certificate_text, queries::to_svg(a, ans)};
 }

@@ -106,7 +106,7 @@ struct AssemblyUcpAnswer {
   std::string certificate;                   ///< the file written ("" = none: not asked, or unknown)
   std::string certificate_text;              ///< its text
   std::string svg;                           ///< the picture written ("" = none)
-  /// with uniqueness.all and a solution: is its motion unique?
+  /// with uniqueness.all and a decided verdict: is its motion unique (no_motion when jammed)?
   std::optional<UniquenessAnswer> uniqueness;
 };
 

@@ -60,7 +60,7 @@ void check_ucp_options(const UcpQueryOptions& o);
 
 /// The verdict with its evidence, the certificate written (its text, and `certificate` the file, or both empty if
 /// none was asked or the verdict is unknown), the frames of the problem's contacts (a quasistatic_scene) and with
-/// --all the uniqueness of a solvable problem's motion.
+/// --all the uniqueness of a decided problem's motion (no_motion when jammed).
 struct UcpAnswer {
   solvers::ucp::UcpReport report;
   std::string certificate_text;

@@ -23,9 +23,13 @@ Limited<std::optional<UniquenessAnswer>> decide_uniqueness(const ucp::UcpProblem
                                                            const UniquenessOptions& o, exact::Arith arith,
                                                            const std::string& command,
                                                            const std::string& assembly_text) {
-  if (!o.all || report.status != ucp::UcpStatus::kSolvable) return std::optional<UniquenessAnswer>();
-  const long budget = o.max_modes.value_or(motion::SimulateOptions{}.max_uniqueness_modes);
+  if (!o.all || report.status == ucp::UcpStatus::kUnknown) return std::optional<UniquenessAnswer>();
   UniquenessAnswer a;
+  if (report.status == ucp::UcpStatus::kJammed) {  // no solution, no motion: the jamming certificate proves it
+    a.verdict.status = motion::UniquenessStatus::kNoMotion;
+    return std::optional<UniquenessAnswer>(std::move(a));
+  }
+  const long budget = o.max_modes.value_or(motion::SimulateOptions{}.max_uniqueness_modes);
   a.verdict = motion::motion_uniqueness(problem, arith, budget, !o.certificate.empty());
   if (a.verdict.status == motion::UniquenessStatus::kUnknown)
     return Limit{
@@ -55,6 +59,9 @@ json to_json(const UniquenessAnswer& a) {
 
 std::string to_text(const UniquenessAnswer& a, long body_size) {
   const motion::MotionUniqueness& u = a.verdict;
+  if (u.status == motion::UniquenessStatus::kNoMotion)
+    return "  uniqueness: no motion (jammed, no solution: the jamming certificate is the proof; no motion_uniqueness "
+           "certificate)\n";
   const bool unique = u.status == motion::UniquenessStatus::kUnique;
   std::string s = std::string("  uniqueness: ") + (unique ? "unique" : "not unique") + " (" +
                   std::to_string(u.solution_modes.size()) + " solution modes, " + std::to_string(u.lps) + " LPs" +

@@ -1,7 +1,8 @@
 // `ucp --all`: is the motion of the single instant unique? After the solve, the prefix tree of
 // solvers/motion/uniqueness.h (the one simulate runs per step) finds every solution mode and bounds each body
 // velocity component over their faces: `unique` (one q_dot) or `not unique` (the distinct q_dot found). Its
-// certificate is the kind simulate writes per step, motion_uniqueness (docs/formats.md section 5).
+// certificate is the kind simulate writes per step, motion_uniqueness (docs/formats.md section 5). A jammed problem
+// has no solution, so no motion (`no_motion`): the jamming certificate is the proof, and no tree is walked.
 #pragma once
 
 #include <optional>
@@ -26,7 +27,7 @@ struct UniquenessOptions {
 };
 
 /// The verdict (without its evidence once written) and the certificate written (text and file; both empty when
-/// none was asked).
+/// none was asked or the verdict is no_motion).
 struct UniquenessAnswer {
   solvers::motion::MotionUniqueness verdict;
   std::string certificate_text;
@@ -37,9 +38,10 @@ struct UniquenessAnswer {
 /// float path.
 void check_uniqueness_options(const UniquenessOptions& o, exact::Arith arith);
 
-/// The uniqueness of a solvable quasistatic problem's motion (nullopt without --all or for an unsolvable problem: no
-/// motion), its certificate written if asked (`assembly_text` embedded, as the UCP certificates do); the Limit when the
-/// prefix tree's budget runs out, with the LPs it covered. `command` names the run in that Limit.
+/// With --all, the uniqueness of the quasistatic problem's motion: a solvable one's by the prefix tree, its certificate
+/// written if asked (`assembly_text` embedded, as the UCP certificates do); a jammed one's is no_motion (0 LPs, no
+/// certificate); nullopt without --all or for an undecided (unknown) solve. The Limit when the prefix tree's budget
+/// runs out, with the LPs it covered; `command` names the run in that Limit.
 Limited<std::optional<UniquenessAnswer>> decide_uniqueness(const solvers::ucp::UcpProblem& problem,
                                                            const solvers::ucp::UcpReport& report,
                                                            const UniquenessOptions& o, exact::Arith arith,
@@ -52,7 +54,7 @@ json uniqueness_json(const solvers::motion::MotionUniqueness& u);
 /// uniqueness_json and, if written, "certificate": the file.
 json to_json(const UniquenessAnswer& a);
 /// "  uniqueness: unique" or "not unique" and the motions, q_dot per body of `body_size` components (3 for an
-/// assembly's bodies; a problem file's q_dot is one body of nq).
+/// assembly's bodies; a problem file's q_dot is one body of nq), or "no motion" and where its proof is.
 std::string to_text(const UniquenessAnswer& a, long body_size);
 
 }  // namespace contactcert::queries

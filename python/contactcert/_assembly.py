@@ -116,17 +116,24 @@ class Assembly(ModesProblem[_core.Assembly]):
         return result
 
     def ucp(self, arith: Arith = "verified", time_limit: float = 0, max_nodes: int | None = None,
-            max_bases: int | None = None, certificate: Path | None = None) -> AssemblyUcp:
+            max_bases: int | None = None, certificate: Path | None = None, uniqueness: bool = False,
+            max_modes: int | None = None, uniqueness_certificate: Path | None = None) -> AssemblyUcp:
         """`contactcert assembly FILE --ucp`: solvable or jammed; an `unknown` status (a budget ran out) raises
-        BudgetExceeded with the result as its `result`."""
+        BudgetExceeded with the result as its `result`. uniqueness=True is `--all`: result["uniqueness"] says
+        whether the bodies' motion is unique (`no_motion` when jammed; max_modes: the prefix tree's LP budget,
+        `--max-modes`, whose exhaustion raises BudgetExceeded; uniqueness_certificate: the file of its
+        motion_uniqueness certificate, `--uniqueness-certificate`), as Ucp.solve."""
         from ._results import Certificate
 
         choice(arith, ARITHS, "--arith")
         time_limit = seconds(time_limit)
         max_nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
         max_bases = None if max_bases is None else whole_number(max_bases, 1, LONG_MAX, "--max-bases")
+        max_modes = None if max_modes is None else whole_number(max_modes, 1, LONG_MAX, "--max-modes")
         path = os.fspath(certificate) if certificate is not None else ""
-        data, text, svg = self._core.ucp(arith, time_limit, max_nodes, max_bases, path)
+        unique_path = os.fspath(uniqueness_certificate) if uniqueness_certificate is not None else ""
+        data, text, svg = self._core.ucp(arith, time_limit, max_nodes, max_bases, path, bool(uniqueness), max_modes,
+                                         unique_path)
         result = AssemblyUcp(json.loads(data), Certificate(text, path) if text else None, svg)
         if result.status == "unknown":
             raise budget_exceeded(result, result["reason"], ucp_covered(result.to_dict()))

@@ -36,8 +36,8 @@ class Ucp(FromSource[_core.Ucp]):
         """`contactcert ucp FILE`: solvable (with the pair and its physics) or jammed. An `unknown` verdict (a
         budget ran out) raises BudgetExceeded with the result as its `result`. max_nodes (default 200000) budgets
         the complete search only, max_bases (default 100000) Step 3 (not in method enumerate), as in the CLI.
-        uniqueness=True is `--all`: a solvable problem's result["uniqueness"] says whether its motion q_dot is
-        unique (max_modes: the prefix tree's LP budget, `--max-modes`; uniqueness_certificate: the file of its
+        uniqueness=True is `--all`: result["uniqueness"] says whether the motion q_dot is unique (`no_motion`
+        for a jammed problem; max_modes: the prefix tree's LP budget, `--max-modes`; uniqueness_certificate: the file of its
         motion_uniqueness certificate, `--uniqueness-certificate`)."""
         choice(method, ("paper", "modified", "complete", "enumerate"), "--method")
         choice(arith, ARITHS, "--arith")

@@ -55,6 +55,8 @@ const char* uniqueness_name(UniquenessStatus s) {
       return "unique";
     case UniquenessStatus::kNotUnique:
       return "not_unique";
+    case UniquenessStatus::kNoMotion:
+      return "no_motion";
     case UniquenessStatus::kUnknown:
       return "unknown";
   }
@@ -70,6 +72,10 @@ MotionUniqueness motion_uniqueness(const ucp::UcpProblem& problem, exact::Arith 
   out.lps = e.lps;
   if (e.status == ucp::UcpStatus::kUnknown || !e.complete) return out;
   out.solution_modes = e.solution_modes;
+  if (e.solution_modes.empty()) {
+    out.status = UniquenessStatus::kNoMotion;
+    return out;
+  }
   const std::size_t count = e.solution_modes.size();
   std::vector<std::vector<Index>> kept;
   for (const std::string& mode : e.solution_modes) kept.push_back(kept_components(p.nc, mode));

@@ -23,6 +23,7 @@ using exact::Q;
 enum class UniquenessStatus {
   kUnique,     ///< every solution has the same q_dot (proven: the LP bounds agree over every solution mode)
   kNotUnique,  ///< two solutions with different q_dot (both in `motions`), or a q_dot range unbounded
+  kNoMotion,   ///< no solution at all (jammed), so no motion: the prefix tree found no solution mode
   kUnknown     ///< the prefix tree's LP budget (max_modes) ran out
 };
 

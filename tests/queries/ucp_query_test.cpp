@@ -83,9 +83,9 @@ TEST(UcpQuery, GeneratorsCheckTheirRanges) {
   EXPECT_EQ(parse_generator("reduction", "--generate"), UcpGenerator::kReduction);
 }
 
-// `--all` (issue 32): the unique motion of Data Set 2 is the solve's own q_dot; a jammed problem has no motion (no
-// uniqueness answer); the prefix tree's budget is the run's Limit with the LPs covered; its options without --all
-// are refused.
+// `--all` (issue 32): the unique motion of Data Set 2 is the solve's own q_dot; a jammed problem (Data Set 4) has no
+// motion: `no_motion` without a tree walked, as the prefix tree itself finds (no solution mode); the prefix tree's
+// budget is the run's Limit with the LPs covered; its options without --all are refused.
 TEST(UcpQuery, AllDecidesTheUniquenessOfTheInstant) {
   UcpQueryOptions o;
   o.uniqueness.all = true;
@@ -95,7 +95,17 @@ TEST(UcpQuery, AllDecidesTheUniquenessOfTheInstant) {
   ASSERT_EQ(unique.uniqueness->verdict.motions.size(), 1u);
   EXPECT_EQ(unique.uniqueness->verdict.motions[0], unique.report.physical->q_dot.to_q());
   EXPECT_EQ(to_json(unique)["uniqueness"]["status"], "unique");
-  EXPECT_FALSE(run_ucp(load_ucp(scene("pang1994_dataset4.json")), o)->uniqueness);
+  const UcpInput jammed = load_ucp(scene("pang1994_dataset4.json"));
+  const UcpAnswer none = *run_ucp(jammed, o);
+  ASSERT_TRUE(none.uniqueness);
+  EXPECT_EQ(none.uniqueness->verdict.status, solvers::motion::UniquenessStatus::kNoMotion);
+  EXPECT_EQ(none.uniqueness->verdict.lps, 0);
+  EXPECT_EQ(to_json(none)["uniqueness"]["status"], "no_motion");
+  EXPECT_NE(to_text(*none.uniqueness, 0).find("uniqueness: no motion"), std::string::npos);
+  const solvers::motion::MotionUniqueness tree =
+      solvers::motion::motion_uniqueness(jammed.problem, exact::Arith::kVerified, 4096);
+  EXPECT_EQ(tree.status, solvers::motion::UniquenessStatus::kNoMotion);
+  EXPECT_GT(tree.lps, 0);
   o.uniqueness.max_modes = 2;
   const Limited<UcpAnswer> limited = run_ucp(load_ucp(scene("pang1994_dataset2.json")), o);
   ASSERT_FALSE(limited);
