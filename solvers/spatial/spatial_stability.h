@@ -53,7 +53,8 @@ struct SpatialStability {
   SpatialMotion moving;                  ///< a solution with vdot != 0, if has_moving
   std::vector<SpatialModeProof> proofs;  ///< strongly stable: the dead prefixes, then one per feasible moving mode
   long lps = 0;                          ///< the tree's and the verdict's
-  long modes_checked = 0;                ///< moving modes whose system in g was solved
+  long modes_checked = 0;                ///< moving modes whose system in g was decided
+  long modes_by_reuse = 0;               ///< of them, proven by an earlier mode's Motzkin vector moved (no LP)
   long modes_kinematically_feasible = 0;
   long tree_nodes = 0;
   long dead_prefixes = 0;
