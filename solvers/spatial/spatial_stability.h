@@ -12,7 +12,9 @@
 // As in the plane (solvers/stability/strong_stability.h): every mode but f..f has a strict row, so vdot != 0; an
 // f..f solution beside a resting one has vdot = 0 (two of them differ by dv with J dv = 0 and M dv in the range of
 // J^T, so dv^T M dv = 0). The moving modes are not listed one by one ((2 + 2m)^k strings): the kinematic prefix tree
-// (spatial_modes) proves whole subtrees empty for every g, and each feasible moving mode gets one LP in g.
+// (spatial_modes) proves whole subtrees empty for every g, and each feasible moving mode gets one LP in g, unless
+// the Motzkin vector of one of the last modes proven (in tree order, they share most letters) moved to its rows by
+// functional (move_rows, as the tree moves its dead prefixes' certificates) is one of its system: checked exactly.
 #pragma once
 
 #include <string>
