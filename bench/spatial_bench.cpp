@@ -6,18 +6,22 @@
 // its certificate text (what `modes SCENE --certificate F` computes), CPU time, and the counters modes, nodes
 // (prefixes visited), LPs and the certificate's bytes. bench/spatial_growth.py fits the growth in k and times the
 // command line end to end; `spatial_bench --scenes DIR` writes the scenes it uses as DIR/{box,peg}_K.json.
+// BM_SpatialStability: strong stability under gravity on the same cases, with the certificate's check time.
 //   build-bench/bench/spatial_bench --benchmark_filter=BM_SpatialModes
 #include <benchmark/benchmark.h>
 
+#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "checker/spatial_stability_check.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/spatial_scene.h"
 #include "runtime/memory.h"
 #include "solvers/spatial/spatial_modes.h"
+#include "solvers/spatial/spatial_stability.h"
 
 namespace {
 
@@ -84,6 +88,47 @@ void BM_SpatialModes(benchmark::State& state) {
   state.SetLabel(std::string(shape == 0 ? "box" : "peg") + " k=" + std::to_string(k));
 }
 BENCHMARK(BM_SpatialModes)
+    ->ArgsProduct({{0, 1}, {4, 8, 16, 32}})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->Iterations(1);
+
+// Strong stability under gravity g = (0, 0, -1, 0, 0, 0) (solvers/spatial/spatial_stability.h) on the same cases:
+// the verdict with its certificate text (what `stability SCENE --wrench 0,0,-1,0,0,0 --certificate F` computes),
+// CPU time, and the counters verdict (0 strongly stable, 1 weakly, 2 unstable: StabilityVerdict), LPs, moving modes
+// decided and of them proven by a moved Motzkin vector, the certificate's bytes, and check_ms: the independent
+// checker's CPU time on the certificate (checker/spatial_stability_check.h), left out (0) past the 32 MiB that `check`
+// reads.
+void BM_SpatialStability(benchmark::State& state) {
+  const int shape = static_cast<int>(state.range(0)), k = static_cast<int>(state.range(1));
+  const std::string text = scene_text(shape, k);
+  const geometry::SpatialScene scene = geometry::read_spatial_scene(exact::JsonInput::parse(text, "bench"));
+  exact::Vec<Q> g = exact::Vec<Q>::Zero(6);
+  g(2) = -1;
+  solvers::spatial::SpatialStability r;
+  std::string certificate;
+  for (auto _ : state) {
+    r = solvers::spatial::spatial_stability(scene, g);
+    certificate = solvers::spatial::spatial_stability_certificate(text, g, r);
+    benchmark::DoNotOptimize(certificate.size());
+  }
+  double check_ms = 0;
+  if (certificate.size() <= exact::kMaxInputBytes) {
+    const std::clock_t start = std::clock();
+    const auto check =
+        checker::check_spatial_stability_certificate(exact::JsonInput::parse(certificate, "certificate.json"));
+    check_ms = 1000.0 * static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+    if (!check.valid) state.SkipWithError(("certificate refused: " + check.reason).c_str());
+  }
+  state.counters["verdict"] = static_cast<double>(r.verdict);
+  state.counters["lps"] = static_cast<double>(r.lps);
+  state.counters["modes_decided"] = static_cast<double>(r.modes_checked);
+  state.counters["by_reuse"] = static_cast<double>(r.modes_by_reuse);
+  state.counters["cert_bytes"] = static_cast<double>(certificate.size());
+  state.counters["check_ms"] = check_ms;
+  state.SetLabel(std::string(shape == 0 ? "box" : "peg") + " k=" + std::to_string(k));
+}
+BENCHMARK(BM_SpatialStability)
     ->ArgsProduct({{0, 1}, {4, 8, 16, 32}})
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()

@@ -4,11 +4,14 @@
     bench/spatial_growth.py BUILD-BENCH/bench/spatial_bench BUILD/cli/contactcert [OTHER/contactcert] [--time-limit 60]
 
 Runs bench/spatial_bench (box on a plane and peg in a hole, k = 4, 8, 16, 32: the walk and its certificate text in
-process) and prints its counters as a Markdown table, then the exponent of each fitted over k (least squares of
-log value on log k, over k = 8 to 32 where the tree is past its start). Then the command line end to end,
-`contactcert modes SCENE --json --certificate FILE` on the same scenes (written by `spatial_bench --scenes DIR`),
-as the child's CPU seconds (user + sys) and the certificate's size; with OTHER (an older build) its CPU seconds
-and the ratio OTHER / ours side by side. A run past --time-limit prints "> LIMIT"; exit 3 with the covered nodes.
+process; strong stability under gravity with its certificate text and the checker's time) and prints its counters
+as Markdown tables, each with the exponent of its values fitted over k (least squares of log value on log k, over
+k = 8 to 32 where the tree is past its start). Then the command line end to end on the same scenes (written by
+`spatial_bench --scenes DIR`): `contactcert modes SCENE --json --certificate FILE` and
+`contactcert stability SCENE --wrench 0,0,-1,0,0,0 --json --certificate FILE`, as the child's CPU seconds (user +
+sys) and the certificate's size, then `contactcert check FILE` on the stability certificate; with OTHER (an older
+build) its CPU seconds and the ratio OTHER / ours side by side. A run stopped by --time-limit or a budget shows its
+exit code (3).
 """
 import argparse
 import json
@@ -19,6 +22,7 @@ import subprocess
 import tempfile
 
 KS = [4, 8, 16, 32]
+VERDICTS = ["strongly stable", "weakly stable", "unstable"]  # StabilityVerdict's order
 
 
 def fit(ks, values):
@@ -28,17 +32,50 @@ def fit(ks, values):
     return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
 
 
-def cli(binary, scene, cert, limit):
-    """(child CPU seconds, certificate bytes or None, exit code) of one `modes` run."""
+GRAVITY = ["--wrench", "0,0,-1,0,0,0"]
+
+
+def timed(argv):
+    """(child CPU seconds, exit code) of one run."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    p = subprocess.run([binary, "modes", scene, "--json", "--certificate", cert, "--time-limit", str(limit)],
-                       capture_output=True, text=True)
+    p = subprocess.run(argv, capture_output=True, text=True)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    size = os.path.getsize(cert) if p.returncode == 0 and os.path.exists(cert) else None
+    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime), p.returncode
+
+
+def cli(binary, command, scene, cert, limit):
+    """(child CPU seconds, certificate bytes or None, exit code, check CPU seconds or None) of one `modes` or
+    `stability` run (the latter's certificate then checked by the same binary)."""
+    extra = GRAVITY if command == "stability" else []
+    cpu, rc = timed([binary, command, scene, *extra, "--json", "--certificate", cert, "--time-limit", str(limit)])
+    size = os.path.getsize(cert) if rc == 0 and os.path.exists(cert) else None
+    check = None
+    if size and command == "stability":
+        check, crc = timed([binary, "check", cert])
+        check = check if crc == 0 else None
     if os.path.exists(cert):
         os.remove(cert)
-    return cpu, size, p.returncode
+    return cpu, size, rc, check
+
+
+def table(rows, name, columns, fitted):
+    """One Markdown table of a benchmark's counters per case, then the fitted exponents of `fitted`."""
+    print("| scene | k | " + " | ".join(columns.values()) + " |")
+    print("|---" * (len(columns) + 2) + "|")
+    for (bench, shape, k), b in sorted(rows.items()):
+        if bench == name:
+            cells = [VERDICTS[int(b[c])] if c == "verdict" else f"{b[c]:.0f}" for c in columns]
+            print(f"| {shape} | {k} | " + " | ".join(cells) + " |")
+    print("\nexponent b of value ~ k^b over k = 8, 16, 32:\n")
+    print("| scene | " + " | ".join(columns[c] for c in fitted) + " |")
+    print("|---" * (len(fitted) + 1) + "|")
+    for shape in sorted({s for n, s, _ in rows if n == name}):
+        cells = []
+        for c in fitted:  # over the cases measured (check_ms is 0 where the certificate was not checked)
+            ks = [k for k in KS[1:] if (name, shape, k) in rows and rows[(name, shape, k)][c] > 0]
+            cells.append(f"{fit(ks, [rows[(name, shape, k)][c] for k in ks]):.2f}" if len(ks) > 1 else "")
+        print(f"| {shape} | " + " | ".join(cells) + " |")
+    print()
 
 
 def main():
@@ -52,35 +89,36 @@ def main():
     rows = {}
     for b in json.loads(out)["benchmarks"]:
         shape, k = b["label"].split(" k=")
-        rows[(shape, int(k))] = b
-    print("| scene | k | modes | nodes | LPs | certificate bytes | CPU ms (walk + certificate text) |")
-    print("|---|---|---|---|---|---|---|")
-    for (shape, k), b in sorted(rows.items()):
-        print(f"| {shape} | {k} | {b['modes']:.0f} | {b['nodes']:.0f} | {b['lps']:.0f} | {b['cert_bytes']:.0f} | "
-              f"{b['cpu_time']:.0f} |")
-    print("\nexponent b of value ~ k^b over k = 8, 16, 32:\n")
-    print("| scene | modes | nodes | LPs | certificate bytes | CPU |")
-    print("|---|---|---|---|---|---|")
-    for shape in sorted({s for s, _ in rows}):
-        ks = [k for k in KS[1:] if (shape, k) in rows]
-        cells = [fit(ks, [rows[(shape, k)][c] for k in ks]) for c in ("modes", "nodes", "lps", "cert_bytes", "cpu_time")]
-        print(f"| {shape} | " + " | ".join(f"{c:.2f}" for c in cells) + " |")
+        rows[(b["name"].split("/")[0], shape, int(k))] = b
+    table(rows, "BM_SpatialModes", {"modes": "modes", "nodes": "nodes", "lps": "LPs", "cert_bytes": "certificate bytes",
+                                    "cpu_time": "CPU ms (walk + certificate text)"},
+          ["modes", "nodes", "lps", "cert_bytes", "cpu_time"])
+    table(rows, "BM_SpatialStability",
+          {"verdict": "verdict under gravity", "lps": "LPs", "modes_decided": "moving modes decided",
+           "by_reuse": "of them by a moved vector", "cert_bytes": "certificate bytes",
+           "cpu_time": "CPU ms (verdict + certificate text)", "check_ms": "check CPU ms"},
+          ["lps", "modes_decided", "cert_bytes", "cpu_time", "check_ms"])
     with tempfile.TemporaryDirectory() as d:
         subprocess.run([a.bench, "--scenes", d], check=True)
-        head = "| scene | k | CPU s | certificate bytes |" + (" OTHER CPU s | OTHER / ours |" if a.other else "")
-        print("\n`contactcert modes SCENE --json --certificate FILE`, end to end:\n\n" + head)
-        print("|---" * (head.count("|") - 1) + "|")
-        for shape in ("box", "peg"):
-            for k in KS:
-                scene, cert = f"{d}/{shape}_{k}.json", f"{d}/cert.json"
-                cpu, size, rc = cli(a.contactcert, scene, cert, a.time_limit)
-                line = f"| {shape} | {k} | {cpu:.2f} | {size if size else 'exit %d' % rc} |"
-                if a.other:
-                    ocpu, _, orc = cli(a.other, scene, cert, a.time_limit)
-                    shown = f"{ocpu:.2f}" if orc == 0 else f"exit {orc} after {ocpu:.2f}"
-                    line += f" {shown} | {ocpu / cpu:.1f} |" if orc == 0 else f" {shown} | |"
-                print(line)
-
+        for command in ("modes", "stability"):
+            shown = f"contactcert {command} SCENE" + (" --wrench 0,0,-1,0,0,0" if command == "stability" else "")
+            head = "| scene | k | CPU s | certificate bytes |" + (" check CPU s |" if command == "stability" else "")
+            head += " OTHER CPU s | OTHER / ours |" if a.other else ""
+            print(f"`{shown} --json --certificate FILE`, end to end:\n\n" + head)
+            print("|---" * (head.count("|") - 1) + "|")
+            for shape in ("box", "peg"):
+                for k in KS:
+                    scene, cert = f"{d}/{shape}_{k}.json", f"{d}/cert.json"
+                    cpu, size, rc, check = cli(a.contactcert, command, scene, cert, a.time_limit)
+                    line = f"| {shape} | {k} | {cpu:.2f} | {size if size else 'exit %d' % rc} |"
+                    if command == "stability":
+                        line += f" {check:.2f} |" if check is not None else " |"
+                    if a.other:
+                        ocpu, _, orc, _ = cli(a.other, command, scene, cert, a.time_limit)
+                        shown = f"{ocpu:.2f}" if orc == 0 else f"exit {orc} after {ocpu:.2f}"
+                        line += f" {shown} | {ocpu / cpu:.1f} |" if orc == 0 else f" {shown} | |"
+                    print(line)
+            print()
 
 if __name__ == "__main__":
     main()

@@ -1,7 +1,9 @@
 #include "solvers/spatial/spatial_modes.h"
 
 #include <algorithm>
+#include <deque>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "exact/input_error.h"
 #include "exact/rational_text.h"
@@ -57,6 +59,16 @@ std::vector<RowKey> letter_keys(std::size_t m, char L) {
   const int prev = (j + M - 1) % M, next = (j + 1) % M, after = (j + 2) % M;
   if ((L - 'A') % 2 == 0) return {n, {prev, j, true}, {next, j, true}};
   return {n, {next, j, false}, {prev, j, true}, {after, next, true}};
+}
+
+// The row of `ks` with key's functional: (its index, reversed) where reversed means the edge difference d_b - d_a
+// of key's d_a - d_b (the same row with the sign flipped); nullopt if `ks` has none.
+std::optional<std::pair<std::size_t, bool>> find_key(const std::vector<RowKey>& ks, const RowKey& key) {
+  for (std::size_t r = 0; r < ks.size(); ++r) {
+    if (ks[r].a == key.a && ks[r].b == key.b) return std::pair{r, false};
+    if (key.a >= 0 && ks[r].a == key.b && ks[r].b == key.a) return std::pair{r, true};
+  }
+  return std::nullopt;
 }
 
 SignRow key_row(const SpatialModel::Contact& c, const RowKey& key) {
@@ -170,7 +182,7 @@ class Walker {
       }
       if (Vec<Q> y = reuse(); y.size()) {
         hold(y.size());
-        out_.dead.push_back({prefix, std::move(y)});
+        dead_.push_back({prefix, std::move(y)});
         prefix.pop_back();
         continue;
       }
@@ -182,9 +194,12 @@ class Walker {
       }
       remember(kin.motzkin);
       hold(kin.motzkin.size());
-      out_.dead.push_back({prefix, std::move(kin.motzkin)});
+      dead_.push_back({prefix, std::move(kin.motzkin)});
       prefix.pop_back();
     }
+    // Moved into the answer once: a growing vector would copy them (Eigen's move of a Vec<Q> is not noexcept).
+    out_.dead.reserve(dead_.size());
+    for (SpatialDeadPrefix& d : dead_) out_.dead.push_back(std::move(d));
   }
 
  private:
@@ -237,16 +252,9 @@ class Walker {
       bool strict_negative = false;
       for (const auto& w : known.support) {
         const std::vector<RowKey>& ks = keys_at(w.contact);
-        std::size_t r = 0;
-        bool reversed = false;
-        for (; r < ks.size(); ++r) {
-          if (ks[r].a == w.key.a && ks[r].b == w.key.b) break;
-          if (w.key.a >= 0 && ks[r].a == w.key.b && ks[r].b == w.key.a) {
-            reversed = true;
-            break;
-          }
-        }
-        if (r == ks.size()) break;
+        const auto found = find_key(ks, w.key);
+        if (!found) break;
+        const auto [r, reversed] = *found;
         if (ks[r].strict) {
           const int s = reversed ? -sgn(w.y) : sgn(w.y);
           if (s > 0) break;
@@ -299,6 +307,7 @@ class Walker {
   std::vector<std::vector<std::vector<RowKey>>> keys_;   ///< per contact and letter
   std::vector<std::vector<std::vector<SignRow>>> rows_;  ///< per contact and letter
   std::vector<std::size_t> at_;                          ///< the current prefix's letters as indices
+  std::deque<SpatialDeadPrefix> dead_;                   ///< the dead prefixes so far, in walk order
   long held_ = 0;                                        ///< entries of the dead prefixes' certificates so far
 };
 
@@ -307,6 +316,30 @@ class Walker {
 SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOptions& options) {
   SpatialModeTree out;
   Walker(model, options, out).walk();
+  return out;
+}
+
+Vec<Q> move_rows(const SpatialModel& model, const std::string& from, const Vec<Q>& y, const std::string& to) {
+  std::vector<std::vector<RowKey>> from_keys, to_keys;
+  Index from_rows = 0, to_rows = 0;
+  for (std::size_t i = 0; i < from.size(); ++i) {
+    from_keys.push_back(letter_keys(model.contacts[i].d.size(), from[i]));
+    to_keys.push_back(letter_keys(model.contacts[i].d.size(), to[i]));
+    from_rows += static_cast<Index>(from_keys[i].size());
+    to_rows += static_cast<Index>(to_keys[i].size());
+  }
+  Vec<Q> out = Vec<Q>::Zero(to_rows + y.size() - from_rows);
+  out.tail(y.size() - from_rows) = y.tail(y.size() - from_rows);
+  for (Index i = 0, at = 0, to_at = 0; i < static_cast<Index>(from.size()); ++i) {
+    const std::size_t c = static_cast<std::size_t>(i);
+    for (std::size_t r = 0; r < from_keys[c].size(); ++r, ++at) {
+      if (sgn(y(at)) == 0) continue;
+      const auto found = find_key(to_keys[c], from_keys[c][r]);
+      if (!found) return Vec<Q>();
+      out(to_at + static_cast<Index>(found->first)) = found->second ? Q(-y(at)) : y(at);
+    }
+    to_at += static_cast<Index>(to_keys[c].size());
+  }
   return out;
 }
 

@@ -93,6 +93,13 @@ SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOption
 /// Whether vdot meets every row of the letters of `prefix` (a mode or a prefix of one).
 bool realises(const SpatialModel& model, const std::string& prefix, const Vec<Q>& vdot);
 
+/// A vector y over the letter rows of `from` (a mode or prefix; prefix_system's row order, as SpatialDeadPrefix),
+/// followed by rows of another kind, moved onto the rows of `to` (as long as `from`): each weighted row to the row of
+/// `to`'s letter with the same functional at its contact (an edge difference reversed with its weight negated, as
+/// the walk moves a dead prefix's certificate), the trailing rows copied. Empty if a weighted row has no
+/// counterpart; the signs are not checked (a Motzkin vector moved must be checked on its new system).
+Vec<Q> move_rows(const SpatialModel& model, const std::string& from, const Vec<Q>& y, const std::string& to);
+
 /// The "spatial_modes" certificate (docs/formats.md section 5b): the scene text, its digest, every mode with its
 /// acceleration, every dead prefix with its Motzkin vector (sparse); checked by checker/spatial_modes_check.h.
 std::string spatial_modes_certificate(const std::string& scene_text, const SpatialModeTree& tree);

@@ -1,5 +1,6 @@
 #include "solvers/spatial/spatial_stability.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "exact/input_error.h"
@@ -81,6 +82,51 @@ Vec<Q> weights_of(const SpatialModel& model, const std::string& mode, const Vec<
   return w;
 }
 
+// Whether y is a Motzkin certificate of { A x = b, sign constraints } (exact/strict_feasibility.h's conditions):
+// (y^T A)_j = 0 on free columns, >= 0 on the others, y^T b <= 0, and y^T b < 0 or (y^T A)_j > 0 on a strict column.
+bool motzkin_holds(const exact::SparseStrictSystem<Q>& sys, const Vec<Q>& b, const Vec<Q>& y) {
+  std::vector<Q> yA(static_cast<std::size_t>(sys.cols), Q(0));
+  for (const exact::Entry<Q>& e : sys.entries)
+    if (sgn(y(e.row)) != 0) yA[static_cast<std::size_t>(e.col)] += y(e.row) * e.value;
+  const int yb = sgn(y.dot(b));
+  bool strict_positive = false;
+  for (std::size_t j = 0; j < yA.size(); ++j) {
+    const int s = sgn(yA[j]);
+    if (sys.is_free[j] ? s != 0 : s < 0) return false;
+    strict_positive = strict_positive || (sys.strict[j] && s > 0);
+  }
+  return yb < 0 || (yb == 0 && strict_positive);
+}
+
+// The Motzkin vectors of the latest moving modes proven infeasible, most recently used first: a mode whose system
+// takes one of them, moved to its rows (move_rows, as the mode tree reuses its dead prefixes' certificates), needs
+// no LP. Modes in tree order share most letters with their predecessors.
+class RecentProofs {
+ public:
+  explicit RecentProofs(const SpatialModel& model) : model_(model) {}
+
+  Vec<Q> take(const std::string& mode, const exact::SparseStrictSystem<Q>& sys, const Vec<Q>& b) {
+    for (std::size_t i = 0; i < held_.size(); ++i) {
+      Vec<Q> y = move_rows(model_, held_[i].first, held_[i].second, mode);
+      if (y.size() == 0 || !motzkin_holds(sys, b, y)) continue;
+      std::rotate(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(i),
+                  held_.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+      return y;
+    }
+    return Vec<Q>();
+  }
+
+  void add(const std::string& mode, const Vec<Q>& y) {
+    if (held_.size() == kHeld) held_.pop_back();
+    held_.insert(held_.begin(), {mode, y});
+  }
+
+ private:
+  static constexpr std::size_t kHeld = 8;
+  const SpatialModel& model_;
+  std::vector<std::pair<std::string, Vec<Q>>> held_;
+};
+
 }  // namespace
 
 SpatialStability spatial_stability(const geometry::SpatialScene& scene, const Vec<Q>& g,
@@ -88,18 +134,18 @@ SpatialStability spatial_stability(const geometry::SpatialScene& scene, const Ve
   const SpatialModel model = spatial_model(scene);
   const std::string sticking(model.contacts.size(), 'f');
   SpatialStability out;
-  auto solve = [&](const std::string& mode, bool resting) {
+  auto solve = [&](const exact::SparseStrictSystem<Q>& sys, const Vec<Q>& b) {
     if (options.deadline.expired())
       throw exact::BudgetExceeded("spatial stability: " + options.deadline.reached_text(),
                                   std::to_string(out.modes_checked) + " moving modes checked");
-    const exact::SparseStrictSystem<Q> sys = spatial_motion_system(scene.body, model, mode, resting);
-    Vec<Q> b = Vec<Q>::Zero(sys.rows);
-    b.tail(6) = g;
     exact::StrictFeasibility<Q> f = exact::StrictSolver<Q>(sys, options.arith).solve(b);
     out.lps += f.lps;
     return f;
   };
-  auto r = solve(sticking, true);
+  const exact::SparseStrictSystem<Q> rest = spatial_motion_system(scene.body, model, sticking, true);
+  Vec<Q> rest_b = Vec<Q>::Zero(rest.rows);
+  rest_b.tail(6) = g;
+  auto r = solve(rest, rest_b);
   out.has_resting = r.status == StrictStatus::kFeasible;
   if (out.has_resting)
     out.resting_weights = weights_of(model, sticking, r.x);
@@ -110,6 +156,7 @@ SpatialStability spatial_stability(const geometry::SpatialScene& scene, const Ve
   out.lps += tree.lps;
   out.tree_nodes = tree.nodes;
   out.dead_prefixes = static_cast<long>(tree.dead.size());
+  if (out.has_resting) out.proofs.reserve(tree.dead.size() + tree.modes.size());  // no copies on growth
   if (out.has_resting)
     for (SpatialDeadPrefix& d : tree.dead) out.proofs.push_back({std::move(d.prefix), true, std::move(d.motzkin)});
   // Every feasible moving mode but f..f in tree order until one admits g; f..f last, only without a resting
@@ -119,9 +166,19 @@ SpatialStability spatial_stability(const geometry::SpatialScene& scene, const Ve
     if (m != sticking) moving.push_back(std::move(m));
   out.modes_kinematically_feasible = static_cast<long>(moving.size());
   if (!out.has_resting) moving.push_back(sticking);
+  RecentProofs recent(model);
   for (const std::string& m : moving) {
     ++out.modes_checked;
-    auto f = solve(m, false);
+    const exact::SparseStrictSystem<Q> sys = spatial_motion_system(scene.body, model, m);
+    Vec<Q> b = Vec<Q>::Zero(sys.rows);
+    b.tail(6) = g;
+    if (Vec<Q> y = recent.take(m, sys, b); y.size()) {
+      ++out.modes_by_reuse;
+      if (out.has_resting) out.proofs.push_back({m, false, std::move(y)});
+      continue;
+    }
+    auto f = solve(sys, b);
+    if (f.status == StrictStatus::kInfeasible) recent.add(m, f.motzkin);
     bool still = true;
     for (Index d = 0; d < 6 && f.status == StrictStatus::kFeasible; ++d) still = still && sgn(f.x(d)) == 0;
     if (f.status == StrictStatus::kFeasible && !still) {
@@ -161,11 +218,23 @@ std::string spatial_stability_certificate(const std::string& scene_text, const V
     j["moving"] = {{"mode", r.moving.mode},
                    {"weights", exact_strings(r.moving.weights)},
                    {"acceleration", exact_strings(r.moving.acceleration)}};
-  json proofs = json::array();
-  for (const SpatialModeProof& p : r.proofs)
-    proofs.push_back({{"mode", p.mode}, {"kinematic", p.kinematic}, {"motzkin", sparse_motzkin_json(p.motzkin)}});
-  j["proofs"] = std::move(proofs);
-  return j.dump(1) + "\n";
+  j["proofs"] = json::array();
+  std::string out = j.dump(1);
+  if (r.proofs.empty()) return out + "\n";
+  // The proofs written one by one, in the bytes j.dump(1) would give with them inside (each object two levels deep,
+  // one value a line), without a JSON tree of them all (~110 000 at k = 16).
+  out.resize(out.size() - 3);  // "[]\n}"'s "]\n}"
+  for (std::size_t i = 0; i < r.proofs.size(); ++i) {
+    const SpatialModeProof& p = r.proofs[i];
+    out += i ? ",\n  {\n   \"mode\": " : "\n  {\n   \"mode\": ";
+    out += json(p.mode).dump() + ",\n   \"kinematic\": " + (p.kinematic ? "true" : "false") + ",\n   \"motzkin\": [";
+    const json y = sparse_motzkin_json(p.motzkin);
+    for (std::size_t e = 0; e < y.size(); ++e)
+      out += (e ? ",\n    [\n     " : "\n    [\n     ") + std::to_string(y[e][0].get<std::size_t>()) + ",\n     \"" +
+             y[e][1].get_ref<const std::string&>() + "\"\n    ]";
+    out += y.empty() ? "]\n  }" : "\n   ]\n  }";
+  }
+  return out + "\n ]\n}\n";
 }
 
 }  // namespace contactcert::solvers::spatial

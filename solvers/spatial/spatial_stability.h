@@ -12,7 +12,9 @@
 // As in the plane (solvers/stability/strong_stability.h): every mode but f..f has a strict row, so vdot != 0; an
 // f..f solution beside a resting one has vdot = 0 (two of them differ by dv with J dv = 0 and M dv in the range of
 // J^T, so dv^T M dv = 0). The moving modes are not listed one by one ((2 + 2m)^k strings): the kinematic prefix tree
-// (spatial_modes) proves whole subtrees empty for every g, and each feasible moving mode gets one LP in g.
+// (spatial_modes) proves whole subtrees empty for every g, and each feasible moving mode gets one LP in g, unless
+// the Motzkin vector of one of the last modes proven (in tree order, they share most letters) moved to its rows by
+// functional (move_rows, as the tree moves its dead prefixes' certificates) is one of its system: checked exactly.
 #pragma once
 
 #include <string>
@@ -53,7 +55,8 @@ struct SpatialStability {
   SpatialMotion moving;                  ///< a solution with vdot != 0, if has_moving
   std::vector<SpatialModeProof> proofs;  ///< strongly stable: the dead prefixes, then one per feasible moving mode
   long lps = 0;                          ///< the tree's and the verdict's
-  long modes_checked = 0;                ///< moving modes whose system in g was solved
+  long modes_checked = 0;                ///< moving modes whose system in g was decided
+  long modes_by_reuse = 0;               ///< of them, proven by an earlier mode's Motzkin vector moved (no LP)
   long modes_kinematically_feasible = 0;
   long tree_nodes = 0;
   long dead_prefixes = 0;

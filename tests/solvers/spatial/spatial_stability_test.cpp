@@ -48,6 +48,26 @@ TEST(SpatialStability, BoxUnderGravityIsStronglyStable) {
   EXPECT_FALSE(r.has_moving);
   EXPECT_EQ(r.modes_kinematically_feasible, 339);
   EXPECT_EQ(r.proofs.size(), static_cast<std::size_t>(339 + r.dead_prefixes));
+  // Most moving modes take a recent mode's Motzkin vector moved to their rows (the certificate checks above).
+  EXPECT_GT(r.modes_by_reuse, 339 / 2);
+  EXPECT_LT(r.modes_by_reuse, r.modes_checked);
+}
+
+// move_rows: a weight goes to the row of the same functional at its contact (s's a_n > 0 onto f's a_n = 0; the
+// trailing rows copied), or nowhere if the target letter lacks it (f's t1 row under s).
+TEST(SpatialStability, MotzkinRowsMoveByFunctional) {
+  const SpatialModel model = spatial_model(geometry::read_spatial_scene(exact::JsonInput::parse(box_text(), "box")));
+  Vec<Q> y = Vec<Q>::Zero(4 + 2);  // ssss: one row per contact, then two rows of another kind
+  y(1) = -1;
+  y(5) = 3;
+  const Vec<Q> moved = move_rows(model, "ssss", y, "sfss");  // rows s | f f f | s | s | 2 more
+  ASSERT_EQ(moved.size(), 1 + 3 + 1 + 1 + 2);
+  EXPECT_EQ(moved(1), Q(-1));
+  EXPECT_EQ(moved(7), Q(3));
+  EXPECT_EQ(moved.head(7).cwiseAbs().sum(), Q(1));
+  Vec<Q> t1 = Vec<Q>::Zero(3 + 3);  // fss s: the t1 row of contact 0 weighed
+  t1(1) = 1;
+  EXPECT_EQ(move_rows(model, "fsss", t1, "ssss").size(), 0);
 }
 
 // Gravity with a horizontal part 3/5 > mu x 1 (the plane tilted past atan(1/2)): friction holds at most 1/2 of the
