@@ -25,7 +25,7 @@ std::string to_svg(const AssemblyInput& in, const AssemblyUcpAnswer& answer);
 template <class Answer, class Options>
 void write_files(const AssemblyInput& in, const Options& options, Answer& answer) {
   if (!options.certificate.empty() && !answer.certificate_text.empty()) {
-    write_text_file(options.certificate, answer.certificate_text);
+    write_certificate_file("assembly", options.certificate, answer.certificate_text, "the verdict was found");
     answer.certificate = options.certificate;
   }
   if (!options.svg.empty()) {

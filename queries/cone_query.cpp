@@ -169,7 +169,8 @@ ConeAnswer cone_answer(const SceneInput& input, const ConeOptions& options) {
   if (!options.svg.empty()) write_text_file(options.svg, cone_svg(a));
   if (!options.certificate.empty()) {
     a.certificate_text = certificate_file(input, a).dump(1) + "\n";
-    write_text_file(options.certificate, a.certificate_text);
+    write_certificate_file("cone", options.certificate, a.certificate_text,
+                           a.empty() ? "the cone is empty" : "the cone is not empty");
   }
   return a;
 }

@@ -96,6 +96,16 @@ exact::Vec<Q> parse_number_list(const std::string& text, const std::string& opti
   return v;
 }
 
+void write_certificate_file(const std::string& command, const std::string& path, const std::string& text,
+                            const std::string& covered) {
+  if (text.size() > exact::kMaxInputBytes)
+    throw exact::BudgetExceeded(command + " --certificate: the certificate would take " + std::to_string(text.size()) +
+                                    " bytes, more than the " + std::to_string(exact::kMaxInputBytes >> 20) +
+                                    " MiB that check reads",
+                                covered + "; no certificate written");
+  write_text_file(path, text);
+}
+
 void write_text_file(const std::string& path, const std::string& text) {
   if (path == "-") {
     if (!(std::cout << text).flush()) throw exact::InputError("standard output", "", "cannot write the output");

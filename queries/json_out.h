@@ -34,6 +34,11 @@ exact::Vec<exact::Q> parse_number_list(const std::string& text, const std::strin
 /// Writes text to path ("-" = stdout), flushed and checked: InputError naming the file if it cannot be opened
 /// or written (a full disk). Every file a command writes goes through here.
 void write_text_file(const std::string& path, const std::string& text);
+/// Writes a certificate only if `check` can read it back (at most exact::kMaxInputBytes): otherwise nothing is
+/// written and exact::BudgetExceeded (exit 3) says "COMMAND --certificate: the certificate would take N bytes ..."
+/// with `covered`, what the command found.
+void write_certificate_file(const std::string& command, const std::string& path, const std::string& text,
+                            const std::string& covered);
 /// Creates the folder `dir` of a command's files (and its parents); InputError naming `field` otherwise.
 void create_output_dir(const std::string& dir, const std::string& field = "--out");
 /// Wall-clock seconds since t.

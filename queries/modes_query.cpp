@@ -38,14 +38,8 @@ Limited<ModesAnswer> run_modes(const SceneInput& input, const ModesOptions& opti
 }
 
 std::string write_modes_certificate(const std::string& file, std::string text, std::size_t modes, std::size_t dead) {
-  // A certificate that `check` could not read is not written: check reads at most kMaxInputBytes.
-  if (text.size() > exact::kMaxInputBytes)
-    throw exact::BudgetExceeded("modes --certificate: the certificate would take " + std::to_string(text.size()) +
-                                    " bytes, more than the " + std::to_string(exact::kMaxInputBytes >> 20) +
-                                    " MiB that check reads",
-                                std::to_string(modes) + " feasible modes found, " + std::to_string(dead) +
-                                    " dead prefixes; no certificate written");
-  write_text_file(file, text);
+  write_certificate_file("modes", file, text,
+                         std::to_string(modes) + " feasible modes found, " + std::to_string(dead) + " dead prefixes");
   return text;
 }
 

@@ -19,7 +19,8 @@ SpatialStabilityAnswer spatial_stability_answer(const SpatialInput& in, const Sp
   SpatialStabilityAnswer a{in.scene, options.wrench, sp::spatial_stability(in.scene, options.wrench, tree), {}, {}};
   if (!options.certificate.empty()) {
     a.certificate_text = sp::spatial_stability_certificate(in.text, options.wrench, a.result);
-    write_text_file(options.certificate, a.certificate_text);
+    write_certificate_file("stability", options.certificate, a.certificate_text,
+                           std::string("the verdict is ") + solvers::verdict_name(a.result.verdict));
     a.certificate = options.certificate;
   }
   return a;

@@ -88,7 +88,8 @@ StabilityAnswer stability_answer(const SceneInput& input, const StabilityQueryOp
       solvers::strong_stability<Q>(input.scene, g, stability_options(arith, deadline)));
   if (!options.certificate.empty()) {
     a.certificate_text = stability_certificate_file(input.text, input.scene, g, r);
-    write_text_file(options.certificate, a.certificate_text);
+    write_certificate_file("stability", options.certificate, a.certificate_text,
+                           std::string("the verdict is ") + solvers::verdict_name(r.verdict));
     a.certificate = options.certificate;
   }
   if (options.margin && r.verdict == solvers::StabilityVerdict::kStronglyStable) {

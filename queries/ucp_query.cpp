@@ -98,7 +98,8 @@ Limited<UcpAnswer> ucp_answer(const UcpInput& in, const UcpQueryOptions& o) {
     const ucp::PhaseTimer t(r.phases.certificate);
     a.certificate_text = ucp::certificate_text(in.problem, r);
     if (!a.certificate_text.empty()) {
-      write_text_file(o.certificate, a.certificate_text);
+      write_certificate_file("ucp", o.certificate, a.certificate_text,
+                             std::string("the problem is ") + ucp::status_name(r.status));
       a.certificate = o.certificate;
     }
   }

@@ -37,7 +37,8 @@ Limited<std::optional<UniquenessAnswer>> decide_uniqueness(const ucp::UcpProblem
         std::to_string(a.verdict.lps) + " lps"};
   if (!o.certificate.empty()) {
     a.certificate_text = motion::uniqueness_certificate(problem, a.verdict, assembly_text);
-    write_text_file(o.certificate, a.certificate_text);
+    write_certificate_file(command, o.certificate, a.certificate_text,
+                           std::string("the motion is ") + motion::uniqueness_name(a.verdict.status));
     a.certificate = o.certificate;
   }
   a.verdict.evidence.reset();  // written down

@@ -2,8 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
+
 #include "exact/input_error.h"
+#include "exact/json_input.h"
 #include "queries/finger_query.h"
+#include "queries/json_out.h"
 #include "queries/region_query.h"
 #include "queries/wrenches_query.h"
 #include "runtime/scenes.h"
@@ -112,6 +117,24 @@ TEST(StabilityQuery, TimeLimitStopsEveryQuery) {
   for (const std::string& text : texts)
     EXPECT_NE(text.find("time limit of 1e-06 s reached (covered: "), std::string::npos) << text;
   EXPECT_THROW(StabilityVerdicts(disk48.scene, short_limit), exact::BudgetExceeded);  // for with_limits to catch
+}
+
+/// A certificate that `check` could not read back (more than kMaxInputBytes) is refused with a budget, not written.
+TEST(CertificateFile, LargerThanCheckReadsIsNotWritten) {
+  const std::string file = testing::TempDir() + "/too_large.cert.json";
+  std::remove(file.c_str());
+  try {
+    write_certificate_file("stability", file, std::string(exact::kMaxInputBytes + 1, ' '), "the verdict is unstable");
+    FAIL() << "no budget";
+  } catch (const exact::BudgetExceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("stability --certificate: the certificate would take 33554433 bytes"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(std::ifstream(file).good());
+  write_certificate_file("stability", file, std::string(exact::kMaxInputBytes, ' '), "");
+  EXPECT_TRUE(std::ifstream(file).good());
+  std::remove(file.c_str());
 }
 
 }  // namespace
