@@ -188,8 +188,9 @@ std::optional<StrictFeasibility<Q>> basis_certificate(const IntegerLp& ilp, cons
 // The float LP on the integer rows, its point or certificate rounded to fractions and checked exactly;
 // nullopt if the check fails, a number outgrows 128 bits or the float LP runs out of pivots. With
 // `from_basis`, an infeasible float LP whose rounded certificate fails gets the exact one of its basis
-// (basis_certificate). *float_feasible: whether the float LP found the system feasible.
-std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const LpProblem<double>& hint,
+// (basis_certificate). *float_feasible: whether the float LP found the system feasible. `lp`: the float LP of the
+// integer rows (StrictSolver's hint_), whose first m entries of b this sets (no copy of its dense matrix per solve).
+std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, LpProblem<double>& lp,
                                                   const std::vector<bool>& is_free, const std::vector<bool>& strict,
                                                   const std::vector<Index>& S, const Vec<Q>& b, bool* float_feasible,
                                                   Vec<double>* float_point, bool from_basis) {
@@ -197,10 +198,10 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
   Z d;
   const std::optional<std::vector<i64>> B = integer_rhs(ilp, b, d);
   if (!B) return std::nullopt;
-  LpProblem<double> lp = hint;
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
   try {
-    const LpResult<double> r = solve_lp<double>(lp, with_duals());
+    LpResult<double> r = solve_lp<double>(lp);  // the duals only where read_strict reads them (t* = 0): a dense solve
+    if (r.status == LpStatus::kOptimal && !S.empty() && !is_positive(-r.value)) r.duals = optimal_duals(lp, r.basis);
     const StrictFeasibility<double> f = read_strict(r, m, n, S);
     *float_feasible = f.status == StrictStatus::kFeasible;
     if (float_point && *float_feasible) *float_point = f.x / d.get_d();  // A_int x = d (L o b): x / d solves A x = b
