@@ -22,8 +22,10 @@ bool flag(const std::vector<bool>& v, Index j) { return !v.empty() && v[static_c
 // >= 0 takes the column of x_j): columns x (n, sigma_j in place of x_j on S), t, u; rows A x + (sum_S A_j) t = b
 // and t + u = 1; objective min -t. (m + 1 rows: one row per strict column fewer than x_j - t - sigma_j = 0.)
 // With no strict column this is plain feasibility of A x = b.
-template <class T>
-LpProblem<T> strict_lp(const Mat<T>& A, const std::vector<bool>& is_free, const std::vector<Index>& S) {
+// A: a matrix or an Eigen expression of one (the integer rows cast to doubles, read once).
+template <class T, class Derived>
+LpProblem<T> strict_lp(const Eigen::MatrixBase<Derived>& A, const std::vector<bool>& is_free,
+                       const std::vector<Index>& S) {
   const Index m = A.rows(), n = A.cols(), s = static_cast<Index>(S.size());
   const Index cols = s ? n + 2 : n, rows = s ? m + 1 : m;
   LpProblem<T> lp;
@@ -262,7 +264,9 @@ void StrictSolver<T>::prepare(ForEachEntry&& for_each_entry) {
   if constexpr (std::is_same_v<T, Q>) {
     if (arith_ != Arith::kExact) integer_ = integer_rows(m_, n_, for_each_entry);
     if (integer_) {
-      hint_ = strict_lp<double>(integer_->to_double({}).A, is_free_, strict_columns_);
+      using IntRows = Eigen::Matrix<i64, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+      const Eigen::Map<const IntRows> rows(integer_->A.row(0), m_, n_);  // (row 0: the entries' start)
+      hint_ = strict_lp<double>(rows.cast<double>(), is_free_, strict_columns_);
       return;
     }
   }
