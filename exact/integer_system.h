@@ -53,10 +53,9 @@ struct IntegerLp : IntegerSystem<std::int64_t> {
     p.A = Mat<T>(m, n);
     p.b = Vec<T>(m);
     p.c = Vec<T>(n);
-    for (Eigen::Index i = 0; i < m; ++i) {
-      for (Eigen::Index j = 0; j < n; ++j) p.A(i, j) = from_int(A(i, j));
-      p.b(i) = from_int(b[static_cast<size_t>(i)]);
-    }
+    for (Eigen::Index j = 0; j < n; ++j)  // down the columns of p.A (column-major)
+      for (Eigen::Index i = 0; i < m; ++i) p.A(i, j) = from_int(A(i, j));
+    for (Eigen::Index i = 0; i < m; ++i) p.b(i) = from_int(b[static_cast<size_t>(i)]);
     for (Eigen::Index j = 0; j < n; ++j) p.c(j) = from_int(c[static_cast<size_t>(j)]);
     p.is_free = is_free;
     return p;

@@ -27,12 +27,16 @@ Rref<Q> rref_in_integers(const Mat<Q>& A) {
   });
 }
 
-// A float field: Gauss-Jordan elimination with the pivots of NumberTraits<T> and its sign tolerance.
+// A float field: Gauss-Jordan elimination with the pivots of NumberTraits<T> and its sign tolerance, on a row-major
+// copy (row operations run along contiguous rows) that updates, in doubles, only the pivot row's non-zero columns
+// (x - f * 0 = x).
 template <class T>
 Rref<T> rref_in_field(const Mat<T>& A) {
-  Rref<T> out{A, {}};
-  Mat<T>& R = out.R;
+  using RowMajor = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  RowMajor R = A;
+  std::vector<Eigen::Index> pivots;
   const Eigen::Index m = R.rows(), n = R.cols();
+  std::vector<Eigen::Index> nz;  // the non-zero columns > col of the pivot row
   Eigen::Index row = 0;
   for (Eigen::Index col = 0; col < n && row < m; ++col) {
     Eigen::Index p = -1;
@@ -44,18 +48,22 @@ Rref<T> rref_in_field(const Mat<T>& A) {
     }
     R.row(p).swap(R.row(row));
     const T inv = T(1) / R(row, col);
-    for (Eigen::Index j = col; j < n; ++j) R(row, j) *= inv;
+    nz.clear();
+    for (Eigen::Index j = col + 1; j < n; ++j) {
+      R(row, j) *= inv;
+      if (!std::is_floating_point_v<T> || R(row, j) != T(0)) nz.push_back(j);  // (intervals and MPFR: all)
+    }
     R(row, col) = T(1);
     for (Eigen::Index i = 0; i < m; ++i) {
       if (i == row || exact::is_negligible(R(i, col))) continue;
       const T f = R(i, col);
-      for (Eigen::Index j = col; j < n; ++j) R(i, j) -= f * R(row, j);
+      for (const Eigen::Index j : nz) R(i, j) -= f * R(row, j);
       R(i, col) = T(0);
     }
-    out.pivots.push_back(col);
+    pivots.push_back(col);
     ++row;
   }
-  return out;
+  return {Mat<T>(R), std::move(pivots)};
 }
 
 }  // namespace

@@ -136,6 +136,13 @@ Vec<T> basis_duals(const Mat<T>& A, const Vec<T>& b, const std::vector<Index>& b
   return y ? *y : Vec<T>(Vec<T>::Zero(m));
 }
 
+}  // namespace
+
+template <class T>
+Vec<T> optimal_duals(const LpProblem<T>& problem, const std::vector<Index>& basis);
+
+namespace {
+
 /// The result of a run that ended with `out`; an optimal one carries duals if options.duals asks for them.
 template <class T>
 LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out, long pivots,
@@ -162,14 +169,19 @@ LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, co
   res.status = LpStatus::kOptimal;
   res.value = tab.objective_value();
   if (!options.duals) return res;
-  Vec<T> cB(tab.rows());
-  const Vec<T> c = problem.objective();
-  for (Index r = 0; r < tab.rows(); ++r) cB(r) = c(tab.basis()[static_cast<size_t>(r)]);
-  res.duals = basis_duals(problem.A, problem.b, res.basis, cB);
+  res.duals = optimal_duals(problem, res.basis);
   return res;
 }
 
 }  // namespace
+
+template <class T>
+Vec<T> optimal_duals(const LpProblem<T>& problem, const std::vector<Index>& basis) {
+  const Vec<T> c = problem.objective();
+  Vec<T> cB(static_cast<Index>(basis.size()));
+  for (size_t r = 0; r < basis.size(); ++r) cB(static_cast<Index>(r)) = c(basis[r]);
+  return basis_duals(problem.A, problem.b, basis, cB);
+}
 
 template <class T>
 std::optional<SimplexTableau<T>> feasible_tableau(const LpProblem<T>& problem, const std::vector<Index>& basis) {
@@ -313,6 +325,10 @@ template bool is_optimal_basis<Q>(const SimplexTableau<Q>&, const std::vector<bo
 template std::optional<LpResult<double>> decide_at_basis<double>(const LpProblem<double>&, SimplexTableau<double>,
                                                                  const LpOptions&);
 template std::optional<LpResult<Q>> decide_at_basis<Q>(const LpProblem<Q>&, SimplexTableau<Q>, const LpOptions&);
+template Vec<double> optimal_duals<double>(const LpProblem<double>&, const std::vector<Index>&);
+template Vec<Q> optimal_duals<Q>(const LpProblem<Q>&, const std::vector<Index>&);
+template Vec<Mpfr> optimal_duals<Mpfr>(const LpProblem<Mpfr>&, const std::vector<Index>&);
+template Vec<Interval> optimal_duals<Interval>(const LpProblem<Interval>&, const std::vector<Index>&);
 template LpResult<Mpfr> solve_lp<Mpfr>(const LpProblem<Mpfr>&, const LpOptions&);
 template LpResult<Mpfr> solve_lp_from_tableau<Mpfr>(const LpProblem<Mpfr>&, SimplexTableau<Mpfr>, const LpOptions&);
 template LpResult<Interval> solve_lp<Interval>(const LpProblem<Interval>&, const LpOptions&);

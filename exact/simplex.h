@@ -42,6 +42,11 @@ template <class T>
 std::optional<LpResult<T>> decide_at_basis(const LpProblem<T>& problem, SimplexTableau<T> tableau,
                                            const LpOptions& options = {});
 
+/// The duals an optimal result carries when options.duals asks for them: some y with B^T y = c_B for the basis
+/// columns B of problem.A (a dense solve), for a caller that needs them only after reading the verdict.
+template <class T>
+Vec<T> optimal_duals(const LpProblem<T>& problem, const std::vector<Eigen::Index>& basis);
+
 /// Throws BudgetExceeded (the commands' budget, exit 3) if `status` is the pivot limit of `options`.
 void check_pivot_budget(LpStatus status, const LpOptions& options);
 
@@ -52,6 +57,8 @@ bool verify_ray(const LpProblem<Q>& problem, const Vec<Q>& d);
 /// Exact check of optimality: x primal feasible, y dual feasible (A^T y <= c, == on free), c^T x = b^T y.
 bool verify_optimal(const LpProblem<Q>& problem, const Vec<Q>& x, const Vec<Q>& y);
 
+extern template Vec<double> optimal_duals<double>(const LpProblem<double>&, const std::vector<Eigen::Index>&);
+extern template Vec<Q> optimal_duals<Q>(const LpProblem<Q>&, const std::vector<Eigen::Index>&);
 extern template LpResult<double> solve_lp<double>(const LpProblem<double>&, const LpOptions&);
 extern template LpResult<Q> solve_lp<Q>(const LpProblem<Q>&, const LpOptions&);
 extern template LpResult<double> solve_lp_from_tableau<double>(const LpProblem<double>&, SimplexTableau<double>,

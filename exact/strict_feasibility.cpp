@@ -22,8 +22,10 @@ bool flag(const std::vector<bool>& v, Index j) { return !v.empty() && v[static_c
 // >= 0 takes the column of x_j): columns x (n, sigma_j in place of x_j on S), t, u; rows A x + (sum_S A_j) t = b
 // and t + u = 1; objective min -t. (m + 1 rows: one row per strict column fewer than x_j - t - sigma_j = 0.)
 // With no strict column this is plain feasibility of A x = b.
-template <class T>
-LpProblem<T> strict_lp(const Mat<T>& A, const std::vector<bool>& is_free, const std::vector<Index>& S) {
+// A: a matrix or an Eigen expression of one (the integer rows cast to doubles, read once).
+template <class T, class Derived>
+LpProblem<T> strict_lp(const Eigen::MatrixBase<Derived>& A, const std::vector<bool>& is_free,
+                       const std::vector<Index>& S) {
   const Index m = A.rows(), n = A.cols(), s = static_cast<Index>(S.size());
   const Index cols = s ? n + 2 : n, rows = s ? m + 1 : m;
   LpProblem<T> lp;
@@ -188,8 +190,9 @@ std::optional<StrictFeasibility<Q>> basis_certificate(const IntegerLp& ilp, cons
 // The float LP on the integer rows, its point or certificate rounded to fractions and checked exactly;
 // nullopt if the check fails, a number outgrows 128 bits or the float LP runs out of pivots. With
 // `from_basis`, an infeasible float LP whose rounded certificate fails gets the exact one of its basis
-// (basis_certificate). *float_feasible: whether the float LP found the system feasible.
-std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const LpProblem<double>& hint,
+// (basis_certificate). *float_feasible: whether the float LP found the system feasible. `lp`: the float LP of the
+// integer rows (StrictSolver's hint_), whose first m entries of b this sets (no copy of its dense matrix per solve).
+std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, LpProblem<double>& lp,
                                                   const std::vector<bool>& is_free, const std::vector<bool>& strict,
                                                   const std::vector<Index>& S, const Vec<Q>& b, bool* float_feasible,
                                                   Vec<double>* float_point, bool from_basis) {
@@ -197,10 +200,10 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, const Lp
   Z d;
   const std::optional<std::vector<i64>> B = integer_rhs(ilp, b, d);
   if (!B) return std::nullopt;
-  LpProblem<double> lp = hint;
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
   try {
-    const LpResult<double> r = solve_lp<double>(lp, with_duals());
+    LpResult<double> r = solve_lp<double>(lp);  // the duals only where read_strict reads them (t* = 0): a dense solve
+    if (r.status == LpStatus::kOptimal && !S.empty() && !is_positive(-r.value)) r.duals = optimal_duals(lp, r.basis);
     const StrictFeasibility<double> f = read_strict(r, m, n, S);
     *float_feasible = f.status == StrictStatus::kFeasible;
     if (float_point && *float_feasible) *float_point = f.x / d.get_d();  // A_int x = d (L o b): x / d solves A x = b
@@ -261,7 +264,9 @@ void StrictSolver<T>::prepare(ForEachEntry&& for_each_entry) {
   if constexpr (std::is_same_v<T, Q>) {
     if (arith_ != Arith::kExact) integer_ = integer_rows(m_, n_, for_each_entry);
     if (integer_) {
-      hint_ = strict_lp<double>(integer_->to_double({}).A, is_free_, strict_columns_);
+      using IntRows = Eigen::Matrix<i64, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+      const Eigen::Map<const IntRows> rows(integer_->A.row(0), m_, n_);  // (row 0: the entries' start)
+      hint_ = strict_lp<double>(rows.cast<double>(), is_free_, strict_columns_);
       return;
     }
   }

@@ -104,8 +104,9 @@ class StrictSolver {
   std::vector<Eigen::Index> strict_columns_;
   Mat<T> A_;                          ///< T = Q: the rows as given, unless integer_ holds them
   std::optional<IntegerLp> integer_;  ///< T = Q, verified: row i of A times integer_->row_scale[i], in 64 bits
-  /// The LP in doubles (of the integer rows) if T = Q, else in T; b set per solve.
-  LpProblem<std::conditional_t<NumberTraits<T>::is_exact, double, T>> hint_;
+  /// The LP in doubles (of the integer rows) if T = Q, else in T; b set per solve (for T = Q in place, by
+  /// solve_rounded: a solver is not shared between threads).
+  mutable LpProblem<std::conditional_t<NumberTraits<T>::is_exact, double, T>> hint_;
 };
 
 /// Decides strict feasibility with one LP: StrictSolver(system, arith).solve(system.b). For T = Q, `arith`

@@ -64,7 +64,8 @@ bool MotzkinTest::holds(const std::vector<Multiplier>& y) {
       const exact::Entry<Q>& e = S.entries[order_[t]];
       Q& acc = yA_[static_cast<std::size_t>(e.col)];
       if (sgn(acc) == 0) touched_.push_back(e.col);
-      acc += *m.value * e.value;
+      product_ = *m.value * e.value;
+      acc += product_;
     }
   bool sign_ok = true, strict_positive = false;
   for (const Index j : touched_) {

@@ -43,6 +43,7 @@ class MotzkinTest {
   std::vector<std::size_t> start_, order_;  ///< row r's entries: entries[order_[start_[r] .. start_[r + 1])]
   std::vector<double> approx_;              ///< the entries in doubles, NaN until first read
   std::vector<Q> yA_;                       ///< scratch, zero between tests
+  Q product_;                               ///< scratch: y_i a_ij, its limbs reused (no allocation per entry)
   std::vector<double> yA_approx_, magnitude_;
   std::vector<Eigen::Index> touched_;  ///< the columns of yA_ a test wrote
 };
