@@ -238,7 +238,7 @@ bool SimulateRun::advance() {
       return;
     }
     files.push_back(options_.certificates + "/step-" + std::to_string(s.index) + suffix + ".json");
-    write_text_file(files.back(), text);
+    write_certificate_file("simulate", files.back(), text, std::to_string(s.index + 1) + " steps made");
   };
   write(answer_.certificates, s.certificate, "");
   write(answer_.uniqueness_certificates, s.uniqueness_certificate, "-uniqueness");
