@@ -17,7 +17,10 @@ pyramid with 4 edges d_0..d_3 and d_{j+2} = -d_j) ties its edges on two such lin
 w_0 = d_0 - d_1 and w_1 = d_1 - d_2, so giving the peer w_0, w_1 makes its 9 tangential sign pairs exactly our
 letters f, A..H (each pair is mapped by the edges that minimise d_j . a at a point of its cell). From rest our
 accelerations obey the same linear map, so both sides enumerate the faces of one arrangement restricted by the
-non-penetration cone.
+non-penetration cone. The peer's code reads its signs two ways (its sampler negates the twist, its
+one-dimensional branch does not); on the scenes of bench/spatial_peer.sh each of its lists per
+contacting/separating mode is a whole central arrangement, closed under negating every sign, so the comparison is
+the same under either reading.
 
 The peer's call: `enum_sliding_sticking_3d_proj(A, b, T, bt)` (contacting/separating modes by the face lattice of
 the polar of the non-penetration cone through qhull, `enumerate_contact_separating_3d`, then per

@@ -46,19 +46,9 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# The best user + sys CPU seconds of `runs` runs of the command (from getrusage).
+# The best user + sys CPU seconds of `runs` runs of the command.
 best_cpu() {
-  "$py" - "$runs" "$@" << 'PY'
-import resource, subprocess, sys
-best = None
-for _ in range(int(sys.argv[1])):
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    subprocess.run(sys.argv[2:], stdout=subprocess.DEVNULL, check=True)
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    t = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
-    best = t if best is None else min(best, t)
-print("%.4f" % best)
-PY
+  "$py" "$repo/bench/best_cpu.py" "$runs" "$@"
 }
 
 "$sb" --scenes "$work" > /dev/null
