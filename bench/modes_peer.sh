@@ -23,19 +23,9 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# The best user + sys CPU seconds of `runs` runs of the command (microseconds, from getrusage).
+# The best user + sys CPU seconds of `runs` runs of the command.
 best_cpu() {
-  python3 - "$runs" "$@" << 'PY'
-import resource, subprocess, sys
-best = None
-for _ in range(int(sys.argv[1])):
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    subprocess.run(sys.argv[2:], stdout=subprocess.DEVNULL, check=True)
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    t = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
-    best = t if best is None else min(best, t)
-print("%.4f" % best)
-PY
+  python3 "$repo/bench/best_cpu.py" "$runs" "$@"
 }
 
 # contactcert's own start-up (a scene of two fixels), taken off its times in the net column: the peer's times have none.

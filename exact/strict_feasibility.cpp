@@ -203,6 +203,9 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, LpProble
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
   try {
     LpResult<double> r = solve_lp<double>(lp);  // the duals only where read_strict reads them (t* = 0): a dense solve
+    // t <= 1 bounds the LP, but the float simplex can end "unbounded" on rows that are nearly dependent (a normal
+    // tilted by 1e-9): without t > 0 it has neither a point nor duals to read, so the verified LP decides.
+    if (r.status == LpStatus::kUnbounded && !S.empty() && !is_positive(-r.value)) return std::nullopt;
     if (r.status == LpStatus::kOptimal && !S.empty() && !is_positive(-r.value)) r.duals = optimal_duals(lp, r.basis);
     const StrictFeasibility<double> f = read_strict(r, m, n, S);
     *float_feasible = f.status == StrictStatus::kFeasible;
