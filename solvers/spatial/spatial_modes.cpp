@@ -1,7 +1,6 @@
 #include "solvers/spatial/spatial_modes.h"
 
 #include <algorithm>
-#include <deque>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -41,13 +40,7 @@ SpatialModel spatial_model(const geometry::SpatialScene& scene) {
 
 namespace {
 
-// A row of a letter named by its direction and sign: the direction u is n (a = -1, b = 0), t1 (-1, 1), t2 (-1, 2) or
-// d_a - d_b; the row is w_u . vdot = 0, or > 0 if strict. Two prefixes with one letter each at a contact share the
-// rows of equal directions there, so a Motzkin certificate moves between them row by row (Walker::reuse).
-struct RowKey {
-  int a = -1, b = 0;
-  bool strict = false;
-};
+using RowKey = SpatialRowKey;  // two prefixes with one letter each at a contact share the rows of equal functionals
 
 // The keys of letter L with m pyramid edges (the header's table, in its order); empty if L is not a letter.
 std::vector<RowKey> letter_keys(std::size_t m, char L) {
@@ -86,6 +79,66 @@ bool meets(const std::vector<SignRow>& rows, const Vec<Q>& vdot) {
     if (r.strict ? s <= 0 : s != 0) return false;
   }
   return true;
+}
+
+// The index of letter L in letters(m): s, f, then 'A' + j.
+std::size_t letter_index(char L) { return L == 's' ? 0 : L == 'f' ? 1 : 2 + static_cast<std::size_t>(L - 'A'); }
+
+// The keys of every letter of every contact (letter_keys), made once.
+class LetterKeys {
+ public:
+  explicit LetterKeys(const std::vector<std::size_t>& edges) {
+    for (const std::size_t m : edges) {
+      keys_.emplace_back();
+      for (char L : letters(m)) keys_.back().push_back(letter_keys(m, L));
+    }
+  }
+
+  const std::vector<RowKey>& of(std::size_t contact, std::size_t letter) const { return keys_[contact][letter]; }
+
+ private:
+  std::vector<std::vector<std::vector<RowKey>>> keys_;  ///< per contact and letter
+};
+
+// Where each weight of `proof` lands on a prefix whose letter at contact c has the keys keys_at(c): per weight the
+// row of its functional there (its index in the letter's rows, reversed as find_key); false if one has none.
+template <class KeysAt>
+bool land(const SpatialProof& proof, const KeysAt& keys_at, std::vector<std::pair<std::size_t, bool>>& at) {
+  at.clear();
+  for (const SpatialProof::Weight& w : proof.support) {
+    const auto found = find_key(keys_at(w.contact), w.key);
+    if (!found) return false;
+    at.push_back(*found);
+  }
+  return true;
+}
+
+// The proof's weights moved onto the rows of `prefix` (prefix_system's layout; an edge difference reversed with its
+// weight negated), as rows ascending and their weights, and the prefix's row count.
+Eigen::Index moved_weights(const LetterKeys& keys, const SpatialProof& proof, const std::string& prefix,
+                           std::vector<std::size_t>& rows, std::vector<Q>& weights) {
+  std::vector<std::size_t> first;  // per contact of the prefix: its first row
+  std::size_t count = 0;
+  for (std::size_t c = 0; c < prefix.size(); ++c) {
+    first.push_back(count);
+    count += keys.of(c, letter_index(prefix[c])).size();
+  }
+  std::vector<std::pair<std::size_t, bool>> at;
+  const bool landed = land(
+      proof, [&](std::size_t c) -> const auto& { return keys.of(c, letter_index(prefix[c])); }, at);
+  std::vector<std::pair<std::size_t, Q>> moved;
+  for (std::size_t r = 0; r < at.size() && landed; ++r) {
+    const SpatialProof::Weight& w = proof.support[r];
+    moved.emplace_back(first[w.contact] + at[r].first, at[r].second ? Q(-w.y) : w.y);
+  }
+  std::sort(moved.begin(), moved.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  rows.clear();
+  weights.clear();
+  for (auto& [row, y] : moved) {
+    rows.push_back(row);
+    weights.push_back(std::move(y));
+  }
+  return static_cast<Eigen::Index>(count);
 }
 
 }  // namespace
@@ -131,16 +184,13 @@ exact::SparseStrictSystem<Q> prefix_system(const SpatialModel& model, const std:
 class Walker {
  public:
   Walker(const SpatialModel& model, const SpatialModeOptions& options, SpatialModeTree& out)
-      : model_(model), options_(options), out_(out), known_(model.contacts.size()) {
+      : model_(model), options_(options), out_(out), keys_(edges(model)), known_(model.contacts.size()) {
+    out_.edges = edges(model);
     for (std::size_t i = 0; i < model.contacts.size(); ++i) {
       const SpatialModel::Contact& c = model.contacts[i];
       alphabets_.push_back(letters(c.d.size()));
-      keys_.emplace_back();
       rows_.emplace_back();
-      for (char L : alphabets_.back()) {
-        keys_[i].push_back(letter_keys(c.d.size(), L));
-        rows_[i].push_back(letter_rows(c, L));
-      }
+      for (char L : alphabets_.back()) rows_[i].push_back(letter_rows(c, L));
     }
   }
 
@@ -180,9 +230,8 @@ class Walker {
         path.push_back({std::move(vdot), 0});
         continue;
       }
-      if (Vec<Q> y = reuse(); y.size()) {
-        hold(y.size());
-        dead_.push_back({prefix, std::move(y)});
+      if (const std::optional<std::size_t> proof = reuse()) {
+        out_.dead.push_back({prefix, *proof});
         prefix.pop_back();
         continue;
       }
@@ -192,87 +241,55 @@ class Walker {
         path.push_back({Vec<Q>(kin.x.head(6)), 0});
         continue;
       }
-      remember(kin.motzkin);
-      hold(kin.motzkin.size());
-      dead_.push_back({prefix, std::move(kin.motzkin)});
+      out_.dead.push_back({prefix, remember(kin.motzkin)});
       prefix.pop_back();
     }
-    // Moved into the answer once: a growing vector would copy them (Eigen's move of a Vec<Q> is not noexcept).
-    out_.dead.reserve(dead_.size());
-    for (SpatialDeadPrefix& d : dead_) out_.dead.push_back(std::move(d));
   }
 
  private:
-  // A certificate by the rows it weighs: (contact, key, weight), in contact order.
-  struct KnownProof {
-    struct Weight {
-      std::size_t contact;
-      RowKey key;
-      Q y;
-    };
-    std::vector<Weight> support;
-  };
+  static std::vector<std::size_t> edges(const SpatialModel& model) {
+    std::vector<std::size_t> m;
+    for (const SpatialModel::Contact& c : model.contacts) m.push_back(c.d.size());
+    return m;
+  }
 
   // The keys of the current prefix's letter at contact i.
-  const std::vector<RowKey>& keys_at(std::size_t i) const { return keys_[i][at_[i]]; }
+  const std::vector<RowKey>& keys_at(std::size_t i) const { return keys_.of(i, at_[i]); }
 
-  // The first row of each letter of the current prefix in prefix_system's layout, and the row count.
-  std::vector<Index> first_rows(Index& rows) const {
-    std::vector<Index> first;
-    rows = 0;
-    for (std::size_t i = 0; i < at_.size(); ++i) {
-      first.push_back(rows);
-      rows += static_cast<Index>(keys_at(i).size());
-    }
-    return first;
+  // Keeps the rows a new dead prefix's certificate weighs as a proof, listed under the prefix's last contact (every
+  // certificate weighs a row there: else the parent would be dead); returns its index.
+  std::size_t remember(const Vec<Q>& y) {
+    SpatialProof known;
+    Index row = 0;
+    for (std::size_t i = 0; i < at_.size(); ++i)
+      for (const RowKey& key : keys_at(i))
+        if (const Q& w = y(row++); sgn(w) != 0) known.support.push_back({i, key, w});
+    if (!known.support.empty()) known_[known.support.back().contact].push_back(out_.proofs.size());
+    out_.proofs.push_back(std::move(known));
+    return out_.proofs.size() - 1;
   }
 
-  // Keeps the rows a new dead prefix's certificate weighs, under the prefix's last contact (every certificate weighs
-  // a row there: else the parent would be dead).
-  void remember(const Vec<Q>& y) {
-    Index rows = 0;
-    const std::vector<Index> first = first_rows(rows);
-    KnownProof known;
-    for (std::size_t i = 0; i < at_.size(); ++i) {
-      const std::vector<RowKey>& keys = keys_at(i);
-      for (std::size_t r = 0; r < keys.size(); ++r)
-        if (const Q& w = y(first[i] + static_cast<Index>(r)); sgn(w) != 0) known.support.push_back({i, keys[r], w});
-    }
-    if (!known.support.empty()) known_[known.support.back().contact].push_back(std::move(known));
-  }
-
-  // A certificate for the current prefix moved from a known one, or empty. Each weighed row moves to the prefix's row
-  // of the same functional at its contact (the same direction, or the reversed d_b - d_a with the weight negated),
-  // so sum y_r f_r = 0 still holds; it is a Motzkin certificate again (checker's motzkin_holds: y_r <= 0 on strict
-  // rows, some strict y_r < 0, any sign on equalities) if every row it lands on as strict weighs <= 0 and one < 0.
-  Vec<Q> reuse() const {
-    std::vector<std::pair<Index, bool>> at;  // per weighed row: its index in the letter's rows, reversed
-    for (const KnownProof& known : known_[at_.size() - 1]) {
-      at.clear();
-      bool strict_negative = false;
-      for (const auto& w : known.support) {
-        const std::vector<RowKey>& ks = keys_at(w.contact);
-        const auto found = find_key(ks, w.key);
-        if (!found) break;
-        const auto [r, reversed] = *found;
-        if (ks[r].strict) {
-          const int s = reversed ? -sgn(w.y) : sgn(w.y);
-          if (s > 0) break;
-          strict_negative = true;
-        }
-        at.push_back({static_cast<Index>(r), reversed});
+  // A known proof that the current prefix is dead, or nullopt. Each weighed row moves to the prefix's row of the same
+  // functional at its contact (the same direction, or the reversed d_b - d_a with the weight negated), so
+  // sum y_r f_r = 0 still holds; it is a Motzkin certificate again (checker's motzkin_holds: y_r <= 0 on strict rows,
+  // some strict y_r < 0, any sign on equalities) if every row it lands on as strict weighs <= 0 and one < 0.
+  std::optional<std::size_t> reuse() {
+    for (const std::size_t p : known_[at_.size() - 1]) {
+      const SpatialProof& known = out_.proofs[p];
+      if (!land(
+              known, [&](std::size_t c) -> const auto& { return keys_at(c); }, landed_))
+        continue;
+      bool strict_negative = false, signs = true;
+      for (std::size_t r = 0; r < landed_.size() && signs; ++r) {
+        const SpatialProof::Weight& w = known.support[r];
+        if (!keys_at(w.contact)[landed_[r].first].strict) continue;
+        const int s = landed_[r].second ? -sgn(w.y) : sgn(w.y);
+        signs = s <= 0;
+        strict_negative = strict_negative || s < 0;
       }
-      if (at.size() != known.support.size() || !strict_negative) continue;
-      Index rows = 0;
-      const std::vector<Index> first = first_rows(rows);
-      Vec<Q> y = Vec<Q>::Zero(rows);
-      for (std::size_t r = 0; r < at.size(); ++r) {
-        const auto& w = known.support[r];
-        y(first[w.contact] + at[r].first) = at[r].second ? Q(-w.y) : w.y;
-      }
-      return y;
+      if (signs && strict_negative) return p;
     }
-    return Vec<Q>();
+    return std::nullopt;
   }
 
   void count_node() {
@@ -285,15 +302,6 @@ class Walker {
           covered());
   }
 
-  // Counts the entries of a dead prefix's certificate against options.max_held_weights.
-  void hold(Index entries) {
-    held_ += static_cast<long>(entries);
-    if (held_ > options_.max_held_weights)
-      throw exact::BudgetExceeded("spatial modes: the dead prefixes' certificates would hold more than " +
-                                      std::to_string(options_.max_held_weights) + " weights (memory)",
-                                  covered());
-  }
-
   std::string covered() const {
     return std::to_string(out_.nodes - 1) + " prefixes visited, " + std::to_string(out_.modes.size()) +
            " feasible modes found";
@@ -302,13 +310,12 @@ class Walker {
   const SpatialModel& model_;
   const SpatialModeOptions& options_;
   SpatialModeTree& out_;
+  LetterKeys keys_;
   std::vector<std::string> alphabets_;                   ///< per contact
-  std::vector<std::vector<KnownProof>> known_;           ///< by the last contact of their support
-  std::vector<std::vector<std::vector<RowKey>>> keys_;   ///< per contact and letter
+  std::vector<std::vector<std::size_t>> known_;          ///< out.proofs by the last contact of their support
   std::vector<std::vector<std::vector<SignRow>>> rows_;  ///< per contact and letter
   std::vector<std::size_t> at_;                          ///< the current prefix's letters as indices
-  std::deque<SpatialDeadPrefix> dead_;                   ///< the dead prefixes so far, in walk order
-  long held_ = 0;                                        ///< entries of the dead prefixes' certificates so far
+  std::vector<std::pair<std::size_t, bool>> landed_;     ///< reuse's scratch: where a proof's weights land
 };
 
 }  // namespace
@@ -317,6 +324,14 @@ SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOption
   SpatialModeTree out;
   Walker(model, options, out).walk();
   return out;
+}
+
+Vec<Q> dead_motzkin(const SpatialModeTree& tree, const SpatialDeadPrefix& dead) {
+  std::vector<std::size_t> rows;
+  std::vector<Q> weights;
+  Vec<Q> y = Vec<Q>::Zero(moved_weights(LetterKeys(tree.edges), tree.proofs[dead.proof], dead.prefix, rows, weights));
+  for (std::size_t r = 0; r < rows.size(); ++r) y(static_cast<Index>(rows[r])) = weights[r];
+  return y;
 }
 
 Vec<Q> move_rows(const SpatialModel& model, const std::string& from, const Vec<Q>& y, const std::string& to) {
@@ -355,10 +370,14 @@ std::string spatial_modes_certificate(const std::string& scene_text, const Spati
     out += (i ? ",\n  " : "\n  ") + nlohmann::ordered_json{{"mode", tree.modes[i]}, {"acceleration", a}}.dump();
   }
   out += tree.modes.empty() ? "],\n \"dead\": [" : "\n ],\n \"dead\": [";
+  const LetterKeys keys(tree.edges);
+  std::vector<std::size_t> rows;
+  std::vector<Q> weights;
   for (std::size_t i = 0; i < tree.dead.size(); ++i) {
     const SpatialDeadPrefix& d = tree.dead[i];
+    moved_weights(keys, tree.proofs[d.proof], d.prefix, rows, weights);
     out += (i ? ",\n  " : "\n  ") +
-           nlohmann::ordered_json{{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(d.motzkin)}}.dump();
+           nlohmann::ordered_json{{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(rows, weights)}}.dump();
   }
   out += tree.dead.empty() ? "]\n}\n" : "\n ]\n}\n";
   return out;
