@@ -84,21 +84,7 @@ bool meets(const std::vector<SignRow>& rows, const Vec<Q>& vdot) {
 // The index of letter L in letters(m): s, f, then 'A' + j.
 std::size_t letter_index(char L) { return L == 's' ? 0 : L == 'f' ? 1 : 2 + static_cast<std::size_t>(L - 'A'); }
 
-// The keys of every letter of every contact (letter_keys), made once.
-class LetterKeys {
- public:
-  explicit LetterKeys(const std::vector<std::size_t>& edges) {
-    for (const std::size_t m : edges) {
-      keys_.emplace_back();
-      for (char L : letters(m)) keys_.back().push_back(letter_keys(m, L));
-    }
-  }
-
-  const std::vector<RowKey>& of(std::size_t contact, std::size_t letter) const { return keys_[contact][letter]; }
-
- private:
-  std::vector<std::vector<std::vector<RowKey>>> keys_;  ///< per contact and letter
-};
+using RowKeys = std::vector<std::vector<std::vector<RowKey>>>;  // SpatialModeTree::row_keys
 
 // Where each weight of `proof` lands on a prefix whose letter at contact c has the keys keys_at(c): per weight the
 // row of its functional there (its index in the letter's rows, reversed as find_key); false if one has none.
@@ -115,17 +101,17 @@ bool land(const SpatialProof& proof, const KeysAt& keys_at, std::vector<std::pai
 
 // The proof's weights moved onto the rows of `prefix` (prefix_system's layout; an edge difference reversed with its
 // weight negated), as rows ascending and their weights, and the prefix's row count.
-Eigen::Index moved_weights(const LetterKeys& keys, const SpatialProof& proof, const std::string& prefix,
+Eigen::Index moved_weights(const RowKeys& keys, const SpatialProof& proof, const std::string& prefix,
                            std::vector<std::size_t>& rows, std::vector<Q>& weights) {
   std::vector<std::size_t> first;  // per contact of the prefix: its first row
   std::size_t count = 0;
   for (std::size_t c = 0; c < prefix.size(); ++c) {
     first.push_back(count);
-    count += keys.of(c, letter_index(prefix[c])).size();
+    count += keys[c][letter_index(prefix[c])].size();
   }
   std::vector<std::pair<std::size_t, bool>> at;
   const bool landed = land(
-      proof, [&](std::size_t c) -> const auto& { return keys.of(c, letter_index(prefix[c])); }, at);
+      proof, [&](std::size_t c) -> const auto& { return keys[c][letter_index(prefix[c])]; }, at);
   std::vector<std::pair<std::size_t, Q>> moved;
   for (std::size_t r = 0; r < at.size() && landed; ++r) {
     const SpatialProof::Weight& w = proof.support[r];
@@ -184,13 +170,16 @@ exact::SparseStrictSystem<Q> prefix_system(const SpatialModel& model, const std:
 class Walker {
  public:
   Walker(const SpatialModel& model, const SpatialModeOptions& options, SpatialModeTree& out)
-      : model_(model), options_(options), out_(out), keys_(edges(model)), known_(model.contacts.size()) {
-    out_.edges = edges(model);
+      : model_(model), options_(options), out_(out), known_(model.contacts.size()) {
     for (std::size_t i = 0; i < model.contacts.size(); ++i) {
       const SpatialModel::Contact& c = model.contacts[i];
       alphabets_.push_back(letters(c.d.size()));
+      out_.row_keys.emplace_back();
       rows_.emplace_back();
-      for (char L : alphabets_.back()) rows_[i].push_back(letter_rows(c, L));
+      for (char L : alphabets_.back()) {
+        out_.row_keys[i].push_back(letter_keys(c.d.size(), L));
+        rows_[i].push_back(letter_rows(c, L));
+      }
     }
   }
 
@@ -247,14 +236,8 @@ class Walker {
   }
 
  private:
-  static std::vector<std::size_t> edges(const SpatialModel& model) {
-    std::vector<std::size_t> m;
-    for (const SpatialModel::Contact& c : model.contacts) m.push_back(c.d.size());
-    return m;
-  }
-
   // The keys of the current prefix's letter at contact i.
-  const std::vector<RowKey>& keys_at(std::size_t i) const { return keys_.of(i, at_[i]); }
+  const std::vector<RowKey>& keys_at(std::size_t i) const { return out_.row_keys[i][at_[i]]; }
 
   // Keeps the rows a new dead prefix's certificate weighs as a proof, listed under the prefix's last contact (every
   // certificate weighs a row there: else the parent would be dead); returns its index.
@@ -310,7 +293,6 @@ class Walker {
   const SpatialModel& model_;
   const SpatialModeOptions& options_;
   SpatialModeTree& out_;
-  LetterKeys keys_;
   std::vector<std::string> alphabets_;                   ///< per contact
   std::vector<std::vector<std::size_t>> known_;          ///< out.proofs by the last contact of their support
   std::vector<std::vector<std::vector<SignRow>>> rows_;  ///< per contact and letter
@@ -329,7 +311,7 @@ SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOption
 Vec<Q> dead_motzkin(const SpatialModeTree& tree, const SpatialDeadPrefix& dead) {
   std::vector<std::size_t> rows;
   std::vector<Q> weights;
-  Vec<Q> y = Vec<Q>::Zero(moved_weights(LetterKeys(tree.edges), tree.proofs[dead.proof], dead.prefix, rows, weights));
+  Vec<Q> y = Vec<Q>::Zero(moved_weights(tree.row_keys, tree.proofs[dead.proof], dead.prefix, rows, weights));
   for (std::size_t r = 0; r < rows.size(); ++r) y(static_cast<Index>(rows[r])) = weights[r];
   return y;
 }
@@ -370,12 +352,11 @@ std::string spatial_modes_certificate(const std::string& scene_text, const Spati
     out += (i ? ",\n  " : "\n  ") + nlohmann::ordered_json{{"mode", tree.modes[i]}, {"acceleration", a}}.dump();
   }
   out += tree.modes.empty() ? "],\n \"dead\": [" : "\n ],\n \"dead\": [";
-  const LetterKeys keys(tree.edges);
   std::vector<std::size_t> rows;
   std::vector<Q> weights;
   for (std::size_t i = 0; i < tree.dead.size(); ++i) {
     const SpatialDeadPrefix& d = tree.dead[i];
-    moved_weights(keys, tree.proofs[d.proof], d.prefix, rows, weights);
+    moved_weights(tree.row_keys, tree.proofs[d.proof], d.prefix, rows, weights);
     out += (i ? ",\n  " : "\n  ") +
            nlohmann::ordered_json{{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(rows, weights)}}.dump();
   }

@@ -101,9 +101,10 @@ struct SpatialModeTree {
   std::vector<Vec<Q>> accelerations;  ///< per mode: a vdot (6) that realises it
   std::vector<SpatialDeadPrefix> dead;
   std::vector<SpatialProof> proofs;  ///< the dead prefixes' certificates: one per LP that found a prefix dead
-  std::vector<std::size_t> edges;    ///< per contact: its pyramid's edges m (which rows each letter has)
-  long nodes = 0;                    ///< prefixes visited, the empty one included
-  long lps = 0;                      ///< strict-feasibility LPs solved
+  /// Per contact and letter (letters' order): the keys of the letter's rows, what dead_motzkin moves a proof by.
+  std::vector<std::vector<std::vector<SpatialRowKey>>> row_keys;
+  long nodes = 0;  ///< prefixes visited, the empty one included
+  long lps = 0;    ///< strict-feasibility LPs solved
 };
 
 /// The walk. Throws exact::BudgetExceeded (with what was covered) past a budget or the deadline.
