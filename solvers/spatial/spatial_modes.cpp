@@ -84,8 +84,6 @@ bool meets(const std::vector<SignRow>& rows, const Vec<Q>& vdot) {
 // The index of letter L in letters(m): s, f, then 'A' + j.
 std::size_t letter_index(char L) { return L == 's' ? 0 : L == 'f' ? 1 : 2 + static_cast<std::size_t>(L - 'A'); }
 
-using RowKeys = std::vector<std::vector<std::vector<RowKey>>>;  // SpatialModeTree::row_keys
-
 // Where each weight of `proof` lands on a prefix whose letter at contact c has the keys keys_at(c): per weight the
 // row of its functional there (its index in the letter's rows, reversed as find_key); false if one has none.
 template <class KeysAt>
@@ -99,32 +97,55 @@ bool land(const SpatialProof& proof, const KeysAt& keys_at, std::vector<std::pai
   return true;
 }
 
-// The proof's weights moved onto the rows of `prefix` (prefix_system's layout; an edge difference reversed with its
-// weight negated), as rows ascending and their weights, and the prefix's row count.
-Eigen::Index moved_weights(const RowKeys& keys, const SpatialProof& proof, const std::string& prefix,
-                           std::vector<std::size_t>& rows, std::vector<Q>& weights) {
-  std::vector<std::size_t> first;  // per contact of the prefix: its first row
-  std::size_t count = 0;
-  for (std::size_t c = 0; c < prefix.size(); ++c) {
-    first.push_back(count);
-    count += keys[c][letter_index(prefix[c])].size();
+// The weighed rows of y, a vector over the rows of a prefix of `contacts` letters whose letter at contact c has the
+// keys keys_at(c) (prefix_system's layout), as a proof.
+template <class KeysAt>
+SpatialProof proof_of(std::size_t contacts, const KeysAt& keys_at, const Vec<Q>& y) {
+  SpatialProof proof;
+  Index row = 0;
+  for (std::size_t c = 0; c < contacts; ++c)
+    for (const RowKey& key : keys_at(c))
+      if (const Q& w = y(row++); sgn(w) != 0) proof.support.push_back({c, key, w});
+  return proof;
+}
+
+// The proof's weights moved onto the rows of such a prefix (an edge difference reversed with its weight negated), as
+// rows ascending and their weights, with the prefix's row count; false if a weight has no row there.
+template <class KeysAt>
+bool moved_weights(const SpatialProof& proof, std::size_t contacts, const KeysAt& keys_at, Index& count,
+                   std::vector<std::size_t>& rows, std::vector<Q>& weights) {
+  std::vector<std::size_t> first;  // per contact: its first row
+  count = 0;
+  for (std::size_t c = 0; c < contacts; ++c) {
+    first.push_back(static_cast<std::size_t>(count));
+    count += static_cast<Index>(keys_at(c).size());
   }
   std::vector<std::pair<std::size_t, bool>> at;
-  const bool landed = land(
-      proof, [&](std::size_t c) -> const auto& { return keys[c][letter_index(prefix[c])]; }, at);
+  rows.clear();
+  weights.clear();
+  if (!land(proof, keys_at, at)) return false;
   std::vector<std::pair<std::size_t, Q>> moved;
-  for (std::size_t r = 0; r < at.size() && landed; ++r) {
+  for (std::size_t r = 0; r < at.size(); ++r) {
     const SpatialProof::Weight& w = proof.support[r];
     moved.emplace_back(first[w.contact] + at[r].first, at[r].second ? Q(-w.y) : w.y);
   }
   std::sort(moved.begin(), moved.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  rows.clear();
-  weights.clear();
   for (auto& [row, y] : moved) {
     rows.push_back(row);
     weights.push_back(std::move(y));
   }
-  return static_cast<Eigen::Index>(count);
+  return true;
+}
+
+// A dead prefix's proof moved onto its rows (moved_weights), and its row count.
+Index dead_weights(const SpatialModeTree& tree, const SpatialDeadPrefix& dead, std::vector<std::size_t>& rows,
+                   std::vector<Q>& weights) {
+  Index count = 0;
+  moved_weights(
+      tree.proofs[dead.proof],
+      dead.prefix.size(), [&](std::size_t c) -> const auto& { return tree.row_keys[c][letter_index(dead.prefix[c])]; },
+      count, rows, weights);
+  return count;
 }
 
 }  // namespace
@@ -242,11 +263,8 @@ class Walker {
   // Keeps the rows a new dead prefix's certificate weighs as a proof, listed under the prefix's last contact (every
   // certificate weighs a row there: else the parent would be dead); returns its index.
   std::size_t remember(const Vec<Q>& y) {
-    SpatialProof known;
-    Index row = 0;
-    for (std::size_t i = 0; i < at_.size(); ++i)
-      for (const RowKey& key : keys_at(i))
-        if (const Q& w = y(row++); sgn(w) != 0) known.support.push_back({i, key, w});
+    SpatialProof known = proof_of(
+        at_.size(), [&](std::size_t c) -> const auto& { return keys_at(c); }, y);
     if (!known.support.empty()) known_[known.support.back().contact].push_back(out_.proofs.size());
     out_.proofs.push_back(std::move(known));
     return out_.proofs.size() - 1;
@@ -311,32 +329,29 @@ SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOption
 Vec<Q> dead_motzkin(const SpatialModeTree& tree, const SpatialDeadPrefix& dead) {
   std::vector<std::size_t> rows;
   std::vector<Q> weights;
-  Vec<Q> y = Vec<Q>::Zero(moved_weights(tree.row_keys, tree.proofs[dead.proof], dead.prefix, rows, weights));
+  Vec<Q> y = Vec<Q>::Zero(dead_weights(tree, dead, rows, weights));
   for (std::size_t r = 0; r < rows.size(); ++r) y(static_cast<Index>(rows[r])) = weights[r];
   return y;
 }
 
 Vec<Q> move_rows(const SpatialModel& model, const std::string& from, const Vec<Q>& y, const std::string& to) {
   std::vector<std::vector<RowKey>> from_keys, to_keys;
-  Index from_rows = 0, to_rows = 0;
   for (std::size_t i = 0; i < from.size(); ++i) {
     from_keys.push_back(letter_keys(model.contacts[i].d.size(), from[i]));
     to_keys.push_back(letter_keys(model.contacts[i].d.size(), to[i]));
-    from_rows += static_cast<Index>(from_keys[i].size());
-    to_rows += static_cast<Index>(to_keys[i].size());
   }
-  Vec<Q> out = Vec<Q>::Zero(to_rows + y.size() - from_rows);
+  const SpatialProof proof = proof_of(
+      from.size(), [&](std::size_t c) -> const auto& { return from_keys[c]; }, y);
+  Index from_rows = 0, to_rows = 0;
+  for (const std::vector<RowKey>& keys : from_keys) from_rows += static_cast<Index>(keys.size());
+  std::vector<std::size_t> rows;
+  std::vector<Q> weights;
+  if (!moved_weights(
+          proof, to.size(), [&](std::size_t c) -> const auto& { return to_keys[c]; }, to_rows, rows, weights))
+    return Vec<Q>();
+  Vec<Q> out = Vec<Q>::Zero(to_rows + y.size() - from_rows);  // the trailing rows copied
   out.tail(y.size() - from_rows) = y.tail(y.size() - from_rows);
-  for (Index i = 0, at = 0, to_at = 0; i < static_cast<Index>(from.size()); ++i) {
-    const std::size_t c = static_cast<std::size_t>(i);
-    for (std::size_t r = 0; r < from_keys[c].size(); ++r, ++at) {
-      if (sgn(y(at)) == 0) continue;
-      const auto found = find_key(to_keys[c], from_keys[c][r]);
-      if (!found) return Vec<Q>();
-      out(to_at + static_cast<Index>(found->first)) = found->second ? Q(-y(at)) : y(at);
-    }
-    to_at += static_cast<Index>(to_keys[c].size());
-  }
+  for (std::size_t r = 0; r < rows.size(); ++r) out(static_cast<Index>(rows[r])) = weights[r];
   return out;
 }
 
@@ -356,7 +371,7 @@ std::string spatial_modes_certificate(const std::string& scene_text, const Spati
   std::vector<Q> weights;
   for (std::size_t i = 0; i < tree.dead.size(); ++i) {
     const SpatialDeadPrefix& d = tree.dead[i];
-    moved_weights(tree.row_keys, tree.proofs[d.proof], d.prefix, rows, weights);
+    dead_weights(tree, d, rows, weights);
     out += (i ? ",\n  " : "\n  ") +
            nlohmann::ordered_json{{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(rows, weights)}}.dump();
   }
