@@ -109,43 +109,34 @@ SpatialProof proof_of(std::size_t contacts, const KeysAt& keys_at, const Vec<Q>&
   return proof;
 }
 
-// The proof's weights moved onto the rows of such a prefix (an edge difference reversed with its weight negated), as
-// rows ascending and their weights, with the prefix's row count; false if a weight has no row there.
+// The rows of a prefix of `contacts` letters whose letter at contact c has the keys keys_at(c).
 template <class KeysAt>
-bool moved_weights(const SpatialProof& proof, std::size_t contacts, const KeysAt& keys_at, Index& count,
-                   std::vector<std::size_t>& rows, std::vector<Q>& weights) {
-  std::vector<std::size_t> first;  // per contact: its first row
-  count = 0;
-  for (std::size_t c = 0; c < contacts; ++c) {
-    first.push_back(static_cast<std::size_t>(count));
-    count += static_cast<Index>(keys_at(c).size());
-  }
-  std::vector<std::pair<std::size_t, bool>> at;
-  rows.clear();
-  weights.clear();
-  if (!land(proof, keys_at, at)) return false;
-  std::vector<std::pair<std::size_t, Q>> moved;
-  for (std::size_t r = 0; r < at.size(); ++r) {
-    const SpatialProof::Weight& w = proof.support[r];
-    moved.emplace_back(first[w.contact] + at[r].first, at[r].second ? Q(-w.y) : w.y);
-  }
-  std::sort(moved.begin(), moved.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  for (auto& [row, y] : moved) {
-    rows.push_back(row);
-    weights.push_back(std::move(y));
+Index row_count(std::size_t contacts, const KeysAt& keys_at) {
+  Index count = 0;
+  for (std::size_t c = 0; c < contacts; ++c) count += static_cast<Index>(keys_at(c).size());
+  return count;
+}
+
+// The proof's weights moved onto the rows of such a prefix: put(row, weight) for each, in contact order (an edge
+// difference reversed with its weight negated); false, at the first weight with no row there.
+template <class KeysAt, class Put>
+bool move_proof(const SpatialProof& proof, const KeysAt& keys_at, const Put& put) {
+  Index first = 0;  // the first row of contact c
+  std::size_t c = 0;
+  for (const SpatialProof::Weight& w : proof.support) {
+    for (; c < w.contact; ++c) first += static_cast<Index>(keys_at(c).size());
+    const auto found = find_key(keys_at(c), w.key);
+    if (!found) return false;
+    put(first + static_cast<Index>(found->first), found->second ? Q(-w.y) : w.y);
   }
   return true;
 }
 
-// A dead prefix's proof moved onto its rows (moved_weights), and its row count.
-Index dead_weights(const SpatialModeTree& tree, const SpatialDeadPrefix& dead, std::vector<std::size_t>& rows,
-                   std::vector<Q>& weights) {
-  Index count = 0;
-  moved_weights(
-      tree.proofs[dead.proof],
-      dead.prefix.size(), [&](std::size_t c) -> const auto& { return tree.row_keys[c][letter_index(dead.prefix[c])]; },
-      count, rows, weights);
-  return count;
+// The letters' keys of a dead prefix of `tree`.
+auto dead_keys(const SpatialModeTree& tree, const SpatialDeadPrefix& dead) {
+  return [t = &tree, d = &dead](std::size_t c) -> const std::vector<RowKey>& {
+    return t->row_keys[c][letter_index(d->prefix[c])];
+  };
 }
 
 }  // namespace
@@ -327,10 +318,8 @@ SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOption
 }
 
 Vec<Q> dead_motzkin(const SpatialModeTree& tree, const SpatialDeadPrefix& dead) {
-  std::vector<std::size_t> rows;
-  std::vector<Q> weights;
-  Vec<Q> y = Vec<Q>::Zero(dead_weights(tree, dead, rows, weights));
-  for (std::size_t r = 0; r < rows.size(); ++r) y(static_cast<Index>(rows[r])) = weights[r];
+  Vec<Q> y = Vec<Q>::Zero(row_count(dead.prefix.size(), dead_keys(tree, dead)));
+  move_proof(tree.proofs[dead.proof], dead_keys(tree, dead), [&](Index row, Q w) { y(row) = std::move(w); });
   return y;
 }
 
@@ -340,18 +329,13 @@ Vec<Q> move_rows(const SpatialModel& model, const std::string& from, const Vec<Q
     from_keys.push_back(letter_keys(model.contacts[i].d.size(), from[i]));
     to_keys.push_back(letter_keys(model.contacts[i].d.size(), to[i]));
   }
-  const SpatialProof proof = proof_of(
-      from.size(), [&](std::size_t c) -> const auto& { return from_keys[c]; }, y);
-  Index from_rows = 0, to_rows = 0;
-  for (const std::vector<RowKey>& keys : from_keys) from_rows += static_cast<Index>(keys.size());
-  std::vector<std::size_t> rows;
-  std::vector<Q> weights;
-  if (!moved_weights(
-          proof, to.size(), [&](std::size_t c) -> const auto& { return to_keys[c]; }, to_rows, rows, weights))
+  auto from_at = [&](std::size_t c) -> const std::vector<RowKey>& { return from_keys[c]; };
+  auto to_at = [&](std::size_t c) -> const std::vector<RowKey>& { return to_keys[c]; };
+  const Index from_rows = row_count(from.size(), from_at), tail = y.size() - from_rows;
+  Vec<Q> out = Vec<Q>::Zero(row_count(to.size(), to_at) + tail);
+  out.tail(tail) = y.tail(tail);  // the trailing rows copied
+  if (!move_proof(proof_of(from.size(), from_at, y), to_at, [&](Index row, Q w) { out(row) = std::move(w); }))
     return Vec<Q>();
-  Vec<Q> out = Vec<Q>::Zero(to_rows + y.size() - from_rows);  // the trailing rows copied
-  out.tail(y.size() - from_rows) = y.tail(y.size() - from_rows);
-  for (std::size_t r = 0; r < rows.size(); ++r) out(static_cast<Index>(rows[r])) = weights[r];
   return out;
 }
 
@@ -367,11 +351,21 @@ std::string spatial_modes_certificate(const std::string& scene_text, const Spati
     out += (i ? ",\n  " : "\n  ") + nlohmann::ordered_json{{"mode", tree.modes[i]}, {"acceleration", a}}.dump();
   }
   out += tree.modes.empty() ? "],\n \"dead\": [" : "\n ],\n \"dead\": [";
+  std::vector<std::pair<Index, Q>> moved;  // a dead prefix's weighed rows, sorted by row
   std::vector<std::size_t> rows;
   std::vector<Q> weights;
   for (std::size_t i = 0; i < tree.dead.size(); ++i) {
     const SpatialDeadPrefix& d = tree.dead[i];
-    dead_weights(tree, d, rows, weights);
+    moved.clear();
+    move_proof(tree.proofs[d.proof], dead_keys(tree, d),
+               [&](Index row, Q w) { moved.emplace_back(row, std::move(w)); });
+    std::sort(moved.begin(), moved.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    rows.clear();
+    weights.clear();
+    for (auto& [row, w] : moved) {
+      rows.push_back(static_cast<std::size_t>(row));
+      weights.push_back(std::move(w));
+    }
     out += (i ? ",\n  " : "\n  ") +
            nlohmann::ordered_json{{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(rows, weights)}}.dump();
   }
