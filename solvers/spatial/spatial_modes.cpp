@@ -118,7 +118,7 @@ Index row_count(std::size_t contacts, const KeysAt& keys_at) {
 }
 
 // The proof's weights moved onto the rows of such a prefix: put(row, weight) for each, in contact order (an edge
-// difference reversed with its weight negated); false, at the first weight with no row there.
+// difference reversed with its weight negated); false, at the first weight with no row there (those before it put).
 template <class KeysAt, class Put>
 bool move_proof(const SpatialProof& proof, const KeysAt& keys_at, const Put& put) {
   Index first = 0;  // the first row of contact c
@@ -248,14 +248,16 @@ class Walker {
   }
 
  private:
-  // The keys of the current prefix's letter at contact i.
+  // The keys of the current prefix's letter at contact i; and keys_at as a function (for proof_of, land).
   const std::vector<RowKey>& keys_at(std::size_t i) const { return out_.row_keys[i][at_[i]]; }
+  auto prefix_keys() const {
+    return [this](std::size_t i) -> const std::vector<RowKey>& { return keys_at(i); };
+  }
 
   // Keeps the rows a new dead prefix's certificate weighs as a proof, listed under the prefix's last contact (every
   // certificate weighs a row there: else the parent would be dead); returns its index.
   std::size_t remember(const Vec<Q>& y) {
-    SpatialProof known = proof_of(
-        at_.size(), [&](std::size_t c) -> const auto& { return keys_at(c); }, y);
+    SpatialProof known = proof_of(at_.size(), prefix_keys(), y);
     if (!known.support.empty()) known_[known.support.back().contact].push_back(out_.proofs.size());
     out_.proofs.push_back(std::move(known));
     return out_.proofs.size() - 1;
@@ -268,9 +270,7 @@ class Walker {
   std::optional<std::size_t> reuse() {
     for (const std::size_t p : known_[at_.size() - 1]) {
       const SpatialProof& known = out_.proofs[p];
-      if (!land(
-              known, [&](std::size_t c) -> const auto& { return keys_at(c); }, landed_))
-        continue;
+      if (!land(known, prefix_keys(), landed_)) continue;
       bool strict_negative = false, signs = true;
       for (std::size_t r = 0; r < landed_.size() && signs; ++r) {
         const SpatialProof::Weight& w = known.support[r];
