@@ -9,15 +9,15 @@ as Markdown tables, each with the exponent of its values fitted over k (least sq
 k = 8 to 32 where the tree is past its start). Then the command line end to end on the same scenes (written by
 `spatial_bench --scenes DIR`): `contactcert modes SCENE --json --certificate FILE` and
 `contactcert stability SCENE --wrench 0,0,-1,0,0,0 --json --certificate FILE`, as the child's CPU seconds (user +
-sys) and the certificate's size, then `contactcert check FILE` on the stability certificate; with OTHER (an older
-build) its CPU seconds and the ratio OTHER / ours side by side. A run stopped by --time-limit or a budget shows its
+sys), its peak resident memory (ru_maxrss of that child alone, from wait4) and the certificate's size, then
+`contactcert check FILE` on the stability certificate; with OTHER (an older build) its CPU seconds and peak memory and
+the ratio of CPU OTHER / ours side by side. A run stopped by --time-limit or a budget shows its
 exit code (3).
 """
 import argparse
 import json
 import math
 import os
-import resource
 import subprocess
 import tempfile
 
@@ -35,19 +35,22 @@ def fit(ks, values):
 GRAVITY = ["--wrench", "0,0,-1,0,0,0"]
 
 
-def timed(argv):
-    """(child CPU seconds, exit code) of one run."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    p = subprocess.run(argv, capture_output=True, text=True)
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime), p.returncode
+def timed(argv, peak=None):
+    """(child CPU seconds, exit code) of one run; its peak resident memory in MB appended to `peak` if given."""
+    p = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(p.pid, 0)
+    p.returncode = os.waitstatus_to_exitcode(status)
+    if peak is not None:
+        peak.append(usage.ru_maxrss / 1024)  # KB on Linux
+    return usage.ru_utime + usage.ru_stime, p.returncode
 
 
-def cli(binary, command, scene, cert, limit):
+def cli(binary, command, scene, cert, limit, peak=None):
     """(child CPU seconds, certificate bytes or None, exit code, check CPU seconds or None) of one `modes` or
-    `stability` run (the latter's certificate then checked by the same binary)."""
+    `stability` run (the latter's certificate then checked by the same binary); its peak memory into `peak`."""
     extra = GRAVITY if command == "stability" else []
-    cpu, rc = timed([binary, command, scene, *extra, "--json", "--certificate", cert, "--time-limit", str(limit)])
+    cpu, rc = timed([binary, command, scene, *extra, "--json", "--certificate", cert, "--time-limit", str(limit)],
+                    peak)
     size = os.path.getsize(cert) if rc == 0 and os.path.exists(cert) else None
     check = None
     if size and command == "stability":
@@ -102,21 +105,24 @@ def main():
         subprocess.run([a.bench, "--scenes", d], check=True)
         for command in ("modes", "stability"):
             shown = f"contactcert {command} SCENE" + (" --wrench 0,0,-1,0,0,0" if command == "stability" else "")
-            head = "| scene | k | CPU s | certificate bytes |" + (" check CPU s |" if command == "stability" else "")
-            head += " OTHER CPU s | OTHER / ours |" if a.other else ""
+            head = "| scene | k | CPU s | peak MB | certificate bytes |"
+            head += " check CPU s |" if command == "stability" else ""
+            head += " OTHER CPU s | OTHER peak MB | OTHER / ours |" if a.other else ""
             print(f"`{shown} --json --certificate FILE`, end to end:\n\n" + head)
             print("|---" * (head.count("|") - 1) + "|")
             for shape in ("box", "peg"):
                 for k in KS:
                     scene, cert = f"{d}/{shape}_{k}.json", f"{d}/cert.json"
-                    cpu, size, rc, check = cli(a.contactcert, command, scene, cert, a.time_limit)
-                    line = f"| {shape} | {k} | {cpu:.2f} | {size if size else 'exit %d' % rc} |"
+                    peak = []
+                    cpu, size, rc, check = cli(a.contactcert, command, scene, cert, a.time_limit, peak)
+                    line = f"| {shape} | {k} | {cpu:.2f} | {peak[0]:.0f} | {size if size else 'exit %d' % rc} |"
                     if command == "stability":
                         line += f" {check:.2f} |" if check is not None else " |"
                     if a.other:
-                        ocpu, _, orc, _ = cli(a.other, command, scene, cert, a.time_limit)
+                        ocpu, _, orc, _ = cli(a.other, command, scene, cert, a.time_limit, peak)
                         shown = f"{ocpu:.2f}" if orc == 0 else f"exit {orc} after {ocpu:.2f}"
-                        line += f" {shown} | {ocpu / cpu:.1f} |" if orc == 0 else f" {shown} | |"
+                        line += f" {shown} | {peak[1]:.0f} |"
+                        line += f" {ocpu / cpu:.1f} |" if orc == 0 else " |"
                     print(line)
             print()
 

@@ -1,7 +1,6 @@
 #include "solvers/spatial/spatial_modes.h"
 
 #include <algorithm>
-#include <deque>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -41,13 +40,7 @@ SpatialModel spatial_model(const geometry::SpatialScene& scene) {
 
 namespace {
 
-// A row of a letter named by its direction and sign: the direction u is n (a = -1, b = 0), t1 (-1, 1), t2 (-1, 2) or
-// d_a - d_b; the row is w_u . vdot = 0, or > 0 if strict. Two prefixes with one letter each at a contact share the
-// rows of equal directions there, so a Motzkin certificate moves between them row by row (Walker::reuse).
-struct RowKey {
-  int a = -1, b = 0;
-  bool strict = false;
-};
+using RowKey = SpatialRowKey;  // two prefixes with one letter each at a contact share the rows of equal functionals
 
 // The keys of letter L with m pyramid edges (the header's table, in its order); empty if L is not a letter.
 std::vector<RowKey> letter_keys(std::size_t m, char L) {
@@ -86,6 +79,64 @@ bool meets(const std::vector<SignRow>& rows, const Vec<Q>& vdot) {
     if (r.strict ? s <= 0 : s != 0) return false;
   }
   return true;
+}
+
+// The index of letter L in letters(m): s, f, then 'A' + j.
+std::size_t letter_index(char L) { return L == 's' ? 0 : L == 'f' ? 1 : 2 + static_cast<std::size_t>(L - 'A'); }
+
+// Where each weight of `proof` lands on a prefix whose letter at contact c has the keys keys_at(c): per weight the
+// row of its functional there (its index in the letter's rows, reversed as find_key); false if one has none.
+template <class KeysAt>
+bool land(const SpatialProof& proof, const KeysAt& keys_at, std::vector<std::pair<std::size_t, bool>>& at) {
+  at.clear();
+  for (const SpatialProof::Weight& w : proof.support) {
+    const auto found = find_key(keys_at(w.contact), w.key);
+    if (!found) return false;
+    at.push_back(*found);
+  }
+  return true;
+}
+
+// The weighed rows of y, a vector over the rows of a prefix of `contacts` letters whose letter at contact c has the
+// keys keys_at(c) (prefix_system's layout), as a proof.
+template <class KeysAt>
+SpatialProof proof_of(std::size_t contacts, const KeysAt& keys_at, const Vec<Q>& y) {
+  SpatialProof proof;
+  Index row = 0;
+  for (std::size_t c = 0; c < contacts; ++c)
+    for (const RowKey& key : keys_at(c))
+      if (const Q& w = y(row++); sgn(w) != 0) proof.support.push_back({c, key, w});
+  return proof;
+}
+
+// The rows of a prefix of `contacts` letters whose letter at contact c has the keys keys_at(c).
+template <class KeysAt>
+Index row_count(std::size_t contacts, const KeysAt& keys_at) {
+  Index count = 0;
+  for (std::size_t c = 0; c < contacts; ++c) count += static_cast<Index>(keys_at(c).size());
+  return count;
+}
+
+// The proof's weights moved onto the rows of such a prefix: put(row, weight) for each, in contact order (an edge
+// difference reversed with its weight negated); false, at the first weight with no row there (those before it put).
+template <class KeysAt, class Put>
+bool move_proof(const SpatialProof& proof, const KeysAt& keys_at, const Put& put) {
+  Index first = 0;  // the first row of contact c
+  std::size_t c = 0;
+  for (const SpatialProof::Weight& w : proof.support) {
+    for (; c < w.contact; ++c) first += static_cast<Index>(keys_at(c).size());
+    const auto found = find_key(keys_at(c), w.key);
+    if (!found) return false;
+    put(first + static_cast<Index>(found->first), found->second ? Q(-w.y) : w.y);
+  }
+  return true;
+}
+
+// The letters' keys of a dead prefix of `tree`.
+auto dead_keys(const SpatialModeTree& tree, const SpatialDeadPrefix& dead) {
+  return [t = &tree, d = &dead](std::size_t c) -> const std::vector<RowKey>& {
+    return t->row_keys[c][letter_index(d->prefix[c])];
+  };
 }
 
 }  // namespace
@@ -135,10 +186,10 @@ class Walker {
     for (std::size_t i = 0; i < model.contacts.size(); ++i) {
       const SpatialModel::Contact& c = model.contacts[i];
       alphabets_.push_back(letters(c.d.size()));
-      keys_.emplace_back();
+      out_.row_keys.emplace_back();
       rows_.emplace_back();
       for (char L : alphabets_.back()) {
-        keys_[i].push_back(letter_keys(c.d.size(), L));
+        out_.row_keys[i].push_back(letter_keys(c.d.size(), L));
         rows_[i].push_back(letter_rows(c, L));
       }
     }
@@ -180,9 +231,8 @@ class Walker {
         path.push_back({std::move(vdot), 0});
         continue;
       }
-      if (Vec<Q> y = reuse(); y.size()) {
-        hold(y.size());
-        dead_.push_back({prefix, std::move(y)});
+      if (const std::optional<std::size_t> proof = reuse()) {
+        out_.dead.push_back({prefix, *proof});
         prefix.pop_back();
         continue;
       }
@@ -192,87 +242,46 @@ class Walker {
         path.push_back({Vec<Q>(kin.x.head(6)), 0});
         continue;
       }
-      remember(kin.motzkin);
-      hold(kin.motzkin.size());
-      dead_.push_back({prefix, std::move(kin.motzkin)});
+      out_.dead.push_back({prefix, remember(kin.motzkin)});
       prefix.pop_back();
     }
-    // Moved into the answer once: a growing vector would copy them (Eigen's move of a Vec<Q> is not noexcept).
-    out_.dead.reserve(dead_.size());
-    for (SpatialDeadPrefix& d : dead_) out_.dead.push_back(std::move(d));
   }
 
  private:
-  // A certificate by the rows it weighs: (contact, key, weight), in contact order.
-  struct KnownProof {
-    struct Weight {
-      std::size_t contact;
-      RowKey key;
-      Q y;
-    };
-    std::vector<Weight> support;
-  };
-
-  // The keys of the current prefix's letter at contact i.
-  const std::vector<RowKey>& keys_at(std::size_t i) const { return keys_[i][at_[i]]; }
-
-  // The first row of each letter of the current prefix in prefix_system's layout, and the row count.
-  std::vector<Index> first_rows(Index& rows) const {
-    std::vector<Index> first;
-    rows = 0;
-    for (std::size_t i = 0; i < at_.size(); ++i) {
-      first.push_back(rows);
-      rows += static_cast<Index>(keys_at(i).size());
-    }
-    return first;
+  // The keys of the current prefix's letter at contact i; and keys_at as a function (for proof_of, land).
+  const std::vector<RowKey>& keys_at(std::size_t i) const { return out_.row_keys[i][at_[i]]; }
+  auto prefix_keys() const {
+    return [this](std::size_t i) -> const std::vector<RowKey>& { return keys_at(i); };
   }
 
-  // Keeps the rows a new dead prefix's certificate weighs, under the prefix's last contact (every certificate weighs
-  // a row there: else the parent would be dead).
-  void remember(const Vec<Q>& y) {
-    Index rows = 0;
-    const std::vector<Index> first = first_rows(rows);
-    KnownProof known;
-    for (std::size_t i = 0; i < at_.size(); ++i) {
-      const std::vector<RowKey>& keys = keys_at(i);
-      for (std::size_t r = 0; r < keys.size(); ++r)
-        if (const Q& w = y(first[i] + static_cast<Index>(r)); sgn(w) != 0) known.support.push_back({i, keys[r], w});
-    }
-    if (!known.support.empty()) known_[known.support.back().contact].push_back(std::move(known));
+  // Keeps the rows a new dead prefix's certificate weighs as a proof, listed under the prefix's last contact (every
+  // certificate weighs a row there: else the parent would be dead); returns its index.
+  std::size_t remember(const Vec<Q>& y) {
+    SpatialProof known = proof_of(at_.size(), prefix_keys(), y);
+    if (!known.support.empty()) known_[known.support.back().contact].push_back(out_.proofs.size());
+    out_.proofs.push_back(std::move(known));
+    return out_.proofs.size() - 1;
   }
 
-  // A certificate for the current prefix moved from a known one, or empty. Each weighed row moves to the prefix's row
-  // of the same functional at its contact (the same direction, or the reversed d_b - d_a with the weight negated),
-  // so sum y_r f_r = 0 still holds; it is a Motzkin certificate again (checker's motzkin_holds: y_r <= 0 on strict
-  // rows, some strict y_r < 0, any sign on equalities) if every row it lands on as strict weighs <= 0 and one < 0.
-  Vec<Q> reuse() const {
-    std::vector<std::pair<Index, bool>> at;  // per weighed row: its index in the letter's rows, reversed
-    for (const KnownProof& known : known_[at_.size() - 1]) {
-      at.clear();
-      bool strict_negative = false;
-      for (const auto& w : known.support) {
-        const std::vector<RowKey>& ks = keys_at(w.contact);
-        const auto found = find_key(ks, w.key);
-        if (!found) break;
-        const auto [r, reversed] = *found;
-        if (ks[r].strict) {
-          const int s = reversed ? -sgn(w.y) : sgn(w.y);
-          if (s > 0) break;
-          strict_negative = true;
-        }
-        at.push_back({static_cast<Index>(r), reversed});
+  // A known proof that the current prefix is dead, or nullopt. Each weighed row moves to the prefix's row of the same
+  // functional at its contact (the same direction, or the reversed d_b - d_a with the weight negated), so
+  // sum y_r f_r = 0 still holds; it is a Motzkin certificate again (checker's motzkin_holds: y_r <= 0 on strict rows,
+  // some strict y_r < 0, any sign on equalities) if every row it lands on as strict weighs <= 0 and one < 0.
+  std::optional<std::size_t> reuse() {
+    for (const std::size_t p : known_[at_.size() - 1]) {
+      const SpatialProof& known = out_.proofs[p];
+      if (!land(known, prefix_keys(), landed_)) continue;
+      bool strict_negative = false, signs = true;
+      for (std::size_t r = 0; r < landed_.size() && signs; ++r) {
+        const SpatialProof::Weight& w = known.support[r];
+        if (!keys_at(w.contact)[landed_[r].first].strict) continue;
+        const int s = landed_[r].second ? -sgn(w.y) : sgn(w.y);
+        signs = s <= 0;
+        strict_negative = strict_negative || s < 0;
       }
-      if (at.size() != known.support.size() || !strict_negative) continue;
-      Index rows = 0;
-      const std::vector<Index> first = first_rows(rows);
-      Vec<Q> y = Vec<Q>::Zero(rows);
-      for (std::size_t r = 0; r < at.size(); ++r) {
-        const auto& w = known.support[r];
-        y(first[w.contact] + at[r].first) = at[r].second ? Q(-w.y) : w.y;
-      }
-      return y;
+      if (signs && strict_negative) return p;
     }
-    return Vec<Q>();
+    return std::nullopt;
   }
 
   void count_node() {
@@ -285,15 +294,6 @@ class Walker {
           covered());
   }
 
-  // Counts the entries of a dead prefix's certificate against options.max_held_weights.
-  void hold(Index entries) {
-    held_ += static_cast<long>(entries);
-    if (held_ > options_.max_held_weights)
-      throw exact::BudgetExceeded("spatial modes: the dead prefixes' certificates would hold more than " +
-                                      std::to_string(options_.max_held_weights) + " weights (memory)",
-                                  covered());
-  }
-
   std::string covered() const {
     return std::to_string(out_.nodes - 1) + " prefixes visited, " + std::to_string(out_.modes.size()) +
            " feasible modes found";
@@ -303,12 +303,10 @@ class Walker {
   const SpatialModeOptions& options_;
   SpatialModeTree& out_;
   std::vector<std::string> alphabets_;                   ///< per contact
-  std::vector<std::vector<KnownProof>> known_;           ///< by the last contact of their support
-  std::vector<std::vector<std::vector<RowKey>>> keys_;   ///< per contact and letter
+  std::vector<std::vector<std::size_t>> known_;          ///< out.proofs by the last contact of their support
   std::vector<std::vector<std::vector<SignRow>>> rows_;  ///< per contact and letter
   std::vector<std::size_t> at_;                          ///< the current prefix's letters as indices
-  std::deque<SpatialDeadPrefix> dead_;                   ///< the dead prefixes so far, in walk order
-  long held_ = 0;                                        ///< entries of the dead prefixes' certificates so far
+  std::vector<std::pair<std::size_t, bool>> landed_;     ///< reuse's scratch: where a proof's weights land
 };
 
 }  // namespace
@@ -319,27 +317,25 @@ SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOption
   return out;
 }
 
+Vec<Q> dead_motzkin(const SpatialModeTree& tree, const SpatialDeadPrefix& dead) {
+  Vec<Q> y = Vec<Q>::Zero(row_count(dead.prefix.size(), dead_keys(tree, dead)));
+  move_proof(tree.proofs[dead.proof], dead_keys(tree, dead), [&](Index row, Q w) { y(row) = std::move(w); });
+  return y;
+}
+
 Vec<Q> move_rows(const SpatialModel& model, const std::string& from, const Vec<Q>& y, const std::string& to) {
   std::vector<std::vector<RowKey>> from_keys, to_keys;
-  Index from_rows = 0, to_rows = 0;
   for (std::size_t i = 0; i < from.size(); ++i) {
     from_keys.push_back(letter_keys(model.contacts[i].d.size(), from[i]));
     to_keys.push_back(letter_keys(model.contacts[i].d.size(), to[i]));
-    from_rows += static_cast<Index>(from_keys[i].size());
-    to_rows += static_cast<Index>(to_keys[i].size());
   }
-  Vec<Q> out = Vec<Q>::Zero(to_rows + y.size() - from_rows);
-  out.tail(y.size() - from_rows) = y.tail(y.size() - from_rows);
-  for (Index i = 0, at = 0, to_at = 0; i < static_cast<Index>(from.size()); ++i) {
-    const std::size_t c = static_cast<std::size_t>(i);
-    for (std::size_t r = 0; r < from_keys[c].size(); ++r, ++at) {
-      if (sgn(y(at)) == 0) continue;
-      const auto found = find_key(to_keys[c], from_keys[c][r]);
-      if (!found) return Vec<Q>();
-      out(to_at + static_cast<Index>(found->first)) = found->second ? Q(-y(at)) : y(at);
-    }
-    to_at += static_cast<Index>(to_keys[c].size());
-  }
+  auto from_at = [&](std::size_t c) -> const std::vector<RowKey>& { return from_keys[c]; };
+  auto to_at = [&](std::size_t c) -> const std::vector<RowKey>& { return to_keys[c]; };
+  const Index from_rows = row_count(from.size(), from_at), tail = y.size() - from_rows;
+  Vec<Q> out = Vec<Q>::Zero(row_count(to.size(), to_at) + tail);
+  out.tail(tail) = y.tail(tail);  // the trailing rows copied
+  if (!move_proof(proof_of(from.size(), from_at, y), to_at, [&](Index row, Q w) { out(row) = std::move(w); }))
+    return Vec<Q>();
   return out;
 }
 
@@ -355,10 +351,23 @@ std::string spatial_modes_certificate(const std::string& scene_text, const Spati
     out += (i ? ",\n  " : "\n  ") + nlohmann::ordered_json{{"mode", tree.modes[i]}, {"acceleration", a}}.dump();
   }
   out += tree.modes.empty() ? "],\n \"dead\": [" : "\n ],\n \"dead\": [";
+  std::vector<std::pair<Index, Q>> moved;  // a dead prefix's weighed rows, sorted by row
+  std::vector<std::size_t> rows;
+  std::vector<Q> weights;
   for (std::size_t i = 0; i < tree.dead.size(); ++i) {
     const SpatialDeadPrefix& d = tree.dead[i];
+    moved.clear();
+    move_proof(tree.proofs[d.proof], dead_keys(tree, d),
+               [&](Index row, Q w) { moved.emplace_back(row, std::move(w)); });
+    std::sort(moved.begin(), moved.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    rows.clear();
+    weights.clear();
+    for (auto& [row, w] : moved) {
+      rows.push_back(static_cast<std::size_t>(row));
+      weights.push_back(std::move(w));
+    }
     out += (i ? ",\n  " : "\n  ") +
-           nlohmann::ordered_json{{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(d.motzkin)}}.dump();
+           nlohmann::ordered_json{{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(rows, weights)}}.dump();
   }
   out += tree.dead.empty() ? "]\n}\n" : "\n ]\n}\n";
   return out;

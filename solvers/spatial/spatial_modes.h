@@ -63,32 +63,55 @@ std::vector<SignRow> letter_rows(const SpatialModel::Contact& c, char L);
 
 struct SpatialModeOptions {
   exact::Arith arith = exact::Arith::kVerified;
-  long max_nodes = 1L << 22;   ///< prefixes visited at most; beyond: BudgetExceeded
+  long max_nodes = 1L << 22;   ///< prefixes visited at most; beyond: BudgetExceeded (it bounds the dead ones held)
   long max_modes = 100000;     ///< modes listed at most; beyond: BudgetExceeded
   exact::Deadline deadline{};  ///< tested at every node
-  /// Entries (zeros included: one per row of its prefix) of the dead prefixes' Motzkin vectors held at most, their
-  /// memory (~60 bytes each); beyond: BudgetExceeded. A prefix that takes a known certificate needs no LP, so the list
-  /// can grow fast; a box on a plane with 32 contacts holds ~4 10^7 (2.4 GB).
-  long max_held_weights = 1L << 26;
 };
 
-/// A prefix whose rows have no solution, with the Motzkin certificate of its LP (columns vdot (6, free), then one
-/// slack sigma > 0 per strict row; rows f . vdot - sigma = 0, or f . vdot = 0, letter by letter in the header's order).
+/// A row of a letter by its functional at its contact: the direction u is n (a = -1, b = 0), t1 (-1, 1), t2 (-1, 2)
+/// or the edge difference d_a - d_b; the row is w_u . vdot = 0, or > 0 if strict.
+struct SpatialRowKey {
+  int a = -1, b = 0;
+  bool strict = false;
+};
+
+/// A Motzkin certificate by the rows it weighs: per weighed row its contact, its key and its weight, in contact order
+/// (its last contact is the last of the prefix it was found for). It proves dead every prefix whose letters have
+/// rows of these functionals at these contacts, signs permitting (the walk's reuse; dead_motzkin moves it there).
+struct SpatialProof {
+  struct Weight {
+    std::size_t contact;
+    SpatialRowKey key;
+    Q y;
+  };
+  std::vector<Weight> support;
+};
+
+/// A prefix whose rows have no solution. Its Motzkin certificate (columns vdot (6, free), then one slack sigma > 0
+/// per strict row; rows f . vdot - sigma = 0, or f . vdot = 0, letter by letter in the header's order) is the tree's
+/// proof `proof` moved onto its rows (dead_motzkin): most dead prefixes take an earlier prefix's proof, which weighs
+/// 2 to 4 of their ~3 k rows, so the prefix holds its index, not a vector (k = 32: 720 000 of them).
 struct SpatialDeadPrefix {
   std::string prefix;
-  Vec<Q> motzkin;
+  std::size_t proof = 0;  ///< index in SpatialModeTree::proofs
 };
 
 struct SpatialModeTree {
   std::vector<std::string> modes;     ///< depth first, letters in alphabet order
   std::vector<Vec<Q>> accelerations;  ///< per mode: a vdot (6) that realises it
   std::vector<SpatialDeadPrefix> dead;
+  std::vector<SpatialProof> proofs;  ///< the dead prefixes' certificates: one per LP that found a prefix dead
+  /// Per contact and letter (letters' order): the keys of the letter's rows, what dead_motzkin moves a proof by.
+  std::vector<std::vector<std::vector<SpatialRowKey>>> row_keys;
   long nodes = 0;  ///< prefixes visited, the empty one included
   long lps = 0;    ///< strict-feasibility LPs solved
 };
 
 /// The walk. Throws exact::BudgetExceeded (with what was covered) past a budget or the deadline.
 SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOptions& options = {});
+
+/// The Motzkin vector of a dead prefix of `tree` over its rows (SpatialDeadPrefix's layout): its proof moved there.
+Vec<Q> dead_motzkin(const SpatialModeTree& tree, const SpatialDeadPrefix& dead);
 
 /// Whether vdot meets every row of the letters of `prefix` (a mode or a prefix of one).
 bool realises(const SpatialModel& model, const std::string& prefix, const Vec<Q>& vdot);

@@ -158,7 +158,10 @@ SpatialStability spatial_stability(const geometry::SpatialScene& scene, const Ve
   out.dead_prefixes = static_cast<long>(tree.dead.size());
   if (out.has_resting) out.proofs.reserve(tree.dead.size() + tree.modes.size());  // no copies on growth
   if (out.has_resting)
-    for (SpatialDeadPrefix& d : tree.dead) out.proofs.push_back({std::move(d.prefix), true, std::move(d.motzkin)});
+    for (SpatialDeadPrefix& d : tree.dead) {
+      Vec<Q> y = dead_motzkin(tree, d);
+      out.proofs.push_back({std::move(d.prefix), true, std::move(y)});
+    }
   // Every feasible moving mode but f..f in tree order until one admits g; f..f last, only without a resting
   // solution (then its solutions have vdot != 0).
   std::vector<std::string> moving;

@@ -20,6 +20,10 @@ nlohmann::ordered_json sparse_motzkin_json(const Vec<Q>& y) {
       rows.push_back(static_cast<std::size_t>(r));
       values.push_back(y(r));
     }
+  return sparse_motzkin_json(rows, values);
+}
+
+nlohmann::ordered_json sparse_motzkin_json(const std::vector<std::size_t>& rows, const std::vector<Q>& values) {
   const std::vector<Z> w = exact::primitive(values);
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < w.size(); ++i) out.push_back({rows[i], w[i].get_str()});

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "exact/number.h"
 
@@ -16,5 +17,8 @@ namespace contactcert::solvers {
 
 /// The weighted rows of y, scaled to primitive integers, as [[row, "weight"], ...] (rows ascending).
 nlohmann::ordered_json sparse_motzkin_json(const exact::Vec<exact::Q>& y);
+
+/// The same for a vector given by its non-zero entries: rows ascending and their weights.
+nlohmann::ordered_json sparse_motzkin_json(const std::vector<std::size_t>& rows, const std::vector<exact::Q>& weights);
 
 }  // namespace contactcert::solvers

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -76,17 +77,32 @@ TEST(SpatialModes, BoxOnPlaneHasTheHandCountedModes) {
 // a_z = alpha = 0 and a_x = 0: the box slides along the wall's y axis or sticks, 3 modes. Sliding along +y puts the
 // friction on the edge along -y: the floor's edge 3 (G), the octagon's edge 4 stated in the frame (y, z) (I), the
 // default square's edge 2 in the frame (y, z) of the normal x (E); along -y the edges along +y (C, A, A).
-// The budgets: the dead prefixes' certificates held (the box on a plane holds 2442 vectors of 1 to 12 entries) and
-// the nodes stop the walk with what it covered.
+// The nodes budget stops the walk with what it covered.
 TEST(SpatialModes, BudgetsStopTheWalk) {
   const SpatialModel model = spatial_model(parse(read("spatial_box_on_plane")));
-  SpatialModeOptions held;
-  held.max_held_weights = 100;
-  EXPECT_THROW(spatial_modes(model, held), exact::BudgetExceeded);
   SpatialModeOptions nodes;
   nodes.max_nodes = 50;
   EXPECT_THROW(spatial_modes(model, nodes), exact::BudgetExceeded);
   EXPECT_EQ(spatial_modes(model).modes.size(), 340u);  // the default budgets hold it
+}
+
+// A dead prefix holds the index of its proof, which most share: the box on a plane's 2442 dead prefixes take 73
+// proofs (one per LP, of 440, that found a prefix dead; one proof serves 829), and each one's vector weighs exactly
+// its proof's rows.
+TEST(SpatialModes, DeadPrefixesShareTheirProofs) {
+  const SpatialModeTree t = spatial_modes(spatial_model(parse(read("spatial_box_on_plane"))));
+  EXPECT_EQ(t.dead.size(), 2442u);
+  EXPECT_EQ(t.proofs.size(), 73u);
+  EXPECT_EQ(t.lps, 440);
+  std::vector<long> takers(t.proofs.size(), 0);
+  for (const SpatialDeadPrefix& d : t.dead) {
+    ASSERT_LT(d.proof, t.proofs.size());
+    ++takers[d.proof];
+    const Vec<Q> y = dead_motzkin(t, d);
+    EXPECT_EQ(static_cast<std::size_t>((y.array() != Q(0)).count()), t.proofs[d.proof].support.size()) << d.prefix;
+  }
+  EXPECT_EQ(*std::max_element(takers.begin(), takers.end()), 829);
+  EXPECT_EQ(std::count(takers.begin(), takers.end(), 0), 0);  // every proof proves its own LP's prefix
 }
 
 TEST(SpatialModes, BoxInCornerSlidesAlongTheWallOnly) {
