@@ -66,6 +66,14 @@ StrictFeasibility<T> read_strict(const LpResult<T>& r, Index m, Index n, const s
     out.motzkin = r.farkas.head(m);
     return out;
   }
+  if constexpr (!std::is_same_v<T, Q>) {
+    // t <= 1 bounds the LP, so only roundoff ends a float simplex "unbounded" (rows nearly dependent): it has
+    // neither a point nor duals; the float path reads that as infeasible, with no certificate (a zero vector).
+    if (r.status != LpStatus::kOptimal) {
+      out.motzkin = Vec<T>::Zero(m);
+      return out;
+    }
+  }
   // Optimal (t <= 1 bounds the LP).
   if (S.empty() || is_positive(T(-r.value))) {
     out.status = StrictStatus::kFeasible;
@@ -203,10 +211,9 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, LpProble
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
   try {
     LpResult<double> r = solve_lp<double>(lp);  // the duals only where read_strict reads them (t* = 0): a dense solve
-    // t <= 1 bounds the LP, but the float simplex can end "unbounded" on rows that are nearly dependent (a normal
-    // tilted by 1e-9): without t > 0 it has neither a point nor duals to read, so the verified LP decides.
-    if (r.status == LpStatus::kUnbounded && !S.empty() && !is_positive(-r.value)) return std::nullopt;
     if (r.status == LpStatus::kOptimal && !S.empty() && !is_positive(-r.value)) r.duals = optimal_duals(lp, r.basis);
+    // A float LP ended "unbounded" (a normal tilted by 1e-9) reads as infeasible with a zero vector, which
+    // check_rounded refuses: the verified LP decides.
     const StrictFeasibility<double> f = read_strict(r, m, n, S);
     *float_feasible = f.status == StrictStatus::kFeasible;
     if (float_point && *float_feasible) *float_point = f.x / d.get_d();  // A_int x = d (L o b): x / d solves A x = b
