@@ -22,6 +22,7 @@
 #include "runtime/memory.h"
 #include "solvers/spatial/spatial_modes.h"
 #include "solvers/spatial/spatial_stability.h"
+#include "solvers/spatial/spatial_stability_certificate.h"
 
 namespace {
 
@@ -109,7 +110,7 @@ void BM_SpatialStability(benchmark::State& state) {
   std::string certificate;
   for (auto _ : state) {
     r = solvers::spatial::spatial_stability(scene, g);
-    certificate = solvers::spatial::spatial_stability_certificate(text, g, r);
+    certificate = solvers::spatial::spatial_stability_certificate(scene, text, g, r);
     benchmark::DoNotOptimize(certificate.size());
   }
   double check_ms = 0;

@@ -34,15 +34,47 @@ std::string alphabet(std::size_t m);
 /// The row u . (a + alpha x r) on vdot's six columns, by its non-zero entries in column order.
 std::vector<table2_check::Rows::Entry> along(const Seen& c, const geometry::Vec3& u);
 
+/// A row of a letter: u . A vdot = 0, or > 0 if strict.
+struct LetterRow {
+  geometry::Vec3 u;
+  bool strict = false;
+};
+
+/// The rows of letter L at contact c in the certificates' order (the solver's table, spatial_modes.h); empty if L is
+/// not one of its letters.
+std::vector<LetterRow> letter_rows(const Seen& c, char L);
+
 /// The rows of a prefix in the certificates' layout: per letter its directions u (rows u . A vdot) and which of them
 /// are strict (one slack sigma > 0 each, after vdot's six columns).
 table2_check::Rows prefix_rows(const std::vector<Seen>& cs, const std::string& prefix);
 
+/// Every letter's rows at every contact, built once per scene, each with the class of its direction: the rows of a
+/// contact whose directions are equal or opposite share a class (one functional up to sign), so a weight on a class
+/// moves onto the row of that class of any letter there (spatial_stability_check.h's reused Motzkin vectors).
+class RowBlocks {
+ public:
+  /// A row by its class: u = sign * the class's direction.
+  struct Row {
+    std::size_t cls;
+    int sign;
+    bool strict;
+  };
+  explicit RowBlocks(const std::vector<Seen>& cs);
+  /// The rows of letter L at contact i (nullptr if L is not one of its letters).
+  const std::vector<Row>* rows(std::size_t i, char L) const;
+  /// The direction of class `cls` at contact i.
+  const geometry::Vec3& direction(std::size_t i, std::size_t cls) const { return classes_[i][cls]; }
+
+ private:
+  std::vector<std::vector<std::vector<Row>>> rows_;   ///< per contact and letter (s, f, 'A', 'B', ...)
+  std::vector<std::vector<geometry::Vec3>> classes_;  ///< per contact
+};
+
 /// Whether vdot = (a, alpha) realises the letters, read directly from the contact point's acceleration.
 bool realises(const std::vector<Seen>& cs, const std::string& mode, const exact::Vec<exact::Q>& vdot);
 
-/// A mode (`whole`: one letter per contact) or a prefix (1 to k letters) over the contacts' alphabets; InputError
-/// naming the field otherwise.
-std::string read_letters(const exact::JsonInput& j, const std::vector<Seen>& cs, bool whole);
+/// A mode (`whole`: one letter per contact) or a prefix (1 to k letters; 0 to k - 1 with `parent`) over the
+/// contacts' alphabets; InputError naming the field otherwise.
+std::string read_letters(const exact::JsonInput& j, const std::vector<Seen>& cs, bool whole, bool parent = false);
 
 }  // namespace contactcert::checker::spatial_check

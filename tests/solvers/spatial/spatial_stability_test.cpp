@@ -9,6 +9,7 @@
 #include "checker/spatial_stability_check.h"
 #include "geometry/scene_json.h"
 #include "runtime/scenes.h"
+#include "solvers/spatial/spatial_stability_certificate.h"
 #include "tests/solvers/spatial/extruded_scene.h"
 
 namespace contactcert::solvers::spatial {
@@ -32,7 +33,7 @@ SpatialStability on_box(const Vec<Q>& g) {
   const SpatialScene s = geometry::read_spatial_scene(exact::JsonInput::parse(text, "box"));
   SpatialStability r = spatial_stability(s, g);
   const auto check = checker::check_spatial_stability_certificate(
-      exact::JsonInput::parse(spatial_stability_certificate(text, g, r), "certificate.json"));
+      exact::JsonInput::parse(spatial_stability_certificate(s, text, g, r), "certificate.json"));
   EXPECT_TRUE(check.valid) << check.reason;
   return r;
 }
