@@ -117,7 +117,7 @@ void BM_SpatialStability(benchmark::State& state) {
   if (certificate.size() <= exact::kMaxInputBytes) {
     const std::clock_t start = std::clock();
     const auto check =
-        checker::check_spatial_stability_certificate(exact::JsonInput::parse(certificate, "certificate.json"));
+        checker::check_spatial_stability_certificate(checker::CertificateLines(certificate, "certificate.json"));
     check_ms = 1000.0 * static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     if (!check.valid) state.SkipWithError(("certificate refused: " + check.reason).c_str());
   }

@@ -1,6 +1,7 @@
 #include "checker/spatial_rows.h"
 
 #include <algorithm>
+#include <array>
 
 namespace contactcert::checker::spatial_check {
 
@@ -69,24 +70,9 @@ std::vector<LetterRow> letter_rows(const Seen& c, char L) {
   return {{c.n, false}, {next, false}, {prev, true}, {minus(c.d[(j + 2) % m], c.d[(j + 1) % m]), true}};
 }
 
-/// The rows of a prefix in the certificate's layout: per letter its directions u (rows u . A vdot) and which of them
-/// are strict (one slack sigma > 0 each, after vdot's six columns).
-Rows prefix_rows(const std::vector<Seen>& cs, const std::string& prefix) {
-  Rows R;
-  R.columns.assign(6, Rows::Sign::kFree);
-  for (std::size_t i = 0; i < prefix.size(); ++i)
-    for (const LetterRow& row : letter_rows(cs[i], prefix[i])) {
-      R.rows.push_back(along(cs[i], row.u));
-      if (!row.strict) continue;
-      R.rows.back().push_back({R.columns.size(), Q(-1)});
-      R.columns.push_back(Rows::Sign::kPositive);
-    }
-  return R;
-}
-
 RowBlocks::RowBlocks(const std::vector<Seen>& cs) {
   for (const Seen& c : cs) {
-    std::vector<Vec3>& classes = classes_.emplace_back();
+    std::vector<Vec3> classes;
     std::vector<std::vector<Row>>& letters = rows_.emplace_back();
     for (const char L : alphabet(c.d.size())) {
       std::vector<Row>& rows = letters.emplace_back();
@@ -98,7 +84,50 @@ RowBlocks::RowBlocks(const std::vector<Seen>& cs) {
         rows.push_back({k, classes[k] == row.u ? 1 : -1, row.strict});
       }
     }
+    std::vector<std::vector<Rows::Entry>>& functionals = functionals_.emplace_back();
+    for (const Vec3& u : classes) functionals.push_back(along(c, u));
   }
+  exact::Z D = 1;
+  for (const auto& contact : functionals_)
+    for (const auto& f : contact)
+      for (const Rows::Entry& e : f) D = lcm(D, e.value.get_den());
+  for (const auto& contact : functionals_) {
+    auto& integers = integer_functionals_.emplace_back();
+    for (const auto& f : contact) {
+      auto& row = integers.emplace_back();
+      for (const Rows::Entry& e : f) row.emplace_back(e.col, e.value.get_num() * (D / e.value.get_den()));
+    }
+  }
+}
+
+std::size_t RowBlocks::row_count(const std::string& prefix) const {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < prefix.size(); ++i) n += rows(i, prefix[i])->size();
+  return n;
+}
+
+bool prefix_motzkin_holds(const RowBlocks& blocks, const std::string& prefix,
+                          const std::vector<std::pair<std::size_t, Q>>& y) {
+  std::array<exact::Z, 6> sum{};  // sum y_r (D f_r): the weights are integers (read_sparse_motzkin_pairs)
+  bool strict_negative = false;
+  auto w = y.begin();
+  for (std::size_t i = 0, first = 0; i < prefix.size() && w != y.end(); ++i) {
+    const std::vector<RowBlocks::Row>& rows = *blocks.rows(i, prefix[i]);
+    for (; w != y.end() && w->first < first + rows.size(); ++w) {
+      const RowBlocks::Row& row = rows[w->first - first];
+      const int s = sgn(w->second);  // y_r on row r = sign * its class's functional
+      if (row.strict && s > 0) return false;
+      strict_negative = strict_negative || (row.strict && s < 0);
+      for (const auto& [col, v] : blocks.integer_functional(i, row.cls))
+        if (row.sign > 0)
+          sum[col] += w->second.get_num() * v;
+        else
+          sum[col] -= w->second.get_num() * v;
+    }
+    first += rows.size();
+  }
+  if (w != y.end()) return false;  // a row past the prefix's
+  return strict_negative && std::all_of(sum.begin(), sum.end(), [](const exact::Z& x) { return sgn(x) == 0; });
 }
 
 const std::vector<RowBlocks::Row>* RowBlocks::rows(std::size_t i, char L) const {

@@ -99,8 +99,11 @@ struct Vector {
   std::vector<std::vector<int>> beta_signs;  ///< per contact and edge
 };
 
-Vector read_vector(const exact::JsonInput& e, const geometry::SpatialBody& body, const std::vector<Seen>& cs,
-                   const RowBlocks& blocks, const Vec<Q>& g) {
+/// The weight columns' rows (u, r x u), u = n + d_j, per contact and edge: built once per scene.
+using EdgeRows = std::vector<std::vector<std::vector<Rows::Entry>>>;
+
+Vector read_vector(const exact::JsonInput& e, const geometry::SpatialBody& body, const RowBlocks& blocks,
+                   const EdgeRows& edges, const Vec<Q>& g) {
   e.expect_keys({"rows", "motzkin"});
   const exact::JsonInput rows = e.at("rows");
   const std::size_t n = rows.size();
@@ -110,7 +113,7 @@ Vector read_vector(const exact::JsonInput& e, const geometry::SpatialBody& body,
   for (std::size_t r = 0; r < n; ++r) {
     const exact::JsonInput row = rows.at(r);
     if (!row.is_array() || row.size() != 3) row.fail("a row [contact, letter, row of the letter]");
-    const auto i = static_cast<std::size_t>(row.at(0).integer(0, static_cast<long>(cs.size()) - 1));
+    const auto i = static_cast<std::size_t>(row.at(0).integer(0, static_cast<long>(edges.size()) - 1));
     const std::string L = row.at(1).string();
     const auto* letter = L.size() == 1 ? blocks.rows(i, L[0]) : nullptr;
     if (letter == nullptr) row.at(1).fail("a letter of contact " + std::to_string(i) + ": s, f or A..");
@@ -119,9 +122,9 @@ Vector read_vector(const exact::JsonInput& e, const geometry::SpatialBody& body,
     const Q& w = y(static_cast<Eigen::Index>(r));
     if (sgn(w) == 0) row.fail("a row the vector weighs (its motzkin lists every row)");
     for (const Vector::Weight& x : v.weights)
-      if (x.contact == i && x.cls == at.cls) row.fail("a row of another functional: the vector weighs this one twice");
+      if (x.contact == i && x.cls == at.cls) row.fail("each functional weighed once: this row's is weighed twice");
     v.weights.push_back({i, at.cls, at.sign > 0 ? w : Q(-w)});
-    for (const Rows::Entry& f : along(cs[i], blocks.direction(i, at.cls)))
+    for (const Rows::Entry& f : blocks.functional(i, at.cls))
       balance(static_cast<Eigen::Index>(f.col)) += v.weights.back().w * f.value;
   }
   const Vec<Q> z = y.tail(6);
@@ -131,12 +134,11 @@ Vector read_vector(const exact::JsonInput& e, const geometry::SpatialBody& body,
       balance(static_cast<Eigen::Index>(f.col)) += z(static_cast<Eigen::Index>(d)) * f.value;
   v.balanced = balance.isZero();
   v.zg = sgn(z.dot(g));
-  for (std::size_t i = 0; i < cs.size(); ++i) {
-    std::vector<int>& signs = v.beta_signs.emplace_back(cs[i].d.size(), 0);
+  for (const std::vector<std::vector<Rows::Entry>>& contact : edges) {
+    std::vector<int>& signs = v.beta_signs.emplace_back(contact.size(), 0);
     for (std::size_t j = 0; j < signs.size() && v.dynamics; ++j) {
       Q dot(0);
-      for (const Rows::Entry& f : along(cs[i], edge_force(cs[i], j)))
-        dot -= z(static_cast<Eigen::Index>(f.col)) * f.value;
+      for (const Rows::Entry& f : contact[j]) dot -= z(static_cast<Eigen::Index>(f.col)) * f.value;
       signs[j] = sgn(dot);
     }
   }
@@ -173,11 +175,17 @@ bool proves(const Vector& v, const RowBlocks& blocks, const std::vector<Seen>& c
 /// Why the proofs of a strongly stable verdict do not cover every moving mode (empty if they do): each vector read
 /// and verified once (read_vector), each dead prefix (a parent and one of its letters) and each moving mode proven by
 /// the vector it names (proves), and together with f..f they partition the mode strings (mode_coverage).
-std::string proofs_fault(const exact::JsonInput& c, const geometry::SpatialBody& body, const std::vector<Seen>& cs,
+std::string proofs_fault(const CertificateLines& c, const geometry::SpatialBody& body, const std::vector<Seen>& cs,
                          const Vec<Q>& g) {
   const RowBlocks blocks(cs);
+  EdgeRows edges;
+  for (const Seen& s : cs) {
+    edges.emplace_back();
+    for (std::size_t j = 0; j < s.d.size(); ++j) edges.back().push_back(along(s, edge_force(s, j)));
+  }
   std::vector<Vector> vectors;
-  for (const exact::JsonInput& e : c.at("vectors").elements()) vectors.push_back(read_vector(e, body, cs, blocks, g));
+  for (std::size_t i = 0; i < c.size("vectors"); ++i)
+    vectors.push_back(read_vector(c.element("vectors", i), body, blocks, edges, g));
   auto vector = [&](const exact::JsonInput& id) -> const Vector& {
     if (vectors.empty()) id.fail("an index of \"vectors\", which lists none");
     return vectors[static_cast<std::size_t>(id.integer(0, static_cast<long>(vectors.size()) - 1))];
@@ -185,7 +193,8 @@ std::string proofs_fault(const exact::JsonInput& c, const geometry::SpatialBody&
   const std::size_t k = cs.size();
   const std::string sticking(k, 'f');
   std::vector<std::string> dead, leaves{sticking};
-  for (const exact::JsonInput& e : c.at("dead").elements()) {
+  for (std::size_t at = 0; at < c.size("dead"); ++at) {
+    const exact::JsonInput e = c.element("dead", at);
     e.expect_keys({"parent", "letters", "vectors"});
     const std::string parent = read_letters(e.at("parent"), cs, false, true);
     const std::string letters = e.at("letters").string();
@@ -201,7 +210,8 @@ std::string proofs_fault(const exact::JsonInput& c, const geometry::SpatialBody&
       dead.push_back(std::move(prefix));
     }
   }
-  for (const exact::JsonInput& e : c.at("modes").elements()) {
+  for (std::size_t at = 0; at < c.size("modes"); ++at) {
+    const exact::JsonInput e = c.element("modes", at);
     e.expect_keys({"mode", "vector"});
     std::string mode = read_letters(e.at("mode"), cs, true);
     if (mode == sticking) return "a proof for f..f is not evidence beside a resting solution";
@@ -227,9 +237,10 @@ StabilityVerdict read_verdict(const exact::JsonInput& v) {
 
 }  // namespace
 
-StabilityCertificateCheck check_spatial_stability_certificate(const exact::JsonInput& c) {
-  c.expect_keys(
-      {"kind", "verdict", "wrench", "scene", "problem_sha256", "resting", "moving", "vectors", "dead", "modes"});
+StabilityCertificateCheck check_spatial_stability_certificate(const CertificateLines& lines) {
+  const exact::JsonInput& c = lines.head();
+  c.expect_keys({"kind", "verdict", "wrench", "scene", "problem_sha256", "resting", "moving"});
+  lines.expect_lists({"vectors", "dead", "modes"});
   const exact::JsonInput embedded = exact::JsonInput::parse(c.at("scene").string(), c.file() + " (embedded scene)");
   const geometry::SpatialScene scene = geometry::read_spatial_scene(embedded);
   const std::vector<Seen> cs = seen(scene);
@@ -272,12 +283,11 @@ StabilityCertificateCheck check_spatial_stability_certificate(const exact::JsonI
     moves = true;
   }
   // Strongly stable: proofs covering every moving mode (f..f needs none beside a resting solution).
-  const auto vectors = c.find("vectors"), dead = c.find("dead"), modes = c.find("modes");
-  const bool proofs = (vectors && vectors->size() > 0) || (dead && dead->size() > 0) || (modes && modes->size() > 0);
+  const bool proofs = lines.size("vectors") + lines.size("dead") + lines.size("modes") > 0;
   if (proofs && (!rests || moves))
     return {false, "the proofs are extra entries: they are evidence only of a strongly stable verdict"};
   if (rests && !moves) {
-    if (std::string why = proofs_fault(c, scene.body, cs, g); !why.empty()) return {false, why};
+    if (std::string why = proofs_fault(lines, scene.body, cs, g); !why.empty()) return {false, why};
   }
   const StabilityVerdict v = !rests  ? StabilityVerdict::kUnstable
                              : moves ? StabilityVerdict::kWeaklyStable

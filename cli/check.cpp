@@ -20,12 +20,12 @@ struct CheckOptions {
 };
 
 int run_check(const CheckOptions& o) {
-  const exact::JsonInput cert = exact::JsonInput::load(o.file);
+  const std::string cert = exact::JsonInput::read_text(o.file);
   std::optional<exact::JsonInput> problem;
   if (!o.problem.empty()) problem = exact::JsonInput::load(o.problem);
   // A checker re-derives cones and LPs under the solvers' budgets: one that runs out is the command's limit.
-  const Limited<queries::CheckResult> r =
-      with_limits(o.common.query().arith, [&] { return queries::check(cert, problem ? &*problem : nullptr); });
+  const Limited<queries::CheckResult> r = with_limits(
+      o.common.query().arith, [&] { return queries::check_text(cert, o.file, problem ? &*problem : nullptr); });
   if (!r) return report_limit("check", r.limit(), o.common.json);
   const queries::CheckResult& c = *r;
   if (o.common.json) {
@@ -46,8 +46,9 @@ void register_check(CLI::App& app, Action& action) {
       "check", "Verify a certificate written by ucp, stability, modes, cone or design, independently");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Certificate file")->required();
-  sub->add_option("--problem", o->problem,
-                  "Problem, scene or assembly file the certificate must be about: INVALID if its embedded problem differs");
+  sub->add_option(
+      "--problem", o->problem,
+      "Problem, scene or assembly file the certificate must be about: INVALID if its embedded problem differs");
   sub->callback([o, &action] {
     // The checkers re-derive everything in rationals: a float check would be ignored, so it is refused.
     if (o->common.arith == "float")

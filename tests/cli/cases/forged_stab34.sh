@@ -35,12 +35,35 @@ farkas slide m = c["resting"]["motzkin"]; m[0][1] = str(-int(m[0][1]))
 scene slide c["scene"] = c["scene"].replace('"mu": "1/2"', '"mu": "1/3"')
 extra slide c["dead"] = [{"parent": "", "letters": "s", "vectors": [0]}]
 """
+def dump(c, path):
+    """c in the certificate's line layout (docs/formats.md section 5c): a member a line, a list's element a line."""
+    entries = []
+    for k, v in c.items():
+        if k in ("vectors", "dead", "modes"):
+            items = ["  " + json.dumps(e, separators=(",", ":")) for e in v]
+            entries.append([f' "{k}": ['] + [x + "," for x in items[:-1]] + items[-1:] + [" ]"])
+        else:
+            entries.append([f' "{k}": ' + json.dumps(v, separators=(",", ":"))])
+    lines = ["{"]
+    for i, e in enumerate(entries):
+        lines += e[:-1] + [e[-1] + ("," if i + 1 < len(entries) else "")]
+    open(path, "w").write("\n".join(lines + ["}"]) + "\n")
 for line in spec.strip().splitlines():
     name, base, statement = line.split(" ", 2)
     c = json.load(open(f"{out}/{base}.json"))
     exec(statement)
-    json.dump(c, open(f"{out}/{name}.json", "w"))
+    dump(c, f"{out}/{name}.json")
+c = json.load(open(f"{out}/rest.json"))
+json.dump(c, open(f"{out}/one_line.json", "w"))  # the same certificate in another layout
+dump(c, f"{out}/relaid.json")  # and in the line layout again, by this script: VALID
 PY
+# the line layout itself: a comma dropped, a list check does not know
+sed '0,/^  {"rows".*},$/s//&/; 0,/^\(  {"rows".*}\),$/s//\1/' "$fz/rest.json" > "$fz/comma.json"
+sed 's/^ "modes": \[$/ "proofs": [/' "$fz/rest.json" > "$fz/unknown_list.json"
+check 0 'spatial_stability certificate is VALID' check "$fz/relaid.json"
+check 2 'a spatial_stability certificate in lines, as stability writes it' check "$fz/one_line.json"
+check 2 "a ',' at the end of the line: more follows" check "$fz/comma.json"
+check 2 'a known list, found "proofs"' check "$fz/unknown_list.json"
 # each forgery and the reason check gives (exit 2)
 while IFS='|' read -r name reason; do
   check 2 "$reason" check "$fz/$name.json"
@@ -52,10 +75,10 @@ resting|the resting forces: Newton-Euler does not hold
 negative|the resting forces: a negative weight
 claim|the evidence supports strongly_stable
 sticking|a proof for f..f is not evidence
-no_vector|modes[0].vector: expected an integer from 0 to
+no_vector|$.vector: expected an integer from 0 to
 dynamics|the kinematic proof for prefix
 elsewhere|does not verify
-twice|the vector weighs this one twice
+twice|is weighed twice
 unweighted|a row the vector weighs
 letter_z|a letter of contact
 still|the moving witness does not move
