@@ -65,8 +65,7 @@ class PrefixTrie {
 
 std::optional<CoverageGap> mode_coverage(std::size_t k, const ModeAlphabet& alphabet,
                                          const std::vector<std::string>& dead, const std::vector<std::string>& leaves) {
-  return mode_coverage(
-      k, [&](std::size_t i) { return alphabet.letters(i); }, dead, leaves);
+  return mode_coverage(k, [&](std::size_t i) { return alphabet.letters(i); }, dead, leaves);
 }
 
 std::optional<CoverageGap> mode_coverage(std::size_t k, const std::function<std::string(std::size_t)>& letters,

@@ -46,9 +46,8 @@ void register_check(CLI::App& app, Action& action) {
       "check", "Verify a certificate written by ucp, stability, modes, cone or design, independently");
   add_common_options(*sub, o->common);
   sub->add_option("file", o->file, "Certificate file")->required();
-  sub->add_option(
-      "--problem", o->problem,
-      "Problem, scene or assembly file the certificate must be about: INVALID if its embedded problem differs");
+  sub->add_option("--problem", o->problem,
+                  "Problem, scene or assembly file the certificate must be about: INVALID if its embedded problem differs");
   sub->callback([o, &action] {
     // The checkers re-derive everything in rationals: a float check would be ignored, so it is refused.
     if (o->common.arith == "float")
