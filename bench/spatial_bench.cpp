@@ -22,6 +22,7 @@
 #include "runtime/memory.h"
 #include "solvers/spatial/spatial_modes.h"
 #include "solvers/spatial/spatial_stability.h"
+#include "solvers/spatial/spatial_stability_certificate.h"
 
 namespace {
 
@@ -109,14 +110,14 @@ void BM_SpatialStability(benchmark::State& state) {
   std::string certificate;
   for (auto _ : state) {
     r = solvers::spatial::spatial_stability(scene, g);
-    certificate = solvers::spatial::spatial_stability_certificate(text, g, r);
+    certificate = solvers::spatial::spatial_stability_certificate(scene, text, g, r);
     benchmark::DoNotOptimize(certificate.size());
   }
   double check_ms = 0;
   if (certificate.size() <= exact::kMaxInputBytes) {
     const std::clock_t start = std::clock();
     const auto check =
-        checker::check_spatial_stability_certificate(exact::JsonInput::parse(certificate, "certificate.json"));
+        checker::check_spatial_stability_certificate(checker::CertificateLines(certificate, "certificate.json"));
     check_ms = 1000.0 * static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     if (!check.valid) state.SkipWithError(("certificate refused: " + check.reason).c_str());
   }

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
+#include <vector>
 
 #include "exact/json_input.h"
 #include "exact/number.h"
@@ -15,5 +17,9 @@ namespace contactcert::checker {
 /// not above the one before (repeated or out of order), a weight that is zero or not an integer, and weights with a
 /// common factor (not primitive).
 exact::Vec<exact::Q> read_sparse_motzkin(const exact::JsonInput& list, std::size_t rows);
+
+/// The same list as its (row, weight) pairs, rows ascending, without a vector of `rows` entries (a deep prefix's
+/// certificate weighs a handful of its rows).
+std::vector<std::pair<std::size_t, exact::Q>> read_sparse_motzkin_pairs(const exact::JsonInput& list, std::size_t rows);
 
 }  // namespace contactcert::checker

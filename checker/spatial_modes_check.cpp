@@ -6,7 +6,6 @@
 namespace contactcert::checker {
 
 using namespace spatial_check;  // the checker's own reading of a body in space
-using table2_check::Rows;
 
 ModesCertificateCheck check_spatial_modes_certificate(const exact::JsonInput& c) {
   c.expect_keys({"kind", "scene", "problem_sha256", "modes", "dead"});
@@ -15,6 +14,7 @@ ModesCertificateCheck check_spatial_modes_certificate(const exact::JsonInput& c)
   if (c.at("problem_sha256").string() != embedded.canonical_sha256())
     return {false, "problem_sha256 is not the digest of the embedded scene", 0, 0};
   if (const std::string fault = frame_fault(cs); !fault.empty()) return {false, fault, 0, 0};
+  const RowBlocks blocks(cs);
   std::vector<std::string> leaves, dead;
   for (const exact::JsonInput& e : c.at("modes").elements()) {
     e.expect_keys({"mode", "acceleration"});
@@ -26,8 +26,7 @@ ModesCertificateCheck check_spatial_modes_certificate(const exact::JsonInput& c)
   for (const exact::JsonInput& e : c.at("dead").elements()) {
     e.expect_keys({"prefix", "motzkin"});
     std::string p = read_letters(e.at("prefix"), cs, false);
-    const Rows rows = prefix_rows(cs, p);
-    if (!table2_check::motzkin_holds(rows, read_sparse_motzkin(e.at("motzkin"), rows.rows.size())))
+    if (!prefix_motzkin_holds(blocks, p, read_sparse_motzkin_pairs(e.at("motzkin"), blocks.row_count(p))))
       return {false, "the certificate of dead prefix " + p + " does not verify", 0, 0};
     dead.push_back(std::move(p));
   }

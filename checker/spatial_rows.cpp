@@ -1,6 +1,7 @@
 #include "checker/spatial_rows.h"
 
 #include <algorithm>
+#include <array>
 
 namespace contactcert::checker::spatial_check {
 
@@ -59,38 +60,80 @@ std::vector<Rows::Entry> along(const Seen& c, const Vec3& u) {
   return e;
 }
 
-/// The rows of a prefix in the certificate's layout: per letter its directions u (rows u . A vdot) and which of them
-/// are strict (one slack sigma > 0 each, after vdot's six columns).
-Rows prefix_rows(const std::vector<Seen>& cs, const std::string& prefix) {
-  Rows R;
-  R.columns.assign(6, Rows::Sign::kFree);
-  auto add = [&](const Seen& c, const Vec3& u, bool strict) {
-    R.rows.push_back(along(c, u));
-    if (!strict) return;
-    R.rows.back().push_back({R.columns.size(), Q(-1)});
-    R.columns.push_back(Rows::Sign::kPositive);
-  };
-  for (std::size_t i = 0; i < prefix.size(); ++i) {
-    const Seen& c = cs[i];
-    const std::size_t m = c.d.size(), L = static_cast<std::size_t>(prefix[i] - 'A'), j = L / 2;
-    if (prefix[i] == 's') {
-      add(c, c.n, true);
-      continue;
+std::vector<LetterRow> letter_rows(const Seen& c, char L) {
+  const std::size_t m = c.d.size(), l = static_cast<std::size_t>(L - 'A'), j = l / 2;
+  if (L == 's') return {{c.n, true}};
+  if (L == 'f') return {{c.n, false}, {c.t1, false}, {c.t2, false}};
+  if (L < 'A' || l >= 2 * m) return {};
+  const Vec3 prev = minus(c.d[(j + m - 1) % m], c.d[j]), next = minus(c.d[(j + 1) % m], c.d[j]);
+  if (l % 2 == 0) return {{c.n, false}, {prev, true}, {next, true}};
+  return {{c.n, false}, {next, false}, {prev, true}, {minus(c.d[(j + 2) % m], c.d[(j + 1) % m]), true}};
+}
+
+RowBlocks::RowBlocks(const std::vector<Seen>& cs) {
+  for (const Seen& c : cs) {
+    std::vector<Vec3> classes;
+    std::vector<std::vector<Row>>& letters = rows_.emplace_back();
+    for (const char L : alphabet(c.d.size())) {
+      std::vector<Row>& rows = letters.emplace_back();
+      for (const LetterRow& row : letter_rows(c, L)) {
+        const Vec3 minus_u{-row.u[0], -row.u[1], -row.u[2]};
+        std::size_t k = 0;
+        while (k < classes.size() && classes[k] != row.u && classes[k] != minus_u) ++k;
+        if (k == classes.size()) classes.push_back(row.u);
+        rows.push_back({k, classes[k] == row.u ? 1 : -1, row.strict});
+      }
     }
-    add(c, c.n, false);
-    if (prefix[i] == 'f') {
-      add(c, c.t1, false);
-      add(c, c.t2, false);
-    } else if (L % 2 == 0) {
-      add(c, minus(c.d[(j + m - 1) % m], c.d[j]), true);
-      add(c, minus(c.d[(j + 1) % m], c.d[j]), true);
-    } else {
-      add(c, minus(c.d[(j + 1) % m], c.d[j]), false);
-      add(c, minus(c.d[(j + m - 1) % m], c.d[j]), true);
-      add(c, minus(c.d[(j + 2) % m], c.d[(j + 1) % m]), true);
+    std::vector<std::vector<Rows::Entry>>& functionals = functionals_.emplace_back();
+    for (const Vec3& u : classes) functionals.push_back(along(c, u));
+  }
+  exact::Z D = 1;
+  for (const auto& contact : functionals_)
+    for (const auto& f : contact)
+      for (const Rows::Entry& e : f) D = lcm(D, e.value.get_den());
+  for (const auto& contact : functionals_) {
+    auto& integers = integer_functionals_.emplace_back();
+    for (const auto& f : contact) {
+      auto& row = integers.emplace_back();
+      for (const Rows::Entry& e : f) row.emplace_back(e.col, e.value.get_num() * (D / e.value.get_den()));
     }
   }
-  return R;
+}
+
+std::size_t RowBlocks::row_count(const std::string& prefix) const {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < prefix.size(); ++i) n += rows(i, prefix[i])->size();
+  return n;
+}
+
+bool prefix_motzkin_holds(const RowBlocks& blocks, const std::string& prefix,
+                          const std::vector<std::pair<std::size_t, Q>>& y) {
+  std::array<exact::Z, 6> sum{};  // sum y_r (D f_r): the weights are integers (read_sparse_motzkin_pairs)
+  bool strict_negative = false;
+  auto w = y.begin();
+  for (std::size_t i = 0, first = 0; i < prefix.size() && w != y.end(); ++i) {
+    const std::vector<RowBlocks::Row>& rows = *blocks.rows(i, prefix[i]);
+    for (; w != y.end() && w->first < first + rows.size(); ++w) {
+      const RowBlocks::Row& row = rows[w->first - first];
+      const int s = sgn(w->second);  // y_r on row r = sign * its class's functional
+      if (row.strict && s > 0) return false;
+      strict_negative = strict_negative || (row.strict && s < 0);
+      for (const auto& [col, v] : blocks.integer_functional(i, row.cls))
+        if (row.sign > 0)
+          sum[col] += w->second.get_num() * v;
+        else
+          sum[col] -= w->second.get_num() * v;
+    }
+    first += rows.size();
+  }
+  if (w != y.end()) return false;  // a row past the prefix's
+  return strict_negative && std::all_of(sum.begin(), sum.end(), [](const exact::Z& x) { return sgn(x) == 0; });
+}
+
+const std::vector<RowBlocks::Row>* RowBlocks::rows(std::size_t i, char L) const {
+  if (L != 's' && L != 'f' && L < 'A') return nullptr;
+  const std::size_t at = L == 's' ? 0 : L == 'f' ? 1 : static_cast<std::size_t>(L - 'A') + 2;  // alphabet's order
+  return at < rows_[i].size() ? &rows_[i][at] : nullptr;
 }
 
 /// Whether vdot = (a, alpha) realises the letters, read directly from the contact point's acceleration.
@@ -119,13 +162,18 @@ bool realises(const std::vector<Seen>& cs, const std::string& mode, const Vec<Q>
   return true;
 }
 
-std::string read_letters(const exact::JsonInput& j, const std::vector<Seen>& cs, bool whole) {
+std::string read_letters(const exact::JsonInput& j, const std::vector<Seen>& cs, bool whole, bool parent) {
   const std::string text = j.string();
-  bool ok = whole ? text.size() == cs.size() : !text.empty() && text.size() <= cs.size();
+  bool ok = whole    ? text.size() == cs.size()
+            : parent ? text.size() < cs.size()
+                     : !text.empty() && text.size() <= cs.size();
   for (std::size_t i = 0; ok && i < text.size(); ++i) ok = alphabet(cs[i].d.size()).find(text[i]) != std::string::npos;
   if (!ok)
-    j.fail(std::string(whole ? "a mode: one letter per contact (" : "a prefix: 1 to ") + std::to_string(cs.size()) +
-           (whole ? ")" : " letters") + ", each s, f or A.. (2m sliding letters for m pyramid edges)");
+    j.fail(std::string(whole    ? "a mode: one letter per contact ("
+                       : parent ? "a prefix: 0 to "
+                                : "a prefix: 1 to ") +
+           std::to_string(whole || !parent ? cs.size() : cs.size() - 1) + (whole ? ")" : " letters") +
+           ", each s, f or A.. (2m sliding letters for m pyramid edges)");
   return text;
 }
 

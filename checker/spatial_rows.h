@@ -34,15 +34,61 @@ std::string alphabet(std::size_t m);
 /// The row u . (a + alpha x r) on vdot's six columns, by its non-zero entries in column order.
 std::vector<table2_check::Rows::Entry> along(const Seen& c, const geometry::Vec3& u);
 
-/// The rows of a prefix in the certificates' layout: per letter its directions u (rows u . A vdot) and which of them
-/// are strict (one slack sigma > 0 each, after vdot's six columns).
-table2_check::Rows prefix_rows(const std::vector<Seen>& cs, const std::string& prefix);
+/// A row of a letter: u . A vdot = 0, or > 0 if strict.
+struct LetterRow {
+  geometry::Vec3 u;
+  bool strict = false;
+};
+
+/// The rows of letter L at contact c in the certificates' order (the solver's table, spatial_modes.h): a prefix's
+/// rows are its letters', letter by letter, and a strict row has one slack sigma > 0 after vdot's six columns.
+/// Empty if L is not one of its letters.
+std::vector<LetterRow> letter_rows(const Seen& c, char L);
+
+/// Every letter's rows at every contact, built once per scene, each with the class of its direction: the rows of a
+/// contact whose directions are equal or opposite share a class (one functional up to sign), so a weight on a class
+/// moves onto the row of that class of any letter there (spatial_stability_check.h's reused Motzkin vectors).
+class RowBlocks {
+ public:
+  /// A row by its class: u = sign * the class's direction.
+  struct Row {
+    std::size_t cls;
+    int sign;
+    bool strict;
+  };
+  explicit RowBlocks(const std::vector<Seen>& cs);
+  /// The rows of letter L at contact i (nullptr if L is not one of its letters).
+  const std::vector<Row>* rows(std::size_t i, char L) const;
+  /// The row u . A vdot of class `cls` at contact i (its direction u) on vdot's six columns (along).
+  const std::vector<table2_check::Rows::Entry>& functional(std::size_t i, std::size_t cls) const {
+    return functionals_[i][cls];
+  }
+  /// The same row times one common denominator D > 0 of all rows, integers: sum y_r f_r = 0 iff sum y_r (D f_r) = 0,
+  /// so integer weights y sum in integer arithmetic (no gcd per operation).
+  const std::vector<std::pair<std::size_t, exact::Z>>& integer_functional(std::size_t i, std::size_t cls) const {
+    return integer_functionals_[i][cls];
+  }
+  /// The rows of a prefix: its letters' rows, letter by letter (the certificates' layout of a prefix's rows).
+  std::size_t row_count(const std::string& prefix) const;
+
+ private:
+  std::vector<std::vector<std::vector<Row>>> rows_;  ///< per contact and letter (s, f, 'A', 'B', ...)
+  std::vector<std::vector<std::vector<table2_check::Rows::Entry>>> functionals_;  ///< per contact and class
+  std::vector<std::vector<std::vector<std::pair<std::size_t, exact::Z>>>> integer_functionals_;  ///< D times those
+};
+
+/// Whether weights (row, y_r) on the rows of `prefix` (letter by letter in letter_rows' order; rows ascending) are a
+/// Motzkin certificate that those rows have no solution (table2_check::motzkin_holds's conditions with b = 0:
+/// sum_r y_r (u_r, r x u_r) = 0 on vdot, y_r <= 0 on every strict row, and one < 0), from the blocks: time linear in
+/// the letters and the weights.
+bool prefix_motzkin_holds(const RowBlocks& blocks, const std::string& prefix,
+                          const std::vector<std::pair<std::size_t, exact::Q>>& y);
 
 /// Whether vdot = (a, alpha) realises the letters, read directly from the contact point's acceleration.
 bool realises(const std::vector<Seen>& cs, const std::string& mode, const exact::Vec<exact::Q>& vdot);
 
-/// A mode (`whole`: one letter per contact) or a prefix (1 to k letters) over the contacts' alphabets; InputError
-/// naming the field otherwise.
-std::string read_letters(const exact::JsonInput& j, const std::vector<Seen>& cs, bool whole);
+/// A mode (`whole`: one letter per contact) or a prefix (1 to k letters; 0 to k - 1 with `parent`) over the
+/// contacts' alphabets; InputError naming the field otherwise.
+std::string read_letters(const exact::JsonInput& j, const std::vector<Seen>& cs, bool whole, bool parent = false);
 
 }  // namespace contactcert::checker::spatial_check

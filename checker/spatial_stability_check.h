@@ -4,6 +4,7 @@
 // beta_ij >= 0 and zero off the edges each letter allows (s none, f all, 2j edge j, 2j + 1 edges j and j + 1).
 #pragma once
 
+#include "checker/certificate_lines.h"
 #include "checker/stability_check.h"
 #include "exact/json_input.h"
 
@@ -13,7 +14,9 @@ namespace contactcert::checker {
 /// Motzkin vector proves that none do), the moving witness realises its mode (read directly from the contact
 /// accelerations), moves, and satisfies Newton-Euler with forces its letters allow; a strongly stable verdict's
 /// proofs (dead prefixes, each for every g, and one per moving mode for g) cover every moving mode (mode_coverage;
-/// f..f needs none beside a resting solution). Malformed certificates throw InputError naming the field.
-StabilityCertificateCheck check_spatial_stability_certificate(const exact::JsonInput& certificate);
+/// f..f needs none beside a resting solution). The certificate is read in lines (certificate_lines.h: its members,
+/// then the lists "vectors", "dead" and "modes" one element a line, each parsed alone); a malformed one throws
+/// InputError naming the line and the field.
+StabilityCertificateCheck check_spatial_stability_certificate(const CertificateLines& certificate);
 
 }  // namespace contactcert::checker

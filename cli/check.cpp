@@ -20,12 +20,12 @@ struct CheckOptions {
 };
 
 int run_check(const CheckOptions& o) {
-  const exact::JsonInput cert = exact::JsonInput::load(o.file);
+  const std::string cert = exact::JsonInput::read_text(o.file);
   std::optional<exact::JsonInput> problem;
   if (!o.problem.empty()) problem = exact::JsonInput::load(o.problem);
   // A checker re-derives cones and LPs under the solvers' budgets: one that runs out is the command's limit.
-  const Limited<queries::CheckResult> r =
-      with_limits(o.common.query().arith, [&] { return queries::check(cert, problem ? &*problem : nullptr); });
+  const Limited<queries::CheckResult> r = with_limits(
+      o.common.query().arith, [&] { return queries::check_text(cert, o.file, problem ? &*problem : nullptr); });
   if (!r) return report_limit("check", r.limit(), o.common.json);
   const queries::CheckResult& c = *r;
   if (o.common.json) {

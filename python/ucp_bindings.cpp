@@ -51,11 +51,10 @@ Ucp generate(const std::string& kind, std::uint64_t seed, int nc, const std::str
 /// prints and the readable lines of the evidence.
 std::pair<std::string, std::string> check(const std::string& text, const std::string& name,
                                           const std::string& problem_text, const std::string& problem_name) {
-  const exact::JsonInput cert = exact::JsonInput::parse(text, name);
   std::optional<exact::JsonInput> problem;
   if (!problem_text.empty()) problem = exact::JsonInput::parse(problem_text, problem_name);
-  const queries::CheckResult c = answer(
-      queries::with_limits(exact::Arith::kExact, [&] { return queries::check(cert, problem ? &*problem : nullptr); }));
+  const queries::CheckResult c = answer(queries::with_limits(
+      exact::Arith::kExact, [&] { return queries::check_text(text, name, problem ? &*problem : nullptr); }));
   return {queries::to_json(c).dump(), c.text};
 }
 

@@ -92,8 +92,10 @@ void check_spatial_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckRe
   c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
 }
 
-void check_spatial_stability(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
-  take(checker::check_spatial_stability_certificate(cert), c);
+void check_spatial_stability(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult&) {
+  cert.fail(
+      "a spatial_stability certificate in lines, as stability writes it (docs/formats.md section 5c): check reads "
+      "it line by line, and this text is another layout");
 }
 
 void check_uniqueness(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
@@ -153,14 +155,15 @@ std::string embedded_assembly_text(const exact::JsonInput& cert) {
                   : "";
 }
 
-}  // namespace
-
-CheckResult check(const exact::JsonInput& certificate, const exact::JsonInput* problem) {
-  const CertificateKind& kind = certificate_kind(certificate);
+/// Kind's checker (`run`) on a certificate whose members (all, or its head in lines) are `certificate`, then the
+/// digest of its embedded problem and, with a problem file, whether it is about that problem.
+template <class Run>
+CheckResult checked(const exact::JsonInput& certificate, const CertificateKind& kind, const exact::JsonInput* problem,
+                    const Run& run) {
   CheckResult c;
   c.kind = kind.name;
   EmbeddedProblem embedded(certificate, kind.embeds_scene);
-  kind.check(certificate, embedded, c);
+  run(embedded, c);
   c.digest = embedded.get().canonical_sha256();
   if (problem != nullptr) {
     c.problem = problem->file();
@@ -178,6 +181,23 @@ CheckResult check(const exact::JsonInput& certificate, const exact::JsonInput* p
     }
   }
   return c;
+}
+
+}  // namespace
+
+CheckResult check(const exact::JsonInput& certificate, const exact::JsonInput* problem) {
+  const CertificateKind& kind = certificate_kind(certificate);
+  return checked(certificate, kind, problem,
+                 [&](EmbeddedProblem& embedded, CheckResult& c) { kind.check(certificate, embedded, c); });
+}
+
+CheckResult check_text(const std::string& text, const std::string& file, const exact::JsonInput* problem) {
+  if (!checker::CertificateLines::starts_as(text, "spatial_stability"))
+    return check(exact::JsonInput::parse(text, file), problem);
+  const checker::CertificateLines lines(text, file);
+  return checked(lines.head(), certificate_kind(lines.head()), problem, [&](EmbeddedProblem&, CheckResult& c) {
+    take(checker::check_spatial_stability_certificate(lines), c);
+  });
 }
 
 json to_json(const CheckResult& c) {

@@ -28,6 +28,9 @@ struct CheckResult {
 
 /// Checks `certificate`, and against the problem (or scene) file `problem` too unless it is null.
 CheckResult check(const exact::JsonInput& certificate, const exact::JsonInput* problem = nullptr);
+/// The same on a certificate's text read from `file`: a certificate in lines (checker/certificate_lines.h: the
+/// spatial_stability one) line by line, without a JSON tree of the whole text; any other parsed as a whole.
+CheckResult check_text(const std::string& text, const std::string& file, const exact::JsonInput* problem = nullptr);
 
 /// The object `check --json` prints: valid, kind, reason, problem_sha256, problem (with a problem file), details.
 json to_json(const CheckResult& c);

@@ -2,6 +2,7 @@
 
 #include "exact/input_error.h"
 #include "queries/stability_query.h"
+#include "solvers/spatial/spatial_stability_certificate.h"
 
 namespace contactcert::queries {
 namespace {
@@ -18,7 +19,7 @@ SpatialStabilityAnswer spatial_stability_answer(const SpatialInput& in, const Sp
   tree.deadline = options.common.deadline();
   SpatialStabilityAnswer a{in.scene, options.wrench, sp::spatial_stability(in.scene, options.wrench, tree), {}, {}};
   if (!options.certificate.empty()) {
-    a.certificate_text = sp::spatial_stability_certificate(in.text, options.wrench, a.result);
+    a.certificate_text = sp::spatial_stability_certificate(in.scene, in.text, options.wrench, a.result);
     write_certificate_file("stability", options.certificate, a.certificate_text,
                            std::string("the verdict is ") + solvers::verdict_name(a.result.verdict));
     a.certificate = options.certificate;

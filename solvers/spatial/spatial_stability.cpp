@@ -1,11 +1,8 @@
 #include "solvers/spatial/spatial_stability.h"
 
 #include <algorithm>
-#include <nlohmann/json.hpp>
 
 #include "exact/input_error.h"
-#include "solvers/stability/sparse_motzkin.h"
-#include "solvers/stability/stability_certificate.h"
 
 namespace contactcert::solvers::spatial {
 
@@ -210,34 +207,6 @@ std::vector<geometry::Vec3> contact_forces(const geometry::SpatialScene& scene, 
     out.push_back(f);
   }
   return out;
-}
-
-std::string spatial_stability_certificate(const std::string& scene_text, const Vec<Q>& g, const SpatialStability& r) {
-  using json = nlohmann::ordered_json;
-  json j = stability_certificate_head("spatial_stability", r.verdict, scene_text, g);
-  j["resting"] = r.has_resting ? json{{"weights", exact_strings(r.resting_weights)}}
-                               : json{{"motzkin", sparse_motzkin_json(r.resting_motzkin)}};
-  if (r.has_moving)
-    j["moving"] = {{"mode", r.moving.mode},
-                   {"weights", exact_strings(r.moving.weights)},
-                   {"acceleration", exact_strings(r.moving.acceleration)}};
-  j["proofs"] = json::array();
-  std::string out = j.dump(1);
-  if (r.proofs.empty()) return out + "\n";
-  // The proofs written one by one, in the bytes j.dump(1) would give with them inside (each object two levels deep,
-  // one value a line), without a JSON tree of them all (~110 000 at k = 16).
-  out.resize(out.size() - 3);  // "[]\n}"'s "]\n}"
-  for (std::size_t i = 0; i < r.proofs.size(); ++i) {
-    const SpatialModeProof& p = r.proofs[i];
-    out += i ? ",\n  {\n   \"mode\": " : "\n  {\n   \"mode\": ";
-    out += json(p.mode).dump() + ",\n   \"kinematic\": " + (p.kinematic ? "true" : "false") + ",\n   \"motzkin\": [";
-    const json y = sparse_motzkin_json(p.motzkin);
-    for (std::size_t e = 0; e < y.size(); ++e)
-      out += (e ? ",\n    [\n     " : "\n    [\n     ") + std::to_string(y[e][0].get<std::size_t>()) + ",\n     \"" +
-             y[e][1].get_ref<const std::string&>() + "\"\n    ]";
-    out += y.empty() ? "]\n  }" : "\n   ]\n  }";
-  }
-  return out + "\n ]\n}\n";
 }
 
 }  // namespace contactcert::solvers::spatial

@@ -77,9 +77,4 @@ SpatialStability spatial_stability(const geometry::SpatialScene& scene, const Ve
 /// Contact i's force c_i = sum_j beta_ij (n_i + d_ij) in world coordinates, from a solution's weights.
 std::vector<geometry::Vec3> contact_forces(const geometry::SpatialScene& scene, const Vec<Q>& weights);
 
-/// The "spatial_stability" certificate (docs/formats.md section 5): the scene text, its digest, the wrench, the
-/// verdict, "resting" ({"weights"} or {"motzkin"}), "moving" ({"mode", "weights", "acceleration"}) or "proofs";
-/// checked by checker/spatial_stability_check.h.
-std::string spatial_stability_certificate(const std::string& scene_text, const Vec<Q>& g, const SpatialStability& r);
-
 }  // namespace contactcert::solvers::spatial

@@ -9,6 +9,7 @@
 #include "checker/spatial_stability_check.h"
 #include "geometry/scene_json.h"
 #include "runtime/scenes.h"
+#include "solvers/spatial/spatial_stability_certificate.h"
 #include "tests/solvers/spatial/extruded_scene.h"
 
 namespace contactcert::solvers::spatial {
@@ -32,7 +33,7 @@ SpatialStability on_box(const Vec<Q>& g) {
   const SpatialScene s = geometry::read_spatial_scene(exact::JsonInput::parse(text, "box"));
   SpatialStability r = spatial_stability(s, g);
   const auto check = checker::check_spatial_stability_certificate(
-      exact::JsonInput::parse(spatial_stability_certificate(text, g, r), "certificate.json"));
+      checker::CertificateLines(spatial_stability_certificate(s, text, g, r), "certificate.json"));
   EXPECT_TRUE(check.valid) << check.reason;
   return r;
 }
@@ -51,6 +52,43 @@ TEST(SpatialStability, BoxUnderGravityIsStronglyStable) {
   // Most moving modes take a recent mode's Motzkin vector moved to their rows (the certificate checks above).
   EXPECT_GT(r.modes_by_reuse, 339 / 2);
   EXPECT_LT(r.modes_by_reuse, r.modes_checked);
+}
+
+// The certificate in lines (docs/formats.md section 5c) names each Motzkin vector once: the box's 2 442 dead prefixes
+// (by parent) and 339 modes share 181 vectors, and a vector applied to rows it does not prove is INVALID: the last
+// mode's vector named by the first dead prefix (it weighs Newton-Euler rows a prefix does not have), or a dead
+// prefix's vector named by a mode whose rows lack the functionals it weighs.
+TEST(SpatialStability, CertificateNamesEachVectorOnce) {
+  const std::string text = box_text();
+  const SpatialScene s = geometry::read_spatial_scene(exact::JsonInput::parse(text, "box"));
+  const Vec<Q> g = wrench({0, 0, -1, 0, 0, 0});
+  const SpatialStability r = spatial_stability(s, g);
+  const std::string cert = spatial_stability_certificate(s, text, g, r);
+  const checker::CertificateLines c(cert, "certificate.json");
+  std::size_t dead = 0;
+  for (std::size_t i = 0; i < c.size("dead"); ++i) dead += c.element("dead", i).at("letters").string().size();
+  EXPECT_EQ(dead, static_cast<std::size_t>(r.dead_prefixes));
+  EXPECT_EQ(c.size("modes"), 339u);
+  EXPECT_EQ(c.size("vectors"), 181u);
+  // Edits of one index in the text, each checked.
+  auto checked = [&](const std::string& from, const std::string& to) {
+    std::string t = cert;
+    const std::size_t at = t.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) t.replace(at, from.size(), to);
+    return checker::check_spatial_stability_certificate(checker::CertificateLines(t, "forged.json"));
+  };
+  const std::string last_mode = c.element("modes", 338).at("mode").string();
+  const long mode_vector = c.element("modes", 338).at("vector").integer(0, 180);
+  const long dead_vector = c.element("dead", 0).at("vectors").at(0).integer(0, 180);
+  const std::string first_dead = "\"vectors\":[" + std::to_string(dead_vector);
+  auto bad = checked(first_dead, "\"vectors\":[" + std::to_string(mode_vector));
+  EXPECT_FALSE(bad.valid);
+  EXPECT_NE(bad.reason.find("the kinematic proof for prefix"), std::string::npos) << bad.reason;
+  const std::string mode_line = "{\"mode\":\"" + last_mode + "\",\"vector\":" + std::to_string(mode_vector) + "}";
+  bad = checked(mode_line, "{\"mode\":\"" + last_mode + "\",\"vector\":" + std::to_string(dead_vector) + "}");
+  EXPECT_FALSE(bad.valid);
+  EXPECT_EQ(bad.reason, "the proof for mode " + last_mode + " does not verify");
 }
 
 // move_rows: a weight goes to the row of the same functional at its contact (s's a_n > 0 onto f's a_n = 0; the
