@@ -1,7 +1,8 @@
 // The contact modes of a body in space from rest (solvers/spatial/spatial_modes.h): the hand-derived counts of a box
-// on a plane and in a corner, seeded random bodies against a brute force over all mode strings (one LP each, in
-// its own formulation), extruded planar scenes against the planar tree, the reader's refusals, and forged
-// certificates, which the independent checker (checker/spatial_modes_check.h) must reject.
+// on a plane and in a corner, seeded random bodies against a brute force over all mode strings (an LP each in its
+// own formulation, unless a letter or a pair of its letters alone has none), extruded planar scenes against the planar
+// tree, the reader's refusals, and forged certificates, which the independent checker (checker/spatial_modes_check.h)
+// must reject.
 #include "solvers/spatial/spatial_modes.h"
 
 #include <gtest/gtest.h>
