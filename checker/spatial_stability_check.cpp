@@ -17,49 +17,6 @@ using solvers::StabilityVerdict;
 using solvers::verdict_name;
 using table2_check::Rows;
 
-/// The edges on which a letter may carry force (the header's table), in the certificate's column order.
-std::vector<std::size_t> allowed(std::size_t m, char L) {
-  std::vector<std::size_t> e;
-  if (L == 'f')
-    for (std::size_t j = 0; j < m; ++j) e.push_back(j);
-  if (L == 'f' || L == 's') return e;
-  const std::size_t j = static_cast<std::size_t>(L - 'A') / 2;
-  e.push_back(j);
-  if ((L - 'A') % 2 == 1) e.push_back((j + 1) % m);
-  return e;
-}
-
-/// The body's mass matrix row d (0..5) on vdot's six columns.
-std::vector<Rows::Entry> mass_row(const geometry::SpatialBody& b, std::size_t d) {
-  std::vector<Rows::Entry> e;
-  if (d < 3) return {{d, b.mass}};
-  for (std::size_t c = 0; c < 3; ++c)
-    if (sgn(b.inertia[d - 3][c]) != 0) e.push_back({3 + c, b.inertia[d - 3][c]});
-  return e;
-}
-
-/// The rows of a mode for g (zero_acceleration: of the resting solutions, mode f..f) in the certificate's layout:
-/// columns vdot and its strict slacks (prefix_rows), then each contact's allowed weights (>= 0); rows the kinematic
-/// rows (b = 0), then the six Newton-Euler rows M vdot - sum beta (u, r x u) = g.
-Rows motion_rows(const geometry::SpatialBody& body, const std::vector<Seen>& cs, const std::string& mode,
-                 const Vec<Q>& g, bool zero_acceleration) {
-  Rows R;
-  if (!zero_acceleration) R = prefix_rows(cs, mode);
-  const std::size_t first = R.rows.size();
-  for (std::size_t d = 0; d < 6; ++d)
-    R.rows.push_back(zero_acceleration ? std::vector<Rows::Entry>{} : mass_row(body, d));
-  for (std::size_t i = 0; i < cs.size(); ++i)
-    for (const std::size_t j : allowed(cs[i].d.size(), mode[i])) {
-      const Vec3 u{cs[i].n[0] + cs[i].d[j][0], cs[i].n[1] + cs[i].d[j][1], cs[i].n[2] + cs[i].d[j][2]};
-      const std::size_t col = R.columns.size();
-      R.columns.push_back(Rows::Sign::kNonNegative);
-      for (const Rows::Entry& e : along(cs[i], u)) R.rows[first + e.col].push_back({col, -e.value});
-    }
-  R.b = Vec<Q>::Zero(static_cast<Eigen::Index>(R.rows.size()));
-  R.b.tail(6) = g;
-  return R;
-}
-
 /// Why weights beta (every edge of every contact) with acceleration vdot are not a solution in `mode`: a negative
 /// weight, a weight the letter does not allow, or Newton-Euler violated. Empty if they are one.
 std::string motion_fault(const geometry::SpatialBody& body, const std::vector<Seen>& cs, const std::string& mode,
