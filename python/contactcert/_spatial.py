@@ -31,8 +31,12 @@ class SpatialScene(ModesProblem[_core.SpatialScene]):
         picture (isometric: the body, its numbered contacts, normals and friction pyramids) is written to, which the
         result's _repr_svg_ reads."""
         picture = os.fspath(svg) if svg is not None else ""
-        return self._modes(lambda *a: self._core.modes(*a, picture), arith, time_limit, max_nodes, max_modes,
-                           certificate, picture)
+
+        def run(arith: str, time_limit: float, max_nodes: int | None, max_modes: int | None,
+                certificate: str) -> tuple[str, str]:
+            return self._core.modes(arith, time_limit, max_nodes, max_modes, certificate, picture)
+
+        return self._modes(run, arith, time_limit, max_nodes, max_modes, certificate, picture)
 
     def stability(self, wrench: ExactVector, arith: Arith = "verified", certificate: Path | None = None,
                   time_limit: float = 0) -> SpatialStability:

@@ -23,7 +23,7 @@ wrong_facet stick c["cone"]["face"]["inequalities"][0][2] = "5"
 weight stick m = c["inequalities"][2]; m[0][1] = str(-int(m[0][1]))
 mode stick c["mode"] = "fffB"
 kept lift c["cone"]["face"]["inequalities"] = [c["cone"]["face"]["strict"].pop(0)]; c["inequalities"] = [c["strict"].pop(0)]; del c["cone"]["open_faces"][3]
-empty empty c["mode"] = "sAsA"
+empty empty c["mode"] = "ffff"
 relabel tip sc = json.loads(c["scene"]); sc["contacts"][0], sc["contacts"][2] = sc["contacts"][2], sc["contacts"][0]; c["scene"] = json.dumps(sc)
 """
 for line in spec.strip().splitlines():
@@ -40,13 +40,13 @@ python3 -c 'import json,sys; c=json.load(open(sys.argv[1])); c["problem_sha256"]
 while IFS='|' read -r name reason; do
   check 2 "$reason" check "$fc/$name.json"
 done <<'CASES'
-no_ray|the written cone: the generators span dimension
+no_ray|the written cone: inequality 5 is not a facet
 no_point|expected one point per ray (16)
 no_facet|is no row of the face form
-wrong_facet|the written cone: ray
+wrong_facet|the written cone: inequality 0 is not a facet
 weight|the proof of inequality 2 does not verify
 mode|is not a solution of the mode
 kept|no point of the cone is given on the face of the closure through rays 0 1,
-empty|does not prove mode sAsA kinematically infeasible
+empty|does not prove mode ffff kinematically infeasible
 relabel|is not a solution of the mode
 CASES
