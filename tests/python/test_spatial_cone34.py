@@ -8,6 +8,7 @@ import json
 import os
 import subprocess
 from pathlib import Path
+from typing import Any
 
 import contactcert
 
@@ -15,12 +16,18 @@ SCENES = Path(__file__).resolve().parents[2] / "scenes"
 BOX = SCENES / "spatial_box_on_plane.json"
 
 
-def cli(*args: str) -> str | None:
-    """The CLI's stdout, or None without CONTACTCERT_CLI."""
+def same_as_cli(result: Any, key: str, written: Path, *args: str) -> None:
+    """The CLI with args, writing `key`'s file beside `written`, wrote the same bytes and printed result's --json
+    (but for the file's name); skipped without CONTACTCERT_CLI."""
     exe = os.environ.get("CONTACTCERT_CLI")
     if not exe:
-        return None
-    return subprocess.run([exe, *args], check=True, capture_output=True, text=True).stdout
+        return
+    mine = written.with_name("cli" + written.suffix)
+    out = subprocess.run([exe, *args, f"--{key}", str(mine), "--json"], check=True, capture_output=True, text=True)
+    assert mine.read_bytes() == written.read_bytes()
+    want = json.loads(out.stdout)
+    want[key] = str(written)
+    assert result.to_dict() == want
 
 
 def test_modes_svg_is_the_cli_picture(tmp_path: Path) -> None:
@@ -29,13 +36,7 @@ def test_modes_svg_is_the_cli_picture(tmp_path: Path) -> None:
     assert picture.startswith("<svg") or picture.startswith("<?xml")
     assert modes._repr_svg_() == picture
     assert modes.to_dict()["svg"] == str(tmp_path / "py.svg")
-    out = cli("modes", str(BOX), "--svg", str(tmp_path / "cli.svg"), "--json")
-    if out is None:
-        return
-    assert (tmp_path / "cli.svg").read_bytes() == (tmp_path / "py.svg").read_bytes()
-    want = json.loads(out)
-    want["svg"] = str(tmp_path / "py.svg")
-    assert modes.to_dict() == want
+    same_as_cli(modes, "svg", tmp_path / "py.svg", "modes", str(BOX))
 
 
 def test_modes_without_svg_draw_nothing() -> None:
@@ -49,13 +50,7 @@ def test_cone_certificate_is_the_cli_certificate_and_checks(tmp_path: Path) -> N
     assert cone.certificate.check().valid
     assert contactcert.check(tmp_path / "py.json").valid
     assert cone.to_dict()["certificate"] == str(tmp_path / "py.json")
-    out = cli("cone", str(BOX), "--mode", "ffss", "--certificate", str(tmp_path / "cli.json"), "--json")
-    if out is None:
-        return
-    assert (tmp_path / "cli.json").read_bytes() == (tmp_path / "py.json").read_bytes()
-    want = json.loads(out)
-    want["certificate"] = str(tmp_path / "py.json")
-    assert cone.to_dict() == want
+    same_as_cli(cone, "certificate", tmp_path / "py.json", "cone", str(BOX), "--mode", "ffss")
 
 
 def test_empty_cone_certificate_checks(tmp_path: Path) -> None:
