@@ -110,8 +110,9 @@ std::string generators_fault(const Written& w) {
 constexpr long kMaxSubsets = 4'000'000;
 
 /// Why pos(rays) + span(lines) has a facet that no row of the face form is tight on, or "": every p = D - 1 - l
-/// rays that with the lines span D - 1 dimensions (chosen in index order, each raising the rank) span a hyperplane
-/// h (h . equalities' complement); it is a facet iff no two rays lie strictly on either side of h.
+/// rays that with the lines span D - 1 dimensions (chosen in index order, each raising the rank) span, with the
+/// lines, a hyperplane of the generators' span, whose normal h there is orthogonal to them and to the equalities; it
+/// is a facet iff no ray lies strictly on one side of h while another lies strictly on the other.
 std::string missing_facet(const Written& w, Index D) {
   const Index l = w.lines.rows(), p = D - 1 - l;
   if (p < 0) return {};
@@ -295,10 +296,14 @@ std::vector<std::set<Index>> minimal_faces(const Written& w, std::string& fault)
       return std::includes(s.begin(), s.end(), f.begin(), f.end());
     });
   };
+  // A kept face with a kept proper face has one among its intersections with the rows (the facets through the
+  // smaller face do not all contain it), and a face holding a kept face is kept.
   for (const std::set<Index>& f : faces) {
     if (!kept(f)) continue;
-    const bool minimal = std::none_of(faces.begin(), faces.end(), [&](const std::set<Index>& g) {
-      return g.size() < f.size() && kept(g) && std::includes(f.begin(), f.end(), g.begin(), g.end());
+    const bool minimal = std::none_of(rows.begin(), rows.end(), [&](const std::set<Index>& t) {
+      std::set<Index> g;
+      std::set_intersection(f.begin(), f.end(), t.begin(), t.end(), std::inserter(g, g.end()));
+      return g.size() < f.size() && kept(g);
     });
     if (minimal) out.push_back(f);
   }

@@ -44,8 +44,8 @@ WithCertificate stability(const Spatial& s, const std::string& wrench, const std
 /// `cone SPATIAL --mode M [--certificate F]`: the --json text and the certificate's.
 WithCertificate cone(const Spatial& s, const std::string& mode, const std::string& arith, double time_limit,
                      const std::string& certificate) {
-  const queries::SpatialConeAnswer ans = answer(
-      queries::run_spatial_cone(s, {{queries::parse_arith(arith, "--arith"), time_limit}, mode, certificate}));
+  const queries::SpatialConeAnswer ans =
+      answer(queries::run_spatial_cone(s, {{queries::parse_arith(arith, "--arith"), time_limit}, mode, certificate}));
   return {queries::to_json(ans).dump(), ans.certificate_text};
 }
 
