@@ -373,9 +373,8 @@ SpatialConeCheck check_spatial_cone_certificate(const exact::JsonInput& c) {
   if (why.empty()) why = proofs_fault(rows, w.E, c.at("equalities"), false, true, "equality");
   if (!why.empty()) return {false, why};
   if (std::string why = faces_fault(w, rows, c.at("faces")); !why.empty()) return {false, why};
-  SpatialConeCheck out{true, "the closure of mode " + mode +
-                                 "'s cone is the written cone in both forms and the cone lies " +
-                                 "in its face form with the strict rows"};
+  SpatialConeCheck out{true, "mode " + mode + "'s cone is the written cone: its closure in both forms, the cone " +
+                                 "its face form with the strict rows"};
   out.dimension = w.dimension;
   out.rays = static_cast<long>(w.rays.rows()), out.lines = static_cast<long>(w.lines.rows());
   out.inequalities = static_cast<long>(w.A.rows()), out.strict = static_cast<long>(w.S.rows());

@@ -203,6 +203,7 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, LpProble
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
   try {
     LpResult<double> r = solve_lp<double>(lp);  // the duals only where read_strict reads them (t* = 0): a dense solve
+    if (r.status != LpStatus::kOptimal && r.status != LpStatus::kInfeasible) return std::nullopt;  // out of pivots
     if (r.status == LpStatus::kOptimal && !S.empty() && !is_positive(-r.value)) r.duals = optimal_duals(lp, r.basis);
     const StrictFeasibility<double> f = read_strict(r, m, n, S);
     *float_feasible = f.status == StrictStatus::kFeasible;
