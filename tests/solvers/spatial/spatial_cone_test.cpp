@@ -100,6 +100,20 @@ TEST(SpatialCone, CertificatesVerify) {
   }
 }
 
+// A body whose certificate LPs have rows of seven digits: the float LP of one runs out of pivots, and the exact one
+// decides (exact/strict_feasibility.h's rounded step gives way instead of reading the unfinished point).
+TEST(SpatialCone, CertificateWithLargeRowsVerifies) {
+  const std::string t = R"({"kind": "spatial", "mu": "1/2",
+    "body": {"mass": 1, "inertia": [[1, 0, 0], [0, 2, 0], [0, 0, 3]], "com": [2, 1, -1]},
+    "contacts": [{"point": [-1, 0, 0], "normal": [-1, 2, -1]}, {"point": [-1, 2, -2], "normal": [1, 2, 1]},
+                 {"point": [-1, 2, 0], "normal": [-1, 1, -2]}]})";
+  const geometry::SpatialScene s = parse(t);
+  const geometry::NncForm<Q> cone = spatial_wrench_cone(s, "sFD");
+  EXPECT_EQ(cone.face.strict.rows(), 2);
+  const checker::SpatialConeCheck c = check_json(nlohmann::json::parse(spatial_cone_certificate(t, s, "sFD", cone)));
+  EXPECT_TRUE(c.valid) << c.reason;
+}
+
 // A facet dropped with its proof (the checker's own enumeration of the span form's facets finds it missing), a ray
 // dropped with its point, a point moved, the same numbers for another mode, and a strict row written as an
 // inequality (the checker's own enumeration of the faces finds the facet without a point of the cone): INVALID.
