@@ -66,9 +66,9 @@ class Prover {
       throw std::logic_error("spatial cone certificate: a generator of the span form is not in the cone");
     return exact_strings(f.x);
   }
-  json points(const exact::Mat<Q>& M, int sign = 1) {
+  json points(const exact::Mat<Q>& M) {
     json out = json::array();
-    for (Index r = 0; r < M.rows(); ++r) out.push_back(point(Q(sign) * Vec<Q>(M.row(r).transpose())));
+    for (Index r = 0; r < M.rows(); ++r) out.push_back(point(M.row(r).transpose()));
     return out;
   }
   /// A point x with sigma > 0 for g, or (empty cone, g empty: any g) the Motzkin vector of the rows that none exists.
