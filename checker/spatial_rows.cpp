@@ -177,4 +177,43 @@ std::string read_letters(const exact::JsonInput& j, const std::vector<Seen>& cs,
   return text;
 }
 
+std::vector<std::size_t> allowed(std::size_t m, char L) {
+  std::vector<std::size_t> e;
+  if (L == 'f')
+    for (std::size_t j = 0; j < m; ++j) e.push_back(j);
+  if (L == 'f' || L == 's') return e;
+  const std::size_t j = static_cast<std::size_t>(L - 'A') / 2;
+  e.push_back(j);
+  if ((L - 'A') % 2 == 1) e.push_back((j + 1) % m);
+  return e;
+}
+
+Vec3 edge_force(const Seen& c, std::size_t j) { return {c.n[0] + c.d[j][0], c.n[1] + c.d[j][1], c.n[2] + c.d[j][2]}; }
+
+std::vector<Rows::Entry> mass_row(const geometry::SpatialBody& b, std::size_t d) {
+  std::vector<Rows::Entry> e;
+  if (d < 3) return {{d, b.mass}};
+  for (std::size_t c = 0; c < 3; ++c)
+    if (sgn(b.inertia[d - 3][c]) != 0) e.push_back({3 + c, b.inertia[d - 3][c]});
+  return e;
+}
+
+Rows motion_rows(const geometry::SpatialBody& body, const std::vector<Seen>& cs, const std::string& mode,
+                 const Vec<Q>& g, bool zero_acceleration) {
+  Rows R;
+  if (!zero_acceleration) R = prefix_rows(cs, mode);
+  const std::size_t first = R.rows.size();
+  for (std::size_t d = 0; d < 6; ++d)
+    R.rows.push_back(zero_acceleration ? std::vector<Rows::Entry>{} : mass_row(body, d));
+  for (std::size_t i = 0; i < cs.size(); ++i)
+    for (const std::size_t j : allowed(cs[i].d.size(), mode[i])) {
+      const std::size_t col = R.columns.size();
+      R.columns.push_back(Rows::Sign::kNonNegative);
+      for (const Rows::Entry& e : along(cs[i], edge_force(cs[i], j))) R.rows[first + e.col].push_back({col, -e.value});
+    }
+  R.b = Vec<Q>::Zero(static_cast<Eigen::Index>(R.rows.size()));
+  R.b.tail(6) = g;
+  return R;
+}
+
 }  // namespace contactcert::checker::spatial_check

@@ -91,4 +91,20 @@ bool realises(const std::vector<Seen>& cs, const std::string& mode, const exact:
 /// contacts' alphabets; InputError naming the field otherwise.
 std::string read_letters(const exact::JsonInput& j, const std::vector<Seen>& cs, bool whole, bool parent = false);
 
+/// The edges on which letter L of a contact with m edges may carry force: all (f), none (s), j (2j), or j and
+/// j + 1 mod m (2j + 1), in the certificates' column order.
+std::vector<std::size_t> allowed(std::size_t m, char L);
+
+/// The direction n + d_j of a force on pyramid edge j of contact c.
+geometry::Vec3 edge_force(const Seen& c, std::size_t j);
+
+/// The body's mass matrix M = diag(m, m, m, I), row d (0..5), on vdot's six columns.
+std::vector<table2_check::Rows::Entry> mass_row(const geometry::SpatialBody& b, std::size_t d);
+
+/// The rows of a mode for g (zero_acceleration: of the resting solutions, mode f..f) in the certificates' layout:
+/// columns vdot and its strict slacks (prefix_rows), then each contact's allowed weights beta (>= 0); rows the
+/// kinematic rows (b = 0), then the six Newton-Euler rows M vdot - sum beta (u, r x u) = g, u = n + d_j.
+table2_check::Rows motion_rows(const geometry::SpatialBody& body, const std::vector<Seen>& cs, const std::string& mode,
+                               const exact::Vec<exact::Q>& g, bool zero_acceleration);
+
 }  // namespace contactcert::checker::spatial_check

@@ -17,45 +17,6 @@ using solvers::StabilityVerdict;
 using solvers::verdict_name;
 using table2_check::Rows;
 
-/// The edges on which a letter may carry force (the header's table), in the certificate's column order.
-std::vector<std::size_t> allowed(std::size_t m, char L) {
-  std::vector<std::size_t> e;
-  if (L == 'f')
-    for (std::size_t j = 0; j < m; ++j) e.push_back(j);
-  if (L == 'f' || L == 's') return e;
-  const std::size_t j = static_cast<std::size_t>(L - 'A') / 2;
-  e.push_back(j);
-  if ((L - 'A') % 2 == 1) e.push_back((j + 1) % m);
-  return e;
-}
-
-/// The direction n + d_j of a force on pyramid edge j of contact c.
-Vec3 edge_force(const Seen& c, std::size_t j) { return {c.n[0] + c.d[j][0], c.n[1] + c.d[j][1], c.n[2] + c.d[j][2]}; }
-
-/// The body's mass matrix row d (0..5) on vdot's six columns.
-std::vector<Rows::Entry> mass_row(const geometry::SpatialBody& b, std::size_t d) {
-  std::vector<Rows::Entry> e;
-  if (d < 3) return {{d, b.mass}};
-  for (std::size_t c = 0; c < 3; ++c)
-    if (sgn(b.inertia[d - 3][c]) != 0) e.push_back({3 + c, b.inertia[d - 3][c]});
-  return e;
-}
-
-/// The rows of the resting solutions for g (mode f..f, vdot = 0) in the certificate's layout: columns the weights
-/// beta_ij of every edge (>= 0); rows the six Newton-Euler rows -sum beta (u, r x u) = g.
-Rows resting_rows(const std::vector<Seen>& cs, const Vec<Q>& g) {
-  Rows R;
-  R.rows.resize(6);
-  for (std::size_t i = 0; i < cs.size(); ++i)
-    for (std::size_t j = 0; j < cs[i].d.size(); ++j) {
-      const std::size_t col = R.columns.size();
-      R.columns.push_back(Rows::Sign::kNonNegative);
-      for (const Rows::Entry& e : along(cs[i], edge_force(cs[i], j))) R.rows[e.col].push_back({col, -e.value});
-    }
-  R.b = g;
-  return R;
-}
-
 /// Why weights beta (every edge of every contact) with acceleration vdot are not a solution in `mode`: a negative
 /// weight, a weight the letter does not allow, or Newton-Euler violated. Empty if they are one.
 std::string motion_fault(const geometry::SpatialBody& body, const std::vector<Seen>& cs, const std::string& mode,
@@ -265,7 +226,7 @@ StabilityCertificateCheck check_spatial_stability_certificate(const CertificateL
     rests = true;
   } else {
     resting.expect_keys({"motzkin"});
-    const Rows rows = resting_rows(cs, g);
+    const Rows rows = motion_rows(scene.body, cs, sticking, g, true);
     if (!table2_check::motzkin_holds(rows, read_sparse_motzkin(resting.at("motzkin"), rows.rows.size())))
       return {false, "the certificate that no resting solution exists does not verify"};
   }

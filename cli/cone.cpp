@@ -136,13 +136,12 @@ void print_cone_float(const std::string& file, const ConeAnswer& a) {
 
 /// `cone SPATIAL --mode M`: a body in space (queries/spatial_cone_query.h); the planar-only options are refused.
 int run_spatial_cone_command(const ConeCliOptions& o, const SpatialInput& in) {
-  const std::pair<bool, const char*> planar[] = {{o.route != "paper", "--route"},
-                                                 {o.table2 != "strict", "--table2"},
-                                                 {!o.certificate.empty(), "--certificate"},
-                                                 {!o.svg.empty(), "--svg"}};
+  const std::pair<bool, const char*> planar[] = {
+      {o.route != "paper", "--route"}, {o.table2 != "strict", "--table2"}, {!o.svg.empty(), "--svg"}};
   for (const auto& [given, name] : planar)
-    if (given) throw exact::InputError("command line", name, "a spatial scene's cone takes --mode only");
-  const Limited<SpatialConeAnswer> r = run_spatial_cone(in, {o.common.query(), o.mode});
+    if (given)
+      throw exact::InputError("command line", name, "a spatial scene's cone takes --mode and --certificate only");
+  const Limited<SpatialConeAnswer> r = run_spatial_cone(in, {o.common.query(), o.mode, o.certificate});
   if (!r) return report_limit("cone", r.limit(), o.common.json);
   std::cout << (o.common.json ? to_json(*r).dump() + "\n" : to_text(*r, o.file));
   return 0;
@@ -189,8 +188,10 @@ void register_cone(CLI::App& app, Action& action) {
                   "strict: s at a touching fixel is a_n > 0 (seeds errata); printed: a_n >= 0 as Table 2 prints it")
       ->check(CLI::IsMember({"strict", "printed"}))
       ->default_str("strict");
-  sub->add_option("--certificate", opts->certificate,
-                  "Write the evidence for `contactcert check`: a Motzkin vector (empty cone) or a witness wrench");
+  sub->add_option(
+      "--certificate", opts->certificate,
+      "Write the evidence for `contactcert check`: a Motzkin vector (empty cone) or a witness wrench; for a "
+      "spatial scene, the proof of the cone in both forms");
   add_snap_option(*sub, opts->snap);
   add_common_options(*sub, opts->common);
   sub->callback([opts, &action] { action = [opts] { return run_cone_command(*opts); }; });

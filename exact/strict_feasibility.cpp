@@ -211,9 +211,10 @@ std::optional<StrictFeasibility<Q>> rounded_solve(const IntegerLp& ilp, LpProble
   for (Index i = 0; i < m; ++i) lp.b(i) = static_cast<double>((*B)[static_cast<size_t>(i)]);
   try {
     LpResult<double> r = solve_lp<double>(lp);  // the duals only where read_strict reads them (t* = 0): a dense solve
+    // Out of pivots, or "unbounded" (t <= 1 bounds the LP: roundoff on nearly dependent rows, such as a normal
+    // tilted by 1e-9): no point and no duals to read, so the verified LP decides.
+    if (r.status != LpStatus::kOptimal && r.status != LpStatus::kInfeasible) return std::nullopt;
     if (r.status == LpStatus::kOptimal && !S.empty() && !is_positive(-r.value)) r.duals = optimal_duals(lp, r.basis);
-    // A float LP ended "unbounded" (a normal tilted by 1e-9) reads as infeasible with a zero vector, which
-    // check_rounded refuses: the verified LP decides.
     const StrictFeasibility<double> f = read_strict(r, m, n, S);
     *float_feasible = f.status == StrictStatus::kFeasible;
     if (float_point && *float_feasible) *float_point = f.x / d.get_d();  // A_int x = d (L o b): x / d solves A x = b

@@ -16,14 +16,16 @@ namespace {
 
 using Spatial = queries::SpatialInput;
 
-/// `modes SPATIAL [--max-nodes N] [--max-modes N] [--certificate F]`: the --json text and the certificate's.
+/// `modes SPATIAL [--max-nodes N] [--max-modes N] [--certificate F] [--svg F]`: the --json text and the
+/// certificate's.
 WithCertificate modes(const Spatial& s, const std::string& arith, double time_limit, std::optional<long> max_nodes,
-                      std::optional<long> max_modes, const std::string& certificate) {
+                      std::optional<long> max_modes, const std::string& certificate, const std::string& svg) {
   queries::SpatialModesOptions o;
   o.common = {queries::parse_arith(arith, "--arith"), time_limit};
   o.max_nodes = max_nodes.value_or(o.max_nodes);
   o.max_modes = max_modes.value_or(o.max_modes);
   o.certificate = certificate;
+  o.svg = svg;
   const queries::SpatialModesAnswer ans = answer(queries::run_spatial_modes(s, o));
   return {queries::to_json(ans).dump(), ans.certificate_text};
 }
@@ -39,11 +41,12 @@ WithCertificate stability(const Spatial& s, const std::string& wrench, const std
   return {queries::to_json(ans).dump(), ans.certificate_text};
 }
 
-/// `cone SPATIAL --mode M`: the --json text.
-std::string cone(const Spatial& s, const std::string& mode, const std::string& arith, double time_limit) {
-  return queries::to_json(
-             answer(queries::run_spatial_cone(s, {{queries::parse_arith(arith, "--arith"), time_limit}, mode})))
-      .dump();
+/// `cone SPATIAL --mode M [--certificate F]`: the --json text and the certificate's.
+WithCertificate cone(const Spatial& s, const std::string& mode, const std::string& arith, double time_limit,
+                     const std::string& certificate) {
+  const queries::SpatialConeAnswer ans =
+      answer(queries::run_spatial_cone(s, {{queries::parse_arith(arith, "--arith"), time_limit}, mode, certificate}));
+  return {queries::to_json(ans).dump(), ans.certificate_text};
 }
 
 }  // namespace
@@ -57,7 +60,8 @@ void bind_spatial(py::module_& m) {
       .def_readonly("name", &Spatial::name)
       .def_readonly("text", &Spatial::text)
       .def_property_readonly("contacts", [](const Spatial& s) { return s.scene.contacts.size(); })
-      .def("modes", &modes, Release())
+      .def("modes", &modes, py::arg("arith"), py::arg("time_limit"), py::arg("max_nodes"), py::arg("max_modes"),
+           py::arg("certificate"), py::arg("svg") = "", Release())
       .def("stability", &stability, Release())
       .def("cone", &cone, Release());
 }

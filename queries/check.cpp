@@ -7,6 +7,7 @@
 #include "checker/frame_check.h"
 #include "checker/goal_check.h"
 #include "checker/modes_check.h"
+#include "checker/spatial_cone_check.h"
 #include "checker/spatial_modes_check.h"
 #include "checker/spatial_stability_check.h"
 #include "checker/stability_check.h"
@@ -98,6 +99,17 @@ void check_spatial_stability(const exact::JsonInput& cert, EmbeddedProblem&, Che
       "it line by line, and this text is another layout");
 }
 
+void check_spatial_cone(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
+  const checker::SpatialConeCheck k = checker::check_spatial_cone_certificate(cert);
+  take(k, c);
+  if (c.valid())
+    c.details = {{"dimension", k.dimension},
+                 {"rays", k.rays},
+                 {"lines", k.lines},
+                 {"inequalities", k.inequalities},
+                 {"strict", k.strict}};
+}
+
 void check_uniqueness(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
   const checker::UniquenessCertificateCheck u = checker::check_uniqueness_certificate(cert);
   take(u, c);
@@ -125,6 +137,7 @@ constexpr CertificateKind kKinds[] = {
     {"assembly_modes", true, check_assembly_modes},
     {"spatial_modes", true, check_spatial_modes},
     {"spatial_stability", true, check_spatial_stability},
+    {"spatial_cone", true, check_spatial_cone},
     {"motion_uniqueness", false, check_uniqueness},
 };
 

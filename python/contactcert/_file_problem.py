@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import json
 import os
+import pathlib
+from collections.abc import Callable
 from typing import Any, Protocol, TypeVar
 
 from ._options import ARITHS, LONG_MAX, Arith, choice, seconds, whole_number
@@ -54,6 +56,12 @@ class ModesProblem(FileProblem[M]):
         that realise it (an assembly: s l r n per contact, the 3N accelerations body by body; a spatial scene: s, f
         and the sliding letters per contact, (a, alpha) of the body); `certificate` is the file its completeness
         proof (assembly_modes or spatial_modes) is written to. Past a budget, BudgetExceeded."""
+        return self._modes(self._core.modes, arith, time_limit, max_nodes, max_modes, certificate)
+
+    def _modes(self, run: Callable[[str, float, int | None, int | None, str], tuple[str, str]], arith: Arith,
+               time_limit: float, max_nodes: int | None, max_modes: int | None, certificate: Path | None,
+               svg: str = "") -> Modes:
+        """modes() through `run` (the extension's modes, with what a subclass adds); `svg`: the picture's file."""
         from ._results import Certificate
 
         choice(arith, ARITHS, "--arith")
@@ -61,5 +69,6 @@ class ModesProblem(FileProblem[M]):
         max_nodes = None if max_nodes is None else whole_number(max_nodes, 1, LONG_MAX, "--max-nodes")
         max_modes = None if max_modes is None else whole_number(max_modes, 1, LONG_MAX, "--max-modes")
         path = os.fspath(certificate) if certificate is not None else ""
-        data, text = self._core.modes(arith, time_limit, max_nodes, max_modes, path)
-        return Modes(json.loads(data), certificate=Certificate(text, path) if text else None)
+        data, text = run(arith, time_limit, max_nodes, max_modes, path)
+        picture = (lambda: pathlib.Path(svg).read_text()) if svg else None
+        return Modes(json.loads(data), picture, certificate=Certificate(text, path) if text else None)

@@ -4,3 +4,5 @@ target_sources(contactcert_solvers PRIVATE spatial/spatial_modes.cpp)
 target_sources(contactcert_solvers PRIVATE spatial/spatial_stability.cpp spatial/spatial_stability_certificate.cpp)
 # The wrench cone of a spatial mode (6-D, both forms).
 target_sources(contactcert_solvers PRIVATE spatial/spatial_cone.cpp)
+# Its certificate (checker/spatial_cone_check.h).
+target_sources(contactcert_solvers PRIVATE spatial/spatial_cone_certificate.cpp)

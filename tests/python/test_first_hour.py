@@ -126,6 +126,7 @@ def core_signature(f):
     out = []
     for p in re.split(r", (?![^\[]*\])", params) if params else []:
         name, _, type_ = p.partition(": ")
+        type_ = type_.partition(" = ")[0]  # a default value (the stub writes it beside the annotation)
         unnamed = re.fullmatch(r"arg\d+", name)
         out.append(("self", None) if name == "self" else (None if unnamed else name, spell(type_)))
     return out, spell(ret)

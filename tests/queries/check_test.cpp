@@ -44,11 +44,11 @@ TEST(Check, UnknownKindNamesEveryKindOfTheTable) {
     check(cert);
     FAIL() << "no error";
   } catch (const exact::InputError& e) {
-    EXPECT_NE(
-        std::string(e.what()).find("expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, "
-                                   "cone_empty, cone_nonempty, goal_nonempty, assembly_stability, assembly_modes, "
-                                   "spatial_modes, spatial_stability or motion_uniqueness, found \"ucp_maybe\""),
-        std::string::npos)
+    EXPECT_NE(std::string(e.what()).find(
+                  "expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, "
+                  "cone_empty, cone_nonempty, goal_nonempty, assembly_stability, assembly_modes, "
+                  "spatial_modes, spatial_stability, spatial_cone or motion_uniqueness, found \"ucp_maybe\""),
+              std::string::npos)
         << e.what();
   }
 }

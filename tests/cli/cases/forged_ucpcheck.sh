@@ -9,7 +9,7 @@ check 2 'contacts is not the view of the checked witness' check "$work/uc_cone_c
 forge uc_st_resting 's/"c_n": "1"/"c_n": "2"/' "$work/st.json"
 check 2 'resting.contacts are not the world forces of the checked resting.forces' check "$work/uc_st_resting.json"
 forge uc_kind 's/"kind": "stability"/"kind": "stable"/' "$work/st.json"
-check 2 'expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, cone_empty, cone_nonempty, goal_nonempty, assembly_stability, assembly_modes, spatial_modes, spatial_stability or motion_uniqueness, found "stable"' \
+check 2 'expected a certificate kind: ucp_jammed, ucp_solvable, stability, modes, cone_empty, cone_nonempty, goal_nonempty, assembly_stability, assembly_modes, spatial_modes, spatial_stability, spatial_cone or motion_uniqueness, found "stable"' \
   check "$work/uc_kind.json"
 "$cc" ucp "$s/pang1994_dataset3_geometry.json" --certificate "$work/uc_geometry.json" > /dev/null
 check 0 'certificate is VALID for' check "$work/uc_geometry.json" --problem "$s/pang1994_dataset3_geometry.json"

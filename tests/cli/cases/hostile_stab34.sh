@@ -21,5 +21,5 @@ check 0 'dimension 6; face form' cone "$box" --mode ssss
 check 0 '"kind":"spatial","mode":"ffff"' cone "$box" --mode ffff --json
 check 2 '--mode: one letter per contact (4)' cone "$box" --mode ssz
 check 2 '--route: a spatial scene' cone "$box" --mode ssss --route project
-check 2 '--certificate: a spatial scene' cone "$box" --mode ssss --certificate "$st/cone.json"
+check 2 '--svg: a spatial scene' cone "$box" --mode ssss --svg "$st/cone.svg"
 check 2 '--arith: a spatial wrench cone is computed exactly' cone "$box" --mode ssss --arith float
