@@ -70,6 +70,19 @@ std::vector<LetterRow> letter_rows(const Seen& c, char L) {
   return {{c.n, false}, {next, false}, {prev, true}, {minus(c.d[(j + 2) % m], c.d[(j + 1) % m]), true}};
 }
 
+Rows prefix_rows(const std::vector<Seen>& cs, const std::string& prefix) {
+  Rows R;
+  R.columns.assign(6, Rows::Sign::kFree);
+  for (std::size_t i = 0; i < prefix.size(); ++i)
+    for (const LetterRow& r : letter_rows(cs[i], prefix[i])) {
+      R.rows.push_back(along(cs[i], r.u));
+      if (!r.strict) continue;
+      R.rows.back().push_back({R.columns.size(), Q(-1)});
+      R.columns.push_back(Rows::Sign::kPositive);
+    }
+  return R;
+}
+
 RowBlocks::RowBlocks(const std::vector<Seen>& cs) {
   for (const Seen& c : cs) {
     std::vector<Vec3> classes;

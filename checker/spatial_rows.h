@@ -45,6 +45,10 @@ struct LetterRow {
 /// Empty if L is not one of its letters.
 std::vector<LetterRow> letter_rows(const Seen& c, char L);
 
+/// The rows of a prefix (its letters' letter_rows, letter by letter): columns vdot (6, free), then one slack
+/// sigma > 0 per strict row (u . A vdot - sigma = 0), the layout of the `spatial_modes` certificate's dead prefixes.
+table2_check::Rows prefix_rows(const std::vector<Seen>& cs, const std::string& prefix);
+
 /// Every letter's rows at every contact, built once per scene, each with the class of its direction: the rows of a
 /// contact whose directions are equal or opposite share a class (one functional up to sign), so a weight on a class
 /// moves onto the row of that class of any letter there (spatial_stability_check.h's reused Motzkin vectors).
