@@ -15,11 +15,6 @@ Vec2<T> from_point(const Point2& p) {
   return {from_q<T>(p.x), from_q<T>(p.y)};
 }
 
-template <class T>
-std::vector<Vec2<T>> world_body(const std::vector<Vec2<T>>& body, const Pose<T>& pose) {
-  return geometry::apply_all(pose, body);
-}
-
 /// Whether x lies outside the closed interval between u and v (comparisons only).
 bool outside(const Q& x, const Q& u, const Q& v) { return (x < u && x < v) || (x > u && x > v); }
 
@@ -186,10 +181,15 @@ void body_contacts(const SceneGeometry<T>& g, int a, const std::vector<Vec2<T>>&
 }  // namespace
 
 template <class T>
-ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips) {
+WorldBodies<T> world_bodies(const SceneGeometry<T>& g, const Poses<T>& poses) {
+  WorldBodies<T> world;
+  for (std::size_t b = 0; b < g.bodies.size(); ++b) world.push_back(geometry::apply_all(poses[b], g.bodies[b]));
+  return world;
+}
+
+template <class T>
+ContactSet<T> find_contacts(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std::vector<Vec2<T>>& tips) {
   ContactSet<T> out;
-  std::vector<std::vector<Vec2<T>>> world;
-  for (std::size_t b = 0; b < g.bodies.size(); ++b) world.push_back(world_body(g.bodies[b], poses[b]));
   for (std::size_t b = 0; b < world.size(); ++b) {
     for (std::size_t o = 0; o < g.obstacles.size(); ++o) obstacle_contacts(g, int(b), world[b], o, out);
     for (std::size_t b2 = b + 1; b2 < world.size(); ++b2) {
@@ -218,8 +218,11 @@ ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Poses<T>& poses, co
 
 template <class T>
 std::string overlap(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips) {
-  std::vector<std::vector<Vec2<T>>> world;
-  for (std::size_t b = 0; b < g.bodies.size(); ++b) world.push_back(world_body(g.bodies[b], poses[b]));
+  return overlap(g, world_bodies(g, poses), tips);
+}
+
+template <class T>
+std::string overlap(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std::vector<Vec2<T>>& tips) {
   std::vector<Polygon<T>> bodies, obstacles;
   for (const std::vector<Vec2<T>>& x : world) bodies.push_back(polygon(x));
   for (const std::vector<Vec2<T>>& x : g.obstacles) obstacles.push_back(polygon(x));
@@ -361,9 +364,13 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::ve
       const Vec2<Interval> e = Y.enclosed[(j + 1) % Y.enclosed.size()] - a;
       const Vec2<Interval> w = turning ? p - c_in : p;
       const Interval K = turning ? cross2(c_in - a, e) : Interval(0);
-      if (closes_no_gap(gap_polynomial<Interval>(turning, body_point, p, w, X.velocity_in, v_in, a, e, K, k_in),
-                        limit_in))
-        return;
+      const std::vector<Interval> g_in =
+          gap_polynomial<Interval>(turning, body_point, p, w, X.velocity_in, v_in, a, e, K, k_in);
+      if (closes_no_gap(g_in, limit_in)) return;
+      // g_0 = (p - a) x e whatever the motion: a pair touching at the start, which the enclosure cannot prove, is
+      // skipped by that sign alone.
+      const Vec2<Q>& a0 = Y.x[j];
+      if (g_in[0].inf() <= 0 && sign(cross2(Y.x[(j + 1) % Y.x.size()] - a0, X.x[i] - a0)) >= 0) return;
     }
     if (!X.points[i]) X.points[i] = point(X.x[i], X.moves_on_its_own);
     if (!Y.segments[j]) Y.segments[j] = segment(Y.x, j);
@@ -500,16 +507,13 @@ void closing_of_pair(const SceneGeometry<T>& g, std::size_t a, const std::vector
 }  // namespace
 
 template <class T>
-std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const Poses<T>& poses,
+std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const WorldBodies<T>& world,
                                                const std::vector<Vec2<T>>& tips, const std::vector<Twist<T>>& twists,
                                                const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H) {
   std::optional<ClosingContact<T>> best;
   T limit = H;
-  std::vector<std::vector<Vec2<T>>> world;
-  for (std::size_t b = 0; b < g.bodies.size(); ++b) {
-    world.push_back(world_body(g.bodies[b], poses[b]));
+  for (std::size_t b = 0; b < world.size(); ++b)
     closing_of_body(g, b, world[b], tips, twists[b].v, twists[b].omega, free_velocity, H, best, limit);
-  }
   for (std::size_t a = 0; a < world.size(); ++a)
     for (std::size_t b = a + 1; b < world.size(); ++b) {
       if constexpr (std::is_same_v<T, Q>) {
@@ -525,10 +529,13 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
 
 #define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                       \
   template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                                \
-  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&); \
+  template WorldBodies<T> world_bodies<T>(const SceneGeometry<T>&, const Poses<T>&);                              \
+  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const WorldBodies<T>&,                         \
+                                          const std::vector<Vec2<T>>&);                                           \
+  template std::string overlap<T>(const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&);   \
   template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);         \
   template std::optional<ClosingContact<T>> first_closing<T>(                                                     \
-      const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&,        \
+      const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&,        \
       const std::vector<std::optional<Vec2<T>>>&, const T&);
 CONTACTCERT_MOTION_CONTACTS_INST(Q)
 CONTACTCERT_MOTION_CONTACTS_INST(double)
