@@ -527,15 +527,15 @@ std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const 
   return best;
 }
 
-#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                       \
-  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                                \
-  template WorldBodies<T> world_bodies<T>(const SceneGeometry<T>&, const Poses<T>&);                              \
-  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const WorldBodies<T>&,                         \
-                                          const std::vector<Vec2<T>>&);                                           \
-  template std::string overlap<T>(const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&);   \
-  template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);         \
-  template std::optional<ClosingContact<T>> first_closing<T>(                                                     \
-      const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&,        \
+#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                      \
+  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                               \
+  template WorldBodies<T> world_bodies<T>(const SceneGeometry<T>&, const Poses<T>&);                             \
+  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const WorldBodies<T>&,                        \
+                                          const std::vector<Vec2<T>>&);                                          \
+  template std::string overlap<T>(const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&);  \
+  template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);        \
+  template std::optional<ClosingContact<T>> first_closing<T>(                                                    \
+      const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&, \
       const std::vector<std::optional<Vec2<T>>>&, const T&);
 CONTACTCERT_MOTION_CONTACTS_INST(Q)
 CONTACTCERT_MOTION_CONTACTS_INST(double)

@@ -88,8 +88,8 @@ using WorldBodies = std::vector<std::vector<Vec2<T>>>;
 template <class T>
 WorldBodies<T> world_bodies(const SceneGeometry<T>& g, const Poses<T>& poses);
 
-/// The contacts of the bodies (vertices `world`) with the obstacles, each other and the finger tips `tips`: per body its
-/// obstacle contacts, then its contacts with the later bodies (its vertices on their edges, theirs on its), then
+/// The contacts of the bodies (vertices `world`) with the obstacles, each other and the finger tips `tips`: per body
+/// its obstacle contacts, then its contacts with the later bodies (its vertices on their edges, theirs on its), then
 /// the fingers'.
 template <class T>
 ContactSet<T> find_contacts(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std::vector<Vec2<T>>& tips);
@@ -113,25 +113,25 @@ struct ClosingContact {
 
 /// The first contact, not touching at the start, that closes in (0, H] while each body b moves by its twist
 /// twists[b] (geometry::twist_step) and every finger i with free_velocity[i] moves by it (nullopt: the finger is
-/// carried with a body or holds still), the bodies' vertices at the start being `world`. Candidates: each body vertex against each obstacle edge, each obstacle
-/// vertex against each body edge, each moving finger tip against each body edge, whose gap (times 1 + u^2) is a
-/// polynomial of degree <= 3 in the time, and each vertex of a body against each edge of another, whose gap (times
-/// the positive (1 + u_a^2)(1 + u_b^2)^2) is one of degree <= 6; with the point on the edge's segment at the root.
+/// carried with a body or holds still), the bodies' vertices at the start being `world`. Candidates: each body vertex
+/// against each obstacle edge, each obstacle vertex against each body edge, each moving finger tip against each body
+/// edge, whose gap (times 1 + u^2) is a polynomial of degree <= 3 in the time, and each vertex of a body against each
+/// edge of another, whose gap (times the positive (1 + u_a^2)(1 + u_b^2)^2) is one of degree <= 6; with the point on
+/// the edge's segment at the root.
 template <class T>
 std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const WorldBodies<T>& world,
                                                const std::vector<Vec2<T>>& tips, const std::vector<Twist<T>>& twists,
                                                const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H);
 
-#define CONTACTCERT_MOTION_CONTACTS_EXTERN(T)                                                                    \
-  extern template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                        \
-  extern template WorldBodies<T> world_bodies<T>(const SceneGeometry<T>&, const Poses<T>&);                     \
-  extern template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const WorldBodies<T>&,                 \
-                                                 const std::vector<Vec2<T>>&);                                   \
-  extern template std::string overlap<T>(const SceneGeometry<T>&, const WorldBodies<T>&,                         \
-                                         const std::vector<Vec2<T>>&);                                           \
-  extern template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&); \
-  extern template std::optional<ClosingContact<T>> first_closing<T>(                                             \
-      const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&, \
+#define CONTACTCERT_MOTION_CONTACTS_EXTERN(T)                                                                          \
+  extern template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                              \
+  extern template WorldBodies<T> world_bodies<T>(const SceneGeometry<T>&, const Poses<T>&);                            \
+  extern template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const WorldBodies<T>&,                       \
+                                                 const std::vector<Vec2<T>>&);                                         \
+  extern template std::string overlap<T>(const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&); \
+  extern template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);       \
+  extern template std::optional<ClosingContact<T>> first_closing<T>(                                                   \
+      const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&,       \
       const std::vector<std::optional<Vec2<T>>>&, const T&);
 CONTACTCERT_MOTION_CONTACTS_EXTERN(Q)
 CONTACTCERT_MOTION_CONTACTS_EXTERN(double)

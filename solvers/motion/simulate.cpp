@@ -151,8 +151,8 @@ struct FingerMotion {
   std::vector<std::optional<Vec2<T>>> free_velocity, carried_slip;
 };
 
-/// Records each contact's mode and force components in r, and says how each finger moves. A carried finger's slide along
-/// its edge e = J^T n over the step is a multiple of e (bounded), so the tip stays exactly on the edge.
+/// Records each contact's mode and force components in r, and says how each finger moves. A carried finger's slide
+/// along its edge e = J^T n over the step is a multiple of e (bounded), so the tip stays exactly on the edge.
 template <class T>
 FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& ph, const StepSchedule<T>& sched,
                                 StepRecord<T>& r) {

@@ -129,7 +129,7 @@ class Stepper {
   std::chrono::steady_clock::time_point start_;
   std::vector<std::string> previous_;  ///< the contacts of the last step
   bool ended_ = false;
-  Trajectory<T> out_;  ///< final_pose, final_time, final_tips: the state now
+  Trajectory<T> out_;     ///< final_pose, final_time, final_tips: the state now
   WorldBodies<T> world_;  ///< the bodies' vertices at out_.final_poses
 };
 
