@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/interval_number.h"
 #include "exact/nearest_double.h"
 #include "geometry/rigid_motion.h"
 #include "solvers/motion/motion_scene.h"
@@ -32,6 +33,9 @@ struct SceneGeometry {
   std::vector<Vec2<T>> coms, weights;
   std::vector<T> body_mu;
   std::vector<std::vector<Vec2<T>>> obstacles;
+  /// On the exact paths the interval enclosures of the obstacles' vertices (exact/interval_number.h), from which most
+  /// sign tests are taken without rationals; empty for double.
+  std::vector<std::vector<Vec2<exact::Interval>>> obstacles_enclosed;
   std::vector<T> obstacle_mu, finger_mu;
   std::vector<std::string> body_names, obstacle_names, finger_names;
 };
@@ -80,10 +84,13 @@ struct ContactSet {
   std::string unsupported;
 };
 
-/// Each body's vertices in the world at its pose (geometry::apply_all), made once per pose and shared by the
-/// contact search, the closing times and the overlap test.
+/// Each body's vertices in the world at its pose (geometry::apply_all) and on the exact paths their enclosures, made
+/// once per pose and shared by the contact search, the closing times and the overlap test.
 template <class T>
-using WorldBodies = std::vector<std::vector<Vec2<T>>>;
+struct WorldBodies {
+  std::vector<std::vector<Vec2<T>>> vertices;
+  std::vector<std::vector<Vec2<exact::Interval>>> enclosed;  ///< empty for double
+};
 
 template <class T>
 WorldBodies<T> world_bodies(const SceneGeometry<T>& g, const Poses<T>& poses);

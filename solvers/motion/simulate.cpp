@@ -100,7 +100,7 @@ std::vector<std::string> minus(const std::vector<std::string>& a, const std::vec
 template <class T>
 std::optional<std::pair<T, int>> slide_to_vertex(const WorldBodies<T>& world, const Contact<T>& c,
                                                  const Vec2<T>& slip) {
-  const std::vector<Vec2<T>>& body = world[static_cast<std::size_t>(c.which)];
+  const std::vector<Vec2<T>>& body = world.vertices[static_cast<std::size_t>(c.which)];
   const auto nb = static_cast<int>(body.size());
   const Vec2<T>& a = body[static_cast<std::size_t>(c.body)];
   const Vec2<T> e = body[static_cast<std::size_t>((c.body + 1) % nb)] - a;
