@@ -110,6 +110,7 @@ int run_assembly_ucp_command(const UcpCliOptions& o, const queries::AssemblyInpu
   q.max_bases = o.query.max_bases.value_or(q.max_bases);
   q.certificate = o.query.certificate;
   q.uniqueness = o.query.uniqueness;
+  q.command = queries::AssemblyUcpOptions::Command::kUcp;
   return print_assembly_answer(queries::run_assembly_ucp(in, q), o.file, o.common.json, "ucp");
 }
 

@@ -90,6 +90,8 @@ struct AssemblyUcpOptions {
   std::string svg;          ///< the picture's file, with the contact forces of a solution ("" = none)
   /// `ucp ASSEMBLY --all`: is the bodies' motion unique?
   UniquenessOptions uniqueness;
+  /// The command the user ran (`assembly FILE --ucp` or `ucp FILE`): it names the run in a budget's message.
+  enum class Command { kAssembly, kUcp } command = Command::kAssembly;
 };
 
 /// Body b's velocity: q_dot_b = (v_x, v_y, omega) of the body point at the world origin (torques about the origin,

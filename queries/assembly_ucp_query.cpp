@@ -41,8 +41,9 @@ Limited<AssemblyUcpAnswer> assembly_ucp_answer(const AssemblyInput& in, const As
   // The certificate embeds the assembly too: its checker derives P, Jn and Jt from the geometry itself.
   if (!options.certificate.empty()) ans.certificate_text = ucp::certificate_text(problem, ans.report, in.text);
   write_files(in, options, ans);
-  Limited<std::optional<UniquenessAnswer>> u =
-      decide_uniqueness(problem, ans.report, options.uniqueness, options.common.arith, "ucp " + in.name, in.text);
+  Limited<std::optional<UniquenessAnswer>> u = decide_uniqueness(
+      problem, ans.report, options.uniqueness, options.common.arith,
+      (options.command == AssemblyUcpOptions::Command::kUcp ? "ucp " : "assembly ") + in.name, in.text);
   if (!u) return u.limit();
   ans.uniqueness = *std::move(u);
   return ans;

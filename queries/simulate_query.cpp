@@ -106,7 +106,7 @@ json step_json(const motion::StepRecord<T>& s, const std::string& certificate,
     json cj{{"name", c.name}, {"mode", std::string(1, c.mode)}};
     put<T>(cj, "point", c.point);
     put<T>(cj, "normal", c.normal);
-    put<T>(cj, "force", c.force);
+    put<T>(cj, "force", c.force());
     contacts.push_back(cj);
   }
   j["contacts"] = contacts;

@@ -66,7 +66,7 @@ std::vector<Frame> frames_of(const motion::MotionScene& scene, const motion::Tra
     Frame f{bodies_at(scene, s.poses), {}, tips, {}, ""};
     std::string modes;
     for (const motion::ContactRecord<T>& c : s.contacts) {
-      f.contacts.push_back({view(c.point), view(c.force), c.mode});
+      f.contacts.push_back({view(c.point), view(c.force()), c.mode});
       modes += c.mode;
     }
     f.caption = "step " + std::to_string(s.index) + ", t = " + text_of(s.time) + ", h = " + text_of(s.h) + ": " +

@@ -15,45 +15,54 @@ Vec2<T> from_point(const Point2& p) {
   return {from_q<T>(p.x), from_q<T>(p.y)};
 }
 
-template <class T>
-std::vector<Vec2<T>> world_body(const std::vector<Vec2<T>>& body, const Pose<T>& pose) {
-  return geometry::apply_all(pose, body);
-}
-
 /// Whether x lies outside the closed interval between u and v (comparisons only).
 bool outside(const Q& x, const Q& u, const Q& v) { return (x < u && x < v) || (x > u && x > v); }
 
-/// Where p lies against the segment a -> b: 1 strictly inside it, 0 at an end, -1 off it (or off its line). The
-/// exact paths first reject a point outside the segment's bounding box by comparisons, which take no gcd (most pairs
-/// of a pose are far apart); the float path keeps its sign tolerance on the line test alone.
-template <class T>
-int on_segment(const Vec2<T>& p, const Vec2<T>& a, const Vec2<T>& b) {
-  if constexpr (std::is_same_v<T, Q>)
-    if (outside(p.x, a.x, b.x) || outside(p.y, a.y, b.y)) return -1;
-  const Vec2<T> e = b - a;
-  if (sign(cross2(e, p - a)) != 0) return -1;
-  const T s = dot2(p - a, e);
-  const int lo = sign(s), hi = sign(T(dot2(e, e) - s));
-  if (lo < 0 || hi < 0) return -1;
-  return lo > 0 && hi > 0 ? 1 : 0;
-}
-
 Vec2<exact::Interval> enclose(const Vec2<Q>& p) { return {exact::to_interval(p.x), exact::to_interval(p.y)}; }
+
+/// The enclosures of v's points on the exact paths; none for double.
+template <class T>
+std::vector<Vec2<exact::Interval>> enclosures(const std::vector<Vec2<T>>& v) {
+  std::vector<Vec2<exact::Interval>> out;
+  if constexpr (std::is_same_v<T, Q>)
+    for (const Vec2<Q>& x : v) out.push_back(enclose(x));
+  return out;
+}
 
 /// A polygon's vertices and, on the exact paths, their interval enclosures (exact/interval_number.h), from which
 /// most sign tests are taken without rationals.
 template <class T>
 struct Polygon {
   const std::vector<Vec2<T>>& v;
-  std::vector<Vec2<exact::Interval>> in{};
+  const std::vector<Vec2<exact::Interval>>& in;
 };
 
+/// True if the enclosures prove x outside the closed interval between u and v.
+bool outside(const exact::Interval& x, const exact::Interval& u, const exact::Interval& v) {
+  return x.sup() < std::min(u.inf(), v.inf()) || x.inf() > std::max(u.sup(), v.sup());
+}
+
+/// Where vertex k of P lies against the edge j of S (a -> b): 1 strictly inside it, 0 at an end, -1 off it (or off
+/// its line). The exact paths first reject a point that the enclosures prove outside the segment's bounding box or
+/// off its line, then one outside the box by comparisons, which take no gcd (most pairs of a pose are far apart);
+/// the float path keeps its sign tolerance on the line test alone.
 template <class T>
-Polygon<T> polygon(const std::vector<Vec2<T>>& v) {
-  Polygon<T> p{v};
-  if constexpr (std::is_same_v<T, Q>)
-    for (const Vec2<Q>& x : v) p.in.push_back(enclose(x));
-  return p;
+int on_segment(const Polygon<T>& P, std::size_t k, const Polygon<T>& S, std::size_t j) {
+  const std::size_t j1 = (j + 1) % S.v.size();
+  const Vec2<T>&p = P.v[k], &a = S.v[j], &b = S.v[j1];
+  if constexpr (std::is_same_v<T, Q>) {
+    const Vec2<exact::Interval>&pi = P.in[k], &ai = S.in[j], &bi = S.in[j1];
+    if (outside(pi.x, ai.x, bi.x) || outside(pi.y, ai.y, bi.y)) return -1;
+    const exact::Interval line = cross2(bi - ai, pi - ai);
+    if (line.inf() > 0 || line.sup() < 0) return -1;
+    if (outside(p.x, a.x, b.x) || outside(p.y, a.y, b.y)) return -1;
+  }
+  const Vec2<T> e = b - a;
+  if (sign(cross2(e, p - a)) != 0) return -1;
+  const T s = dot2(p - a, e);
+  const int lo = sign(s), hi = sign(T(dot2(e, e) - s));
+  if (lo < 0 || hi < 0) return -1;
+  return lo > 0 && hi > 0 ? 1 : 0;
 }
 
 /// The sign of e x (q - a) for x's edge i (a -> a + e) and vertex k of y: from the enclosures when they prove it (exact
@@ -126,6 +135,7 @@ SceneGeometry<T> scene_geometry(const MotionScene& scene) {
     std::vector<Vec2<T>> v;
     for (const Point2& p : o.vertices) v.push_back(from_point<T>(p));
     g.obstacles.push_back(v);
+    g.obstacles_enclosed.push_back(enclosures(v));
     g.obstacle_mu.push_back(from_q<T>(o.mu));
     g.obstacle_names.push_back(o.name.empty() ? "obstacle " + std::to_string(k) : o.name);
   }
@@ -140,14 +150,14 @@ namespace {
 
 /// The contacts of body `which` (vertices `body`, world) with obstacle o, appended to out (docs/motion.md, step 1).
 template <class T>
-void obstacle_contacts(const SceneGeometry<T>& g, int which, const std::vector<Vec2<T>>& body, std::size_t o,
-                       ContactSet<T>& out) {
+void obstacle_contacts(const SceneGeometry<T>& g, int which, const Polygon<T>& B, std::size_t o, ContactSet<T>& out) {
   const std::string& name = g.body_names[static_cast<std::size_t>(which)];
-  const std::vector<Vec2<T>>& ob = g.obstacles[o];
+  const std::vector<Vec2<T>>&ob = g.obstacles[o], &body = B.v;
+  const Polygon<T> O{ob, g.obstacles_enclosed[o]};
   const std::size_t nb = body.size();
   for (std::size_t i = 0; i < nb; ++i)
     for (std::size_t k = 0; k < ob.size(); ++k) {
-      const int where = on_segment(body[i], ob[k], ob[(k + 1) % ob.size()]);
+      const int where = on_segment(B, i, O, k);
       if (where == 0 && out.unsupported.empty())
         out.unsupported =
             name + " vertex " + std::to_string(i) + " on " + g.obstacle_names[o] + " vertex (normal not determined)";
@@ -159,7 +169,7 @@ void obstacle_contacts(const SceneGeometry<T>& g, int which, const std::vector<V
     }
   for (std::size_t k = 0; k < ob.size(); ++k)
     for (std::size_t i = 0; i < nb; ++i) {
-      if (on_segment(ob[k], body[i], body[(i + 1) % nb]) != 1) continue;
+      if (on_segment(O, k, B, i) != 1) continue;
       const Vec2<T> e = body[(i + 1) % nb] - body[i];
       out.contacts.push_back({ContactKind::kObstacleVertex, int(i), int(o), int(k), which, ob[k], perp2(e),
                               g.obstacle_mu[o], vertex_name(g.obstacle_names[o], k) + " on " + edge_name(name, i)});
@@ -168,12 +178,13 @@ void obstacle_contacts(const SceneGeometry<T>& g, int which, const std::vector<V
 
 /// The vertices of body a on the edges of body b (the force acts on a; mu is b's edge friction), appended to out.
 template <class T>
-void body_contacts(const SceneGeometry<T>& g, int a, const std::vector<Vec2<T>>& A, int b,
-                   const std::vector<Vec2<T>>& B, ContactSet<T>& out) {
+void body_contacts(const SceneGeometry<T>& g, int a, const Polygon<T>& PA, int b, const Polygon<T>& PB,
+                   ContactSet<T>& out) {
   const std::string &na = g.body_names[static_cast<std::size_t>(a)], &nb = g.body_names[static_cast<std::size_t>(b)];
+  const std::vector<Vec2<T>>&A = PA.v, &B = PB.v;
   for (std::size_t i = 0; i < A.size(); ++i)
     for (std::size_t k = 0; k < B.size(); ++k) {
-      const int where = on_segment(A[i], B[k], B[(k + 1) % B.size()]);
+      const int where = on_segment(PA, i, PB, k);
       if (where == 0 && out.unsupported.empty())
         out.unsupported = na + " vertex " + std::to_string(i) + " on " + nb + " vertex (normal not determined)";
       if (where != 1) continue;
@@ -186,25 +197,45 @@ void body_contacts(const SceneGeometry<T>& g, int a, const std::vector<Vec2<T>>&
 }  // namespace
 
 template <class T>
-ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips) {
+WorldBodies<T> world_bodies(const SceneGeometry<T>& g, const Poses<T>& poses) {
+  WorldBodies<T> world;
+  for (std::size_t b = 0; b < g.bodies.size(); ++b) {
+    world.vertices.push_back(geometry::apply_all(poses[b], g.bodies[b]));
+    world.enclosed.push_back(enclosures(world.vertices.back()));
+  }
+  return world;
+}
+
+/// Body b of `world` as a polygon.
+template <class T>
+Polygon<T> body_polygon(const WorldBodies<T>& world, std::size_t b) {
+  return {world.vertices[b], world.enclosed[b]};
+}
+
+template <class T>
+ContactSet<T> find_contacts(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std::vector<Vec2<T>>& tips) {
   ContactSet<T> out;
-  std::vector<std::vector<Vec2<T>>> world;
-  for (std::size_t b = 0; b < g.bodies.size(); ++b) world.push_back(world_body(g.bodies[b], poses[b]));
-  for (std::size_t b = 0; b < world.size(); ++b) {
-    for (std::size_t o = 0; o < g.obstacles.size(); ++o) obstacle_contacts(g, int(b), world[b], o, out);
-    for (std::size_t b2 = b + 1; b2 < world.size(); ++b2) {
+  const std::size_t n = world.vertices.size();
+  for (std::size_t b = 0; b < n; ++b) {
+    const Polygon<T> B = body_polygon(world, b);
+    for (std::size_t o = 0; o < g.obstacles.size(); ++o) obstacle_contacts(g, int(b), B, o, out);
+    for (std::size_t b2 = b + 1; b2 < n; ++b2) {
       if constexpr (std::is_same_v<T, Q>)
-        if (boxes_apart(world[b], world[b2], false)) continue;
-      body_contacts(g, int(b), world[b], int(b2), world[b2], out);
-      body_contacts(g, int(b2), world[b2], int(b), world[b], out);
+        if (boxes_apart(world.vertices[b], world.vertices[b2], false)) continue;
+      const Polygon<T> B2 = body_polygon(world, b2);
+      body_contacts(g, int(b), B, int(b2), B2, out);
+      body_contacts(g, int(b2), B2, int(b), B, out);
     }
   }
+  const std::vector<Vec2<exact::Interval>> tips_in = enclosures(tips);
+  const Polygon<T> fingers{tips, tips_in};
   for (std::size_t f = 0; f < tips.size(); ++f)
-    for (std::size_t b = 0; b < world.size(); ++b) {
-      const std::vector<Vec2<T>>& body = world[b];
+    for (std::size_t b = 0; b < n; ++b) {
+      const Polygon<T> B = body_polygon(world, b);
+      const std::vector<Vec2<T>>& body = B.v;
       const std::size_t nb = body.size();
       for (std::size_t i = 0; i < nb; ++i) {
-        const int where = on_segment(tips[f], body[i], body[(i + 1) % nb]);
+        const int where = on_segment(fingers, f, B, i);
         if (where == 0 && out.unsupported.empty())
           out.unsupported = g.finger_names[f] + " on a " + g.body_names[b] + " vertex (normal not determined)";
         if (where != 1) continue;
@@ -218,18 +249,22 @@ ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Poses<T>& poses, co
 
 template <class T>
 std::string overlap(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips) {
-  std::vector<std::vector<Vec2<T>>> world;
-  for (std::size_t b = 0; b < g.bodies.size(); ++b) world.push_back(world_body(g.bodies[b], poses[b]));
-  std::vector<Polygon<T>> bodies, obstacles;
-  for (const std::vector<Vec2<T>>& x : world) bodies.push_back(polygon(x));
-  for (const std::vector<Vec2<T>>& x : g.obstacles) obstacles.push_back(polygon(x));
-  const Polygon<T> fingers = polygon(tips);
-  for (std::size_t b = 0; b < world.size(); ++b) {
-    const Polygon<T>& body = bodies[b];
+  return overlap(g, world_bodies(g, poses), tips);
+}
+
+template <class T>
+std::string overlap(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std::vector<Vec2<T>>& tips) {
+  const std::vector<Vec2<exact::Interval>> tips_in = enclosures(tips);
+  const Polygon<T> fingers{tips, tips_in};
+  const std::size_t n = world.vertices.size();
+  for (std::size_t b = 0; b < n; ++b) {
+    const Polygon<T> body = body_polygon(world, b);
     for (std::size_t o = 0; o < g.obstacles.size(); ++o)
-      if (convex_overlap(body, obstacles[o])) return "the " + g.body_names[b] + " overlaps " + g.obstacle_names[o];
-    for (std::size_t b2 = b + 1; b2 < world.size(); ++b2)
-      if (convex_overlap(body, bodies[b2])) return "the " + g.body_names[b] + " overlaps the " + g.body_names[b2];
+      if (convex_overlap(body, Polygon<T>{g.obstacles[o], g.obstacles_enclosed[o]}))
+        return "the " + g.body_names[b] + " overlaps " + g.obstacle_names[o];
+    for (std::size_t b2 = b + 1; b2 < n; ++b2)
+      if (convex_overlap(body, body_polygon(world, b2)))
+        return "the " + g.body_names[b] + " overlaps the " + g.body_names[b2];
     for (std::size_t f = 0; f < tips.size(); ++f) {
       bool inside = true;
       for (std::size_t i = 0; i < body.v.size() && inside; ++i) inside = side(body, i, fingers, f) > 0;
@@ -277,12 +312,13 @@ bool closes_no_gap(const std::vector<Interval>& g, const Interval& H) {
 /// The first closing contact of body `which` (world vertices `body`, twist (v, omega)) with the obstacles and the
 /// free fingers before `limit`: updates best and limit.
 template <class T>
-void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::vector<Vec2<T>>& body,
+void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon<T>& world_body,
                      const std::vector<Vec2<T>>& tips, const Vec2<T>& v, const T& omega,
                      const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H,
                      std::optional<ClosingContact<T>>& best, T& limit) {
   constexpr bool exact_path = std::is_same_v<T, Q>;
   const std::string& name = g.body_names[which];
+  const std::vector<Vec2<T>>& body = world_body.v;
   const std::size_t nb = body.size();
   const bool turning = sign(omega) != 0;
   const T k = omega / T(2);  // u = k tau
@@ -336,9 +372,9 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::ve
     Vec2<Interval> velocity_in{};
   };
   const Vec2<T> zero{T(0), T(0)};
-  const auto enclosed = [&](Shape&& s) {
+  const auto enclosed = [&](Shape&& s, const std::vector<Vec2<Interval>>& points) {
     if constexpr (exact_path) {
-      for (const Vec2<Q>& p : s.x) s.enclosed.push_back(enclose(p));
+      s.enclosed = points;
       s.velocity_in = enclose(s.velocity);
     }
     return std::move(s);
@@ -361,9 +397,13 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::ve
       const Vec2<Interval> e = Y.enclosed[(j + 1) % Y.enclosed.size()] - a;
       const Vec2<Interval> w = turning ? p - c_in : p;
       const Interval K = turning ? cross2(c_in - a, e) : Interval(0);
-      if (closes_no_gap(gap_polynomial<Interval>(turning, body_point, p, w, X.velocity_in, v_in, a, e, K, k_in),
-                        limit_in))
-        return;
+      const std::vector<Interval> g_in =
+          gap_polynomial<Interval>(turning, body_point, p, w, X.velocity_in, v_in, a, e, K, k_in);
+      if (closes_no_gap(g_in, limit_in)) return;
+      // g_0 = (p - a) x e whatever the motion: a pair touching at the start, which the enclosure cannot prove, is
+      // skipped by that sign alone.
+      const Vec2<Q>& a0 = Y.x[j];
+      if (g_in[0].inf() <= 0 && sign(cross2(Y.x[(j + 1) % Y.x.size()] - a0, X.x[i] - a0)) >= 0) return;
     }
     if (!X.points[i]) X.points[i] = point(X.x[i], X.moves_on_its_own);
     if (!Y.segments[j]) Y.segments[j] = segment(Y.x, j);
@@ -390,10 +430,10 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::ve
     limit = root->tau;
     if constexpr (exact_path) limit_in = exact::to_interval(limit);
   };
-  Shape B = enclosed({body, zero});
+  Shape B = enclosed({body, zero}, world_body.in);
   for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
     const std::vector<Vec2<T>>& ob = g.obstacles[o];
-    Shape O = enclosed({ob, zero});
+    Shape O = enclosed({ob, zero}, g.obstacles_enclosed[o]);
     for (std::size_t i = 0; i < nb; ++i)
       for (std::size_t j = 0; j < ob.size(); ++j)
         consider(B, i, true, O, j, [&] { return vertex_name(name, i) + " on " + edge_name(g.obstacle_names[o], j); });
@@ -404,7 +444,7 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const std::ve
   for (std::size_t f = 0; f < tips.size(); ++f) {
     if (!free_velocity[f]) continue;
     const std::vector<Vec2<T>> at{tips[f]};
-    Shape tip = enclosed({at, *free_velocity[f], true});
+    Shape tip = enclosed({at, *free_velocity[f], true}, enclosures(at));
     for (std::size_t i = 0; i < nb; ++i)
       consider(tip, 0, false, B, i, [&] { return g.finger_names[f] + " on " + edge_name(name, i); });
   }
@@ -500,35 +540,36 @@ void closing_of_pair(const SceneGeometry<T>& g, std::size_t a, const std::vector
 }  // namespace
 
 template <class T>
-std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const Poses<T>& poses,
+std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const WorldBodies<T>& world,
                                                const std::vector<Vec2<T>>& tips, const std::vector<Twist<T>>& twists,
                                                const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H) {
   std::optional<ClosingContact<T>> best;
   T limit = H;
-  std::vector<std::vector<Vec2<T>>> world;
-  for (std::size_t b = 0; b < g.bodies.size(); ++b) {
-    world.push_back(world_body(g.bodies[b], poses[b]));
-    closing_of_body(g, b, world[b], tips, twists[b].v, twists[b].omega, free_velocity, H, best, limit);
-  }
-  for (std::size_t a = 0; a < world.size(); ++a)
-    for (std::size_t b = a + 1; b < world.size(); ++b) {
+  const std::vector<std::vector<Vec2<T>>>& v = world.vertices;
+  for (std::size_t b = 0; b < v.size(); ++b)
+    closing_of_body(g, b, body_polygon(world, b), tips, twists[b].v, twists[b].omega, free_velocity, H, best, limit);
+  for (std::size_t a = 0; a < v.size(); ++a)
+    for (std::size_t b = a + 1; b < v.size(); ++b) {
       if constexpr (std::is_same_v<T, Q>) {
-        const auto [alo, ahi] = swept_box(world[a], twists[a], H);
-        const auto [blo, bhi] = swept_box(world[b], twists[b], H);
+        const auto [alo, ahi] = swept_box(v[a], twists[a], H);
+        const auto [blo, bhi] = swept_box(v[b], twists[b], H);
         if (ahi.x < blo.x || bhi.x < alo.x || ahi.y < blo.y || bhi.y < alo.y) continue;
       }
-      closing_of_pair(g, a, world[a], b, world[b], twists, best, limit);
-      closing_of_pair(g, b, world[b], a, world[a], twists, best, limit);
+      closing_of_pair(g, a, v[a], b, v[b], twists, best, limit);
+      closing_of_pair(g, b, v[b], a, v[a], twists, best, limit);
     }
   return best;
 }
 
-#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                       \
-  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                                \
-  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&); \
-  template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);         \
-  template std::optional<ClosingContact<T>> first_closing<T>(                                                     \
-      const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&,        \
+#define CONTACTCERT_MOTION_CONTACTS_INST(T)                                                                      \
+  template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                               \
+  template WorldBodies<T> world_bodies<T>(const SceneGeometry<T>&, const Poses<T>&);                             \
+  template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const WorldBodies<T>&,                        \
+                                          const std::vector<Vec2<T>>&);                                          \
+  template std::string overlap<T>(const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&);  \
+  template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);        \
+  template std::optional<ClosingContact<T>> first_closing<T>(                                                    \
+      const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&, \
       const std::vector<std::optional<Vec2<T>>>&, const T&);
 CONTACTCERT_MOTION_CONTACTS_INST(Q)
 CONTACTCERT_MOTION_CONTACTS_INST(double)

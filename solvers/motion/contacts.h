@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/interval_number.h"
 #include "exact/nearest_double.h"
 #include "geometry/rigid_motion.h"
 #include "solvers/motion/motion_scene.h"
@@ -32,6 +33,9 @@ struct SceneGeometry {
   std::vector<Vec2<T>> coms, weights;
   std::vector<T> body_mu;
   std::vector<std::vector<Vec2<T>>> obstacles;
+  /// On the exact paths the interval enclosures of the obstacles' vertices (exact/interval_number.h), from which most
+  /// sign tests are taken without rationals; empty for double.
+  std::vector<std::vector<Vec2<exact::Interval>>> obstacles_enclosed;
   std::vector<T> obstacle_mu, finger_mu;
   std::vector<std::string> body_names, obstacle_names, finger_names;
 };
@@ -80,14 +84,28 @@ struct ContactSet {
   std::string unsupported;
 };
 
-/// The contacts of the bodies at `poses` with the obstacles, each other and the finger tips `tips`: per body its
-/// obstacle contacts, then its contacts with the later bodies (its vertices on their edges, theirs on its), then
+/// Each body's vertices in the world at its pose (geometry::apply_all) and on the exact paths their enclosures, made
+/// once per pose and shared by the contact search, the closing times and the overlap test.
+template <class T>
+struct WorldBodies {
+  std::vector<std::vector<Vec2<T>>> vertices;
+  std::vector<std::vector<Vec2<exact::Interval>>> enclosed;  ///< empty for double
+};
+
+template <class T>
+WorldBodies<T> world_bodies(const SceneGeometry<T>& g, const Poses<T>& poses);
+
+/// The contacts of the bodies (vertices `world`) with the obstacles, each other and the finger tips `tips`: per body
+/// its obstacle contacts, then its contacts with the later bodies (its vertices on their edges, theirs on its), then
 /// the fingers'.
 template <class T>
-ContactSet<T> find_contacts(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips);
+ContactSet<T> find_contacts(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std::vector<Vec2<T>>& tips);
 
 /// Whether two shapes overlap (their interiors meet; a finger tip strictly inside a body): names the pair, else
 /// empty. Convex polygons are disjoint iff an edge of one has the other on its closed outer side.
+template <class T>
+std::string overlap(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std::vector<Vec2<T>>& tips);
+/// The same at `poses`.
 template <class T>
 std::string overlap(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips);
 
@@ -102,22 +120,25 @@ struct ClosingContact {
 
 /// The first contact, not touching at the start, that closes in (0, H] while each body b moves by its twist
 /// twists[b] (geometry::twist_step) and every finger i with free_velocity[i] moves by it (nullopt: the finger is
-/// carried with a body or holds still). Candidates: each body vertex against each obstacle edge, each obstacle
-/// vertex against each body edge, each moving finger tip against each body edge, whose gap (times 1 + u^2) is a
-/// polynomial of degree <= 3 in the time, and each vertex of a body against each edge of another, whose gap (times
-/// the positive (1 + u_a^2)(1 + u_b^2)^2) is one of degree <= 6; with the point on the edge's segment at the root.
+/// carried with a body or holds still), the bodies' vertices at the start being `world`. Candidates: each body vertex
+/// against each obstacle edge, each obstacle vertex against each body edge, each moving finger tip against each body
+/// edge, whose gap (times 1 + u^2) is a polynomial of degree <= 3 in the time, and each vertex of a body against each
+/// edge of another, whose gap (times the positive (1 + u_a^2)(1 + u_b^2)^2) is one of degree <= 6; with the point on
+/// the edge's segment at the root.
 template <class T>
-std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const Poses<T>& poses,
+std::optional<ClosingContact<T>> first_closing(const SceneGeometry<T>& g, const WorldBodies<T>& world,
                                                const std::vector<Vec2<T>>& tips, const std::vector<Twist<T>>& twists,
                                                const std::vector<std::optional<Vec2<T>>>& free_velocity, const T& H);
 
-#define CONTACTCERT_MOTION_CONTACTS_EXTERN(T)                                                                    \
-  extern template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                        \
-  extern template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const Poses<T>&,                       \
-                                                 const std::vector<Vec2<T>>&);                                   \
-  extern template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&); \
-  extern template std::optional<ClosingContact<T>> first_closing<T>(                                             \
-      const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&,       \
+#define CONTACTCERT_MOTION_CONTACTS_EXTERN(T)                                                                          \
+  extern template SceneGeometry<T> scene_geometry<T>(const MotionScene&);                                              \
+  extern template WorldBodies<T> world_bodies<T>(const SceneGeometry<T>&, const Poses<T>&);                            \
+  extern template ContactSet<T> find_contacts<T>(const SceneGeometry<T>&, const WorldBodies<T>&,                       \
+                                                 const std::vector<Vec2<T>>&);                                         \
+  extern template std::string overlap<T>(const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&); \
+  extern template std::string overlap<T>(const SceneGeometry<T>&, const Poses<T>&, const std::vector<Vec2<T>>&);       \
+  extern template std::optional<ClosingContact<T>> first_closing<T>(                                                   \
+      const SceneGeometry<T>&, const WorldBodies<T>&, const std::vector<Vec2<T>>&, const std::vector<Twist<T>>&,       \
       const std::vector<std::optional<Vec2<T>>>&, const T&);
 CONTACTCERT_MOTION_CONTACTS_EXTERN(Q)
 CONTACTCERT_MOTION_CONTACTS_EXTERN(double)

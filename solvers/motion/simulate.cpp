@@ -98,13 +98,12 @@ std::vector<std::string> minus(const std::vector<std::string>& a, const std::vec
 /// A finger carried along body edge c.body with relative velocity `slip` (along the edge): the time it reaches the
 /// edge's end and which body vertex that is, if it ever does (linear in the body's frame).
 template <class T>
-std::optional<std::pair<T, int>> slide_to_vertex(const SceneGeometry<T>& g, const Poses<T>& poses, const Contact<T>& c,
+std::optional<std::pair<T, int>> slide_to_vertex(const WorldBodies<T>& world, const Contact<T>& c,
                                                  const Vec2<T>& slip) {
-  const std::vector<Vec2<T>>& body = g.bodies[static_cast<std::size_t>(c.which)];
-  const Pose<T>& pose = poses[static_cast<std::size_t>(c.which)];
+  const std::vector<Vec2<T>>& body = world.vertices[static_cast<std::size_t>(c.which)];
   const auto nb = static_cast<int>(body.size());
-  const Vec2<T> a = pose.apply(body[static_cast<std::size_t>(c.body)]);
-  const Vec2<T> e = pose.apply(body[static_cast<std::size_t>((c.body + 1) % nb)]) - a;
+  const Vec2<T>& a = body[static_cast<std::size_t>(c.body)];
+  const Vec2<T> e = body[static_cast<std::size_t>((c.body + 1) % nb)] - a;
   const T s0 = dot2(c.point - a, e), rate = dot2(slip, e);
   if (sign(rate) == 0) return std::nullopt;
   if (sign(rate) > 0) return std::pair<T, int>{T(dot2(e, e) - s0) / rate, (c.body + 1) % nb};
@@ -152,8 +151,8 @@ struct FingerMotion {
   std::vector<std::optional<Vec2<T>>> free_velocity, carried_slip;
 };
 
-/// Records each contact's mode and world force in r, and says how each finger moves. A carried finger's slide along
-/// its edge e = J^T n over the step is a multiple of e (bounded), so the tip stays exactly on the edge.
+/// Records each contact's mode and force components in r, and says how each finger moves. A carried finger's slide
+/// along its edge e = J^T n over the step is a multiple of e (bounded), so the tip stays exactly on the edge.
 template <class T>
 FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& ph, const StepSchedule<T>& sched,
                                 StepRecord<T>& r) {
@@ -163,10 +162,7 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
   std::size_t joint = 0;
   for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
     const Contact<T>& c = cs.contacts[i];
-    const Vec2<T> tvec = perp2(c.normal);
-    r.contacts.push_back(
-        {c.name, mode_letter(ph.vn[i], ph.vt[i]), c.point, c.normal,
-         Vec2<T>{ph.cn[i] * c.normal.x + ph.ct[i] * tvec.x, ph.cn[i] * c.normal.y + ph.ct[i] * tvec.y}});
+    r.contacts.push_back({c.name, mode_letter(ph.vn[i], ph.vt[i]), c.point, c.normal, ph.cn[i], ph.ct[i]});
     if (c.kind != ContactKind::kFinger) continue;
     const auto f = static_cast<std::size_t>(c.other);
     touching[f] = true;
@@ -218,10 +214,10 @@ Twist<T> applied_twist(const ContactSet<T>& cs, const StepRecord<T>& r, std::siz
 /// Cuts the step (r.h, cut_by, cut_exact) at the first contact that closes, or where a carried finger reaches the
 /// end of its edge, if before H.
 template <class T>
-void cut_step(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vector<Vec2<T>>& tips,
+void cut_step(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std::vector<Vec2<T>>& tips,
               const ContactSet<T>& cs, const FingerMotion<T>& m, const T& H, StepRecord<T>& r) {
   r.h = H;
-  if (const auto closing = first_closing(g, poses, tips, r.applied, m.free_velocity, H)) {
+  if (const auto closing = first_closing(g, world, tips, r.applied, m.free_velocity, H)) {
     r.h = closing->tau;
     r.cut_by = closing->name;
     r.cut_exact = closing->exact;
@@ -229,7 +225,7 @@ void cut_step(const SceneGeometry<T>& g, const Poses<T>& poses, const std::vecto
   for (const Contact<T>& c : cs.contacts) {
     const auto f = static_cast<std::size_t>(c.other);
     if (c.kind != ContactKind::kFinger || !m.carried_slip[f]) continue;
-    if (const auto end = slide_to_vertex(g, poses, c, *m.carried_slip[f]); end && end->first < r.h) {
+    if (const auto end = slide_to_vertex(world, c, *m.carried_slip[f]); end && end->first < r.h) {
       r.h = end->first;
       r.cut_by = g.finger_names[f] + " reaches body vertex " + std::to_string(end->second);
       r.cut_exact = true;
@@ -310,7 +306,8 @@ Stepper<T>::Stepper(MotionScene scene, const SimulateOptions& opts)
       exact_path ? (opts.arith == exact::Arith::kFloat ? exact::Arith::kVerified : opts.arith) : exact::Arith::kFloat;
   for (const Finger& f : scene_.fingers) out_.final_tips.push_back({from_q<T>(f.tip.x), from_q<T>(f.tip.y)});
   out_.final_poses.assign(g_.bodies.size(), Pose<T>{});
-  if (const std::string o = overlap(g_, out_.final_poses, out_.final_tips); !o.empty())
+  world_ = world_bodies(g_, out_.final_poses);
+  if (const std::string o = overlap(g_, world_, out_.final_tips); !o.empty())
     finish(RunStatus::kOverlap, o + " at time 0");
 }
 
@@ -346,7 +343,7 @@ bool Stepper<T>::step() {
   r.time = t;
   r.poses = r.poses_after = poses;
   r.tips_after = tips;
-  const ContactSet<T> cs = find_contacts(g_, poses, tips);
+  const ContactSet<T> cs = find_contacts(g_, world_, tips);
   std::vector<bool> held(poses.size(), false);  // every body needs a contact (else it would fall: no solution)
   for (const Contact<T>& c : cs.contacts) {
     held[static_cast<std::size_t>(c.which)] = true;
@@ -389,7 +386,7 @@ bool Stepper<T>::step() {
       exact_path && opts_.certificates && assembly ? exact::json_text(assembly_scene_json(*assembly)) : "";
   if (exact_path && opts_.certificates) r.certificate = ucp::certificate_text(problem, rep, assembly_text);
   if (rep.status != ucp::UcpStatus::kSolvable) {
-    for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal, {T(0), T(0)}});
+    for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal});
     r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
     out_.steps.push_back(r);
     const bool jammed = rep.status == ucp::UcpStatus::kJammed;
@@ -407,7 +404,7 @@ bool Stepper<T>::step() {
   const FingerMotion<T> fm = record_contacts(cs, ph, sched, r);
   for (std::size_t b = 0; b < poses.size(); ++b)
     r.applied.push_back(applied_twist(cs, r, b, ph.twists[b], poses[b], sched.H));
-  cut_step(g_, poses, tips, cs, fm, sched.H, r);
+  cut_step(g_, world_, tips, cs, fm, sched.H, r);
 
   Poses<T> steps;
   for (std::size_t b = 0; b < poses.size(); ++b) {
@@ -425,12 +422,13 @@ bool Stepper<T>::step() {
       tips[f] = tips[f] + r.h * *fm.free_velocity[f];
   }
   t = t + r.h;
+  world_ = world_bodies(g_, poses);
   r.poses_after = poses;
   r.tips_after = tips;
   r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
   out_.steps.push_back(std::move(r));
   const StepRecord<T>& last = out_.steps.back();
-  if (const std::string o = overlap(g_, poses, tips); !o.empty())
+  if (const std::string o = overlap(g_, world_, tips); !o.empty())
     finish(RunStatus::kOverlap, o + " after step " + std::to_string(k));
   else if (!last.cut_exact)
     finish(RunStatus::kIrrationalContactTime,

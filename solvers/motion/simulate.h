@@ -47,12 +47,20 @@ struct SimulateOptions {
 };
 
 /// A contact of a step: its name (contacts.h), mode (s separate, r roll, + / - slide along +t / -t, t = n turned
-/// by +90 degrees), point, inward normal (as written, non-unit) and the force c_n n + c_t t on its body (`which`).
+/// by +90 degrees; '?' no solution), point, inward normal (as written, non-unit) and the force's components c_n, c_t
+/// along n and t (not unit either).
 template <class T>
 struct ContactRecord {
   std::string name;
   char mode = 's';
-  Vec2<T> point, normal, force;
+  Vec2<T> point, normal;
+  T c_n = T(0), c_t = T(0);
+  /// The force c_n n + c_t t on its body (`which`), made only when it is reported; zero without a solution.
+  Vec2<T> force() const {
+    if (mode == '?') return {T(0), T(0)};
+    const Vec2<T> t = geometry::perp2(normal);
+    return {c_n * normal.x + c_t * t.x, c_n * normal.y + c_t * t.y};
+  }
 };
 
 /// One step: the problem at `poses` (time `time`), its verdict and certificate, the twists, the motion over `h`.
@@ -121,7 +129,8 @@ class Stepper {
   std::chrono::steady_clock::time_point start_;
   std::vector<std::string> previous_;  ///< the contacts of the last step
   bool ended_ = false;
-  Trajectory<T> out_;  ///< final_pose, final_time, final_tips: the state now
+  Trajectory<T> out_;     ///< final_pose, final_time, final_tips: the state now
+  WorldBodies<T> world_;  ///< the bodies' vertices at out_.final_poses
 };
 
 /// Runs the scene for N steps (or until the run ends): a Stepper stepped to its end.

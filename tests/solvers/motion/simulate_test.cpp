@@ -86,8 +86,8 @@ TEST(PushedBox, LowPushSlidesByExactlyNHV) {
   // Forces in world coordinates: the floor carries the weight, friction mu N = 1 balances the push.
   Q fx(0), fy(0);
   for (const ContactRecord<Q>& c : run.steps[0].contacts) {
-    fx += c.force.x;
-    fy += c.force.y;
+    fx += c.force().x;
+    fy += c.force().y;
   }
   EXPECT_EQ(fx, Q(0));
   EXPECT_EQ(fy, Q(1));
@@ -371,7 +371,7 @@ TEST(Schedule, AStepIsCutAtTheScheduleChangeAndAForceFingerHolds) {
   // The force finger pushes with 1/2 (world force on the body), friction holds it.
   for (const ContactRecord<Q>& c : run.steps[2].contacts)
     if (c.name == "finger pusher on body edge 3") {
-      EXPECT_EQ(c.force, (Vec2<Q>{Q(1, 2), Q(0)}));
+      EXPECT_EQ(c.force(), (Vec2<Q>{Q(1, 2), Q(0)}));
     }
   expect_certified_and_apart(scene, run);
 }
