@@ -153,17 +153,14 @@ SpatialStability spatial_stability(const geometry::SpatialScene& scene, const Ve
   out.lps += tree.lps;
   out.tree_nodes = tree.nodes;
   out.dead_prefixes = static_cast<long>(tree.dead.size());
-  if (out.has_resting) out.proofs.reserve(tree.dead.size() + tree.modes.size());  // no copies on growth
-  if (out.has_resting)
-    for (SpatialDeadPrefix& d : tree.dead) {
-      Vec<Q> y = dead_motzkin(tree, d);
-      out.proofs.push_back({std::move(d.prefix), true, std::move(y)});
-    }
+  if (out.has_resting) out.proofs.reserve(tree.modes.size());  // no copies on growth
   // Every feasible moving mode but f..f in tree order until one admits g; f..f last, only without a resting
   // solution (then its solutions have vdot != 0).
   std::vector<std::string> moving;
   for (std::string& m : tree.modes)
     if (m != sticking) moving.push_back(std::move(m));
+  tree.modes.clear();
+  tree.accelerations.clear();
   out.modes_kinematically_feasible = static_cast<long>(moving.size());
   if (!out.has_resting) moving.push_back(sticking);
   RecentProofs recent(model);
@@ -174,7 +171,7 @@ SpatialStability spatial_stability(const geometry::SpatialScene& scene, const Ve
     b.tail(6) = g;
     if (Vec<Q> y = recent.take(m, sys, b); y.size()) {
       ++out.modes_by_reuse;
-      if (out.has_resting) out.proofs.push_back({m, false, std::move(y)});
+      if (out.has_resting) out.proofs.push_back({m, std::move(y)});
       continue;
     }
     auto f = solve(sys, b);
@@ -186,9 +183,12 @@ SpatialStability spatial_stability(const geometry::SpatialScene& scene, const Ve
       out.moving = {m, weights_of(model, m, f.x), f.x.head(6)};
       break;
     }
-    if (out.has_resting) out.proofs.push_back({m, false, std::move(f.motzkin)});
+    if (out.has_resting) out.proofs.push_back({m, std::move(f.motzkin)});
   }
-  if (out.has_moving || !out.has_resting) out.proofs.clear();  // evidence only of a strongly stable verdict
+  if (out.has_moving || !out.has_resting)
+    out.proofs.clear();  // evidence only of a strongly stable verdict
+  else
+    out.tree = std::move(tree);
   out.verdict = !out.has_resting ? StabilityVerdict::kUnstable
                 : out.has_moving ? StabilityVerdict::kWeaklyStable
                                  : StabilityVerdict::kStronglyStable;

@@ -37,12 +37,9 @@ struct SpatialMotion {
   Vec<Q> acceleration;
 };
 
-/// A proof that no moving mode that extends `mode` admits g: with `kinematic`, a dead prefix of the mode tree and
-/// the Motzkin vector of its rows (spatial_modes.h, for every g); else a whole mode and the Motzkin vector of its
-/// system for g (spatial_motion_system).
+/// A proof that moving mode `mode` does not admit g: the Motzkin vector of its system for g (spatial_motion_system).
 struct SpatialModeProof {
   std::string mode;
-  bool kinematic = false;
   Vec<Q> motzkin;
 };
 
@@ -52,8 +49,11 @@ struct SpatialStability {
   Vec<Q> resting_weights;  ///< a zero-acceleration solution's beta, if has_resting
   Vec<Q> resting_motzkin;  ///< else: no resting solution exists
   bool has_moving = false;
-  SpatialMotion moving;                  ///< a solution with vdot != 0, if has_moving
-  std::vector<SpatialModeProof> proofs;  ///< strongly stable: the dead prefixes, then one per feasible moving mode
+  SpatialMotion moving;  ///< a solution with vdot != 0, if has_moving
+  /// Strongly stable: the mode tree's dead prefixes with their sparse proofs (spatial_modes.h; no moving mode that
+  /// extends one admits any g; dead_motzkin gives a prefix's vector), its modes not kept.
+  SpatialModeTree tree;
+  std::vector<SpatialModeProof> proofs;  ///< strongly stable: one per feasible moving mode
   long lps = 0;                          ///< the tree's and the verdict's
   long modes_checked = 0;                ///< moving modes whose system in g was decided
   long modes_by_reuse = 0;               ///< of them, proven by an earlier mode's Motzkin vector moved (no LP)

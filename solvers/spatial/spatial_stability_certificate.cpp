@@ -142,19 +142,21 @@ std::string spatial_stability_certificate(const geometry::SpatialScene& scene, c
   };
   std::vector<std::pair<std::string, Children>> parents;
   std::unordered_map<std::string, std::size_t> parent_at;
-  std::vector<std::string> modes;
-  for (const SpatialModeProof& p : r.proofs) {
-    const std::size_t v = vectors.index(names.line(p.mode, p.motzkin, !p.kinematic));
-    if (!p.kinematic) {
-      modes.push_back(json{{"mode", p.mode}, {"vector", v}}.dump());
-      continue;
-    }
-    const std::string parent = p.mode.substr(0, p.mode.size() - 1);
+  // A tree proof moved onto any prefix it proves weighs the same functionals by the same amounts (move_rows), so
+  // its line is the same on each: built once, from the first prefix it proves, one dense vector at a time.
+  std::vector<std::size_t> vector_of(r.tree.proofs.size(), r.tree.proofs.size());
+  for (const SpatialDeadPrefix& d : r.tree.dead) {
+    std::size_t& v = vector_of[d.proof];
+    if (v == r.tree.proofs.size()) v = vectors.index(names.line(d.prefix, dead_motzkin(r.tree, d), false));
+    const std::string parent = d.prefix.substr(0, d.prefix.size() - 1);
     const auto [it, fresh] = parent_at.try_emplace(parent, parents.size());
     if (fresh) parents.push_back({parent, {}});
-    parents[it->second].second.letters += p.mode.back();
+    parents[it->second].second.letters += d.prefix.back();
     parents[it->second].second.vectors.push_back(v);
   }
+  std::vector<std::string> modes;
+  for (const SpatialModeProof& p : r.proofs)
+    modes.push_back(json{{"mode", p.mode}, {"vector", vectors.index(names.line(p.mode, p.motzkin, true))}}.dump());
   std::vector<std::string> dead;
   for (const auto& [parent, children] : parents)
     dead.push_back(json{{"parent", parent}, {"letters", children.letters}, {"vectors", children.vectors}}.dump());

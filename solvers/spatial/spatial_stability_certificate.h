@@ -4,8 +4,9 @@
 // direction u of w_u = (u, r x u) up to sign), each dead prefix by its parent and its letter with the vector that
 // proves it, and each moving mode with its vector. The tree reuses a dead prefix's vector on later prefixes weighing
 // the same functionals, and the verdict a mode's vector on later modes (move_rows), so ~110 000 proofs at k = 16
-// name ~1 600 vectors; the checker (checker/spatial_stability_check.h) verifies each vector's balance once and its
-// signs on every row set it is applied to.
+// name ~1 600 vectors (the tree's proofs are sparse, spatial_modes.h: each is made dense once, for its line); the
+// checker (checker/spatial_stability_check.h) verifies each vector's balance once and its signs on every row set it
+// is applied to.
 #pragma once
 
 #include <string>
