@@ -8,7 +8,7 @@
 // contact walk proves each dead prefix; "NoReuse" is the same walk without reusing dead prefixes' certificates
 // (AssemblyStabilityOptions::reuse_certificates). Counters: N, k, the walk's nodes, LPs and dead prefixes, the
 // certificate's size in kB, the verdict (0 strongly stable, 1 weakly, 2 unstable), and whether the certificate checked
-// valid. A verdict gets kLimitSeconds (decided = 0 past it; a row of 16 takes about 12 s under load, docs/bench.md).
+// valid. A verdict gets kLimitSeconds (decided = 0 past it; a row of 16 takes about 7.5 s under load, docs/bench.md).
 //   build-bench/bench/assembly_bench --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>
 

@@ -6,6 +6,7 @@
 
 #include "exact/interval_number.h"
 #include "exact/mpfr_number.h"
+#include "exact/padic_solve.h"
 
 namespace contactcert::exact {
 
@@ -180,7 +181,8 @@ SolutionKind IntMatrix<R>::solve(R* N, R& d) {
 }
 
 template <class R>
-SolutionKind solve_sparse_square(const std::vector<SparseEquation<R>>& eqs, Index m, std::vector<R>& U, R& D) {
+SolutionKind solve_sparse_square(const std::vector<SparseEquation<R>>& eqs, Index m, std::vector<R>& U, R& D,
+                                 CoreSolve core) {
   using ring::mul;
   using ring::sign;
   using ring::sub;
@@ -248,7 +250,15 @@ SolutionKind solve_sparse_square(const std::vector<SparseEquation<R>>& eqs, Inde
   }
   std::vector<R> N(static_cast<std::size_t>(k));
   R d;
-  if (M.solve(N.data(), d) != SolutionKind::kUnique) return SolutionKind::kRankDeficient;
+  bool lifted = false;
+  if constexpr (std::is_same_v<R, Z>)
+    if (core == CoreSolve::kLifted && k >= kLiftedCoreFrom)
+      if (std::optional<LiftedSolution> s = padic_solve(M)) {
+        N = std::move(s->U);
+        d = std::move(s->D);
+        lifted = true;
+      }
+  if (!lifted && M.solve(N.data(), d) != SolutionKind::kUnique) return SolutionKind::kRankDeficient;
   // D u = N / d on the core (d > 0): U d over the common denominator D d.
   for (Index j = 0; j < m; ++j) {
     R& u = U[static_cast<std::size_t>(j)];
@@ -265,8 +275,9 @@ template class IntMatrix<Z>;
 template class SparseIntMatrix<std::int64_t>;
 template class SparseIntMatrix<Int128>;
 template class SparseIntMatrix<Z>;
-#define CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(R) \
-  template SolutionKind solve_sparse_square<R>(const std::vector<SparseEquation<R>>&, Index, std::vector<R>&, R&);
+#define CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(R)                                                                   \
+  template SolutionKind solve_sparse_square<R>(const std::vector<SparseEquation<R>>&, Index, std::vector<R>&, R&, \
+                                               CoreSolve);
 CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(std::int64_t)
 CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(Int128)
 CONTACTCERT_SOLVE_SPARSE_INSTANTIATE(Z)

@@ -251,13 +251,20 @@ struct SparseEquation {
   R rhs;
 };
 
+/// How solve_sparse_square solves its core: fraction-free elimination (IntMatrix::solve), or for R = Z and a core of
+/// at least kLiftedCoreFrom unknowns Dixon's p-adic lifting (padic_solve.h: k^3 word operations, not k^3 on growing
+/// integers), elimination deciding where it gives up. Both give the same u; U and D may differ by a common factor.
+enum class CoreSolve { kFractionFree, kLifted };
+inline constexpr Eigen::Index kLiftedCoreFrom = 16;
+
 /// The unique solution u = U / D (D > 0) of the square system `eqs` in m unknowns (m equations, each a list of terms
 /// with non-zero coefficients, at most one per unknown); kRankDeficient if it is singular (U, D unspecified). The
 /// equations with one open unknown fix it first, over a common denominator, and it is substituted into the rest,
 /// repeatedly; what is left, a core, goes to IntMatrix::solve. The matrix is block-triangular in that order, so it is
 /// singular exactly when the core is. Exact rings only.
 template <class R>
-SolutionKind solve_sparse_square(const std::vector<SparseEquation<R>>& eqs, Eigen::Index m, std::vector<R>& U, R& D);
+SolutionKind solve_sparse_square(const std::vector<SparseEquation<R>>& eqs, Eigen::Index m, std::vector<R>& U, R& D,
+                                 CoreSolve core = CoreSolve::kFractionFree);
 
 extern template class IntMatrix<std::int64_t>;
 extern template class IntMatrix<Int128>;
@@ -266,11 +273,12 @@ extern template class SparseIntMatrix<std::int64_t>;
 extern template class SparseIntMatrix<Int128>;
 extern template class SparseIntMatrix<Z>;
 extern template SolutionKind solve_sparse_square<std::int64_t>(const std::vector<SparseEquation<std::int64_t>>&,
-                                                               Eigen::Index, std::vector<std::int64_t>&, std::int64_t&);
+                                                               Eigen::Index, std::vector<std::int64_t>&, std::int64_t&,
+                                                               CoreSolve);
 extern template SolutionKind solve_sparse_square<Int128>(const std::vector<SparseEquation<Int128>>&, Eigen::Index,
-                                                         std::vector<Int128>&, Int128&);
+                                                         std::vector<Int128>&, Int128&, CoreSolve);
 extern template SolutionKind solve_sparse_square<Z>(const std::vector<SparseEquation<Z>>&, Eigen::Index,
-                                                    std::vector<Z>&, Z&);
+                                                    std::vector<Z>&, Z&, CoreSolve);
 extern template void IntMatrix<double>::make_primitive();
 extern template std::vector<Eigen::Index> IntMatrix<double>::echelon(Eigen::Index, Eigen::Index, Eigen::Index);
 

@@ -129,7 +129,7 @@ std::optional<RoundedVector<R>> basis_dual_solve(const IntegerLp& ilp, const std
     eqs.back().rhs = rhs[k];
   }
   RoundedVector<R> u;
-  if (solve_sparse_square(eqs, m, u.X, u.D) != SolutionKind::kUnique) return std::nullopt;
+  if (solve_sparse_square(eqs, m, u.X, u.D, CoreSolve::kLifted) != SolutionKind::kUnique) return std::nullopt;
   return u;
 }
 
@@ -178,7 +178,7 @@ std::optional<RoundedVector<R>> support_dual_solve(const IntegerLp& ilp, const s
       if (!chosen[static_cast<std::size_t>(e)] && E(e, c) != 0) E.row(e) -= (E(e, c) / E(p, c)) * E.row(p);
   }
   RoundedVector<R> v;
-  if (solve_sparse_square(square, s, v.X, v.D) != SolutionKind::kUnique) return std::nullopt;
+  if (solve_sparse_square(square, s, v.X, v.D, CoreSolve::kLifted) != SolutionKind::kUnique) return std::nullopt;
   RoundedVector<R> u{std::vector<R>(static_cast<std::size_t>(m), R(0)), v.D};
   for (Index t = 0; t < s; ++t)
     u.X[static_cast<std::size_t>(support[static_cast<std::size_t>(t)])] = v.X[static_cast<std::size_t>(t)];

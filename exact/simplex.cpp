@@ -246,7 +246,9 @@ LpResult<T> run_simplex(const LpProblem<T>& problem, const LpOptions& options) {
     res.farkas = -basis_duals(problem.A, problem.b, res.basis, cB);
     return res;
   }
-  // Drive the artificials (all at level 0) out of the basis; rows where that is impossible are redundant.
+  // Drive the artificials (all at level 0) out of the basis; rows where that is impossible are redundant (a pivot
+  // on another row leaves their zeros zero: they are dropped together at the end).
+  std::vector<Index> redundant;
   for (Index r = tab.rows() - 1; r >= 0; --r) {
     if (tab.basis()[static_cast<size_t>(r)] < n) continue;
     Index s = -1;
@@ -256,9 +258,10 @@ LpResult<T> run_simplex(const LpProblem<T>& problem, const LpOptions& options) {
       tab.pivot(r, s);
       ++pivots;
     } else {
-      tab.remove_row(r);
+      redundant.push_back(r);
     }
   }
+  tab.remove_rows(redundant);
   // Phase 2.
   tab.set_objective(problem.objective());
   const LoopOutcome out = simplex_loop(tab, problem.is_free, options, pivots);

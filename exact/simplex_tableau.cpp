@@ -1,5 +1,6 @@
 #include "exact/simplex_tableau.h"
 
+#include <algorithm>
 #include <cassert>
 
 #include "exact/field_ops.h"
@@ -38,12 +39,14 @@ std::optional<SimplexTableau<T>> SimplexTableau<T>::from_basis(const Mat<T>& A, 
   }
   // Rows left without a basic variable must be 0 = 0 (redundant), else the basis is too small or b is
   // outside the column space.
+  std::vector<Index> redundant;
   for (Index r = m - 1; r >= 0; --r) {
     if (tab.basis_[static_cast<size_t>(r)] >= 0) continue;
     for (Index j = 0; j <= n; ++j)
       if (!exact::is_zero(tab.entry(r, j))) return std::nullopt;
-    tab.remove_row(r);
+    redundant.push_back(r);
   }
+  tab.remove_rows(redundant);
   return tab;
 }
 
@@ -106,17 +109,28 @@ void SimplexTableau<T>::pivot(Index r, Index s) {
 }
 
 template <class T>
-void SimplexTableau<T>::remove_row(Index r) {
+void SimplexTableau<T>::remove_rows(const std::vector<Index>& rows) {
+  if (rows.empty()) return;
   const Index w = n_ + 1;
-  const Index leaving = basis_[static_cast<size_t>(r)];
-  if (leaving >= 0 && leaving < n_) row_of_[static_cast<size_t>(leaving)] = -1;
-  t_.erase(t_.begin() + r * w, t_.begin() + (r + 1) * w);
-  basis_.erase(basis_.begin() + r);
-  --m_;
-  for (Index i = r; i < m_; ++i) {
-    const Index v = basis_[static_cast<size_t>(i)];
-    if (v >= 0 && v < n_) row_of_[static_cast<size_t>(v)] = i;
+  std::vector<bool> drop(static_cast<size_t>(m_), false);
+  for (Index r : rows) drop[static_cast<size_t>(r)] = true;
+  Index kept = 0;
+  for (Index r = 0; r < m_; ++r) {
+    const Index v = basis_[static_cast<size_t>(r)];
+    if (drop[static_cast<size_t>(r)]) {
+      if (v >= 0 && v < n_) row_of_[static_cast<size_t>(v)] = -1;
+      continue;
+    }
+    if (kept != r) {
+      std::move(t_.begin() + r * w, t_.begin() + (r + 1) * w, t_.begin() + kept * w);
+      basis_[static_cast<size_t>(kept)] = v;
+    }
+    if (v >= 0 && v < n_) row_of_[static_cast<size_t>(v)] = kept;
+    ++kept;
   }
+  m_ = kept;
+  t_.resize(static_cast<size_t>(m_ * w));
+  basis_.resize(static_cast<size_t>(m_));
 }
 
 template <class T>

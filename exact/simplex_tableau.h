@@ -20,8 +20,7 @@ class SimplexTableau {
   /// The tableau of A x = b for the given basis (columns of A; |basis| = rank A), built by Gauss-Jordan
   /// elimination; rows of A that are redundant are dropped. nullopt if the columns are dependent, do not
   /// span the column space of A, or b is not in the column space of A.
-  static std::optional<SimplexTableau> from_basis(const Mat<T>& A, const Vec<T>& b,
-                                                  const std::vector<Index>& basis);
+  static std::optional<SimplexTableau> from_basis(const Mat<T>& A, const Vec<T>& b, const std::vector<Index>& basis);
   /// The phase-1 start of A x + S a = b, S = diag(sign b): every row basic in its artificial, rhs = |b|.
   static SimplexTableau artificial_start(const Mat<T>& A, const Vec<T>& b);
 
@@ -44,8 +43,9 @@ class SimplexTableau {
 
   /// Pivot: column j (non-basic, structural) enters in row r; entry(r, j) must be non-zero.
   void pivot(Index r, Index j);
-  /// Drops row r (a redundant row whose structural entries are all zero).
-  void remove_row(Index r);
+  /// Drops the rows `rows` (redundant rows whose structural entries are all zero; any order), moving each kept row
+  /// once.
+  void remove_rows(const std::vector<Index>& rows);
 
   /// Sets the objective row for costs c over the structural columns (artificials cost `artificial_cost`):
   /// reduced costs d = c - c_B^T B^-1 A and value c_B^T B^-1 b.

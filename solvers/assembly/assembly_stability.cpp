@@ -118,6 +118,7 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
   const std::vector<std::size_t>& order = r.contact_order;
   std::vector<Node> stack;
   CertificateMemory memory;
+  AssemblySystem s;  // the system of the prefix at hand, rebuilt in place
   {
     const AssemblySystem root = assembly_system(model, std::string(k, '*'));
     Vec<double> x_float;
@@ -147,7 +148,7 @@ void walk(const AssemblyModel& model, const AssemblyStabilityOptions& options, A
       Node child{prefix, node.vdot, node.c, node.vdot_float, node.c_float};
       if (!meets(model, order[i], L, node.vdot, node.c) &&
           !(prefix.size() < k && meets_float(model, order[i], L, node.vdot_float, node.c_float))) {
-        const AssemblySystem s = assembly_system(model, file_letters(order, prefix));
+        assembly_system(model, file_letters(order, prefix), s);
         if (options.reuse_certificates)
           if (std::optional<Vec<Q>> y = memory.recall(s, prefix.size())) {
             r.dead.push_back({std::move(prefix), std::move(*y)});

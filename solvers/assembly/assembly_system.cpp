@@ -52,24 +52,44 @@ std::array<Q, 2> contact_acceleration(const AssemblyModel& model, std::size_t i,
 }
 
 AssemblySystem assembly_system(const AssemblyModel& model, const std::string& letters, bool resting) {
+  AssemblySystem out;
+  assembly_system(model, letters, out, resting);
+  return out;
+}
+
+void assembly_system(const AssemblyModel& model, const std::string& letters, AssemblySystem& out, bool resting) {
   const std::size_t k = model.contacts.size();
   const auto N = static_cast<Index>(model.bodies());
   if (letters.size() != k) throw std::invalid_argument("assembly_system: one letter per contact");
-  AssemblySystem out;
   out.resting = resting;
   out.vdot_size = resting ? 0 : 3 * N;
+  out.row_label.clear();
   auto& S = out.system;
+  S.rows = S.cols = 0;
+  S.is_free.clear();
+  S.strict.clear();
   // At most 3N + 1 entries in the energy row and 3N on the diagonal of M; per contact 2 x 7 kinematic, 2 x 3
   // friction and 2 x 6 Newton-Euler entries (no reallocation: it would copy every fraction).
   S.entries.reserve(static_cast<std::size_t>(6 * N + 1) + 32 * k);
+  std::size_t used = 0;  // entries written; those of out's last system are overwritten (their limbs reused)
   const auto column = [&S](bool free, bool strict) {
     S.is_free.push_back(free);
     S.strict.push_back(strict);
     return S.cols++;
   };
-  const auto add = [&S](Index row, Index col, const Q& v) {
-    if (sgn(v) != 0) S.entries.push_back({row, col, v});
+  // a_{row, col} = v, or -v if `negate`.
+  const auto add = [&S, &used](Index row, Index col, const Q& v, bool negate = false) {
+    if (sgn(v) == 0) return;
+    if (used == S.entries.size()) S.entries.push_back({row, col, Q()});
+    exact::Entry<Q>& e = S.entries[used++];
+    e.row = row;
+    e.col = col;
+    if (negate)
+      e.value = -v;
+    else
+      e.value = v;
   };
+  const Q one(1), minus_one(-1);
   if (!resting) {
     for (Index j = 0; j < 3 * N; ++j) column(true, false);
     // The energy row g^T vdot - e = 0, e > 0 (header comment).
@@ -77,7 +97,7 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
     for (Index b = 0; b < N; ++b)
       for (Index d = 0; d < 3; ++d)
         add(0, 3 * b + d, model.g[static_cast<std::size_t>(b)][static_cast<std::size_t>(d)]);
-    add(0, e, Q(-1));
+    add(0, e, minus_one);
     ++S.rows;
     out.row_label.push_back(0);
   }
@@ -87,7 +107,7 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
       if (s.body < 0) continue;
       for (Index d = 0; d < 3; ++d) add(S.rows, 3 * s.body + d, (normal ? s.w_n : s.w_t)[static_cast<std::size_t>(d)]);
     }
-    if (sigma >= 0) add(S.rows, sigma, Q(slack_sign));
+    if (sigma >= 0) add(S.rows, sigma, one, slack_sign < 0);
     ++S.rows;
     out.row_label.push_back(1 + 4 * static_cast<Index>(i) + (normal ? 0 : 1));
   };
@@ -95,8 +115,8 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
     for (int sign : {-1, 1}) {
       const Index rho = column(false, false);
       add(S.rows, c_n, mu);
-      add(S.rows, c_t, Q(sign));
-      add(S.rows, rho, Q(-1));
+      add(S.rows, c_t, one, sign < 0);
+      add(S.rows, rho, minus_one);
       ++S.rows;
       out.row_label.push_back(1 + 4 * static_cast<Index>(i) + (sign < 0 ? 2 : 3));
     }
@@ -133,7 +153,10 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
   }
   // Newton-Euler rows: M_b vdot_b - sum_i (c_in w^b_in + c_it w^b_it) = g_b.
   const Index first = S.rows;
-  out.b = Vec<Q>::Zero(first + 3 * N);
+  if (out.b.size() == first + 3 * N)
+    out.b.setZero();
+  else
+    out.b = Vec<Q>::Zero(first + 3 * N);
   for (Index b = 0; b < N; ++b)
     for (Index d = 0; d < 3; ++d) {
       if (!resting)
@@ -149,17 +172,17 @@ AssemblySystem assembly_system(const AssemblyModel& model, const std::string& le
         const Q& wn = s.w_n[static_cast<std::size_t>(d)];
         const Q& wt = s.w_t[static_cast<std::size_t>(d)];
         if (out.c_t_column[i] >= 0) {
-          add(row, out.c_n_column[i], -wn);
-          add(row, out.c_t_column[i], -wt);
+          add(row, out.c_n_column[i], wn, true);
+          add(row, out.c_t_column[i], wt, true);
         } else {
-          add(row, out.c_n_column[i], -(wn + out.c_t_per_c_n[i] * wt));
+          add(row, out.c_n_column[i], wn + out.c_t_per_c_n[i] * wt, true);
         }
       }
     }
   }
   S.rows += 3 * N;
+  S.entries.erase(S.entries.begin() + static_cast<std::ptrdiff_t>(used), S.entries.end());
   for (Index r = 0; r < 3 * N; ++r) out.row_label.push_back(1 + 4 * static_cast<Index>(k) + r);
-  return out;
 }
 
 Vec<Q> AssemblySystem::acceleration(const Vec<Q>& x) const { return x.head(vdot_size); }

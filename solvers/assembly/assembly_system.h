@@ -70,6 +70,9 @@ struct AssemblySystem {
 };
 
 AssemblySystem assembly_system(const AssemblyModel& model, const std::string& letters, bool resting = false);
+/// The same written into `out`, whose storage is reused (the stability walk builds one system per prefix: the
+/// fractions of the last one are overwritten, not allocated anew).
+void assembly_system(const AssemblyModel& model, const std::string& letters, AssemblySystem& out, bool resting = false);
 
 /// a_in and a_it of contact i for accelerations vdot.
 std::array<Q, 2> contact_acceleration(const AssemblyModel& model, std::size_t i, const Vec<Q>& vdot);

@@ -130,5 +130,50 @@ TEST(AssemblyRandom, AgreesWithBruteForceOn4PowerKModes) {
   }
 }
 
+/// Every member of the systems a and b equal (entries in the same order).
+void expect_same_system(const AssemblySystem& a, const AssemblySystem& b, const std::string& what) {
+  ASSERT_EQ(a.system.rows, b.system.rows) << what;
+  ASSERT_EQ(a.system.cols, b.system.cols) << what;
+  ASSERT_EQ(a.system.entries.size(), b.system.entries.size()) << what;
+  for (std::size_t e = 0; e < a.system.entries.size(); ++e) {
+    const exact::Entry<Q>&x = a.system.entries[e], &y = b.system.entries[e];
+    EXPECT_TRUE(x.row == y.row && x.col == y.col && x.value == y.value) << what << ", entry " << e;
+  }
+  EXPECT_EQ(a.system.is_free, b.system.is_free) << what;
+  EXPECT_EQ(a.system.strict, b.system.strict) << what;
+  EXPECT_EQ(a.b, b.b) << what;
+  EXPECT_EQ(a.resting, b.resting) << what;
+  EXPECT_EQ(a.vdot_size, b.vdot_size) << what;
+  EXPECT_EQ(a.c_n_column, b.c_n_column) << what;
+  EXPECT_EQ(a.c_t_column, b.c_t_column) << what;
+  EXPECT_EQ(a.c_t_per_c_n, b.c_t_per_c_n) << what;
+  EXPECT_EQ(a.row_label, b.row_label) << what;
+}
+
+// The stability walk rebuilds every prefix's system in one AssemblySystem (assembly_system(model, letters, out)):
+// whatever system it held before (another assembly's, a resting one, more or fewer entries), the result is the
+// system built afresh.
+TEST(AssemblyRandom, SystemRebuiltInPlaceIsTheFreshSystem) {
+  std::mt19937_64 rng(32);
+  std::uniform_int_distribution<int> letter(0, 4), one_in_six(0, 5);
+  AssemblySystem reused;
+  int cases = 0;
+  for (int draw = 0; cases < 30 && draw < 1000; ++draw) {
+    const std::optional<geometry::Assembly> a = random_assembly(rng);
+    if (!a) continue;
+    ++cases;
+    const AssemblyModel model = assembly_model(*a);
+    for (int t = 0; t < 8; ++t) {
+      std::string letters;
+      for (std::size_t i = 0; i < model.contacts.size(); ++i) letters += "slrn*"[letter(rng)];
+      const bool resting = one_in_six(rng) == 0;
+      assembly_system(model, letters, reused, resting);
+      expect_same_system(reused, assembly_system(model, letters, resting),
+                         "draw " + std::to_string(draw) + ", " + letters + (resting ? " resting" : ""));
+    }
+  }
+  EXPECT_EQ(cases, 30);
+}
+
 }  // namespace
 }  // namespace contactcert::solvers::assembly
