@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <utility>
 
+#include "exact/rational_reconstruction.h"
+
 namespace contactcert::exact {
 namespace {
 
@@ -80,25 +82,6 @@ struct LuModP {
   }
 };
 
-/// n / d (d > 0, lowest terms) with n = d u mod m and |n|, d <= sqrt(m / 2), if there is one: the extended Euclidean
-/// algorithm on (m, u) stopped at the first remainder below the bound.
-bool reconstruct(const Z& u, const Z& m, const Z& bound, Z& n, Z& d) {
-  Z r0 = m, r1 = u, t0 = 0, t1 = 1, q, t;
-  while (r1 > bound) {
-    mpz_fdiv_q(q.get_mpz_t(), r0.get_mpz_t(), r1.get_mpz_t());
-    t = r0 - q * r1;
-    r0 = std::move(r1);
-    r1 = std::move(t);
-    t = t0 - q * t1;
-    t0 = std::move(t1);
-    t1 = std::move(t);
-  }
-  if (abs(t1) > bound || gcd(r1, t1) != 1) return false;
-  n = sgn(t1) < 0 ? Z(-r1) : r1;
-  d = abs(t1);
-  return true;
-}
-
 /// The entries of X mod P over a common denominator (each reconstructed after multiplying by the denominator of
 /// those before: once it is the whole denominator, the rest are integers), checked against A n = d b.
 std::optional<LiftedSolution> reconstructed(const IntMatrix<Z>& M, const std::vector<Z>& X, const Z& P) {
@@ -111,7 +94,7 @@ std::optional<LiftedSolution> reconstructed(const IntMatrix<Z>& M, const std::ve
   for (Index i = 0; i < k; ++i) {
     w = s.D * X[static_cast<std::size_t>(i)];
     mpz_fdiv_r(w.get_mpz_t(), w.get_mpz_t(), P.get_mpz_t());
-    if (!reconstruct(w, P, bound, n, d)) return std::nullopt;
+    if (!reconstruct_modular(w, P, bound, n, d)) return std::nullopt;
     if (d != 1) {
       for (Index j = 0; j < i; ++j) s.U[static_cast<std::size_t>(j)] *= d;
       s.D *= d;

@@ -84,4 +84,21 @@ bool reconstruct_vector(const std::vector<double>& v, std::vector<R>& out, R& D)
 template bool reconstruct_vector<Int128>(const std::vector<double>&, std::vector<Int128>&, Int128&);
 template bool reconstruct_vector<Z>(const std::vector<double>&, std::vector<Z>&, Z&);
 
+bool reconstruct_modular(const Z& u, const Z& m, const Z& bound, Z& n, Z& d) {
+  Z r0 = m, r1 = u, t0 = 0, t1 = 1, q, t;
+  while (r1 > bound) {
+    mpz_fdiv_q(q.get_mpz_t(), r0.get_mpz_t(), r1.get_mpz_t());
+    t = r0 - q * r1;
+    r0 = std::move(r1);
+    r1 = std::move(t);
+    t = t0 - q * t1;
+    t0 = std::move(t1);
+    t1 = std::move(t);
+  }
+  if (abs(t1) > bound || gcd(r1, t1) != 1) return false;
+  n = sgn(t1) < 0 ? Z(-r1) : r1;
+  d = abs(t1);
+  return true;
+}
+
 }  // namespace contactcert::exact

@@ -1,6 +1,7 @@
 // Rational reconstruction: the simple fraction a float approximates, read off the continued fraction of the
-// float's exact (dyadic) value under a denominator bound. Every "round the float answer, then check it
-// exactly" of the verified paths reconstructs its numbers here.
+// float's exact (dyadic) value under a denominator bound, and the fraction a residue modulo m stands for (Dixon's
+// p-adic lifting, padic_solve.h). Every "round the float answer, then check it exactly" of the verified paths
+// reconstructs its numbers here.
 #pragma once
 
 #include <cstdint>
@@ -29,6 +30,11 @@ std::optional<Fraction> reconstruct(double v);
 /// does not fit.
 template <class R>
 bool reconstruct_vector(const std::vector<double>& v, std::vector<R>& out, R& D);
+
+/// n / d (d > 0, lowest terms) with n = d u mod m and |n|, d <= bound (bound <= sqrt(m / 2) makes it unique), if
+/// there is one: the extended Euclidean algorithm on (m, u) stopped at the first remainder <= bound (von zur Gathen
+/// and Gerhard, Modern Computer Algebra, section 5.10).
+bool reconstruct_modular(const Z& u, const Z& m, const Z& bound, Z& n, Z& d);
 
 extern template bool reconstruct_vector<Int128>(const std::vector<double>&, std::vector<Int128>&, Int128&);
 extern template bool reconstruct_vector<Z>(const std::vector<double>&, std::vector<Z>&, Z&);
