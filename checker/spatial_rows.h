@@ -46,7 +46,7 @@ struct LetterRow {
 std::vector<LetterRow> letter_rows(const Seen& c, char L);
 
 /// The rows of a prefix (its letters' letter_rows, letter by letter): columns vdot (6, free), then one slack
-/// sigma > 0 per strict row (u . A vdot - sigma = 0), the layout of the `spatial_modes` certificate's dead prefixes.
+/// sigma > 0 per strict row (u . A vdot - sigma = 0), a prefix's kinematic system (docs/formats.md section 5b).
 table2_check::Rows prefix_rows(const std::vector<Seen>& cs, const std::string& prefix);
 
 /// Every letter's rows at every contact, built once per scene, each with the class of its direction: the rows of a
