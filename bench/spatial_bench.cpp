@@ -21,6 +21,7 @@
 #include "geometry/spatial_scene.h"
 #include "runtime/memory.h"
 #include "solvers/spatial/spatial_modes.h"
+#include "solvers/spatial/spatial_modes_certificate.h"
 #include "solvers/spatial/spatial_stability.h"
 #include "solvers/spatial/spatial_stability_certificate.h"
 

@@ -5,15 +5,16 @@
 // j and j + 1 (letter 2j + 1): the maximal-dissipation law read globally, over all edges.
 #pragma once
 
+#include "checker/certificate_lines.h"
 #include "checker/modes_check.h"
-#include "exact/json_input.h"
 
 namespace contactcert::checker {
 
 /// Verifies a "spatial_modes" certificate against its embedded scene: each listed acceleration realises its mode,
-/// each dead prefix's Motzkin vector proves its rows infeasible (the rows of solvers/spatial/spatial_modes.h's
-/// table, rebuilt here from the scene), and together they partition the mode strings (mode_coverage). Malformed
-/// certificates throw InputError naming the field.
-ModesCertificateCheck check_spatial_modes_certificate(const exact::JsonInput& certificate);
+/// each dead prefix's vector proves its rows infeasible (the rows of solvers/spatial/spatial_modes.h's table,
+/// rebuilt here from the scene; spatial_proofs.h), and together they partition the mode strings (mode_coverage). The
+/// certificate is read in lines (certificate_lines.h: its members, then the lists "vectors", "dead" and "modes" one
+/// element a line, each parsed alone); a malformed one throws InputError naming the line and the field.
+ModesCertificateCheck check_spatial_modes_certificate(const CertificateLines& certificate);
 
 }  // namespace contactcert::checker

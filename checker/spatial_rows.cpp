@@ -100,47 +100,6 @@ RowBlocks::RowBlocks(const std::vector<Seen>& cs) {
     std::vector<std::vector<Rows::Entry>>& functionals = functionals_.emplace_back();
     for (const Vec3& u : classes) functionals.push_back(along(c, u));
   }
-  exact::Z D = 1;
-  for (const auto& contact : functionals_)
-    for (const auto& f : contact)
-      for (const Rows::Entry& e : f) D = lcm(D, e.value.get_den());
-  for (const auto& contact : functionals_) {
-    auto& integers = integer_functionals_.emplace_back();
-    for (const auto& f : contact) {
-      auto& row = integers.emplace_back();
-      for (const Rows::Entry& e : f) row.emplace_back(e.col, e.value.get_num() * (D / e.value.get_den()));
-    }
-  }
-}
-
-std::size_t RowBlocks::row_count(const std::string& prefix) const {
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < prefix.size(); ++i) n += rows(i, prefix[i])->size();
-  return n;
-}
-
-bool prefix_motzkin_holds(const RowBlocks& blocks, const std::string& prefix,
-                          const std::vector<std::pair<std::size_t, Q>>& y) {
-  std::array<exact::Z, 6> sum{};  // sum y_r (D f_r): the weights are integers (read_sparse_motzkin_pairs)
-  bool strict_negative = false;
-  auto w = y.begin();
-  for (std::size_t i = 0, first = 0; i < prefix.size() && w != y.end(); ++i) {
-    const std::vector<RowBlocks::Row>& rows = *blocks.rows(i, prefix[i]);
-    for (; w != y.end() && w->first < first + rows.size(); ++w) {
-      const RowBlocks::Row& row = rows[w->first - first];
-      const int s = sgn(w->second);  // y_r on row r = sign * its class's functional
-      if (row.strict && s > 0) return false;
-      strict_negative = strict_negative || (row.strict && s < 0);
-      for (const auto& [col, v] : blocks.integer_functional(i, row.cls))
-        if (row.sign > 0)
-          sum[col] += w->second.get_num() * v;
-        else
-          sum[col] -= w->second.get_num() * v;
-    }
-    first += rows.size();
-  }
-  if (w != y.end()) return false;  // a row past the prefix's
-  return strict_negative && std::all_of(sum.begin(), sum.end(), [](const exact::Z& x) { return sgn(x) == 0; });
 }
 
 const std::vector<RowBlocks::Row>* RowBlocks::rows(std::size_t i, char L) const {

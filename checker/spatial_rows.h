@@ -46,7 +46,7 @@ struct LetterRow {
 std::vector<LetterRow> letter_rows(const Seen& c, char L);
 
 /// The rows of a prefix (its letters' letter_rows, letter by letter): columns vdot (6, free), then one slack
-/// sigma > 0 per strict row (u . A vdot - sigma = 0), the layout of the `spatial_modes` certificate's dead prefixes.
+/// sigma > 0 per strict row (u . A vdot - sigma = 0), a prefix's kinematic system (docs/formats.md section 5b).
 table2_check::Rows prefix_rows(const std::vector<Seen>& cs, const std::string& prefix);
 
 /// Every letter's rows at every contact, built once per scene, each with the class of its direction: the rows of a
@@ -67,26 +67,11 @@ class RowBlocks {
   const std::vector<table2_check::Rows::Entry>& functional(std::size_t i, std::size_t cls) const {
     return functionals_[i][cls];
   }
-  /// The same row times one common denominator D > 0 of all rows, integers: sum y_r f_r = 0 iff sum y_r (D f_r) = 0,
-  /// so integer weights y sum in integer arithmetic (no gcd per operation).
-  const std::vector<std::pair<std::size_t, exact::Z>>& integer_functional(std::size_t i, std::size_t cls) const {
-    return integer_functionals_[i][cls];
-  }
-  /// The rows of a prefix: its letters' rows, letter by letter (the certificates' layout of a prefix's rows).
-  std::size_t row_count(const std::string& prefix) const;
 
  private:
   std::vector<std::vector<std::vector<Row>>> rows_;  ///< per contact and letter (s, f, 'A', 'B', ...)
   std::vector<std::vector<std::vector<table2_check::Rows::Entry>>> functionals_;  ///< per contact and class
-  std::vector<std::vector<std::vector<std::pair<std::size_t, exact::Z>>>> integer_functionals_;  ///< D times those
 };
-
-/// Whether weights (row, y_r) on the rows of `prefix` (letter by letter in letter_rows' order; rows ascending) are a
-/// Motzkin certificate that those rows have no solution (table2_check::motzkin_holds's conditions with b = 0:
-/// sum_r y_r (u_r, r x u_r) = 0 on vdot, y_r <= 0 on every strict row, and one < 0), from the blocks: time linear in
-/// the letters and the weights.
-bool prefix_motzkin_holds(const RowBlocks& blocks, const std::string& prefix,
-                          const std::vector<std::pair<std::size_t, exact::Q>>& y);
 
 /// Whether vdot = (a, alpha) realises the letters, read directly from the contact point's acceleration.
 bool realises(const std::vector<Seen>& cs, const std::string& mode, const exact::Vec<exact::Q>& vdot);

@@ -4,7 +4,7 @@
 
 #include "checker/mode_coverage.h"
 #include "checker/sparse_motzkin_reader.h"
-#include "checker/spatial_rows.h"
+#include "checker/spatial_proofs.h"
 
 namespace contactcert::checker {
 namespace {
@@ -44,140 +44,22 @@ std::string motion_fault(const geometry::SpatialBody& body, const std::vector<Se
   return {};
 }
 
-/// A Motzkin vector of the certificate's "vectors", read once: its weights by row class (contact, class; RowBlocks)
-/// and its six Newton-Euler weights z, with what does not depend on the rows it is applied to verified once: that it
-/// balances on vdot's columns (sum_w w (u, r x u) of its classes' directions + M^T z = 0), sgn(z . g), and per
-/// contact and edge the sign of -z . (u, r x u), u = n + d_j (the weight column beta_ij of a mode's system).
-struct Vector {
-  struct Weight {
-    std::size_t contact, cls;
-    Q w;  ///< on the class's direction
-  };
-  std::vector<Weight> weights;
-  bool dynamics = false;  ///< z != 0
-  bool balanced = false;
-  int zg = 0;
-  std::vector<std::vector<int>> beta_signs;  ///< per contact and edge
-};
-
-/// The weight columns' rows (u, r x u), u = n + d_j, per contact and edge: built once per scene.
-using EdgeRows = std::vector<std::vector<std::vector<Rows::Entry>>>;
-
-Vector read_vector(const exact::JsonInput& e, const geometry::SpatialBody& body, const RowBlocks& blocks,
-                   const EdgeRows& edges, const Vec<Q>& g) {
-  e.expect_keys({"rows", "motzkin"});
-  const exact::JsonInput rows = e.at("rows");
-  const std::size_t n = rows.size();
-  const Vec<Q> y = read_sparse_motzkin(e.at("motzkin"), n + 6);  // the rows', then z's
-  Vector v;
-  Vec<Q> balance = Vec<Q>::Zero(6);
-  for (std::size_t r = 0; r < n; ++r) {
-    const exact::JsonInput row = rows.at(r);
-    if (!row.is_array() || row.size() != 3) row.fail("a row [contact, letter, row of the letter]");
-    const auto i = static_cast<std::size_t>(row.at(0).integer(0, static_cast<long>(edges.size()) - 1));
-    const std::string L = row.at(1).string();
-    const auto* letter = L.size() == 1 ? blocks.rows(i, L[0]) : nullptr;
-    if (letter == nullptr) row.at(1).fail("a letter of contact " + std::to_string(i) + ": s, f or A..");
-    const RowBlocks::Row& at =
-        (*letter)[static_cast<std::size_t>(row.at(2).integer(0, static_cast<long>(letter->size()) - 1))];
-    const Q& w = y(static_cast<Eigen::Index>(r));
-    if (sgn(w) == 0) row.fail("a row the vector weighs (its motzkin lists every row)");
-    for (const Vector::Weight& x : v.weights)
-      if (x.contact == i && x.cls == at.cls) row.fail("each functional weighed once: this row's is weighed twice");
-    v.weights.push_back({i, at.cls, at.sign > 0 ? w : Q(-w)});
-    for (const Rows::Entry& f : blocks.functional(i, at.cls))
-      balance(static_cast<Eigen::Index>(f.col)) += v.weights.back().w * f.value;
-  }
-  const Vec<Q> z = y.tail(6);
-  v.dynamics = !z.isZero();
-  for (std::size_t d = 0; d < 6 && v.dynamics; ++d)
-    for (const Rows::Entry& f : mass_row(body, d))
-      balance(static_cast<Eigen::Index>(f.col)) += z(static_cast<Eigen::Index>(d)) * f.value;
-  v.balanced = balance.isZero();
-  v.zg = sgn(z.dot(g));
-  for (const std::vector<std::vector<Rows::Entry>>& contact : edges) {
-    std::vector<int>& signs = v.beta_signs.emplace_back(contact.size(), 0);
-    for (std::size_t j = 0; j < signs.size() && v.dynamics; ++j) {
-      Q dot(0);
-      for (const Rows::Entry& f : contact[j]) dot -= z(static_cast<Eigen::Index>(f.col)) * f.value;
-      signs[j] = sgn(dot);
-    }
-  }
-  return v;
-}
-
-/// Whether v, placed on the rows of `letters` (each weight on its class's row in the letter at its contact, an
-/// equality row before a strict one, times the row's sign), is a Motzkin certificate (table2_check::motzkin_holds's
-/// conditions) of the letters' kinematic rows (a dead prefix: v has no dynamics weights, b = 0), or with `mode` of the
-/// mode's system for g (spatial_stability.h's Newton-Euler rows): balanced on vdot; y <= 0 on every strict row (its
-/// slack column); -z . (u, r x u) >= 0 on every weight column the letters allow; z . g <= 0; and z . g < 0 or some
-/// strict row's y < 0.
-bool proves(const Vector& v, const RowBlocks& blocks, const std::vector<Seen>& cs, const std::string& letters,
-            bool mode) {
-  if (!v.balanced || (v.dynamics && !mode)) return false;
-  bool strict_negative = false;
-  for (const Vector::Weight& x : v.weights) {
-    if (x.contact >= letters.size()) return false;
-    const RowBlocks::Row* on = nullptr;
-    for (const RowBlocks::Row& row : *blocks.rows(x.contact, letters[x.contact]))
-      if (row.cls == x.cls && (on == nullptr || (on->strict && !row.strict))) on = &row;
-    if (on == nullptr) return false;
-    const int y = on->sign * sgn(x.w);
-    if (on->strict && y > 0) return false;
-    strict_negative = strict_negative || (on->strict && y < 0);
-  }
-  if (!mode) return strict_negative;
-  for (std::size_t i = 0; i < letters.size(); ++i)
-    for (const std::size_t j : allowed(cs[i].d.size(), letters[i]))
-      if (v.beta_signs[i][j] < 0) return false;
-  return v.zg < 0 || (v.zg == 0 && strict_negative);
-}
-
 /// Why the proofs of a strongly stable verdict do not cover every moving mode (empty if they do): each vector read
-/// and verified once (read_vector), each dead prefix (a parent and one of its letters) and each moving mode proven by
+/// and verified once (SpatialProofs), each dead prefix (a parent and one of its letters) and each moving mode proven by
 /// the vector it names (proves), and together with f..f they partition the mode strings (mode_coverage).
 std::string proofs_fault(const CertificateLines& c, const geometry::SpatialBody& body, const std::vector<Seen>& cs,
                          const Vec<Q>& g) {
-  const RowBlocks blocks(cs);
-  EdgeRows edges;
-  for (const Seen& s : cs) {
-    edges.emplace_back();
-    for (std::size_t j = 0; j < s.d.size(); ++j) edges.back().push_back(along(s, edge_force(s, j)));
-  }
-  std::vector<Vector> vectors;
-  for (std::size_t i = 0; i < c.size("vectors"); ++i)
-    vectors.push_back(read_vector(c.element("vectors", i), body, blocks, edges, g));
-  auto vector = [&](const exact::JsonInput& id) -> const Vector& {
-    if (vectors.empty()) id.fail("an index of \"vectors\", which lists none");
-    return vectors[static_cast<std::size_t>(id.integer(0, static_cast<long>(vectors.size()) - 1))];
-  };
+  const SpatialProofs proofs(c, body, cs, &g);
   const std::size_t k = cs.size();
   const std::string sticking(k, 'f');
   std::vector<std::string> dead, leaves{sticking};
-  for (std::size_t at = 0; at < c.size("dead"); ++at) {
-    const exact::JsonInput e = c.element("dead", at);
-    e.expect_keys({"parent", "letters", "vectors"});
-    const std::string parent = read_letters(e.at("parent"), cs, false, true);
-    const std::string letters = e.at("letters").string();
-    const exact::JsonInput ids = e.at("vectors");
-    const std::string alphabet_here = alphabet(cs[parent.size()].d.size());
-    if (letters.empty() || letters.find_first_not_of(alphabet_here) != std::string::npos)
-      e.at("letters").fail("letters of contact " + std::to_string(parent.size()) + ": s, f or A.., at least one");
-    if (ids.size() != letters.size()) ids.fail("one vector index per letter (" + std::to_string(letters.size()) + ")");
-    for (std::size_t l = 0; l < letters.size(); ++l) {
-      std::string prefix = parent + letters[l];
-      if (!proves(vector(ids.at(l)), blocks, cs, prefix, false))
-        return "the kinematic proof for prefix " + prefix + " does not verify";
-      dead.push_back(std::move(prefix));
-    }
-  }
+  if (std::string why = proofs.dead_fault(c, dead); !why.empty()) return why;
   for (std::size_t at = 0; at < c.size("modes"); ++at) {
     const exact::JsonInput e = c.element("modes", at);
     e.expect_keys({"mode", "vector"});
     std::string mode = read_letters(e.at("mode"), cs, true);
     if (mode == sticking) return "a proof for f..f is not evidence beside a resting solution";
-    if (!proves(vector(e.at("vector")), blocks, cs, mode, true))
-      return "the proof for mode " + mode + " does not verify";
+    if (!proofs.proves(e.at("vector"), mode, true)) return "the proof for mode " + mode + " does not verify";
     leaves.push_back(std::move(mode));
   }
   if (auto gap = mode_coverage(

@@ -87,16 +87,12 @@ void check_assembly_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckR
   c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
 }
 
-void check_spatial_modes(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
-  const checker::ModesCertificateCheck m = checker::check_spatial_modes_certificate(cert);
-  take(m, c);
-  c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
-}
-
-void check_spatial_stability(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult&) {
-  cert.fail(
-      "a spatial_stability certificate in lines, as stability writes it (docs/formats.md section 5c): check reads "
-      "it line by line, and this text is another layout");
+/// The certificates in lines (docs/formats.md section 5c) as another layout: refused, naming the command that writes
+/// them (check_text reads them line by line).
+void check_in_lines(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult&) {
+  const std::string kind = cert.at("kind").string();
+  cert.fail("a " + kind + " certificate in lines, as " + (kind == "spatial_modes" ? "modes" : "stability") +
+            " writes it (docs/formats.md section 5c): check reads it line by line, and this text is another layout");
 }
 
 void check_spatial_cone(const exact::JsonInput& cert, EmbeddedProblem&, CheckResult& c) {
@@ -135,8 +131,8 @@ constexpr CertificateKind kKinds[] = {
     {"goal_nonempty", true, check_goal},
     {"assembly_stability", true, check_assembly},
     {"assembly_modes", true, check_assembly_modes},
-    {"spatial_modes", true, check_spatial_modes},
-    {"spatial_stability", true, check_spatial_stability},
+    {"spatial_modes", true, check_in_lines},
+    {"spatial_stability", true, check_in_lines},
     {"spatial_cone", true, check_spatial_cone},
     {"motion_uniqueness", false, check_uniqueness},
 };
@@ -205,11 +201,15 @@ CheckResult check(const exact::JsonInput& certificate, const exact::JsonInput* p
 }
 
 CheckResult check_text(const std::string& text, const std::string& file, const exact::JsonInput* problem) {
-  if (!checker::CertificateLines::starts_as(text, "spatial_stability"))
+  const bool modes = checker::CertificateLines::starts_as(text, "spatial_modes");
+  if (!modes && !checker::CertificateLines::starts_as(text, "spatial_stability"))
     return check(exact::JsonInput::parse(text, file), problem);
   const checker::CertificateLines lines(text, file);
   return checked(lines.head(), certificate_kind(lines.head()), problem, [&](EmbeddedProblem&, CheckResult& c) {
-    take(checker::check_spatial_stability_certificate(lines), c);
+    if (!modes) return take(checker::check_spatial_stability_certificate(lines), c);
+    const checker::ModesCertificateCheck m = checker::check_spatial_modes_certificate(lines);
+    take(m, c);
+    c.details = {{"modes", m.modes}, {"dead_prefixes", m.dead}};
   });
 }
 

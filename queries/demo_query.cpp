@@ -30,6 +30,7 @@
 #include "solvers/assembly/assembly_certificate.h"
 #include "solvers/insertion/insertion.h"
 #include "solvers/spatial/spatial_modes.h"
+#include "solvers/spatial/spatial_modes_certificate.h"
 #include "solvers/motion/motion_scene.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
@@ -339,8 +340,8 @@ DemoScene own_scene(const fs::path& path, HtmlReport& rep) {
     if (geometry::is_spatial_scene(in)) {  // a body in space: its contact modes from rest, checked
       namespace sp = solvers::spatial;
       const sp::SpatialModeTree t = sp::spatial_modes(sp::spatial_model(geometry::read_spatial_scene(in)));
-      const auto check = checker::check_spatial_modes_certificate(
-          exact::JsonInput::parse(sp::spatial_modes_certificate(text, t), "certificate"));
+      const std::string certificate = sp::spatial_modes_certificate(text, t);  // the lines read it in place
+      const auto check = checker::check_spatial_modes_certificate(checker::CertificateLines(certificate, "certificate"));
       return {name, "spatial", std::to_string(t.modes.size()) + " contact modes",
               std::string("certificate ") + (check.valid ? "valid" : "INVALID: " + check.reason)};
     }

@@ -4,6 +4,7 @@
 #include "exact/json_input.h"
 #include "queries/modes_query.h"
 #include "queries/spatial_svg.h"
+#include "solvers/spatial/spatial_modes_certificate.h"
 
 namespace contactcert::queries {
 namespace {

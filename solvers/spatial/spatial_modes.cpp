@@ -1,13 +1,10 @@
 #include "solvers/spatial/spatial_modes.h"
 
 #include <algorithm>
-#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "exact/input_error.h"
-#include "exact/rational_text.h"
 #include "exact/strict_feasibility.h"
-#include "solvers/stability/sparse_motzkin.h"
 
 namespace contactcert::solvers::spatial {
 
@@ -336,40 +333,6 @@ Vec<Q> move_rows(const SpatialModel& model, const std::string& from, const Vec<Q
   out.tail(tail) = y.tail(tail);  // the trailing rows copied
   if (!move_proof(proof_of(from.size(), from_at, y), to_at, [&](Index row, Q w) { out(row) = std::move(w); }))
     return Vec<Q>();
-  return out;
-}
-
-std::string spatial_modes_certificate(const std::string& scene_text, const SpatialModeTree& tree) {
-  // One line per mode and per dead prefix, each a compact JSON object (a box on a plane with 16 contacts lists
-  // ~110 000 dead prefixes: one indented line per number would be 17 MB and a tree of JSON values 300 MB).
-  std::string out = "{\n \"kind\": \"spatial_modes\",\n \"scene\": " + nlohmann::json(scene_text).dump() +
-                    ",\n \"problem_sha256\": \"" + exact::JsonInput::parse(scene_text, "scene").canonical_sha256() +
-                    "\",\n \"modes\": [";
-  for (std::size_t i = 0; i < tree.modes.size(); ++i) {
-    nlohmann::ordered_json a = nlohmann::ordered_json::array();
-    for (Index d = 0; d < 6; ++d) a.push_back(exact::to_string(tree.accelerations[i](d)));
-    out += (i ? ",\n  " : "\n  ") + nlohmann::ordered_json{{"mode", tree.modes[i]}, {"acceleration", a}}.dump();
-  }
-  out += tree.modes.empty() ? "],\n \"dead\": [" : "\n ],\n \"dead\": [";
-  std::vector<std::pair<Index, Q>> moved;  // a dead prefix's weighed rows, sorted by row
-  std::vector<std::size_t> rows;
-  std::vector<Q> weights;
-  for (std::size_t i = 0; i < tree.dead.size(); ++i) {
-    const SpatialDeadPrefix& d = tree.dead[i];
-    moved.clear();
-    move_proof(tree.proofs[d.proof], dead_keys(tree, d),
-               [&](Index row, Q w) { moved.emplace_back(row, std::move(w)); });
-    std::sort(moved.begin(), moved.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-    rows.clear();
-    weights.clear();
-    for (auto& [row, w] : moved) {
-      rows.push_back(static_cast<std::size_t>(row));
-      weights.push_back(std::move(w));
-    }
-    out += (i ? ",\n  " : "\n  ") +
-           nlohmann::ordered_json{{"prefix", d.prefix}, {"motzkin", sparse_motzkin_json(rows, weights)}}.dump();
-  }
-  out += tree.dead.empty() ? "]\n}\n" : "\n ]\n}\n";
   return out;
 }
 

@@ -123,8 +123,4 @@ bool realises(const SpatialModel& model, const std::string& prefix, const Vec<Q>
 /// counterpart; the signs are not checked (a Motzkin vector moved must be checked on its new system).
 Vec<Q> move_rows(const SpatialModel& model, const std::string& from, const Vec<Q>& y, const std::string& to);
 
-/// The "spatial_modes" certificate (docs/formats.md section 5b): the scene text, its digest, every mode with its
-/// acceleration, every dead prefix with its Motzkin vector (sparse); checked by checker/spatial_modes_check.h.
-std::string spatial_modes_certificate(const std::string& scene_text, const SpatialModeTree& tree);
-
 }  // namespace contactcert::solvers::spatial

@@ -9,16 +9,19 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <set>
 
+#include "checker/certificate_lines.h"
 #include "checker/spatial_modes_check.h"
 #include "exact/input_error.h"
 #include "exact/strict_feasibility.h"
 #include "geometry/scene_json.h"
 #include "runtime/scenes.h"
+#include "solvers/spatial/spatial_modes_certificate.h"
 #include "solvers/stability/contact_modes.h"
 #include "tests/solvers/spatial/extruded_scene.h"
 
@@ -36,7 +39,33 @@ std::string read(const std::string& scene) {
 SpatialScene parse(const std::string& text) { return geometry::read_spatial_scene(exact::JsonInput::parse(text, "t")); }
 
 checker::ModesCertificateCheck check_text(const std::string& certificate) {
-  return checker::check_spatial_modes_certificate(exact::JsonInput::parse(certificate, "certificate.json"));
+  return checker::check_spatial_modes_certificate(checker::CertificateLines(certificate, "certificate.json"));
+}
+
+// The certificate in lines with one line changed: element i of list `name` (or the head member `name` if i < 0)
+// replaced by edit(its value), or dropped if edit returns null (a list's last element: the comma before it too).
+std::string forge_line(const std::string& text, const std::string& name, int i,
+                       const std::function<nlohmann::json(nlohmann::json)>& edit) {
+  std::vector<std::string> lines;
+  for (std::size_t at = 0, end; at < text.size(); at = end + 1)
+    lines.push_back(text.substr(at, (end = text.find('\n', at)) - at));
+  std::size_t at = 0;
+  const std::string key = " \"" + name + "\": ";
+  while (lines[at].rfind(key, 0) != 0) ++at;
+  at += i < 0 ? 0 : static_cast<std::size_t>(i) + 1;
+  std::string& line = lines[at];
+  const bool comma = line.back() == ',';
+  const std::size_t from = i < 0 ? key.size() : 2;
+  const nlohmann::json value = edit(nlohmann::json::parse(line.substr(from, line.size() - from - (comma ? 1 : 0))));
+  if (value.is_null()) {
+    if (!comma) lines[at - 1].pop_back();
+    lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(at));
+  } else {
+    line = line.substr(0, from) + value.dump() + (comma ? "," : "");
+  }
+  std::string out;
+  for (const std::string& l : lines) out += l + "\n";
+  return out;
 }
 
 std::set<std::string> mode_set(const SpatialModeTree& t) { return {t.modes.begin(), t.modes.end()}; }
@@ -361,42 +390,53 @@ TEST(SpatialScene, DefaultFrame) {
   EXPECT_GT(geometry::dot(geometry::cross(u1, u2), n), 0);
 }
 
-// Forged certificates: each change below must be rejected (INVALID or an InputError naming the field).
+// Forged certificates, one line edited in the line layout: each change below must be rejected (INVALID or an
+// InputError naming the field).
 TEST(SpatialModes, ForgedCertificatesAreRejected) {
   const std::string text = read("spatial_box_on_plane");
   const SpatialModeTree t = spatial_modes(spatial_model(parse(text)));
-  const nlohmann::json good = nlohmann::json::parse(spatial_modes_certificate(text, t));
-  auto rejected = [](const nlohmann::json& forged) {
+  const std::string good = spatial_modes_certificate(text, t);
+  auto rejected = [](const std::string& forged) {
     try {
-      return !check_text(forged.dump()).valid;
+      return !check_text(forged).valid;
     } catch (const exact::InputError&) {
       return true;
     }
   };
-  nlohmann::json f = good;
-  f["modes"].erase(f["modes"].begin() + 5);  // a feasible mode left out
-  EXPECT_TRUE(rejected(f));
-  f = good;
-  f["modes"][5]["acceleration"][0] = "123";  // a witness that does not realise its mode
-  EXPECT_TRUE(rejected(f));
-  f = good;
-  f["dead"].erase(f["dead"].begin());  // a dead prefix left out
-  EXPECT_TRUE(rejected(f));
-  f = good;
-  f["dead"][0]["motzkin"][0][1] = "-7";  // a Motzkin weight changed
-  EXPECT_TRUE(rejected(f));
-  f = good;
-  f["dead"].push_back(f["dead"][0]);  // a dead prefix listed twice
-  EXPECT_TRUE(rejected(f));
-  f = good;
-  f["modes"][0]["mode"] = "ssZs";  // not a letter
-  EXPECT_TRUE(rejected(f));
-  f = good;
-  const std::size_t at = text.find("[1, -1, 0]");
+  using J = nlohmann::json;
+  const auto drop = [](J) { return J(); };
+  EXPECT_TRUE(rejected(forge_line(good, "modes", 5, drop)));   // a feasible mode left out
+  EXPECT_TRUE(rejected(forge_line(good, "modes", 5, [](J m) {  // a witness that does not realise its mode
+    m["acceleration"][0] = "123";
+    return m;
+  })));
+  EXPECT_TRUE(rejected(forge_line(good, "dead", 0, drop)));   // a parent's dead prefixes left out
+  EXPECT_TRUE(rejected(forge_line(good, "dead", 0, [](J d) {  // one dead prefix left out
+    d["letters"] = d["letters"].get<std::string>().substr(1);
+    d["vectors"].erase(0);
+    return d;
+  })));
+  EXPECT_TRUE(rejected(forge_line(good, "vectors", 0, [](J v) {  // a Motzkin weight changed
+    v["motzkin"][0][1] = "-7";
+    return v;
+  })));
+  EXPECT_TRUE(rejected(forge_line(good, "dead", 0, [](J d) {  // a dead prefix listed twice
+    d["letters"] = d["letters"].get<std::string>() + d["letters"].get<std::string>()[0];
+    d["vectors"].push_back(d["vectors"][0]);
+    return d;
+  })));
+  EXPECT_TRUE(rejected(forge_line(good, "dead", 0, [](J d) {  // a vector that does not exist
+    d["vectors"][0] = 100000;
+    return d;
+  })));
+  EXPECT_TRUE(rejected(forge_line(good, "modes", 0, [](J m) {  // not a letter
+    m["mode"] = "ssZs";
+    return m;
+  })));
   std::string moved = text;
-  moved.replace(at, 10, "[1, 0, 0]");  // the scene changed under its digest
-  f["scene"] = moved;
-  EXPECT_TRUE(rejected(f));
+  moved.replace(moved.find("[1, -1, 0]"), 10, "[1, 0, 0]");
+  EXPECT_TRUE(rejected(forge_line(good, "scene", -1, [&](J) { return J(moved); })));  // the scene under its digest
+  EXPECT_FALSE(rejected(forge_line(good, "modes", 5, [](J m) { return m; })));
   EXPECT_FALSE(rejected(good));
 }
 
