@@ -6,6 +6,7 @@
 
 #include "checker/sparse_motzkin_reader.h"
 #include "checker/spatial_rows.h"
+#include "exact/input_error.h"
 #include "exact/linalg.h"
 
 namespace contactcert::checker {
@@ -122,11 +123,11 @@ std::string missing_facet(const Written& w, Index D) {
   std::string fault;
   std::function<void(Index)> extend = [&](Index from) {
     if (!fault.empty()) return;
-    if (++visited > kMaxSubsets) {
-      fault = "the span form has too many rays for the checker's facet enumeration (over " +
-              std::to_string(kMaxSubsets) + " subsets)";
-      return;
-    }
+    if (++visited > kMaxSubsets)  // no verdict: a limit (exit 3), not an invalid certificate
+      throw exact::BudgetExceeded("spatial cone check: over " + std::to_string(kMaxSubsets) +
+                                      " subsets of rays in the facet enumeration",
+                                  "every row and generator verified; the facets of " +
+                                      std::to_string(w.rays.rows()) + " rays not all enumerated");
     if (static_cast<Index>(chosen.size()) == p) {
       const Mat<Q> N = exact::null_space(stacked(w.rays, chosen, lines_and_E));
       if (N.cols() != 1) {
@@ -265,9 +266,9 @@ std::string points_fault(const Rows& mode_rows, const Mat<Q>& M, const exact::Js
 /// The faces of the closure (by their rays' indices) that lie in no strict row's hyperplane and contain no other
 /// such face: every face of pos(rays) + span(lines) is the closure or an intersection of facets, all of which are
 /// written rows (forms_fault), so the faces are the closure of {all rays} under intersection with the rows' tight
-/// sets. Empty (and `fault` set) past kMaxFaces.
+/// sets. exact::BudgetExceeded past kMaxFaces.
 constexpr std::size_t kMaxFaces = 200'000;
-std::vector<std::set<Index>> minimal_faces(const Written& w, std::string& fault) {
+std::vector<std::set<Index>> minimal_faces(const Written& w) {
   std::vector<std::set<Index>> rows, strict, faces, out;
   for (const Mat<Q>* M : {&w.A, &w.S})
     for (Index i = 0; i < M->rows(); ++i) {
@@ -285,10 +286,10 @@ std::vector<std::set<Index>> minimal_faces(const Written& w, std::string& fault)
       std::set<Index> f;
       std::set_intersection(faces[i].begin(), faces[i].end(), t.begin(), t.end(), std::inserter(f, f.end()));
       if (!known.insert(f).second) continue;
-      if (faces.size() == kMaxFaces) {
-        fault = "the closure has more than " + std::to_string(kMaxFaces) + " faces, past the checker's enumeration";
-        return {};
-      }
+      if (faces.size() == kMaxFaces)  // no verdict: a limit (exit 3), not an invalid certificate
+        throw exact::BudgetExceeded(
+            "spatial cone check: the closure has more than " + std::to_string(kMaxFaces) + " faces",
+            "both forms verified equal; the faces that no strict row vanishes on not all enumerated");
       faces.push_back(std::move(f));
     }
   auto kept = [&](const std::set<Index>& f) {
@@ -323,8 +324,7 @@ std::string faces_fault(const Written& w, const Rows& mode_rows, const exact::Js
     if (!solves(mode_rows, p.at("x").rational_vector(mode_rows.columns.size()), g.back()))
       return "the point of face " + std::to_string(g.size() - 1) + " is not a solution of the mode with sigma > 0";
   }
-  std::string fault;
-  for (const std::set<Index>& f : minimal_faces(w, fault)) {
+  for (const std::set<Index>& f : minimal_faces(w)) {
     const bool met = std::any_of(g.begin(), g.end(), [&](const Vec<Q>& p) {
       for (const Mat<Q>* M : {&w.A, &w.S})
         for (Index i = 0; i < M->rows(); ++i) {
@@ -334,12 +334,12 @@ std::string faces_fault(const Written& w, const Rows& mode_rows, const exact::Js
       return true;
     });
     if (!met) {
-      fault = "no point of the cone is given on the face of the closure through rays";
+      std::string fault = "no point of the cone is given on the face of the closure through rays";
       for (const Index r : f) fault += " " + std::to_string(r);
       return fault + (f.empty() ? " (none): the lineality space" : "") + ", which no strict row vanishes on";
     }
   }
-  return fault;
+  return {};
 }
 
 }  // namespace
