@@ -1,7 +1,7 @@
 #include "exact/padic_solve.h"
 
 #include <algorithm>
-#include <cmath>
+#include <bit>
 #include <cstdint>
 #include <utility>
 
@@ -110,30 +110,32 @@ std::optional<LiftedSolution> reconstructed(const IntMatrix<Z>& M, const std::ve
   return s;
 }
 
-/// log2 of the Hadamard bound of [A | b], from above: sum over rows of log2 of the row's 2-norm.
-double hadamard_bits(const IntMatrix<Z>& M) {
-  double bits = 0;
+/// log2 of the Hadamard bound of [A | b], from above, in whole bits: per row, the bits of its largest entry plus
+/// half the bits of its count of non-zero entries t (sqrt(t) 2^largest bounds the row's 2-norm).
+long hadamard_bits(const IntMatrix<Z>& M) {
+  long bits = 0;
   for (Index i = 0; i < M.rows(); ++i) {
     std::size_t largest = 0;
-    Index terms = 0;
+    unsigned long terms = 0;
     for (Index j = 0; j < M.cols(); ++j)
       if (sgn(M(i, j)) != 0) {
         largest = std::max(largest, mpz_sizeinbase(M(i, j).get_mpz_t(), 2));  // |a| < 2^largest
         ++terms;
       }
-    bits += static_cast<double>(largest) + 0.5 * std::log2(static_cast<double>(std::max<Index>(terms, 1)));
+    bits += static_cast<long>(largest + (std::bit_width(terms) + 1) / 2);  // log2(t) / 2 <= (bit_width(t) + 1) / 2
   }
   return bits;
 }
 
 template <u64 p>
 std::optional<LiftedSolution> lift(const IntMatrix<Z>& M) {
+  static_assert(p > (u64(1) << 30) && p < (u64(1) << 31), "P gains more than 30 bits a step; residue products fit");
   LuModP<p> lu;
   if (!lu.factor(M)) return std::nullopt;
   const Index k = M.rows();
   // Reconstruction is unique once P > 2 N D (|numerators| <= N, denominator <= D, both at most the Hadamard bound H):
   // at most that many steps, trying earlier ones on a schedule growing by half.
-  const double needed = 2 * hadamard_bits(M) + 2;
+  const long needed = 2 * hadamard_bits(M) + 2;
   std::vector<Z> r(static_cast<std::size_t>(k)), X(static_cast<std::size_t>(k), Z(0));
   std::vector<std::vector<std::pair<Index, const Z*>>> rows(static_cast<std::size_t>(k));  // A's non-zero entries
   for (Index i = 0; i < k; ++i) {
@@ -143,7 +145,7 @@ std::optional<LiftedSolution> lift(const IntMatrix<Z>& M) {
   }
   std::vector<u64> v(static_cast<std::size_t>(k)), x;
   Z P = 1;
-  double bits = 0;
+  long bits = 0;  // log2 P from below: each p > 2^30
   for (long step = 1, next_try = 2;; ++step) {
     for (Index i = 0; i < k; ++i)
       v[static_cast<std::size_t>(i)] = mpz_fdiv_ui(r[static_cast<std::size_t>(i)].get_mpz_t(), p);
@@ -159,7 +161,7 @@ std::optional<LiftedSolution> lift(const IntMatrix<Z>& M) {
       if (x[static_cast<std::size_t>(j)] != 0)
         mpz_addmul_ui(X[static_cast<std::size_t>(j)].get_mpz_t(), P.get_mpz_t(), x[static_cast<std::size_t>(j)]);
     P *= static_cast<unsigned long>(p);
-    bits += std::log2(static_cast<double>(p));
+    bits += 30;
     const bool last = bits > needed;
     if (step == next_try || last) {
       if (std::optional<LiftedSolution> s = reconstructed(M, X, P)) return s;
