@@ -136,13 +136,6 @@ Vec<T> basis_duals(const Mat<T>& A, const Vec<T>& b, const std::vector<Index>& b
   return y ? *y : Vec<T>(Vec<T>::Zero(m));
 }
 
-}  // namespace
-
-template <class T>
-Vec<T> optimal_duals(const LpProblem<T>& problem, const std::vector<Index>& basis);
-
-namespace {
-
 /// The result of a run that ended with `out`; an optimal one carries duals if options.duals asks for them.
 template <class T>
 LpResult<T> finish(const LpProblem<T>& problem, const SimplexTableau<T>& tab, const LoopOutcome& out, long pivots,

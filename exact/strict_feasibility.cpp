@@ -379,23 +379,37 @@ bool verify_strict_point(const StrictSystem<Q>& sys, const Vec<Q>& x) {
   return true;
 }
 
+namespace {
+
+// Motzkin's conditions on y^T A (by column) and y^T b: (y^T A)_j = 0 on free columns, >= 0 on the others, and
+// y^T b < 0, or y^T b = 0 and (y^T A)_j > 0 on a strict column.
+bool motzkin_conditions(const std::vector<Q>& yA, const Q& yb, const std::vector<bool>& is_free,
+                        const std::vector<bool>& strict) {
+  bool strict_positive = false;
+  for (Index j = 0; j < static_cast<Index>(yA.size()); ++j) {
+    const int s = sgn(yA[static_cast<size_t>(j)]);
+    if (flag(is_free, j) ? s != 0 : s < 0) return false;
+    strict_positive = strict_positive || (s > 0 && flag(strict, j));
+  }
+  return sgn(yb) < 0 || (sgn(yb) == 0 && strict_positive);
+}
+
+}  // namespace
+
 bool verify_motzkin(const StrictSystem<Q>& sys, const Vec<Q>& y) {
   if (y.size() != sys.A.rows()) return false;
-  bool strict_positive = false;
-  for (Index j = 0; j < sys.A.cols(); ++j) {
-    Q v = 0;
-    for (Index i = 0; i < y.size(); ++i) v += y(i) * sys.A(i, j);
-    if (flag(sys.is_free, j)) {
-      if (sgn(v) != 0) return false;
-    } else if (sgn(v) < 0) {
-      return false;
-    } else if (sgn(v) > 0 && flag(sys.strict, j)) {
-      strict_positive = true;
-    }
-  }
-  Q yb = 0;
-  for (Index i = 0; i < y.size(); ++i) yb += y(i) * sys.b(i);
-  return sgn(yb) < 0 || (sgn(yb) == 0 && strict_positive);
+  std::vector<Q> yA(static_cast<size_t>(sys.A.cols()), Q(0));
+  for (Index j = 0; j < sys.A.cols(); ++j)
+    for (Index i = 0; i < y.size(); ++i) yA[static_cast<size_t>(j)] += y(i) * sys.A(i, j);
+  return motzkin_conditions(yA, y.dot(sys.b), sys.is_free, sys.strict);
+}
+
+bool verify_motzkin(const SparseStrictSystem<Q>& sys, const Vec<Q>& b, const Vec<Q>& y) {
+  if (y.size() != sys.rows || b.size() != sys.rows) return false;
+  std::vector<Q> yA(static_cast<size_t>(sys.cols), Q(0));
+  for (const Entry<Q>& e : sys.entries)
+    if (sgn(y(e.row)) != 0) yA[static_cast<size_t>(e.col)] += y(e.row) * e.value;
+  return motzkin_conditions(yA, y.dot(b), sys.is_free, sys.strict);
 }
 
 #define CONTACTCERT_STRICT_FEASIBILITY_INSTANTIATE(T)                                 \

@@ -119,6 +119,8 @@ StrictFeasibility<T> strict_feasibility(const SparseStrictSystem<T>& system, Ari
 
 /// Exact check of a Motzkin certificate for the system (trusts nothing but the numbers).
 bool verify_motzkin(const StrictSystem<Q>& system, const Vec<Q>& y);
+/// The same for the sparse system with right-hand side b, in time linear in its entries.
+bool verify_motzkin(const SparseStrictSystem<Q>& system, const Vec<Q>& b, const Vec<Q>& y);
 /// Exact check that x satisfies the system.
 bool verify_strict_point(const StrictSystem<Q>& system, const Vec<Q>& x);
 

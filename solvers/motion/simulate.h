@@ -55,9 +55,9 @@ struct ContactRecord {
   char mode = 's';
   Vec2<T> point, normal;
   T c_n = T(0), c_t = T(0);
-  /// The force c_n n + c_t t on its body (`which`), made only when it is reported; zero without a solution.
+  /// The force c_n n + c_t t on its body (`which`), made only when it is reported (zero without a solution: c_n and
+  /// c_t stay 0).
   Vec2<T> force() const {
-    if (mode == '?') return {T(0), T(0)};
     const Vec2<T> t = geometry::perp2(normal);
     return {c_n * normal.x + c_t * t.x, c_n * normal.y + c_t * t.y};
   }

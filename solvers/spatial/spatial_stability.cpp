@@ -79,22 +79,6 @@ Vec<Q> weights_of(const SpatialModel& model, const std::string& mode, const Vec<
   return w;
 }
 
-// Whether y is a Motzkin certificate of { A x = b, sign constraints } (exact/strict_feasibility.h's conditions):
-// (y^T A)_j = 0 on free columns, >= 0 on the others, y^T b <= 0, and y^T b < 0 or (y^T A)_j > 0 on a strict column.
-bool motzkin_holds(const exact::SparseStrictSystem<Q>& sys, const Vec<Q>& b, const Vec<Q>& y) {
-  std::vector<Q> yA(static_cast<std::size_t>(sys.cols), Q(0));
-  for (const exact::Entry<Q>& e : sys.entries)
-    if (sgn(y(e.row)) != 0) yA[static_cast<std::size_t>(e.col)] += y(e.row) * e.value;
-  const int yb = sgn(y.dot(b));
-  bool strict_positive = false;
-  for (std::size_t j = 0; j < yA.size(); ++j) {
-    const int s = sgn(yA[j]);
-    if (sys.is_free[j] ? s != 0 : s < 0) return false;
-    strict_positive = strict_positive || (sys.strict[j] && s > 0);
-  }
-  return yb < 0 || (yb == 0 && strict_positive);
-}
-
 // The Motzkin vectors of the latest moving modes proven infeasible, most recently used first: a mode whose system
 // takes one of them, moved to its rows (move_rows, as the mode tree reuses its dead prefixes' certificates), needs
 // no LP. Modes in tree order share most letters with their predecessors.
@@ -105,7 +89,7 @@ class RecentProofs {
   Vec<Q> take(const std::string& mode, const exact::SparseStrictSystem<Q>& sys, const Vec<Q>& b) {
     for (std::size_t i = 0; i < held_.size(); ++i) {
       Vec<Q> y = move_rows(model_, held_[i].first, held_[i].second, mode);
-      if (y.size() == 0 || !motzkin_holds(sys, b, y)) continue;
+      if (y.size() == 0 || !exact::verify_motzkin(sys, b, y)) continue;
       std::rotate(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(i),
                   held_.begin() + static_cast<std::ptrdiff_t>(i) + 1);
       return y;
