@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "exact/linalg.h"
+#include "solvers/motion/bounded.h"
 
 namespace contactcert::solvers::motion {
 namespace {
@@ -56,11 +57,34 @@ bool maintained(const Contact<T>& c, char mode) {
   return c.kind != ContactKind::kFinger && mode != 's';
 }
 
+/// The solution t' of A t' = A t whose free components (the columns of no pivot in A's reduced row echelon form) are
+/// t's, bounded(): then its pivot components are too, A t' being the bodies' lines in the world (each row m . t'
+/// fixed by the rotated normals and the shapes), so the poses' size stays bounded while every row stays exact; t'
+/// differs from t by at most the grid, along the rows' null space.
+exact::Vec<Q> on_the_grid(const exact::Mat<Q>& A, const exact::Vec<Q>& t) {
+  const Index n = A.cols();
+  exact::Mat<Q> At(A.rows(), n + 1);
+  At << A, A * t;
+  const exact::Rref<Q> E = exact::rref(At);
+  exact::Vec<Q> out(n);
+  std::vector<bool> pivot(std::size_t(n), false);
+  for (Index p : E.pivots) pivot[std::size_t(p)] = true;
+  for (Index f = 0; f < n; ++f)
+    if (!pivot[std::size_t(f)]) out(f) = bounded(t(f));
+  for (Index r = 0; r < E.rank(); ++r) {
+    Q v = E.R(r, n);
+    for (Index f = 0; f < n; ++f)
+      if (!pivot[std::size_t(f)]) v -= E.R(r, f) * out(f);
+    out(E.pivots[std::size_t(r)]) = v;
+  }
+  return out;
+}
+
 /// Step 2 for the bodies `group` (joined by maintained body-body contacts): the translations e_b, least-norm over
 /// the independent rows, added to their steps.
 template <class T>
 void keep_group(const std::vector<std::size_t>& group, const std::vector<Contact<T>>& contacts,
-                const std::vector<char>& modes, Poses<T>& steps) {
+                const std::vector<char>& modes, const Poses<T>& poses, Poses<T>& steps) {
   std::vector<Index> column(steps.size(), -1);
   for (std::size_t k = 0; k < group.size(); ++k) column[group[k]] = Index(2 * k);
   const Index n = Index(2 * group.size());
@@ -101,8 +125,17 @@ void keep_group(const std::vector<std::size_t>& group, const std::vector<Contact
   const std::optional<exact::Vec<T>> y = exact::solve(exact::Mat<T>(A * At), r);  // A A^T is non-singular
   if (!y) return;
   const exact::Vec<T> e = At * *y;
-  for (std::size_t k = 0; k < group.size(); ++k)
-    steps[group[k]].t = steps[group[k]].t + Vec2<T>{e(Index(2 * k)), e(Index(2 * k + 1))};
+  exact::Vec<T> t(n);  // the bodies' translations after the step: step_b(t_b) + e_b
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    const Vec2<T> tk = steps[group[k]].apply(poses[group[k]].t);
+    t(Index(2 * k)) = tk.x + e(Index(2 * k));
+    t(Index(2 * k + 1)) = tk.y + e(Index(2 * k + 1));
+  }
+  if constexpr (std::is_same_v<T, Q>) t = on_the_grid(A, t);
+  for (std::size_t k = 0; k < group.size(); ++k) {  // step_b maps t_b to t's block: its translation is that - R t_b
+    Pose<T>& S = steps[group[k]];
+    S.t = Vec2<T>{t(Index(2 * k)), t(Index(2 * k + 1))} - S.rotate(poses[group[k]].t);
+  }
 }
 
 /// The gap of contact c after the steps (> 0 open): m . (step_v(x) - step_e(x)) with m the edge's outward normal
@@ -125,8 +158,8 @@ std::size_t root(std::vector<std::size_t>& up, std::size_t b) {
 }  // namespace
 
 template <class T>
-KeptSteps<T> keep_contacts(Poses<T> steps, const std::vector<Contact<T>>& contacts, const std::vector<char>& modes,
-                           const std::vector<Twist<T>>& applied) {
+KeptSteps<T> keep_contacts(const Poses<T>& poses, Poses<T> steps, const std::vector<Contact<T>>& contacts,
+                           const std::vector<char>& modes, const std::vector<Twist<T>>& applied) {
   const std::size_t nb = steps.size();
   std::vector<bool> turns(nb);
   for (std::size_t b = 0; b < nb; ++b) turns[b] = sign(applied[b].omega) != 0;
@@ -141,7 +174,7 @@ KeptSteps<T> keep_contacts(Poses<T> steps, const std::vector<Contact<T>>& contac
   for (std::size_t b = 0; b < nb; ++b) groups[root(up, b)].push_back(b);
   for (const std::vector<std::size_t>& g : groups)  // step 2, where a body turns (else every gap stays 0)
     if (g.size() > 1 && std::any_of(g.begin(), g.end(), [&](std::size_t b) { return turns[b]; }))
-      keep_group(g, contacts, modes, steps);
+      keep_group(g, contacts, modes, poses, steps);
   KeptSteps<T> out{std::move(steps), {}};
   for (std::size_t i = 0; i < contacts.size(); ++i)
     if (maintained(contacts[i], modes[i]))
@@ -149,9 +182,10 @@ KeptSteps<T> keep_contacts(Poses<T> steps, const std::vector<Contact<T>>& contac
   return out;
 }
 
-template KeptSteps<Q> keep_contacts<Q>(Poses<Q>, const std::vector<Contact<Q>>&, const std::vector<char>&,
-                                       const std::vector<Twist<Q>>&);
-template KeptSteps<double> keep_contacts<double>(Poses<double>, const std::vector<Contact<double>>&,
-                                                 const std::vector<char>&, const std::vector<Twist<double>>&);
+template KeptSteps<Q> keep_contacts<Q>(const Poses<Q>&, Poses<Q>, const std::vector<Contact<Q>>&,
+                                       const std::vector<char>&, const std::vector<Twist<Q>>&);
+template KeptSteps<double> keep_contacts<double>(const Poses<double>&, Poses<double>,
+                                                 const std::vector<Contact<double>>&, const std::vector<char>&,
+                                                 const std::vector<Twist<double>>&);
 
 }  // namespace contactcert::solvers::motion

@@ -27,8 +27,9 @@ struct KeptSteps {
   std::vector<std::pair<std::string, int>> unkept;
 };
 
-/// Corrects `steps` (each body's rigid step by its applied twist `applied[b]`) so that the maintained contacts of
-/// `contacts` (modes[i] != 's', fingers aside: a carried finger moves with its body) stay exactly on their lines.
+/// Corrects `steps` (from the poses `poses`, each body's rigid step by its applied twist `applied[b]`) so that the
+/// maintained contacts of `contacts` (modes[i] != 's', fingers aside: a carried finger moves with its body) stay
+/// exactly on their lines.
 /// 1. Each turning body alone, as with one body: rows m . delta_b = m . (x - step_b(x)) of its obstacle contacts (m the
 ///    obstacle edge's normal, or the body edge's normal turned by the step), a rolling contact's two rows (both axes:
 ///    it stays exactly fixed) first, then the sliding ones, up to two independent rows; delta_b their least-norm
@@ -37,16 +38,19 @@ struct KeptSteps {
 ///    edge of body b (outward normal n) has after the step the gap m . (step_a(x) + e_a - step_b(x) - e_b), m =
 ///    R_b n (R_b the rotation of b's step), so the row m . (e_a - e_b) = m . (step_b(x) - step_a(x)) closes it; each
 ///    body's rows of step 1 get m . e_b = 0 (they stay kept). The group's e is the least-norm solution
-///    e = A^T (A A^T)^-1 r of the independent rows A e = r, taken in that order (exact in Q); a dependent row is kept
-///    only if it agrees.
+///    e = A^T (A A^T)^-1 r of the independent rows A e = r, taken in that order; a dependent row is kept only if it
+///    agrees. On the exact paths the bodies' new translations t' (the poses' `poses[b].t` after the step) then
+///    keep A t' and have their free components (no pivot in A's echelon form) bounded (bounded.h), so that the
+///    poses keep a bounded size.
 /// `unkept` then lists every maintained contact whose gap is not exactly 0.
 template <class T>
-KeptSteps<T> keep_contacts(Poses<T> steps, const std::vector<Contact<T>>& contacts, const std::vector<char>& modes,
-                           const std::vector<Twist<T>>& applied);
+KeptSteps<T> keep_contacts(const Poses<T>& poses, Poses<T> steps, const std::vector<Contact<T>>& contacts,
+                           const std::vector<char>& modes, const std::vector<Twist<T>>& applied);
 
-extern template KeptSteps<Q> keep_contacts<Q>(Poses<Q>, const std::vector<Contact<Q>>&, const std::vector<char>&,
-                                              const std::vector<Twist<Q>>&);
-extern template KeptSteps<double> keep_contacts<double>(Poses<double>, const std::vector<Contact<double>>&,
-                                                        const std::vector<char>&, const std::vector<Twist<double>>&);
+extern template KeptSteps<Q> keep_contacts<Q>(const Poses<Q>&, Poses<Q>, const std::vector<Contact<Q>>&,
+                                              const std::vector<char>&, const std::vector<Twist<Q>>&);
+extern template KeptSteps<double> keep_contacts<double>(const Poses<double>&, Poses<double>,
+                                                        const std::vector<Contact<double>>&, const std::vector<char>&,
+                                                        const std::vector<Twist<double>>&);
 
 }  // namespace contactcert::solvers::motion

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "exact/input_error.h"
+#include "solvers/motion/bounded.h"
 #include "solvers/motion/first_root.h"
 #include "solvers/motion/keep_contacts.h"
 #include "solvers/motion/step_problem.h"
@@ -62,24 +63,6 @@ StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport
   for (Index b = 0; b + 2 < p.nq; b += 3) out.twists.push_back({{u(b), u(b + 1)}, u(b + 2)});
   return out;
 }
-
-/// x rounded to the nearest multiple of 2^-40 (x itself for double): the grid of the applied twist, on which the
-/// pose's numbers keep a bounded size (mpq_class keeps lowest terms, so a pose reached by an exact motion has the
-/// size of its own value, not of the path to it).
-Q on_grid(const Q& x) {
-  const Q scaled = x * Q(exact::Z(1) << 40) + Q(1, 2);
-  exact::Z n;
-  mpz_fdiv_q(n.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
-  return Q(n, exact::Z(1) << 40);
-}
-
-/// x itself while its numerator and denominator take at most 128 bits together, else on_grid(x): exact where that
-/// is cheap (the derived contact times of simple scenes stay exact), bounded where it is not.
-Q bounded(const Q& x) {
-  const std::size_t bits = mpz_sizeinbase(x.get_num_mpz_t(), 2) + mpz_sizeinbase(x.get_den_mpz_t(), 2);
-  return bits <= 128 ? x : on_grid(x);
-}
-double bounded(double x) { return x; }
 
 template <class T>
 char mode_letter(const T& vn, const T& vt) {
@@ -380,7 +363,7 @@ bool Stepper<T>::step() {
   for (std::size_t b = 0; b < poses.size(); ++b)
     twist_steps.push_back(geometry::twist_step(r.applied[b].v, r.applied[b].omega, r.h));
   for (const ContactRecord<T>& c : r.contacts) modes.push_back(c.mode);
-  const KeptSteps<T> kept = keep_contacts(std::move(twist_steps), cs.contacts, modes, r.applied);
+  const KeptSteps<T> kept = keep_contacts(poses, std::move(twist_steps), cs.contacts, modes, r.applied);
   const Poses<T>& steps = kept.steps;
   for (std::size_t b = 0; b < poses.size(); ++b) poses[b] = compose(steps[b], poses[b]);
   std::vector<int> carrier(tips.size(), 0);  // the body a carried finger touches
