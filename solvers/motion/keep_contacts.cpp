@@ -63,9 +63,9 @@ bool maintained(const Contact<T>& c, char mode) {
 /// differs from t by at most the grid, along the rows' null space.
 exact::Vec<Q> on_the_grid(const exact::Mat<Q>& A, const exact::Vec<Q>& t) {
   const Index n = A.cols();
-  exact::Mat<Q> At(A.rows(), n + 1);
-  At << A, A * t;
-  const exact::Rref<Q> E = exact::rref(At);
+  exact::Mat<Q> Ab(A.rows(), n + 1);
+  Ab << A, A * t;
+  const exact::Rref<Q> E = exact::rref(Ab);
   exact::Vec<Q> out(n);
   std::vector<bool> pivot(std::size_t(n), false);
   for (Index p : E.pivots) pivot[std::size_t(p)] = true;
@@ -81,7 +81,7 @@ exact::Vec<Q> on_the_grid(const exact::Mat<Q>& A, const exact::Vec<Q>& t) {
 }
 
 /// Step 2 for the bodies `group` (joined by maintained body-body contacts): the translations e_b, least-norm over
-/// the independent rows, added to their steps.
+/// the independent rows, added to their steps (on the exact paths the poses' translations then on_the_grid).
 template <class T>
 void keep_group(const std::vector<std::size_t>& group, const std::vector<Contact<T>>& contacts,
                 const std::vector<char>& modes, const Poses<T>& poses, Poses<T>& steps) {
