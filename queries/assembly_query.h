@@ -94,6 +94,12 @@ struct AssemblyUcpOptions {
   enum class Command { kAssembly, kUcp } command = Command::kAssembly;
 };
 
+/// The command that ran, as its messages name it: `assembly`, or `ucp` for `ucp ASSEMBLY`.
+inline std::string command_name(const AssemblyStabilityOptions&) { return "assembly"; }
+inline std::string command_name(const AssemblyUcpOptions& o) {
+  return o.command == AssemblyUcpOptions::Command::kUcp ? "ucp" : "assembly";
+}
+
 /// Body b's velocity: q_dot_b = (v_x, v_y, omega) of the body point at the world origin (torques about the origin,
 /// eq. (1)) and its com's velocity (v_x - omega c_y, v_y + omega c_x).
 struct BodyVelocity {

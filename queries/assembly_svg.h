@@ -21,11 +21,12 @@ std::string to_svg(const AssemblyInput& in, const AssemblyStabilityAnswer& answe
 std::string to_svg(const AssemblyInput& in, const AssemblyUcpAnswer& answer);
 
 /// Writes an answer's files where the options ask: its certificate text (when there is one) and its picture, and
-/// records their paths in the answer.
+/// records their paths in the answer; a certificate too large for `check` is refused naming the command that ran.
 template <class Answer, class Options>
 void write_files(const AssemblyInput& in, const Options& options, Answer& answer) {
   if (!options.certificate.empty() && !answer.certificate_text.empty()) {
-    write_certificate_file("assembly", options.certificate, answer.certificate_text, "the verdict was found");
+    write_certificate_file(command_name(options), options.certificate, answer.certificate_text,
+                           "the verdict was found");
     answer.certificate = options.certificate;
   }
   if (!options.svg.empty()) {

@@ -42,8 +42,7 @@ Limited<AssemblyUcpAnswer> assembly_ucp_answer(const AssemblyInput& in, const As
   if (!options.certificate.empty()) ans.certificate_text = ucp::certificate_text(problem, ans.report, in.text);
   write_files(in, options, ans);
   Limited<std::optional<UniquenessAnswer>> u = decide_uniqueness(
-      problem, ans.report, options.uniqueness, options.common.arith,
-      (options.command == AssemblyUcpOptions::Command::kUcp ? "ucp " : "assembly ") + in.name, in.text);
+      problem, ans.report, options.uniqueness, options.common.arith, command_name(options) + " " + in.name, in.text);
   if (!u) return u.limit();
   ans.uniqueness = *std::move(u);
   return ans;

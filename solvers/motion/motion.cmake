@@ -2,4 +2,4 @@
 # every step with its certificate, uniqueness of the motion, the float run compared with the exact one.
 target_sources(contactcert_solvers PRIVATE motion/motion_scene.cpp motion/first_root.cpp motion/contacts.cpp
                                            motion/step_problem.cpp motion/uniqueness.cpp motion/uniqueness_certificate.cpp
-                                           motion/simulate.cpp motion/compare.cpp)
+                                           motion/keep_contacts.cpp motion/simulate.cpp motion/compare.cpp)

@@ -7,7 +7,9 @@
 #include <set>
 
 #include "exact/input_error.h"
+#include "solvers/motion/bounded.h"
 #include "solvers/motion/first_root.h"
+#include "solvers/motion/keep_contacts.h"
 #include "solvers/motion/step_problem.h"
 #include "solvers/motion/uniqueness_certificate.h"
 
@@ -61,24 +63,6 @@ StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport
   for (Index b = 0; b + 2 < p.nq; b += 3) out.twists.push_back({{u(b), u(b + 1)}, u(b + 2)});
   return out;
 }
-
-/// x rounded to the nearest multiple of 2^-40 (x itself for double): the grid of the applied twist, on which the
-/// pose's numbers keep a bounded size (mpq_class keeps lowest terms, so a pose reached by an exact motion has the
-/// size of its own value, not of the path to it).
-Q on_grid(const Q& x) {
-  const Q scaled = x * Q(exact::Z(1) << 40) + Q(1, 2);
-  exact::Z n;
-  mpz_fdiv_q(n.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
-  return Q(n, exact::Z(1) << 40);
-}
-
-/// x itself while its numerator and denominator take at most 128 bits together, else on_grid(x): exact where that
-/// is cheap (the derived contact times of simple scenes stay exact), bounded where it is not.
-Q bounded(const Q& x) {
-  const std::size_t bits = mpz_sizeinbase(x.get_num_mpz_t(), 2) + mpz_sizeinbase(x.get_den_mpz_t(), 2);
-  return bits <= 128 ? x : on_grid(x);
-}
-double bounded(double x) { return x; }
 
 template <class T>
 char mode_letter(const T& vn, const T& vt) {
@@ -137,11 +121,16 @@ StepSchedule<T> step_schedule(const MotionScene& scene, const SceneGeometry<T>& 
   return out;
 }
 
-/// Whether contact c holds body b against a fixed obstacle.
+/// What an overlap owes to the translation correction: ": the translation correction cannot keep C, ... closed
+/// (...)" naming the maintained contacts it leaves dipping, else empty.
 template <class T>
-bool fixed_party(const Contact<T>& c, std::size_t b) {
-  return static_cast<std::size_t>(c.which) == b &&
-         (c.kind == ContactKind::kBodyVertex || c.kind == ContactKind::kObstacleVertex);
+std::string unkept_dips(const KeptSteps<T>& kept) {
+  std::string names;
+  for (const auto& [name, side] : kept.unkept)
+    if (side < 0) names += (names.empty() ? "" : ", ") + name;
+  return names.empty() ? ""
+                       : ": the translation correction cannot keep " + names +
+                             " closed (more independent contact constraints than translation freedoms)";
 }
 
 /// How each finger moves over the step: carried along its edge with a slide (in contact, v_n = 0), or by a
@@ -231,43 +220,6 @@ void cut_step(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std:
       r.cut_exact = true;
     }
   }
-}
-
-/// The step of body b, its translation corrected so that every maintained obstacle contact of b stays exactly on
-/// its line: a turning
-/// step moves a sliding contact point along a circle, off its line by O(h^2). Rows m . delta = m . (x - step(x)),
-/// with x the contact point and m the obstacle edge's normal (a body vertex on it) or the body edge's normal turned
-/// by the step (an obstacle vertex on it); a rolling contact gives two rows (both axes: it stays exactly fixed), then
-/// the sliding ones, up to two independent rows in all; delta is their least-norm solution. Rows beyond those may
-/// stay unsatisfied (the overlap test then has the last word), as may a contact with another body.
-template <class T>
-Pose<T> keep_contacts(Pose<T> step, const ContactSet<T>& cs, const StepRecord<T>& r, std::size_t b) {
-  if (sign(r.applied[b].omega) == 0) return step;  // a translation keeps every line
-  std::vector<std::pair<Vec2<T>, T>> rows;
-  const auto add = [&](const Vec2<T>& m, const Vec2<T>& x) {
-    if (rows.size() == 2 || (rows.size() == 1 && sign(cross2(rows[0].first, m)) == 0)) return;
-    rows.push_back({m, dot2(m, x - step.apply(x))});
-  };
-  for (int rolling = 1; rolling >= 0; --rolling)
-    for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
-      const Contact<T>& c = cs.contacts[i];
-      const char mode = r.contacts[i].mode;
-      if (!fixed_party(c, b) || mode == 's' || (mode == 'r') != bool(rolling)) continue;
-      const Vec2<T> m = c.kind == ContactKind::kBodyVertex ? c.normal : step.rotate(c.normal);
-      add(m, c.point);
-      if (rolling) add(perp2(m), c.point);
-    }
-  Vec2<T> delta{T(0), T(0)};
-  if (rows.size() == 1) {
-    delta = T(rows[0].second / dot2(rows[0].first, rows[0].first)) * rows[0].first;
-  } else if (rows.size() == 2) {
-    const Vec2<T>&m1 = rows[0].first, &m2 = rows[1].first;
-    const T det = cross2(m1, m2);  // [m1; m2] delta = (r1, r2) by Cramer's rule
-    delta = {T(rows[0].second * m2.y - m1.y * rows[1].second) / det,
-             T(m1.x * rows[1].second - rows[0].second * m2.x) / det};
-  }
-  step.t = step.t + delta;
-  return step;
 }
 
 }  // namespace
@@ -406,11 +358,14 @@ bool Stepper<T>::step() {
     r.applied.push_back(applied_twist(cs, r, b, ph.twists[b], poses[b], sched.H));
   cut_step(g_, world_, tips, cs, fm, sched.H, r);
 
-  Poses<T> steps;
-  for (std::size_t b = 0; b < poses.size(); ++b) {
-    steps.push_back(keep_contacts(geometry::twist_step(r.applied[b].v, r.applied[b].omega, r.h), cs, r, b));
-    poses[b] = compose(steps[b], poses[b]);
-  }
+  Poses<T> twist_steps;
+  std::vector<char> modes;
+  for (std::size_t b = 0; b < poses.size(); ++b)
+    twist_steps.push_back(geometry::twist_step(r.applied[b].v, r.applied[b].omega, r.h));
+  for (const ContactRecord<T>& c : r.contacts) modes.push_back(c.mode);
+  const KeptSteps<T> kept = keep_contacts(poses, std::move(twist_steps), cs.contacts, modes, r.applied);
+  const Poses<T>& steps = kept.steps;
+  for (std::size_t b = 0; b < poses.size(); ++b) poses[b] = compose(steps[b], poses[b]);
   std::vector<int> carrier(tips.size(), 0);  // the body a carried finger touches
   for (const Contact<T>& c : cs.contacts)
     if (c.kind == ContactKind::kFinger) carrier[static_cast<std::size_t>(c.other)] = c.which;
@@ -429,7 +384,7 @@ bool Stepper<T>::step() {
   out_.steps.push_back(std::move(r));
   const StepRecord<T>& last = out_.steps.back();
   if (const std::string o = overlap(g_, world_, tips); !o.empty())
-    finish(RunStatus::kOverlap, o + " after step " + std::to_string(k));
+    finish(RunStatus::kOverlap, o + " after step " + std::to_string(k) + unkept_dips(kept));
   else if (!last.cut_exact)
     finish(RunStatus::kIrrationalContactTime,
            last.cut_by + " closes at an irrational time: the run stops just before it, the gap > 0 (step " +

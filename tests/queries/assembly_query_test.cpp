@@ -9,6 +9,8 @@
 
 #include "checker/assembly_check.h"
 #include "exact/input_error.h"
+#include "exact/json_input.h"
+#include "queries/assembly_svg.h"
 #include "runtime/scenes.h"
 #include "solvers/assembly/assembly_certificate.h"
 
@@ -93,6 +95,27 @@ TEST(AssemblyQuery, QuasistaticForcesBalanceEveryBody) {
   }
   EXPECT_EQ(run_assembly_ucp(bundled("assembly_pushed_boxes_wall"), {})->report.status,
             solvers::ucp::UcpStatus::kJammed);
+}
+
+// A certificate larger than `check` reads is refused naming the command that ran: `ucp ASSEMBLY` says `ucp`.
+TEST(AssemblyQuery, ATooLargeCertificateNamesTheCommandThatRan) {
+  const std::string file = testing::TempDir() + "/too_large_assembly.cert.json";
+  for (const auto command : {AssemblyUcpOptions::Command::kUcp, AssemblyUcpOptions::Command::kAssembly}) {
+    AssemblyUcpOptions o;
+    o.command = command;
+    o.certificate = file;
+    AssemblyUcpAnswer ans;
+    ans.certificate_text = std::string(exact::kMaxInputBytes + 1, ' ');
+    const std::string expected = command_name(o) + " --certificate: the certificate would take";
+    try {
+      write_files(AssemblyInput{}, o, ans);
+      FAIL() << "no budget";
+    } catch (const exact::BudgetExceeded& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(expected, 0), 0u) << e.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(file));
+  }
+  EXPECT_EQ(command_name(AssemblyUcpOptions{}), "assembly");
 }
 
 TEST(AssemblyQuery, RefusesWhatItWouldNotAnswerExactly) {

@@ -1,0 +1,29 @@
+// The grid on which the motion's numbers keep a bounded size (docs/motion.md, "Bounded numbers"): the applied
+// twist's rotation and centre, a carried finger's slide and the free part of the translation correction.
+#pragma once
+
+#include "exact/number.h"
+
+namespace contactcert::solvers::motion {
+
+using exact::Q;
+
+/// x rounded to the nearest multiple of 2^-40 (x itself for double): the grid of the applied twist, on which the
+/// pose's numbers keep a bounded size (mpq_class keeps lowest terms, so a pose reached by an exact motion has the
+/// size of its own value, not of the path to it).
+inline Q on_grid(const Q& x) {
+  const Q scaled = x * Q(exact::Z(1) << 40) + Q(1, 2);
+  exact::Z n;
+  mpz_fdiv_q(n.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
+  return Q(n, exact::Z(1) << 40);
+}
+
+/// x itself while its numerator and denominator take at most 128 bits together, else on_grid(x): exact where that
+/// is cheap (the derived contact times of simple scenes stay exact), bounded where it is not.
+inline Q bounded(const Q& x) {
+  const std::size_t bits = mpz_sizeinbase(x.get_num_mpz_t(), 2) + mpz_sizeinbase(x.get_den_mpz_t(), 2);
+  return bits <= 128 ? x : on_grid(x);
+}
+inline double bounded(double x) { return x; }
+
+}  // namespace contactcert::solvers::motion
