@@ -37,6 +37,21 @@ struct Polygon {
   const std::vector<Vec2<exact::Interval>>& in;
 };
 
+/// Intervals whose operations take the rounding mode as set upward (CGAL::Interval_nt<false>): a filter of several
+/// operations runs under one CGAL::Protect_FPU_rounding (Upward below) instead of exact::Interval's setting and
+/// restoring the mode at every operation; the enclosures are the same.
+using Bare = CGAL::Interval_nt<false>;
+using Upward = CGAL::Protect_FPU_rounding<true>;
+Bare bare(const exact::Interval& x) { return Bare(x.inf(), x.sup()); }
+Vec2<Bare> bare(const Vec2<exact::Interval>& p) { return {bare(p.x), bare(p.y)}; }
+
+/// The sign of (b - a) x (p - a) when the enclosures prove it, else 0 (a filter: 0 decides nothing).
+int proven_side(const Vec2<exact::Interval>& a, const Vec2<exact::Interval>& b, const Vec2<exact::Interval>& p) {
+  const Upward upward;
+  const Bare t = cross2(bare(b) - bare(a), bare(p) - bare(a));
+  return t.inf() > 0 ? 1 : t.sup() < 0 ? -1 : 0;
+}
+
 /// True if the enclosures prove x outside the closed interval between u and v.
 bool outside(const exact::Interval& x, const exact::Interval& u, const exact::Interval& v) {
   return x.sup() < std::min(u.inf(), v.inf()) || x.inf() > std::max(u.sup(), v.sup());
@@ -53,8 +68,7 @@ int on_segment(const Polygon<T>& P, std::size_t k, const Polygon<T>& S, std::siz
   if constexpr (std::is_same_v<T, Q>) {
     const Vec2<exact::Interval>&pi = P.in[k], &ai = S.in[j], &bi = S.in[j1];
     if (outside(pi.x, ai.x, bi.x) || outside(pi.y, ai.y, bi.y)) return -1;
-    const exact::Interval line = cross2(bi - ai, pi - ai);
-    if (line.inf() > 0 || line.sup() < 0) return -1;
+    if (proven_side(ai, bi, pi) != 0) return -1;
     if (outside(p.x, a.x, b.x) || outside(p.y, a.y, b.y)) return -1;
   }
   const Vec2<T> e = b - a;
@@ -71,9 +85,7 @@ template <class T>
 int side(const Polygon<T>& x, std::size_t i, const Polygon<T>& y, std::size_t k) {
   const std::size_t j = (i + 1) % x.v.size();
   if constexpr (std::is_same_v<T, Q>) {
-    const exact::Interval t = cross2(x.in[j] - x.in[i], y.in[k] - x.in[i]);
-    if (t.inf() > 0) return 1;
-    if (t.sup() < 0) return -1;
+    if (const int proven = proven_side(x.in[i], x.in[j], y.in[k]); proven != 0) return proven;
   }
   return sign(cross2(x.v[j] - x.v[i], y.v[k] - x.v[i]));
 }
@@ -298,13 +310,13 @@ std::vector<U> gap_polynomial(bool turning, bool body_point, const Vec2<U>& p, c
 /// True if the enclosure g of a pair's gap polynomial proves the exact path's verdict that the pair closes no gap
 /// in (0, H]: g_0 <= 0 (touching or beyond the edge's line at the start: skipped), or g_0 > 0 and positive_on's
 /// bound g_0 + sum min(0, g_i) H^i > 0 (first_root.cpp); the exact bound lies in the enclosure computed here.
-bool closes_no_gap(const std::vector<Interval>& g, const Interval& H) {
+bool closes_no_gap(const std::vector<Bare>& g, const Bare& H) {
   if (g[0].sup() <= 0) return true;
   if (g[0].inf() <= 0) return false;
-  Interval bound = g[0], power(1);
+  Bare bound = g[0], power(1);
   for (std::size_t i = 1; i < g.size(); ++i) {
     power *= H;
-    bound += Interval(std::min(g[i].inf(), 0.0), std::min(g[i].sup(), 0.0)) * power;
+    bound += Bare(std::min(g[i].inf(), 0.0), std::min(g[i].sup(), 0.0)) * power;
   }
   return bound.inf() > 0;
 }
@@ -380,7 +392,7 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
     return std::move(s);
   };
   [[maybe_unused]] Interval k_in, limit_in;
-  [[maybe_unused]] Vec2<Interval> c_in, v_in;
+  [[maybe_unused]] Vec2<Interval> c_in{Interval(0), Interval(0)}, v_in;
   if constexpr (exact_path) {
     const Interval omega_in = exact::to_interval(omega);
     v_in = enclose(v);
@@ -393,17 +405,22 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
   const auto consider = [&](Shape& X, std::size_t i, bool body_point, Shape& Y, std::size_t j, const auto& pair_name) {
     const Vec2<T>& pv = X.velocity;
     if constexpr (exact_path) {
-      const Vec2<Interval>&p = X.enclosed[i], &a = Y.enclosed[j];
-      const Vec2<Interval> e = Y.enclosed[(j + 1) % Y.enclosed.size()] - a;
-      const Vec2<Interval> w = turning ? p - c_in : p;
-      const Interval K = turning ? cross2(c_in - a, e) : Interval(0);
-      const std::vector<Interval> g_in =
-          gap_polynomial<Interval>(turning, body_point, p, w, X.velocity_in, v_in, a, e, K, k_in);
-      if (closes_no_gap(g_in, limit_in)) return;
+      bool touching_or_beyond = false;  // the enclosure of g_0 does not prove it > 0
+      {
+        const Upward upward;
+        const Vec2<Bare> p = bare(X.enclosed[i]), a = bare(Y.enclosed[j]);
+        const Vec2<Bare> e = bare(Y.enclosed[(j + 1) % Y.enclosed.size()]) - a, c = bare(c_in);
+        const Vec2<Bare> w = turning ? p - c : p;
+        const Bare K = turning ? cross2(c - a, e) : Bare(0);
+        const std::vector<Bare> g_in = gap_polynomial<Bare>(turning, body_point, p, w, bare(X.velocity_in),
+                                                            bare(v_in), a, e, K, bare(k_in));
+        if (closes_no_gap(g_in, bare(limit_in))) return;
+        touching_or_beyond = g_in[0].inf() <= 0;
+      }
       // g_0 = (p - a) x e whatever the motion: a pair touching at the start, which the enclosure cannot prove, is
       // skipped by that sign alone.
       const Vec2<Q>& a0 = Y.x[j];
-      if (g_in[0].inf() <= 0 && sign(cross2(Y.x[(j + 1) % Y.x.size()] - a0, X.x[i] - a0)) >= 0) return;
+      if (touching_or_beyond && sign(cross2(Y.x[(j + 1) % Y.x.size()] - a0, X.x[i] - a0)) >= 0) return;
     }
     if (!X.points[i]) X.points[i] = point(X.x[i], X.moves_on_its_own);
     if (!Y.segments[j]) Y.segments[j] = segment(Y.x, j);
