@@ -15,6 +15,32 @@ Vec2<T> from_point(const Point2& p) {
   return {from_q<T>(p.x), from_q<T>(p.y)};
 }
 
+/// A rational n / d (d > 0) left unreduced: sums, differences and products in integers without the gcd that each Q
+/// operation takes, for the sign of a short polynomial in exact coordinates (the same sign as over Q).
+struct Unreduced {
+  exact::Z n, d;
+};
+Unreduced operator-(const Unreduced& a, const Unreduced& b) {
+  if (a.d == b.d) return {a.n - b.n, a.d};
+  return {a.n * b.d - b.n * a.d, a.d * b.d};
+}
+Unreduced operator+(const Unreduced& a, const Unreduced& b) {
+  if (a.d == b.d) return {a.n + b.n, a.d};
+  return {a.n * b.d + b.n * a.d, a.d * b.d};
+}
+Unreduced operator*(const Unreduced& a, const Unreduced& b) { return {a.n * b.n, a.d * b.d}; }
+int sign(const Unreduced& x) { return sgn(x.n); }
+Vec2<Unreduced> unreduced(const Vec2<Q>& p) { return {{p.x.get_num(), p.x.get_den()}, {p.y.get_num(), p.y.get_den()}}; }
+/// The float path's numbers as they are.
+const Vec2<double>& unreduced(const Vec2<double>& p) { return p; }
+
+/// The sign of (b - a) x (p - a): unreduced on the exact paths, with the float sign tolerance on the float path.
+template <class T>
+int orientation(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
+  const auto u = unreduced(a);
+  return sign(cross2(unreduced(b) - u, unreduced(p) - u));
+}
+
 /// Whether x lies outside the closed interval between u and v (comparisons only).
 bool outside(const Q& x, const Q& u, const Q& v) { return (x < u && x < v) || (x > u && x > v); }
 
@@ -59,8 +85,8 @@ bool outside(const exact::Interval& x, const exact::Interval& u, const exact::In
 
 /// Where vertex k of P lies against the edge j of S (a -> b): 1 strictly inside it, 0 at an end, -1 off it (or off
 /// its line). The exact paths first reject a point that the enclosures prove outside the segment's bounding box or
-/// off its line, then one outside the box by comparisons, which take no gcd (most pairs of a pose are far apart);
-/// the float path keeps its sign tolerance on the line test alone.
+/// off its line, then one outside the box by comparisons, which take no gcd (most pairs of a pose are far apart),
+/// and take the line and segment tests left in unreduced fractions; the float path keeps its sign tolerance.
 template <class T>
 int on_segment(const Polygon<T>& P, std::size_t k, const Polygon<T>& S, std::size_t j) {
   const std::size_t j1 = (j + 1) % S.v.size();
@@ -71,10 +97,11 @@ int on_segment(const Polygon<T>& P, std::size_t k, const Polygon<T>& S, std::siz
     if (proven_side(ai, bi, pi) != 0) return -1;
     if (outside(p.x, a.x, b.x) || outside(p.y, a.y, b.y)) return -1;
   }
-  const Vec2<T> e = b - a;
-  if (sign(cross2(e, p - a)) != 0) return -1;
-  const T s = dot2(p - a, e);
-  const int lo = sign(s), hi = sign(T(dot2(e, e) - s));
+  const auto u = unreduced(a);
+  const auto e = unreduced(b) - u, w = unreduced(p) - u;
+  if (sign(cross2(e, w)) != 0) return -1;
+  const auto s = dot2(w, e);
+  const int lo = sign(s), hi = sign(dot2(e, e) - s);
   if (lo < 0 || hi < 0) return -1;
   return lo > 0 && hi > 0 ? 1 : 0;
 }
@@ -87,7 +114,7 @@ int side(const Polygon<T>& x, std::size_t i, const Polygon<T>& y, std::size_t k)
   if constexpr (std::is_same_v<T, Q>) {
     if (const int proven = proven_side(x.in[i], x.in[j], y.in[k]); proven != 0) return proven;
   }
-  return sign(cross2(x.v[j] - x.v[i], y.v[k] - x.v[i]));
+  return orientation(x.v[i], x.v[j], y.v[k]);
 }
 
 /// True if no vertex of `other` is strictly on the inner (left) side of x's edge i.
@@ -412,15 +439,15 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
         const Vec2<Bare> e = bare(Y.enclosed[(j + 1) % Y.enclosed.size()]) - a, c = bare(c_in);
         const Vec2<Bare> w = turning ? p - c : p;
         const Bare K = turning ? cross2(c - a, e) : Bare(0);
-        const std::vector<Bare> g_in = gap_polynomial<Bare>(turning, body_point, p, w, bare(X.velocity_in),
-                                                            bare(v_in), a, e, K, bare(k_in));
+        const std::vector<Bare> g_in =
+            gap_polynomial<Bare>(turning, body_point, p, w, bare(X.velocity_in), bare(v_in), a, e, K, bare(k_in));
         if (closes_no_gap(g_in, bare(limit_in))) return;
         touching_or_beyond = g_in[0].inf() <= 0;
       }
       // g_0 = (p - a) x e whatever the motion: a pair touching at the start, which the enclosure cannot prove, is
       // skipped by that sign alone.
       const Vec2<Q>& a0 = Y.x[j];
-      if (touching_or_beyond && sign(cross2(Y.x[(j + 1) % Y.x.size()] - a0, X.x[i] - a0)) >= 0) return;
+      if (touching_or_beyond && orientation(a0, Y.x[(j + 1) % Y.x.size()], X.x[i]) >= 0) return;
     }
     if (!X.points[i]) X.points[i] = point(X.x[i], X.moves_on_its_own);
     if (!Y.segments[j]) Y.segments[j] = segment(Y.x, j);
