@@ -15,6 +15,32 @@ Vec2<T> from_point(const Point2& p) {
   return {from_q<T>(p.x), from_q<T>(p.y)};
 }
 
+/// A rational n / d (d > 0) left unreduced: sums, differences and products in integers without the gcd that each Q
+/// operation takes, for the sign of a short polynomial in exact coordinates (the same sign as over Q).
+struct Unreduced {
+  exact::Z n, d;
+};
+Unreduced operator-(const Unreduced& a, const Unreduced& b) {
+  if (a.d == b.d) return {a.n - b.n, a.d};
+  return {a.n * b.d - b.n * a.d, a.d * b.d};
+}
+Unreduced operator+(const Unreduced& a, const Unreduced& b) {
+  if (a.d == b.d) return {a.n + b.n, a.d};
+  return {a.n * b.d + b.n * a.d, a.d * b.d};
+}
+Unreduced operator*(const Unreduced& a, const Unreduced& b) { return {a.n * b.n, a.d * b.d}; }
+int sign(const Unreduced& x) { return sgn(x.n); }
+Vec2<Unreduced> unreduced(const Vec2<Q>& p) { return {{p.x.get_num(), p.x.get_den()}, {p.y.get_num(), p.y.get_den()}}; }
+/// The float path's numbers as they are.
+const Vec2<double>& unreduced(const Vec2<double>& p) { return p; }
+
+/// The sign of (b - a) x (p - a): unreduced on the exact paths, with the float sign tolerance on the float path.
+template <class T>
+int orientation(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
+  const auto u = unreduced(a);
+  return sign(cross2(unreduced(b) - u, unreduced(p) - u));
+}
+
 /// Whether x lies outside the closed interval between u and v (comparisons only).
 bool outside(const Q& x, const Q& u, const Q& v) { return (x < u && x < v) || (x > u && x > v); }
 
@@ -37,6 +63,21 @@ struct Polygon {
   const std::vector<Vec2<exact::Interval>>& in;
 };
 
+/// Intervals whose operations take the rounding mode as set upward (CGAL::Interval_nt<false>): a filter of several
+/// operations runs under one CGAL::Protect_FPU_rounding (Upward below) instead of exact::Interval's setting and
+/// restoring the mode at every operation; the enclosures are the same.
+using Bare = CGAL::Interval_nt<false>;
+using Upward = CGAL::Protect_FPU_rounding<true>;
+Bare bare(const exact::Interval& x) { return Bare(x.inf(), x.sup()); }
+Vec2<Bare> bare(const Vec2<exact::Interval>& p) { return {bare(p.x), bare(p.y)}; }
+
+/// The sign of (b - a) x (p - a) when the enclosures prove it, else 0 (a filter: 0 decides nothing).
+int proven_side(const Vec2<exact::Interval>& a, const Vec2<exact::Interval>& b, const Vec2<exact::Interval>& p) {
+  const Upward upward;
+  const Bare t = cross2(bare(b) - bare(a), bare(p) - bare(a));
+  return t.inf() > 0 ? 1 : t.sup() < 0 ? -1 : 0;
+}
+
 /// True if the enclosures prove x outside the closed interval between u and v.
 bool outside(const exact::Interval& x, const exact::Interval& u, const exact::Interval& v) {
   return x.sup() < std::min(u.inf(), v.inf()) || x.inf() > std::max(u.sup(), v.sup());
@@ -44,8 +85,8 @@ bool outside(const exact::Interval& x, const exact::Interval& u, const exact::In
 
 /// Where vertex k of P lies against the edge j of S (a -> b): 1 strictly inside it, 0 at an end, -1 off it (or off
 /// its line). The exact paths first reject a point that the enclosures prove outside the segment's bounding box or
-/// off its line, then one outside the box by comparisons, which take no gcd (most pairs of a pose are far apart);
-/// the float path keeps its sign tolerance on the line test alone.
+/// off its line, then one outside the box by comparisons, which take no gcd (most pairs of a pose are far apart),
+/// and take the line and segment tests left in unreduced fractions; the float path keeps its sign tolerance.
 template <class T>
 int on_segment(const Polygon<T>& P, std::size_t k, const Polygon<T>& S, std::size_t j) {
   const std::size_t j1 = (j + 1) % S.v.size();
@@ -53,14 +94,14 @@ int on_segment(const Polygon<T>& P, std::size_t k, const Polygon<T>& S, std::siz
   if constexpr (std::is_same_v<T, Q>) {
     const Vec2<exact::Interval>&pi = P.in[k], &ai = S.in[j], &bi = S.in[j1];
     if (outside(pi.x, ai.x, bi.x) || outside(pi.y, ai.y, bi.y)) return -1;
-    const exact::Interval line = cross2(bi - ai, pi - ai);
-    if (line.inf() > 0 || line.sup() < 0) return -1;
+    if (proven_side(ai, bi, pi) != 0) return -1;
     if (outside(p.x, a.x, b.x) || outside(p.y, a.y, b.y)) return -1;
   }
-  const Vec2<T> e = b - a;
-  if (sign(cross2(e, p - a)) != 0) return -1;
-  const T s = dot2(p - a, e);
-  const int lo = sign(s), hi = sign(T(dot2(e, e) - s));
+  const auto u = unreduced(a);
+  const auto e = unreduced(b) - u, w = unreduced(p) - u;
+  if (sign(cross2(e, w)) != 0) return -1;
+  const auto s = dot2(w, e);
+  const int lo = sign(s), hi = sign(dot2(e, e) - s);
   if (lo < 0 || hi < 0) return -1;
   return lo > 0 && hi > 0 ? 1 : 0;
 }
@@ -71,11 +112,9 @@ template <class T>
 int side(const Polygon<T>& x, std::size_t i, const Polygon<T>& y, std::size_t k) {
   const std::size_t j = (i + 1) % x.v.size();
   if constexpr (std::is_same_v<T, Q>) {
-    const exact::Interval t = cross2(x.in[j] - x.in[i], y.in[k] - x.in[i]);
-    if (t.inf() > 0) return 1;
-    if (t.sup() < 0) return -1;
+    if (const int proven = proven_side(x.in[i], x.in[j], y.in[k]); proven != 0) return proven;
   }
-  return sign(cross2(x.v[j] - x.v[i], y.v[k] - x.v[i]));
+  return orientation(x.v[i], x.v[j], y.v[k]);
 }
 
 /// True if no vertex of `other` is strictly on the inner (left) side of x's edge i.
@@ -298,13 +337,13 @@ std::vector<U> gap_polynomial(bool turning, bool body_point, const Vec2<U>& p, c
 /// True if the enclosure g of a pair's gap polynomial proves the exact path's verdict that the pair closes no gap
 /// in (0, H]: g_0 <= 0 (touching or beyond the edge's line at the start: skipped), or g_0 > 0 and positive_on's
 /// bound g_0 + sum min(0, g_i) H^i > 0 (first_root.cpp); the exact bound lies in the enclosure computed here.
-bool closes_no_gap(const std::vector<Interval>& g, const Interval& H) {
+bool closes_no_gap(const std::vector<Bare>& g, const Bare& H) {
   if (g[0].sup() <= 0) return true;
   if (g[0].inf() <= 0) return false;
-  Interval bound = g[0], power(1);
+  Bare bound = g[0], power(1);
   for (std::size_t i = 1; i < g.size(); ++i) {
     power *= H;
-    bound += Interval(std::min(g[i].inf(), 0.0), std::min(g[i].sup(), 0.0)) * power;
+    bound += Bare(std::min(g[i].inf(), 0.0), std::min(g[i].sup(), 0.0)) * power;
   }
   return bound.inf() > 0;
 }
@@ -380,7 +419,7 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
     return std::move(s);
   };
   [[maybe_unused]] Interval k_in, limit_in;
-  [[maybe_unused]] Vec2<Interval> c_in, v_in;
+  [[maybe_unused]] Vec2<Interval> c_in{Interval(0), Interval(0)}, v_in;
   if constexpr (exact_path) {
     const Interval omega_in = exact::to_interval(omega);
     v_in = enclose(v);
@@ -393,17 +432,22 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
   const auto consider = [&](Shape& X, std::size_t i, bool body_point, Shape& Y, std::size_t j, const auto& pair_name) {
     const Vec2<T>& pv = X.velocity;
     if constexpr (exact_path) {
-      const Vec2<Interval>&p = X.enclosed[i], &a = Y.enclosed[j];
-      const Vec2<Interval> e = Y.enclosed[(j + 1) % Y.enclosed.size()] - a;
-      const Vec2<Interval> w = turning ? p - c_in : p;
-      const Interval K = turning ? cross2(c_in - a, e) : Interval(0);
-      const std::vector<Interval> g_in =
-          gap_polynomial<Interval>(turning, body_point, p, w, X.velocity_in, v_in, a, e, K, k_in);
-      if (closes_no_gap(g_in, limit_in)) return;
+      bool touching_or_beyond = false;  // the enclosure of g_0 does not prove it > 0
+      {
+        const Upward upward;
+        const Vec2<Bare> p = bare(X.enclosed[i]), a = bare(Y.enclosed[j]);
+        const Vec2<Bare> e = bare(Y.enclosed[(j + 1) % Y.enclosed.size()]) - a, c = bare(c_in);
+        const Vec2<Bare> w = turning ? p - c : p;
+        const Bare K = turning ? cross2(c - a, e) : Bare(0);
+        const std::vector<Bare> g_in =
+            gap_polynomial<Bare>(turning, body_point, p, w, bare(X.velocity_in), bare(v_in), a, e, K, bare(k_in));
+        if (closes_no_gap(g_in, bare(limit_in))) return;
+        touching_or_beyond = g_in[0].inf() <= 0;
+      }
       // g_0 = (p - a) x e whatever the motion: a pair touching at the start, which the enclosure cannot prove, is
       // skipped by that sign alone.
       const Vec2<Q>& a0 = Y.x[j];
-      if (g_in[0].inf() <= 0 && sign(cross2(Y.x[(j + 1) % Y.x.size()] - a0, X.x[i] - a0)) >= 0) return;
+      if (touching_or_beyond && orientation(a0, Y.x[(j + 1) % Y.x.size()], X.x[i]) >= 0) return;
     }
     if (!X.points[i]) X.points[i] = point(X.x[i], X.moves_on_its_own);
     if (!Y.segments[j]) Y.segments[j] = segment(Y.x, j);
