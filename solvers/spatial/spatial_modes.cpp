@@ -188,10 +188,10 @@ std::vector<bool> kept_normals(const SpatialModel& model, exact::Arith arith, lo
 }
 
 // The strict-feasibility system of a prefix by its non-zero entries: its letters' rows, then a_n >= 0 at each later
-// contact that `kept` names (SpatialDeadPrefix's layout without the later contacts not kept). A row has at most six
+// contact that `later` names (SpatialDeadPrefix's layout without the other later contacts). A row has at most six
 // entries on vdot and one on its slack, so a deep prefix's system stays linear in its rows.
 exact::SparseStrictSystem<Q> prefix_system(const SpatialModel& model, const std::string& prefix,
-                                           const std::vector<bool>& kept) {
+                                           const std::vector<bool>& later) {
   exact::SparseStrictSystem<Q> sys;
   sys.cols = 6;
   sys.is_free.assign(6, true);
@@ -209,7 +209,7 @@ exact::SparseStrictSystem<Q> prefix_system(const SpatialModel& model, const std:
   for (std::size_t i = 0; i < prefix.size(); ++i)
     for (const SignRow& row : letter_rows(model.contacts[i], prefix[i])) put(row.f, row.strict, row.strict);
   for (std::size_t j = prefix.size(); j < model.contacts.size(); ++j)
-    if (kept[j]) put(model.contacts[j].n, true, false);
+    if (later[j]) put(model.contacts[j].n, true, false);
   return sys;
 }
 
@@ -274,8 +274,14 @@ class Walker {
         prefix.pop_back();
         continue;
       }
-      auto kin = exact::strict_feasibility(prefix_system(model_, prefix, kept_), options_.arith);
-      out_.lps += kin.lps;
+      // The prefix's LP with the kept later rows its points push into, added until its point meets them all (each
+      // round adds one at least) or it has none: the same verdict as with every kept row, in smaller LPs.
+      in_lp_.assign(k, false);
+      exact::StrictFeasibility<Q> kin;
+      do {
+        kin = exact::strict_feasibility(prefix_system(model_, prefix, in_lp_), options_.arith);
+        out_.lps += kin.lps;
+      } while (kin.status == exact::StrictStatus::kFeasible && pushed_into(kin.x.head(6)));
       if (kin.status == exact::StrictStatus::kFeasible) {
         path.push_back({Vec<Q>(kin.x.head(6)), 0});
         continue;
@@ -296,11 +302,25 @@ class Walker {
     return [this](std::size_t i) -> const std::vector<RowKey>& { return keys_at(i); };
   }
 
+  // Whether vdot has a_n < 0 at a kept later contact not yet in the LP (in_lp_); those put in.
+  bool pushed_into(const Vec<Q>& vdot) {
+    bool pushed = false;
+    for (std::size_t j = at_.size(); j < model_.contacts.size(); ++j)
+      if (kept_[j] && !in_lp_[j] && sgn(Q(model_.contacts[j].n.dot(vdot))) < 0) pushed = in_lp_[j] = true;
+    return pushed;
+  }
+
   // Keeps the rows a new dead prefix's certificate weighs as a proof, listed under the prefix's last contact (it
   // weighs a row of that letter: the parent's system, live, has the other rows); returns its index.
   std::size_t remember(const Vec<Q>& y) {
+    static const std::vector<RowKey> none;
     known_[at_.size() - 1].push_back(out_.proofs.size());
-    out_.proofs.push_back(proof_of(model_.contacts.size(), prefix_keys(), y));
+    out_.proofs.push_back(proof_of(
+        model_.contacts.size(),
+        [this](std::size_t i) -> const std::vector<RowKey>& {
+          return i < at_.size() ? keys_at(i) : in_lp_[i] ? later_keys() : none;
+        },
+        y));
     return out_.proofs.size() - 1;
   }
 
@@ -352,6 +372,7 @@ class Walker {
   std::vector<std::size_t> at_;                          ///< the current prefix's letters as indices
   std::vector<std::pair<std::size_t, bool>> landed_;     ///< reuse's scratch: where a proof's weights land
   const std::vector<bool> kept_;                         ///< per contact: its a_n >= 0 in prefix_system (kept_normals)
+  std::vector<bool> in_lp_;                              ///< per later contact: its a_n >= 0 in the current LP
 };
 
 }  // namespace

@@ -23,10 +23,11 @@
 // planar tree reuses certificates by row kind; else one strict-feasibility LP decides it. A dead prefix (with its
 // certificate) ends its subtree. Every letter implies a_n >= 0 (s: a_n > 0, the others a_n = 0), so a prefix of
 // contacts 0..i-1 is decided with the rows a_n >= 0 of the later contacts i..k-1 beside its letters' (prefix_system;
-// only those of the contacts whose w_n is not a non-negative combination of the others', chosen once per scene): a
-// prefix feasible alone but pushing into a later contact's wall is dead at once, with no subtree below it, and the
-// walk visits (2 + 2m) x (prefixes that extend to a mode) nodes, never (2 + 2m)^k. (A peg in a hole with 16
-// contacts: 9 modes in 1 361 nodes; 16 541 without those rows.)
+// only those of the contacts whose w_n is not a non-negative combination of the others', chosen once per scene, and
+// of those the ones its LP's point pushes into, added until the point meets them all): a prefix feasible alone but
+// pushing into a later contact's wall is dead at once, with no subtree below it, and the walk visits (2 + 2m) x
+// (prefixes that extend to a mode) nodes, never (2 + 2m)^k. (A peg in a hole with 16 contacts: 9 modes in 1 361
+// nodes; 16 541 without those rows.)
 #pragma once
 
 #include <string>
@@ -98,9 +99,9 @@ struct SpatialProof {
 /// A prefix whose rows have no solution. Its Motzkin certificate (columns vdot (6, free), then one slack per row that
 /// is not an equality: sigma > 0 for a strict row, sigma >= 0 for a_n >= 0; rows f . vdot - sigma = 0, or
 /// f . vdot = 0, letter by letter in the header's order, then w_n . vdot - sigma = 0 for each later contact; the
-/// walk's LP leaves out the later rows implied by the others, and its vectors weigh none of them) is the tree's proof
-/// `proof` moved onto its rows (dead_motzkin): most dead prefixes take an earlier prefix's proof, which weighs 2 to 4
-/// of their ~3 k rows, so the prefix holds its index, not a vector.
+/// walk's LP leaves out the later rows implied by the others and those its point meets, and its vectors weigh none of
+/// them) is the tree's proof `proof` moved onto its rows (dead_motzkin): most dead prefixes take an earlier prefix's
+/// proof, which weighs 2 to 4 of their ~3 k rows, so the prefix holds its index, not a vector.
 struct SpatialDeadPrefix {
   std::string prefix;
   std::size_t proof = 0;  ///< index in SpatialModeTree::proofs
