@@ -4,9 +4,10 @@
 // touching the four walls on their middle lines at k / 4 heights from z = 1/2 to 7/2 (k = 8 is
 // scenes/spatial_peg_in_hole.json up to the contacts' order); square pyramids, mu = 1/2. Per case: the walk with
 // its certificate text (what `modes SCENE --certificate F` computes), CPU time, and the counters modes, nodes
-// (prefixes visited), LPs and the certificate's bytes. bench/spatial_growth.py fits the growth in k and times the
-// command line end to end; `spatial_bench --scenes DIR` writes the scenes it uses as DIR/{box,peg}_K.json.
-// BM_SpatialStability: strong stability under gravity on the same cases, with the certificate's check time.
+// (prefixes visited), LPs, the certificate's bytes and check_ms (the independent checker's CPU time on it).
+// bench/spatial_growth.py fits the growth in k and times the command line end to end; `spatial_bench --scenes DIR`
+// writes the scenes it uses as DIR/{box,peg}_K.json. BM_SpatialStability: strong stability under gravity on the same
+// cases, with the certificate's check time.
 //   build-bench/bench/spatial_bench --benchmark_filter=BM_SpatialModes
 #include <benchmark/benchmark.h>
 
@@ -15,6 +16,7 @@
 #include <sstream>
 #include <string>
 
+#include "checker/spatial_modes_check.h"
 #include "checker/spatial_stability_check.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
@@ -70,6 +72,18 @@ std::string peg_text(int k) {
 
 std::string scene_text(int shape, int k) { return shape == 0 ? box_text(k) : peg_text(k); }
 
+// The independent checker's CPU ms on a certificate (`check`), 0 past the 32 MiB that `check` reads; a certificate it
+// refuses ends the case with an error.
+template <class Check>
+double check_ms(benchmark::State& state, const std::string& certificate, const Check& check) {
+  if (certificate.size() > exact::kMaxInputBytes) return 0;
+  const std::clock_t start = std::clock();
+  const auto verdict = check(checker::CertificateLines(certificate, "certificate.json"));
+  const double ms = 1000.0 * static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+  if (!verdict.valid) state.SkipWithError(("certificate refused: " + verdict.reason).c_str());
+  return ms;
+}
+
 // range(0): 0 box on a plane, 1 peg in a hole; range(1): k.
 void BM_SpatialModes(benchmark::State& state) {
   const int shape = static_cast<int>(state.range(0)), k = static_cast<int>(state.range(1));
@@ -77,16 +91,17 @@ void BM_SpatialModes(benchmark::State& state) {
   const solvers::spatial::SpatialModel model =
       solvers::spatial::spatial_model(geometry::read_spatial_scene(exact::JsonInput::parse(text, "bench")));
   solvers::spatial::SpatialModeTree tree;
-  std::size_t bytes = 0;
+  std::string certificate;
   for (auto _ : state) {
     tree = solvers::spatial::spatial_modes(model);
-    bytes = solvers::spatial::spatial_modes_certificate(text, tree).size();
-    benchmark::DoNotOptimize(bytes);
+    certificate = solvers::spatial::spatial_modes_certificate(text, tree);
+    benchmark::DoNotOptimize(certificate.size());
   }
   state.counters["modes"] = static_cast<double>(tree.modes.size());
   state.counters["nodes"] = static_cast<double>(tree.nodes);
   state.counters["lps"] = static_cast<double>(tree.lps);
-  state.counters["cert_bytes"] = static_cast<double>(bytes);
+  state.counters["cert_bytes"] = static_cast<double>(certificate.size());
+  state.counters["check_ms"] = check_ms(state, certificate, checker::check_spatial_modes_certificate);
   state.SetLabel(std::string(shape == 0 ? "box" : "peg") + " k=" + std::to_string(k));
 }
 BENCHMARK(BM_SpatialModes)
@@ -114,20 +129,12 @@ void BM_SpatialStability(benchmark::State& state) {
     certificate = solvers::spatial::spatial_stability_certificate(scene, text, g, r);
     benchmark::DoNotOptimize(certificate.size());
   }
-  double check_ms = 0;
-  if (certificate.size() <= exact::kMaxInputBytes) {
-    const std::clock_t start = std::clock();
-    const auto check =
-        checker::check_spatial_stability_certificate(checker::CertificateLines(certificate, "certificate.json"));
-    check_ms = 1000.0 * static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
-    if (!check.valid) state.SkipWithError(("certificate refused: " + check.reason).c_str());
-  }
+  state.counters["check_ms"] = check_ms(state, certificate, checker::check_spatial_stability_certificate);
   state.counters["verdict"] = static_cast<double>(r.verdict);
   state.counters["lps"] = static_cast<double>(r.lps);
   state.counters["modes_decided"] = static_cast<double>(r.modes_checked);
   state.counters["by_reuse"] = static_cast<double>(r.modes_by_reuse);
   state.counters["cert_bytes"] = static_cast<double>(certificate.size());
-  state.counters["check_ms"] = check_ms;
   state.SetLabel(std::string(shape == 0 ? "box" : "peg") + " k=" + std::to_string(k));
 }
 BENCHMARK(BM_SpatialStability)

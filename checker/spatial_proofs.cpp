@@ -94,7 +94,11 @@ bool SpatialProofs::proves(const exact::JsonInput& id, const std::string& letter
   if (!v.balanced || (v.dynamics && !mode)) return false;
   bool strict_negative = false;
   for (const Vector::Weight& x : v.weights) {
-    if (x.contact >= letters.size()) return false;
+    if (x.contact >= letters.size()) {  // past a prefix's letters: its row n . A vdot >= 0 (a non-strict inequality)
+      const RowBlocks::Row& normal = blocks_.rows(x.contact, 's')->front();
+      if (mode || x.cls != normal.cls || normal.sign * sgn(x.w) > 0) return false;
+      continue;
+    }
     const RowBlocks::Row* on = nullptr;
     for (const RowBlocks::Row& row : *blocks_.rows(x.contact, letters[x.contact]))
       if (row.cls == x.cls && (on == nullptr || (on->strict && !row.strict))) on = &row;

@@ -34,7 +34,11 @@ class SpatialProofs {
   /// kinematic rows (a dead prefix: no Newton-Euler weights, b = 0), or with `mode` of the mode's system for g
   /// (spatial_stability.h's Newton-Euler rows): balanced on vdot; y <= 0 on every strict row (its slack column);
   /// -z . (u, r x u) >= 0 on every weight column the letters allow; z . g <= 0; and z . g < 0 or some strict row's
-  /// y < 0.
+  /// y < 0. A dead prefix's rows also hold n . A vdot >= 0 at every contact past its letters (every letter implies
+  /// it: s > 0, the others = 0, so every mode extending the prefix meets them): a weight on the normal's class there
+  /// stands on that row, with y <= 0 (its slack sigma >= 0), and proves nothing strict. Motzkin's transposition
+  /// theorem for rows f_r . v = 0 (E), >= 0 (N), > 0 (S): no v meets them all iff some y has sum_r y_r f_r = 0,
+  /// y_r <= 0 on N and S and y_r < 0 on some row of S (if v met them, 0 = sum y_r f_r . v <= y_s f_s . v < 0).
   bool proves(const exact::JsonInput& id, const std::string& letters, bool mode) const;
 
   /// The dead prefixes of list "dead" ({"parent", "letters", "vectors"}), each proven by the vector it names, appended

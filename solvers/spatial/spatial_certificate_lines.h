@@ -23,7 +23,8 @@ class RowNames {
   /// The vector's line: {"rows": [[contact, letter, row], ...], "motzkin": [[index, weight], ...]}, its weights on
   /// the first rows (in contact, letter, row order; a row's weight times its sign), followed with `dynamics` by the
   /// six Newton-Euler rows' (y's last six entries), as one sparse primitive Motzkin vector. y is over the rows of
-  /// `letters` (prefix_system's layout).
+  /// `letters` (prefix_system's layout: a prefix's rows a_n >= 0 of the later contacts after its letters', named by
+  /// the functional n, the row of `s`).
   std::string line(const std::string& letters, const Vec<Q>& y, bool dynamics) const;
 
  private:

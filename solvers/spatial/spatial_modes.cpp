@@ -51,6 +51,12 @@ std::vector<RowKey> letter_keys(std::size_t m, char L) {
   return {n, {next, j, false}, {prev, j, true}, {after, next, true}};
 }
 
+// The row a_n >= 0 of a contact after a prefix's letters: the only row there of a prefix's system (prefix_system).
+const std::vector<RowKey>& later_keys() {
+  static const std::vector<RowKey> keys{{-1, 0, false, true}};
+  return keys;
+}
+
 // The row of `ks` with key's functional: (its index, reversed) where reversed means the edge difference d_b - d_a
 // of key's d_a - d_b (the same row with the sign flipped); nullopt if `ks` has none.
 std::optional<std::pair<std::size_t, bool>> find_key(const std::vector<RowKey>& ks, const RowKey& key) {
@@ -81,8 +87,9 @@ bool meets(const std::vector<SignRow>& rows, const Vec<Q>& vdot) {
 // The index of letter L in letters(m): s, f, then 'A' + j.
 std::size_t letter_index(char L) { return L == 's' ? 0 : L == 'f' ? 1 : 2 + static_cast<std::size_t>(L - 'A'); }
 
-// Where each weight of `proof` lands on a prefix whose letter at contact c has the keys keys_at(c): per weight the
-// row of its functional there (its index in the letter's rows, reversed as find_key); false if one has none.
+// Where each weight of `proof` lands on a prefix whose rows at contact c have the keys keys_at(c) (its letter's, or
+// later_keys past its letters): per weight the row of its functional there (its index in the contact's rows,
+// reversed as find_key); false if one has none.
 template <class KeysAt>
 bool land(const SpatialProof& proof, const KeysAt& keys_at, std::vector<std::pair<std::size_t, bool>>& at) {
   at.clear();
@@ -94,8 +101,8 @@ bool land(const SpatialProof& proof, const KeysAt& keys_at, std::vector<std::pai
   return true;
 }
 
-// The weighed rows of y, a vector over the rows of a prefix of `contacts` letters whose letter at contact c has the
-// keys keys_at(c) (prefix_system's layout), as a proof.
+// The weighed rows of y, a vector over the rows of a prefix of a scene of `contacts` contacts whose rows at contact c
+// have the keys keys_at(c) (prefix_system's layout), as a proof.
 template <class KeysAt>
 SpatialProof proof_of(std::size_t contacts, const KeysAt& keys_at, const Vec<Q>& y) {
   SpatialProof proof;
@@ -106,7 +113,7 @@ SpatialProof proof_of(std::size_t contacts, const KeysAt& keys_at, const Vec<Q>&
   return proof;
 }
 
-// The rows of a prefix of `contacts` letters whose letter at contact c has the keys keys_at(c).
+// The rows of a prefix of a scene of `contacts` contacts whose rows at contact c have the keys keys_at(c).
 template <class KeysAt>
 Index row_count(std::size_t contacts, const KeysAt& keys_at) {
   Index count = 0;
@@ -129,10 +136,10 @@ bool move_proof(const SpatialProof& proof, const KeysAt& keys_at, const Put& put
   return true;
 }
 
-// The letters' keys of a dead prefix of `tree`.
+// The keys of a dead prefix of `tree` per contact: its letter's, then later_keys.
 auto dead_keys(const SpatialModeTree& tree, const SpatialDeadPrefix& dead) {
   return [t = &tree, d = &dead](std::size_t c) -> const std::vector<RowKey>& {
-    return t->row_keys[c][letter_index(d->prefix[c])];
+    return c < d->prefix.size() ? t->row_keys[c][letter_index(d->prefix[c])] : later_keys();
   };
 }
 
@@ -155,31 +162,65 @@ bool realises(const SpatialModel& model, const std::string& prefix, const Vec<Q>
 
 namespace {
 
-// The strict-feasibility system of a prefix (SpatialDeadPrefix's layout), by its non-zero entries: a row has at most
-// six on vdot and one on its slack, so a deep prefix's system stays linear in its rows.
-exact::SparseStrictSystem<Q> prefix_system(const SpatialModel& model, const std::string& prefix) {
+// The contacts whose rows a_n >= 0 a prefix's system carries when they come after its letters: all but those whose
+// w_n is a non-negative combination of the others' kept (tried from the last contact back, one LP each, so that the
+// kept ones come early). Every letter implies a_n >= 0, so a prefix's letters with the kept later rows imply
+// a_n >= 0 at every contact: the same solutions as with every later row, in fewer rows (a box on a plane with k rim
+// contacts keeps its 4 corners, a peg in a hole with 4 walls at k / 4 heights the 8 contacts of its first two).
+std::vector<bool> kept_normals(const SpatialModel& model, exact::Arith arith, long& lps) {
+  const std::size_t k = model.contacts.size();
+  std::vector<bool> kept(k, true);
+  for (std::size_t c = k; c-- > 0;) {
+    exact::StrictSystem<Q> cone;  // sum_r lambda_r w_n(r) = w_n(c), lambda >= 0, over the kept r != c
+    cone.b = model.contacts[c].n;
+    cone.A = exact::Mat<Q>::Zero(6, 0);
+    for (std::size_t r = 0; r < k; ++r)
+      if (kept[r] && r != c) {
+        cone.A.conservativeResize(6, cone.A.cols() + 1);
+        cone.A.col(cone.A.cols() - 1) = model.contacts[r].n;
+      }
+    if (cone.A.cols() == 0) continue;
+    const auto f = exact::strict_feasibility(cone, arith);
+    lps += f.lps;
+    kept[c] = f.status != exact::StrictStatus::kFeasible;
+  }
+  return kept;
+}
+
+// The strict-feasibility system of a prefix by its non-zero entries: its letters' rows, then a_n >= 0 at each later
+// contact that `later` names (SpatialDeadPrefix's layout without the other later contacts). A row has at most six
+// entries on vdot and one on its slack, so a deep prefix's system stays linear in its rows.
+exact::SparseStrictSystem<Q> prefix_system(const SpatialModel& model, const std::string& prefix,
+                                           const std::vector<bool>& later) {
   exact::SparseStrictSystem<Q> sys;
   sys.cols = 6;
   sys.is_free.assign(6, true);
   sys.strict.assign(6, false);
-  for (std::size_t i = 0; i < prefix.size(); ++i)
-    for (const SignRow& row : letter_rows(model.contacts[i], prefix[i])) {
-      for (Index c = 0; c < 6; ++c)
-        if (sgn(row.f(c)) != 0) sys.entries.push_back({sys.rows, c, row.f(c)});
-      if (row.strict) {  // f . vdot - sigma = 0, sigma > 0
-        sys.entries.push_back({sys.rows, sys.cols++, Q(-1)});
-        sys.is_free.push_back(false);
-        sys.strict.push_back(true);
-      }
-      ++sys.rows;
+  auto put = [&sys](const Vec<Q>& f, bool slack, bool strict) {  // f . vdot - sigma = 0 (sigma > 0 or >= 0), or = 0
+    for (Index c = 0; c < 6; ++c)
+      if (sgn(f(c)) != 0) sys.entries.push_back({sys.rows, c, f(c)});
+    if (slack) {
+      sys.entries.push_back({sys.rows, sys.cols++, Q(-1)});
+      sys.is_free.push_back(false);
+      sys.strict.push_back(strict);
     }
+    ++sys.rows;
+  };
+  for (std::size_t i = 0; i < prefix.size(); ++i)
+    for (const SignRow& row : letter_rows(model.contacts[i], prefix[i])) put(row.f, row.strict, row.strict);
+  for (std::size_t j = prefix.size(); j < model.contacts.size(); ++j)
+    if (later[j]) put(model.contacts[j].n, true, false);
   return sys;
 }
 
 class Walker {
  public:
   Walker(const SpatialModel& model, const SpatialModeOptions& options, SpatialModeTree& out)
-      : model_(model), options_(options), out_(out), known_(model.contacts.size()) {
+      : model_(model),
+        options_(options),
+        out_(out),
+        known_(model.contacts.size()),
+        kept_(kept_normals(model, options.arith, out.lps)) {
     for (std::size_t i = 0; i < model.contacts.size(); ++i) {
       const SpatialModel::Contact& c = model.contacts[i];
       alphabets_.push_back(letters(c.d.size()));
@@ -233,8 +274,14 @@ class Walker {
         prefix.pop_back();
         continue;
       }
-      auto kin = exact::strict_feasibility(prefix_system(model_, prefix), options_.arith);
-      out_.lps += kin.lps;
+      // The prefix's LP with the kept later rows its points push into, added until its point meets them all (each
+      // round adds one at least) or it has none: the same verdict as with every kept row, in smaller LPs.
+      in_lp_.assign(k, false);
+      exact::StrictFeasibility<Q> kin;
+      do {
+        kin = exact::strict_feasibility(prefix_system(model_, prefix, in_lp_), options_.arith);
+        out_.lps += kin.lps;
+      } while (kin.status == exact::StrictStatus::kFeasible && pushed_into(kin.x.head(6)));
       if (kin.status == exact::StrictStatus::kFeasible) {
         path.push_back({Vec<Q>(kin.x.head(6)), 0});
         continue;
@@ -245,25 +292,44 @@ class Walker {
   }
 
  private:
-  // The keys of the current prefix's letter at contact i; and keys_at as a function (for proof_of, land).
-  const std::vector<RowKey>& keys_at(std::size_t i) const { return out_.row_keys[i][at_[i]]; }
+  // The keys of the current prefix's system's rows at contact i (its letter's, later_keys if kept, else none); and
+  // keys_at as a function (for proof_of, land).
+  const std::vector<RowKey>& keys_at(std::size_t i) const {
+    static const std::vector<RowKey> none;
+    return i < at_.size() ? out_.row_keys[i][at_[i]] : kept_[i] ? later_keys() : none;
+  }
   auto prefix_keys() const {
     return [this](std::size_t i) -> const std::vector<RowKey>& { return keys_at(i); };
   }
 
-  // Keeps the rows a new dead prefix's certificate weighs as a proof, listed under the prefix's last contact (every
-  // certificate weighs a row there: else the parent would be dead); returns its index.
+  // Whether vdot has a_n < 0 at a kept later contact not yet in the LP (in_lp_); those put in.
+  bool pushed_into(const Vec<Q>& vdot) {
+    bool pushed = false;
+    for (std::size_t j = at_.size(); j < model_.contacts.size(); ++j)
+      if (kept_[j] && !in_lp_[j] && sgn(Q(model_.contacts[j].n.dot(vdot))) < 0) pushed = in_lp_[j] = true;
+    return pushed;
+  }
+
+  // Keeps the rows a new dead prefix's certificate weighs as a proof, listed under the prefix's last contact (it
+  // weighs a row of that letter: the parent's system, live, has the other rows); returns its index.
   std::size_t remember(const Vec<Q>& y) {
-    SpatialProof known = proof_of(at_.size(), prefix_keys(), y);
-    if (!known.support.empty()) known_[known.support.back().contact].push_back(out_.proofs.size());
-    out_.proofs.push_back(std::move(known));
+    static const std::vector<RowKey> none;
+    known_[at_.size() - 1].push_back(out_.proofs.size());
+    out_.proofs.push_back(proof_of(
+        model_.contacts.size(),
+        [this](std::size_t i) -> const std::vector<RowKey>& {
+          return i < at_.size() ? keys_at(i) : in_lp_[i] ? later_keys() : none;
+        },
+        y));
     return out_.proofs.size() - 1;
   }
 
-  // A known proof that the current prefix is dead, or nullopt. Each weighed row moves to the prefix's row of the same
+  // A known proof that the current prefix is dead, or nullopt: one found for a prefix of the same length, so its
+  // weights past the letters land on the same rows a_n >= 0. Each weighed row moves to the prefix's row of the same
   // functional at its contact (the same direction, or the reversed d_b - d_a with the weight negated), so
-  // sum y_r f_r = 0 still holds; it is a Motzkin certificate again (checker's motzkin_holds: y_r <= 0 on strict rows,
-  // some strict y_r < 0, any sign on equalities) if every row it lands on as strict weighs <= 0 and one < 0.
+  // sum y_r f_r = 0 still holds; it is a Motzkin certificate again (exact/strict_feasibility.h: y_r <= 0 on strict
+  // and a_n >= 0 rows, some strict y_r < 0, any sign on equalities) if every row it lands on as strict or a_n >= 0
+  // weighs <= 0 and a strict one < 0.
   std::optional<std::size_t> reuse() {
     for (const std::size_t p : known_[at_.size() - 1]) {
       const SpatialProof& known = out_.proofs[p];
@@ -271,10 +337,11 @@ class Walker {
       bool strict_negative = false, signs = true;
       for (std::size_t r = 0; r < landed_.size() && signs; ++r) {
         const SpatialProof::Weight& w = known.support[r];
-        if (!keys_at(w.contact)[landed_[r].first].strict) continue;
+        const RowKey& on = keys_at(w.contact)[landed_[r].first];
+        if (!on.strict && !on.at_least) continue;
         const int s = landed_[r].second ? -sgn(w.y) : sgn(w.y);
         signs = s <= 0;
-        strict_negative = strict_negative || s < 0;
+        strict_negative = strict_negative || (on.strict && s < 0);
       }
       if (signs && strict_negative) return p;
     }
@@ -300,10 +367,12 @@ class Walker {
   const SpatialModeOptions& options_;
   SpatialModeTree& out_;
   std::vector<std::string> alphabets_;                   ///< per contact
-  std::vector<std::vector<std::size_t>> known_;          ///< out.proofs by the last contact of their support
+  std::vector<std::vector<std::size_t>> known_;          ///< out.proofs by the last contact of their prefix
   std::vector<std::vector<std::vector<SignRow>>> rows_;  ///< per contact and letter
   std::vector<std::size_t> at_;                          ///< the current prefix's letters as indices
   std::vector<std::pair<std::size_t, bool>> landed_;     ///< reuse's scratch: where a proof's weights land
+  const std::vector<bool> kept_;                         ///< per contact: its a_n >= 0 in prefix_system (kept_normals)
+  std::vector<bool> in_lp_;                              ///< per later contact: its a_n >= 0 in the current LP
 };
 
 }  // namespace
@@ -315,24 +384,24 @@ SpatialModeTree spatial_modes(const SpatialModel& model, const SpatialModeOption
 }
 
 Vec<Q> dead_motzkin(const SpatialModeTree& tree, const SpatialDeadPrefix& dead) {
-  Vec<Q> y = Vec<Q>::Zero(row_count(dead.prefix.size(), dead_keys(tree, dead)));
+  Vec<Q> y = Vec<Q>::Zero(row_count(tree.row_keys.size(), dead_keys(tree, dead)));
   move_proof(tree.proofs[dead.proof], dead_keys(tree, dead), [&](Index row, Q w) { y(row) = std::move(w); });
   return y;
 }
 
 Vec<Q> move_rows(const SpatialModel& model, const std::string& from, const Vec<Q>& y, const std::string& to) {
+  const std::size_t k = model.contacts.size();
   std::vector<std::vector<RowKey>> from_keys, to_keys;
-  for (std::size_t i = 0; i < from.size(); ++i) {
-    from_keys.push_back(letter_keys(model.contacts[i].d.size(), from[i]));
-    to_keys.push_back(letter_keys(model.contacts[i].d.size(), to[i]));
+  for (std::size_t i = 0; i < k; ++i) {
+    from_keys.push_back(i < from.size() ? letter_keys(model.contacts[i].d.size(), from[i]) : later_keys());
+    to_keys.push_back(i < to.size() ? letter_keys(model.contacts[i].d.size(), to[i]) : later_keys());
   }
   auto from_at = [&](std::size_t c) -> const std::vector<RowKey>& { return from_keys[c]; };
   auto to_at = [&](std::size_t c) -> const std::vector<RowKey>& { return to_keys[c]; };
-  const Index from_rows = row_count(from.size(), from_at), tail = y.size() - from_rows;
-  Vec<Q> out = Vec<Q>::Zero(row_count(to.size(), to_at) + tail);
+  const Index from_rows = row_count(k, from_at), tail = y.size() - from_rows;
+  Vec<Q> out = Vec<Q>::Zero(row_count(k, to_at) + tail);
   out.tail(tail) = y.tail(tail);  // the trailing rows copied
-  if (!move_proof(proof_of(from.size(), from_at, y), to_at, [&](Index row, Q w) { out(row) = std::move(w); }))
-    return Vec<Q>();
+  if (!move_proof(proof_of(k, from_at, y), to_at, [&](Index row, Q w) { out(row) = std::move(w); })) return Vec<Q>();
   return out;
 }
 

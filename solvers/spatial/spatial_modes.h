@@ -21,7 +21,13 @@
 // parent's vdot meets needs no LP; a prefix that has every row a known dead prefix's Motzkin certificate weighs (the
 // same functionals at the same contacts, signs permitting) is dead by that certificate moved to its rows, as the
 // planar tree reuses certificates by row kind; else one strict-feasibility LP decides it. A dead prefix (with its
-// certificate) ends its subtree, so the walk visits (2 + 2m) x (feasible prefixes) nodes, never (2 + 2m)^k.
+// certificate) ends its subtree. Every letter implies a_n >= 0 (s: a_n > 0, the others a_n = 0), so a prefix of
+// contacts 0..i-1 is decided with the rows a_n >= 0 of the later contacts i..k-1 beside its letters' (prefix_system;
+// only those of the contacts whose w_n is not a non-negative combination of the others', chosen once per scene, and
+// of those the ones its LP's point pushes into, added until the point meets them all): a prefix feasible alone but
+// pushing into a later contact's wall is dead at once, with no subtree below it, and the walk visits (2 + 2m) x
+// (prefixes that extend to a mode) nodes, never (2 + 2m)^k. (A peg in a hole with 16 contacts: 9 modes in 1 361
+// nodes; 16 541 without those rows.)
 #pragma once
 
 #include <string>
@@ -69,15 +75,18 @@ struct SpatialModeOptions {
 };
 
 /// A row of a letter by its functional at its contact: the direction u is n (a = -1, b = 0), t1 (-1, 1), t2 (-1, 2)
-/// or the edge difference d_a - d_b; the row is w_u . vdot = 0, or > 0 if strict.
+/// or the edge difference d_a - d_b; the row is w_u . vdot = 0, or > 0 if strict, or >= 0 if at_least (the row
+/// a_n >= 0 of a contact after a prefix's letters).
 struct SpatialRowKey {
   int a = -1, b = 0;
   bool strict = false;
+  bool at_least = false;
 };
 
-/// A Motzkin certificate by the rows it weighs: per weighed row its contact, its key and its weight, in contact order
-/// (its last contact is the last of the prefix it was found for). It proves dead every prefix whose letters have
-/// rows of these functionals at these contacts, signs permitting (the walk's reuse; dead_motzkin moves it there).
+/// A Motzkin certificate by the rows it weighs: per weighed row its contact, its key and its weight, in contact order.
+/// It was found for a prefix of some length l (its weights at contacts l.. are on their rows a_n >= 0), weighs a row
+/// of the letter at contact l - 1, and proves dead every prefix of length l whose letters have rows of these
+/// functionals at these contacts, signs permitting (the walk's reuse; dead_motzkin moves it there).
 struct SpatialProof {
   struct Weight {
     std::size_t contact;
@@ -87,10 +96,12 @@ struct SpatialProof {
   std::vector<Weight> support;
 };
 
-/// A prefix whose rows have no solution. Its Motzkin certificate (columns vdot (6, free), then one slack sigma > 0
-/// per strict row; rows f . vdot - sigma = 0, or f . vdot = 0, letter by letter in the header's order) is the tree's
-/// proof `proof` moved onto its rows (dead_motzkin): most dead prefixes take an earlier prefix's proof, which weighs
-/// 2 to 4 of their ~3 k rows, so the prefix holds its index, not a vector (k = 32: 720 000 of them).
+/// A prefix whose rows have no solution. Its Motzkin certificate (columns vdot (6, free), then one slack per row that
+/// is not an equality: sigma > 0 for a strict row, sigma >= 0 for a_n >= 0; rows f . vdot - sigma = 0, or
+/// f . vdot = 0, letter by letter in the header's order, then w_n . vdot - sigma = 0 for each later contact; the
+/// walk's LP leaves out the later rows implied by the others and those its point meets, and its vectors weigh none of
+/// them) is the tree's proof `proof` moved onto its rows (dead_motzkin): most dead prefixes take an earlier prefix's
+/// proof, which weighs 2 to 4 of their ~3 k rows, so the prefix holds its index, not a vector.
 struct SpatialDeadPrefix {
   std::string prefix;
   std::size_t proof = 0;  ///< index in SpatialModeTree::proofs
@@ -116,11 +127,12 @@ Vec<Q> dead_motzkin(const SpatialModeTree& tree, const SpatialDeadPrefix& dead);
 /// Whether vdot meets every row of the letters of `prefix` (a mode or a prefix of one).
 bool realises(const SpatialModel& model, const std::string& prefix, const Vec<Q>& vdot);
 
-/// A vector y over the letter rows of `from` (a mode or prefix; prefix_system's row order, as SpatialDeadPrefix),
-/// followed by rows of another kind, moved onto the rows of `to` (as long as `from`): each weighted row to the row of
-/// `to`'s letter with the same functional at its contact (an edge difference reversed with its weight negated, as
-/// the walk moves a dead prefix's certificate), the trailing rows copied. Empty if a weighted row has no
-/// counterpart; the signs are not checked (a Motzkin vector moved must be checked on its new system).
+/// A vector y over the rows of `from` (a mode or prefix; prefix_system's row order, as SpatialDeadPrefix: its letters'
+/// rows, then a_n >= 0 per later contact), followed by rows of another kind, moved onto the rows of `to` (as long as
+/// `from`): each weighted row to the row of `to`'s letter with the same functional at its contact (an edge difference
+/// reversed with its weight negated, as the walk moves a dead prefix's certificate), the later contacts' and the
+/// trailing rows copied. Empty if a weighted row has no counterpart; the signs are not checked (a Motzkin vector moved
+/// must be checked on its new system).
 Vec<Q> move_rows(const SpatialModel& model, const std::string& from, const Vec<Q>& y, const std::string& to);
 
 }  // namespace contactcert::solvers::spatial

@@ -1,7 +1,7 @@
 # Forged spatial_modes certificates (issue 34), sourced by forged_certificates.sh: the checker
 # (checker/spatial_modes_check.h) rebuilds every row from the embedded spatial scene, so a dropped mode or dead
 # prefix, a witness that does not realise its mode, a changed Motzkin weight, a vector used on a prefix it does not
-# prove, a foreign letter or a changed scene are INVALID (exit 2), a reference to a vector that does not exist or an
+# prove (weighing a contact past the prefix other than by its row n . A vdot >= 0 with a weight <= 0), a foreign letter or a changed scene are INVALID (exit 2), a reference to a vector that does not exist or an
 # unknown member refused (exit 2 naming the field), the same certificate in another layout refused, and the genuine
 # certificate VALID. Each forgery edits one line of the text (the line layout, docs/formats.md section 5c).
 
@@ -24,7 +24,7 @@ weight|does not verify|vectors 0 m = x["motzkin"]; m[0][1] = str(-int(m[0][1]))
 twice|is listed twice|modes 0 x = [x, x]
 letter|each s, f or A..|dead 1 x["parent"] = "Z"
 no_vector|$.vectors[0]: expected an integer from 0 to|dead 0 x["vectors"][0] = vectors
-elsewhere|does not verify|dead short x["vectors"][0] = next(i for i, v in enumerate(c["vectors"]) if max(r[0] for r in v["rows"]) > len(x["parent"]))
+elsewhere|does not verify|dead short x["vectors"][0] = next(i for i, v in enumerate(c["vectors"]) if any(r[0] > len(x["parent"]) and (r[1:] != ["s", 0] or int(dict(v["motzkin"]).get(n, "0")) > 0) for n, r in enumerate(v["rows"])))
 scene|problem_sha256 is not the digest|scene - x = x.replace('"mu": "1/2"', '"mu": "1/3"')
 moved||scene - x = x.replace('[1, 1, 0], "normal"', '[1, "1/2", 0], "normal"')
 extra|extra|problem_sha256 - x = [x, 1]

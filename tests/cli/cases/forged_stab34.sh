@@ -25,7 +25,7 @@ claim rest c["verdict"] = "weakly_stable"
 sticking rest c["modes"].append({"mode": "ffff", "vector": 0})
 no_vector rest c["modes"][0]["vector"] = len(c["vectors"])
 dynamics rest c["dead"][0]["vectors"][0] = c["modes"][0]["vector"]
-elsewhere rest d = min(c["dead"], key=lambda d: len(d["parent"])); d["vectors"][0] = next(i for i, v in enumerate(c["vectors"]) if max(r[0] for r in v["rows"]) > len(d["parent"]))
+elsewhere rest d = min(c["dead"], key=lambda d: len(d["parent"])); d["vectors"][0] = next(i for i, v in enumerate(c["vectors"]) if any(r[0] > len(d["parent"]) and (r[1:] != ["s", 0] or int(dict(v["motzkin"]).get(n, "0")) > 0) for n, r in enumerate(v["rows"])))
 twice rest v = c["vectors"][0]; v["rows"].append(v["rows"][0]); v["motzkin"].append([len(v["rows"]) - 1, "1"])
 unweighted rest v = c["vectors"][0]; v["rows"].append([0, "s", 0])
 letter_z rest c["vectors"][0]["rows"][0][1] = "Z"

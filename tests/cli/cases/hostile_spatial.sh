@@ -9,7 +9,7 @@ check 0 '340 feasible modes of 4 contacts of a body in space' modes "$box"
 check 0 '99 keep every contact, 1 separate every contact' modes "$box"
 check 0 '"counts":{"modes":340,"all_separating":1,"all_touching":99}' modes "$box" --json --certificate "$sd/box.cert"
 check 0 'spatial_modes certificate is VALID for' check "$sd/box.cert" --problem "$box"
-check 0 '"dead_prefixes":2442' check "$sd/box.cert" --json
+check 0 '"dead_prefixes":2199' check "$sd/box.cert" --json
 check 0 '740 feasible modes of 6 contacts' modes "$s/spatial_box_in_corner.json"
 # budgets: exit 3 with the coverage
 check 3 'node budget of 50 prefixes' modes "$box" --max-nodes 50

@@ -117,14 +117,14 @@ TEST(SpatialModes, BudgetsStopTheWalk) {
   EXPECT_EQ(spatial_modes(model).modes.size(), 340u);  // the default budgets hold it
 }
 
-// A dead prefix holds the index of its proof, which most share: the box on a plane's 2442 dead prefixes take 73
-// proofs (one per LP, of 440, that found a prefix dead; one proof serves 829), and each one's vector weighs exactly
-// its proof's rows.
+// A dead prefix holds the index of its proof, which most share: the box on a plane's 2199 dead prefixes take 79
+// proofs (one per LP that found a prefix dead, of 426 with the 4 that choose the later rows a_n >= 0 to keep; one
+// proof serves 829), and each one's vector weighs exactly its proof's rows.
 TEST(SpatialModes, DeadPrefixesShareTheirProofs) {
   const SpatialModeTree t = spatial_modes(spatial_model(parse(read("spatial_box_on_plane"))));
-  EXPECT_EQ(t.dead.size(), 2442u);
-  EXPECT_EQ(t.proofs.size(), 73u);
-  EXPECT_EQ(t.lps, 440);
+  EXPECT_EQ(t.dead.size(), 2199u);
+  EXPECT_EQ(t.proofs.size(), 79u);
+  EXPECT_EQ(t.lps, 426);
   std::vector<long> takers(t.proofs.size(), 0);
   for (const SpatialDeadPrefix& d : t.dead) {
     ASSERT_LT(d.proof, t.proofs.size());
@@ -158,6 +158,36 @@ TEST(SpatialModes, PegInHoleSlidesAndTwistsOnly) {
   for (const std::string& m : t.modes) EXPECT_EQ(m.find('s'), std::string::npos) << m;
   EXPECT_EQ(t.modes.front(), "ffffffff");
   EXPECT_TRUE(check_text(spatial_modes_certificate(text, t)).valid);
+}
+
+// A peg in a square hole as bench/spatial_bench's family: the four walls' middle lines at `heights` heights from
+// z = 1/2 to 7/2 (opposite walls one after the other), normals into the peg.
+std::string peg_text(int heights) {
+  std::string text =
+      R"({"kind": "spatial", "body": {"mass": 1, "inertia": [["5/3", 0, 0], [0, "5/3", 0], [0, 0, "2/3"]],
+      "com": [0, 0, 2], "box": {"center": [0, 0, 2], "half": [1, 1, 2]}}, "mu": "1/2", "contacts": [)";
+  const int wall[4][4] = {{1, 0, -1, 0}, {-1, 0, 1, 0}, {0, 1, 0, -1}, {0, -1, 0, 1}};
+  for (int h = 0, i = 0; h < heights; ++h)
+    for (const auto& w : wall) {
+      const Q z = Q(1, 2) + Q(3 * h, heights - 1);
+      text += std::string(i++ ? ", " : "") + "{\"point\": [" + std::to_string(w[0]) + ", " + std::to_string(w[1]) +
+              ", \"" + z.get_str() + "\"], \"normal\": [" + std::to_string(w[2]) + ", " + std::to_string(w[3]) +
+              ", 0]}";
+    }
+  return text + "]}";
+}
+
+// The tree is output-sensitive on the jammed peg: every letter implies a_n >= 0, so a prefix is decided with the
+// later contacts' rows a_n >= 0 (prefix_system), and a prefix whose every acceleration pushes into a later wall dies
+// at once. 9 modes at 8 and 16 contacts; without those rows the tree visited 18 621 and 16 541 prefixes.
+TEST(SpatialModes, PegTreeIsOutputSensitive) {
+  for (const std::string& text : {read("spatial_peg_in_hole"), peg_text(4)}) {
+    const SpatialModeTree t = spatial_modes(spatial_model(parse(text)));
+    EXPECT_EQ(t.modes.size(), 9u);
+    EXPECT_LT(t.nodes, 2000);
+    const checker::ModesCertificateCheck c = check_text(spatial_modes_certificate(text, t));
+    EXPECT_TRUE(c.valid) << c.reason;
+  }
 }
 
 // The brute force's own reading: contact i's point accelerates by a + alpha x r_i = P_i vdot; a letter is feasible
@@ -438,6 +468,52 @@ TEST(SpatialModes, ForgedCertificatesAreRejected) {
   EXPECT_TRUE(rejected(forge_line(good, "scene", -1, [&](J) { return J(moved); })));  // the scene under its digest
   EXPECT_FALSE(rejected(forge_line(good, "modes", 5, [](J m) { return m; })));
   EXPECT_FALSE(rejected(good));
+}
+
+// A dead prefix's vector may weigh the row n . A vdot >= 0 of a contact past its letters (docs/formats.md section
+// 5c), with weight <= 0, and nothing else there. The peg's certificate with its vectors and dead prefixes replaced by
+// one hand-made vector and one prefix naming it: check verifies the proofs before the coverage, so a proof that
+// holds ends in a coverage gap, one that does not in "does not verify". Its functionals (w_u = (u, r x u), r = p -
+// com): n0 = (-1, 0, 0, 0, 3/2, 0) = -n1, n4 = (-1, 0, 0, 0, -3/2, 0) = -n5, and the t2 = (1, 0, 0) of the walls
+// y+ (contacts 2 and 6, normal -y) u2 = (1, 0, 0, 0, -3/2, -1), u6 = (1, 0, 0, 0, 3/2, -1).
+TEST(SpatialModes, ForgedLaterContactWeightsAreRejected) {
+  const std::string text = read("spatial_peg_in_hole");
+  const std::string good = spatial_modes_certificate(text, spatial_modes(spatial_model(parse(text))));
+  auto one_proof = [&](const std::string& vector, const std::string& prefix) {
+    const std::size_t vectors = good.find(" \"vectors\": [\n"), modes = good.find(" \"modes\": [\n");
+    const std::string certificate = good.substr(0, vectors) + " \"vectors\": [\n  " + vector +
+                                    "\n ],\n \"dead\": [\n  " +
+                                    nlohmann::json{{"parent", prefix.substr(0, prefix.size() - 1)},
+                                                   {"letters", prefix.substr(prefix.size() - 1)},
+                                                   {"vectors", {0}}}
+                                        .dump() +
+                                    "\n ],\n" + good.substr(modes);
+    return check_text(certificate).reason;
+  };
+  auto refused = [&](const std::string& vector, const std::string& prefix) {
+    return one_proof(vector, prefix) == "the kinematic proof for prefix " + prefix + " does not verify";
+  };
+  // -n0 - n1 = 0: a_n0 > 0 (s) and a_n1 >= 0 (later, or any letter of contact 1).
+  const std::string opposite = R"({"rows":[[0,"s",0],[1,"s",0]],"motzkin":[[0,"-1"],[1,"-1"]]})";
+  EXPECT_FALSE(refused(opposite, "s"));
+  EXPECT_FALSE(refused(opposite, "ss"));
+  EXPECT_FALSE(refused(opposite, "sA"));
+  // -n0 - n1 + n4 + n5 = 0: weight 1 on n4 and n5, right on equality rows, wrong on a_n >= 0 or a_n > 0.
+  const std::string positive = R"({"rows":[[0,"s",0],[1,"s",0],[4,"s",0],[5,"s",0]],)"
+                               R"("motzkin":[[0,"-1"],[1,"-1"],[2,"1"],[3,"1"]]})";
+  EXPECT_TRUE(refused(positive, "s"));       // contacts 4 and 5 past the prefix: a_n >= 0 weighed 1
+  EXPECT_TRUE(refused(positive, "sffff"));   // contact 5 past it
+  EXPECT_TRUE(refused(positive, "sffffs"));  // contact 5's letter s: a_n > 0 weighed 1
+  EXPECT_FALSE(refused(positive, "sfffff"));
+  EXPECT_FALSE(refused(positive, "sfffEA"));
+  // -n0 - u2 - n5 + u6 = 0: t2 weighed at contacts 2 and 6, which only their letters f have.
+  const std::string tangent = R"({"rows":[[0,"s",0],[2,"f",2],[5,"s",0],[6,"f",2]],)"
+                              R"("motzkin":[[0,"-1"],[1,"-1"],[2,"-1"],[3,"1"]]})";
+  EXPECT_TRUE(refused(tangent, "s"));
+  EXPECT_TRUE(refused(tangent, "sfffff"));   // contact 6 past the prefix
+  EXPECT_TRUE(refused(tangent, "sfAffff"));  // letter A at contact 2 has no t2 row
+  EXPECT_FALSE(refused(tangent, "sffffff"));
+  EXPECT_FALSE(refused(tangent, "sfffffff"));
 }
 
 }  // namespace
