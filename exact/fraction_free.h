@@ -228,6 +228,26 @@ inline Z lcm(const Z& a, const Z& b) {
   return l;
 }
 
+/// In place, for the inner loops of eliminations and dot products: the same values, and in Z no temporary (each
+/// GMP temporary is a heap allocation and a free).
+/// acc += a b.
+inline void add_mul(std::int64_t& acc, std::int64_t a, std::int64_t b) { acc = add(acc, mul(a, b)); }
+inline void add_mul(Int128& acc, Int128 a, Int128 b) { acc = add(acc, mul(a, b)); }
+inline void add_mul(Z& acc, const Z& a, const Z& b) { mpz_addmul(acc.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t()); }
+/// out = a b - c e (out may be b, not c or e).
+inline void mul_sub(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t e, std::int64_t& out) {
+  out = sub(mul(a, b), mul(c, e));
+}
+inline void mul_sub(Int128 a, Int128 b, Int128 c, Int128 e, Int128& out) { out = sub(mul(a, b), mul(c, e)); }
+inline void mul_sub(const Z& a, const Z& b, const Z& c, const Z& e, Z& out) {
+  mpz_mul(out.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  mpz_submul(out.get_mpz_t(), c.get_mpz_t(), e.get_mpz_t());
+}
+/// a = a / b for b dividing a.
+inline void divexact_by(std::int64_t& a, std::int64_t b) { a = divexact(a, b); }
+inline void divexact_by(Int128& a, Int128 b) { a = divexact(a, b); }
+inline void divexact_by(Z& a, const Z& b) { mpz_divexact(a.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t()); }
+
 /// An integer as a ring element.
 /// std::int64_t: reads GMP's limb (mpz_size, mpz_getlimbn: inline, this runs once per entry when an LP or a
 /// system is scaled to integers); |x| >= 2^63 overflows (INT64_MIN too, as in `checked`).

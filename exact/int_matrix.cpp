@@ -18,10 +18,11 @@ using Index = Eigen::Index;
 template <class R>
 constexpr bool is_float_ring = !(std::is_same_v<R, std::int64_t> || std::is_same_v<R, Int128> || std::is_same_v<R, Z>);
 
-/// Divides v[0..k) by the positive gcd of its entries (all zero: unchanged); a float ring: ring::normalize.
+/// Divides v[0..k) by the positive gcd of its entries (all zero: unchanged); a float ring: ring::normalize. Z: also
+/// ring::normalize (the same division, in place, without a GMP temporary per entry).
 template <class R>
 void make_row_primitive(R* v, Index k) {
-  if constexpr (is_float_ring<R>) {
+  if constexpr (is_float_ring<R> || std::is_same_v<R, Z>) {
     ring::normalize(v, k);
   } else {
     R g(0);
@@ -42,7 +43,7 @@ void eliminate(const R* pivot_row, R* row, Index c, Index w, std::vector<R>& tmp
   } else {
     const R g = ring::gcd(pivot_row[c], row[c]);
     const R a = ring::divexact(pivot_row[c], g), f = ring::divexact(row[c], g);
-    for (Index j = 0; j < w; ++j) row[j] = ring::sub(ring::mul(a, row[j]), ring::mul(f, pivot_row[j]));
+    for (Index j = 0; j < w; ++j) ring::mul_sub(a, row[j], f, pivot_row[j], row[j]);
   }
   row[c] = R(0);
   make_row_primitive(row, w);
@@ -137,13 +138,14 @@ SolutionKind IntMatrix<R>::solve(R* N, R& d) {
   // start from): on the stack for the small systems of the UCP's pairs (a heap allocation costs as much as their
   // elimination).
   boost::container::small_vector<R, 16> g(static_cast<std::size_t>(k));
+  const R one(1);
   for (Index c = 0; c < k; ++c) {
     R& gc = g[static_cast<std::size_t>(c)];
-    for (Index i = 0; i < m && !(gc == R(1)); ++i)
+    for (Index i = 0; i < m && !(gc == one); ++i)
       if (sign(at(i, c)) != 0) gc = gcd(gc, at(i, c));
     if (sign(gc) == 0) return SolutionKind::kRankDeficient;  // a zero column
-    if (gc == R(1)) continue;
-    for (Index i = 0; i < m; ++i) at(i, c) = divexact(at(i, c), gc);
+    if (gc == one) continue;
+    for (Index i = 0; i < m; ++i) ring::divexact_by(at(i, c), gc);
   }
   make_primitive();
   // Fraction-free Gauss-Jordan (Bareiss applied above the pivot too): after step c every entry of the eliminated
@@ -159,8 +161,10 @@ SolutionKind IntMatrix<R>::solve(R* N, R& d) {
     for (Index i = 0; i < m; ++i) {
       if (i == c) continue;
       if (i < c) at(i, i) = at(c, c);  // (a_cc a_ii - a_ic a_ci) / prev with a_ci = 0, a_ii = prev
-      for (Index j = c + 1; j < w; ++j)
-        at(i, j) = divexact(sub(mul(at(c, c), at(i, j)), mul(at(i, c), at(c, j))), prev);
+      for (Index j = c + 1; j < w; ++j) {
+        ring::mul_sub(at(c, c), at(i, j), at(i, c), at(c, j), at(i, j));
+        ring::divexact_by(at(i, j), prev);
+      }
       at(i, c) = 0;
     }
     prev = at(c, c);

@@ -244,6 +244,9 @@ const char* run_status_name(RunStatus s) {
   return "unknown";
 }
 
+/// The step records a run reserves room for before its first step.
+constexpr long kReservedSteps = 1024;
+
 template <class T>
 Stepper<T>::Stepper(MotionScene scene, const SimulateOptions& opts)
     : scene_(std::move(scene)),
@@ -256,6 +259,9 @@ Stepper<T>::Stepper(MotionScene scene, const SimulateOptions& opts)
   constexpr bool exact_path = std::is_same_v<T, Q>;
   uopts_.arith =
       exact_path ? (opts.arith == exact::Arith::kFloat ? exact::Arith::kVerified : opts.arith) : exact::Arith::kFloat;
+  // Room for the records up front (up to kReservedSteps): gmpxx does not declare its rationals' moves noexcept (they
+  // allocate), so a growing std::vector copies every exact record, all its rationals, each time it doubles.
+  out_.steps.reserve(static_cast<std::size_t>(std::clamp(N_, 0L, kReservedSteps)));
   for (const Finger& f : scene_.fingers) out_.final_tips.push_back({from_q<T>(f.tip.x), from_q<T>(f.tip.y)});
   out_.final_poses.assign(g_.bodies.size(), Pose<T>{});
   world_ = world_bodies(g_, out_.final_poses);

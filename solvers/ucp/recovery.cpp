@@ -75,15 +75,12 @@ struct IntegerData {
   /// J[r] . x over the joints (times Lj_r: the row of [Jn; Jt] against x).
   R J_dot(Index r, const R* x) const {
     R sum(0);
-    for (Index t = J.begin(r); t < J.end(r); ++t) sum = ring::add(sum, ring::mul(J.value(t), x[J.col(t)]));
+    for (Index t = J.begin(r); t < J.end(r); ++t) ring::add_mul(sum, J.value(t), x[J.col(t)]);
     return sum;
   }
   /// out_j += J[r]_j c for every joint j (times Lj_r: c times the row of [Jn; Jt]).
   void J_scatter(Index r, const R& c, R* out) const {
-    for (Index t = J.begin(r); t < J.end(r); ++t) {
-      R& o = out[J.col(t)];
-      o = ring::add(o, ring::mul(J.value(t), c));
-    }
+    for (Index t = J.begin(r); t < J.end(r); ++t) ring::add_mul(out[J.col(t)], J.value(t), c);
   }
 };
 
@@ -92,7 +89,7 @@ template <class R>
 R dot(const R* a, const R* b, Index k) {
   R sum(0);
   for (Index i = 0; i < k; ++i)
-    if (ring::sign(a[i]) != 0) sum = ring::add(sum, ring::mul(a[i], b[i]));
+    if (ring::sign(a[i]) != 0) ring::add_mul(sum, a[i], b[i]);
   return sum;
 }
 
@@ -193,7 +190,7 @@ bool pattern_velocities_in(const QuasistaticProblem& p, const IntegerData<R>& g,
     if (fixed(r)) continue;
     const R* M_r = M + r * w;
     R v = ring::mul(ring::sub(R(0), d), M_r[m]);
-    for (Index j = 0; j < m; ++j) v = ring::add(v, ring::mul(M_r[j], N[j]));
+    for (Index j = 0; j < m; ++j) ring::add_mul(v, M_r[j], N[j]);
     const int sv = ring::sign(v);
     if (r < nc ? sv < 0 : (sv > 0 && zero(r)) || (sv < 0 && zero(r + nc))) return false;
     V[r] = ring::mul(v, ring::divexact(L, scale[r]));
@@ -383,7 +380,7 @@ ConditionsCheck check_in(const QuasistaticProblem& p, const IntegerData<R>& g, c
   for (Index k = 0; k < nq; ++k) {
     R sum = ring::mul(ring::mul(LP, g.d[static_cast<std::size_t>(k)]), Df);
     for (Index r = 0; r < 2 * nc; ++r)
-      if (ring::sign(wF[r]) != 0) sum = ring::add(sum, ring::mul(g.P.row(r)[k], wF[r]));
+      if (ring::sign(wF[r]) != 0) ring::add_mul(sum, g.P.row(r)[k], wF[r]);
     if (ring::sign(sum) != 0) bad("(2) equilibrium row " + std::to_string(k) + " is not zero");
   }
   // (3) Jn^T c_n + Jt^T c_t = tau - g_man, over LJ Df: sum_r J[r]_j factor_r F_r = LJ tau_j.
