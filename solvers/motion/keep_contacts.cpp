@@ -93,7 +93,7 @@ void keep_group(const std::vector<std::size_t>& group, const std::vector<Contact
   const auto add = [&](const exact::Vec<T>& a, const T& r) {
     exact::Mat<T> grown(A.rows() + 1, n);
     grown << A, a.transpose();
-    if (exact::rank(grown) == A.rows()) return;  // dependent: kept only if it agrees (KeptSteps::unkept)
+    if (exact::rank(grown) == A.rows()) return;  // dependent: kept only if it agrees
     A = std::move(grown);
     rhs.push_back(r);
   };
@@ -158,8 +158,8 @@ std::size_t root(std::vector<std::size_t>& up, std::size_t b) {
 }  // namespace
 
 template <class T>
-KeptSteps<T> keep_contacts(const Poses<T>& poses, Poses<T> steps, const std::vector<Contact<T>>& contacts,
-                           const std::vector<char>& modes, const std::vector<Twist<T>>& applied) {
+Poses<T> keep_contacts(const Poses<T>& poses, Poses<T> steps, const std::vector<Contact<T>>& contacts,
+                       const std::vector<char>& modes, const std::vector<Twist<T>>& applied) {
   const std::size_t nb = steps.size();
   std::vector<bool> turns(nb);
   for (std::size_t b = 0; b < nb; ++b) turns[b] = sign(applied[b].omega) != 0;
@@ -175,17 +175,25 @@ KeptSteps<T> keep_contacts(const Poses<T>& poses, Poses<T> steps, const std::vec
   for (const std::vector<std::size_t>& g : groups)  // step 2, where a body turns (else every gap stays 0)
     if (g.size() > 1 && std::any_of(g.begin(), g.end(), [&](std::size_t b) { return turns[b]; }))
       keep_group(g, contacts, modes, poses, steps);
-  KeptSteps<T> out{std::move(steps), {}};
+  return steps;
+}
+
+template <class T>
+std::vector<std::string> dipping_contacts(const std::vector<Contact<T>>& contacts, const std::vector<char>& modes,
+                                          const Poses<T>& steps) {
+  std::vector<std::string> out;
   for (std::size_t i = 0; i < contacts.size(); ++i)
-    if (maintained(contacts[i], modes[i]))
-      if (const int s = sign(gap_after(contacts[i], out.steps)); s != 0) out.unkept.push_back({contacts[i].name, s});
+    if (maintained(contacts[i], modes[i]) && sign(gap_after(contacts[i], steps)) < 0) out.push_back(contacts[i].name);
   return out;
 }
 
-template KeptSteps<Q> keep_contacts<Q>(const Poses<Q>&, Poses<Q>, const std::vector<Contact<Q>>&,
-                                       const std::vector<char>&, const std::vector<Twist<Q>>&);
-template KeptSteps<double> keep_contacts<double>(const Poses<double>&, Poses<double>,
-                                                 const std::vector<Contact<double>>&, const std::vector<char>&,
-                                                 const std::vector<Twist<double>>&);
+template Poses<Q> keep_contacts<Q>(const Poses<Q>&, Poses<Q>, const std::vector<Contact<Q>>&, const std::vector<char>&,
+                                   const std::vector<Twist<Q>>&);
+template Poses<double> keep_contacts<double>(const Poses<double>&, Poses<double>, const std::vector<Contact<double>>&,
+                                             const std::vector<char>&, const std::vector<Twist<double>>&);
+template std::vector<std::string> dipping_contacts<Q>(const std::vector<Contact<Q>>&, const std::vector<char>&,
+                                                      const Poses<Q>&);
+template std::vector<std::string> dipping_contacts<double>(const std::vector<Contact<double>>&,
+                                                           const std::vector<char>&, const Poses<double>&);
 
 }  // namespace contactcert::solvers::motion

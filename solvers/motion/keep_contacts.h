@@ -18,15 +18,6 @@ bool fixed_party(const Contact<T>& c, std::size_t b) {
          (c.kind == ContactKind::kBodyVertex || c.kind == ContactKind::kObstacleVertex);
 }
 
-/// The corrected steps, and the maintained contacts they leave off their lines.
-template <class T>
-struct KeptSteps {
-  Poses<T> steps;  ///< per body: world after = steps[b] applied to world before
-  /// Each maintained contact whose gap after the corrected steps is not 0 (more independent contact constraints than
-  /// translation freedoms), with the gap's sign: -1 it dips into the other shape, +1 it opens.
-  std::vector<std::pair<std::string, int>> unkept;
-};
-
 /// Corrects `steps` (from the poses `poses`, each body's rigid step by its applied twist `applied[b]`) so that the
 /// maintained contacts of `contacts` (modes[i] != 's', fingers aside: a carried finger moves with its body) stay
 /// exactly on their lines.
@@ -42,15 +33,25 @@ struct KeptSteps {
 ///    agrees. On the exact paths the bodies' new translations t' (the poses' `poses[b].t` after the step) then
 ///    keep A t' and have their free components (no pivot in A's echelon form) bounded (bounded.h), so that the
 ///    poses keep a bounded size.
-/// `unkept` then lists every maintained contact whose gap is not exactly 0.
+/// Returns the corrected steps (per body: world after = steps[b] applied to world before).
 template <class T>
-KeptSteps<T> keep_contacts(const Poses<T>& poses, Poses<T> steps, const std::vector<Contact<T>>& contacts,
-                           const std::vector<char>& modes, const std::vector<Twist<T>>& applied);
+Poses<T> keep_contacts(const Poses<T>& poses, Poses<T> steps, const std::vector<Contact<T>>& contacts,
+                       const std::vector<char>& modes, const std::vector<Twist<T>>& applied);
 
-extern template KeptSteps<Q> keep_contacts<Q>(const Poses<Q>&, Poses<Q>, const std::vector<Contact<Q>>&,
-                                              const std::vector<char>&, const std::vector<Twist<Q>>&);
-extern template KeptSteps<double> keep_contacts<double>(const Poses<double>&, Poses<double>,
-                                                        const std::vector<Contact<double>>&, const std::vector<char>&,
-                                                        const std::vector<Twist<double>>&);
+/// The names of the maintained contacts that dip into the other shape after `steps` (gap < 0: more independent
+/// contact constraints than translation freedoms), asked only when the overlap test finds an overlap.
+template <class T>
+std::vector<std::string> dipping_contacts(const std::vector<Contact<T>>& contacts, const std::vector<char>& modes,
+                                          const Poses<T>& steps);
+
+extern template Poses<Q> keep_contacts<Q>(const Poses<Q>&, Poses<Q>, const std::vector<Contact<Q>>&,
+                                          const std::vector<char>&, const std::vector<Twist<Q>>&);
+extern template Poses<double> keep_contacts<double>(const Poses<double>&, Poses<double>,
+                                                    const std::vector<Contact<double>>&, const std::vector<char>&,
+                                                    const std::vector<Twist<double>>&);
+extern template std::vector<std::string> dipping_contacts<Q>(const std::vector<Contact<Q>>&, const std::vector<char>&,
+                                                             const Poses<Q>&);
+extern template std::vector<std::string> dipping_contacts<double>(const std::vector<Contact<double>>&,
+                                                                  const std::vector<char>&, const Poses<double>&);
 
 }  // namespace contactcert::solvers::motion

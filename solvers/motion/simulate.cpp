@@ -123,11 +123,9 @@ StepSchedule<T> step_schedule(const MotionScene& scene, const SceneGeometry<T>& 
 
 /// What an overlap owes to the translation correction: ": the translation correction cannot keep C, ... closed
 /// (...)" naming the maintained contacts it leaves dipping, else empty.
-template <class T>
-std::string unkept_dips(const KeptSteps<T>& kept) {
+std::string unkept_dips(const std::vector<std::string>& dipping) {
   std::string names;
-  for (const auto& [name, side] : kept.unkept)
-    if (side < 0) names += (names.empty() ? "" : ", ") + name;
+  for (const std::string& name : dipping) names += (names.empty() ? "" : ", ") + name;
   return names.empty() ? ""
                        : ": the translation correction cannot keep " + names +
                              " closed (more independent contact constraints than translation freedoms)";
@@ -369,8 +367,7 @@ bool Stepper<T>::step() {
   for (std::size_t b = 0; b < poses.size(); ++b)
     twist_steps.push_back(geometry::twist_step(r.applied[b].v, r.applied[b].omega, r.h));
   for (const ContactRecord<T>& c : r.contacts) modes.push_back(c.mode);
-  const KeptSteps<T> kept = keep_contacts(poses, std::move(twist_steps), cs.contacts, modes, r.applied);
-  const Poses<T>& steps = kept.steps;
+  const Poses<T> steps = keep_contacts(poses, std::move(twist_steps), cs.contacts, modes, r.applied);
   for (std::size_t b = 0; b < poses.size(); ++b) poses[b] = compose(steps[b], poses[b]);
   std::vector<int> carrier(tips.size(), 0);  // the body a carried finger touches
   for (const Contact<T>& c : cs.contacts)
@@ -390,7 +387,8 @@ bool Stepper<T>::step() {
   out_.steps.push_back(std::move(r));
   const StepRecord<T>& last = out_.steps.back();
   if (const std::string o = overlap(g_, world_, tips); !o.empty())
-    finish(RunStatus::kOverlap, o + " after step " + std::to_string(k) + unkept_dips(kept));
+    finish(RunStatus::kOverlap,
+           o + " after step " + std::to_string(k) + unkept_dips(dipping_contacts(cs.contacts, modes, steps)));
   else if (!last.cut_exact)
     finish(RunStatus::kIrrationalContactTime,
            last.cut_by + " closes at an irrational time: the run stops just before it, the gap > 0 (step " +
