@@ -34,9 +34,9 @@ RowNames::RowNames(const SpatialModel& model) {
 std::string RowNames::line(const std::string& letters, const Vec<Q>& y, bool dynamics) const {
   std::vector<std::pair<std::array<std::size_t, 3>, Q>> weights;  // (contact, letter, row), weight
   Index at = 0;
-  const std::vector<Name> later{{0, 0, 1}};  // a_n >= 0 past the letters: the functional n, s's row
   for (std::size_t i = 0; i < names_.size(); ++i) {
-    const std::vector<Name>& rows = i < letters.size() ? names_[i][alphabets_[i].find(letters[i])] : later;
+    // Past the letters, the row a_n >= 0: named by s's one row, the functional n.
+    const std::vector<Name>& rows = names_[i][alphabets_[i].find(i < letters.size() ? letters[i] : 's')];
     const std::size_t first = weights.size();
     for (const Name& n : rows) {
       const Q& w = y(at++);
