@@ -14,6 +14,7 @@
 #include <ctime>
 
 #include "exact/json_input.h"
+#include "runtime/memory.h"
 #include "runtime/scenes.h"
 #include "solvers/motion/compare.h"
 #include "solvers/motion/simulate.h"
@@ -160,4 +161,13 @@ BENCHMARK(BM_ThousandSteps)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iteration
 
 }  // namespace
 
-BENCHMARK_MAIN();
+// With the command line's memory settings (runtime/memory.h), so that it times what a user's run does.
+int main(int argc, char** argv) {
+  contactcert::runtime::keep_heap_until_exit();
+  contactcert::runtime::use_pooled_gmp_memory();
+  benchmark::Initialize(&argc, argv);
+  const bool unknown = benchmark::ReportUnrecognizedArguments(argc, argv);
+  if (!unknown) benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return unknown ? 1 : 0;
+}

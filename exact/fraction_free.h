@@ -222,7 +222,13 @@ inline Int128 lcm(Int128 a, Int128 b) {
   if (a == 1) return b;
   return lcm_by_gcd(a, b);
 }
+/// Z: without a gcd when the two are equal or one divides the other (a running lcm of denominators that mostly
+/// repeat: the recovery's rows, the vectors over one denominator).
 inline Z lcm(const Z& a, const Z& b) {
+  if (mpz_cmp(a.get_mpz_t(), b.get_mpz_t()) == 0 || mpz_cmp_ui(b.get_mpz_t(), 1) == 0) return a;
+  if (mpz_cmp_ui(a.get_mpz_t(), 1) == 0) return b;
+  if (mpz_divisible_p(a.get_mpz_t(), b.get_mpz_t())) return a;
+  if (mpz_divisible_p(b.get_mpz_t(), a.get_mpz_t())) return b;
   Z l;
   mpz_lcm(l.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
   return l;
