@@ -1,7 +1,9 @@
 #include "solvers/motion/contacts.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include "exact/fraction_free.h"
 #include "exact/interval_number.h"
 #include "solvers/motion/first_root.h"
 
@@ -44,7 +46,19 @@ int orientation(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
 /// Whether x lies outside the closed interval between u and v (comparisons only).
 bool outside(const Q& x, const Q& u, const Q& v) { return (x < u && x < v) || (x > u && x > v); }
 
-Vec2<exact::Interval> enclose(const Vec2<Q>& p) { return {exact::to_interval(p.x), exact::to_interval(p.y)}; }
+/// An enclosure of q = n / d without MPFR's exact division (exact::to_interval), for the filters here: n and d
+/// truncated to doubles (mpz_get_d) and divided give r within 3 units of 2^-52 |q| whatever the rounding mode (a run
+/// under valgrind ignores it), so [r - 2^-49 |r|, r + 2^-49 |r|], each end rounded by at most 2^-52 |r|, holds q. A
+/// small integer is its own point; outside the normal doubles, exact::to_interval.
+exact::Interval enclose(const Q& q) {
+  const mpz_srcptr n = mpq_numref(q.get_mpq_t());
+  if (exact::ring::is_integer(q) && mpz_sizeinbase(n, 2) <= 53) return exact::Interval(mpz_get_d(n));
+  const double r = mpz_get_d(n) / mpz_get_d(mpq_denref(q.get_mpq_t()));
+  const double margin = std::ldexp(std::abs(r), -49);
+  if (!std::isfinite(r) || std::abs(r) < 0x1p-960) return exact::to_interval(q);
+  return exact::Interval(r - margin, r + margin);
+}
+Vec2<exact::Interval> enclose(const Vec2<Q>& p) { return {enclose(p.x), enclose(p.y)}; }
 
 /// The enclosures of v's points on the exact paths; none for double.
 template <class T>
@@ -421,11 +435,11 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
   [[maybe_unused]] Interval k_in, limit_in;
   [[maybe_unused]] Vec2<Interval> c_in{Interval(0), Interval(0)}, v_in;
   if constexpr (exact_path) {
-    const Interval omega_in = exact::to_interval(omega);
+    const Interval omega_in = enclose(omega);
     v_in = enclose(v);
     k_in = omega_in / 2;
     if (turning) c_in = {-v_in.y / omega_in, v_in.x / omega_in};
-    limit_in = exact::to_interval(limit);
+    limit_in = enclose(limit);
   }
   // The gap (times 1 + u^2) of point i of X, moving with velocity pv in the world (unless it is the body's own
   // vertex, body_point), against segment j of Y (a body edge when !body_point), in powers of tau.
@@ -472,7 +486,7 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
     if (best && !(root->tau < best->tau)) return;
     best = ClosingContact<T>{root->tau, root->exact, pair_name()};
     limit = root->tau;
-    if constexpr (exact_path) limit_in = exact::to_interval(limit);
+    if constexpr (exact_path) limit_in = enclose(limit);
   };
   Shape B = enclosed({body, zero}, world_body.in);
   for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
