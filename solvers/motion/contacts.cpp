@@ -32,7 +32,15 @@ Unreduced operator+(const Unreduced& a, const Unreduced& b) {
 }
 Unreduced operator*(const Unreduced& a, const Unreduced& b) { return {a.n * b.n, a.d * b.d}; }
 int sign(const Unreduced& x) { return sgn(x.n); }
-Vec2<Unreduced> unreduced(const Vec2<Q>& p) { return {{p.x.get_num(), p.x.get_den()}, {p.y.get_num(), p.y.get_den()}}; }
+/// p's coordinates over one denominator (theirs when they share it, else the product of theirs): the differences of
+/// points sharing it, and the products that cross2 and dot2 subtract or add, then meet equal denominators (no cross
+/// multiplication).
+Vec2<Unreduced> unreduced(const Vec2<Q>& p) {
+  if (mpz_cmp(mpq_denref(p.x.get_mpq_t()), mpq_denref(p.y.get_mpq_t())) == 0)
+    return {{p.x.get_num(), p.x.get_den()}, {p.y.get_num(), p.y.get_den()}};
+  const exact::Z d = p.x.get_den() * p.y.get_den();
+  return {{p.x.get_num() * p.y.get_den(), d}, {p.y.get_num() * p.x.get_den(), d}};
+}
 /// The float path's numbers as they are.
 const Vec2<double>& unreduced(const Vec2<double>& p) { return p; }
 
@@ -333,19 +341,24 @@ using exact::Interval;
 
 /// The gap (times 1 + u^2) of a point p (w = p - c) against the segment a -> a + e (K = (c - a) x e) over a step
 /// that turns a body by u = k tau about c, or translates it by v tau: p is the body's own vertex (body_point) or a
-/// point moving with velocity pv in the world against the body's edge. In powers of tau; over T or an enclosure.
+/// point moving with velocity pv in the world against the body's edge. In powers of tau, into g (its room reused from
+/// pair to pair); over T or an enclosure.
 template <class U>
-std::vector<U> gap_polynomial(bool turning, bool body_point, const Vec2<U>& p, const Vec2<U>& w, const Vec2<U>& pv,
-                              const Vec2<U>& v, const Vec2<U>& a, const Vec2<U>& e, const U& K, const U& k) {
+void gap_polynomial(bool turning, bool body_point, const Vec2<U>& p, const Vec2<U>& w, const Vec2<U>& pv,
+                    const Vec2<U>& v, const Vec2<U>& a, const Vec2<U>& e, const U& K, const U& k, std::vector<U>& g) {
   if (!turning) {
     const Vec2<U> rel = body_point ? v : pv - v;
-    return {cross2(p - a, e), cross2(rel, e)};
+    g = {cross2(p - a, e), cross2(rel, e)};
+    return;
   }
   const U C = cross2(w, e), D = dot2(w, e);
-  if (body_point) return {K + C, U(-2) * D * k, (K - C) * k * k};
+  if (body_point) {
+    g = {K + C, U(-2) * D * k, (K - C) * k * k};
+    return;
+  }
   // The point relative to the body: c + R(-u)(p + tau pv - c); eq. for a fixed point when pv = 0.
   const U Cv = cross2(pv, e), Dv = dot2(pv, e);
-  return {K + C, Cv + U(2) * D * k, (K - C) * k * k + U(2) * Dv * k, -Cv * k * k};
+  g = {K + C, Cv + U(2) * D * k, (K - C) * k * k + U(2) * Dv * k, -Cv * k * k};
 }
 
 /// True if the enclosure g of a pair's gap polynomial proves the exact path's verdict that the pair closes no gap
@@ -419,15 +432,15 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
     const std::vector<Vec2<T>>& x;
     Vec2<T> velocity;
     bool moves_on_its_own = false;
-    std::vector<std::optional<Point>> points = std::vector<std::optional<Point>>(x.size());
-    std::vector<std::optional<Segment>> segments = std::vector<std::optional<Segment>>(x.size());
-    std::vector<Vec2<Interval>> enclosed{};
-    Vec2<Interval> velocity_in{};
+    std::vector<std::optional<Point>> points{};  // sized on first use
+    std::vector<std::optional<Segment>> segments{};
+    const std::vector<Vec2<Interval>>* enclosed = nullptr;
+    Vec2<Interval> velocity_in{Interval(0), Interval(0)};
   };
   const Vec2<T> zero{T(0), T(0)};
   const auto enclosed = [&](Shape&& s, const std::vector<Vec2<Interval>>& points) {
     if constexpr (exact_path) {
-      s.enclosed = points;
+      s.enclosed = &points;
       s.velocity_in = enclose(s.velocity);
     }
     return std::move(s);
@@ -441,6 +454,8 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
     if (turning) c_in = {-v_in.y / omega_in, v_in.x / omega_in};
     limit_in = enclose(limit);
   }
+  std::vector<T> poly;
+  [[maybe_unused]] std::vector<Bare> g_in;
   // The gap (times 1 + u^2) of point i of X, moving with velocity pv in the world (unless it is the body's own
   // vertex, body_point), against segment j of Y (a body edge when !body_point), in powers of tau.
   const auto consider = [&](Shape& X, std::size_t i, bool body_point, Shape& Y, std::size_t j, const auto& pair_name) {
@@ -449,12 +464,11 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
       bool touching_or_beyond = false;  // the enclosure of g_0 does not prove it > 0
       {
         const Upward upward;
-        const Vec2<Bare> p = bare(X.enclosed[i]), a = bare(Y.enclosed[j]);
-        const Vec2<Bare> e = bare(Y.enclosed[(j + 1) % Y.enclosed.size()]) - a, c = bare(c_in);
+        const Vec2<Bare> p = bare((*X.enclosed)[i]), a = bare((*Y.enclosed)[j]);
+        const Vec2<Bare> e = bare((*Y.enclosed)[(j + 1) % Y.enclosed->size()]) - a, c = bare(c_in);
         const Vec2<Bare> w = turning ? p - c : p;
         const Bare K = turning ? cross2(c - a, e) : Bare(0);
-        const std::vector<Bare> g_in =
-            gap_polynomial<Bare>(turning, body_point, p, w, bare(X.velocity_in), bare(v_in), a, e, K, bare(k_in));
+        gap_polynomial<Bare>(turning, body_point, p, w, bare(X.velocity_in), bare(v_in), a, e, K, bare(k_in), g_in);
         if (closes_no_gap(g_in, bare(limit_in))) return;
         touching_or_beyond = g_in[0].inf() <= 0;
       }
@@ -463,13 +477,15 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
       const Vec2<Q>& a0 = Y.x[j];
       if (touching_or_beyond && orientation(a0, Y.x[(j + 1) % Y.x.size()], X.x[i]) >= 0) return;
     }
+    X.points.resize(X.x.size());
+    Y.segments.resize(Y.x.size());
     if (!X.points[i]) X.points[i] = point(X.x[i], X.moves_on_its_own);
     if (!Y.segments[j]) Y.segments[j] = segment(Y.x, j);
     const Point& P = *X.points[i];
     const Segment& S = *Y.segments[j];
     if (P.boxed && (P.hi.x < S.lo.x || S.hi.x < P.lo.x || P.hi.y < S.lo.y || S.hi.y < P.lo.y)) return;
     const Vec2<T>&p = P.p, &a = S.a, &e = S.e;
-    const std::vector<T> poly = gap_polynomial<T>(turning, body_point, p, P.w, pv, v, a, e, S.K, k);
+    gap_polynomial<T>(turning, body_point, p, P.w, pv, v, a, e, S.K, k, poly);
     if (sign(poly[0]) <= 0) return;  // touching (or beyond the edge's line) at the start
     const auto accept = [&](const T& tau) {
       const Pose<T> m = geometry::twist_step(v, omega, tau);
@@ -502,7 +518,8 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
   for (std::size_t f = 0; f < tips.size(); ++f) {
     if (!free_velocity[f]) continue;
     const std::vector<Vec2<T>> at{tips[f]};
-    Shape tip = enclosed({at, *free_velocity[f], true}, enclosures(at));
+    const std::vector<Vec2<Interval>> at_in = enclosures(at);
+    Shape tip = enclosed({at, *free_velocity[f], true}, at_in);
     for (std::size_t i = 0; i < nb; ++i)
       consider(tip, 0, false, B, i, [&] { return g.finger_names[f] + " on " + edge_name(name, i); });
   }
