@@ -375,6 +375,15 @@ bool closes_no_gap(const std::vector<Bare>& g, const Bare& H) {
   return bound.inf() > 0;
 }
 
+/// True if the enclosures prove the box [p - r, p + r] apart from the bounding box of the segment a -> b (rounding
+/// upward, as Bare's operations take it).
+bool proven_apart(const Vec2<Bare>& p, const Bare& r, const Vec2<Bare>& a, const Vec2<Bare>& b) {
+  const Bare spread(-r.sup(), r.sup());
+  const Bare x = p.x + spread, y = p.y + spread;
+  return x.sup() < std::min(a.x.inf(), b.x.inf()) || x.inf() > std::max(a.x.sup(), b.x.sup()) ||
+         y.sup() < std::min(a.y.inf(), b.y.inf()) || y.inf() > std::max(a.y.sup(), b.y.sup());
+}
+
 /// The first closing contact of body `which` (world vertices `body`, twist (v, omega)) with the obstacles and the
 /// free fingers before `limit`: updates best and limit.
 template <class T>
@@ -395,8 +404,9 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
   // the world, an obstacle vertex in the body's frame) over the step: each coordinate moves by at most |v|_inf H (a
   // translation) or |p - c|_2 |theta| <= 2 |p - c|_inf |omega| H (turning: the Cayley angle |theta| = 2 |atan(omega
   // tau / 2)| <= |omega| tau). A pair whose boxes are apart cannot meet in the step: it is skipped by comparisons.
-  // Before all that, the exact paths compute each pair's gap polynomial over interval enclosures of the data
-  // (exact/interval_number.h): most pairs are proved to close no gap there (closes_no_gap), without rationals.
+  // Before all that, the exact paths take the same boxes and then each pair's gap polynomial over interval enclosures
+  // of the data (exact/interval_number.h): most pairs are proved apart or to close no gap there (closes_no_gap),
+  // without rationals; the enclosures of the boxes hold the exact boxes, so they skip no pair that these would not.
   const auto magnitude = [](const T& x) { return sign(x) < 0 ? T(-x) : x; };
   const auto larger = [](const T& x, const T& y) { return x < y ? y : x; };
   const T reach = turning ? T(2 * magnitude(omega) * H) : T(larger(magnitude(v.x), magnitude(v.y)) * H);
@@ -445,7 +455,7 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
     }
     return std::move(s);
   };
-  [[maybe_unused]] Interval k_in, limit_in;
+  [[maybe_unused]] Interval k_in, limit_in, reach_in;
   [[maybe_unused]] Vec2<Interval> c_in{Interval(0), Interval(0)}, v_in;
   if constexpr (exact_path) {
     const Interval omega_in = enclose(omega);
@@ -453,6 +463,7 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
     k_in = omega_in / 2;
     if (turning) c_in = {-v_in.y / omega_in, v_in.x / omega_in};
     limit_in = enclose(limit);
+    reach_in = (turning ? 2 * CGAL::abs(omega_in) : CGAL::max(CGAL::abs(v_in.x), CGAL::abs(v_in.y))) * enclose(H);
   }
   std::vector<T> poly;
   [[maybe_unused]] std::vector<Bare> g_in;
@@ -465,8 +476,13 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
       {
         const Upward upward;
         const Vec2<Bare> p = bare((*X.enclosed)[i]), a = bare((*Y.enclosed)[j]);
-        const Vec2<Bare> e = bare((*Y.enclosed)[(j + 1) % Y.enclosed->size()]) - a, c = bare(c_in);
+        const Vec2<Bare> b = bare((*Y.enclosed)[(j + 1) % Y.enclosed->size()]), e = b - a, c = bare(c_in);
         const Vec2<Bare> w = turning ? p - c : p;
+        if (!X.moves_on_its_own) {
+          const Bare reach = bare(reach_in);
+          const Bare r = turning ? reach * Bare(std::max(CGAL::abs(w.x).sup(), CGAL::abs(w.y).sup())) : reach;
+          if (proven_apart(p, r, a, b)) return;
+        }
         const Bare K = turning ? cross2(c - a, e) : Bare(0);
         gap_polynomial<Bare>(turning, body_point, p, w, bare(X.velocity_in), bare(v_in), a, e, K, bare(k_in), g_in);
         if (closes_no_gap(g_in, bare(limit_in))) return;
