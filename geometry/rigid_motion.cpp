@@ -1,6 +1,7 @@
 #include "geometry/rigid_motion.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "exact/fraction_free.h"
@@ -80,6 +81,7 @@ struct PoseNumerators : Numerators<4> {
 void set_rotation(Z& C, Z& S, Z& D, Pose<Q>& out) {
   Z g;
   mpz_gcd(g.get_mpz_t(), C.get_mpz_t(), D.get_mpz_t());
+  assert(mpz_divisible_p(S.get_mpz_t(), g.get_mpz_t()));  // c^2 + s^2 = 1
   if (g != 1) {
     mpz_divexact(C.get_mpz_t(), C.get_mpz_t(), g.get_mpz_t());
     mpz_divexact(S.get_mpz_t(), S.get_mpz_t(), g.get_mpz_t());
