@@ -102,11 +102,26 @@ std::vector<Vec2<T>> apply_all(const Pose<T>& pose, const std::vector<Vec2<T>>& 
   for (const Vec2<T>& p : points) out.push_back(pose.apply(p));
   return out;
 }
+
+// For T = Q the same values over common denominators (rigid_motion.cpp), one reduction per output number.
 template <>
 std::vector<Vec2<exact::Q>> apply_all(const Pose<exact::Q>& pose, const std::vector<Vec2<exact::Q>>& points);
 /// R p + t over common denominators (as apply_all).
 template <>
 Vec2<exact::Q> Pose<exact::Q>::apply(const Vec2<exact::Q>& p) const;
+/// R p over common denominators.
+template <>
+Vec2<exact::Q> Pose<exact::Q>::rotate(const Vec2<exact::Q>& p) const;
+/// a o b over common denominators: R_a R_b's first column is R_a (c_b, s_b), its translation a(t_b).
+template <>
+Pose<exact::Q> compose(const Pose<exact::Q>& a, const Pose<exact::Q>& b);
+/// R(a / b) in lowest terms without a gcd: ((b^2 - a^2), 2ab) / (a^2 + b^2), halved when a and b are both odd.
+template <>
+Pose<exact::Q> cayley_rotation(const exact::Q& u);
+/// The step with t = (I - R) c = h b (b v + a J v) / (a^2 + b^2) for u = omega h / 2 = a / b (as 1 - c = 2a^2 /
+/// (a^2 + b^2), s = 2ab / (a^2 + b^2) and 2a / omega = b h): one reduction per coordinate.
+template <>
+Pose<exact::Q> twist_step(const Vec2<exact::Q>& v, const exact::Q& omega, const exact::Q& h);
 
 /// The angle (radians, a float view) that the rotation of a pose turns: atan2(s, c).
 double turned_angle(const Pose<double>& p);

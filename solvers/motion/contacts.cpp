@@ -1,7 +1,9 @@
 #include "solvers/motion/contacts.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include "exact/fraction_free.h"
 #include "exact/interval_number.h"
 #include "solvers/motion/first_root.h"
 
@@ -30,7 +32,15 @@ Unreduced operator+(const Unreduced& a, const Unreduced& b) {
 }
 Unreduced operator*(const Unreduced& a, const Unreduced& b) { return {a.n * b.n, a.d * b.d}; }
 int sign(const Unreduced& x) { return sgn(x.n); }
-Vec2<Unreduced> unreduced(const Vec2<Q>& p) { return {{p.x.get_num(), p.x.get_den()}, {p.y.get_num(), p.y.get_den()}}; }
+/// p's coordinates over one denominator (theirs when they share it, else the product of theirs): the differences of
+/// points sharing it, and the products that cross2 and dot2 subtract or add, then meet equal denominators (no cross
+/// multiplication).
+Vec2<Unreduced> unreduced(const Vec2<Q>& p) {
+  if (mpz_cmp(mpq_denref(p.x.get_mpq_t()), mpq_denref(p.y.get_mpq_t())) == 0)
+    return {{p.x.get_num(), p.x.get_den()}, {p.y.get_num(), p.y.get_den()}};
+  const exact::Z d = p.x.get_den() * p.y.get_den();
+  return {{p.x.get_num() * p.y.get_den(), d}, {p.y.get_num() * p.x.get_den(), d}};
+}
 /// The float path's numbers as they are.
 const Vec2<double>& unreduced(const Vec2<double>& p) { return p; }
 
@@ -44,7 +54,19 @@ int orientation(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
 /// Whether x lies outside the closed interval between u and v (comparisons only).
 bool outside(const Q& x, const Q& u, const Q& v) { return (x < u && x < v) || (x > u && x > v); }
 
-Vec2<exact::Interval> enclose(const Vec2<Q>& p) { return {exact::to_interval(p.x), exact::to_interval(p.y)}; }
+/// An enclosure of q = n / d without MPFR's exact division (exact::to_interval), for the filters here: n and d
+/// truncated to doubles (mpz_get_d) and divided give r within 3 units of 2^-52 |q| whatever the rounding mode (a run
+/// under valgrind ignores it), so [r - 2^-49 |r|, r + 2^-49 |r|], each end rounded by at most 2^-52 |r|, holds q. A
+/// small integer is its own point; outside the normal doubles, exact::to_interval.
+exact::Interval enclose(const Q& q) {
+  const mpz_srcptr n = mpq_numref(q.get_mpq_t());
+  if (exact::ring::is_integer(q) && mpz_sizeinbase(n, 2) <= 53) return exact::Interval(mpz_get_d(n));
+  const double r = mpz_get_d(n) / mpz_get_d(mpq_denref(q.get_mpq_t()));
+  const double margin = std::ldexp(std::abs(r), -49);
+  if (!std::isfinite(r) || std::abs(r) < 0x1p-960) return exact::to_interval(q);
+  return exact::Interval(r - margin, r + margin);
+}
+Vec2<exact::Interval> enclose(const Vec2<Q>& p) { return {enclose(p.x), enclose(p.y)}; }
 
 /// The enclosures of v's points on the exact paths; none for double.
 template <class T>
@@ -319,19 +341,24 @@ using exact::Interval;
 
 /// The gap (times 1 + u^2) of a point p (w = p - c) against the segment a -> a + e (K = (c - a) x e) over a step
 /// that turns a body by u = k tau about c, or translates it by v tau: p is the body's own vertex (body_point) or a
-/// point moving with velocity pv in the world against the body's edge. In powers of tau; over T or an enclosure.
+/// point moving with velocity pv in the world against the body's edge. In powers of tau, into g (its room reused from
+/// pair to pair); over T or an enclosure.
 template <class U>
-std::vector<U> gap_polynomial(bool turning, bool body_point, const Vec2<U>& p, const Vec2<U>& w, const Vec2<U>& pv,
-                              const Vec2<U>& v, const Vec2<U>& a, const Vec2<U>& e, const U& K, const U& k) {
+void gap_polynomial(bool turning, bool body_point, const Vec2<U>& p, const Vec2<U>& w, const Vec2<U>& pv,
+                    const Vec2<U>& v, const Vec2<U>& a, const Vec2<U>& e, const U& K, const U& k, std::vector<U>& g) {
   if (!turning) {
     const Vec2<U> rel = body_point ? v : pv - v;
-    return {cross2(p - a, e), cross2(rel, e)};
+    g = {cross2(p - a, e), cross2(rel, e)};
+    return;
   }
   const U C = cross2(w, e), D = dot2(w, e);
-  if (body_point) return {K + C, U(-2) * D * k, (K - C) * k * k};
+  if (body_point) {
+    g = {K + C, U(-2) * D * k, (K - C) * k * k};
+    return;
+  }
   // The point relative to the body: c + R(-u)(p + tau pv - c); eq. for a fixed point when pv = 0.
   const U Cv = cross2(pv, e), Dv = dot2(pv, e);
-  return {K + C, Cv + U(2) * D * k, (K - C) * k * k + U(2) * Dv * k, -Cv * k * k};
+  g = {K + C, Cv + U(2) * D * k, (K - C) * k * k + U(2) * Dv * k, -Cv * k * k};
 }
 
 /// True if the enclosure g of a pair's gap polynomial proves the exact path's verdict that the pair closes no gap
@@ -346,6 +373,15 @@ bool closes_no_gap(const std::vector<Bare>& g, const Bare& H) {
     bound += Bare(std::min(g[i].inf(), 0.0), std::min(g[i].sup(), 0.0)) * power;
   }
   return bound.inf() > 0;
+}
+
+/// True if the enclosures prove the box [p - r, p + r] apart from the bounding box of the segment a -> b (rounding
+/// upward, as Bare's operations take it).
+bool proven_apart(const Vec2<Bare>& p, const Bare& r, const Vec2<Bare>& a, const Vec2<Bare>& b) {
+  const Bare spread(-r.sup(), r.sup());
+  const Bare x = p.x + spread, y = p.y + spread;
+  return x.sup() < std::min(a.x.inf(), b.x.inf()) || x.inf() > std::max(a.x.sup(), b.x.sup()) ||
+         y.sup() < std::min(a.y.inf(), b.y.inf()) || y.inf() > std::max(a.y.sup(), b.y.sup());
 }
 
 /// The first closing contact of body `which` (world vertices `body`, twist (v, omega)) with the obstacles and the
@@ -368,8 +404,9 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
   // the world, an obstacle vertex in the body's frame) over the step: each coordinate moves by at most |v|_inf H (a
   // translation) or |p - c|_2 |theta| <= 2 |p - c|_inf |omega| H (turning: the Cayley angle |theta| = 2 |atan(omega
   // tau / 2)| <= |omega| tau). A pair whose boxes are apart cannot meet in the step: it is skipped by comparisons.
-  // Before all that, the exact paths compute each pair's gap polynomial over interval enclosures of the data
-  // (exact/interval_number.h): most pairs are proved to close no gap there (closes_no_gap), without rationals.
+  // Before all that, the exact paths take the same boxes and then each pair's gap polynomial over interval enclosures
+  // of the data (exact/interval_number.h): most pairs are proved apart or to close no gap there (closes_no_gap),
+  // without rationals; the enclosures of the boxes hold the exact boxes, so they skip no pair that these would not.
   const auto magnitude = [](const T& x) { return sign(x) < 0 ? T(-x) : x; };
   const auto larger = [](const T& x, const T& y) { return x < y ? y : x; };
   const T reach = turning ? T(2 * magnitude(omega) * H) : T(larger(magnitude(v.x), magnitude(v.y)) * H);
@@ -405,28 +442,31 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
     const std::vector<Vec2<T>>& x;
     Vec2<T> velocity;
     bool moves_on_its_own = false;
-    std::vector<std::optional<Point>> points = std::vector<std::optional<Point>>(x.size());
-    std::vector<std::optional<Segment>> segments = std::vector<std::optional<Segment>>(x.size());
-    std::vector<Vec2<Interval>> enclosed{};
-    Vec2<Interval> velocity_in{};
+    std::vector<std::optional<Point>> points{};  // sized on first use
+    std::vector<std::optional<Segment>> segments{};
+    const std::vector<Vec2<Interval>>* enclosed = nullptr;
+    Vec2<Interval> velocity_in{Interval(0), Interval(0)};
   };
   const Vec2<T> zero{T(0), T(0)};
   const auto enclosed = [&](Shape&& s, const std::vector<Vec2<Interval>>& points) {
     if constexpr (exact_path) {
-      s.enclosed = points;
+      s.enclosed = &points;
       s.velocity_in = enclose(s.velocity);
     }
     return std::move(s);
   };
-  [[maybe_unused]] Interval k_in, limit_in;
+  [[maybe_unused]] Interval k_in, limit_in, reach_in;
   [[maybe_unused]] Vec2<Interval> c_in{Interval(0), Interval(0)}, v_in;
   if constexpr (exact_path) {
-    const Interval omega_in = exact::to_interval(omega);
+    const Interval omega_in = enclose(omega);
     v_in = enclose(v);
     k_in = omega_in / 2;
     if (turning) c_in = {-v_in.y / omega_in, v_in.x / omega_in};
-    limit_in = exact::to_interval(limit);
+    limit_in = enclose(limit);
+    reach_in = (turning ? 2 * CGAL::abs(omega_in) : CGAL::max(CGAL::abs(v_in.x), CGAL::abs(v_in.y))) * enclose(H);
   }
+  std::vector<T> poly;
+  [[maybe_unused]] std::vector<Bare> g_in;
   // The gap (times 1 + u^2) of point i of X, moving with velocity pv in the world (unless it is the body's own
   // vertex, body_point), against segment j of Y (a body edge when !body_point), in powers of tau.
   const auto consider = [&](Shape& X, std::size_t i, bool body_point, Shape& Y, std::size_t j, const auto& pair_name) {
@@ -435,12 +475,16 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
       bool touching_or_beyond = false;  // the enclosure of g_0 does not prove it > 0
       {
         const Upward upward;
-        const Vec2<Bare> p = bare(X.enclosed[i]), a = bare(Y.enclosed[j]);
-        const Vec2<Bare> e = bare(Y.enclosed[(j + 1) % Y.enclosed.size()]) - a, c = bare(c_in);
+        const Vec2<Bare> p = bare((*X.enclosed)[i]), a = bare((*Y.enclosed)[j]);
+        const Vec2<Bare> b = bare((*Y.enclosed)[(j + 1) % Y.enclosed->size()]), e = b - a, c = bare(c_in);
         const Vec2<Bare> w = turning ? p - c : p;
+        if (!X.moves_on_its_own) {
+          const Bare reach = bare(reach_in);
+          const Bare r = turning ? reach * Bare(std::max(CGAL::abs(w.x).sup(), CGAL::abs(w.y).sup())) : reach;
+          if (proven_apart(p, r, a, b)) return;
+        }
         const Bare K = turning ? cross2(c - a, e) : Bare(0);
-        const std::vector<Bare> g_in =
-            gap_polynomial<Bare>(turning, body_point, p, w, bare(X.velocity_in), bare(v_in), a, e, K, bare(k_in));
+        gap_polynomial<Bare>(turning, body_point, p, w, bare(X.velocity_in), bare(v_in), a, e, K, bare(k_in), g_in);
         if (closes_no_gap(g_in, bare(limit_in))) return;
         touching_or_beyond = g_in[0].inf() <= 0;
       }
@@ -449,13 +493,15 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
       const Vec2<Q>& a0 = Y.x[j];
       if (touching_or_beyond && orientation(a0, Y.x[(j + 1) % Y.x.size()], X.x[i]) >= 0) return;
     }
+    X.points.resize(X.x.size());
+    Y.segments.resize(Y.x.size());
     if (!X.points[i]) X.points[i] = point(X.x[i], X.moves_on_its_own);
     if (!Y.segments[j]) Y.segments[j] = segment(Y.x, j);
     const Point& P = *X.points[i];
     const Segment& S = *Y.segments[j];
     if (P.boxed && (P.hi.x < S.lo.x || S.hi.x < P.lo.x || P.hi.y < S.lo.y || S.hi.y < P.lo.y)) return;
     const Vec2<T>&p = P.p, &a = S.a, &e = S.e;
-    const std::vector<T> poly = gap_polynomial<T>(turning, body_point, p, P.w, pv, v, a, e, S.K, k);
+    gap_polynomial<T>(turning, body_point, p, P.w, pv, v, a, e, S.K, k, poly);
     if (sign(poly[0]) <= 0) return;  // touching (or beyond the edge's line) at the start
     const auto accept = [&](const T& tau) {
       const Pose<T> m = geometry::twist_step(v, omega, tau);
@@ -472,7 +518,7 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
     if (best && !(root->tau < best->tau)) return;
     best = ClosingContact<T>{root->tau, root->exact, pair_name()};
     limit = root->tau;
-    if constexpr (exact_path) limit_in = exact::to_interval(limit);
+    if constexpr (exact_path) limit_in = enclose(limit);
   };
   Shape B = enclosed({body, zero}, world_body.in);
   for (std::size_t o = 0; o < g.obstacles.size(); ++o) {
@@ -488,7 +534,8 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
   for (std::size_t f = 0; f < tips.size(); ++f) {
     if (!free_velocity[f]) continue;
     const std::vector<Vec2<T>> at{tips[f]};
-    Shape tip = enclosed({at, *free_velocity[f], true}, enclosures(at));
+    const std::vector<Vec2<Interval>> at_in = enclosures(at);
+    Shape tip = enclosed({at, *free_velocity[f], true}, at_in);
     for (std::size_t i = 0; i < nb; ++i)
       consider(tip, 0, false, B, i, [&] { return g.finger_names[f] + " on " + edge_name(name, i); });
   }

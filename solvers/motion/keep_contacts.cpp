@@ -26,17 +26,20 @@ template <class T>
 std::vector<Row<T>> obstacle_rows(const Pose<T>& step, const std::vector<Contact<T>>& contacts,
                                   const std::vector<char>& modes, std::size_t b) {
   std::vector<Row<T>> rows;
-  const auto add = [&](const Vec2<T>& m, const Vec2<T>& x) {
+  // back = x - step(x), made once per contact and only for a row kept.
+  const auto add = [&](const Vec2<T>& m, const Vec2<T>& x, std::optional<Vec2<T>>& back) {
     if (rows.size() == 2 || (rows.size() == 1 && sign(cross2(rows[0].m, m)) == 0)) return;
-    rows.push_back({m, dot2(m, x - step.apply(x))});
+    if (!back) back = x - step.apply(x);
+    rows.push_back({m, dot2(m, *back)});
   };
   for (int rolling = 1; rolling >= 0; --rolling)
     for (std::size_t i = 0; i < contacts.size(); ++i) {
       const Contact<T>& c = contacts[i];
       if (!fixed_party(c, b) || modes[i] == 's' || (modes[i] == 'r') != bool(rolling)) continue;
       const Vec2<T> m = c.kind == ContactKind::kBodyVertex ? c.normal : step.rotate(c.normal);
-      add(m, c.point);
-      if (rolling) add(perp2(m), c.point);
+      std::optional<Vec2<T>> back;
+      add(m, c.point, back);
+      if (rolling) add(perp2(m), c.point, back);
     }
   return rows;
 }

@@ -65,5 +65,50 @@ TEST(RigidMotion, ApplyOverCommonDenominatorsIsRotatePlusTranslate) {
   }
 }
 
+/// True if q is stored in lowest terms with a positive denominator (what every Q operation assumes).
+bool canonical(const Q& q) {
+  exact::Z g;
+  mpz_gcd(g.get_mpz_t(), q.get_num_mpz_t(), q.get_den_mpz_t());
+  return g == 1 && sgn(q.get_den()) > 0;
+}
+bool canonical(const Pose<Q>& p) { return canonical(p.c) && canonical(p.s) && canonical(p.t.x) && canonical(p.t.y); }
+
+// The exact specialisations (rotate, compose, cayley_rotation, twist_step over integer numerators, one reduction per
+// number) give the reduced rationals that the formulas of rigid_motion.h give operation by operation; both parities
+// of the Cayley parameter's numerator and denominator, negative parameters and a translation of other denominators.
+TEST(RigidMotion, ExactSpecialisationsAreTheFormulas) {
+  const Vec2<Q> p{Q(-5, 8), Q(7, 3)};
+  for (const Q& u : {Q(1, 3), Q(2, 3), Q(-7, 5), Q(3, 4), Q(-123456789, 1000), Q(0), Q(1)}) {
+    const Pose<Q> r = cayley_rotation<Q>(u);
+    EXPECT_EQ(r.c, (1 - u * u) / (1 + u * u));
+    EXPECT_EQ(r.s, 2 * u / (1 + u * u));
+    EXPECT_TRUE(canonical(r));
+    EXPECT_EQ(r.rotate(p), (Vec2<Q>{r.c * p.x - r.s * p.y, r.s * p.x + r.c * p.y}));
+    EXPECT_TRUE(canonical(r.rotate(p).x) && canonical(r.rotate(p).y));
+  }
+  for (const Q& omega : {Q(5, 7), Q(-2, 3), Q(3), Q(-1, 9)})
+    for (const Vec2<Q>& v : {Vec2<Q>{Q(1, 3), Q(-2)}, Vec2<Q>{Q(0), Q(4, 5)}}) {
+      const Q h(1, 10);
+      const Pose<Q> step = twist_step(v, omega, h);
+      const Pose<Q> r = cayley_rotation<Q>(omega * h / 2);
+      const Vec2<Q> centre{-v.y / omega, v.x / omega};
+      const Vec2<Q> t{centre.x - (r.c * centre.x - r.s * centre.y), centre.y - (r.s * centre.x + r.c * centre.y)};
+      EXPECT_EQ(step.c, r.c);
+      EXPECT_EQ(step.s, r.s);
+      EXPECT_EQ(step.t, t);
+      EXPECT_TRUE(canonical(step));
+      Pose<Q> other = cayley_rotation<Q>(Q(2, 9));
+      other.t = {Q(-7, 6), Q(5, 11)};
+      for (const Pose<Q>* b : {&step, static_cast<const Pose<Q>*>(&other)}) {
+        const Pose<Q> ab = compose(step, *b);
+        EXPECT_EQ(ab.c, step.c * b->c - step.s * b->s);
+        EXPECT_EQ(ab.s, step.s * b->c + step.c * b->s);
+        EXPECT_EQ(ab.t, (Vec2<Q>{step.c * b->t.x - step.s * b->t.y + step.t.x,
+                                 step.s * b->t.x + step.c * b->t.y + step.t.y}));
+        EXPECT_TRUE(canonical(ab));
+      }
+    }
+}
+
 }  // namespace
 }  // namespace contactcert::geometry
