@@ -7,6 +7,7 @@
 #include <set>
 
 #include "exact/input_error.h"
+#include "exact/unreduced.h"
 #include "solvers/motion/bounded.h"
 #include "solvers/motion/first_root.h"
 #include "solvers/motion/keep_contacts.h"
@@ -17,12 +18,20 @@ namespace contactcert::solvers::motion {
 namespace {
 
 using Index = Eigen::Index;
+using exact::reduced;
 using exact::sign;
+using exact::unreduced;
 
-/// The solution's physics in T: per contact v_n, v_t, c_n, c_t; per body its q_dot; every joint velocity.
+/// A point's coordinates unreduced (exact paths), or the float path's as they are.
+Vec2<exact::Unreduced> unreduced(const Vec2<Q>& p) { return {unreduced(p.x), unreduced(p.y)}; }
+const Vec2<double>& unreduced(const Vec2<double>& p) { return p; }
+
+/// The solution's physics in T: per contact the signs of v_n and v_t (all that is read of them) and c_n, c_t; per
+/// body its q_dot; every joint velocity.
 template <class T>
 struct StepPhysics {
-  std::vector<T> vn, vt, cn, ct, theta;
+  std::vector<int> vn, vt;
+  std::vector<T> cn, ct, theta;
   std::vector<Twist<T>> twists;
 };
 
@@ -30,8 +39,8 @@ StepPhysics<Q> physics(const ucp::UcpProblem&, const ucp::UcpReport& r, const Q*
   const ucp::PhysicalSolution& s = *r.physical;
   StepPhysics<Q> out;
   for (Index i = 0; i < s.v_n.size(); ++i) {
-    out.vn.push_back(s.v_n(i));
-    out.vt.push_back(s.v_t(i));
+    out.vn.push_back(s.v_n.sign(i));
+    out.vt.push_back(s.v_t.sign(i));
     out.cn.push_back(s.c_n(i));
     out.ct.push_back(s.c_t(i));
   }
@@ -49,12 +58,13 @@ StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport
   StepPhysics<double> out;
   exact::Vec<double> rhs = exact::to_double(p.J_alpha_theta_alpha());
   for (Index i = 0; i < nc; ++i) {
-    out.vn.push_back(r.x_approx(i));
-    out.vt.push_back(r.x_approx(nc + i) - r.x_approx(2 * nc + i));
+    const double vn = r.x_approx(i), vt = r.x_approx(nc + i) - r.x_approx(2 * nc + i);
+    out.vn.push_back(sign(vn));
+    out.vt.push_back(sign(vt));
     out.cn.push_back(r.y_approx(i));
     out.ct.push_back(r.y_approx(nc + i) - p.mu(i).get_d() * r.y_approx(i));
-    rhs(i) += out.vn.back();
-    rhs(nc + i) += out.vt.back();
+    rhs(i) += vn;
+    rhs(nc + i) += vt;
   }
   const exact::Vec<double> u = exact::to_double(p.P).colPivHouseholderQr().solve(rhs);
   out.theta.assign(static_cast<std::size_t>(p.ntheta), 0.0);
@@ -64,11 +74,10 @@ StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport
   return out;
 }
 
-template <class T>
-char mode_letter(const T& vn, const T& vt) {
-  if (sign(vn) > 0) return 's';
-  const int s = sign(vt);
-  return s == 0 ? 'r' : (s > 0 ? '+' : '-');
+/// The mode letter of a contact from the signs of v_n and v_t.
+char mode_letter(int vn, int vt) {
+  if (vn > 0) return 's';
+  return vt == 0 ? 'r' : (vt > 0 ? '+' : '-');
 }
 
 std::vector<std::string> minus(const std::vector<std::string>& a, const std::vector<std::string>& b) {
@@ -80,18 +89,19 @@ std::vector<std::string> minus(const std::vector<std::string>& a, const std::vec
 }
 
 /// A finger carried along body edge c.body with relative velocity `slip` (along the edge): the time it reaches the
-/// edge's end and which body vertex that is, if it ever does (linear in the body's frame).
+/// edge's end and which body vertex that is, if it ever does (linear in the body's frame). The time is unreduced on
+/// the exact paths: it is only compared with the step's length, and reduced if it cuts the step.
 template <class T>
-std::optional<std::pair<T, int>> slide_to_vertex(const WorldBodies<T>& world, const Contact<T>& c,
-                                                 const Vec2<T>& slip) {
+auto slide_to_vertex(const WorldBodies<T>& world, const Contact<T>& c, const Vec2<T>& slip) {
+  using Time = decltype(unreduced(T()));
   const std::vector<Vec2<T>>& body = world.vertices[static_cast<std::size_t>(c.which)];
   const auto nb = static_cast<int>(body.size());
-  const Vec2<T>& a = body[static_cast<std::size_t>(c.body)];
-  const Vec2<T> e = body[static_cast<std::size_t>((c.body + 1) % nb)] - a;
-  const T s0 = dot2(c.point - a, e), rate = dot2(slip, e);
-  if (sign(rate) == 0) return std::nullopt;
-  if (sign(rate) > 0) return std::pair<T, int>{T(dot2(e, e) - s0) / rate, (c.body + 1) % nb};
-  return std::pair<T, int>{-s0 / rate, c.body};
+  const auto a = unreduced(body[static_cast<std::size_t>(c.body)]);
+  const auto e = unreduced(body[static_cast<std::size_t>((c.body + 1) % nb)]) - a;
+  const Time s0 = dot2(unreduced(c.point) - a, e), rate = dot2(unreduced(slip), e);
+  if (sign(rate) == 0) return std::optional<std::pair<Time, int>>();
+  if (sign(rate) > 0) return std::optional(std::pair<Time, int>{Time(dot2(e, e) - s0) / rate, (c.body + 1) % nb});
+  return std::optional(std::pair<Time, int>{-s0 / rate, c.body});
 }
 
 /// The fingers' commands at time t and the step's length: H, or up to the next schedule change (then `cut_by`).
@@ -155,14 +165,16 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
     touching[f] = true;
     const Vec2<T> vf{ph.theta[joint], ph.theta[joint + 1]};
     joint += 2;
-    if (sign(ph.vn[i]) != 0) {
+    if (ph.vn[i] != 0) {
       m.free_velocity[f] = vf;
       continue;
     }
     const Twist<T>& tw = ph.twists[static_cast<std::size_t>(c.which)];
-    const Vec2<T> slip = vf - (tw.v + tw.omega * perp2(c.point));
-    const Vec2<T> e{c.normal.y, -c.normal.x};
-    m.carried_slip[f] = T(bounded(T(sched.H * dot2(slip, e) / dot2(e, e))) / sched.H) * e;
+    // H (slip . e) / (e . e) = H (slip x n) / (n . n), unreduced on the exact paths: one reduction.
+    const auto slip = unreduced(vf) - (unreduced(tw.v) + unreduced(tw.omega) * perp2(unreduced(c.point)));
+    const auto n = unreduced(c.normal);
+    const T along = reduced(unreduced(sched.H) * cross2(slip, n) / dot2(n, n));
+    m.carried_slip[f] = T(bounded(along) / sched.H) * Vec2<T>{c.normal.y, -c.normal.x};
   }
   for (std::size_t f = 0; f < nf; ++f)
     if (!touching[f] && !sched.commands[f].force) m.free_velocity[f] = sched.commands[f].value;
@@ -172,26 +184,26 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
 /// The twist applied to body b (StepRecord::applied): turning, about a rolling obstacle contact's point (exactly the
 /// instantaneous centre: the body's velocity is zero there) or else the instantaneous centre (bounded), by the
 /// rotation that brings the pose's tan(theta / 2) after a full step, (U + u) / (1 - U u) with u = omega H / 2, to a
-/// bounded value (exact paths).
+/// bounded value (exact paths; in unreduced fractions, reduced twice: U_new and omega).
 template <class T>
 Twist<T> applied_twist(const ContactSet<T>& cs, const StepRecord<T>& r, std::size_t b, const Twist<T>& tw,
                        const Pose<T>& pose, const T& H) {
   Twist<T> out = tw;
   if (sign(tw.omega) == 0) return out;
-  Vec2<T> centre{-tw.v.y / tw.omega, tw.v.x / tw.omega};
-  bool pivot = false;
+  const Vec2<T>* pivot = nullptr;
   for (std::size_t i = 0; i < cs.contacts.size() && !pivot; ++i)
-    if (fixed_party(cs.contacts[i], b) && r.contacts[i].mode == 'r') {
-      centre = cs.contacts[i].point;
-      pivot = true;
-    }
-  if (!pivot) centre = {bounded(centre.x), bounded(centre.y)};
+    if (fixed_party(cs.contacts[i], b) && r.contacts[i].mode == 'r') pivot = &cs.contacts[i].point;
+  const Vec2<T> centre = pivot ? *pivot : Vec2<T>{bounded(T(-tw.v.y / tw.omega)), bounded(T(tw.v.x / tw.omega))};
   if constexpr (std::is_same_v<T, Q>) {
-    const Q u = tw.omega * H / 2;
-    if (sgn(Q(1 + pose.c)) != 0 && sgn(Q(1 - pose.s / (1 + pose.c) * u)) != 0) {
-      const Q U_old = pose.s / (1 + pose.c);
-      const Q U_new = bounded(Q((U_old + u) / (1 - U_old * u)));
-      out.omega = 2 * ((U_new - U_old) / (1 + U_old * U_new)) / H;
+    using exact::Unreduced;
+    const Unreduced one{1, 1}, two{2, 1}, c1 = one + unreduced(pose.c);
+    if (sign(c1) != 0) {
+      // U_old = tan(theta / 2) is small (on the grid): reduced first, it keeps the rest small.
+      const Unreduced U_old = unreduced(reduced(unreduced(pose.s) / c1)), u = unreduced(tw.omega) * unreduced(H) / two;
+      if (const Unreduced den = one - U_old * u; sign(den) != 0) {
+        const Unreduced U_new = unreduced(bounded(reduced((U_old + u) / den)));
+        out.omega = reduced(two * ((U_new - U_old) / (one + U_old * U_new)) / unreduced(H));
+      }
     }
   }
   out.v = out.omega * Vec2<T>{centre.y, -centre.x};  // omega J (0 - centre)
@@ -212,8 +224,8 @@ void cut_step(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std:
   for (const Contact<T>& c : cs.contacts) {
     const auto f = static_cast<std::size_t>(c.other);
     if (c.kind != ContactKind::kFinger || !m.carried_slip[f]) continue;
-    if (const auto end = slide_to_vertex(world, c, *m.carried_slip[f]); end && end->first < r.h) {
-      r.h = end->first;
+    if (const auto end = slide_to_vertex(world, c, *m.carried_slip[f]); end && end->first < unreduced(r.h)) {
+      r.h = reduced(end->first);
       r.cut_by = g.finger_names[f] + " reaches body vertex " + std::to_string(end->second);
       r.cut_exact = true;
     }
@@ -374,9 +386,13 @@ bool Stepper<T>::step() {
     if (c.kind == ContactKind::kFinger) carrier[static_cast<std::size_t>(c.other)] = c.which;
   for (std::size_t f = 0; f < tips.size(); ++f) {
     const Pose<T>& step = steps[static_cast<std::size_t>(carrier[f])];
-    if (fm.carried_slip[f])
-      tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);
-    else if (fm.free_velocity[f])
+    if (fm.carried_slip[f]) {
+      // step(p + h slip) = step(p) + R h slip: on the exact paths one application (over common denominators).
+      if constexpr (exact_path)
+        tips[f] = step.apply(tips[f] + r.h * *fm.carried_slip[f]);
+      else
+        tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);
+    } else if (fm.free_velocity[f])
       tips[f] = tips[f] + r.h * *fm.free_velocity[f];
   }
   t = t + r.h;
