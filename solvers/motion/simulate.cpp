@@ -38,15 +38,19 @@ struct StepPhysics {
 StepPhysics<Q> physics(const ucp::UcpProblem&, const ucp::UcpReport& r, const Q*) {
   const ucp::PhysicalSolution& s = *r.physical;
   StepPhysics<Q> out;
+  out.cn.resize(static_cast<std::size_t>(s.c_n.size()));  // in place: a growing vector would copy the rationals
+  out.ct.resize(out.cn.size());
   for (Index i = 0; i < s.v_n.size(); ++i) {
     out.vn.push_back(s.v_n.sign(i));
     out.vt.push_back(s.v_t.sign(i));
-    out.cn.push_back(s.c_n(i));
-    out.ct.push_back(s.c_t(i));
+    out.cn[static_cast<std::size_t>(i)] = s.c_n(i);
+    out.ct[static_cast<std::size_t>(i)] = s.c_t(i);
   }
-  for (Index j = 0; j < s.theta_dot.size(); ++j) out.theta.push_back(s.theta_dot(j));
+  out.theta.resize(static_cast<std::size_t>(s.theta_dot.size()));
+  for (Index j = 0; j < s.theta_dot.size(); ++j) out.theta[static_cast<std::size_t>(j)] = s.theta_dot(j);
+  out.twists.resize(static_cast<std::size_t>(s.q_dot.size() / 3));
   for (Index b = 0; b + 2 < s.q_dot.size(); b += 3)
-    out.twists.push_back({{s.q_dot(b), s.q_dot(b + 1)}, s.q_dot(b + 2)});
+    out.twists[static_cast<std::size_t>(b / 3)] = {{s.q_dot(b), s.q_dot(b + 1)}, s.q_dot(b + 2)};
   return out;
 }
 
@@ -88,20 +92,45 @@ std::vector<std::string> minus(const std::vector<std::string>& a, const std::vec
   return out;
 }
 
-/// A finger carried along body edge c.body with relative velocity `slip` (along the edge): the time it reaches the
-/// edge's end and which body vertex that is, if it ever does (linear in the body's frame). The time is unreduced on
-/// the exact paths: it is only compared with the step's length, and reduced if it cuts the step.
+/// True if the enclosures prove that a point p moving with velocity v along the edge a -> b reaches neither end before
+/// time h (the time to the end ahead, (e . e - s0) / (v . e) or -s0 / (v . e) with e = b - a, s0 = (p - a) . e, is
+/// then > h).
+bool proven_not_before(const Vec2<exact::Interval>& a, const Vec2<exact::Interval>& b, const Vec2<exact::Interval>& p,
+                       const Vec2<exact::Interval>& v, const exact::Interval& h) {
+  const Vec2<exact::Interval> e = b - a;
+  const exact::Interval s0 = dot2(p - a, e), rate = dot2(v, e);
+  if (rate.inf() > 0) return (dot2(e, e) - s0 - h * rate).inf() > 0;
+  if (rate.sup() < 0) return (s0 + h * rate).inf() > 0;
+  return false;
+}
+
+/// A finger carried along body edge c.body with relative velocity `slip` (along the edge): the time before h at which
+/// it reaches the edge's end and which body vertex that is, if it does (linear in the body's frame). The exact paths
+/// first let the enclosures prove that it does not (the common case: a slow slide), else compare the time unreduced
+/// and reduce it only when it cuts the step.
 template <class T>
-auto slide_to_vertex(const WorldBodies<T>& world, const Contact<T>& c, const Vec2<T>& slip) {
-  using Time = decltype(unreduced(T()));
-  const std::vector<Vec2<T>>& body = world.vertices[static_cast<std::size_t>(c.which)];
+std::optional<std::pair<T, int>> slide_to_vertex(const WorldBodies<T>& world, const Contact<T>& c, const Vec2<T>& slip,
+                                                 const T& h) {
+  const auto which = static_cast<std::size_t>(c.which);
+  const std::vector<Vec2<T>>& body = world.vertices[which];
   const auto nb = static_cast<int>(body.size());
+  const int next = (c.body + 1) % nb;
+  if constexpr (std::is_same_v<T, Q>) {
+    const auto enclose = [](const Vec2<Q>& x) {
+      return Vec2<exact::Interval>{exact::to_interval(x.x), exact::to_interval(x.y)};
+    };
+    const std::vector<Vec2<exact::Interval>>& in = world.enclosed[which];
+    if (proven_not_before(in[static_cast<std::size_t>(c.body)], in[static_cast<std::size_t>(next)], enclose(c.point),
+                          enclose(slip), exact::to_interval(h)))
+      return std::nullopt;
+  }
   const auto a = unreduced(body[static_cast<std::size_t>(c.body)]);
-  const auto e = unreduced(body[static_cast<std::size_t>((c.body + 1) % nb)]) - a;
-  const Time s0 = dot2(unreduced(c.point) - a, e), rate = dot2(unreduced(slip), e);
-  if (sign(rate) == 0) return std::optional<std::pair<Time, int>>();
-  if (sign(rate) > 0) return std::optional(std::pair<Time, int>{Time(dot2(e, e) - s0) / rate, (c.body + 1) % nb});
-  return std::optional(std::pair<Time, int>{-s0 / rate, c.body});
+  const auto e = unreduced(body[static_cast<std::size_t>(next)]) - a;
+  const auto s0 = dot2(unreduced(c.point) - a, e), rate = dot2(unreduced(slip), e);
+  if (sign(rate) == 0) return std::nullopt;
+  const auto t = sign(rate) > 0 ? (dot2(e, e) - s0) / rate : -s0 / rate;
+  if (!(t < unreduced(h))) return std::nullopt;
+  return std::pair<T, int>{reduced(t), sign(rate) > 0 ? next : c.body};
 }
 
 /// The fingers' commands at time t and the step's length: H, or up to the next schedule change (then `cut_by`).
@@ -157,6 +186,7 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
   FingerMotion<T> m{std::vector<std::optional<Vec2<T>>>(nf), std::vector<std::optional<Vec2<T>>>(nf)};
   std::vector<bool> touching(nf, false);
   std::size_t joint = 0;
+  r.contacts.reserve(cs.contacts.size());  // no copies of the records' rationals as the vector grows
   for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
     const Contact<T>& c = cs.contacts[i];
     r.contacts.push_back({c.name, mode_letter(ph.vn[i], ph.vt[i]), c.point, c.normal, ph.cn[i], ph.ct[i]});
@@ -224,8 +254,8 @@ void cut_step(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std:
   for (const Contact<T>& c : cs.contacts) {
     const auto f = static_cast<std::size_t>(c.other);
     if (c.kind != ContactKind::kFinger || !m.carried_slip[f]) continue;
-    if (const auto end = slide_to_vertex(world, c, *m.carried_slip[f]); end && end->first < unreduced(r.h)) {
-      r.h = reduced(end->first);
+    if (const auto end = slide_to_vertex(world, c, *m.carried_slip[f], r.h)) {
+      r.h = end->first;
       r.cut_by = g.finger_names[f] + " reaches body vertex " + std::to_string(end->second);
       r.cut_exact = true;
     }
