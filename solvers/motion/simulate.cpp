@@ -339,8 +339,7 @@ bool Stepper<T>::step() {
   StepRecord<T> r;
   r.index = k;
   r.time = t;
-  r.poses = r.poses_after = poses;
-  r.tips_after = tips;
+  r.poses = poses;
   const ContactSet<T> cs = find_contacts(g_, world_, tips);
   std::vector<bool> held(poses.size(), false);  // every body needs a contact (else it would fall: no solution)
   for (const Contact<T>& c : cs.contacts) {
@@ -385,6 +384,8 @@ bool Stepper<T>::step() {
   if (exact_path && opts_.certificates) r.certificate = ucp::certificate_text(problem, rep, assembly_text);
   if (rep.status != ucp::UcpStatus::kSolvable) {
     for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal});
+    r.poses_after = poses;  // no motion
+    r.tips_after = tips;
     r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
     out_.steps.push_back(r);
     const bool jammed = rep.status == ucp::UcpStatus::kJammed;
