@@ -26,6 +26,8 @@ class RationalVector {
     const auto k = static_cast<std::size_t>(i);
     return wide_ ? sgn(wide_num_[k]) : ring::sign(num_[k]);
   }
+  /// Entry i as num / den with den > 0, not necessarily in lowest terms (no gcd).
+  void entry(Eigen::Index i, Z& num, Z& den) const;
   /// Entry i in lowest terms.
   Q operator()(Eigen::Index i) const;
   /// All entries.

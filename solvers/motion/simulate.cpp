@@ -26,18 +26,20 @@ using exact::unreduced;
 Vec2<exact::Unreduced> unreduced(const Vec2<Q>& p) { return {unreduced(p.x), unreduced(p.y)}; }
 const Vec2<double>& unreduced(const Vec2<double>& p) { return p; }
 
-/// The solution's physics in T: per contact the signs of v_n and v_t (all that is read of them) and c_n, c_t; per
-/// body its q_dot; every joint velocity.
+/// The solution's physics in T: per contact the signs of v_n and v_t and c_n, c_t; per body its q_dot; every joint
+/// velocity; on the exact paths the solution itself (its v_t, read unreduced).
 template <class T>
 struct StepPhysics {
   std::vector<int> vn, vt;
   std::vector<T> cn, ct, theta;
   std::vector<Twist<T>> twists;
+  const ucp::PhysicalSolution* solution = nullptr;
 };
 
 StepPhysics<Q> physics(const ucp::UcpProblem&, const ucp::UcpReport& r, const Q*) {
   const ucp::PhysicalSolution& s = *r.physical;
   StepPhysics<Q> out;
+  out.solution = &s;
   out.cn.resize(static_cast<std::size_t>(s.c_n.size()));  // in place: a growing vector would copy the rationals
   out.ct.resize(out.cn.size());
   for (Index i = 0; i < s.v_n.size(); ++i) {
@@ -177,6 +179,21 @@ struct FingerMotion {
   std::vector<std::optional<Vec2<T>>> free_velocity, carried_slip;
 };
 
+/// slip . e for the finger carried at contact i, with slip its velocity vf relative to the body point under it and e =
+/// (n_y, -n_x) its edge: slip . e = slip x n. That is the contact's v_t = t . (body - finger velocity) with t = J n =
+/// -e, which the exact paths read from the solution (unreduced: its numerator over the vector's denominator); the
+/// float path's v_t is not its twist's (least squares), so it takes the twist's.
+exact::Unreduced slip_along(const StepPhysics<Q>& ph, std::size_t i, const Vec2<Q>&, const Twist<Q>&,
+                            const Contact<Q>&) {
+  exact::Unreduced out;
+  ph.solution->v_t.entry(static_cast<Index>(i), out.n, out.d);
+  return out;
+}
+double slip_along(const StepPhysics<double>&, std::size_t, const Vec2<double>& vf, const Twist<double>& tw,
+                  const Contact<double>& c) {
+  return cross2(vf - (tw.v + tw.omega * perp2(c.point)), c.normal);
+}
+
 /// Records each contact's mode and force components in r, and says how each finger moves. A carried finger's slide
 /// along its edge e = J^T n over the step is a multiple of e (bounded), so the tip stays exactly on the edge.
 template <class T>
@@ -200,10 +217,9 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
       continue;
     }
     const Twist<T>& tw = ph.twists[static_cast<std::size_t>(c.which)];
-    // H (slip . e) / (e . e) = H (slip x n) / (n . n), unreduced on the exact paths: one reduction.
-    const auto slip = unreduced(vf) - (unreduced(tw.v) + unreduced(tw.omega) * perp2(unreduced(c.point)));
+    // H (slip . e) / (e . e), unreduced on the exact paths: one reduction.
     const auto n = unreduced(c.normal);
-    const T along = reduced(unreduced(sched.H) * cross2(slip, n) / dot2(n, n));
+    const T along = reduced(unreduced(sched.H) * slip_along(ph, i, vf, tw, c) / dot2(n, n));
     m.carried_slip[f] = T(bounded(along) / sched.H) * Vec2<T>{c.normal.y, -c.normal.x};
   }
   for (std::size_t f = 0; f < nf; ++f)

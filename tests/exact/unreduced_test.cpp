@@ -1,5 +1,5 @@
 // Unreduced fractions: the values and signs of sums, differences, products and quotients without a gcd, the order by
-// cross-multiplication, the one reduction; RationalVector's sign read from its numerators.
+// cross-multiplication, the one reduction; RationalVector's signs and entries read from its numerators.
 #include "exact/unreduced.h"
 
 #include <gtest/gtest.h>
@@ -48,6 +48,19 @@ TEST(RationalVector, SignFromNumerators) {
   const RationalVector wide(num, 2, Z(-5));  // negative denominator: the signs flip
   EXPECT_EQ(wide.sign(0), -1);
   EXPECT_EQ(wide.sign(1), 1);
+}
+
+TEST(RationalVector, EntryOverTheCommonDenominator) {
+  Vec<Q> v(2);
+  v << Q(1, 2), Q(1, 3);
+  Z n, d;
+  RationalVector(v).entry(0, n, d);  // 3 / 6
+  EXPECT_EQ(n, Z(3));
+  EXPECT_EQ(d, Z(6));
+  const Z num[2] = {Z(4), Z(-6)};
+  RationalVector(num, 2, Z(-8)).entry(1, n, d);  // 6 / 8
+  EXPECT_EQ(n, Z(6));
+  EXPECT_EQ(d, Z(8));
 }
 
 }  // namespace
