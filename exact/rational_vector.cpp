@@ -37,6 +37,12 @@ Q RationalVector::operator()(Eigen::Index i) const {
   return q;
 }
 
+void RationalVector::entry(Eigen::Index i, Z& num, Z& den) const {
+  const auto k = static_cast<std::size_t>(i);
+  num = wide_ ? wide_num_[k] : ring::to_z(num_[k]);
+  den = wide_ ? wide_den_ : ring::to_z(den_);
+}
+
 Vec<Q> RationalVector::to_q() const {
   Vec<Q> v(size());
   for (Eigen::Index i = 0; i < size(); ++i) v(i) = (*this)(i);

@@ -21,6 +21,13 @@ class RationalVector {
   RationalVector(const Z* num, Eigen::Index k, Z den);
 
   Eigen::Index size() const { return static_cast<Eigen::Index>(wide_ ? wide_num_.size() : num_.size()); }
+  /// The sign of entry i (read from its numerator: no rational is made).
+  int sign(Eigen::Index i) const {
+    const auto k = static_cast<std::size_t>(i);
+    return wide_ ? sgn(wide_num_[k]) : ring::sign(num_[k]);
+  }
+  /// Entry i as num / den with den > 0, not necessarily in lowest terms (no gcd).
+  void entry(Eigen::Index i, Z& num, Z& den) const;
   /// Entry i in lowest terms.
   Q operator()(Eigen::Index i) const;
   /// All entries.

@@ -11,10 +11,13 @@ using exact::Q;
 /// x rounded to the nearest multiple of 2^-40 (x itself for double): the grid of the applied twist, on which the
 /// pose's numbers keep a bounded size (mpq_class keeps lowest terms, so a pose reached by an exact motion has the
 /// size of its own value, not of the path to it).
+/// The rounding in integers: floor(x 2^40 + 1/2) = floor((2^41 num + den) / (2 den)).
 inline Q on_grid(const Q& x) {
-  const Q scaled = x * Q(exact::Z(1) << 40) + Q(1, 2);
-  exact::Z n;
-  mpz_fdiv_q(n.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
+  exact::Z n, d;
+  mpz_mul_2exp(n.get_mpz_t(), x.get_num_mpz_t(), 41);
+  mpz_add(n.get_mpz_t(), n.get_mpz_t(), x.get_den_mpz_t());
+  mpz_mul_2exp(d.get_mpz_t(), x.get_den_mpz_t(), 1);
+  mpz_fdiv_q(n.get_mpz_t(), n.get_mpz_t(), d.get_mpz_t());
   return Q(n, exact::Z(1) << 40);
 }
 

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "exact/input_error.h"
+#include "exact/unreduced.h"
 #include "solvers/motion/bounded.h"
 #include "solvers/motion/first_root.h"
 #include "solvers/motion/keep_contacts.h"
@@ -17,27 +18,41 @@ namespace contactcert::solvers::motion {
 namespace {
 
 using Index = Eigen::Index;
+using exact::reduced;
 using exact::sign;
+using exact::unreduced;
 
-/// The solution's physics in T: per contact v_n, v_t, c_n, c_t; per body its q_dot; every joint velocity.
+/// A point's coordinates unreduced (exact paths), or the float path's as they are.
+Vec2<exact::Unreduced> unreduced(const Vec2<Q>& p) { return {unreduced(p.x), unreduced(p.y)}; }
+const Vec2<double>& unreduced(const Vec2<double>& p) { return p; }
+
+/// The solution's physics in T: per contact the signs of v_n and v_t and c_n, c_t; per body its q_dot; every joint
+/// velocity; on the exact paths the solution itself (its v_t, read unreduced).
 template <class T>
 struct StepPhysics {
-  std::vector<T> vn, vt, cn, ct, theta;
+  std::vector<int> vn, vt;
+  std::vector<T> cn, ct, theta;
   std::vector<Twist<T>> twists;
+  const ucp::PhysicalSolution* solution = nullptr;
 };
 
 StepPhysics<Q> physics(const ucp::UcpProblem&, const ucp::UcpReport& r, const Q*) {
   const ucp::PhysicalSolution& s = *r.physical;
   StepPhysics<Q> out;
+  out.solution = &s;
+  out.cn.resize(static_cast<std::size_t>(s.c_n.size()));  // in place: a growing vector would copy the rationals
+  out.ct.resize(out.cn.size());
   for (Index i = 0; i < s.v_n.size(); ++i) {
-    out.vn.push_back(s.v_n(i));
-    out.vt.push_back(s.v_t(i));
-    out.cn.push_back(s.c_n(i));
-    out.ct.push_back(s.c_t(i));
+    out.vn.push_back(s.v_n.sign(i));
+    out.vt.push_back(s.v_t.sign(i));
+    out.cn[static_cast<std::size_t>(i)] = s.c_n(i);
+    out.ct[static_cast<std::size_t>(i)] = s.c_t(i);
   }
-  for (Index j = 0; j < s.theta_dot.size(); ++j) out.theta.push_back(s.theta_dot(j));
+  out.theta.resize(static_cast<std::size_t>(s.theta_dot.size()));
+  for (Index j = 0; j < s.theta_dot.size(); ++j) out.theta[static_cast<std::size_t>(j)] = s.theta_dot(j);
+  out.twists.resize(static_cast<std::size_t>(s.q_dot.size() / 3));
   for (Index b = 0; b + 2 < s.q_dot.size(); b += 3)
-    out.twists.push_back({{s.q_dot(b), s.q_dot(b + 1)}, s.q_dot(b + 2)});
+    out.twists[static_cast<std::size_t>(b / 3)] = {{s.q_dot(b), s.q_dot(b + 1)}, s.q_dot(b + 2)};
   return out;
 }
 
@@ -49,12 +64,13 @@ StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport
   StepPhysics<double> out;
   exact::Vec<double> rhs = exact::to_double(p.J_alpha_theta_alpha());
   for (Index i = 0; i < nc; ++i) {
-    out.vn.push_back(r.x_approx(i));
-    out.vt.push_back(r.x_approx(nc + i) - r.x_approx(2 * nc + i));
+    const double vn = r.x_approx(i), vt = r.x_approx(nc + i) - r.x_approx(2 * nc + i);
+    out.vn.push_back(sign(vn));
+    out.vt.push_back(sign(vt));
     out.cn.push_back(r.y_approx(i));
     out.ct.push_back(r.y_approx(nc + i) - p.mu(i).get_d() * r.y_approx(i));
-    rhs(i) += out.vn.back();
-    rhs(nc + i) += out.vt.back();
+    rhs(i) += vn;
+    rhs(nc + i) += vt;
   }
   const exact::Vec<double> u = exact::to_double(p.P).colPivHouseholderQr().solve(rhs);
   out.theta.assign(static_cast<std::size_t>(p.ntheta), 0.0);
@@ -64,11 +80,10 @@ StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport
   return out;
 }
 
-template <class T>
-char mode_letter(const T& vn, const T& vt) {
-  if (sign(vn) > 0) return 's';
-  const int s = sign(vt);
-  return s == 0 ? 'r' : (s > 0 ? '+' : '-');
+/// The mode letter of a contact from the signs of v_n and v_t.
+char mode_letter(int vn, int vt) {
+  if (vn > 0) return 's';
+  return vt == 0 ? 'r' : (vt > 0 ? '+' : '-');
 }
 
 std::vector<std::string> minus(const std::vector<std::string>& a, const std::vector<std::string>& b) {
@@ -79,19 +94,45 @@ std::vector<std::string> minus(const std::vector<std::string>& a, const std::vec
   return out;
 }
 
-/// A finger carried along body edge c.body with relative velocity `slip` (along the edge): the time it reaches the
-/// edge's end and which body vertex that is, if it ever does (linear in the body's frame).
+/// True if the enclosures prove that a point p moving with velocity v along the edge a -> b reaches neither end before
+/// time h (the time to the end ahead, (e . e - s0) / (v . e) or -s0 / (v . e) with e = b - a, s0 = (p - a) . e, is
+/// then > h).
+bool proven_not_before(const Vec2<exact::Interval>& a, const Vec2<exact::Interval>& b, const Vec2<exact::Interval>& p,
+                       const Vec2<exact::Interval>& v, const exact::Interval& h) {
+  const Vec2<exact::Interval> e = b - a;
+  const exact::Interval s0 = dot2(p - a, e), rate = dot2(v, e);
+  if (rate.inf() > 0) return (dot2(e, e) - s0 - h * rate).inf() > 0;
+  if (rate.sup() < 0) return (s0 + h * rate).inf() > 0;
+  return false;
+}
+
+/// A finger carried along body edge c.body with relative velocity `slip` (along the edge): the time before h at which
+/// it reaches the edge's end and which body vertex that is, if it does (linear in the body's frame). The exact paths
+/// first let the enclosures prove that it does not (the common case: a slow slide), else compare the time unreduced
+/// and reduce it only when it cuts the step.
 template <class T>
-std::optional<std::pair<T, int>> slide_to_vertex(const WorldBodies<T>& world, const Contact<T>& c,
-                                                 const Vec2<T>& slip) {
-  const std::vector<Vec2<T>>& body = world.vertices[static_cast<std::size_t>(c.which)];
+std::optional<std::pair<T, int>> slide_to_vertex(const WorldBodies<T>& world, const Contact<T>& c, const Vec2<T>& slip,
+                                                 const T& h) {
+  const auto which = static_cast<std::size_t>(c.which);
+  const std::vector<Vec2<T>>& body = world.vertices[which];
   const auto nb = static_cast<int>(body.size());
-  const Vec2<T>& a = body[static_cast<std::size_t>(c.body)];
-  const Vec2<T> e = body[static_cast<std::size_t>((c.body + 1) % nb)] - a;
-  const T s0 = dot2(c.point - a, e), rate = dot2(slip, e);
+  const int next = (c.body + 1) % nb;
+  if constexpr (std::is_same_v<T, Q>) {
+    const auto enclose = [](const Vec2<Q>& x) {
+      return Vec2<exact::Interval>{exact::to_interval(x.x), exact::to_interval(x.y)};
+    };
+    const std::vector<Vec2<exact::Interval>>& in = world.enclosed[which];
+    if (proven_not_before(in[static_cast<std::size_t>(c.body)], in[static_cast<std::size_t>(next)], enclose(c.point),
+                          enclose(slip), exact::to_interval(h)))
+      return std::nullopt;
+  }
+  const auto a = unreduced(body[static_cast<std::size_t>(c.body)]);
+  const auto e = unreduced(body[static_cast<std::size_t>(next)]) - a;
+  const auto s0 = dot2(unreduced(c.point) - a, e), rate = dot2(unreduced(slip), e);
   if (sign(rate) == 0) return std::nullopt;
-  if (sign(rate) > 0) return std::pair<T, int>{T(dot2(e, e) - s0) / rate, (c.body + 1) % nb};
-  return std::pair<T, int>{-s0 / rate, c.body};
+  const auto t = sign(rate) > 0 ? (dot2(e, e) - s0) / rate : -s0 / rate;
+  if (!(t < unreduced(h))) return std::nullopt;
+  return std::pair<T, int>{reduced(t), sign(rate) > 0 ? next : c.body};
 }
 
 /// The fingers' commands at time t and the step's length: H, or up to the next schedule change (then `cut_by`).
@@ -138,6 +179,21 @@ struct FingerMotion {
   std::vector<std::optional<Vec2<T>>> free_velocity, carried_slip;
 };
 
+/// slip . e for the finger carried at contact i, with slip its velocity vf relative to the body point under it and e =
+/// (n_y, -n_x) its edge: slip . e = slip x n. That is the contact's v_t = t . (body - finger velocity) with t = J n =
+/// -e, which the exact paths read from the solution (unreduced: its numerator over the vector's denominator); the
+/// float path's v_t is not its twist's (least squares), so it takes the twist's.
+exact::Unreduced slip_along(const StepPhysics<Q>& ph, std::size_t i, const Vec2<Q>&, const Twist<Q>&,
+                            const Contact<Q>&) {
+  exact::Unreduced out;
+  ph.solution->v_t.entry(static_cast<Index>(i), out.n, out.d);
+  return out;
+}
+double slip_along(const StepPhysics<double>&, std::size_t, const Vec2<double>& vf, const Twist<double>& tw,
+                  const Contact<double>& c) {
+  return cross2(vf - (tw.v + tw.omega * perp2(c.point)), c.normal);
+}
+
 /// Records each contact's mode and force components in r, and says how each finger moves. A carried finger's slide
 /// along its edge e = J^T n over the step is a multiple of e (bounded), so the tip stays exactly on the edge.
 template <class T>
@@ -147,6 +203,7 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
   FingerMotion<T> m{std::vector<std::optional<Vec2<T>>>(nf), std::vector<std::optional<Vec2<T>>>(nf)};
   std::vector<bool> touching(nf, false);
   std::size_t joint = 0;
+  r.contacts.reserve(cs.contacts.size());  // no copies of the records' rationals as the vector grows
   for (std::size_t i = 0; i < cs.contacts.size(); ++i) {
     const Contact<T>& c = cs.contacts[i];
     r.contacts.push_back({c.name, mode_letter(ph.vn[i], ph.vt[i]), c.point, c.normal, ph.cn[i], ph.ct[i]});
@@ -155,14 +212,15 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
     touching[f] = true;
     const Vec2<T> vf{ph.theta[joint], ph.theta[joint + 1]};
     joint += 2;
-    if (sign(ph.vn[i]) != 0) {
+    if (ph.vn[i] != 0) {
       m.free_velocity[f] = vf;
       continue;
     }
     const Twist<T>& tw = ph.twists[static_cast<std::size_t>(c.which)];
-    const Vec2<T> slip = vf - (tw.v + tw.omega * perp2(c.point));
-    const Vec2<T> e{c.normal.y, -c.normal.x};
-    m.carried_slip[f] = T(bounded(T(sched.H * dot2(slip, e) / dot2(e, e))) / sched.H) * e;
+    // H (slip . e) / (e . e), unreduced on the exact paths: one reduction.
+    const auto n = unreduced(c.normal);
+    const T along = reduced(unreduced(sched.H) * slip_along(ph, i, vf, tw, c) / dot2(n, n));
+    m.carried_slip[f] = T(bounded(along) / sched.H) * Vec2<T>{c.normal.y, -c.normal.x};
   }
   for (std::size_t f = 0; f < nf; ++f)
     if (!touching[f] && !sched.commands[f].force) m.free_velocity[f] = sched.commands[f].value;
@@ -172,26 +230,26 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
 /// The twist applied to body b (StepRecord::applied): turning, about a rolling obstacle contact's point (exactly the
 /// instantaneous centre: the body's velocity is zero there) or else the instantaneous centre (bounded), by the
 /// rotation that brings the pose's tan(theta / 2) after a full step, (U + u) / (1 - U u) with u = omega H / 2, to a
-/// bounded value (exact paths).
+/// bounded value (exact paths; in unreduced fractions, reduced twice: U_new and omega).
 template <class T>
 Twist<T> applied_twist(const ContactSet<T>& cs, const StepRecord<T>& r, std::size_t b, const Twist<T>& tw,
                        const Pose<T>& pose, const T& H) {
   Twist<T> out = tw;
   if (sign(tw.omega) == 0) return out;
-  Vec2<T> centre{-tw.v.y / tw.omega, tw.v.x / tw.omega};
-  bool pivot = false;
+  const Vec2<T>* pivot = nullptr;
   for (std::size_t i = 0; i < cs.contacts.size() && !pivot; ++i)
-    if (fixed_party(cs.contacts[i], b) && r.contacts[i].mode == 'r') {
-      centre = cs.contacts[i].point;
-      pivot = true;
-    }
-  if (!pivot) centre = {bounded(centre.x), bounded(centre.y)};
+    if (fixed_party(cs.contacts[i], b) && r.contacts[i].mode == 'r') pivot = &cs.contacts[i].point;
+  const Vec2<T> centre = pivot ? *pivot : Vec2<T>{bounded(T(-tw.v.y / tw.omega)), bounded(T(tw.v.x / tw.omega))};
   if constexpr (std::is_same_v<T, Q>) {
-    const Q u = tw.omega * H / 2;
-    if (sgn(Q(1 + pose.c)) != 0 && sgn(Q(1 - pose.s / (1 + pose.c) * u)) != 0) {
-      const Q U_old = pose.s / (1 + pose.c);
-      const Q U_new = bounded(Q((U_old + u) / (1 - U_old * u)));
-      out.omega = 2 * ((U_new - U_old) / (1 + U_old * U_new)) / H;
+    using exact::Unreduced;
+    const Unreduced one{1, 1}, two{2, 1}, c1 = one + unreduced(pose.c);
+    if (sign(c1) != 0) {
+      // U_old = tan(theta / 2) is small (on the grid): reduced first, it keeps the rest small.
+      const Unreduced U_old = unreduced(reduced(unreduced(pose.s) / c1)), u = unreduced(tw.omega) * unreduced(H) / two;
+      if (const Unreduced den = one - U_old * u; sign(den) != 0) {
+        const Unreduced U_new = unreduced(bounded(reduced((U_old + u) / den)));
+        out.omega = reduced(two * ((U_new - U_old) / (one + U_old * U_new)) / unreduced(H));
+      }
     }
   }
   out.v = out.omega * Vec2<T>{centre.y, -centre.x};  // omega J (0 - centre)
@@ -212,7 +270,7 @@ void cut_step(const SceneGeometry<T>& g, const WorldBodies<T>& world, const std:
   for (const Contact<T>& c : cs.contacts) {
     const auto f = static_cast<std::size_t>(c.other);
     if (c.kind != ContactKind::kFinger || !m.carried_slip[f]) continue;
-    if (const auto end = slide_to_vertex(world, c, *m.carried_slip[f]); end && end->first < r.h) {
+    if (const auto end = slide_to_vertex(world, c, *m.carried_slip[f], r.h)) {
       r.h = end->first;
       r.cut_by = g.finger_names[f] + " reaches body vertex " + std::to_string(end->second);
       r.cut_exact = true;
@@ -297,8 +355,7 @@ bool Stepper<T>::step() {
   StepRecord<T> r;
   r.index = k;
   r.time = t;
-  r.poses = r.poses_after = poses;
-  r.tips_after = tips;
+  r.poses = poses;
   const ContactSet<T> cs = find_contacts(g_, world_, tips);
   std::vector<bool> held(poses.size(), false);  // every body needs a contact (else it would fall: no solution)
   for (const Contact<T>& c : cs.contacts) {
@@ -343,6 +400,8 @@ bool Stepper<T>::step() {
   if (exact_path && opts_.certificates) r.certificate = ucp::certificate_text(problem, rep, assembly_text);
   if (rep.status != ucp::UcpStatus::kSolvable) {
     for (const Contact<T>& c : cs.contacts) r.contacts.push_back({c.name, '?', c.point, c.normal});
+    r.poses_after = poses;  // no motion
+    r.tips_after = tips;
     r.seconds = std::chrono::duration<double>(clock::now() - step_start).count();
     out_.steps.push_back(r);
     const bool jammed = rep.status == ucp::UcpStatus::kJammed;
@@ -374,9 +433,13 @@ bool Stepper<T>::step() {
     if (c.kind == ContactKind::kFinger) carrier[static_cast<std::size_t>(c.other)] = c.which;
   for (std::size_t f = 0; f < tips.size(); ++f) {
     const Pose<T>& step = steps[static_cast<std::size_t>(carrier[f])];
-    if (fm.carried_slip[f])
-      tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);
-    else if (fm.free_velocity[f])
+    if (fm.carried_slip[f]) {
+      // step(p + h slip) = step(p) + R h slip: on the exact paths one application (over common denominators).
+      if constexpr (exact_path)
+        tips[f] = step.apply(tips[f] + r.h * *fm.carried_slip[f]);
+      else
+        tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);
+    } else if (fm.free_velocity[f])
       tips[f] = tips[f] + r.h * *fm.free_velocity[f];
   }
   t = t + r.h;

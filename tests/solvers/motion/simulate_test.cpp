@@ -13,6 +13,7 @@
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "runtime/scenes.h"
+#include "solvers/motion/bounded.h"
 #include "solvers/motion/compare.h"
 #include "solvers/ucp/certificate.h"
 
@@ -516,6 +517,20 @@ TEST(PegInChamferedHole, MakesAndBreaksContactsAtTheDerivedSteps) {
   EXPECT_EQ(run.final_poses[0].t, (Vec2<Q>{Q(0), Q(-8)}));
   EXPECT_EQ(run.final_poses[0].c, Q(1));
   expect_certified_and_apart(scene, run);
+}
+
+TEST(Bounded, OnGridRoundsToTheNearestMultipleOfTwoToMinus40) {
+  // Compared by value: on_grid returns n / 2^40 as it is, not in lowest terms.
+  const auto same = [](const Q& a, const Q& b) { return cmp(a, b) == 0; };
+  const Q unit(1, exact::Z(1) << 40);
+  EXPECT_TRUE(same(on_grid(Q(1, 3)), 366503875925 * unit));  // 2^40 / 3 = 366503875925.33...
+  EXPECT_TRUE(same(on_grid(Q(-1, 3)), -366503875925 * unit));
+  EXPECT_TRUE(same(on_grid(unit / 2), unit));  // a tie rounds up
+  EXPECT_TRUE(same(on_grid(-unit / 2), 0));
+  EXPECT_TRUE(same(on_grid(Q(5, 4)), Q(5, 4)));
+  const Q big(exact::Z(1) << 100, (exact::Z(1) << 100) - 1);  // 202 bits: to the grid
+  EXPECT_TRUE(same(bounded(big), 1));
+  EXPECT_EQ(bounded(Q(3, 7)), Q(3, 7));
 }
 
 }  // namespace
