@@ -1,10 +1,10 @@
 #include "solvers/motion/contacts.h"
 
 #include <algorithm>
-#include <cmath>
 
+#include "exact/enclose.h"
 #include "exact/fraction_free.h"
-#include "exact/interval_number.h"
+#include "exact/unreduced.h"
 #include "solvers/motion/first_root.h"
 
 namespace contactcert::solvers::motion {
@@ -17,21 +17,7 @@ Vec2<T> from_point(const Point2& p) {
   return {from_q<T>(p.x), from_q<T>(p.y)};
 }
 
-/// A rational n / d (d > 0) left unreduced: sums, differences and products in integers without the gcd that each Q
-/// operation takes, for the sign of a short polynomial in exact coordinates (the same sign as over Q).
-struct Unreduced {
-  exact::Z n, d;
-};
-Unreduced operator-(const Unreduced& a, const Unreduced& b) {
-  if (a.d == b.d) return {a.n - b.n, a.d};
-  return {a.n * b.d - b.n * a.d, a.d * b.d};
-}
-Unreduced operator+(const Unreduced& a, const Unreduced& b) {
-  if (a.d == b.d) return {a.n + b.n, a.d};
-  return {a.n * b.d + b.n * a.d, a.d * b.d};
-}
-Unreduced operator*(const Unreduced& a, const Unreduced& b) { return {a.n * b.n, a.d * b.d}; }
-int sign(const Unreduced& x) { return sgn(x.n); }
+using exact::Unreduced;
 /// p's coordinates over one denominator (theirs when they share it, else the product of theirs): the differences of
 /// points sharing it, and the products that cross2 and dot2 subtract or add, then meet equal denominators (no cross
 /// multiplication).
@@ -54,18 +40,7 @@ int orientation(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
 /// Whether x lies outside the closed interval between u and v (comparisons only).
 bool outside(const Q& x, const Q& u, const Q& v) { return (x < u && x < v) || (x > u && x > v); }
 
-/// An enclosure of q = n / d without MPFR's exact division (exact::to_interval), for the filters here: n and d
-/// truncated to doubles (mpz_get_d) and divided give r within 3 units of 2^-52 |q| whatever the rounding mode (a run
-/// under valgrind ignores it), so [r - 2^-49 |r|, r + 2^-49 |r|], each end rounded by at most 2^-52 |r|, holds q. A
-/// small integer is its own point; outside the normal doubles, exact::to_interval.
-exact::Interval enclose(const Q& q) {
-  const mpz_srcptr n = mpq_numref(q.get_mpq_t());
-  if (exact::ring::is_integer(q) && mpz_sizeinbase(n, 2) <= 53) return exact::Interval(mpz_get_d(n));
-  const double r = mpz_get_d(n) / mpz_get_d(mpq_denref(q.get_mpq_t()));
-  const double margin = std::ldexp(std::abs(r), -49);
-  if (!std::isfinite(r) || std::abs(r) < 0x1p-960) return exact::to_interval(q);
-  return exact::Interval(r - margin, r + margin);
-}
+using exact::enclose;
 Vec2<exact::Interval> enclose(const Vec2<Q>& p) { return {enclose(p.x), enclose(p.y)}; }
 
 /// The enclosures of v's points on the exact paths; none for double.
