@@ -520,16 +520,23 @@ TEST(PegInChamferedHole, MakesAndBreaksContactsAtTheDerivedSteps) {
 }
 
 TEST(Bounded, OnGridRoundsToTheNearestMultipleOfTwoToMinus40) {
-  // Compared by value: on_grid returns n / 2^40 as it is, not in lowest terms.
-  const auto same = [](const Q& a, const Q& b) { return cmp(a, b) == 0; };
   const Q unit(1, exact::Z(1) << 40);
-  EXPECT_TRUE(same(on_grid(Q(1, 3)), 366503875925 * unit));  // 2^40 / 3 = 366503875925.33...
-  EXPECT_TRUE(same(on_grid(Q(-1, 3)), -366503875925 * unit));
-  EXPECT_TRUE(same(on_grid(unit / 2), unit));  // a tie rounds up
-  EXPECT_TRUE(same(on_grid(-unit / 2), 0));
-  EXPECT_TRUE(same(on_grid(Q(5, 4)), Q(5, 4)));
+  EXPECT_EQ(on_grid(Q(1, 3)), 366503875925 * unit);  // 2^40 / 3 = 366503875925.33...
+  EXPECT_EQ(on_grid(Q(-1, 3)), -366503875925 * unit);
+  EXPECT_EQ(on_grid(unit / 2), unit);  // a tie rounds up
+  EXPECT_EQ(on_grid(-unit / 2), 0);
+  EXPECT_EQ(on_grid(Q(5, 4)), Q(5, 4));
+  EXPECT_EQ(on_grid(Q(-3)), Q(-3));
+  // In lowest terms, as every rational of the library (== compares numerators and denominators).
+  for (const Q& x : {Q(1, 3), Q(5, 4), Q(-7, 8), Q(0), Q(6), Q(-1, 3)}) {
+    const Q y = on_grid(x);
+    Q canonical = y;
+    canonical.canonicalize();
+    EXPECT_EQ(y.get_num(), canonical.get_num());
+    EXPECT_EQ(y.get_den(), canonical.get_den());
+  }
   const Q big(exact::Z(1) << 100, (exact::Z(1) << 100) - 1);  // 202 bits: to the grid
-  EXPECT_TRUE(same(bounded(big), 1));
+  EXPECT_EQ(bounded(big), 1);
   EXPECT_EQ(bounded(Q(3, 7)), Q(3, 7));
 }
 
