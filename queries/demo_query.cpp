@@ -262,7 +262,7 @@ void quasistatic(const Demo& d) {
     d.check_time();
     solvers::ucp::RandomProblemOptions ro;
     ro.nc = s[0];
-    ro.mu_max = Q(s[1], 10);
+    ro.mu_max = Q(s[1]) / 10;  // in lowest terms (Q(n, d) is not reduced)
     ro.abar_size = s[2];
     const auto problem = solvers::ucp::generate_random_problem(ro, rng);
     DemoRandomProblem row{s[0], s[2], ro.mu_max, {}};
