@@ -4,8 +4,8 @@
 
 #include "exact/enclose.h"
 #include "exact/fraction_free.h"
-#include "exact/unreduced.h"
 #include "solvers/motion/first_root.h"
+#include "solvers/motion/unreduced_point.h"
 
 namespace contactcert::solvers::motion {
 namespace {
@@ -16,19 +16,6 @@ template <class T>
 Vec2<T> from_point(const Point2& p) {
   return {from_q<T>(p.x), from_q<T>(p.y)};
 }
-
-using exact::Unreduced;
-/// p's coordinates over one denominator (theirs when they share it, else the product of theirs): the differences of
-/// points sharing it, and the products that cross2 and dot2 subtract or add, then meet equal denominators (no cross
-/// multiplication).
-Vec2<Unreduced> unreduced(const Vec2<Q>& p) {
-  if (mpz_cmp(mpq_denref(p.x.get_mpq_t()), mpq_denref(p.y.get_mpq_t())) == 0)
-    return {{p.x.get_num(), p.x.get_den()}, {p.y.get_num(), p.y.get_den()}};
-  const exact::Z d = p.x.get_den() * p.y.get_den();
-  return {{p.x.get_num() * p.y.get_den(), d}, {p.y.get_num() * p.x.get_den(), d}};
-}
-/// The float path's numbers as they are.
-const Vec2<double>& unreduced(const Vec2<double>& p) { return p; }
 
 /// The sign of (b - a) x (p - a): unreduced on the exact paths, with the float sign tolerance on the float path.
 template <class T>

@@ -4,16 +4,15 @@
 #include <algorithm>
 #include <chrono>
 #include <nlohmann/json.hpp>
-#include <set>
 
 #include "exact/enclose.h"
 #include "exact/input_error.h"
-#include "exact/unreduced.h"
 #include "solvers/motion/bounded.h"
 #include "solvers/motion/first_root.h"
 #include "solvers/motion/keep_contacts.h"
 #include "solvers/motion/step_problem.h"
 #include "solvers/motion/uniqueness_certificate.h"
+#include "solvers/motion/unreduced_point.h"
 
 namespace contactcert::solvers::motion {
 namespace {
@@ -21,14 +20,10 @@ namespace {
 using Index = Eigen::Index;
 using exact::reduced;
 using exact::sign;
-using exact::unreduced;
 
-/// A point's coordinates unreduced (exact paths), or the float path's as they are.
-Vec2<exact::Unreduced> unreduced(const Vec2<Q>& p) { return {unreduced(p.x), unreduced(p.y)}; }
-const Vec2<double>& unreduced(const Vec2<double>& p) { return p; }
-
-/// The solution's physics in T: per contact the signs of v_n and v_t and c_n, c_t; per body its q_dot; every joint
-/// velocity; on the exact paths the solution itself (its v_t, read unreduced).
+/// The solution's physics in T: per contact the signs of v_n and v_t and c_n, c_t; per body its q_dot; on the float
+/// path every joint velocity; on the exact paths the solution itself (its v_t read unreduced, and the joint velocities
+/// read only for the separating fingers: finger_velocity).
 template <class T>
 struct StepPhysics {
   std::vector<int> vn, vt;
@@ -49,8 +44,6 @@ StepPhysics<Q> physics(const ucp::UcpProblem&, const ucp::UcpReport& r, const Q*
     out.cn[static_cast<std::size_t>(i)] = s.c_n(i);
     out.ct[static_cast<std::size_t>(i)] = s.c_t(i);
   }
-  out.theta.resize(static_cast<std::size_t>(s.theta_dot.size()));
-  for (Index j = 0; j < s.theta_dot.size(); ++j) out.theta[static_cast<std::size_t>(j)] = s.theta_dot(j);
   out.twists.resize(static_cast<std::size_t>(s.q_dot.size() / 3));
   for (Index b = 0; b + 2 < s.q_dot.size(); b += 3)
     out.twists[static_cast<std::size_t>(b / 3)] = {{s.q_dot(b), s.q_dot(b + 1)}, s.q_dot(b + 2)};
@@ -81,17 +74,23 @@ StepPhysics<double> physics(const ucp::UcpProblem& problem, const ucp::UcpReport
   return out;
 }
 
+/// The velocity of the finger whose joints are j and j + 1.
+Vec2<Q> finger_velocity(const StepPhysics<Q>& ph, std::size_t j) {
+  return {ph.solution->theta_dot(Index(j)), ph.solution->theta_dot(Index(j + 1))};
+}
+Vec2<double> finger_velocity(const StepPhysics<double>& ph, std::size_t j) { return {ph.theta[j], ph.theta[j + 1]}; }
+
 /// The mode letter of a contact from the signs of v_n and v_t.
 char mode_letter(int vn, int vt) {
   if (vn > 0) return 's';
   return vt == 0 ? 'r' : (vt > 0 ? '+' : '-');
 }
 
+/// The names of a not in b (a step's few contacts: a linear search).
 std::vector<std::string> minus(const std::vector<std::string>& a, const std::vector<std::string>& b) {
-  const std::set<std::string> bs(b.begin(), b.end());
   std::vector<std::string> out;
   for (const std::string& x : a)
-    if (!bs.count(x)) out.push_back(x);
+    if (std::find(b.begin(), b.end(), x) == b.end()) out.push_back(x);
   return out;
 }
 
@@ -161,6 +160,19 @@ StepSchedule<T> step_schedule(const MotionScene& scene, const SceneGeometry<T>& 
   return out;
 }
 
+/// A carried finger's tip p after the step on the exact paths: step(p + mu e), e = R e_b its edge in the world (e_b
+/// in the frame of the body carrying it, R the body's rotation), is after(q + mu e_b) with q = before^-1(p) the tip in
+/// the body's frame and after = step o before the body's new pose: the pose applied to a point of the body's size
+/// rather than the step to one of the world's. in_body keeps (body, q) from step to step while the finger stays on
+/// that body (the float path moves its tip as it did).
+Vec2<Q> carried_tip(std::optional<std::pair<int, Vec2<Q>>>& in_body, const Vec2<Q>& p, int body, const Vec2<Q>& e_b,
+                    const Q& mu, const Pose<Q>& before, const Pose<Q>& after) {
+  if (!in_body || in_body->first != body) in_body = std::pair<int, Vec2<Q>>{body, before.unrotate(p - before.t)};
+  Vec2<Q>& q = in_body->second;
+  q = q + mu * e_b;
+  return after.apply(q);
+}
+
 /// What an overlap owes to the translation correction: ": the translation correction cannot keep C, ... closed
 /// (...)" naming the maintained contacts it leaves dipping, else empty.
 std::string unkept_dips(const std::vector<std::string>& dipping) {
@@ -176,21 +188,21 @@ std::string unkept_dips(const std::vector<std::string>& dipping) {
 template <class T>
 struct FingerMotion {
   std::vector<std::optional<Vec2<T>>> free_velocity, carried_slip;
+  std::vector<T> rate;  ///< a carried finger's slip is rate e, e = J^T n its body edge in the world
 };
 
-/// slip . e for the finger carried at contact i, with slip its velocity vf relative to the body point under it and e =
-/// (n_y, -n_x) its edge: slip . e = slip x n. That is the contact's v_t = t . (body - finger velocity) with t = J n =
-/// -e, which the exact paths read from the solution (unreduced: its numerator over the vector's denominator); the
-/// float path's v_t is not its twist's (least squares), so it takes the twist's.
-exact::Unreduced slip_along(const StepPhysics<Q>& ph, std::size_t i, const Vec2<Q>&, const Twist<Q>&,
-                            const Contact<Q>&) {
+/// slip . e for the finger carried at contact i (joints j, j + 1), with slip its velocity vf relative to the body point
+/// under it and e = (n_y, -n_x) its edge: slip . e = slip x n. That is the contact's v_t = t . (body - finger velocity)
+/// with t = J n = -e, which the exact paths read from the solution (unreduced: its numerator over the vector's
+/// denominator); the float path's v_t is not its twist's (least squares), so it takes the twist's.
+exact::Unreduced slip_along(const StepPhysics<Q>& ph, std::size_t i, std::size_t, const Twist<Q>&, const Contact<Q>&) {
   exact::Unreduced out;
   ph.solution->v_t.entry(static_cast<Index>(i), out.n, out.d);
   return out;
 }
-double slip_along(const StepPhysics<double>&, std::size_t, const Vec2<double>& vf, const Twist<double>& tw,
+double slip_along(const StepPhysics<double>& ph, std::size_t, std::size_t j, const Twist<double>& tw,
                   const Contact<double>& c) {
-  return cross2(vf - (tw.v + tw.omega * perp2(c.point)), c.normal);
+  return cross2(finger_velocity(ph, j) - (tw.v + tw.omega * perp2(c.point)), c.normal);
 }
 
 /// Records each contact's mode and force components in r, and says how each finger moves. A carried finger's slide
@@ -199,7 +211,8 @@ template <class T>
 FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& ph, const StepSchedule<T>& sched,
                                 StepRecord<T>& r) {
   const std::size_t nf = sched.commands.size();
-  FingerMotion<T> m{std::vector<std::optional<Vec2<T>>>(nf), std::vector<std::optional<Vec2<T>>>(nf)};
+  FingerMotion<T> m{std::vector<std::optional<Vec2<T>>>(nf), std::vector<std::optional<Vec2<T>>>(nf),
+                    std::vector<T>(nf)};
   std::vector<bool> touching(nf, false);
   std::size_t joint = 0;
   r.contacts.reserve(cs.contacts.size());  // no copies of the records' rationals as the vector grows
@@ -209,17 +222,18 @@ FingerMotion<T> record_contacts(const ContactSet<T>& cs, const StepPhysics<T>& p
     if (c.kind != ContactKind::kFinger) continue;
     const auto f = static_cast<std::size_t>(c.other);
     touching[f] = true;
-    const Vec2<T> vf{ph.theta[joint], ph.theta[joint + 1]};
+    const std::size_t j = joint;
     joint += 2;
     if (ph.vn[i] != 0) {
-      m.free_velocity[f] = vf;
+      m.free_velocity[f] = finger_velocity(ph, j);
       continue;
     }
     const Twist<T>& tw = ph.twists[static_cast<std::size_t>(c.which)];
     // H (slip . e) / (e . e), unreduced on the exact paths: one reduction.
     const auto n = unreduced(c.normal);
-    const T along = reduced(unreduced(sched.H) * slip_along(ph, i, vf, tw, c) / dot2(n, n));
-    m.carried_slip[f] = T(bounded(along) / sched.H) * Vec2<T>{c.normal.y, -c.normal.x};
+    const T along = reduced(unreduced(sched.H) * slip_along(ph, i, j, tw, c) / dot2(n, n));
+    m.rate[f] = bounded(along) / sched.H;
+    m.carried_slip[f] = m.rate[f] * Vec2<T>{c.normal.y, -c.normal.x};
   }
   for (std::size_t f = 0; f < nf; ++f)
     if (!touching[f] && !sched.commands[f].force) m.free_velocity[f] = sched.commands[f].value;
@@ -427,17 +441,26 @@ bool Stepper<T>::step() {
   for (const ContactRecord<T>& c : r.contacts) modes.push_back(c.mode);
   const Poses<T> steps = keep_contacts(poses, std::move(twist_steps), cs.contacts, modes, r.applied);
   for (std::size_t b = 0; b < poses.size(); ++b) poses[b] = compose(steps[b], poses[b]);
-  std::vector<int> carrier(tips.size(), 0);  // the body a carried finger touches
+  std::vector<int> carrier(tips.size(), 0), edge(tips.size(), 0);  // the body and edge a carried finger touches
   for (const Contact<T>& c : cs.contacts)
-    if (c.kind == ContactKind::kFinger) carrier[static_cast<std::size_t>(c.other)] = c.which;
+    if (c.kind == ContactKind::kFinger) {
+      carrier[static_cast<std::size_t>(c.other)] = c.which;
+      edge[static_cast<std::size_t>(c.other)] = c.body;
+    }
+  tips_in_body_.resize(tips.size());
   for (std::size_t f = 0; f < tips.size(); ++f) {
-    const Pose<T>& step = steps[static_cast<std::size_t>(carrier[f])];
+    const auto b = static_cast<std::size_t>(carrier[f]);
+    if (!fm.carried_slip[f]) tips_in_body_[f].reset();
     if (fm.carried_slip[f]) {
-      // step(p + h slip) = step(p) + R h slip: on the exact paths one application (over common denominators).
-      if constexpr (exact_path)
-        tips[f] = step.apply(tips[f] + r.h * *fm.carried_slip[f]);
-      else
-        tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);
+      if constexpr (exact_path) {
+        const std::vector<Vec2<T>>& body = g_.bodies[b];
+        const auto i = static_cast<std::size_t>(edge[f]);
+        tips[f] = carried_tip(tips_in_body_[f], tips[f], carrier[f], body[(i + 1) % body.size()] - body[i],
+                              r.h * fm.rate[f], r.poses[b], poses[b]);
+      } else {
+        const Pose<T>& step = steps[b];
+        tips[f] = step.apply(tips[f]) + step.rotate(r.h * *fm.carried_slip[f]);  // step(p + h slip)
+      }
     } else if (fm.free_velocity[f])
       tips[f] = tips[f] + r.h * *fm.free_velocity[f];
   }

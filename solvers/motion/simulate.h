@@ -8,6 +8,7 @@
 #include <chrono>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solvers/motion/contacts.h"
@@ -128,6 +129,8 @@ class Stepper {
   ucp::UcpOptions uopts_;
   std::chrono::steady_clock::time_point start_;
   std::vector<std::string> previous_;  ///< the contacts of the last step
+  /// Exact paths: a carried finger's tip in the frame of the body carrying it (that body's index), kept while it stays.
+  std::vector<std::optional<std::pair<int, Vec2<T>>>> tips_in_body_;
   bool ended_ = false;
   Trajectory<T> out_;     ///< final_pose, final_time, final_tips: the state now
   WorldBodies<T> world_;  ///< the bodies' vertices at out_.final_poses
