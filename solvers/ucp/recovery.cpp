@@ -1,5 +1,6 @@
 #include "solvers/ucp/recovery.h"
 
+#include <algorithm>
 #include <boost/container/small_vector.hpp>
 #include <cassert>
 
@@ -28,6 +29,12 @@ namespace ring = exact::ring;
 template <class R>
 using Buffer = boost::container::small_vector<R, 64>;
 
+/// a f, without a product when f = 1 (the scales of many rows are: a normal's, a point finger's).
+template <class R>
+R times(const R& a, const R& f) {
+  return f == 1 ? a : ring::mul(a, f);
+}
+
 /// The data of the problem as integers, once per call: every row of P and of [Jn; Jt] over the lcm of its
 /// denominators, and mu, d' = d below its first nc entries (g_obj, (g_man - tau)_abar) and theta_dot each over a
 /// common denominator. [Jn; Jt] keeps only its non-zero entries (a point finger's row has one).
@@ -37,6 +44,9 @@ struct IntegerData {
   exact::IntMatrix<R> P;        ///< P_r = P.row(r) / Lp_r (2nc x m)
   exact::SparseIntMatrix<R> J;  ///< [Jn; Jt]_r = (row r of J) / Lj_r (2nc x nt)
   Buffer<R> Lp, Lj;
+  Buffer<R> scale;   ///< scale_r = Lp_r Lj_r
+  R LP, LJ;          ///< the lcms of the Lp_r and of the Lj_r
+  Buffer<R> factor;  ///< factor_r = LJ / Lj_r: [Jn; Jt]_r = J[r] factor_r / LJ
   Buffer<R> mu, d, theta;
   R Dmu, Dd, Dt;  ///< mu = mu / Dmu, d' = d / Dd, theta_dot = theta / Dt
 
@@ -49,6 +59,10 @@ struct IntegerData {
         J(nt),
         Lp(static_cast<std::size_t>(2 * nc)),
         Lj(static_cast<std::size_t>(2 * nc)),
+        scale(static_cast<std::size_t>(2 * nc)),
+        LP(1),
+        LJ(1),
+        factor(static_cast<std::size_t>(2 * nc)),
         mu(static_cast<std::size_t>(nc)),
         d(static_cast<std::size_t>(m)),
         theta(static_cast<std::size_t>(nt)) {
@@ -64,7 +78,11 @@ struct IntegerData {
       const Index start = J.begin(r);
       Lj[k] = ring::to_common_denominator<R>(
           J.end(r) - start, [&](Index t) -> const Q& { return Jm(i, J.col(start + t)); }, J.values(r));
+      scale[k] = times(Lp[k], Lj[k]);
+      LP = ring::lcm(LP, Lp[k]);
+      LJ = ring::lcm(LJ, Lj[k]);
     }
+    for (std::size_t k = 0; k < factor.size(); ++k) factor[k] = ring::divexact(LJ, Lj[k]);
     Dmu = ring::to_common_denominator<R>(
         nc, [&](Index i) -> const Q& { return p.mu(i); }, mu.data());
     Dd = ring::to_common_denominator<R>(
@@ -95,18 +113,16 @@ R dot(const R* a, const R* b, Index k) {
 
 /// Rows r of (4), (5), P_r u = v_r + h_r with u = [q_dot; -theta_abar] and h = J_alpha theta_alpha, in integers
 /// for v = 0 and the joint velocities T / D (those of abar 0): J_r . T / D = h'_r / (Lj_r D) with h'_r = J[r] . T,
-/// M_r = [Lj_r P[r] | Lp_r h'_r] (row-major, 2nc x (m + 1)), so that M_r (D u) - M_r[m] = scale_r D (P_r u - h_r)
-/// with scale_r = Lp_r Lj_r.
+/// M_r = [Lj_r P[r] | Lp_r h'_r] (row-major, 2nc x (m + 1)), so that M_r (D u) - M_r[m] = scale_r D (P_r u - h_r).
 template <class R>
-void velocity_rows(const IntegerData<R>& g, const R* T, R* M, R* scale) {
+void velocity_rows(const IntegerData<R>& g, const R* T, R* M) {
   const Index w = g.m + 1;
   for (Index r = 0; r < 2 * g.nc; ++r) {
     const auto k = static_cast<std::size_t>(r);
     R* M_r = M + r * w;
     const R* P_r = g.P.row(r);
     for (Index j = 0; j < g.m; ++j) M_r[j] = g.Lj[k] != 1 ? ring::mul(P_r[j], g.Lj[k]) : P_r[j];
-    M_r[g.m] = ring::mul(g.Lp[k], g.J_dot(r, T));
-    scale[r] = ring::mul(g.Lp[k], g.Lj[k]);
+    M_r[g.m] = times(g.J_dot(r, T), g.Lp[k]);
   }
 }
 
@@ -127,10 +143,10 @@ void set_generalized_velocities(const QuasistaticProblem& p, const R* N, const R
 template <class R>
 std::optional<PhysicalSolution> velocities_in(const QuasistaticProblem& p, const IntegerData<R>& g, const Vec<Q>& x) {
   const Index nc = p.nc, nt = p.ntheta, m = p.P.cols(), w = m + 1;
-  // W = (x, theta_dot) over Dw; V = (v_n, v_t) over Dw; M, scale: velocity_rows; N the solution's numerators.
-  Buffer<R> buf(static_cast<std::size_t>(3 * nc + nt + 2 * nc + 2 * nc + m));
+  // W = (x, theta_dot) over Dw; V = (v_n, v_t) over Dw; M: velocity_rows; N the solution's numerators.
+  Buffer<R> buf(static_cast<std::size_t>(3 * nc + nt + 2 * nc + m));
   exact::IntMatrix<R> velocity(2 * nc, w);
-  R *W = buf.data(), *V = W + 3 * nc + nt, *M = velocity.row(0), *scale = V + 2 * nc, *N = scale + 2 * nc;
+  R *W = buf.data(), *V = W + 3 * nc + nt, *M = velocity.row(0), *N = V + 2 * nc;
   const R Dw = ring::to_common_denominator<R>(
       3 * nc + nt, [&](Index i) -> const Q& { return i < 3 * nc ? x(i) : p.theta_dot(i - 3 * nc); }, W);
   for (Index r = 0; r < 2 * nc; ++r) V[r] = r < nc ? W[r] : ring::sub(W[r], W[r + nc]);
@@ -138,8 +154,8 @@ std::optional<PhysicalSolution> velocities_in(const QuasistaticProblem& p, const
   s.v_n = exact::RationalVector(V, nc, Dw);
   s.v_t = exact::RationalVector(V + nc, nc, Dw);
   // P_r (Dw u) = Dw (v_r + h_r): M_r's right-hand side gains scale_r V_r.
-  velocity_rows<R>(g, W + 3 * nc, M, scale);
-  for (Index r = 0; r < 2 * nc; ++r) M[r * w + m] = ring::add(M[r * w + m], ring::mul(scale[r], V[r]));
+  velocity_rows<R>(g, W + 3 * nc, M);
+  for (Index r = 0; r < 2 * nc; ++r) ring::add_mul(M[r * w + m], g.scale[static_cast<std::size_t>(r)], V[r]);
   R d;
   const exact::SolutionKind kind = velocity.solve(N, d);
   if (kind == exact::SolutionKind::kInconsistent) return std::nullopt;
@@ -171,13 +187,14 @@ bool pattern_velocities_in(const QuasistaticProblem& p, const IntegerData<R>& g,
   Index k = 0;
   for (Index r = 0; r < 2 * nc; ++r) k += fixed(r);
   if (k < m) return false;
-  // M, scale: velocity_rows with theta_dot = theta / Dt; E the fixed rows; N the solution's numerators; V = (v_n, v_t).
-  Buffer<R> buf(static_cast<std::size_t>(2 * nc * w + 2 * nc + m + 2 * nc));
+  // M: velocity_rows with theta_dot = theta / Dt; E the fixed rows; N the solution's numerators; V = (v_n, v_t).
+  Buffer<R> buf(static_cast<std::size_t>(2 * nc * w + m + 2 * nc));
   exact::IntMatrix<R> fixed_rows(k, w);
-  R *M = buf.data(), *scale = M + 2 * nc * w, *E = fixed_rows.row(0), *N = scale + 2 * nc, *V = N + m;
-  velocity_rows<R>(g, g.theta.data(), M, scale);
+  const R* scale = g.scale.data();
+  R *M = buf.data(), *E = fixed_rows.row(0), *N = M + 2 * nc * w, *V = N + m;
+  velocity_rows<R>(g, g.theta.data(), M);
   for (Index r = 0, e = 0; r < 2 * nc; ++r)
-    if (fixed(r)) std::copy(M + r * w, M + (r + 1) * w, E + (e++) * w);
+    if (fixed(r)) std::move(M + r * w, M + (r + 1) * w, E + (e++) * w);  // only the free rows of M are read below
   R d;
   if (fixed_rows.solve(N, d) != exact::SolutionKind::kUnique) return false;  // d > 0
   // Dt u = N / d, so v_r = (M_r N - d M_r[m]) / (d scale_r Dt), 0 on the fixed rows: over D = d Dt L with L the
@@ -211,15 +228,6 @@ bool pattern_velocities_in(const QuasistaticProblem& p, const IntegerData<R>& g,
   return true;
 }
 
-/// The lcm LJ of the rows' Lj and factor_r = LJ / Lj_r: then [Jn; Jt]_r = J[r] factor_r / LJ.
-template <class R>
-R common_J(const IntegerData<R>& g, R* factor) {
-  R LJ(1);
-  for (Index r = 0; r < 2 * g.nc; ++r) LJ = ring::lcm(LJ, g.Lj[static_cast<std::size_t>(r)]);
-  for (Index r = 0; r < 2 * g.nc; ++r) factor[r] = ring::divexact(LJ, g.Lj[static_cast<std::size_t>(r)]);
-  return LJ;
-}
-
 /// c_n, c_t and (3): tau - g_man = Jn^T c_n + Jt^T c_t for c = (c_n, c_t) = C / Dc.
 template <class R>
 void set_forces(const IntegerData<R>& g, const R* C, const R& Dc, PhysicalSolution& s) {
@@ -227,11 +235,10 @@ void set_forces(const IntegerData<R>& g, const R* C, const R& Dc, PhysicalSoluti
   s.c_n = exact::RationalVector(C, nc, Dc);
   s.c_t = exact::RationalVector(C + nc, nc, Dc);
   // tau_j = sum_r J[r]_j factor_r C_r / (LJ Dc).
-  Buffer<R> t(static_cast<std::size_t>(nt)), factor(static_cast<std::size_t>(2 * nc));
-  const R LJ = common_J(g, factor.data());
+  Buffer<R> t(static_cast<std::size_t>(nt));
   for (Index r = 0; r < 2 * nc; ++r)
-    if (ring::sign(C[r]) != 0) g.J_scatter(r, ring::mul(C[r], factor[static_cast<std::size_t>(r)]), t.data());
-  s.tau = exact::RationalVector(t.data(), nt, ring::mul(LJ, Dc));
+    if (ring::sign(C[r]) != 0) g.J_scatter(r, times(C[r], g.factor[static_cast<std::size_t>(r)]), t.data());
+  s.tau = exact::RationalVector(t.data(), nt, ring::mul(g.LJ, Dc));
 }
 
 /// c_n, c_t = s_t^+ - U c_n and tau (3) from y = (c_n, s_t^+, s_t^-).
@@ -287,9 +294,9 @@ std::optional<exact::RationalVector> pattern_forces_in(const QuasistaticProblem&
     const ContactForce& f = contact[static_cast<std::size_t>(i)];
     const R *Pn = g.P.row(i), *Pt = g.P.row(nc + i);
     if (f.kind == ContactForce::kEdge) {
-      // P_n + sigma mu P_t = (Dmu Lp_t Pn + sigma Mu Lp_n Pt) / (Lp_n Lp_t Dmu)
-      const R a = ring::mul(g.Dmu, Lp[nc + i]), b = ring::mul(ring::mul(R(f.sigma), Mu[i]), Lp[i]);
-      for (Index row = 0; row < m; ++row) E[row * w + j] = ring::add(ring::mul(a, Pn[row]), ring::mul(b, Pt[row]));
+      // P_n + sigma mu P_t = (Dmu Lp_t Pn - b Pt) / (Lp_n Lp_t Dmu) with b = -sigma Mu Lp_n
+      const R a = times(Lp[nc + i], g.Dmu), b = ring::mul(ring::mul(R(-f.sigma), Mu[i]), Lp[i]);
+      for (Index row = 0; row < m; ++row) ring::mul_sub(a, Pn[row], b, Pt[row], E[row * w + j]);
       D[j++] = ring::mul(Lp[i], ring::mul(Lp[nc + i], g.Dmu));
     } else if (f.kind == ContactForce::kFree) {
       for (Index row = 0; row < m; ++row) E[row * w + j] = Pn[row], E[row * w + j + 1] = Pt[row];
@@ -355,6 +362,12 @@ R over_common_denominator(std::initializer_list<const exact::RationalVector*> pa
   return L;
 }
 
+/// a / Da = b / Db for Da, Db > 0: the numerators when the denominators agree (as recovered), else crosswise.
+template <class R>
+bool same_ratio(const R& a, const R& Da, const R& b, const R& Db) {
+  return Da == Db ? a == b : ring::mul(a, Db) == ring::mul(b, Da);
+}
+
 template <class R>
 ConditionsCheck check_in(const QuasistaticProblem& p, const IntegerData<R>& g, const PhysicalSolution& s) {
   ConditionsCheck out;
@@ -363,58 +376,63 @@ ConditionsCheck check_in(const QuasistaticProblem& p, const IntegerData<R>& g, c
     out.violations.push_back(what);
   };
   const Index nc = p.nc, nq = p.nq, nt = p.ntheta;
-  // F = (c_n, c_t, tau) over Df, U = (q_dot, theta_dot, v_n, v_t) over Du.
-  Buffer<R> buf(static_cast<std::size_t>(2 * nc + nt + nq + nt + 2 * nc + 2 * nc + nt + 2 * nc));
-  R *F = buf.data(), *U = F + 2 * nc + nt, *factor = U + nq + nt + 2 * nc, *sums = factor + 2 * nc, *wF = sums + nt;
-  const R Df = over_common_denominator<R>({&s.c_n, &s.c_t, &s.tau}, F);
-  const R Du = over_common_denominator<R>({&s.q_dot, &s.theta_dot, &s.v_n, &s.v_t}, U);
-  const R *Uq = U, *Ut = U + nq, *Uvn = Ut + nt, *Uvt = Uvn + nc;
+  // F = (c_n, c_t) over Df, T = tau over Dtau, G = (q_dot, theta_dot) over Dg, V = (v_n, v_t) over Dv: each pair
+  // as recovered shares its denominator, and the equations compare across them without rescaling the vectors.
+  Buffer<R> buf(static_cast<std::size_t>(2 * nc + nt + nq + nt + 2 * nc + nt + 2 * nc));
+  R *F = buf.data(), *T = F + 2 * nc, *G = T + nt, *V = G + nq + nt, *sums = V + 2 * nc, *wF = sums + nt;
+  const R Df = over_common_denominator<R>({&s.c_n, &s.c_t}, F);
+  const R Dtau = over_common_denominator<R>({&s.tau}, T);
+  const R Dg = over_common_denominator<R>({&s.q_dot, &s.theta_dot}, G);
+  const R Dv = over_common_denominator<R>({&s.v_n, &s.v_t}, V);
+  const R *Gq = G, *Gt = G + nq;
   // (2) W_n c_n + W_t c_t + g_obj = 0: row k is column k of P against (c_n, c_t), and g_obj(k) = d'(k): over
-  // LP Df Dd with LP the lcm of the rows' Lp, sum_r P[r]_k (LP / Lp_r) Dd F_r + LP d'_k Df = 0.
-  R LP(1);
-  for (Index r = 0; r < 2 * nc; ++r) LP = ring::lcm(LP, g.Lp[static_cast<std::size_t>(r)]);
-  for (Index r = 0; r < 2 * nc; ++r)  // wF_r = (LP / Lp_r) Dd F_r
-    wF[r] = ring::sign(F[r]) == 0
-                ? R(0)
-                : ring::mul(ring::divexact(LP, g.Lp[static_cast<std::size_t>(r)]), ring::mul(g.Dd, F[r]));
+  // LP Df Dd, Dd sum_r P[r]_k wF_r + (LP Df) d'_k = 0 with wF_r = (LP / Lp_r) F_r.
+  for (Index r = 0; r < 2 * nc; ++r)
+    wF[r] = ring::sign(F[r]) == 0 ? R(0) : times(F[r], ring::divexact(g.LP, g.Lp[static_cast<std::size_t>(r)]));
+  const R LP_Df = ring::mul(g.LP, Df);
   for (Index k = 0; k < nq; ++k) {
-    R sum = ring::mul(ring::mul(LP, g.d[static_cast<std::size_t>(k)]), Df);
+    R sum(0);
     for (Index r = 0; r < 2 * nc; ++r)
       if (ring::sign(wF[r]) != 0) ring::add_mul(sum, g.P.row(r)[k], wF[r]);
+    sum = times(sum, g.Dd);
+    ring::add_mul(sum, LP_Df, g.d[static_cast<std::size_t>(k)]);
     if (ring::sign(sum) != 0) bad("(2) equilibrium row " + std::to_string(k) + " is not zero");
   }
-  // (3) Jn^T c_n + Jt^T c_t = tau - g_man, over LJ Df: sum_r J[r]_j factor_r F_r = LJ tau_j.
-  const R LJ = common_J(g, factor);
+  // (3) Jn^T c_n + Jt^T c_t = tau - g_man: sums_j = sum_r J[r]_j factor_r F_r over LJ Df against T_j over Dtau.
   for (Index r = 0; r < 2 * nc; ++r)
-    if (ring::sign(F[r]) != 0) g.J_scatter(r, ring::mul(factor[r], F[r]), sums);
+    if (ring::sign(F[r]) != 0) g.J_scatter(r, times(F[r], g.factor[static_cast<std::size_t>(r)]), sums);
+  const R LJ_Df = ring::mul(g.LJ, Df);
   for (Index j = 0; j < nt; ++j)
-    if (sums[j] != ring::mul(LJ, F[2 * nc + j])) bad("(3) joint " + std::to_string(j) + " equilibrium fails");
-  // For the effort-controlled joints tau - g_man = -(d)_abar: -tau / Df = d' / Dd.
+    if (!same_ratio(sums[j], LJ_Df, T[j], Dtau)) bad("(3) joint " + std::to_string(j) + " equilibrium fails");
+  // For the effort-controlled joints tau - g_man = -(d)_abar: -tau = d' / Dd.
   for (std::size_t k = 0; k < p.abar.size(); ++k)
-    if (ring::mul(ring::sub(R(0), F[2 * nc + p.abar[k]]), g.Dd) !=
-        ring::mul(g.d[static_cast<std::size_t>(p.nq) + k], Df))
+    if (!same_ratio(ring::sub(R(0), T[p.abar[k]]), Dtau, g.d[static_cast<std::size_t>(p.nq) + k], g.Dd))
       bad("(3) joint " + std::to_string(p.abar[k]) + " does not carry its given effort");
   // (4), (5) with the given velocities of the joints in alpha
   for (int j : p.alpha)
-    if (ring::mul(Ut[j], g.Dt) != ring::mul(g.theta[static_cast<std::size_t>(j)], Du))
+    if (!same_ratio(Gt[j], Dg, g.theta[static_cast<std::size_t>(j)], g.Dt))
       bad("theta_dot of joint " + std::to_string(j) + " differs from its given value");
+  // Row r of (4) (r = i) and of (5) (r = nc + i): P_r's first nq columns against q_dot, minus J_r theta_dot, minus
+  // v_r; times scale_r = Lp_r Lj_r and over Du = lcm(Dg, Dv): (Lj_r P[r] . Gq - Lp_r J[r] . Gt) (Du / Dg) -
+  // scale_r V_r (Du / Dv) = 0.
+  const R Du = ring::lcm(Dg, Dv), fg = ring::divexact(Du, Dg), fv = ring::divexact(Du, Dv);
+  const auto residual = [&](Index r) {
+    const auto k = static_cast<std::size_t>(r);
+    R x = dot(g.P.row(r), Gq, nq);
+    ring::mul_sub(g.Lj[k], x, g.Lp[k], g.J_dot(r, Gt), x);
+    ring::mul_sub(fg, x, times(g.scale[k], fv), V[r], x);
+    return ring::sign(x);
+  };
   const R zero(0);
   for (Index i = 0; i < nc; ++i) {
-    // Row r of (4) (r = i) and of (5) (r = nc + i): P_r's first nq columns against q_dot, minus J_r theta_dot,
-    // minus v_r, all over Du: times Lp_r Lj_r, Lj_r P[r] . Uq - Lp_r J[r] . Ut - Lp_r Lj_r v_r = 0.
-    const auto residual = [&](Index r, const R& v) {
-      const auto k = static_cast<std::size_t>(r);
-      const R a = ring::mul(g.Lj[k], dot(g.P.row(r), Uq, nq)), b = ring::mul(g.Lp[k], g.J_dot(r, Ut));
-      return ring::sub(ring::sub(a, b), ring::mul(ring::mul(g.Lp[k], g.Lj[k]), v));
-    };
     const auto c = [i] { return " contact " + std::to_string(i); };
-    if (ring::sign(residual(i, Uvn[i])) != 0) bad("(4)" + c() + ": v_n != Wn^T q_dot - Jn theta_dot");
-    if (ring::sign(residual(nc + i, Uvt[i])) != 0) bad("(5)" + c() + ": v_t != Wt^T q_dot - Jt theta_dot");
-    const int vn = ring::sign(Uvn[i]), vt = ring::sign(Uvt[i]), cn = ring::sign(F[i]), ctn = ring::sign(F[nc + i]);
+    if (residual(i) != 0) bad("(4)" + c() + ": v_n != Wn^T q_dot - Jn theta_dot");
+    if (residual(nc + i) != 0) bad("(5)" + c() + ": v_t != Wt^T q_dot - Jt theta_dot");
+    const int vn = ring::sign(V[i]), vt = ring::sign(V[nc + i]), cn = ring::sign(F[i]), ctn = ring::sign(F[nc + i]);
     if (vn < 0) bad("(6)" + c() + ": v_n < 0");
     // mu c_n = (Mu / Dmu) Cn / Df and c_t = Ct / Df.
     const R &Cn = F[i], &Ct = F[nc + i];
-    const R bound = ring::mul(g.mu[static_cast<std::size_t>(i)], Cn), ct = ring::mul(Ct, g.Dmu);
+    const R bound = ring::mul(g.mu[static_cast<std::size_t>(i)], Cn), ct = times(Ct, g.Dmu);
     if ((ring::sign(ct) < 0 ? ring::sub(zero, ct) : ct) > bound) bad("(7)" + c() + ": |c_t| > mu c_n");
     if (cn > 0 && vn != 0) bad("(8)" + c() + ": c_n > 0 but v_n != 0");
     if (vn > 0 && (cn != 0 || ctn != 0)) bad("(9)" + c() + ": v_n > 0 but c != 0");
