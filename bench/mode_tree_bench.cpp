@@ -14,10 +14,10 @@
 #include <sstream>
 #include <string>
 
+#include "bench/user_memory_main.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/scene_json.h"
-#include "runtime/memory.h"
 #include "solvers/stability/contact_modes.h"
 #include "solvers/stability/stability_certificate.h"
 #include "solvers/stability/stable_region.h"
@@ -217,12 +217,4 @@ BENCHMARK(BM_Region)->Arg(4)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  contactcert::runtime::keep_heap_until_exit();
-  contactcert::runtime::use_pooled_gmp_memory();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return contactcert::bench::run_with_user_memory(argc, argv); }

@@ -13,8 +13,8 @@
 #include <algorithm>
 #include <ctime>
 
+#include "bench/user_memory_main.h"
 #include "exact/json_input.h"
-#include "runtime/memory.h"
 #include "runtime/scenes.h"
 #include "solvers/motion/compare.h"
 #include "solvers/motion/simulate.h"
@@ -163,13 +163,4 @@ BENCHMARK(BM_ThousandSteps)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iteration
 
 }  // namespace
 
-// With the command line's memory settings (runtime/memory.h), so that it times what a user's run does.
-int main(int argc, char** argv) {
-  contactcert::runtime::keep_heap_until_exit();
-  contactcert::runtime::use_pooled_gmp_memory();
-  benchmark::Initialize(&argc, argv);
-  const bool unknown = benchmark::ReportUnrecognizedArguments(argc, argv);
-  if (!unknown) benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return unknown ? 1 : 0;
-}
+int main(int argc, char** argv) { return contactcert::bench::run_with_user_memory(argc, argv); }

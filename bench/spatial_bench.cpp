@@ -16,12 +16,12 @@
 #include <sstream>
 #include <string>
 
+#include "bench/user_memory_main.h"
 #include "checker/spatial_modes_check.h"
 #include "checker/spatial_stability_check.h"
 #include "exact/json_input.h"
 #include "exact/rational_text.h"
 #include "geometry/spatial_scene.h"
-#include "runtime/memory.h"
 #include "solvers/spatial/spatial_modes.h"
 #include "solvers/spatial/spatial_modes_certificate.h"
 #include "solvers/spatial/spatial_stability.h"
@@ -153,11 +153,5 @@ int main(int argc, char** argv) {
             << scene_text(shape, k) << "\n";
     return 0;
   }
-  contactcert::runtime::keep_heap_until_exit();
-  contactcert::runtime::use_pooled_gmp_memory();
-  benchmark::Initialize(&argc, argv);
-  const bool unknown = benchmark::ReportUnrecognizedArguments(argc, argv);
-  if (!unknown) benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return unknown ? 1 : 0;
+  return contactcert::bench::run_with_user_memory(argc, argv);
 }
