@@ -27,9 +27,6 @@ int orientation(const Vec2<T>& a, const Vec2<T>& b, const Vec2<T>& p) {
 /// Whether x lies outside the closed interval between u and v (comparisons only).
 bool outside(const Q& x, const Q& u, const Q& v) { return (x < u && x < v) || (x > u && x > v); }
 
-using exact::enclose;
-Vec2<exact::Interval> enclose(const Vec2<Q>& p) { return {enclose(p.x), enclose(p.y)}; }
-
 /// The enclosures of v's points on the exact paths; none for double.
 template <class T>
 std::vector<Vec2<exact::Interval>> enclosures(const std::vector<Vec2<T>>& v) {
@@ -140,6 +137,8 @@ std::string edge_name(const std::string& shape, std::size_t i) { return shape + 
 std::string vertex_name(const std::string& shape, std::size_t i) { return shape + " vertex " + std::to_string(i); }
 
 }  // namespace
+
+Vec2<exact::Interval> enclose(const Vec2<Q>& p) { return {exact::enclose(p.x), exact::enclose(p.y)}; }
 
 template <class T>
 SceneGeometry<T> scene_geometry(const MotionScene& scene) {
@@ -420,12 +419,13 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
   [[maybe_unused]] Interval k_in, limit_in, reach_in;
   [[maybe_unused]] Vec2<Interval> c_in{Interval(0), Interval(0)}, v_in;
   if constexpr (exact_path) {
-    const Interval omega_in = enclose(omega);
+    const Interval omega_in = exact::enclose(omega);
     v_in = enclose(v);
     k_in = omega_in / 2;
     if (turning) c_in = {-v_in.y / omega_in, v_in.x / omega_in};
-    limit_in = enclose(limit);
-    reach_in = (turning ? 2 * CGAL::abs(omega_in) : CGAL::max(CGAL::abs(v_in.x), CGAL::abs(v_in.y))) * enclose(H);
+    limit_in = exact::enclose(limit);
+    reach_in =
+        (turning ? 2 * CGAL::abs(omega_in) : CGAL::max(CGAL::abs(v_in.x), CGAL::abs(v_in.y))) * exact::enclose(H);
   }
   std::vector<T> poly;
   [[maybe_unused]] std::vector<Bare> g_in;
@@ -480,7 +480,7 @@ void closing_of_body(const SceneGeometry<T>& g, std::size_t which, const Polygon
     if (best && !(root->tau < best->tau)) return;
     best = ClosingContact<T>{root->tau, root->exact, pair_name()};
     limit = root->tau;
-    if constexpr (exact_path) limit_in = enclose(limit);
+    if constexpr (exact_path) limit_in = exact::enclose(limit);
   };
   Shape B = enclosed({body, zero}, world_body.in);
   for (std::size_t o = 0; o < g.obstacles.size(); ++o) {

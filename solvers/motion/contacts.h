@@ -92,6 +92,9 @@ struct WorldBodies {
   std::vector<std::vector<Vec2<exact::Interval>>> enclosed;  ///< empty for double
 };
 
+/// An exact point's enclosure (exact::enclose of each coordinate: the filters' cheap interval).
+Vec2<exact::Interval> enclose(const Vec2<Q>& p);
+
 template <class T>
 WorldBodies<T> world_bodies(const SceneGeometry<T>& g, const Poses<T>& poses);
 

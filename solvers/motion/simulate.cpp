@@ -118,7 +118,6 @@ std::optional<std::pair<T, int>> slide_to_vertex(const WorldBodies<T>& world, co
   const auto nb = static_cast<int>(body.size());
   const int next = (c.body + 1) % nb;
   if constexpr (std::is_same_v<T, Q>) {
-    const auto enclose = [](const Vec2<Q>& x) { return Vec2<exact::Interval>{exact::enclose(x.x), exact::enclose(x.y)}; };
     const std::vector<Vec2<exact::Interval>>& in = world.enclosed[which];
     if (proven_not_before(in[static_cast<std::size_t>(c.body)], in[static_cast<std::size_t>(next)], enclose(c.point),
                           enclose(slip), exact::enclose(h)))
