@@ -2,8 +2,6 @@
 // twist's rotation and centre, a carried finger's slide and the free part of the translation correction.
 #pragma once
 
-#include <algorithm>
-
 #include "exact/number.h"
 
 namespace contactcert::solvers::motion {
@@ -13,21 +11,16 @@ using exact::Q;
 /// x rounded to the nearest multiple of 2^-40 (x itself for double): the grid of the applied twist, on which the
 /// pose's numbers keep a bounded size (mpq_class keeps lowest terms, so a pose reached by an exact motion has the
 /// size of its own value, not of the path to it).
-/// The rounding in integers: n = floor(x 2^40 + 1/2) = floor((2^41 num + den) / (2 den)), and n / 2^40 in lowest
-/// terms (GMP's rational operations take their operands so: == compares numerators and denominators) by moving the
-/// twos that n and 2^40 share out of both.
+/// The rounding in integers: n = floor(x 2^40 + 1/2) = floor((2^41 num + den) / (2 den)), then n / 2^40 in lowest
+/// terms (GMP's rational operations take their operands so: == compares numerators and denominators).
 inline Q on_grid(const Q& x) {
   exact::Z n, d;
   mpz_mul_2exp(n.get_mpz_t(), x.get_num_mpz_t(), 41);
   mpz_add(n.get_mpz_t(), n.get_mpz_t(), x.get_den_mpz_t());
   mpz_mul_2exp(d.get_mpz_t(), x.get_den_mpz_t(), 1);
   mpz_fdiv_q(n.get_mpz_t(), n.get_mpz_t(), d.get_mpz_t());
-  constexpr mp_bitcnt_t kGrid = 40;
-  const mp_bitcnt_t twos = sgn(n) == 0 ? kGrid : std::min<mp_bitcnt_t>(mpz_scan1(n.get_mpz_t(), 0), kGrid);
-  Q out;
-  mpz_fdiv_q_2exp(mpq_numref(out.get_mpq_t()), n.get_mpz_t(), twos);  // exact: 2^twos divides n
-  mpz_set_ui(mpq_denref(out.get_mpq_t()), 1);
-  mpz_mul_2exp(mpq_denref(out.get_mpq_t()), mpq_denref(out.get_mpq_t()), kGrid - twos);
+  Q out(n, exact::Z(1) << 40);
+  out.canonicalize();
   return out;
 }
 
