@@ -121,7 +121,7 @@ void velocity_rows(const IntegerData<R>& g, const R* T, R* M) {
     const auto k = static_cast<std::size_t>(r);
     R* M_r = M + r * w;
     const R* P_r = g.P.row(r);
-    for (Index j = 0; j < g.m; ++j) M_r[j] = g.Lj[k] != 1 ? ring::mul(P_r[j], g.Lj[k]) : P_r[j];
+    for (Index j = 0; j < g.m; ++j) M_r[j] = times(P_r[j], g.Lj[k]);
     M_r[g.m] = times(g.J_dot(r, T), g.Lp[k]);
   }
 }
