@@ -19,8 +19,9 @@ namespace contactcert::solvers::motion {
 
 /// How a run ended: all steps done; jammed (a proof, at the last step); no contact left to hold the body; a
 /// vertex-on-vertex contact (normal not determined); two shapes overlap after a step (a maintained contact the
-/// translation correction cannot keep dips, keep_contacts.h); a contact closes at an irrational time (rational poses cannot reach it: the
-/// last step ends at a rational time just before it, the gap > 0); unknown (a solver budget or the time limit).
+/// translation correction cannot keep dips, keep_contacts.h); a contact closes at an irrational time (rational poses
+/// cannot reach it: the last step ends at a rational time just before it, the gap > 0); unknown (a solver budget or the
+/// time limit).
 enum class RunStatus {
   kCompleted,
   kJammed,
